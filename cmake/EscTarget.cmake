@@ -1,0 +1,16 @@
+# Warnings and include root shared by every esc target, set per target (no global flags).
+function(esc_target_defaults target)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+    -Wno-sign-conversion)
+endfunction()
+
+# A GoogleTest suite named after the module it tests, registered with ctest.
+function(esc_add_test name)
+  add_executable(${name} ${ARGN})
+  esc_target_defaults(${name})
+  target_link_libraries(${name} PRIVATE GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE ESC_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${name})
+endfunction()

@@ -1,0 +1,41 @@
+#pragma once
+// Entry point of the compiler: script text in, checked experiments (runtime objects) and
+// diagnostics out. Never throws for bad input: every problem is a Diagnostic.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/diagnostic.hpp"
+#include "runtime/eval/experiment.hpp"
+
+namespace esc::compiler {
+
+struct CompileOptions {
+  // Searched, in order, for an `import "path"` not found beside the importing file.
+  // The CLI passes $ESC_PATH entries, then the shipped experiments/ directory.
+  std::vector<std::filesystem::path> import_paths;
+};
+
+struct CompileResult {
+  std::vector<Diagnostic> diagnostics;           // in source order, errors and warnings
+  std::vector<eval::ExperimentSpec> experiments; // in declaration order; empty on error
+  SourceMap sources;                             // text of every file read, for rendering
+  [[nodiscard]] bool ok() const noexcept;        // no diagnostic of severity Error
+};
+
+[[nodiscard]] CompileResult compile_file(const std::filesystem::path& file, const CompileOptions& options);
+
+// `name` is used in diagnostics and to resolve relative imports (its parent directory).
+[[nodiscard]] CompileResult compile_source(std::string_view text, const std::filesystem::path& name,
+                                           const CompileOptions& options);
+
+// Overrides one setting of a compiled experiment, as `esc run --set KEY=VALUE` does:
+// the same names, types and units as in an experiment block (`epochs=2`, `steps=50`,
+// `generations=3`, `mu=10`, `robot.inertia=off`, `robot.time_constant=50ms`, ...), and
+// keeps resolved_settings in step. Returns an error message (with a "did you mean" hint
+// for a misspelled key) or an empty string on success.
+[[nodiscard]] std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key,
+                                        std::string_view value);
+
+}  // namespace esc::compiler
