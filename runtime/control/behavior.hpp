@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/expr/observables.hpp"
 #include "runtime/expr/program.hpp"
 
 namespace esc::control {

@@ -65,7 +65,8 @@ class Rng {
 
   // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift, bias below 2^-64 * n).
   constexpr std::uint64_t below(std::uint64_t n) noexcept {
-    return static_cast<std::uint64_t>((static_cast<unsigned __int128>(next()) * n) >> 64U);
+    __extension__ using u128 = unsigned __int128;   // GCC/Clang extension, 128-bit product
+    return static_cast<std::uint64_t>((static_cast<u128>(next()) * n) >> 64U);
   }
 
   // Standard normal by the Box-Muller transform (both values used).

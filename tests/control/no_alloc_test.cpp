@@ -1,0 +1,164 @@
+// Controller::step must not allocate. Every global operator new is replaced here to count
+// calls while a flag is set; on glibc, malloc, calloc and realloc are interposed too,
+// since Eigen allocates with malloc rather than operator new.
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+
+#include "runtime/control/controller.hpp"
+#include "tests/control/behaviors.hpp"
+
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_news{0};
+std::atomic<long> g_mallocs{0};
+
+void* counted_new(std::size_t n) {
+  if (g_counting.load(std::memory_order_relaxed)) g_news.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t n) { return counted_new(n); }
+void* operator new[](std::size_t n) { return counted_new(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  try { return counted_new(n); } catch (...) { return nullptr; }
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+  try { return counted_new(n); } catch (...) { return nullptr; }
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+#if defined(__GLIBC__)
+// glibc's own allocator entry points. GCC may turn malloc + memset into calloc, so all
+// three allocating functions are counted.
+extern "C" void* __libc_malloc(std::size_t n);                  // NOLINT
+extern "C" void* __libc_calloc(std::size_t n, std::size_t size);  // NOLINT
+extern "C" void* __libc_realloc(void* p, std::size_t n);        // NOLINT
+namespace {
+void count_malloc() {
+  if (g_counting.load(std::memory_order_relaxed)) g_mallocs.fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
+extern "C" void* malloc(std::size_t n) noexcept {
+  count_malloc();
+  return __libc_malloc(n);
+}
+extern "C" void* calloc(std::size_t n, std::size_t size) noexcept {
+  count_malloc();
+  return __libc_calloc(n, size);
+}
+extern "C" void* realloc(void* p, std::size_t n) noexcept {
+  count_malloc();
+  return __libc_realloc(p, n);
+}
+#endif
+
+namespace esc::control {
+namespace {
+
+using namespace testing;  // NOLINT
+
+struct CountScope {
+  CountScope() {
+    g_news = 0;
+    g_mallocs = 0;
+    g_counting = true;
+  }
+  ~CountScope() { g_counting = false; }
+};
+
+void fill_ir(expr::Frame& f, int t) {
+  for (expr::Slot i = 0; i < expr::kIrCount; ++i)
+    f[expr::slot::ir + i] = 0.5 + 0.5 * std::sin(0.37 * t + 1.3 * i);
+}
+
+std::vector<double> genome_for(const ControllerSpec& s) {
+  std::vector<double> g(s.genome_size());
+  for (std::size_t i = 0; i < g.size(); ++i) g[i] = std::sin(static_cast<double>(i) * 2.3);
+  return g;
+}
+
+TEST(NoAlloc, CounterSeesAllocations) {
+  long news = 0;
+  {
+    CountScope scope;
+    auto* p = new std::vector<double>(100);
+    delete p;
+    news = g_news;
+  }
+  EXPECT_GE(news, 1);
+#if defined(__GLIBC__)
+  {
+    CountScope scope;
+    void* volatile p = std::malloc(64);
+    std::free(p);
+  }
+  EXPECT_GE(g_mallocs.load(), 1);
+  {
+    CountScope scope;
+    Eigen::VectorXd v = Eigen::VectorXd::Ones(100);  // Eigen allocates with malloc
+    EXPECT_EQ(v.sum(), 100.0);
+  }
+  EXPECT_GE(g_mallocs.load(), 1);
+#endif
+}
+
+TEST(NoAlloc, SymbolicStepDoesNotAllocate) {
+  ControllerSpec s;
+  s.mlp.inputs = ir_inputs();
+  s.mlp.hidden = {14};
+  s.head = Head::Symbolic;
+  s.actions = {forward(), left(), right(), backward()};
+  const std::vector<double> g = genome_for(s);
+  Controller c(s, g);
+  expr::Frame f{};
+  double sum = 0.0;
+  {
+    CountScope scope;
+    for (int t = 0; t < 1000; ++t) {
+      fill_ir(f, t);
+      const WheelCommand w = c.step(f);
+      sum += w.left + w.right;
+    }
+    c.reset();
+  }
+  EXPECT_EQ(g_news.load(), 0);
+  EXPECT_EQ(g_mallocs.load(), 0);
+  EXPECT_TRUE(std::isfinite(sum));
+}
+
+TEST(NoAlloc, ClassicalStepDoesNotAllocate) {
+  ControllerSpec s;
+  s.mlp.inputs = ir_inputs();
+  s.mlp.hidden = {20, 7};
+  const std::vector<double> g = genome_for(s);
+  const std::vector<double> g2(g.rbegin(), g.rend());
+  Controller c(s, g);
+  expr::Frame f{};
+  double sum = 0.0;
+  {
+    CountScope scope;
+    for (int t = 0; t < 1000; ++t) {
+      fill_ir(f, t);
+      if (t == 500) c.rebind(g2);  // rebinding reuses the buffers
+      const WheelCommand w = c.step(f);
+      sum += w.left - w.right;
+    }
+  }
+  EXPECT_EQ(g_news.load(), 0);
+  EXPECT_EQ(g_mallocs.load(), 0);
+  EXPECT_TRUE(std::isfinite(sum));
+}
+
+}  // namespace
+}  // namespace esc::control
