@@ -1,0 +1,89 @@
+// Control steps per second of one simulated Khepera on one core: 8 IR readings and one
+// World::step (motors with inertia, Bullet substeps, contacts), in a 60 cm x 60 cm arena
+// with two cylinders; the robot is put back at a random free pose when it collides.
+#include <benchmark/benchmark.h>
+
+#include <array>
+
+#include "runtime/sim/world.hpp"
+
+namespace {
+
+esc::sim::ArenaSpec bench_arena() {
+  esc::sim::ArenaSpec a;
+  a.width_m = 0.6;
+  a.height_m = 0.6;
+  a.cylinders.push_back({{0.2, 0.4}, 0.03});
+  a.cylinders.push_back({{0.42, 0.22}, 0.025});
+  return a;
+}
+
+// Commands alternate every 20 steps between straight, two arcs and a turn in place.
+constexpr std::array<std::array<double, 2>, 4> kCommands = {
+    {{1.0, 1.0}, {1.0, 0.4}, {0.4, 1.0}, {-1.0, 1.0}}};
+
+void run_steps(benchmark::State& state, esc::sim::KheperaParams robot, bool reset_on_collision) {
+  esc::sim::World world(bench_arena(), robot);
+  esc::Rng rng(1);
+  esc::Rng noise(2);
+  world.reset(world.random_free_pose(rng));
+  std::array<double, esc::sim::kIrSensors> ir{};
+  long step = 0;
+  long collisions = 0;
+  for (auto _ : state) {
+    world.read_ir(ir, noise);
+    const auto& c = kCommands[static_cast<std::size_t>((step / 20) % 4)];
+    world.step(c[0], c[1]);
+    benchmark::DoNotOptimize(ir.data());
+    if (world.state().collided) {
+      ++collisions;
+      if (reset_on_collision) world.reset(world.random_free_pose(rng));
+    }
+    ++step;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["collided_frac"] =
+      static_cast<double>(collisions) / static_cast<double>(state.iterations());
+}
+
+// Arguments: physics substeps, inertia (0/1).
+void BM_SimStep(benchmark::State& state) {
+  esc::sim::KheperaParams robot;
+  robot.physics_substeps = static_cast<int>(state.range(0));
+  robot.motor.inertia = state.range(1) != 0;
+  run_steps(state, robot, true);
+}
+BENCHMARK(BM_SimStep)->Args({2, 1})->Args({1, 1})->Args({5, 1})->Args({10, 1})->Args({2, 0});
+
+// Never reset: the robot spends much of its time pressed against walls and cylinders.
+void BM_SimStepInContact(benchmark::State& state) {
+  esc::sim::KheperaParams robot;
+  robot.physics_substeps = static_cast<int>(state.range(0));
+  run_steps(state, robot, false);
+}
+BENCHMARK(BM_SimStepInContact)->Arg(2);
+
+void BM_SimReadIr(benchmark::State& state) {
+  esc::sim::KheperaParams robot;
+  robot.ir.noise_sd = state.range(0) != 0 ? 0.05 : 0.0;
+  esc::sim::World world(bench_arena(), robot);
+  world.reset({0.1, 0.35, 0.3});  // near a wall and a cylinder
+  esc::Rng noise(2);
+  std::array<double, esc::sim::kIrSensors> ir{};
+  for (auto _ : state) {
+    world.read_ir(ir, noise);
+    benchmark::DoNotOptimize(ir.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SimReadIr)->Arg(0)->Arg(1);
+
+}  // namespace
+
+// Standalone runner for the local build (tests/sim); `esc bench` links these benchmarks
+// into its own main.
+#ifdef ESC_SIM_BENCH_MAIN
+BENCHMARK_MAIN();
+#endif

@@ -1,0 +1,19 @@
+#pragma once
+// Sense: turns the simulator's physical state into the observable frame that fitness
+// programs, behaviors and controllers read. Observables come from the physical state
+// (measured wheel speeds, actual displacement), never from the commands.
+#include <array>
+
+#include "runtime/expr/observables.hpp"
+#include "runtime/sim/world.hpp"
+
+namespace esc::eval {
+
+// Writes speed, forward_speed, wheel_diff, wheels[], collision and ir[] into `frame`.
+void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
+                   expr::Frame& frame) noexcept;
+
+// Writes the clock observables: step (from 0), time in seconds, epoch.
+void observe_clock(int epoch, int step, double control_step_s, expr::Frame& frame) noexcept;
+
+}  // namespace esc::eval

@@ -1,0 +1,27 @@
+#include "runtime/store/summary_json.hpp"
+
+namespace esc::store {
+
+nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
+  nlohmann::ordered_json controllers = nlohmann::ordered_json::object();
+  for (const auto& c : result.controllers) {
+    nlohmann::ordered_json runs = nlohmann::ordered_json::array();
+    for (const auto& r : c.runs) {
+      nlohmann::ordered_json best = nlohmann::ordered_json::array();
+      nlohmann::ordered_json mean = nlohmann::ordered_json::array();
+      nlohmann::ordered_json sd = nlohmann::ordered_json::array();
+      for (const auto& g : r.generations) {
+        best.push_back(g.best);
+        mean.push_back(g.mean);
+        sd.push_back(g.sd);
+      }
+      runs.push_back({{"run", r.run}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
+                      {"best", best}, {"mean", mean}, {"sd", sd}});
+    }
+    controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size},
+                           {"runs", runs}};
+  }
+  return {{"experiment", result.experiment}, {"seed", result.seed}, {"controllers", controllers}};
+}
+
+}  // namespace esc::store

@@ -1,0 +1,75 @@
+#include "runtime/eval/campaign.hpp"
+
+#include <gtest/gtest.h>
+
+#include "tests/eval/test_experiment.hpp"
+
+namespace esc::eval {
+namespace {
+
+struct Recorder final : CampaignListener {
+  int generations = 0;
+  int runs = 0;
+  void generation_done(const control::ControllerSpec&, int, const GenerationStats&) override { ++generations; }
+  void run_done(const control::ControllerSpec&, const RunResult&) override { ++runs; }
+};
+
+CampaignResult run_with_threads(const ExperimentSpec& spec, int threads) {
+  Recorder r;
+  return run_campaign(spec, {threads}, r);
+}
+
+TEST(Campaign, BitIdenticalForAnyThreadCount) {
+  const ExperimentSpec spec = testing::small_experiment();
+  const CampaignResult one = run_with_threads(spec, 1);
+  const CampaignResult two = run_with_threads(spec, 2);
+  const CampaignResult four = run_with_threads(spec, 4);
+  for (const CampaignResult* other : {&two, &four}) {
+    ASSERT_EQ(one.controllers.size(), other->controllers.size());
+    for (std::size_t c = 0; c < one.controllers.size(); ++c) {
+      const auto& ra = one.controllers[c].runs;
+      const auto& rb = other->controllers[c].runs;
+      ASSERT_EQ(ra.size(), rb.size());
+      for (std::size_t r = 0; r < ra.size(); ++r) {
+        EXPECT_EQ(ra[r].best_fitness, rb[r].best_fitness);
+        EXPECT_EQ(ra[r].best_genome, rb[r].best_genome);
+        ASSERT_EQ(ra[r].generations.size(), rb[r].generations.size());
+        for (std::size_t g = 0; g < ra[r].generations.size(); ++g) {
+          EXPECT_EQ(ra[r].generations[g].best, rb[r].generations[g].best);
+          EXPECT_EQ(ra[r].generations[g].mean, rb[r].generations[g].mean);
+          EXPECT_EQ(ra[r].generations[g].steps, rb[r].generations[g].steps);
+        }
+      }
+    }
+  }
+}
+
+TEST(Campaign, RunsDifferAndListenerSeesEverything) {
+  const ExperimentSpec spec = testing::small_experiment();
+  Recorder rec;
+  const CampaignResult res = run_campaign(spec, {2}, rec);
+  EXPECT_EQ(rec.generations, spec.runs * spec.es.generations);
+  EXPECT_EQ(rec.runs, spec.runs);
+  const auto& runs = res.controllers.front().runs;
+  ASSERT_EQ(runs.size(), 2U);
+  EXPECT_NE(runs[0].seed, runs[1].seed);
+  EXPECT_NE(runs[0].best_fitness, runs[1].best_fitness);
+  EXPECT_EQ(runs[0].best_genome.size(), spec.controllers.front().genome_size());
+}
+
+TEST(Campaign, MeanFitnessImproves) {
+  ExperimentSpec spec = testing::small_experiment();
+  spec.es.generations = 10;
+  spec.runs = 2;
+  const CampaignResult res = run_with_threads(spec, 2);
+  double first = 0.0;
+  double last = 0.0;
+  for (const auto& r : res.controllers.front().runs) {
+    first += r.generations.front().mean;
+    last += r.generations.back().mean;
+  }
+  EXPECT_GT(last, first * 1.2) << "mean fitness " << first << " -> " << last;
+}
+
+}  // namespace
+}  // namespace esc::eval

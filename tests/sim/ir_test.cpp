@@ -1,0 +1,172 @@
+// IR proximity sensors: the curve, its range, the side each index looks at, noise.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "sim_test_util.hpp"
+
+namespace esc::sim {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Enki's Khepera curve, x in cm, written out here independently of the library.
+double enki(double d_m) {
+  const double x = d_m * 100.0;
+  const double m = 1200.0, x0 = -0.9, c = 7.0;
+  return m * (c - x0 * x0) / (x * x - 2 * x0 * x + c);
+}
+double expected_reading(double d_m, double range_m) {
+  if (d_m >= range_m) return 0.0;
+  return (enki(d_m) - enki(range_m)) / (enki(0.0) - enki(range_m));
+}
+
+class SimIr : public ::testing::Test {
+ protected:
+  KheperaParams robot;  // defaults: range 5 cm, 3 rays over 30 deg, no noise
+  ArenaSpec arena = test::empty_arena(1.0, 1.0);
+  Rng rng{1};
+
+  std::array<double, kIrSensors> read_at(World& w, Pose p) {
+    w.reset(p);
+    std::array<double, kIrSensors> out{};
+    w.read_ir(out, rng);
+    return out;
+  }
+};
+
+TEST_F(SimIr, CurveEndsAtOneAndZero) {
+  EXPECT_DOUBLE_EQ(expected_reading(0.0, robot.ir.range_m), 1.0);
+  EXPECT_DOUBLE_EQ(expected_reading(robot.ir.range_m, robot.ir.range_m), 0.0);
+}
+
+TEST_F(SimIr, ReadingsRiseMonotonicallyApproachingAWallHeadOn) {
+  World world(arena, robot);
+  const double r = robot.body_radius_m;
+  double prev2 = -1.0, prev3 = -1.0;
+  for (int i = 0; i <= 70; ++i) {
+    const double gap = 0.07 - 0.001 * i;  // from the body front to the wall at x = 1
+    const auto ir = read_at(world, {1.0 - r - gap, 0.5, 0.0});
+    if (gap > robot.ir.range_m) {
+      for (double v : ir) EXPECT_EQ(v, 0.0) << "gap " << gap;
+    }
+    EXPECT_GE(ir[2], prev2);
+    EXPECT_GE(ir[3], prev3);
+    if (gap < robot.ir.range_m - 0.002) {
+      EXPECT_GT(ir[2], prev2);
+    }
+    EXPECT_NEAR(ir[2], ir[3], 1e-6);  // symmetric about the heading
+    prev2 = ir[2];
+    prev3 = ir[3];
+  }
+  EXPECT_GT(prev2, 0.95);  // touching
+}
+
+TEST_F(SimIr, FollowsTheCurveAtKnownDistances) {
+  World world(arena, robot);
+  const double r = robot.body_radius_m;
+  const double half_aperture = robot.ir.aperture_rad / 2;
+  for (double gap : {0.002, 0.01, 0.02, 0.03, 0.04}) {
+    const double x = 1.0 - r - gap;
+    const auto ir = read_at(world, {x, 0.5, 0.0});
+    const double px = static_cast<double>(static_cast<float>(x));  // Bullet stores floats
+    // Sensor 2: mounted at 13 deg facing 10 deg; its ray nearest the wall normal is at
+    // 10 - 15 = -5 deg.
+    const double d2 = (1.0 - px - r * std::cos(13 * kDeg)) / std::cos(10 * kDeg - half_aperture);
+    EXPECT_NEAR(ir[2], expected_reading(d2, robot.ir.range_m), 1e-5) << gap;
+    // Sensor 1: mounted at 43 deg facing 45 deg, nearest ray at 30 deg.
+    const double d1 = (1.0 - px - r * std::cos(43 * kDeg)) / std::cos(45 * kDeg - half_aperture);
+    EXPECT_NEAR(ir[1], expected_reading(d1, robot.ir.range_m), 1e-5) << gap;
+    EXPECT_NEAR(ir[4], ir[1], 1e-5);
+    // Side and back sensors face away from the wall.
+    EXPECT_EQ(ir[6], 0.0);
+    EXPECT_EQ(ir[7], 0.0);
+  }
+}
+
+TEST_F(SimIr, SensorIndicesMapToTheDocumentedSides) {
+  World world(arena, robot);
+  const double r = robot.body_radius_m;
+  const double gap = 0.01;
+  // Wall on the left (top wall, heading +x): sensor 0 (mount 68, facing 90) sees it.
+  auto ir = read_at(world, {0.5, 1.0 - r - gap, 0.0});
+  const double d0 = 1.0 - static_cast<double>(static_cast<float>(1.0 - r - gap)) - r * std::sin(68 * kDeg);
+  EXPECT_NEAR(ir[0], expected_reading(d0, robot.ir.range_m), 1e-5);
+  EXPECT_GT(ir[0], 0.3);
+  EXPECT_EQ(ir[5], 0.0);
+  EXPECT_EQ(ir[3], 0.0);
+  // Wall on the right (bottom wall): sensor 5 lights, not 0.
+  ir = read_at(world, {0.5, r + gap, 0.0});
+  EXPECT_NEAR(ir[5], expected_reading(d0, robot.ir.range_m), 1e-5);
+  EXPECT_EQ(ir[0], 0.0);
+  // Wall behind (left wall, x = 0): the back sensors 6 and 7 (mount +-158, facing 180).
+  ir = read_at(world, {r + gap, 0.5, 0.0});
+  const double d6 = static_cast<double>(static_cast<float>(r + gap)) + r * std::cos(158 * kDeg);
+  EXPECT_NEAR(ir[6], expected_reading(d6, robot.ir.range_m), 1e-5);
+  EXPECT_NEAR(ir[7], ir[6], 1e-6);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(ir[static_cast<std::size_t>(i)], 0.0) << i;
+  // Rotating the robot rotates what it sees: heading +90 deg towards the top wall.
+  ir = read_at(world, {0.5, 1.0 - r - gap, std::numbers::pi / 2});
+  EXPECT_GT(ir[2], 0.3);
+  EXPECT_GT(ir[3], 0.3);
+  EXPECT_EQ(ir[0], 0.0);
+  EXPECT_EQ(ir[5], 0.0);
+}
+
+TEST_F(SimIr, SeesObstacles) {
+  arena.cylinders.push_back({{0.5, 0.5}, 0.02});
+  arena.boxes.push_back({{0.2, 0.2}, {0.1, 0.04}, std::numbers::pi / 4});
+  World world(arena, robot);
+  const double r = robot.body_radius_m;
+  double prev = -1.0;
+  for (double gap : {0.06, 0.04, 0.03, 0.02, 0.01, 0.0}) {
+    // Cylinder straight ahead: the front pair sees it equally.
+    const auto ir = read_at(world, {0.5 - 0.02 - r - gap, 0.5, 0.0});
+    EXPECT_NEAR(ir[2], ir[3], 1e-6);
+    EXPECT_GT(ir[2], prev);
+    prev = ir[2];
+    if (gap > robot.ir.range_m) {
+      EXPECT_EQ(ir[2], 0.0);
+    }
+  }
+  // Rotated box ahead along its diagonal normal: gap 1 cm from the face.
+  const double n = std::sqrt(0.5);
+  const double face = 0.02 + r + 0.01;  // box half-width 2 cm plus body plus gap
+  const auto ir = read_at(world, {0.2 - n * face, 0.2 + n * face, -std::numbers::pi / 4});
+  EXPECT_GT(ir[2], 0.3);
+  EXPECT_NEAR(ir[2], ir[3], 1e-4);
+  EXPECT_EQ(ir[6], 0.0);
+}
+
+TEST_F(SimIr, NoiseIsDrawnOnlyWhenConfigured) {
+  World quiet(arena, robot);
+  Rng a(5), b(5);
+  std::array<double, kIrSensors> out{};
+  quiet.reset({0.5, 0.5, 0.0});
+  quiet.read_ir(out, a);
+  EXPECT_EQ(a.next(), b.next());  // no draw at noise_sd = 0
+
+  robot.ir.noise_sd = 0.05;
+  World noisy(arena, robot);
+  const double r = robot.body_radius_m;
+  noisy.reset({1.0 - r - 0.02, 0.5, 0.0});
+  quiet.reset({1.0 - r - 0.02, 0.5, 0.0});
+  std::array<double, kIrSensors> clean{};
+  quiet.read_ir(clean, a);
+  double sum_sq = 0.0;
+  const int reads = 2000;
+  for (int i = 0; i < reads; ++i) {
+    noisy.read_ir(out, a);
+    for (double v : out) {
+      EXPECT_GE(v, 0.0);
+      EXPECT_LE(v, 1.0);
+    }
+    sum_sq += (out[2] - clean[2]) * (out[2] - clean[2]);
+  }
+  EXPECT_NEAR(std::sqrt(sum_sq / reads), robot.ir.noise_sd, 0.005);  // not clamped there
+}
+
+}  // namespace
+}  // namespace esc::sim

@@ -1,0 +1,49 @@
+#pragma once
+// Shared fixtures of the sim suites: arenas, robots, and an independent 2D clearance.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "runtime/sim/world.hpp"
+
+namespace esc::sim::test {
+
+inline ArenaSpec empty_arena(double w, double h) {
+  ArenaSpec a;
+  a.width_m = w;
+  a.height_m = h;
+  return a;
+}
+
+inline KheperaParams robot_with_inertia(bool inertia) {
+  KheperaParams r;
+  r.motor.inertia = inertia;
+  return r;
+}
+
+// Smallest signed distance from `p` to the arena's walls and obstacles, written
+// independently of the library.
+inline double clearance(const ArenaSpec& a, double x, double y) {
+  double d = std::min({x, a.width_m - x, y, a.height_m - y});
+  for (const auto& c : a.cylinders)
+    d = std::min(d, std::hypot(x - c.center_m.x, y - c.center_m.y) - c.radius_m);
+  for (const auto& b : a.boxes) {
+    const double cs = std::cos(-b.angle_rad);
+    const double sn = std::sin(-b.angle_rad);
+    const double lx = cs * (x - b.center_m.x) - sn * (y - b.center_m.y);
+    const double ly = sn * (x - b.center_m.x) + cs * (y - b.center_m.y);
+    const double qx = std::abs(lx) - b.size_m.x / 2;
+    const double qy = std::abs(ly) - b.size_m.y / 2;
+    const double out = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0));
+    d = std::min(d, out + std::min(std::max(qx, qy), 0.0));
+  }
+  return d;
+}
+
+inline double wrap_angle(double a) {
+  while (a >= std::numbers::pi) a -= 2 * std::numbers::pi;
+  while (a < -std::numbers::pi) a += 2 * std::numbers::pi;
+  return a;
+}
+
+}  // namespace esc::sim::test

@@ -1,0 +1,88 @@
+#include "runtime/store/run_directory.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace esc::store {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("esc-store-test-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+eval::ExperimentSpec spec() {
+  eval::ExperimentSpec e;
+  e.name = "demo";
+  e.seed = 42;
+  e.resolved_settings = {{"epochs", "10"}, {"steps", "150"}};
+  control::ControllerSpec c;
+  c.name = "CC";
+  c.mlp.inputs = {5, 6};
+  e.controllers.push_back(c);
+  return e;
+}
+
+TEST(RunDirectory, WritesSettingsSourcesCsvGenomesAndSummary) {
+  const fs::path dir = fresh_dir("write");
+  const eval::ExperimentSpec e = spec();
+  RunDirectory rd(dir, e, {{"a/main.esc", "experiment x {}"}, {"lib/k.esc", "robot k {}"}});
+  eval::GenerationStats g0{0, 2.0, 1.0, 0.5, 10, 100, 0.1};
+  eval::GenerationStats g1{1, 3.0, 2.0, 0.5, 10, 100, 0.1};
+  rd.generation_done(e.controllers[0], 0, g0);
+  rd.generation_done(e.controllers[0], 0, g1);
+  eval::RunResult r{0, 99, {g0, g1}, 3.0, {0.25, -0.5}};
+  rd.run_done(e.controllers[0], r);
+
+  const auto settings = nlohmann::json::parse(slurp(dir / "settings.json"));
+  EXPECT_EQ(settings["experiment"], "demo");
+  EXPECT_EQ(settings["seed"], 42);
+  EXPECT_EQ(settings["settings"]["epochs"], "10");
+  EXPECT_EQ(slurp(dir / "sources" / "00-main.esc"), "experiment x {}");
+  EXPECT_EQ(slurp(dir / "CC" / "run-01.csv"),
+            "generation,best,mean,sd,evaluations,steps,seconds\n0,2,1,0.5,10,100,0.100\n1,3,2,0.5,10,100,0.100\n");
+  const auto best = nlohmann::json::parse(slurp(dir / "CC" / "run-01.best.json"));
+  EXPECT_EQ(best["genome"], (std::vector<double>{0.25, -0.5}));
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["experiment"], "demo");
+  const auto& run = summary["controllers"]["CC"]["runs"][0];
+  EXPECT_EQ(run["seed"], 99);
+  EXPECT_EQ(run["best_fitness"], 3.0);
+  EXPECT_EQ(run["best"], (std::vector<double>{2.0, 3.0}));
+  EXPECT_EQ(run["mean"], (std::vector<double>{1.0, 2.0}));
+  EXPECT_FALSE(fs::exists(dir / "summary.json.tmp"));
+  fs::remove_all(dir);
+}
+
+TEST(RunDirectory, NeverOverwritesExistingResults) {
+  const fs::path dir = fresh_dir("exists");
+  fs::create_directories(dir);
+  std::ofstream(dir / "summary.json") << "{}";
+  const eval::ExperimentSpec e = spec();
+  EXPECT_THROW(RunDirectory(dir, e, {}), std::runtime_error);
+  EXPECT_EQ(slurp(dir / "summary.json"), "{}");
+  fs::remove_all(dir);
+}
+
+TEST(RunDirectory, ContentHashIsStableAndSensitive) {
+  EXPECT_EQ(content_hash("abc"), content_hash("abc"));
+  EXPECT_NE(content_hash("abc"), content_hash("abd"));
+  EXPECT_EQ(content_hash(""), 0xcbf29ce484222325ULL);   // FNV-1a offset basis
+}
+
+}  // namespace
+}  // namespace esc::store
