@@ -1,0 +1,95 @@
+#include <fstream>
+#include <map>
+#include <string>
+#include <thread>
+
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+
+#include "bench/workloads.hpp"
+#include "cli/commands.hpp"
+#include "cli/load.hpp"
+
+namespace esc::cli {
+
+namespace {
+
+// The console report as usual, plus the counters kept for the closing summary.
+class CollectingReporter final : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    benchmark::ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs)
+      for (const auto& [name, counter] : r.counters) values[r.benchmark_name()][name] = counter.value;
+  }
+  std::map<std::string, std::map<std::string, double>> values;
+};
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
+std::vector<int> thread_counts(int max_threads) {
+  std::vector<int> t;
+  for (int n = 1; n < max_threads; n *= 2) t.push_back(n);
+  t.push_back(max_threads);
+  return t;
+}
+
+const control::ControllerSpec* paper_sc(const eval::ExperimentSpec& e) {
+  const control::ControllerSpec* found = nullptr;
+  for (const auto& c : e.controllers)
+    if (c.head == control::Head::Symbolic && (found == nullptr || c.architecture() == "8-14-6")) found = &c;
+  return found;
+}
+
+}  // namespace
+
+int bench_command(const BenchOptions& o) {
+  const std::filesystem::path script = std::filesystem::path(ESC_STDLIB_DIR) / "paper" / "obstacle_avoidance.esc";
+  compiler::CompileResult compiled = load_script(script);
+  if (!compiled.ok() || compiled.experiments.empty()) return kExitBadInput;
+  const eval::ExperimentSpec& experiment = compiled.experiments.front();
+  const control::ControllerSpec* sc = paper_sc(experiment);
+  if (sc == nullptr) {
+    fmt::print(stderr, "esc: error: {} has no symbolic controller to benchmark\n", script.string());
+    return kExitBadInput;
+  }
+  const int max_threads = o.max_threads > 0 ? o.max_threads : static_cast<int>(std::thread::hardware_concurrency());
+  const std::vector<int> counts = thread_counts(std::max(1, max_threads));
+  bench::register_workload({&experiment, sc}, counts);
+
+  std::vector<std::string> args = {"esc bench", fmt::format("--benchmark_min_time={}", o.min_time_s)};
+  args.insert(args.end(), o.benchmark_args.begin(), o.benchmark_args.end());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  int argc = static_cast<int>(argv.size());
+  benchmark::Initialize(&argc, argv.data());
+  if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return kExitUsage;
+  CollectingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+
+  const std::string name = fmt::format("{}/{}", experiment.name, sc->name);
+  fmt::print("\nmachine: {}, {} hardware threads\n", cpu_model(), std::thread::hardware_concurrency());
+  const auto one = reporter.values.find("step/" + name);
+  if (one != reporter.values.end())
+    fmt::print("{} ({} {}, inertia {}): {:.0f} control steps/s per core (IR, physics, network, fitness)\n",
+               name, sc->architecture(), "symbolic", experiment.robot.motor.inertia ? "on" : "off",
+               one->second["steps/s"]);
+  const auto base = reporter.values.find(fmt::format("threads/{}/1/real_time", name));
+  if (base != reporter.values.end()) {
+    for (int t : counts) {
+      const auto it = reporter.values.find(fmt::format("threads/{}/{}/real_time", name, t));
+      if (it == reporter.values.end()) continue;
+      fmt::print("{:>3} thread{}: {:>9.0f} steps/s  {:>7.1f} evals/s  speed-up {:.2f}x\n", t, t == 1 ? " " : "s",
+                 it->second["steps/s"], it->second["evals/s"], it->second["steps/s"] / base->second["steps/s"]);
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace esc::cli

@@ -1,0 +1,39 @@
+#pragma once
+// The `esc` subcommands. Each returns the process exit status:
+// 0 success, 1 bad input (script, settings, files, parameters), 2 bad command line.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace esc::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitUsage = 2;
+
+int check_command(const std::vector<std::filesystem::path>& files);
+
+struct RunOptions {
+  std::filesystem::path file;
+  std::string experiment;                    // empty: the first one in the file
+  std::optional<int> runs;
+  std::optional<int> generations;
+  std::optional<std::uint64_t> seed;
+  int threads = 0;                           // 0: all cores
+  std::filesystem::path out;                 // empty: runs/<experiment>-<timestamp>
+  std::vector<std::string> settings;         // KEY=VALUE
+};
+
+int run_command(const RunOptions& options);
+
+struct BenchOptions {
+  int max_threads = 0;                       // 0: all cores
+  double min_time_s = 0.5;
+  std::vector<std::string> benchmark_args;   // passed to Google Benchmark
+};
+
+int bench_command(const BenchOptions& options);
+
+}  // namespace esc::cli

@@ -1,0 +1,55 @@
+// The `esc` command: check, run and benchmark experiment scripts.
+#include <exception>
+#include <filesystem>
+#include <new>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace esc::cli;
+  CLI::App app{"esc: evolutionary robotics experiments written as scripts"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", ESC_VERSION);
+
+  std::vector<std::filesystem::path> check_files;
+  auto* check = app.add_subcommand("check", "compile scripts and report every error, without running");
+  check->add_option("FILE", check_files, "script files")->required();
+
+  RunOptions run;
+  auto* run_cmd = app.add_subcommand("run", "evolve the controllers of an experiment and compare them");
+  run_cmd->add_option("FILE", run.file, "script file")->required();
+  run_cmd->add_option("--experiment", run.experiment, "experiment to run (default: the first in the file)");
+  run_cmd->add_option("--runs", run.runs, "independent runs per controller")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--generations", run.generations, "generations per run")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)");
+  run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
+  run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off)");
+
+  BenchOptions bench;
+  auto* bench_cmd = app.add_subcommand("bench", "measure control steps per second and thread scaling");
+  bench_cmd->add_option("--threads", bench.max_threads, "largest thread count (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  bench_cmd->add_option("--min-time", bench.min_time_s, "seconds per benchmark")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--benchmark", bench.benchmark_args, "arguments for Google Benchmark (--benchmark_filter=...)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  try {
+    if (*check) return check_command(check_files);
+    if (*run_cmd) return run_command(run);
+    if (*bench_cmd) return bench_command(bench);
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "esc: error: out of memory\n");
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "esc: error: {}\n", e.what());
+  }
+  return kExitBadInput;
+}

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# One-step set-up of esc on Debian bookworm (as root, or with sudo):
+#   scripts/esc-setup.sh demo   install what is missing, build (Release), run a short real
+#                               experiment end to end and print its table and result path
+#   scripts/esc-setup.sh test   install what is missing, build, run the whole test suite
+# BUILD_DIR (default build) and JOBS (default: all cores) may be set in the environment.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=${1:-}
+case "$mode" in demo|test) ;; *) echo "usage: $0 demo|test" >&2; exit 2;; esac
+
+BUILD_DIR=${BUILD_DIR:-build}
+JOBS=${JOBS:-$(nproc)}
+PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev
+          libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+          libgtest-dev libbenchmark-dev python3)
+
+install_missing() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "esc-setup: installing ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -eq 0 ] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+install_missing
+build
+if [ "$mode" = test ]; then
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+else
+  out="runs/demo-$(date +%Y%m%d-%H%M%S)"
+  # The paper's obstacle-avoidance comparison, shortened to a few minutes on 2 cores.
+  "$BUILD_DIR/cli/esc" run experiments/paper/obstacle_avoidance.esc \
+      --runs 3 --generations 15 --set epochs=3 --seed 1 --out "$out"
+  echo "report: $out (summary.json, per-run CSV, best genomes, settings.json)"
+fi

@@ -1,0 +1,157 @@
+// End-to-end tests of the `esc` command: exit codes, located diagnostics, the run
+// directory, improvement of fitness, and identical results for any thread count.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status = -1;
+  std::string output;   // stdout and stderr together
+};
+
+Outcome esc(const std::string& args) {
+  const std::string cmd = std::string(ESC_BINARY) + " " + args + " 2>&1";
+  Outcome o;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return o;
+  std::array<char, 4096> buf{};
+  for (std::size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;) o.output.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return o;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("esc-cli-test-" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d.parent_path());
+  return d;
+}
+
+std::string tiny() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny.esc"; }
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+TEST(Cli, NoCommandIsAUsageError) { EXPECT_EQ(esc("").status, 2); }
+
+TEST(Cli, CheckAcceptsAGoodScript) {
+  const Outcome o = esc("check " + tiny());
+  EXPECT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("ok"), std::string::npos);
+}
+
+TEST(Cli, CheckLocatesErrorsAndExitsOne) {
+  const fs::path dir = scratch("check");
+  fs::create_directories(dir);
+  std::ofstream(dir / "broken.esc") << "experiment {\n";
+  const Outcome o = esc("check " + (dir / "broken.esc").string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("broken.esc:1:"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("error"), std::string::npos);
+}
+
+TEST(Cli, MissingFileIsAnErrorNotACrash) {
+  const Outcome o = esc("check /nonexistent/nothing.esc");
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("nothing.esc"), std::string::npos);
+}
+
+TEST(Cli, BadOverridesAreRejectedBeforeRunning) {
+  const fs::path out = scratch("badset");
+  Outcome o = esc("run " + tiny() + " --set epoch=2 --out " + out.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("epochs"), std::string::npos) << "no did-you-mean: " << o.output;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  o = esc("run " + tiny() + " --set nonsense --out " + out.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  o = esc("run " + tiny() + " --experiment nope --out " + out.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("tiny"), std::string::npos) << o.output;
+}
+
+TEST(Cli, RunWritesResultsAndNeverOverwritesThem) {
+  const fs::path out = scratch("run");
+  const Outcome o = esc("run " + tiny() + " --threads 2 --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("ETA"), std::string::npos);
+  EXPECT_NE(o.output.find("eval/s"), std::string::npos);
+  const auto s = read_json(out / "summary.json");
+  EXPECT_EQ(s["experiment"], "tiny");
+  EXPECT_EQ(s["seed"], 3);
+  for (const char* name : {"CC", "SC"}) {
+    const auto& runs = s["controllers"][name]["runs"];
+    ASSERT_EQ(runs.size(), 2U) << name;
+    for (const auto& r : runs) {
+      EXPECT_EQ(r["best"].size(), 6U);
+      EXPECT_EQ(r["mean"].size(), 6U);
+    }
+    EXPECT_TRUE(fs::exists(out / name / "run-01.csv"));
+    EXPECT_TRUE(fs::exists(out / name / "run-02.best.json"));
+  }
+  EXPECT_TRUE(fs::exists(out / "settings.json"));
+  const std::string before = read_json(out / "summary.json").dump();
+  const Outcome again = esc("run " + tiny() + " --out " + out.string());
+  EXPECT_EQ(again.status, 1) << again.output;
+  EXPECT_EQ(read_json(out / "summary.json").dump(), before);
+}
+
+TEST(Cli, SameSeedSameResultsWithOneOrTwoThreadsAndFitnessImproves) {
+  const fs::path a = scratch("t1");
+  const fs::path b = scratch("t2");
+  const std::string common = "run " + tiny() + " --runs 2 --generations 6 --seed 11 --set epochs=2";
+  ASSERT_EQ(esc(common + " --threads 1 --out " + a.string()).status, 0);
+  ASSERT_EQ(esc(common + " --threads 2 --out " + b.string()).status, 0);
+  const auto sa = read_json(a / "summary.json");
+  const auto sb = read_json(b / "summary.json");
+  for (const char* name : {"CC", "SC"}) {
+    double first = 0.0;
+    double last = 0.0;
+    for (std::size_t r = 0; r < 2; ++r) {
+      EXPECT_EQ(sa["controllers"][name]["runs"][r]["best"], sb["controllers"][name]["runs"][r]["best"]);
+      EXPECT_EQ(sa["controllers"][name]["runs"][r]["mean"], sb["controllers"][name]["runs"][r]["mean"]);
+      first += sa["controllers"][name]["runs"][r]["mean"].front().get<double>();
+      last += sa["controllers"][name]["runs"][r]["mean"].back().get<double>();
+    }
+    EXPECT_GT(last, first) << name << ": mean fitness did not improve";
+  }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Cli, PaperObstacleAvoidanceImprovesForEveryController) {
+  const fs::path out = scratch("paper");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/experiments/paper/obstacle_avoidance.esc";
+  const Outcome o = esc("run " + script + " --runs 2 --generations 4 --seed 11 --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto s = read_json(out / "summary.json");
+  EXPECT_EQ(s["experiment"], "obstacle_avoidance");
+  ASSERT_EQ(s["controllers"].size(), 6U);
+  for (const auto& [name, c] : s["controllers"].items()) {
+    double first = 0.0;
+    double last = 0.0;
+    for (const auto& r : c["runs"]) {
+      first += r["mean"].front().get<double>();
+      last += r["mean"].back().get<double>();
+    }
+    EXPECT_GT(last, first) << name;
+  }
+}
+
+}  // namespace
