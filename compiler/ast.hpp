@@ -1,0 +1,171 @@
+#pragma once
+// The abstract syntax of a script, built from the ANTLR parse tree by parse.cpp. Only the
+// compiler sees it; it keeps every location for diagnostics. Values are as written (units
+// are resolved by the checks, not here).
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostic.hpp"
+
+namespace esc::compiler::ast {
+
+struct Name {
+  std::string text;          // empty when the parser had to invent it (syntax error)
+  SourceRange where;
+};
+
+// A number as written, with its optional unit: `60cm`, `-1`, `0.5 m/s^2`, `150`.
+struct Quantity {
+  double value = 0.0;        // sign applied, unit not applied
+  std::string text;          // the number (with sign) as written
+  std::string unit;          // "" when none
+  SourceRange where;         // the whole quantity
+  SourceRange unit_where;
+  bool finite = true;        // false when the number overflowed a double (reported)
+};
+
+struct Expr {
+  enum class Kind { Number, Bool, Name, Index, Call, Unary, Binary, If, Error };
+  Kind kind = Kind::Error;
+  std::string text;          // name, function, or operator ("+", "and", "neg", "not", ...)
+  double number = 0.0;       // Number (unit not applied) and Bool
+  std::string unit;          // Number
+  SourceRange unit_where;
+  std::vector<std::unique_ptr<Expr>> args;
+  SourceRange where;         // first line of the expression; length clipped to that line
+};
+using ExprPtr = std::unique_ptr<Expr>;
+
+struct Value {
+  enum class Kind { Quantity, Bool } kind = Kind::Quantity;
+  Quantity q;
+  bool flag = false;
+  std::string text;
+  SourceRange where;
+};
+
+struct Setting {
+  Name key;
+  Value value;
+};
+
+struct Import {
+  std::string path;          // unescaped
+  SourceRange where;         // the string literal
+};
+
+struct DeclHead {
+  Name name;
+  SourceRange keyword;
+  bool poisoned = false;     // holds a syntax error: not checked, references to it accepted
+  int order = 0;             // position in the file
+};
+
+struct Cylinder {
+  Quantity x, y, radius;
+  SourceRange where;
+};
+struct Block {
+  Quantity x, y, w, h;
+  std::optional<Quantity> angle;
+  SourceRange where;
+};
+struct Start {
+  bool random = true;
+  Quantity x, y;
+  std::optional<Quantity> heading;
+  SourceRange where;
+};
+struct ArenaSize {
+  Quantity w, h;
+  SourceRange where;
+};
+
+struct ArenaDecl : DeclHead {
+  std::vector<ArenaSize> sizes;     // more than one is an error
+  std::vector<Cylinder> cylinders;
+  std::vector<Block> blocks;
+  std::vector<Start> starts;        // more than one is an error
+};
+
+struct RobotDecl : DeclHead {
+  std::optional<Name> base;
+  std::vector<Setting> settings;
+};
+
+struct BehaviorDecl : DeclHead {
+  std::vector<Name> params;
+  Name body_fn;                     // `wheels`
+  std::vector<ExprPtr> body_args;
+  SourceRange body_where;
+  std::vector<std::string> body_text;   // source text of each argument
+};
+
+struct FitnessTerm {
+  ExprPtr expr;
+  std::string text;                 // source text, for resolved settings
+  SourceRange where;                // the `step` or `stop` keyword
+};
+
+struct FitnessDecl : DeclHead {
+  std::vector<FitnessTerm> steps;   // more than one is an error
+  std::vector<FitnessTerm> stops;
+};
+
+struct Input {
+  Name name;
+  std::optional<Quantity> lo, hi;   // `ir[3]`: lo only; `ir[0..7]`: both
+  SourceRange where;
+};
+struct Layer {
+  Name word;                        // `hidden`, `wheels`
+  std::optional<Quantity> size;
+  SourceRange where;
+};
+
+struct ControllerDecl : DeclHead {
+  bool symbolic = false;
+  SourceRange kind_where;
+  std::vector<Input> inputs;
+  std::vector<Layer> layers;
+  std::vector<Name> actions;
+};
+
+struct EsOption {
+  Name name;
+  std::optional<Quantity> value;
+  std::optional<Quantity> lo, hi;   // `bounds [lo, hi]`
+  SourceRange where;
+};
+
+struct ExpItem {
+  enum class Kind { Arena, Robot, Epochs, Steps, Fitness, Evolve, Runs, Seed, Compare };
+  Kind kind = Kind::Arena;
+  SourceRange where;                // the keyword
+  std::vector<Name> refs;           // arena/robot/fitness/evolve method/compare list
+  std::vector<Setting> settings;    // robot { ... } overrides
+  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed
+  std::vector<EsOption> options;    // evolve es(...)
+  std::optional<Quantity> generations;
+};
+
+struct ExperimentDecl : DeclHead {
+  std::vector<ExpItem> items;
+};
+
+struct Module {
+  std::filesystem::path file;       // as displayed in diagnostics
+  std::vector<Import> imports;
+  std::vector<ArenaDecl> arenas;
+  std::vector<RobotDecl> robots;
+  std::vector<BehaviorDecl> behaviors;
+  std::vector<FitnessDecl> fitnesses;
+  std::vector<ControllerDecl> controllers;
+  std::vector<ExperimentDecl> experiments;
+  bool syntax_ok = true;
+};
+
+}  // namespace esc::compiler::ast

@@ -1,0 +1,460 @@
+// Names and the lowering of arenas, robots, behaviors, fitness functions and controllers.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compiler/lower_expr.hpp"
+#include "compiler/model.hpp"
+#include "compiler/names.hpp"
+#include "compiler/quantities.hpp"
+#include "compiler/settings.hpp"
+#include "runtime/expr/observables.hpp"
+
+namespace esc::compiler {
+
+std::string_view kind_name(DeclKind k) noexcept {
+  switch (k) {
+    case DeclKind::Arena: return "arena";
+    case DeclKind::Robot: return "robot";
+    case DeclKind::Behavior: return "behavior";
+    case DeclKind::Fitness: return "fitness";
+    case DeclKind::Controller: return "controller";
+    case DeclKind::Experiment: return "experiment";
+  }
+  return "declaration";
+}
+
+namespace {
+
+std::string article(std::string_view kind) {
+  const bool vowel = !kind.empty() && std::string_view("aeiou").find(kind[0]) != std::string_view::npos;
+  return std::string(vowel ? "an " : "a ") + std::string(kind);
+}
+
+}  // namespace
+
+void Model::add(DeclKind k, const ast::DeclHead& h, const void* d) {
+  if (h.name.text.empty()) return;
+  auto [it, inserted] = symbols_.try_emplace(h.name.text, Symbol{k, &h, d});
+  if (inserted) return;
+  const Symbol& first = it->second;
+  Diagnostic& diag = sink_.error(h.name.where, fmt::format("`{}` is already declared", h.name.text));
+  diag.notes.emplace_back(first.head->name.where,
+                          fmt::format("first declared here, as {}", article(kind_name(first.kind))));
+  diag.help.push_back("every arena, robot, behavior, fitness, controller and experiment needs its own name");
+}
+
+void Model::declare(const ast::Module& m) {
+  modules_.push_back(&m);
+  // In source order, so that "first declared here" points at the earlier one.
+  std::vector<std::pair<int, std::pair<DeclKind, const ast::DeclHead*>>> all;
+  std::map<const ast::DeclHead*, const void*> ptr;
+  auto collect = [&](DeclKind k, const auto& v) {
+    for (const auto& d : v) {
+      all.push_back({d.order, {k, &d}});
+      ptr[&d] = &d;
+    }
+  };
+  collect(DeclKind::Arena, m.arenas);
+  collect(DeclKind::Robot, m.robots);
+  collect(DeclKind::Behavior, m.behaviors);
+  collect(DeclKind::Fitness, m.fitnesses);
+  collect(DeclKind::Controller, m.controllers);
+  collect(DeclKind::Experiment, m.experiments);
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [order, kd] : all) add(kd.first, *kd.second, ptr[kd.second]);
+}
+
+const Symbol* Model::lookup(const ast::Name& ref, DeclKind want) {
+  if (ref.text.empty()) return nullptr;
+  const auto it = symbols_.find(ref.text);
+  if (it == symbols_.end()) {
+    std::vector<std::string> same_kind, all;
+    for (const auto& [name, s] : symbols_) {
+      all.push_back(name);
+      if (s.kind == want) same_kind.push_back(name);
+    }
+    std::string msg = fmt::format("unknown {} `{}`", kind_name(want), ref.text);
+    auto best = closest(ref.text, same_kind);
+    if (best) msg += fmt::format("; did you mean `{}`?", *best);
+    Diagnostic& d = sink_.error(ref.where, msg);
+    if (!best) {
+      if (same_kind.empty())
+        d.help.push_back(fmt::format("no {} is declared; declare one, or import a file that does", kind_name(want)));
+      else if (same_kind.size() <= 8)
+        d.help.push_back(fmt::format("declared {}s: {}", kind_name(want), quoted_list(same_kind, ", ")));
+    }
+    return nullptr;
+  }
+  const Symbol& s = it->second;
+  if (s.kind != want) {
+    Diagnostic& d = sink_.error(ref.where, fmt::format("`{}` is {}, not {}", ref.text, article(kind_name(s.kind)),
+                                                       article(kind_name(want))));
+    d.notes.emplace_back(s.head->name.where, fmt::format("`{}` is declared here", ref.text));
+    return nullptr;
+  }
+  if (s.head->poisoned) return nullptr;
+  return &s;
+}
+
+void Model::check_all() {
+  for (const ast::Module* m : modules_) {
+    for (const auto& d : m->arenas) (void)arena(d);
+    for (const auto& d : m->robots) (void)robot(d);
+    for (const auto& d : m->behaviors) (void)behavior(d);
+    for (const auto& d : m->fitnesses) (void)fitness(d);
+    for (const auto& d : m->controllers) (void)controller(d);
+  }
+}
+
+// ---- arenas -------------------------------------------------------------------------
+
+namespace {
+
+struct Corners {
+  std::array<sim::Vec2, 4> p;
+};
+
+Corners corners(const sim::BoxObstacle& b) {
+  const double c = std::cos(b.angle_rad), s = std::sin(b.angle_rad);
+  const double hx = b.size_m.x / 2, hy = b.size_m.y / 2;
+  Corners k;
+  const std::array<std::pair<double, double>, 4> d = {{{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}}};
+  for (std::size_t i = 0; i < 4; ++i)
+    k.p[i] = {b.center_m.x + c * d[i].first - s * d[i].second, b.center_m.y + s * d[i].first + c * d[i].second};
+  return k;
+}
+
+std::string cm(double m) { return fmt::format("{}cm", number_text(std::round(m * 1e4) / 100)); }
+
+}  // namespace
+
+const std::optional<sim::ArenaSpec>& Model::arena(const ast::ArenaDecl& d) {
+  if (auto it = arenas_.find(&d); it != arenas_.end()) return it->second;
+  auto& slot = arenas_[&d];
+  if (d.poisoned) return slot;
+  const int errors = sink_.errors();
+  sim::ArenaSpec a;
+  a.boxes.clear();
+  a.cylinders.clear();
+  constexpr double kEps = 1e-12;
+
+  if (d.sizes.empty()) {
+    sink_.error(d.name.where, fmt::format("arena `{}` has no size", d.name.text))
+        .help.push_back("add `size 60cm x 60cm`");
+  }
+  for (std::size_t i = 1; i < d.sizes.size(); ++i)
+    sink_.error(d.sizes[i].where, "the arena's size is already given")
+        .notes.emplace_back(d.sizes[0].where, "first given here");
+  bool size_ok = false;
+  if (!d.sizes.empty()) {
+    const auto w = to_si(d.sizes[0].w, Dim::Length, sink_);
+    const auto h = to_si(d.sizes[0].h, Dim::Length, sink_);
+    if (w && h) {
+      if (*w <= 0 || *h <= 0) {
+        sink_.error(d.sizes[0].where, "an arena's width and height must be greater than 0");
+      } else {
+        a.width_m = *w;
+        a.height_m = *h;
+        size_ok = true;
+      }
+    }
+  }
+  const std::string arena_text = size_ok ? fmt::format("{} x {}", cm(a.width_m), cm(a.height_m)) : "";
+  for (const ast::Cylinder& c : d.cylinders) {
+    const auto x = to_si(c.x, Dim::Length, sink_), y = to_si(c.y, Dim::Length, sink_),
+               r = to_si(c.radius, Dim::Length, sink_);
+    if (!x || !y || !r) continue;
+    if (*r <= 0) {
+      sink_.error(c.radius.where, "a cylinder's radius must be greater than 0");
+      continue;
+    }
+    if (size_ok && (*x - *r < -kEps || *y - *r < -kEps || *x + *r > a.width_m + kEps || *y + *r > a.height_m + kEps)) {
+      sink_.error(c.where, fmt::format("this cylinder is not inside the arena ({})", arena_text))
+          .help.push_back("positions are measured from the arena's lower-left inner corner");
+      continue;
+    }
+    a.cylinders.push_back({{*x, *y}, *r});
+  }
+  for (const ast::Block& b : d.blocks) {
+    const auto x = to_si(b.x, Dim::Length, sink_), y = to_si(b.y, Dim::Length, sink_),
+               w = to_si(b.w, Dim::Length, sink_), h = to_si(b.h, Dim::Length, sink_);
+    std::optional<double> ang = 0.0;
+    if (b.angle) ang = to_si(*b.angle, Dim::Angle, sink_);
+    if (!x || !y || !w || !h || !ang) continue;
+    if (*w <= 0 || *h <= 0) {
+      sink_.error(b.where, "a block's width and height must be greater than 0");
+      continue;
+    }
+    const sim::BoxObstacle box{{*x, *y}, {*w, *h}, *ang};
+    if (size_ok) {
+      const Corners k = corners(box);
+      const bool inside = std::all_of(k.p.begin(), k.p.end(), [&](const sim::Vec2& p) {
+        return p.x >= -1e-9 && p.y >= -1e-9 && p.x <= a.width_m + 1e-9 && p.y <= a.height_m + 1e-9;
+      });
+      if (!inside) {
+        sink_.error(b.where, fmt::format("this block is not inside the arena ({})", arena_text))
+            .help.push_back("positions are measured from the arena's lower-left inner corner to the block's centre");
+        continue;
+      }
+    }
+    a.boxes.push_back(box);
+  }
+  for (std::size_t i = 1; i < d.starts.size(); ++i)
+    sink_.error(d.starts[i].where, "the arena's start is already given")
+        .notes.emplace_back(d.starts[0].where, "first given here");
+  if (!d.starts.empty() && !d.starts[0].random) {
+    const ast::Start& s = d.starts[0];
+    const auto x = to_si(s.x, Dim::Length, sink_), y = to_si(s.y, Dim::Length, sink_);
+    std::optional<double> heading = 0.0;
+    if (s.heading) heading = to_si(*s.heading, Dim::Angle, sink_);
+    if (x && y && heading) {
+      if (size_ok && (*x < 0 || *y < 0 || *x > a.width_m || *y > a.height_m))
+        sink_.error(s.where, fmt::format("the start position is outside the arena ({})", arena_text));
+      else
+        a.fixed_start = sim::Pose{*x, *y, *heading};
+    }
+  }
+  if (sink_.errors() == errors) slot = a;
+  return slot;
+}
+
+// ---- robots -------------------------------------------------------------------------
+
+bool Model::apply_settings(sim::KheperaParams& p, const std::vector<ast::Setting>& settings) {
+  bool ok = true;
+  std::map<std::string, const ast::Setting*> seen;
+  for (const ast::Setting& s : settings) {
+    if (s.key.text.empty()) {
+      ok = false;
+      continue;
+    }
+    const RobotSetting* info = find_robot_setting(s.key.text);
+    if (info == nullptr) {
+      std::string msg = fmt::format("unknown robot setting `{}`", s.key.text);
+      const auto best = closest(s.key.text, robot_setting_names());
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& d = sink_.error(s.key.where, msg);
+      if (!best) d.help.push_back(fmt::format("robot settings: {}", fmt::join(robot_setting_names(), ", ")));
+      ok = false;
+      continue;
+    }
+    if (auto [it, fresh] = seen.try_emplace(s.key.text, &s); !fresh) {
+      sink_.error(s.key.where, fmt::format("`{}` is already set in this block", s.key.text))
+          .notes.emplace_back(it->second->key.where, "first set here");
+      ok = false;
+      continue;
+    }
+    const ast::Value& v = s.value;
+    if (v.kind == ast::Value::Kind::Quantity && !v.q.finite) {
+      ok = false;
+      continue;
+    }
+    const SettingValue r = read_robot_value(*info, v.kind == ast::Value::Kind::Bool, v.flag, v.q.value, v.q.text, v.q.unit);
+    if (!r.ok) {
+      const SourceRange& where =
+          v.kind == ast::Value::Kind::Quantity && !v.q.unit.empty() && r.message.find("unit") != std::string::npos
+              ? v.q.unit_where
+              : v.where;
+      Diagnostic& d = sink_.error(where, r.message);
+      if (!r.help.empty()) d.help.push_back(r.help);
+      ok = false;
+      continue;
+    }
+    info->set(p, r.si);
+  }
+  return ok;
+}
+
+const std::optional<sim::KheperaParams>& Model::robot(const ast::RobotDecl& d) {
+  if (auto it = robots_.find(&d); it != robots_.end()) return it->second;
+  static const std::optional<sim::KheperaParams> kNone;
+  if (d.poisoned) return robots_[&d];
+  if (robots_in_progress_.count(&d) != 0) {
+    sink_.error(d.name.where, fmt::format("robot `{}` is derived from itself", d.name.text));
+    robots_[&d] = std::nullopt;
+    return robots_[&d];
+  }
+  robots_in_progress_.insert(&d);
+  std::optional<sim::KheperaParams> base = sim::KheperaParams{};
+  if (d.base) {
+    base.reset();
+    if (const Symbol* s = lookup(*d.base, DeclKind::Robot)) base = robot(*static_cast<const ast::RobotDecl*>(s->decl));
+  }
+  robots_in_progress_.erase(&d);
+  if (auto it = robots_.find(&d); it != robots_.end()) return it->second;   // set by a cycle report
+  auto& slot = robots_[&d];
+  if (!base) return slot;
+  sim::KheperaParams p = *base;
+  if (!apply_settings(p, d.settings)) return slot;
+  if (std::string m = check_robot(p); !m.empty()) {
+    sink_.error(d.name.where, m);
+    return slot;
+  }
+  slot = p;
+  return slot;
+}
+
+// ---- behaviors ----------------------------------------------------------------------
+
+const std::optional<control::Behavior>& Model::behavior(const ast::BehaviorDecl& d) {
+  if (auto it = behaviors_.find(&d); it != behaviors_.end()) return it->second;
+  auto& slot = behaviors_[&d];
+  if (d.poisoned) return slot;
+  const int errors = sink_.errors();
+  control::Behavior b;
+  b.name = d.name.text;
+  ExprScope scope;
+  for (const ast::Name& p : d.params) {
+    if (std::find(scope.params.begin(), scope.params.end(), p.text) != scope.params.end()) {
+      sink_.error(p.where, fmt::format("parameter `{}` is listed twice", p.text));
+      continue;
+    }
+    scope.params.push_back(p.text);
+  }
+  if (d.params.size() > expr::kMaxParams)
+    sink_.error(d.params[expr::kMaxParams].where,
+                fmt::format("a behavior takes at most {} parameters, `{}` has {}", expr::kMaxParams, d.name.text,
+                            d.params.size()));
+  if (d.body_fn.text != "wheels") {
+    Diagnostic& diag = sink_.error(d.body_fn.where, fmt::format("unknown command `{}`{}", d.body_fn.text,
+                                                                closest(d.body_fn.text, {"wheels"})
+                                                                    ? "; did you mean `wheels`?"
+                                                                    : ""));
+    diag.help.push_back("a behavior's body is `wheels(left, right)`, two wheel commands in [-1, 1]");
+  } else if (d.body_args.size() != 2) {
+    sink_.error(d.body_where, fmt::format("`wheels` takes 2 arguments (left, right), found {}", d.body_args.size()));
+  } else if (sink_.errors() == errors) {
+    auto l = lower_expr(*d.body_args[0], scope, sink_);
+    auto r = lower_expr(*d.body_args[1], scope, sink_);
+    if (l && r) {
+      b.left = std::move(*l);
+      b.right = std::move(*r);
+    }
+  }
+  for (const std::string& p : scope.params) b.params.push_back(p);
+  if (sink_.errors() == errors) slot = std::move(b);
+  return slot;
+}
+
+// ---- fitness ------------------------------------------------------------------------
+
+const std::optional<FitnessResult>& Model::fitness(const ast::FitnessDecl& d) {
+  if (auto it = fitnesses_.find(&d); it != fitnesses_.end()) return it->second;
+  auto& slot = fitnesses_[&d];
+  if (d.poisoned) return slot;
+  const int errors = sink_.errors();
+  FitnessResult f;
+  f.spec.name = d.name.text;
+  const ExprScope scope;
+  if (d.steps.empty())
+    sink_.error(d.name.where, fmt::format("fitness `{}` has no `step:` term", d.name.text))
+        .help.push_back("add `step: forward_speed`, the value added up at every control step");
+  for (std::size_t i = 1; i < d.steps.size(); ++i)
+    sink_.error(d.steps[i].where, "the fitness already has a `step:` term")
+        .notes.emplace_back(d.steps[0].where, "first given here");
+  if (!d.steps.empty() && d.steps[0].expr) {
+    if (auto p = lower_expr(*d.steps[0].expr, scope, sink_)) f.spec.step = std::move(*p);
+    f.step_text = d.steps[0].text;
+  }
+  for (const ast::FitnessTerm& s : d.stops) {
+    if (!s.expr) continue;
+    if (auto p = lower_expr(*s.expr, scope, sink_)) f.spec.stop_when.push_back(std::move(*p));
+    f.stop_texts.push_back(s.text);
+  }
+  if (sink_.errors() == errors) slot = std::move(f);
+  return slot;
+}
+
+// ---- controllers --------------------------------------------------------------------
+
+const std::optional<control::ControllerSpec>& Model::controller(const ast::ControllerDecl& d) {
+  if (auto it = controllers_.find(&d); it != controllers_.end()) return it->second;
+  auto& slot = controllers_[&d];
+  if (d.poisoned) return slot;
+  const int errors = sink_.errors();
+  control::ControllerSpec c;
+  c.name = d.name.text;
+  c.head = d.symbolic ? control::Head::Symbolic : control::Head::Classical;
+
+  std::vector<std::string> observables;
+  for (const auto& o : expr::kObservables) observables.emplace_back(o.name);
+  for (const ast::Input& in : d.inputs) {
+    const auto o = expr::find_observable(in.name.text);
+    if (!o) {
+      std::string msg = fmt::format("unknown input `{}`", in.name.text);
+      const auto best = closest(in.name.text, observables);
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& diag = sink_.error(in.name.where, msg);
+      if (!best) diag.help.push_back("inputs are observables, such as `ir[0..7]`, `speed` or `wheels[0]`");
+      continue;
+    }
+    if (!in.lo) {
+      for (expr::Slot i = 0; i < o->count; ++i) c.mlp.inputs.push_back(o->first + i);
+      continue;
+    }
+    if (!o->indexed) {
+      sink_.error(in.where, fmt::format("`{}` is a single value and cannot be indexed", in.name.text));
+      continue;
+    }
+    const auto lo = to_whole(*in.lo, "an index", 0, o->count - 1, sink_);
+    std::optional<long long> hi = lo;
+    if (in.hi) hi = to_whole(*in.hi, "an index", 0, o->count - 1, sink_);
+    if (!lo || !hi) continue;
+    if (*hi < *lo) {
+      sink_.error(in.where, fmt::format("empty range `{}[{}..{}]`: the first index must not exceed the last",
+                                        in.name.text, *lo, *hi));
+      continue;
+    }
+    for (long long i = *lo; i <= *hi; ++i) c.mlp.inputs.push_back(o->first + static_cast<expr::Slot>(i));
+  }
+
+  bool has_wheels = false;
+  const std::vector<std::string> layer_words = {"hidden", "wheels"};
+  for (std::size_t i = 0; i < d.layers.size(); ++i) {
+    const ast::Layer& l = d.layers[i];
+    if (l.word.text == "hidden") {
+      if (!l.size) {
+        sink_.error(l.where, "a hidden layer needs a size").help.push_back("write `hidden 20`");
+        continue;
+      }
+      if (const auto n = to_whole(*l.size, "a hidden layer's size", 1, 100000, sink_)) c.mlp.hidden.push_back(static_cast<int>(*n));
+    } else if (l.word.text == "wheels") {
+      if (l.size) sink_.error(l.size->where, "the `wheels` output takes no size: it is always 2 wheel commands");
+      if (d.symbolic) {
+        sink_.error(l.where, "a symbolic controller's network has no `wheels` output: its outputs choose among the actions")
+            .help.push_back("write `symbolic(mlp(ir[0..7] -> hidden 14), actions [forward, left, right])`");
+      } else if (i + 1 != d.layers.size()) {
+        sink_.error(l.where, "`wheels` must be the last layer");
+      }
+      has_wheels = true;
+    } else if (!l.word.text.empty()) {
+      std::string msg = fmt::format("unknown layer `{}`", l.word.text);
+      const auto best = closest(l.word.text, layer_words);
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& diag = sink_.error(l.word.where, msg);
+      if (!best) diag.help.push_back("layers are `hidden N` and, last, `wheels`");
+    }
+  }
+  if (!d.symbolic && !has_wheels && sink_.errors() == errors)
+    sink_.error(d.kind_where, "a classical controller must end with `-> wheels`")
+        .help.push_back("write `mlp(ir[0..7] -> hidden 20 -> wheels)`");
+
+  std::set<std::string> listed;
+  for (const ast::Name& a : d.actions) {
+    if (!listed.insert(a.text).second) {
+      sink_.error(a.where, fmt::format("action `{}` is listed twice", a.text));
+      continue;
+    }
+    const Symbol* s = lookup(a, DeclKind::Behavior);
+    if (s == nullptr) continue;
+    const auto& b = behavior(*static_cast<const ast::BehaviorDecl*>(s->decl));
+    if (b) c.actions.push_back(*b);
+  }
+  if (c.mlp.inputs.empty() && sink_.errors() == errors) sink_.error(d.kind_where, "a controller needs at least one input");
+  if (sink_.errors() == errors && c.actions.size() == d.actions.size()) slot = std::move(c);
+  return slot;
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,287 @@
+#include "compiler/lower_expr.hpp"
+
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compiler/names.hpp"
+#include "compiler/units.hpp"
+#include "runtime/expr/observables.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+using expr::Op;
+
+struct Function {
+  std::string_view name;
+  int arity;
+  Op op;
+};
+
+constexpr std::array kFunctions = {
+    Function{"min", 2, Op::Min},      Function{"max", 2, Op::Max},     Function{"abs", 1, Op::Abs},
+    Function{"sqrt", 1, Op::Sqrt},    Function{"exp", 1, Op::Exp},     Function{"log", 1, Op::Log},
+    Function{"tanh", 1, Op::Tanh},    Function{"sigmoid", 1, Op::Sigmoid}, Function{"clamp", 3, Op::Clamp},
+    Function{"pow", 2, Op::Pow},
+};
+
+std::optional<Op> binary_op(const std::string& s) {
+  if (s == "+") return Op::Add;
+  if (s == "-") return Op::Sub;
+  if (s == "*") return Op::Mul;
+  if (s == "/") return Op::Div;
+  if (s == "^") return Op::Pow;
+  if (s == "<") return Op::Lt;
+  if (s == "<=") return Op::Le;
+  if (s == ">") return Op::Gt;
+  if (s == ">=") return Op::Ge;
+  if (s == "==") return Op::Eq;
+  if (s == "!=") return Op::Ne;
+  if (s == "and") return Op::And;
+  if (s == "or") return Op::Or;
+  return std::nullopt;
+}
+
+// A lowered subexpression: a constant, or postfix code.
+struct Node {
+  bool ok = true;
+  std::optional<double> constant;
+  std::vector<expr::Instr> code;
+};
+
+Node constant(double v) {
+  Node n;
+  n.constant = v;
+  return n;
+}
+
+void append(std::vector<expr::Instr>& out, const Node& n) {
+  if (n.constant) out.push_back({Op::Const, 0, *n.constant});
+  else out.insert(out.end(), n.code.begin(), n.code.end());
+}
+
+// Applies `op` to constant operands with the runtime's own semantics.
+double fold(Op op, const std::vector<double>& args) {
+  expr::Program p;
+  for (double a : args) p.push_const(a);
+  p.push_op(op);
+  const expr::Frame frame{};
+  return p.eval(frame);
+}
+
+class Lowerer {
+ public:
+  Lowerer(const ExprScope& scope, Sink& sink) : scope_(scope), sink_(sink) {}
+
+  Node lower(const ast::Expr& e) {
+    using K = ast::Expr::Kind;
+    switch (e.kind) {
+      case K::Error: return failed();
+      case K::Number: return number(e);
+      case K::Bool: return constant(e.number);
+      case K::Name: return name(e);
+      case K::Index: return index(e);
+      case K::Call: return call(e);
+      case K::Unary: return apply(e.text == "not" ? Op::Not : Op::Neg, e.args);
+      case K::Binary: {
+        const auto op = binary_op(e.text);
+        if (!op) return failed();
+        return apply(*op, e.args);
+      }
+      case K::If: {
+        if (e.args.size() != 3) return failed();
+        Node c = lower(*e.args[0]), a = lower(*e.args[1]), b = lower(*e.args[2]);
+        if (!c.ok || !a.ok || !b.ok) return failed();
+        if (c.constant) return *c.constant != 0.0 ? a : b;
+        return combine(Op::Select, {c, a, b});
+      }
+    }
+    return failed();
+  }
+
+ private:
+  static Node failed() {
+    Node n;
+    n.ok = false;
+    return n;
+  }
+
+  Node number(const ast::Expr& e) {
+    if (e.unit.empty()) return constant(e.number);
+    const auto u = find_unit(e.unit);
+    if (!u) {
+      std::string msg = fmt::format("unknown unit `{}`", e.unit);
+      if (auto best = closest(e.unit, unit_names())) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& d = sink_.error(e.unit_where, msg);
+      if (e.unit.find('/') != std::string::npos)
+        d.help.push_back("to divide by a name, put the quantity in parentheses: `(2cm) / speed`");
+      return failed();
+    }
+    return constant(e.number * u->to_si);
+  }
+
+  std::vector<std::string> known_names() const {
+    std::vector<std::string> v = scope_.params;
+    for (const auto& o : expr::kObservables) v.emplace_back(o.name);
+    return v;
+  }
+
+  Node name(const ast::Expr& e) {
+    for (std::size_t i = 0; i < scope_.params.size(); ++i)
+      if (scope_.params[i] == e.text) return load(expr::slot::param + static_cast<expr::Slot>(i));
+    if (const auto o = expr::find_observable(e.text)) {
+      if (o->indexed) {
+        sink_.error(e.where, fmt::format("`{}` holds {} values; pick one with an index", e.text, o->count))
+            .help.push_back(fmt::format("write `{}[0]` .. `{}[{}]`", e.text, e.text, o->count - 1));
+        return failed();
+      }
+      return load(o->first);
+    }
+    if (e.text == "true" || e.text == "false") return constant(e.text == "true" ? 1.0 : 0.0);
+    unknown_name(e.text, e.where);
+    return failed();
+  }
+
+  void unknown_name(const std::string& text, const SourceRange& where) {
+    std::string msg = fmt::format("unknown name `{}`", text);
+    const auto best = closest(text, known_names());
+    if (best) msg += fmt::format("; did you mean `{}`?", *best);
+    Diagnostic& d = sink_.error(where, msg);
+    if (!best) d.help.push_back("observables are listed in docs/language.md (`speed`, `forward_speed`, "
+                                "`wheel_diff`, `wheels[i]`, `ir[i]`, `collision`, `step`, `time`, `epoch`)");
+  }
+
+  Node index(const ast::Expr& e) {
+    const auto o = expr::find_observable(e.text);
+    if (!o) {
+      unknown_name(e.text, e.unit_where);
+      return failed();
+    }
+    if (!o->indexed) {
+      sink_.error(e.where, fmt::format("`{}` is a single value and cannot be indexed", e.text))
+          .help.push_back(fmt::format("write `{}`", e.text));
+      return failed();
+    }
+    if (e.args.size() != 1) return failed();
+    const Node i = lower(*e.args[0]);
+    if (!i.ok) return failed();
+    if (!i.constant) {
+      sink_.error(e.args[0]->where, "an index must be a constant");
+      return failed();
+    }
+    const double v = *i.constant;
+    if (v != std::floor(v) || v < 0 || v >= o->count) {
+      sink_.error(e.args[0]->where, fmt::format("index {} is out of range: `{}` has {} values, {}[0] .. {}[{}]",
+                                                fmt::format("{}", v), e.text, o->count, e.text, e.text,
+                                                o->count - 1));
+      return failed();
+    }
+    return load(o->first + static_cast<expr::Slot>(v));
+  }
+
+  Node call(const ast::Expr& e) {
+    const Function* f = nullptr;
+    for (const Function& k : kFunctions)
+      if (k.name == e.text) f = &k;
+    if (f == nullptr) {
+      if (expr::find_observable(e.text)) {
+        sink_.error(e.unit_where, fmt::format("`{}` is an observable, not a function", e.text))
+            .help.push_back(fmt::format("index an array with brackets: `{}[0]`", e.text));
+        return failed();
+      }
+      std::string msg = fmt::format("unknown function `{}`", e.text);
+      const auto best = closest(e.text, function_names());
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& d = sink_.error(e.unit_where, msg);
+      if (!best) d.help.push_back("functions: min, max, abs, sqrt, exp, log, tanh, sigmoid, clamp, pow");
+      // Still check the arguments.
+      for (const auto& a : e.args) (void)lower(*a);
+      return failed();
+    }
+    if (static_cast<int>(e.args.size()) != f->arity) {
+      sink_.error(e.where, fmt::format("`{}` takes {} argument{}, found {}", f->name, f->arity,
+                                       f->arity == 1 ? "" : "s", e.args.size()));
+      return failed();
+    }
+    return apply(f->op, e.args);
+  }
+
+  Node apply(Op op, const std::vector<ast::ExprPtr>& args) {
+    std::vector<Node> nodes;
+    bool ok = true;
+    for (const auto& a : args) {
+      nodes.push_back(a ? lower(*a) : failed());
+      ok = ok && nodes.back().ok;
+    }
+    if (!ok || static_cast<int>(nodes.size()) != expr::arity(op)) return failed();
+    return combine(op, nodes);
+  }
+
+  static Node combine(Op op, const std::vector<Node>& nodes) {
+    bool all_const = true;
+    std::vector<double> values;
+    for (const Node& n : nodes) {
+      all_const = all_const && n.constant.has_value();
+      if (n.constant) values.push_back(*n.constant);
+    }
+    if (all_const) return constant(fold(op, values));
+    Node out;
+    for (const Node& n : nodes) append(out.code, n);
+    out.code.push_back({op, 0, 0.0});
+    return out;
+  }
+
+  static Node load(expr::Slot s) {
+    Node n;
+    n.code.push_back({Op::Load, s, 0.0});
+    return n;
+  }
+
+  const ExprScope& scope_;
+  Sink& sink_;
+};
+
+}  // namespace
+
+std::vector<std::string> function_names() {
+  std::vector<std::string> v;
+  for (const Function& f : kFunctions) v.emplace_back(f.name);
+  return v;
+}
+
+std::optional<expr::Program> lower_expr(const ast::Expr& e, const ExprScope& scope, Sink& sink) {
+  Lowerer l(scope, sink);
+  const Node n = l.lower(e);
+  if (!n.ok) return std::nullopt;
+  expr::Program p;
+  try {
+    if (n.constant) {
+      p.push_const(*n.constant);
+    } else {
+      for (const expr::Instr& in : n.code) {
+        if (in.op == Op::Const) p.push_const(in.value);
+        else if (in.op == Op::Load) p.push_load(in.slot);
+        else p.push_op(in.op);
+      }
+    }
+  } catch (const std::exception&) {
+    sink.error(e.where, "internal error: could not compile this expression");
+    return std::nullopt;
+  }
+  if (p.max_depth() > expr::Program::kMaxStack) {
+    sink.error(e.where, fmt::format("expression too deep to evaluate: it needs a stack of {} values, at most {}",
+                                    p.max_depth(), expr::Program::kMaxStack))
+        .help.push_back("simplify it; a left-to-right sum `a + b + c` needs less stack than `a + (b + c)`");
+    return std::nullopt;
+  }
+  if (!p.complete()) {
+    sink.error(e.where, "internal error: incomplete expression program");
+    return std::nullopt;
+  }
+  return p;
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,73 @@
+#pragma once
+// The checked model of a compilation: one global namespace of declarations over every
+// loaded file, and the lowering of each declaration to its runtime object (memoised, so a
+// declaration used by several experiments is checked and reported once).
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "compiler/ast.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/control/controller_spec.hpp"
+#include "runtime/eval/experiment.hpp"
+
+namespace esc::compiler {
+
+enum class DeclKind { Arena, Robot, Behavior, Fitness, Controller, Experiment };
+[[nodiscard]] std::string_view kind_name(DeclKind k) noexcept;
+
+struct Symbol {
+  DeclKind kind;
+  const ast::DeclHead* head;
+  const void* decl;
+};
+
+struct FitnessResult {
+  eval::FitnessSpec spec;
+  std::string step_text;
+  std::vector<std::string> stop_texts;
+};
+
+class Model {
+ public:
+  explicit Model(Sink& sink) : sink_(sink) {}
+
+  void declare(const ast::Module& m);       // registers names; reports duplicates
+  void check_all();                          // lowers every declaration once
+  [[nodiscard]] std::vector<eval::ExperimentSpec> experiments(const ast::Module& main);
+
+ private:
+  // Looks `ref` up as a `want`; reports unknown names and wrong kinds. Null when it fails
+  // (also, silently, when the target holds a syntax error).
+  const Symbol* lookup(const ast::Name& ref, DeclKind want);
+  void add(DeclKind k, const ast::DeclHead& h, const void* d);
+
+  const std::optional<sim::ArenaSpec>& arena(const ast::ArenaDecl& d);
+  const std::optional<sim::KheperaParams>& robot(const ast::RobotDecl& d);
+  const std::optional<control::Behavior>& behavior(const ast::BehaviorDecl& d);
+  const std::optional<FitnessResult>& fitness(const ast::FitnessDecl& d);
+  const std::optional<control::ControllerSpec>& controller(const ast::ControllerDecl& d);
+  std::optional<eval::ExperimentSpec> experiment(const ast::ExperimentDecl& d);
+
+  // Applies `robot { ... }` settings in order; false when one is wrong (reported).
+  bool apply_settings(sim::KheperaParams& p, const std::vector<ast::Setting>& settings);
+  // Checks that the robot fits the arena and a fixed start pose is clear (reported).
+  bool check_fit(const ast::ArenaDecl& a, const sim::ArenaSpec& arena, const sim::KheperaParams& robot,
+                 const SourceRange& use);
+
+  Sink& sink_;
+  std::map<std::string, Symbol> symbols_;
+  std::vector<const ast::Module*> modules_;
+  std::map<const void*, std::optional<sim::ArenaSpec>> arenas_;
+  std::map<const void*, std::optional<sim::KheperaParams>> robots_;
+  std::set<const void*> robots_in_progress_;
+  std::map<const void*, std::optional<control::Behavior>> behaviors_;
+  std::map<const void*, std::optional<FitnessResult>> fitnesses_;
+  std::map<const void*, std::optional<control::ControllerSpec>> controllers_;
+  std::map<const void*, std::optional<eval::ExperimentSpec>> experiments_;
+  std::map<const void*, std::string> robot_names_;
+};
+
+}  // namespace esc::compiler

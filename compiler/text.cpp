@@ -1,0 +1,86 @@
+#include "compiler/text.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+// Length of the valid UTF-8 sequence starting at s[i], or 0 when it is invalid.
+std::size_t valid_sequence(std::string_view s, std::size_t i) noexcept {
+  const auto b0 = static_cast<unsigned char>(s[i]);
+  if (b0 < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned int cp = 0;
+  if ((b0 & 0xE0) == 0xC0) { n = 2; cp = b0 & 0x1Fu; }
+  else if ((b0 & 0xF0) == 0xE0) { n = 3; cp = b0 & 0x0Fu; }
+  else if ((b0 & 0xF8) == 0xF0) { n = 4; cp = b0 & 0x07u; }
+  else return 0;
+  if (i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const auto b = static_cast<unsigned char>(s[i + k]);
+    if ((b & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (b & 0x3Fu);
+  }
+  // Overlong forms, surrogates and values past U+10FFFF are invalid.
+  if ((n == 2 && cp < 0x80) || (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000)) return 0;
+  if (cp >= 0xD800 && cp <= 0xDFFF) return 0;
+  if (cp > 0x10FFFF) return 0;
+  return n;
+}
+
+}  // namespace
+
+CleanText clean_utf8(std::string_view text) {
+  CleanText out;
+  out.display.reserve(text.size());
+  out.parser.reserve(text.size());
+  int line = 1, column = 1, last_bad_line = 0;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t n = valid_sequence(text, i);
+    if (n == 0) {
+      if (last_bad_line != line) {
+        out.invalid.push_back({line, column});
+        last_bad_line = line;
+      }
+      out.display += "\xEF\xBF\xBD";
+      out.parser += ' ';
+      ++i;
+      ++column;
+      continue;
+    }
+    out.display.append(text.substr(i, n));
+    out.parser.append(text.substr(i, n));
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+    i += n;
+  }
+  return out;
+}
+
+int utf8_length(std::string_view s) noexcept {
+  int n = 0;
+  for (char c : s)
+    if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) ++n;
+  return n;
+}
+
+std::string_view line_of(std::string_view text, int line) noexcept {
+  if (line < 1) return {};
+  std::size_t pos = 0;
+  for (int l = 1; l < line; ++l) {
+    const std::size_t nl = text.find('\n', pos);
+    if (nl == std::string_view::npos) return {};
+    pos = nl + 1;
+  }
+  std::size_t end = text.find('\n', pos);
+  if (end == std::string_view::npos) end = text.size();
+  std::string_view s = text.substr(pos, end - pos);
+  if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,186 @@
+// The esc scripting language. The parser is generated at build time (grammar/CMakeLists.txt)
+// and used only by the compiler (compiler/parse.cpp), which turns the parse tree into an AST.
+// The language is described for users in docs/language.md.
+//
+// Units: the lexer never produces UNIT; the compiler retypes an identifier that follows a
+// number into UNIT before parsing when it is attached to the number (`60cm`, `60cn`) or is a
+// known unit name (`0.5 m/s^2`), so `substeps 5 ir_rays 3` still reads as two settings.
+grammar Esc;
+
+tokens { UNIT }
+
+script : decl* EOF ;
+
+decl
+  : importDecl
+  | arenaDecl
+  | robotDecl
+  | behaviorDecl
+  | fitnessDecl
+  | controllerDecl
+  | experimentDecl
+  ;
+
+importDecl : IMPORT STRING ';'? ;
+
+// ---- arenas -------------------------------------------------------------------------
+arenaDecl : ARENA name=ident '{' arenaItem* '}' ;
+
+arenaItem
+  : kw=(SIZE | BOX) w=quantity X h=quantity ';'?                                  # arenaSize
+  | CYLINDER AT point RADIUS r=quantity ';'?                                        # arenaCylinder
+  | BLOCK AT point SIZE w=quantity X h=quantity (ANGLE a=quantity)? ';'?            # arenaBlock
+  | START RANDOM ';'?                                                               # arenaStartRandom
+  | START AT point (HEADING a=quantity)? ';'?                                       # arenaStartAt
+  ;
+
+point : '(' x=quantity ',' y=quantity ')' ;
+
+quantity : sign=('-' | '+')? NUMBER unit? ;
+unit : UNIT ('/' UNIT ('^' NUMBER)?)? ;
+
+// ---- robots -------------------------------------------------------------------------
+robotDecl : ROBOT name=ident ('=' base=ident)? settingsBlock? ;
+settingsBlock : '{' setting* '}' ;
+setting : key=ident value ';'? ;
+value : quantity | ON | OFF | TRUE | FALSE ;
+
+// ---- behaviors ----------------------------------------------------------------------
+behaviorDecl : BEHAVIOR name=ident '(' (ident (',' ident)*)? ')' '{' body=call ';'? '}' ;
+call : fn=ident '(' (expr (',' expr)*)? ')' ;
+
+// ---- fitness ------------------------------------------------------------------------
+fitnessDecl : FITNESS name=ident '{' fitnessItem* '}' ;
+fitnessItem
+  : STEP ':' expr ';'?            # fitnessStep
+  | STOP EPOCH WHEN expr ';'?     # fitnessStop
+  ;
+
+// ---- controllers --------------------------------------------------------------------
+controllerDecl : CONTROLLER name=ident '=' controllerExpr ';'? ;
+controllerExpr
+  : MLP '(' network ')'                                                               # mlpController
+  | SYMBOLIC '(' MLP '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'        # symbolicController
+  ;
+network : input (',' input)* ('->' layer)* ;
+input : ident ('[' lo=NUMBER ('..' hi=NUMBER)? ']')? ;
+layer : ident NUMBER? ;
+
+// ---- experiments --------------------------------------------------------------------
+experimentDecl : EXPERIMENT name=ident '{' expItem* '}' ;
+expItem
+  : ARENA ident ';'?                                                             # expArena
+  | ROBOT ident settingsBlock? ';'?                                               # expRobot
+  | EPOCHS NUMBER (X NUMBER STEPS)? ';'?                                          # expEpochs
+  | STEPS NUMBER ';'?                                                             # expSteps
+  | FITNESS ident ';'?                                                            # expFitness
+  | EVOLVE ident ('(' (esOption (',' esOption)*)? ')')? (FOR NUMBER GENERATIONS)? ';'?   # expEvolve
+  | RUNS NUMBER ';'?                                                              # expRuns
+  | SEED NUMBER ';'?                                                              # expSeed
+  | COMPARE ident (',' ident)* ';'?                                               # expCompare
+  ;
+esOption : ident ('[' lo=quantity ',' hi=quantity ']' | quantity)? ;
+
+// ---- expressions (earlier alternatives bind tighter) ---------------------------------
+expr
+  : '(' expr ')'                                           # parenExpr
+  | NUMBER unit?                                           # numberExpr
+  | (TRUE | FALSE)                                         # boolExpr
+  | ident '(' (expr (',' expr)*)? ')'                      # callExpr
+  | ident '[' expr ']'                                     # indexExpr
+  | ident                                                  # nameExpr
+  | <assoc=right> expr '^' expr                            # powExpr
+  | op=('-' | '+') expr                                    # unaryExpr
+  | expr op=('*' | '/') expr                               # mulExpr
+  | expr op=('+' | '-') expr                               # addExpr
+  | expr op=('<' | '<=' | '>' | '>=' | '==' | '!=') expr   # cmpExpr
+  | NOT expr                                               # notExpr
+  | expr AND expr                                          # andExpr
+  | expr OR expr                                           # orExpr
+  | IF expr THEN expr ELSE expr                            # ifExpr
+  ;
+
+// Words that are keywords in one place and ordinary names elsewhere.
+ident
+  : ID | X | STEPS | STEP | EPOCH | EPOCHS | STOP | WHEN | AT | RADIUS | SIZE | BOX | ANGLE
+  | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
+  | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | ON | OFF
+  ;
+
+// ---- lexer --------------------------------------------------------------------------
+IMPORT : 'import' ;
+ARENA : 'arena' ;
+ROBOT : 'robot' ;
+BEHAVIOR : 'behavior' ;
+FITNESS : 'fitness' ;
+CONTROLLER : 'controller' ;
+EXPERIMENT : 'experiment' ;
+IF : 'if' ;
+THEN : 'then' ;
+ELSE : 'else' ;
+AND : 'and' ;
+OR : 'or' ;
+NOT : 'not' ;
+TRUE : 'true' ;
+FALSE : 'false' ;
+
+X : 'x' ;
+STEPS : 'steps' ;
+STEP : 'step' ;
+EPOCH : 'epoch' ;
+EPOCHS : 'epochs' ;
+STOP : 'stop' ;
+WHEN : 'when' ;
+AT : 'at' ;
+RADIUS : 'radius' ;
+SIZE : 'size' ;
+BOX : 'box' ;
+ANGLE : 'angle' ;
+START : 'start' ;
+RANDOM : 'random' ;
+HEADING : 'heading' ;
+CYLINDER : 'cylinder' ;
+BLOCK : 'block' ;
+MLP : 'mlp' ;
+SYMBOLIC : 'symbolic' ;
+ACTIONS : 'actions' ;
+FOR : 'for' ;
+GENERATIONS : 'generations' ;
+RUNS : 'runs' ;
+SEED : 'seed' ;
+COMPARE : 'compare' ;
+EVOLVE : 'evolve' ;
+ON : 'on' ;
+OFF : 'off' ;
+
+ARROW : '->' ;
+DOTDOT : '..' ;
+LE : '<=' ;
+GE : '>=' ;
+EQ : '==' ;
+NE : '!=' ;
+LT : '<' ;
+GT : '>' ;
+PLUS : '+' ;
+MINUS : '-' ;
+STAR : '*' ;
+SLASH : '/' ;
+CARET : '^' ;
+LPAREN : '(' ;
+RPAREN : ')' ;
+LBRACK : '[' ;
+RBRACK : ']' ;
+LBRACE : '{' ;
+RBRACE : '}' ;
+COMMA : ',' ;
+SEMI : ';' ;
+COLON : ':' ;
+ASSIGN : '=' ;
+
+NUMBER : [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)? ;
+ID : [a-zA-Z_] [a-zA-Z_0-9]* ;
+STRING : '"' (~["\\\r\n] | '\\' ~[\r\n])* '"' ;
+
+LINE_COMMENT : '//' ~[\r\n]* -> skip ;
+BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
+WS : [ \t\r\n\f]+ -> skip ;

@@ -1,0 +1,28 @@
+#pragma once
+// Shared helpers of the compiler tests.
+#include <filesystem>
+#include <string>
+
+#include "compiler/compiler.hpp"
+
+namespace esc::compiler::test {
+
+inline std::filesystem::path source_dir() { return ESC_SOURCE_DIR; }
+
+inline CompileOptions options() {
+  CompileOptions o;
+  o.import_paths.push_back(source_dir() / "experiments");
+  return o;
+}
+
+inline std::string rendered(const CompileResult& r) { return render_all(r.diagnostics, r.sources); }
+
+// A complete script around one fitness `step:` expression.
+inline std::string with_step(const std::string& step) {
+  return "arena a { size 1m x 1m }\n"
+         "fitness f { step: " + step + " }\n"
+         "controller c = mlp(ir[0..7] -> wheels)\n"
+         "experiment e { arena a  fitness f  compare c }\n";
+}
+
+}  // namespace esc::compiler::test
