@@ -42,6 +42,6 @@ else
   out="runs/demo-$(date +%Y%m%d-%H%M%S)"
   # The paper's obstacle-avoidance comparison, shortened to a few minutes on 2 cores.
   "$BUILD_DIR/cli/esc" run experiments/paper/obstacle_avoidance.esc \
-      --runs 3 --generations 15 --set epochs=3 --seed 1 --out "$out"
+      --runs 3 --generations 30 --set epochs=5 --seed 1 --out "$out"
   echo "report: $out (summary.json, per-run CSV, best genomes, settings.json)"
 fi
