@@ -1,8 +1,14 @@
 #include "runtime/eval/observe.hpp"
 
 #include <cmath>
+#include <cstddef>
 
 namespace esc::eval {
+
+static_assert(expr::kMaxZones == sim::kMaxZones, "in(zone) slots: one per zone an arena may hold");
+static_assert(expr::kMaxLights == sim::kMaxLights, "reached(light) slots: one per light");
+static_assert(expr::kLightCount == sim::kLightSensors);
+static_assert(expr::kIrCount == sim::kIrSensors);
 
 void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
                    expr::Frame& frame) noexcept {
@@ -11,13 +17,30 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   const double full_step_m = p.motor.max_speed_mps * p.control_step_s;
   const double left = s.wheel_speed_mps[0] / p.motor.max_speed_mps;
   const double right = s.wheel_speed_mps[1] / p.motor.max_speed_mps;
-  frame[expr::slot::speed] = s.displacement_m / full_step_m;
+  // The body's origin is its centre of mass (a uniform cylinder), so the centre-of-mass
+  // speed is `speed`.
+  const double speed = s.displacement_m / full_step_m;
+  frame[expr::slot::speed] = speed;
+  frame[expr::slot::com_speed] = speed;
   frame[expr::slot::forward_speed] = s.forward_displacement_m / full_step_m;
   frame[expr::slot::wheel_diff] = std::abs(left - right) / 2.0;
   frame[expr::slot::wheels] = left;
   frame[expr::slot::wheels + 1] = right;
   frame[expr::slot::collision] = s.collided ? 1.0 : 0.0;
   for (std::size_t i = 0; i < ir.size(); ++i) frame[expr::slot::ir + i] = ir[i];
+  frame[expr::slot::energy] = s.energy;
+  frame[expr::slot::ground] = s.ground ? 1.0 : 0.0;
+  frame[expr::slot::new_cell] = s.new_cell ? 1.0 : 0.0;
+  frame[expr::slot::cells_visited] = s.cells_visited;
+  for (expr::Slot z = 0; z < expr::kMaxZones; ++z)
+    frame[expr::slot::in_zone + z] = (s.in_zone >> z) & 1U;
+  for (expr::Slot l = 0; l < expr::kMaxLights; ++l)
+    frame[expr::slot::reached + l] = (s.reached >> l) & 1U;
+}
+
+void observe_light(const std::array<double, sim::kLightSensors>& light,
+                   expr::Frame& frame) noexcept {
+  for (std::size_t i = 0; i < light.size(); ++i) frame[expr::slot::light + i] = light[i];
 }
 
 void observe_clock(int epoch, int step, double control_step_s, expr::Frame& frame) noexcept {

@@ -9,8 +9,14 @@
 
 namespace esc::eval {
 
-// Writes speed, forward_speed, wheel_diff, wheels[], collision and ir[] into `frame`.
+// Writes speed, com_speed, forward_speed, wheel_diff, wheels[], collision and ir[], and the
+// floor and accumulator state: energy, ground, new_cell, cells_visited, in_zone[] (`in(z)`)
+// and reached[] (`reached(l)`) into `frame`.
 void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
+                   expr::Frame& frame) noexcept;
+
+// Writes light[] from an ambient-light reading (World::read_light).
+void observe_light(const std::array<double, sim::kLightSensors>& light,
                    expr::Frame& frame) noexcept;
 
 // Writes the clock observables: step (from 0), time in seconds, epoch.

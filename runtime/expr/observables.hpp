@@ -24,13 +24,28 @@ inline constexpr Slot collision = 13;     // 1 if the body touched a wall or obs
 inline constexpr Slot step = 14;          // index of the control step in the epoch, from 0
 inline constexpr Slot time = 15;          // seconds since the epoch started
 inline constexpr Slot epoch = 16;         // index of the epoch in the evaluation, from 0
-inline constexpr Slot param = 17;         // param[0..3]: parameters of the running behavior
+inline constexpr Slot light = 17;         // light[0..7]: ambient light, 0 dark .. 1 bright
+inline constexpr Slot energy = 25;        // accumulator level, 0 empty .. 1 full (1 without energy)
+inline constexpr Slot com_speed = 26;     // centre-of-mass speed: the same value as `speed`
+inline constexpr Slot ground = 27;        // 1 when the centre is over a visible zone
+inline constexpr Slot new_cell = 28;      // 1 on the step the centre enters an unvisited grid cell
+inline constexpr Slot cells_visited = 29; // grid cells visited this epoch (start cell included)
+inline constexpr Slot in_zone = 30;       // in_zone[z]: `in(zone)`, 1 when the centre is in zone z
+inline constexpr Slot reached = 38;       // reached[l]: `reached(light)`, 1 on entering light l's reach
+inline constexpr Slot param = 42;         // param[0..3]: parameters of the running behavior (last)
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
+inline constexpr Slot kLightCount = 8;
 inline constexpr Slot kWheelCount = 2;
+inline constexpr Slot kMaxZones = 8;      // = sim::kMaxZones (checked in runtime/eval/observe.cpp)
+inline constexpr Slot kMaxLights = 4;     // = sim::kMaxLights
 inline constexpr Slot kMaxParams = 4;
 inline constexpr Slot kFrameSize = slot::param + kMaxParams;
+
+static_assert(slot::light + kLightCount == slot::energy);
+static_assert(slot::in_zone + kMaxZones == slot::reached);
+static_assert(slot::reached + kMaxLights == slot::param);
 
 using Frame = std::array<double, kFrameSize>;
 
@@ -60,10 +75,51 @@ inline constexpr std::array kObservables = {
     Observable{"step", slot::step, 1, false, "count", "control step within the epoch, from 0"},
     Observable{"time", slot::time, 1, false, "s", "time since the epoch started"},
     Observable{"epoch", slot::epoch, 1, false, "count", "epoch within the evaluation, from 0"},
+    Observable{"light", slot::light, kLightCount, true, "activation",
+               "ambient light sensors 0..7 (at the IR sensors' places), 0 dark .. 1 bright"},
+    Observable{"energy", slot::energy, 1, false, "fraction",
+               "accumulator level, 0 empty .. 1 full (1 when the robot has no energy model)"},
+    Observable{"com_speed", slot::com_speed, 1, false, "fraction of max speed",
+               "speed of the centre of mass over the last step, 0 .. 1 (the value of `speed`)"},
+    Observable{"ground", slot::ground, 1, false, "boolean",
+               "1 when the robot's centre is over a visible zone (the ground sensor)"},
+    Observable{"new_cell", slot::new_cell, 1, false, "boolean",
+               "1 on a step when the centre entered a grid cell not yet visited this epoch"},
+    Observable{"cells_visited", slot::cells_visited, 1, false, "count",
+               "grid cells visited in this epoch, the start cell included"},
+};
+
+// Observables that take an argument naming a thing of the arena, `in(zone)` and
+// `reached(light)`: a block of `count` slots from `first`, one per zone (light) in the
+// order the arena declares them, so `in(recharge)` reads slot in_zone + index of zone
+// `recharge`. They are not in kObservables: a bare `in` or `reached` is not an observable,
+// and the GP terminal set and the compiler's name lists do not see them.
+struct ParametrisedObservable {
+  std::string_view name;
+  Slot first;
+  Slot count;              // the most arguments an arena may declare
+  std::string_view argument;  // what the argument names: "zone" or "light"
+  std::string_view unit;
+  std::string_view summary;
+};
+
+inline constexpr std::array kParametrised = {
+    ParametrisedObservable{"in", slot::in_zone, kMaxZones, "zone", "boolean",
+                           "1 when the robot's centre is inside the zone (visible or not)"},
+    ParametrisedObservable{"reached", slot::reached, kMaxLights, "light", "boolean (event)",
+                           "1 on the step the robot's centre comes within the arena's reach "
+                           "radius of the light (rising edge: 0 while it stays there)"},
 };
 
 [[nodiscard]] constexpr std::optional<Observable> find_observable(std::string_view name) noexcept {
   for (const auto& o : kObservables)
+    if (o.name == name) return o;
+  return std::nullopt;
+}
+
+[[nodiscard]] constexpr std::optional<ParametrisedObservable> find_parametrised(
+    std::string_view name) noexcept {
+  for (const auto& o : kParametrised)
     if (o.name == name) return o;
   return std::nullopt;
 }

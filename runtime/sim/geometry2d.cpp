@@ -20,7 +20,15 @@ StaticGeometry2D::StaticGeometry2D(const ArenaSpec& arena)
 }
 
 double StaticGeometry2D::clearance(Vec2 p, double cutoff_m) const noexcept {
-  double best = std::min(std::min(p.x, width_ - p.x), std::min(p.y, height_ - p.y));
+  return clearance_from(std::min(std::min(p.x, width_ - p.x), std::min(p.y, height_ - p.y)), p,
+                        cutoff_m);
+}
+
+double StaticGeometry2D::obstacle_clearance(Vec2 p, double cutoff_m) const noexcept {
+  return clearance_from(kNoHit, p, cutoff_m);
+}
+
+double StaticGeometry2D::clearance_from(double best, Vec2 p, double cutoff_m) const noexcept {
   for (const Circle& c : circles_) {
     const double ex = p.x - c.cx;
     const double ey = p.y - c.cy;

@@ -21,6 +21,10 @@ class StaticGeometry2D {
   // is exact whenever it is below `cutoff_m`, else some value >= cutoff_m.
   [[nodiscard]] double clearance(Vec2 p, double cutoff_m = kNoHit) const noexcept;
 
+  // The same, counting only the obstacles (boxes and cylinders), not the walls; kNoHit in
+  // an arena without obstacles.
+  [[nodiscard]] double obstacle_clearance(Vec2 p, double cutoff_m = kNoHit) const noexcept;
+
   // Casts `n` rays (origins ox/oy, unit directions dx/dy, length max_t) and lowers
   // t[i] to the distance of the first hit of ray i (0 if its origin is inside a shape).
   // Only shapes within `reach_m` of `centre` are tested; every ray must lie in that disc.
@@ -28,6 +32,8 @@ class StaticGeometry2D {
                  const double* dx, const double* dy, double* t) const noexcept;
 
  private:
+  [[nodiscard]] double clearance_from(double best, Vec2 p, double cutoff_m) const noexcept;
+
   struct Box {    // centre, half extents, rotation as cos/sin, bounding radius
     double cx, cy, hx, hy, c, s, bound;
   };

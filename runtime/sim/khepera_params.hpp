@@ -17,6 +17,24 @@ struct IrParams {
   double noise_sd = 0.0;            // Gaussian noise on the normalised reading, then clamped to [0, 1]
 };
 
+// Ambient light: the same eight sensors in passive mode. A light of intensity I at distance
+// d and incidence angle a (from the sensor's facing direction) adds
+//   I * max(0, cos a) / (1 + (d / half_distance_m)^2)
+// to a sensor's reading, unless a wall or obstacle is in the way; the sum is clamped to [0, 1].
+struct LightSensorParams {
+  double half_distance_m = 0.2;     // a unit light straight ahead at this distance reads 0.5
+  double noise_sd = 0.0;            // Gaussian noise on the normalised reading, then clamped
+};
+
+// The accumulator of the homing experiment (paper section 4): full to empty in
+// discharge_steps control steps outside recharge zones, empty to full in recharge_steps
+// control steps inside one. Integrated exactly (integer units) at the physics substep rate.
+struct EnergyParams {
+  bool enabled = false;             // off: `energy` stays 1 and never ends an epoch
+  int discharge_steps = 285;        // paper: "completely consumes the accumulator in 285 steps"
+  int recharge_steps = 100;         // paper: "a full recharge takes 100 time steps"
+};
+
 struct KheperaParams {
   double body_radius_m = 0.0275;    // 55 mm diameter
   double body_height_m = 0.03;
@@ -26,6 +44,8 @@ struct KheperaParams {
   IrParams ir;
   double control_step_s = 0.1;      // one sense-control-act cycle
   int physics_substeps = 2;         // fixed physics steps per control step
+  LightSensorParams light;
+  EnergyParams energy;
 };
 
 }  // namespace esc::sim

@@ -28,6 +28,71 @@ void finite(const std::string& field, double v) {
   if (!std::isfinite(v)) fail(field, "finite", v);
 }
 
+void inside_arena(const std::string& field, const ArenaSpec& arena, double lo_x, double hi_x,
+                  double lo_y, double hi_y) {
+  if (lo_x < 0.0 || hi_x > arena.width_m || lo_y < 0.0 || hi_y > arena.height_m) {
+    std::ostringstream msg;
+    msg << field << " must lie inside the arena [0, " << arena.width_m << "] x [0, "
+        << arena.height_m << "] m (it spans [" << lo_x << ", " << hi_x << "] x [" << lo_y
+        << ", " << hi_y << "] m)";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+void validate_zones(const ArenaSpec& arena) {
+  if (arena.zones.size() > kMaxZones)
+    fail("arena zone count", "at most 8", static_cast<double>(arena.zones.size()));
+  for (std::size_t i = 0; i < arena.zones.size(); ++i) {
+    const Zone& z = arena.zones[i];
+    const std::string f = "arena.zones[" + std::to_string(i) + "]";
+    double hx = 0.0;
+    double hy = 0.0;
+    if (z.shape == ZoneShape::Circle) {
+      positive(f + ".radius_m", z.radius_m);
+      hx = hy = z.radius_m;
+    } else if (z.shape == ZoneShape::Rectangle) {
+      positive(f + ".size_m.x", z.size_m.x);
+      positive(f + ".size_m.y", z.size_m.y);
+      hx = 0.5 * z.size_m.x;
+      hy = 0.5 * z.size_m.y;
+    } else {
+      fail(f + ".shape", "Circle or Rectangle", static_cast<double>(z.shape));
+    }
+    if (z.random_position) {
+      // Only the size matters: the zone must fit.
+      inside_arena(f, arena, 0.0, 2 * hx, 0.0, 2 * hy);
+    } else {
+      finite(f + ".center_m.x", z.center_m.x);
+      finite(f + ".center_m.y", z.center_m.y);
+      inside_arena(f, arena, z.center_m.x - hx, z.center_m.x + hx, z.center_m.y - hy,
+                   z.center_m.y + hy);
+    }
+  }
+}
+
+void validate_lights(const ArenaSpec& arena) {
+  if (arena.lights.size() > kMaxLights)
+    fail("arena light count", "at most 4", static_cast<double>(arena.lights.size()));
+  for (std::size_t i = 0; i < arena.lights.size(); ++i) {
+    const LightSource& l = arena.lights[i];
+    const std::string f = "arena.lights[" + std::to_string(i) + "]";
+    non_negative(f + ".height_m", l.height_m);
+    non_negative(f + ".intensity", l.intensity);
+    if (l.above_zone < -1 || l.above_zone >= static_cast<int>(arena.zones.size())) {
+      std::ostringstream msg;
+      msg << f << ".above_zone must be -1 (a fixed light) or the index of a zone, 0.."
+          << static_cast<int>(arena.zones.size()) - 1 << " (got " << l.above_zone << ")";
+      throw std::invalid_argument(msg.str());
+    }
+    if (l.above_zone == -1) {
+      finite(f + ".position_m.x", l.position_m.x);
+      finite(f + ".position_m.y", l.position_m.y);
+      inside_arena(f + ".position_m", arena, l.position_m.x, l.position_m.x, l.position_m.y,
+                   l.position_m.y);
+    }
+  }
+}
+
 }  // namespace
 
 void validate_arena(const ArenaSpec& arena) {
@@ -58,6 +123,18 @@ void validate_arena(const ArenaSpec& arena) {
     finite("arena.fixed_start.y_m", arena.fixed_start->y_m);
     finite("arena.fixed_start.heading_rad", arena.fixed_start->heading_rad);
   }
+  validate_zones(arena);
+  validate_lights(arena);
+  positive("arena.sweep_cell_m", arena.sweep_cell_m);
+  const double cells = std::ceil(arena.width_m / arena.sweep_cell_m) *
+                       std::ceil(arena.height_m / arena.sweep_cell_m);
+  if (cells > kMaxSweepCells) {
+    std::ostringstream msg;
+    msg << "arena.sweep_cell_m must be larger: " << arena.sweep_cell_m << " m cells make "
+        << cells << " cells, more than " << kMaxSweepCells;
+    throw std::invalid_argument(msg.str());
+  }
+  positive("arena.reach_radius_m", arena.reach_radius_m);
 }
 
 void validate_robot(const KheperaParams& robot) {
@@ -77,6 +154,12 @@ void validate_robot(const KheperaParams& robot) {
   positive("robot.control_step_s", robot.control_step_s);
   if (robot.physics_substeps < 1 || robot.physics_substeps > 1000)
     fail("robot.physics_substeps", "between 1 and 1000", robot.physics_substeps);
+  positive("robot.light.half_distance_m", robot.light.half_distance_m);
+  non_negative("robot.light.noise_sd", robot.light.noise_sd);
+  if (robot.energy.discharge_steps < 1 || robot.energy.discharge_steps > kMaxEnergySteps)
+    fail("robot.energy.discharge_steps", "between 1 and 10000000", robot.energy.discharge_steps);
+  if (robot.energy.recharge_steps < 1 || robot.energy.recharge_steps > kMaxEnergySteps)
+    fail("robot.energy.recharge_steps", "between 1 and 10000000", robot.energy.recharge_steps);
   // Fastest point of the body: centre speed plus rim speed, at most
   // max_speed * max(1, 2 R / wheel_base) for commands in [-1, 1].
   const double dt_sub = robot.control_step_s / robot.physics_substeps;

@@ -2,7 +2,10 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -12,6 +15,7 @@
 
 #include "runtime/sim/geometry2d.hpp"
 #include "runtime/sim/ir_sensor.hpp"
+#include "runtime/sim/light_sensor.hpp"
 #include "runtime/sim/motor.hpp"
 #include "runtime/sim/validate.hpp"
 
@@ -32,8 +36,30 @@ constexpr double kStaticHeight_m = 0.4;
 // Coulomb friction between body and walls (Bullet's default), no restitution.
 constexpr btScalar kContactFriction = 0.5F;
 constexpr btScalar kRestitution = 0.0F;
-// Free-pose rejection sampling gives up after this many draws.
+// Free-pose and random-zone rejection sampling give up after this many draws.
 constexpr int kFreePoseTries = 10000;
+// The sweep grid has ceil(size / cell - this) columns (rows), so that a size that is a whole
+// number of cells up to rounding (0.6 / 0.04) gets no sliver column.
+constexpr double kSweepCellRounding = 1e-9;
+
+// A zone at its position this epoch.
+struct ZoneGeom {
+  bool circle = true;
+  double cx = 0.0, cy = 0.0;
+  double r2 = 0.0;          // circle: radius^2
+  double hx = 0.0, hy = 0.0;  // half extents (circle: the radius)
+
+  [[nodiscard]] bool contains(double x, double y) const noexcept {
+    const double dx = x - cx;
+    const double dy = y - cy;
+    if (circle) return dx * dx + dy * dy <= r2;
+    return std::abs(dx) <= hx && std::abs(dy) <= hy;
+  }
+};
+
+int grid_count(double size_m, double cell_m) {
+  return std::max(1, static_cast<int>(std::ceil(size_m / cell_m - kSweepCellRounding)));
+}
 
 void no_profile_enter(const char*) {}
 void no_profile_leave() {}
@@ -57,8 +83,33 @@ struct World::Impl {
   double substep_s;
   StaticGeometry2D geometry;
   IrModel ir;
+  LightModel light;
   WheelMotor motor;
   RobotState state;
+
+  // Zones and lights where they are this epoch (place_zones moves the random ones).
+  std::vector<ZoneGeom> zones;
+  std::vector<Vec2> zone_centers;
+  std::uint32_t recharge_mask = 0;  // bit i: zone i recharges
+  std::uint32_t visible_mask = 0;   // bit i: zone i is seen by the ground sensor
+  std::vector<PlacedLight> lights;
+  std::vector<Vec2> light_positions;
+  double reach2 = 0.0;              // reach radius^2
+  std::uint32_t inside_reach = 0;   // bit i: centre within reach of light i after the last step
+
+  // Energy in integer units: full = discharge * recharge * substeps; each substep outside
+  // a recharge zone takes recharge_steps units (discharge_steps * substeps substeps from
+  // full to empty), each substep inside gives discharge_steps units.
+  bool energy_on = false;
+  std::int64_t energy_full = 1;
+  std::int64_t energy_units = 1;
+  std::int64_t energy_drain = 0;
+  std::int64_t energy_gain = 0;
+
+  // Area-sweeping grid, one bit per cell, sized here once.
+  int sweep_cols = 1;
+  int sweep_rows = 1;
+  std::vector<std::uint64_t> visited;
 
   // Bullet; the dynamics world is declared last so it is destroyed first.
   std::unique_ptr<btDefaultCollisionConfiguration> config;
@@ -77,8 +128,10 @@ struct World::Impl {
         substep_s(r.control_step_s / r.physics_substeps),
         geometry(a),
         ir(r),
+        light(r),
         motor(r.motor, substep_s) {
     disable_bullet_profiling();
+    set_up_floor();
     config = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
     // Manifolds keep points up to gContactBreakingThreshold (0.02 m) apart, not a
@@ -135,6 +188,129 @@ struct World::Impl {
     warm_up();
     const Pose start = a.fixed_start.value_or(Pose{w / 2, h / 2, 0.0});
     reset(start);
+  }
+
+  // Zones at their declared positions (random ones at the arena's centre until
+  // place_zones), lights, energy constants and the sweep grid.
+  void set_up_floor() {
+    const std::size_t nz = arena.zones.size();
+    zones.resize(nz);
+    zone_centers.resize(nz);
+    for (std::size_t i = 0; i < nz; ++i) {
+      const Zone& z = arena.zones[i];
+      ZoneGeom& g = zones[i];
+      g.circle = z.shape == ZoneShape::Circle;
+      g.hx = g.circle ? z.radius_m : 0.5 * z.size_m.x;
+      g.hy = g.circle ? z.radius_m : 0.5 * z.size_m.y;
+      g.r2 = z.radius_m * z.radius_m;
+      const Vec2 c = z.random_position ? Vec2{arena.width_m / 2, arena.height_m / 2} : z.center_m;
+      g.cx = c.x;
+      g.cy = c.y;
+      zone_centers[i] = c;
+      if (z.recharge) recharge_mask |= 1U << i;
+      if (z.visible) visible_mask |= 1U << i;
+    }
+    lights.resize(arena.lights.size());
+    light_positions.resize(arena.lights.size());
+    for (std::size_t l = 0; l < arena.lights.size(); ++l) {
+      lights[l].height_m = arena.lights[l].height_m;
+      lights[l].intensity = arena.lights[l].intensity;
+    }
+    place_lights();
+    reach2 = arena.reach_radius_m * arena.reach_radius_m;
+    energy_on = robot.energy.enabled;
+    energy_drain = robot.energy.recharge_steps;
+    energy_gain = robot.energy.discharge_steps;
+    energy_full = static_cast<std::int64_t>(robot.energy.discharge_steps) *
+                  robot.energy.recharge_steps * robot.physics_substeps;
+    energy_units = energy_full;
+    sweep_cols = grid_count(arena.width_m, arena.sweep_cell_m);
+    sweep_rows = grid_count(arena.height_m, arena.sweep_cell_m);
+    const auto cells = static_cast<std::size_t>(sweep_cols) * static_cast<std::size_t>(sweep_rows);
+    visited.assign((cells + 63) / 64, 0);
+  }
+
+  // Lights above a zone stand at its centre; the others where the arena says.
+  void place_lights() {
+    for (std::size_t l = 0; l < arena.lights.size(); ++l) {
+      const LightSource& src = arena.lights[l];
+      const Vec2 p = src.above_zone >= 0 ? zone_centers[static_cast<std::size_t>(src.above_zone)]
+                                         : src.position_m;
+      lights[l].x_m = p.x;
+      lights[l].y_m = p.y;
+      light_positions[l] = p;
+    }
+  }
+
+  void place_zones(Rng& rng) {
+    bool moved = false;
+    for (std::size_t i = 0; i < arena.zones.size(); ++i) {
+      if (!arena.zones[i].random_position) continue;
+      ZoneGeom& g = zones[i];
+      // Clear of obstacles: a circle exactly, a rectangle by its circumscribed circle.
+      const double keep = g.circle ? std::sqrt(g.r2) : std::hypot(g.hx, g.hy);
+      bool placed = false;
+      for (int t = 0; t < kFreePoseTries && !placed; ++t) {
+        const double x = rng.uniform(g.hx, arena.width_m - g.hx);
+        const double y = rng.uniform(g.hy, arena.height_m - g.hy);
+        if (geometry.obstacle_clearance({x, y}, keep) >= keep) {
+          g.cx = x;
+          g.cy = y;
+          zone_centers[i] = {x, y};
+          placed = true;
+        }
+      }
+      if (!placed)
+        throw std::runtime_error("arena.zones[" + std::to_string(i) +
+                                 "] has no free place: no position found that keeps it inside "
+                                 "the arena and clear of every obstacle");
+      moved = true;
+    }
+    if (moved) place_lights();
+  }
+
+  [[nodiscard]] bool in_recharge(double x, double y) const noexcept {
+    for (std::uint32_t m = recharge_mask; m != 0; m &= m - 1)
+      if (zones[static_cast<std::size_t>(std::countr_zero(m))].contains(x, y)) return true;
+    return false;
+  }
+
+  // The floor-related state at the robot's current pose: zones, ground, reach edges,
+  // visited cells, energy level. `fresh`: the start of an epoch.
+  void observe_floor(bool fresh) {
+    const double x = state.pose.x_m;
+    const double y = state.pose.y_m;
+    std::uint32_t in = 0;
+    for (std::size_t i = 0; i < zones.size(); ++i)
+      if (zones[i].contains(x, y)) in |= 1U << i;
+    state.in_zone = in;
+    state.ground = (in & visible_mask) != 0;
+    std::uint32_t near = 0;
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+      const double dx = x - lights[l].x_m;
+      const double dy = y - lights[l].y_m;
+      if (dx * dx + dy * dy <= reach2) near |= 1U << l;
+    }
+    state.reached = fresh ? 0U : near & ~inside_reach;
+    for (std::uint32_t m = state.reached; m != 0; m &= m - 1)
+      ++state.reach_count[static_cast<std::size_t>(std::countr_zero(m))];
+    inside_reach = near;
+    const double cell_m = arena.sweep_cell_m;
+    const int col = std::clamp(static_cast<int>(std::floor(x / cell_m)), 0, sweep_cols - 1);
+    const int row = std::clamp(static_cast<int>(std::floor(y / cell_m)), 0, sweep_rows - 1);
+    const auto cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(sweep_cols) +
+                      static_cast<std::size_t>(col);
+    const std::uint64_t bit = std::uint64_t{1} << (cell % 64);
+    std::uint64_t& word = visited[cell / 64];
+    state.new_cell = (word & bit) == 0 && !fresh;
+    if ((word & bit) == 0) {
+      word |= bit;
+      ++state.cells_visited;
+    }
+    state.energy = energy_units == energy_full
+                       ? 1.0
+                       : static_cast<double>(energy_units) / static_cast<double>(energy_full);
+    state.energy_empty = energy_on && energy_units == 0;
   }
 
   // Grows Bullet's internal arrays (pair cache, manifolds, islands, solver pools) to the
@@ -211,6 +387,9 @@ struct World::Impl {
     solver->setRandSeed(0);
     state = RobotState{};
     state.pose = body_pose();
+    energy_units = energy_full;
+    std::fill(visited.begin(), visited.end(), std::uint64_t{0});
+    observe_floor(true);
   }
 
   void step(double left_command, double right_command) {
@@ -247,6 +426,11 @@ struct World::Impl {
       world->stepSimulation(bt(substep_s), 0, bt(substep_s));
       const btVector3& p = body->getWorldTransform().getOrigin();
       if (geometry.clearance({p.x(), p.y()}, contact_reach) <= contact_reach) collided = true;
+      if (energy_on) {
+        energy_units = in_recharge(p.x(), p.y())
+                           ? std::min(energy_full, energy_units + energy_gain)
+                           : std::max(std::int64_t{0}, energy_units - energy_drain);
+      }
     }
     state.wheel_speed_mps[0] = vl;
     state.wheel_speed_mps[1] = vr;
@@ -256,6 +440,7 @@ struct World::Impl {
     state.displacement_m = std::hypot(ddx, ddy);
     state.forward_displacement_m = (ddx * hx0 + ddy * hy0) / std::hypot(hx0, hy0);
     state.collided = collided;
+    observe_floor(false);
   }
 
   [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m) const {
@@ -283,13 +468,32 @@ World& World::operator=(World&&) noexcept = default;
 Pose World::random_free_pose(Rng& rng, double margin_m) const {
   return impl_->random_free_pose(rng, margin_m);
 }
+void World::place_zones(Rng& rng) { impl_->place_zones(rng); }
 void World::reset(const Pose& pose) { impl_->reset(pose); }
+Pose World::begin_epoch(Rng& rng) {
+  impl_->place_zones(rng);
+  const Pose pose = impl_->arena.fixed_start ? *impl_->arena.fixed_start
+                                             : random_free_pose(rng);
+  impl_->reset(pose);
+  return pose;
+}
 void World::step(double left_command, double right_command) {
   impl_->step(left_command, right_command);
 }
 void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng) const {
   impl_->ir.read(impl_->state.pose, impl_->geometry, out, rng);
 }
+void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
+  impl_->light.read(impl_->state.pose, impl_->geometry, impl_->lights.data(),
+                    impl_->lights.size(), out, rng);
+}
+std::span<const Vec2> World::zone_centers() const noexcept { return impl_->zone_centers; }
+std::span<const Vec2> World::light_positions() const noexcept { return impl_->light_positions; }
+bool World::in_zone(std::size_t zone, Vec2 p) const noexcept {
+  return zone < impl_->zones.size() && impl_->zones[zone].contains(p.x, p.y);
+}
+int World::sweep_columns() const noexcept { return impl_->sweep_cols; }
+int World::sweep_rows() const noexcept { return impl_->sweep_rows; }
 const RobotState& World::state() const noexcept { return impl_->state; }
 const KheperaParams& World::robot() const noexcept { return impl_->robot; }
 const ArenaSpec& World::arena() const noexcept { return impl_->arena; }

@@ -5,11 +5,15 @@
 // trajectory depends only on its start pose, its commands and its noise stream, never on
 // what the world simulated before.
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <span>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/light_sensor.hpp"
 
 namespace esc::sim {
 
@@ -22,6 +26,18 @@ struct RobotState {
   double displacement_m = 0.0;             // |position change| over the last control step
   double forward_displacement_m = 0.0;     // position change projected on the heading
   bool collided = false;                   // contact with a wall or obstacle during the step
+
+  // Energy accumulator, [0, 1]; exactly 1 when the energy model is off. Exact multiples of
+  // 1 / (discharge_steps * recharge_steps * physics_substeps).
+  double energy = 1.0;
+  bool energy_empty = false;               // model on and accumulator empty: the epoch ends
+  std::uint32_t in_zone = 0;               // bit i: centre inside zone i (end of the step)
+  bool ground = false;                     // centre over a visible zone (the ground sensor)
+  std::uint32_t reached = 0;               // bit i: centre came within reach of light i
+                                           // during this step (rising edge only)
+  std::array<int, kMaxLights> reach_count{};  // entries into each light's reach this epoch
+  bool new_cell = false;                   // centre entered a grid cell not visited this epoch
+  int cells_visited = 0;                   // grid cells visited this epoch, the start cell included
 };
 
 class World {
@@ -37,8 +53,22 @@ class World {
   // Throws std::runtime_error if no such pose is found (the arena has no free space).
   [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m = 0.005) const;
 
-  // Places the robot at rest at `pose` and clears all dynamic state.
+  // Draws a position for every zone with random_position (in zone index order: uniform
+  // over the centres that keep the zone inside the arena and clear of every obstacle; see
+  // docs/robot-model.md) and moves the lights above those zones with them. Draws nothing
+  // when no zone is random. Zones keep their positions until the next call (reset() does
+  // not move them). Throws std::runtime_error if a zone finds no free place.
+  void place_zones(Rng& rng);
+
+  // Places the robot at rest at `pose` and clears all dynamic state: motors, energy (full),
+  // visited cells (the start cell only), reach flags (a light whose reach the robot starts
+  // in counts only after leaving and coming back).
   void reset(const Pose& pose);
+
+  // The start of an epoch, in this order: place_zones(rng); the pose is the arena's
+  // fixed_start, else random_free_pose(rng); reset(pose). Returns the pose. With no random
+  // zone it draws exactly what `reset(fixed_start or random_free_pose(rng))` draws.
+  Pose begin_epoch(Rng& rng);
 
   // One control step: commands in [-1, 1] (clamped), motors and body integrated over
   // physics_substeps fixed steps. No allocation.
@@ -47,6 +77,24 @@ class World {
   // IR proximity readings, 0 (nothing within range) .. 1 (touching); noise drawn from
   // `rng` when the model has noise. No allocation.
   void read_ir(std::array<double, kIrSensors>& out, Rng& rng) const;
+
+  // Ambient light readings, 0 dark .. 1 bright, from every light of the arena at its
+  // position this epoch; noise drawn from `rng` only when robot.light.noise_sd > 0 (one
+  // draw per sensor, in index order). No allocation.
+  void read_light(std::array<double, kLightSensors>& out, Rng& rng) const;
+
+  // Where the zones' centres and the lights' floor positions are this epoch (index as in
+  // the ArenaSpec), for replays.
+  [[nodiscard]] std::span<const Vec2> zone_centers() const noexcept;
+  [[nodiscard]] std::span<const Vec2> light_positions() const noexcept;
+
+  // Whether `p` lies inside zone `zone` (at its position this epoch; boundary included).
+  [[nodiscard]] bool in_zone(std::size_t zone, Vec2 p) const noexcept;
+
+  // Area-sweeping grid: columns x rows of arena.sweep_cell_m cells from the lower-left
+  // corner (the last column and row may be partial).
+  [[nodiscard]] int sweep_columns() const noexcept;
+  [[nodiscard]] int sweep_rows() const noexcept;
 
   [[nodiscard]] const RobotState& state() const noexcept;
   [[nodiscard]] const KheperaParams& robot() const noexcept;

@@ -1,6 +1,6 @@
-// step() and read_ir() do not allocate once Bullet's internal arrays have reached their
-// working size. Counts both the global operator new and Bullet's own allocator, so it is
-// a binary of its own.
+// step(), read_ir(), read_light() and begin_epoch() do not allocate once Bullet's internal
+// arrays have reached their working size. Counts both the global operator new and Bullet's
+// own allocator, so it is a binary of its own.
 #include <gtest/gtest.h>
 
 #include <LinearMath/btAlignedAllocator.h>
@@ -40,8 +40,11 @@ long run(World& world, std::uint64_t seed, int steps) {
   Rng commands(seed);
   Rng noise(seed + 1);
   std::array<double, kIrSensors> ir{};
+  std::array<double, kLightSensors> light{};
   Rng start(seed + 2);
-  world.reset(world.random_free_pose(start));
+  const long before_epoch = g_allocations.load();
+  world.begin_epoch(start);  // places the random zone, then the robot
+  EXPECT_EQ(g_allocations.load() - before_epoch, 0);
   const long before = g_allocations.load();
   double l = 0.0, r = 0.0;
   for (int i = 0; i < steps; ++i) {
@@ -50,6 +53,7 @@ long run(World& world, std::uint64_t seed, int steps) {
       r = commands.uniform(-0.5, 1.0);
     }
     world.read_ir(ir, noise);
+    world.read_light(light, noise);
     world.step(l, r);
   }
   return g_allocations.load() - before;
@@ -66,13 +70,32 @@ ArenaSpec cluttered(int obstacles) {
       arena.boxes.push_back({c, {rng.uniform(0.02, 0.1), rng.uniform(0.02, 0.1)}, rng.uniform(-3.0, 3.0)});
     }
   }
+  // Lights (one above a random recharge zone) and zones: read_light, energy, zones,
+  // reach and sweep bookkeeping allocate nothing either.
+  Zone recharge;
+  recharge.radius_m = 0.03;
+  recharge.random_position = true;
+  recharge.recharge = true;
+  arena.zones.push_back(recharge);
+  Zone mark;
+  mark.shape = ZoneShape::Rectangle;
+  mark.center_m = {0.3, 0.3};
+  mark.size_m = {0.2, 0.1};
+  mark.visible = true;
+  arena.zones.push_back(mark);
+  LightSource above;
+  above.above_zone = 0;
+  arena.lights.push_back(above);
+  arena.lights.push_back({{0.5, 0.1}, 0.02, 0.7, -1});
   return arena;
 }
 
-TEST(SimAlloc, StepAndReadIrDoNotAllocate) {
+TEST(SimAlloc, StepAndReadingsDoNotAllocate) {
   btAlignedAllocSetCustom(&bt_counting_alloc, &bt_counting_free);
   KheperaParams robot;
   robot.ir.noise_sd = 0.05;
+  robot.light.noise_sd = 0.05;
+  robot.energy.enabled = true;
   for (int obstacles : {0, 3, 12, 30}) {
     World world(cluttered(obstacles), robot);
     // Free space right after construction, then long trajectories full of contacts
@@ -81,9 +104,11 @@ TEST(SimAlloc, StepAndReadIrDoNotAllocate) {
     {
       Rng noise(1);
       std::array<double, kIrSensors> ir{};
+      std::array<double, kLightSensors> light{};
       const long before = g_allocations.load();
       for (int i = 0; i < 100; ++i) {
         world.read_ir(ir, noise);
+        world.read_light(light, noise);
         world.step(0.0, 0.0);
       }
       EXPECT_EQ(g_allocations.load() - before, 0) << obstacles << " obstacles";

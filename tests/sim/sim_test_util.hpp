@@ -21,10 +21,10 @@ inline KheperaParams robot_with_inertia(bool inertia) {
   return r;
 }
 
-// Smallest signed distance from `p` to the arena's walls and obstacles, written
-// independently of the library.
-inline double clearance(const ArenaSpec& a, double x, double y) {
-  double d = std::min({x, a.width_m - x, y, a.height_m - y});
+// Smallest signed distance from `p` to the arena's obstacles (not the walls), written
+// independently of the library; a large value when there are none.
+inline double obstacle_clearance(const ArenaSpec& a, double x, double y) {
+  double d = 1e9;
   for (const auto& c : a.cylinders)
     d = std::min(d, std::hypot(x - c.center_m.x, y - c.center_m.y) - c.radius_m);
   for (const auto& b : a.boxes) {
@@ -38,6 +38,11 @@ inline double clearance(const ArenaSpec& a, double x, double y) {
     d = std::min(d, out + std::min(std::max(qx, qy), 0.0));
   }
   return d;
+}
+
+// Smallest signed distance from `p` to the arena's walls and obstacles.
+inline double clearance(const ArenaSpec& a, double x, double y) {
+  return std::min({x, a.width_m - x, y, a.height_m - y, obstacle_clearance(a, x, y)});
 }
 
 inline double wrap_angle(double a) {

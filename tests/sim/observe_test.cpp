@@ -1,0 +1,107 @@
+// The world's new state reaches the observable frame (runtime/eval/observe.*), and the
+// frame's layout: slot blocks, parametrised observables, param last.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <set>
+
+#include "runtime/eval/observe.hpp"
+#include "sim_test_util.hpp"
+
+namespace esc::eval {
+namespace {
+
+using expr::Frame;
+namespace slot = expr::slot;
+
+TEST(SimObserve, FrameLayout) {
+  EXPECT_EQ(expr::kFrameSize, slot::param + expr::kMaxParams);
+  // Every slot belongs to exactly one observable, parametrised block or param.
+  std::set<expr::Slot> used;
+  const auto claim = [&](expr::Slot first, expr::Slot count) {
+    for (expr::Slot s = first; s < first + count; ++s) EXPECT_TRUE(used.insert(s).second) << s;
+  };
+  for (const auto& o : expr::kObservables) {
+    if (o.name == "com_speed") continue;  // checked below
+    claim(o.first, o.count);
+  }
+  for (const auto& o : expr::kParametrised) claim(o.first, o.count);
+  claim(slot::param, expr::kMaxParams);
+  claim(slot::com_speed, 1);
+  EXPECT_EQ(used.size(), expr::kFrameSize);
+  EXPECT_EQ(*used.rbegin(), expr::kFrameSize - 1);
+  // in/reached are not plain observables.
+  EXPECT_FALSE(expr::find_observable("in"));
+  EXPECT_FALSE(expr::find_observable("reached"));
+  ASSERT_TRUE(expr::find_parametrised("in"));
+  EXPECT_EQ(expr::find_parametrised("in")->first, slot::in_zone);
+  EXPECT_EQ(expr::find_parametrised("in")->count, sim::kMaxZones);
+  EXPECT_EQ(expr::find_parametrised("reached")->argument, "light");
+  EXPECT_EQ(expr::find_parametrised("reached")->count, sim::kMaxLights);
+  ASSERT_TRUE(expr::find_observable("light"));
+  EXPECT_EQ(expr::find_observable("light")->count, 8U);
+  for (const char* n : {"energy", "com_speed", "ground", "new_cell", "cells_visited"})
+    EXPECT_TRUE(expr::find_observable(n)) << n;
+}
+
+TEST(SimObserve, WorldStateReachesTheFrame) {
+  sim::ArenaSpec a = sim::test::empty_arena(0.6, 0.6);
+  sim::Zone z;
+  z.center_m = {0.3, 0.3};
+  z.radius_m = 0.05;
+  z.visible = true;
+  a.zones.push_back(z);                     // zone 0: visible, not recharging
+  sim::Zone r = z;
+  r.center_m = {0.5, 0.3};
+  r.recharge = true;
+  r.visible = false;
+  a.zones.push_back(r);                     // zone 1: invisible recharge
+  a.lights.push_back({{0.1, 0.1}, 0.0, 1.0, -1});
+  a.lights.push_back({{0.0, 0.0}, 0.0, 1.0, 1});  // above zone 1
+  sim::KheperaParams p;
+  p.motor.inertia = false;
+  p.energy.enabled = true;
+  sim::World w(a, p);
+  w.reset({0.3, 0.3, 0.0});
+  Rng rng(1);
+  std::array<double, sim::kIrSensors> ir{};
+  std::array<double, sim::kLightSensors> light{};
+  Frame f{};
+  w.read_ir(ir, rng);
+  w.read_light(light, rng);
+  observe_robot(w, ir, f);
+  observe_light(light, f);
+  EXPECT_EQ(f[slot::energy], 1.0);
+  EXPECT_EQ(f[slot::in_zone], 1.0);
+  EXPECT_EQ(f[slot::in_zone + 1], 0.0);
+  EXPECT_EQ(f[slot::ground], 1.0);
+  EXPECT_EQ(f[slot::cells_visited], 1.0);
+  EXPECT_EQ(f[slot::new_cell], 0.0);
+  EXPECT_GT(f[slot::light + 2], 0.0);  // the light above zone 1, ahead
+  for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(f[slot::light + i], light[i]);
+  int reached_1 = 0;
+  int new_cells = 0;
+  for (int i = 0; i < 20; ++i) {  // drive into the recharge zone, to the light above it
+    w.step(1.0, 1.0);
+    w.read_ir(ir, rng);
+    observe_robot(w, ir, f);
+    EXPECT_EQ(f[slot::com_speed], f[slot::speed]);
+    EXPECT_NEAR(f[slot::speed], 1.0, 1e-6);
+    EXPECT_EQ(f[slot::energy], w.state().energy);
+    EXPECT_EQ(f[slot::in_zone + 1], (w.state().in_zone & 2U) != 0 ? 1.0 : 0.0);
+    EXPECT_EQ(f[slot::ground], w.state().ground ? 1.0 : 0.0);
+    reached_1 += static_cast<int>(f[slot::reached + 1]);
+    EXPECT_EQ(f[slot::reached], 0.0);
+    new_cells += static_cast<int>(f[slot::new_cell]);
+    EXPECT_EQ(f[slot::cells_visited], w.state().cells_visited);
+  }
+  EXPECT_EQ(reached_1, 1);
+  EXPECT_EQ(new_cells + 1, w.state().cells_visited);
+  EXPECT_EQ(f[slot::in_zone + 1], 1.0);
+  EXPECT_EQ(f[slot::ground], 0.0);  // zone 1 is invisible
+  EXPECT_LT(f[slot::energy], 1.0);
+  EXPECT_GT(f[slot::energy], 0.9);
+}
+
+}  // namespace
+}  // namespace esc::eval
