@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 namespace esc::control {
 
@@ -15,29 +16,66 @@ std::string where(const ControllerSpec& spec) {
   return "controller '" + spec.name + "' (" + spec.architecture() + ")";
 }
 
-void check_program(const ControllerSpec& spec, const Behavior& b, const expr::Program& p,
-                   const char* wheel) {
-  const std::string what = where(spec) + ": action '" + b.name + "' " + wheel + " wheel";
-  if (!p.complete()) throw std::invalid_argument(what + " program is incomplete");
+void check_program(const std::string& what, const expr::Program& p, const char* wheel) {
+  const std::string w = what + " " + wheel + " wheel";
+  if (!p.complete()) throw std::invalid_argument(w + " program is incomplete");
   for (const expr::Instr& in : p.code())
     if (in.op == expr::Op::Load && in.slot >= expr::kFrameSize)
-      throw std::invalid_argument(what + " reads slot " + std::to_string(in.slot) +
+      throw std::invalid_argument(w + " reads slot " + std::to_string(in.slot) +
                                   ", outside the frame");
 }
 
-// Checks what Mlp does not, then returns the spec so it can run in the init list.
-const ControllerSpec& checked(const ControllerSpec& spec, std::span<const double> genome) {
+// `what` names the behavior in messages, e.g. "controller 'sc' (8-14-6): action 'left'".
+void check_behavior(const std::string& what, const Behavior& b) {
+  if (b.params.size() > expr::kMaxParams)
+    throw std::invalid_argument(what + " has " + std::to_string(b.params.size()) +
+                                " parameters; at most " + std::to_string(expr::kMaxParams) +
+                                " are supported");
+  check_program(what, b.left, "left");
+  check_program(what, b.right, "right");
+}
+
+std::string behavior_where(const ControllerSpec& spec, std::size_t i) {
+  return where(spec) + ": behavior " + std::to_string(i) + " '" + spec.behaviors[i].name + "'";
+}
+
+// Checks what Mlp and the sub-controllers do not, then returns the spec so it can run in
+// the init list.
+const ControllerSpec& checked(const ControllerSpec& spec, std::span<const double> genome,
+                              int depth) {
+  if (depth > Controller::kMaxNesting)
+    throw std::invalid_argument(where(spec) + ": supervisors nested more than " +
+                                std::to_string(Controller::kMaxNesting) +
+                                " deep (does a supervisor contain itself?)");
+  if (spec.mlp.kind == NetworkKind::Elman && spec.mlp.hidden.size() != 1)
+    throw std::invalid_argument(where(spec) + ": an Elman network needs exactly one hidden "
+                                "layer, got " + std::to_string(spec.mlp.hidden.size()));
+  if (spec.head != Head::Symbolic && !spec.actions.empty())
+    throw std::invalid_argument(where(spec) + ": only a symbolic head has actions");
+  if (spec.head != Head::Supervisor && !spec.behaviors.empty())
+    throw std::invalid_argument(where(spec) + ": only a supervisor has behaviors");
   if (spec.head == Head::Symbolic) {
     if (spec.actions.empty())
       throw std::invalid_argument(where(spec) + ": a symbolic head needs at least one action");
-    for (const Behavior& b : spec.actions) {
-      if (b.params.size() > expr::kMaxParams)
-        throw std::invalid_argument(where(spec) + ": action '" + b.name + "' has " +
-                                    std::to_string(b.params.size()) +
-                                    " parameters; at most " +
-                                    std::to_string(expr::kMaxParams) + " are supported");
-      check_program(spec, b, b.left, "left");
-      check_program(spec, b, b.right, "right");
+    for (const Behavior& b : spec.actions)
+      check_behavior(where(spec) + ": action '" + b.name + "'", b);
+  }
+  if (spec.head == Head::Supervisor) {
+    if (spec.behaviors.empty())
+      throw std::invalid_argument(where(spec) + ": a supervisor needs at least one behavior");
+    for (std::size_t i = 0; i < spec.behaviors.size(); ++i) {
+      const auto* call = std::get_if<BehaviorCall>(&spec.behaviors[i].what);
+      if (call == nullptr) {
+        if (std::get<FixedController>(spec.behaviors[i].what).spec == nullptr)
+          throw std::invalid_argument(behavior_where(spec, i) + " has no controller spec");
+        continue;  // the sub-controller checks itself when it is built
+      }
+      check_behavior(behavior_where(spec, i), call->behavior);
+      if (call->args.size() != call->behavior.params.size())
+        throw std::invalid_argument(behavior_where(spec, i) + " calls '" + call->behavior.name +
+                                    "' with " + std::to_string(call->args.size()) +
+                                    " arguments; it takes " +
+                                    std::to_string(call->behavior.params.size()));
     }
   }
   if (genome.size() != spec.genome_size())
@@ -50,7 +88,10 @@ const ControllerSpec& checked(const ControllerSpec& spec, std::span<const double
 }  // namespace
 
 Controller::Controller(const ControllerSpec& spec, std::span<const double> genome)
-    : spec_(&checked(spec, genome)),
+    : Controller(spec, genome, 0) {}
+
+Controller::Controller(const ControllerSpec& spec, std::span<const double> genome, int depth)
+    : spec_(&checked(spec, genome, depth)),
       net_(spec.mlp, spec.output_count(), output_activation(spec.head), genome) {
   if (spec.head == Head::Symbolic) {
     param_offset_.reserve(spec.actions.size());
@@ -59,17 +100,51 @@ Controller::Controller(const ControllerSpec& spec, std::span<const double> genom
       param_offset_.push_back(next);
       next += b.params.size();
     }
+    usage_.assign(spec.actions.size(), 0);
+  }
+  if (spec.head == Head::Supervisor) {
+    sub_index_.reserve(spec.behaviors.size());
+    std::size_t n_subs = 0;
+    for (const SupervisedBehavior& b : spec.behaviors)
+      if (std::holds_alternative<FixedController>(b.what)) ++n_subs;
+    subs_.reserve(n_subs);  // no reallocation below: sub-controllers never move
+    for (std::size_t i = 0; i < spec.behaviors.size(); ++i) {
+      const auto* fixed = std::get_if<FixedController>(&spec.behaviors[i].what);
+      if (fixed == nullptr) {
+        sub_index_.push_back(-1);
+        continue;
+      }
+      try {
+        subs_.push_back(Controller(*fixed->spec, fixed->genome, depth + 1));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(behavior_where(spec, i) + ": " + e.what());
+      }
+      sub_index_.push_back(static_cast<int>(subs_.size() - 1));
+    }
+    usage_.assign(spec.behaviors.size(), 0);
   }
 }
 
 void Controller::rebind(std::span<const double> genome) {
   net_.rebind(genome);
   reset();
+  clear_usage();
 }
 
 void Controller::reset() noexcept {
   net_.reset();
+  for (Controller& s : subs_) s.reset();
   last_action_ = -1;
+}
+
+void Controller::clear_usage() noexcept {
+  for (std::int64_t& u : usage_) u = 0;
+  for (Controller& s : subs_) s.clear_usage();
+}
+
+const Controller* Controller::sub_controller(std::size_t i) const noexcept {
+  if (i >= sub_index_.size() || sub_index_[i] < 0) return nullptr;
+  return &subs_[static_cast<std::size_t>(sub_index_[i])];
 }
 
 WheelCommand Controller::step(expr::Frame& frame) noexcept {
@@ -79,15 +154,30 @@ WheelCommand Controller::step(expr::Frame& frame) noexcept {
     return {out[0], out[1]};
   }
   std::size_t best = 0;
-  const std::size_t n = spec_->actions.size();
+  const std::size_t n = usage_.size();  // actions or behaviors
   for (std::size_t i = 1; i < n; ++i)
     if (out[i] > out[best]) best = i;  // strict: the first of equal outputs wins
-  const Behavior& action = spec_->actions[best];
-  const std::size_t first = param_offset_[best];
-  for (std::size_t k = 0; k < action.params.size(); ++k)
-    frame[expr::slot::param + k] = out[first + k];
   last_action_ = static_cast<int>(best);
-  return run_behavior(action, frame);
+  ++usage_[best];
+
+  if (spec_->head == Head::Symbolic) {
+    const Behavior& action = spec_->actions[best];
+    const std::size_t first = param_offset_[best];
+    for (std::size_t k = 0; k < action.params.size(); ++k)
+      frame[expr::slot::param + k] = out[first + k];
+    return run_behavior(action, frame);
+  }
+
+  // Supervisor. Only the chosen behavior runs: the supervisor "decides at each time step
+  // which one of the basic behaviors will be executed" (Godzik et al. 2003, "Supervisor architectures"), and
+  // a behavior that is not executed does not compute. So an inactive sub-controller's
+  // recurrent state stays frozen where it was last chosen (or zero since the epoch began),
+  // as if the behavior had been switched off; this also makes a step cost one network
+  // per level rather than all of them. The paper does not say which it did.
+  if (const int s = sub_index_[best]; s >= 0) return subs_[static_cast<std::size_t>(s)].step(frame);
+  const auto& call = *std::get_if<BehaviorCall>(&spec_->behaviors[best].what);
+  for (std::size_t k = 0; k < call.args.size(); ++k) frame[expr::slot::param + k] = call.args[k];
+  return run_behavior(call.behavior, frame);
 }
 
 }  // namespace esc::control

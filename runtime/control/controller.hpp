@@ -2,7 +2,11 @@
 // A controller ready to drive: a ControllerSpec bound to one genome, with its own
 // working buffers, so step() does not allocate. Build one per evaluation, or build one
 // per worker and rebind() it to each genome in turn.
+//
+// A supervisor owns one Controller per supervised sub-controller (built with it, bound to
+// the fixed genome stored in the spec), each with its own buffers and recurrent state.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -13,32 +17,61 @@ namespace esc::control {
 
 class Controller {
  public:
+  // Supervisors may supervise supervisors, down to this depth (a deeper chain is almost
+  // certainly a spec that contains itself).
+  static constexpr int kMaxNesting = 8;
+
   // `genome` must have spec.genome_size() values; both must outlive the controller.
   // Throws std::invalid_argument on a wrong genome size or a spec the controller cannot
   // run (symbolic head without actions, an action with more than expr::kMaxParams
-  // parameters or an incomplete program, an input slot outside the frame, ...).
+  // parameters or an incomplete program, an input slot outside the frame, an Elman
+  // network without exactly one hidden layer, a supervisor without behaviors, a behavior
+  // call with the wrong number of arguments, a sub-controller whose spec is missing or
+  // whose genome has the wrong size, ...).
   Controller(const ControllerSpec& spec, std::span<const double> genome);
 
-  // Points the controller at another genome of the same size, keeping its buffers, and
-  // resets it. Throws std::invalid_argument on a wrong size.
+  // Points the controller at another genome of the same size, keeping its buffers, then
+  // resets it and clears its usage counts (a new genome is a new individual).
+  // Sub-controllers keep their fixed genomes. Throws std::invalid_argument on a wrong size.
   void rebind(std::span<const double> genome);
 
-  // Clears any internal state (called at the start of each epoch).
+  // Clears all internal state, sub-controllers' included: Elman context units, last
+  // action (called at the start of each epoch). Usage counts are kept.
   void reset() noexcept;
 
   // Reads the inputs from `frame`, runs the network and the head. A symbolic head writes
-  // the chosen action's parameters into frame[slot::param + i] before running it.
+  // the chosen action's parameters into frame[slot::param + i] before running it; a
+  // supervisor writes a behavior call's arguments there, or steps the chosen
+  // sub-controller, which may write its own parameters there.
   WheelCommand step(expr::Frame& frame) noexcept;
 
-  // Index of the action chosen by the last step (symbolic head), else -1.
+  // Index of the action (symbolic head) or behavior (supervisor) chosen by the last step;
+  // -1 for a classical head or before the first step after a reset.
   [[nodiscard]] int last_action() const noexcept { return last_action_; }
+
+  // Steps spent in each action (symbolic) or behavior (supervisor), in spec order (see
+  // ControllerSpec::choice_names()), since construction, rebind() or clear_usage();
+  // empty for a classical head.
+  [[nodiscard]] std::span<const std::int64_t> usage() const noexcept { return usage_; }
+  // Zeroes the usage counts, sub-controllers' included.
+  void clear_usage() noexcept;
+
+  // Supervisor: the controller running behavior `i` if it is a sub-controller (its own
+  // last_action() and usage() tell what it did); nullptr for a behavior call, an index out
+  // of range, or another head.
+  [[nodiscard]] const Controller* sub_controller(std::size_t i) const noexcept;
 
   [[nodiscard]] const ControllerSpec& spec() const noexcept { return *spec_; }
 
  private:
+  Controller(const ControllerSpec& spec, std::span<const double> genome, int depth);
+
   const ControllerSpec* spec_;
   Mlp net_;
   std::vector<std::size_t> param_offset_;  // symbolic head: output index of action i's param 0
+  std::vector<Controller> subs_;           // supervisor: one per FixedController, in order
+  std::vector<int> sub_index_;             // supervisor: behavior i's index in subs_, or -1
+  std::vector<std::int64_t> usage_;
   int last_action_ = -1;
 };
 

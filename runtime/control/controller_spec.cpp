@@ -5,19 +5,25 @@
 namespace esc::control {
 
 int ControllerSpec::output_count() const noexcept {
-  if (head == Head::Classical) return 2;
+  switch (head) {
+    case Head::Classical: return 2;
+    case Head::Supervisor: return static_cast<int>(behaviors.size());
+    case Head::Symbolic: break;
+  }
   std::size_t n = actions.size();
   for (const Behavior& a : actions) n += a.params.size();
   return static_cast<int>(n);
 }
 
 std::size_t ControllerSpec::genome_size() const noexcept {
-  // Each layer out x (in + 1): one bias and one weight per input for every neuron.
+  // Each layer out x (in + 1): one bias and one weight per input for every neuron; an
+  // Elman hidden layer also takes its own previous activations as inputs, out x (in + 1 + out).
+  const bool elman = mlp.kind == NetworkKind::Elman;
   std::size_t total = 0;
   std::size_t in = mlp.inputs.size();
   for (int h : mlp.hidden) {
     const auto out = static_cast<std::size_t>(h < 0 ? 0 : h);
-    total += out * (in + 1);
+    total += out * (in + 1 + (elman ? out : 0));
     in = out;
   }
   const int outputs = output_count();
@@ -27,9 +33,21 @@ std::size_t ControllerSpec::genome_size() const noexcept {
 
 std::string ControllerSpec::architecture() const {
   std::string s = std::to_string(mlp.inputs.size());
-  for (int h : mlp.hidden) s += '-' + std::to_string(h);
+  for (int h : mlp.hidden) {
+    s += '-' + std::to_string(h);
+    if (mlp.kind == NetworkKind::Elman) s += 'r';
+  }
   s += '-' + std::to_string(output_count());
   return s;
+}
+
+std::vector<std::string> ControllerSpec::choice_names() const {
+  std::vector<std::string> names;
+  if (head == Head::Symbolic)
+    for (const Behavior& a : actions) names.push_back(a.name);
+  if (head == Head::Supervisor)
+    for (const SupervisedBehavior& b : behaviors) names.push_back(b.name);
+  return names;
 }
 
 }  // namespace esc::control

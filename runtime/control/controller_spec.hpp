@@ -2,7 +2,9 @@
 // What the compiler produces for a `controller` declaration: the network's shape and its
 // head. The genome is the flat vector of the network's weights; genome_size() says how long.
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "runtime/control/behavior.hpp"
@@ -12,30 +14,73 @@ namespace esc::control {
 
 enum class Activation { Tanh, Sigmoid, Linear };
 
-// A multi-layer perceptron: inputs are frame slots, then hidden layers, then outputs.
-// Each layer's weights are stored neuron by neuron, bias first, then one weight per input.
+// Mlp: feed-forward, any number of hidden layers (possibly none).
+// Elman: exactly one hidden layer, fully connected to itself with a one-step delay
+// (Godzik et al. 2003, footnote on Elman networks):
+//   h_t = act(W_in [1; x_t] + W_ctx h_{t-1}),   y_t = act_out(W_out [1; h_t]),
+// with the context h_{-1} = 0 after every reset() (start of each epoch).
+enum class NetworkKind { Mlp, Elman };
+
+// A network: inputs are frame slots, then hidden layers, then outputs.
+// Each layer's weights are stored neuron by neuron, bias first, then one weight per input;
+// an Elman hidden neuron then has one context weight per hidden neuron (the previous
+// step's activations, in neuron order). So, with n inputs, hidden sizes h_1..h_L and o
+// outputs:
+//   Mlp:   sum_l h_l (1 + h_{l-1}) + o (1 + h_L),   h_0 = n
+//   Elman: h (1 + n + h) + o (1 + h)                 (17-5-2: 5*23 + 2*6 = 127)
 struct MlpSpec {
   std::vector<expr::Slot> inputs;
-  std::vector<int> hidden;          // sizes of the hidden layers, may be empty
+  std::vector<int> hidden;          // sizes of the hidden layers; Elman: exactly one
   Activation hidden_activation = Activation::Tanh;
+  NetworkKind kind = NetworkKind::Mlp;
 };
 
 // Classical head: two outputs in [-1, 1] (tanh) are the wheel commands.
 // Symbolic head: outputs in [0, 1] (logistic). The first n (one per action) choose the
 // action by argmax (first wins a tie); then each action's parameters follow in order
 // (action 0's, then action 1's, ...), so n actions of one parameter give 2n outputs.
-enum class Head { Classical, Symbolic };
+// Supervisor head: one output in [0, 1] (logistic) per supervised behavior; the argmax
+// (first wins a tie) names the behavior that computes this step's wheel command.
+enum class Head { Classical, Symbolic, Supervisor };
+
+struct ControllerSpec;
+
+// A hand-written behavior run with constant arguments, e.g. `forward(0.8)`: the arguments
+// are written into frame[slot::param + k] before its wheel programs run.
+struct BehaviorCall {
+  Behavior behavior;
+  std::vector<double> args;         // exactly one per behavior.params
+};
+
+// An evolved controller frozen with fixed weights (typically another experiment's best
+// genome): classical, symbolic, or itself a supervisor; MLP or Elman.
+struct FixedController {
+  std::shared_ptr<const ControllerSpec> spec;
+  std::vector<double> genome;       // exactly spec->genome_size() values
+};
+
+struct SupervisedBehavior {
+  std::string name;                 // for usage tables, e.g. "avoid"
+  std::variant<BehaviorCall, FixedController> what;
+};
 
 struct ControllerSpec {
   std::string name;
   MlpSpec mlp;
   Head head = Head::Classical;
-  std::vector<Behavior> actions;    // Symbolic head only
+  std::vector<Behavior> actions;               // Symbolic head only
+  std::vector<SupervisedBehavior> behaviors;   // Supervisor head only
 
+  // Classical: 2. Symbolic: actions + all their parameters. Supervisor: behaviors.
   [[nodiscard]] int output_count() const noexcept;
+  // The supervisor's genome is its own network only; sub-controllers' weights are fixed.
   [[nodiscard]] std::size_t genome_size() const noexcept;
-  // "8-14-6" style architecture string for tables.
+  // "8-14-6" style architecture string for tables; an Elman hidden layer is marked with
+  // an r (recurrent): "17-5r-2". A supervisor's string is its own network's: "17-5r-4".
   [[nodiscard]] std::string architecture() const;
+  // What Controller::usage() counts, in index order: the action names (Symbolic), the
+  // behavior names (Supervisor), nothing (Classical).
+  [[nodiscard]] std::vector<std::string> choice_names() const;
 };
 
 }  // namespace esc::control

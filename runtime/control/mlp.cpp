@@ -33,15 +33,21 @@ Mlp::Mlp(const MlpSpec& spec, int outputs, Activation output_activation,
                                   " is outside the frame (size " +
                                   std::to_string(expr::kFrameSize) + ")");
   if (outputs < 1) throw std::invalid_argument("network needs at least one output");
+  const bool elman = spec.kind == NetworkKind::Elman;
+  if (elman && spec.hidden.size() != 1)
+    throw std::invalid_argument("an Elman network needs exactly one hidden layer, got " +
+                                std::to_string(spec.hidden.size()));
 
   layers_.reserve(spec.hidden.size() + 1);
   buffers_.reserve(spec.hidden.size() + 2);
   auto in = static_cast<Eigen::Index>(spec.inputs.size());
-  buffers_.emplace_back(in + 1);
+  if (elman && spec.hidden[0] >= 1) context_ = spec.hidden[0];
+  buffers_.emplace_back(in + 1 + context_);
   std::size_t offset = 0;
-  auto add_layer = [&](Eigen::Index out, Activation act) {
-    layers_.push_back({out, in + 1, offset, act});
-    offset += static_cast<std::size_t>(out * (in + 1));
+  // `extra`: columns beyond [1; inputs], the context units of an Elman hidden layer.
+  auto add_layer = [&](Eigen::Index out, Activation act, Eigen::Index extra) {
+    layers_.push_back({out, in + 1 + extra, offset, act});
+    offset += static_cast<std::size_t>(out * (in + 1 + extra));
     buffers_.emplace_back(out + 1);
     in = out;
   };
@@ -49,9 +55,9 @@ Mlp::Mlp(const MlpSpec& spec, int outputs, Activation output_activation,
     if (spec.hidden[l] < 1)
       throw std::invalid_argument("hidden layer " + std::to_string(l) + " has " +
                                   std::to_string(spec.hidden[l]) + " neurons; it needs at least 1");
-    add_layer(spec.hidden[l], spec.hidden_activation);
+    add_layer(spec.hidden[l], spec.hidden_activation, l == 0 ? context_ : 0);
   }
-  add_layer(outputs, output_activation);
+  add_layer(outputs, output_activation, 0);
   for (Eigen::VectorXd& b : buffers_) {
     b.setZero();
     b[0] = 1.0;  // the bias input, never overwritten
@@ -68,6 +74,10 @@ void Mlp::rebind(std::span<const double> genome) {
   weights_ = genome.data();
 }
 
+void Mlp::reset() noexcept {
+  if (context_ > 0) buffers_[0].tail(context_).setZero();
+}
+
 std::span<const double> Mlp::forward(const expr::Frame& frame) noexcept {
   Eigen::VectorXd& x = buffers_.front();
   for (std::size_t i = 0; i < inputs_.size(); ++i)
@@ -79,6 +89,9 @@ std::span<const double> Mlp::forward(const expr::Frame& frame) noexcept {
     out.noalias() = w * buffers_[l];
     activate(out, L.activation);
   }
+  // Elman: this step's hidden activations are the next step's context (layer 0 has run,
+  // so overwriting its input buffer is safe).
+  if (context_ > 0) buffers_[0].tail(context_) = buffers_[1].tail(context_);
   return {buffers_.back().data() + 1, output_count_};
 }
 

@@ -1,12 +1,16 @@
 #pragma once
-// The network inside a controller: a multi-layer perceptron bound to a slice of a genome.
-// Weights are not copied: each layer is an Eigen::Map over the genome, row-major
-// out x (in + 1), bias in column 0. Every activation buffer keeps a constant 1.0 at index
-// 0, so a layer is one matrix-vector product W * [1; x] written straight into the next
-// buffer. All buffers are sized in the constructor; forward() does not allocate.
+// The network inside a controller: a multi-layer perceptron, or an Elman network, bound
+// to a slice of a genome. Weights are not copied: each layer is an Eigen::Map over the
+// genome, row-major out x (in + 1), bias in column 0. Every activation buffer keeps a
+// constant 1.0 at index 0, so a layer is one matrix-vector product W * [1; x] written
+// straight into the next buffer. All buffers are sized in the constructor; forward() does
+// not allocate.
 //
-// A recurrent network (Elman) would be a sibling type with the same interface: forward()
-// reading the frame, reset() clearing its context units at the start of each epoch.
+// Elman: the input buffer is [1; x_t; h_{t-1}] (the context units sit after the inputs),
+// so the recurrent hidden layer is still one product with its h x (1 + n + h) matrix, whose
+// rows are exactly the genome layout (bias, input weights, context weights). After each
+// forward() the new hidden activations are copied into the context units; reset() zeroes
+// them.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -21,16 +25,18 @@ namespace esc::control {
 class Mlp {
  public:
   // `spec` must outlive the network (its input list is referenced, not copied).
-  // Throws std::invalid_argument if a hidden layer is empty, an input slot lies outside
-  // the frame, or `genome` does not hold exactly weight_count() values.
+  // Throws std::invalid_argument if a hidden layer is empty, an Elman network does not
+  // have exactly one hidden layer, an input slot lies outside the frame, or `genome` does
+  // not hold exactly weight_count() values.
   Mlp(const MlpSpec& spec, int outputs, Activation output_activation,
       std::span<const double> genome);
 
   // Points the network at another genome of the same size (no allocation).
   void rebind(std::span<const double> genome);
 
-  // A feed-forward network has no state; kept so recurrent networks fit the same slot.
-  void reset() noexcept {}
+  // Zeroes the Elman context units (the start of an epoch); a feed-forward network has
+  // no state.
+  void reset() noexcept;
 
   // Reads the inputs from `frame` and returns the outputs, valid until the next call.
   std::span<const double> forward(const expr::Frame& frame) noexcept;
@@ -50,7 +56,9 @@ class Mlp {
 
   std::span<const expr::Slot> inputs_;
   std::vector<Layer> layers_;
-  std::vector<Eigen::VectorXd> buffers_;  // buffers_[0] = [1, inputs], buffers_[l+1] = [1, layer l]
+  // buffers_[0] = [1, inputs] (Elman: [1, inputs, context]), buffers_[l+1] = [1, layer l]
+  std::vector<Eigen::VectorXd> buffers_;
+  Eigen::Index context_ = 0;  // Elman: hidden size, the tail of buffers_[0]; else 0
   const double* weights_ = nullptr;
   std::size_t weight_count_ = 0;
   std::size_t output_count_ = 0;

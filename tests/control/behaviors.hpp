@@ -37,4 +37,12 @@ inline std::vector<expr::Slot> ir_inputs() {
   return in;
 }
 
+// Seventeen inputs, like the paper's 8 IR + 8 light + energy, taken as raw slots 0..16
+// (the light and energy observables are not needed to test the networks).
+inline std::vector<expr::Slot> seventeen_inputs() {
+  std::vector<expr::Slot> in;
+  for (expr::Slot i = 0; i < 17; ++i) in.push_back(i);
+  return in;
+}
+
 }  // namespace esc::control::testing

@@ -3,7 +3,9 @@
 // since Eigen allocates with malloc rather than operator new.
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <vector>
 
@@ -155,6 +157,73 @@ TEST(NoAlloc, ClassicalStepDoesNotAllocate) {
       sum += w.left - w.right;
     }
   }
+  EXPECT_EQ(g_news.load(), 0);
+  EXPECT_EQ(g_mallocs.load(), 0);
+  EXPECT_TRUE(std::isfinite(sum));
+}
+
+TEST(NoAlloc, ElmanStepDoesNotAllocate) {
+  ControllerSpec s;
+  s.mlp.inputs = seventeen_inputs();
+  s.mlp.hidden = {5};
+  s.mlp.kind = NetworkKind::Elman;
+  s.head = Head::Symbolic;
+  s.actions = {forward(), left(), right()};
+  const std::vector<double> g = genome_for(s);
+  Controller c(s, g);
+  expr::Frame f{};
+  double sum = 0.0;
+  {
+    CountScope scope;
+    for (int t = 0; t < 1000; ++t) {
+      fill_ir(f, t);
+      if (t % 250 == 0) c.reset();
+      const WheelCommand w = c.step(f);
+      sum += w.left + w.right;
+    }
+  }
+  EXPECT_EQ(g_news.load(), 0);
+  EXPECT_EQ(g_mallocs.load(), 0);
+  EXPECT_TRUE(std::isfinite(sum));
+}
+
+TEST(NoAlloc, SupervisorOverElmanSubControllersDoesNotAllocate) {
+  auto classical = std::make_shared<ControllerSpec>();
+  classical->mlp.inputs = seventeen_inputs();
+  classical->mlp.hidden = {5};
+  classical->mlp.kind = NetworkKind::Elman;
+  auto symbolic = std::make_shared<ControllerSpec>(*classical);
+  symbolic->head = Head::Symbolic;
+  symbolic->actions = {forward(), left(), right()};
+
+  ControllerSpec s;
+  s.mlp = classical->mlp;  // Elman 17-5r-4
+  s.head = Head::Supervisor;
+  s.behaviors.push_back({"classical", FixedController{classical, genome_for(*classical)}});
+  s.behaviors.push_back({"symbolic", FixedController{symbolic, genome_for(*symbolic)}});
+  s.behaviors.push_back({"spin", BehaviorCall{spin(), {0.4, 0.6}}});
+  s.behaviors.push_back({"stop", BehaviorCall{stop(), {}}});
+  const std::vector<double> g = genome_for(s);
+  const std::vector<double> g2(g.rbegin(), g.rend());
+  Controller c(s, g);
+  expr::Frame f{};
+  double sum = 0.0;
+  int behaviors_used = 0;
+  {
+    CountScope scope;
+    for (int t = 0; t < 2000; ++t) {
+      fill_ir(f, t);
+      f[0] = std::sin(0.11 * t);  // slots 0..4 feed the supervisor too: vary the choice
+      f[1] = std::cos(0.07 * t);
+      if (t % 250 == 0) c.reset();
+      if (t == 1000) c.rebind(g2);
+      const WheelCommand w = c.step(f);
+      sum += w.left - w.right;
+    }
+    for (const std::int64_t u : c.usage()) behaviors_used += u > 0 ? 1 : 0;
+    c.clear_usage();
+  }
+  EXPECT_GE(behaviors_used, 2);
   EXPECT_EQ(g_news.load(), 0);
   EXPECT_EQ(g_mallocs.load(), 0);
   EXPECT_TRUE(std::isfinite(sum));
