@@ -1,0 +1,304 @@
+// The GP algorithm: settings, selection with parsimony, elitism, determinism (also across
+// thread counts), and runs whose fitness improves.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "runtime/control/tree_controller.hpp"
+#include "runtime/evo/gp/gp.hpp"
+#include "runtime/evo/gp/print.hpp"
+#include "runtime/evo/gp/program.hpp"
+#include "tests/gp/helpers.hpp"
+
+namespace esc::evo::gp {
+namespace {
+
+using expr::Op;
+
+std::string settings_error(GpSettings s, PrimitiveSet set = test::wheels_set()) {
+  try {
+    GeneticProgramming gp(s, std::move(set));
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GpSettings, RejectsImpossibleSettings) {
+  GpSettings s;
+  EXPECT_EQ(settings_error(s), "");
+  s.population = 0;
+  EXPECT_NE(settings_error(s).find("population"), std::string::npos);
+  s = {};
+  s.elitism = 151;
+  EXPECT_NE(settings_error(s).find("elitism"), std::string::npos);
+  s = {};
+  s.crossover = 0.9;
+  s.subtree_mutation = 0.2;
+  EXPECT_NE(settings_error(s).find("sum to"), std::string::npos);
+  s = {};
+  s.max_depth = 1;  // a Wheels tree needs depth 2
+  s.init_min_depth = s.init_max_depth = 1;
+  EXPECT_NE(settings_error(s).find("max_depth must be in [2, 40]"), std::string::npos) << settings_error(s);
+  s = {};
+  s.max_size = 2;
+  EXPECT_NE(settings_error(s).find("max_size must be at least 3"), std::string::npos);
+  s = {};
+  s.init_max_depth = 20;
+  EXPECT_NE(settings_error(s).find("init depths"), std::string::npos);
+}
+
+Individual sized(const PrimitiveSet& set, std::initializer_list<test::Tok> toks, double fitness) {
+  return {test::postfix(set, toks), fitness};
+}
+
+TEST(Selection, ParsimonyBreaksTiesBySize) {
+  const PrimitiveSet set = test::number_set();
+  const std::vector<Individual> pop = {
+      sized(set, {"ir[0]", "ir[1]", "+", "ir[2]", "*"}, 1.0),  // 5 nodes
+      sized(set, {"ir[0]"}, 1.0),                              // 1 node, same fitness
+  };
+  EXPECT_TRUE(better(pop[1], pop[0]));
+  EXPECT_FALSE(better(pop[0], pop[1]));
+  Rng rng(1);
+  int small_wins = 0;
+  for (int k = 0; k < 1000; ++k) small_wins += tournament(pop, 2, rng) == 1 ? 1 : 0;
+  // The big tree wins only when drawn twice (probability 1/4).
+  EXPECT_NEAR(small_wins, 750, 60);
+  for (int k = 0; k < 100; ++k) EXPECT_EQ(tournament(pop, 40, rng), 1U);
+  // Fitness comes first.
+  std::vector<Individual> fitter = pop;
+  fitter[0].fitness = 1.5;
+  EXPECT_TRUE(better(fitter[0], fitter[1]));
+  EXPECT_EQ(ranking(fitter).front(), 0U);
+  EXPECT_EQ(ranking(pop).front(), 1U);
+  // NaN ranks last.
+  fitter[0].fitness = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(ranking(fitter).front(), 1U);
+}
+
+// Maximise -mean |f(x) - target(x)| over x = ir[0] in [-1, 1].
+double regression_fitness(const Tree& t, const PrimitiveSet& set) {
+  const FlatProgram p = compile(t, set);
+  FlatProgram::Stack stack{};
+  expr::Frame f{};
+  double err = 0.0;
+  for (int k = 0; k <= 20; ++k) {
+    const double x = -1.0 + 0.1 * k;
+    f[expr::slot::ir] = x;
+    err += std::abs(p.run(f, stack).value - (x * x + 0.5 * x));
+  }
+  return -err / 21.0;
+}
+
+PrimitiveSet regression_set() {
+  return PrimitiveSet({prim::function(Op::Add), prim::function(Op::Sub), prim::function(Op::Mul),
+                       prim::function(Op::Div), *prim::observable("ir[0]"), prim::erc(-1, 1)},
+                      Type::Number);
+}
+
+struct RunResult {
+  std::vector<Individual> population;
+  std::vector<double> best;  // per generation
+};
+
+// A whole run; evaluation and breeding in parallel with `threads` workers.
+RunResult run_regression(std::uint64_t seed, int generations, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(threads));
+  GpSettings s;
+  s.population = 120;
+  s.tournament = 4;
+  s.elitism = 2;
+  s.max_depth = 8;
+  s.max_size = 40;
+  s.init_max_depth = 4;
+  const GeneticProgramming gp(s, regression_set());
+  Rng init(seed, {0, static_cast<std::uint64_t>(Stream::Init)});
+  RunResult r{gp.initial(init), {}};
+  for (int g = 0;; ++g) {
+    tbb::parallel_for(std::size_t{0}, r.population.size(), [&](std::size_t i) {
+      r.population[i].fitness = regression_fitness(r.population[i].tree, gp.primitives());
+    });
+    r.best.push_back(r.population[ranking(r.population).front()].fitness);
+    if (g == generations) break;
+    Rng breed(seed, {0, static_cast<std::uint64_t>(g), static_cast<std::uint64_t>(Stream::Breed)});
+    // Breed in parallel through offspring(); must equal gp.breed().
+    const std::uint64_t base = Rng(breed).next();
+    std::vector<Individual> next(r.population.size());
+    const auto order = ranking(r.population);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(s.elitism); ++k) next[k] = r.population[order[k]];
+    tbb::parallel_for(static_cast<std::size_t>(s.elitism), next.size(),
+                      [&](std::size_t i) { next[i] = gp.offspring(r.population, base, i); });
+    std::vector<Individual> serial = gp.breed(r.population, breed);
+    for (std::size_t i = 0; i < next.size(); ++i) EXPECT_EQ(next[i].tree, serial[i].tree);
+    r.population = std::move(next);
+  }
+  return r;
+}
+
+TEST(GeneticProgramming, InitialPopulationIsValid) {
+  GpSettings s;
+  s.population = 500;
+  const GeneticProgramming gp(s, test::action_set());
+  Rng rng(3);
+  const auto pop = gp.initial(rng);
+  ASSERT_EQ(pop.size(), 500U);
+  for (const Individual& ind : pop) {
+    EXPECT_TRUE(well_typed(ind.tree, gp.primitives(), Type::Action));
+    EXPECT_LE(depth(ind.tree), s.init_max_depth);
+    EXPECT_LE(static_cast<int>(ind.tree.size()), s.max_size);
+  }
+}
+
+TEST(GeneticProgramming, BreedKeepsElitesTypesAndLimits) {
+  GpSettings s;
+  s.population = 200;
+  s.elitism = 3;
+  s.max_depth = 9;
+  s.max_size = 50;
+  for (const PrimitiveSet& set : test::all_sets()) {
+    const GeneticProgramming gp(s, set);
+    Rng rng(8, {index_of(set.root())});
+    auto pop = gp.initial(rng);
+    for (int g = 0; g < 10; ++g) {
+      for (std::size_t i = 0; i < pop.size(); ++i)
+        pop[i].fitness = -static_cast<double>((pop[i].tree.size() * 7919 + i) % 13);
+      const auto order = ranking(pop);
+      const auto next = gp.breed(pop, rng);
+      ASSERT_EQ(next.size(), pop.size());
+      for (int k = 0; k < s.elitism; ++k) EXPECT_EQ(next[static_cast<std::size_t>(k)].tree, pop[order[static_cast<std::size_t>(k)]].tree);
+      for (const Individual& ind : next) {
+        ASSERT_EQ(check(ind.tree, set, set.root()), "");
+        ASSERT_LE(depth(ind.tree), s.max_depth);
+        ASSERT_LE(static_cast<int>(ind.tree.size()), s.max_size);
+      }
+      pop = next;
+    }
+  }
+}
+
+TEST(GeneticProgramming, SameSeedSameRunForAnyThreadCount) {
+  const RunResult one = run_regression(11, 6, 1);
+  const RunResult two = run_regression(11, 6, 2);
+  ASSERT_EQ(one.population.size(), two.population.size());
+  for (std::size_t i = 0; i < one.population.size(); ++i) {
+    EXPECT_EQ(one.population[i].tree, two.population[i].tree);
+    EXPECT_EQ(one.population[i].fitness, two.population[i].fitness);
+  }
+  EXPECT_EQ(one.best, two.best);
+  const RunResult other = run_regression(12, 6, 2);
+  EXPECT_NE(other.best, one.best);
+}
+
+TEST(GeneticProgramming, SymbolicRegressionImproves) {
+  const RunResult r = run_regression(5, 30, 2);
+  // Elitism with a deterministic fitness: the best never gets worse.
+  for (std::size_t g = 1; g < r.best.size(); ++g) EXPECT_GE(r.best[g], r.best[g - 1]);
+  EXPECT_GT(r.best.back(), r.best.front());
+  EXPECT_GT(r.best.back(), -0.05) << "x^2 + 0.5x fitted to within 0.05 on average";
+}
+
+// ---- a short run on a toy obstacle-avoidance task ------------------------------------
+// A disc robot in a 1 m square, kinematic differential drive, 6 front "IR" rays that see
+// the walls up to 10 cm. Fitness: the paper's V (1 - sqrt(dv)) (1 - i) summed over steps.
+struct ToyWorld {
+  double x = 0.5, y = 0.5, heading = 0.0;
+
+  static constexpr double kRadius = 0.03, kRange = 0.1, kStep = 0.01;
+
+  // Distance along a ray from (x, y) to the walls of [0, 1]^2.
+  static double ray(double x, double y, double a) {
+    const double dx = std::cos(a), dy = std::sin(a);
+    double t = 1e9;
+    if (dx > 1e-12) t = std::min(t, (1.0 - x) / dx);
+    if (dx < -1e-12) t = std::min(t, -x / dx);
+    if (dy > 1e-12) t = std::min(t, (1.0 - y) / dy);
+    if (dy < -1e-12) t = std::min(t, -y / dy);
+    return t;
+  }
+
+  void sense(expr::Frame& f) const {
+    constexpr std::array<double, 6> angles = {1.2, 0.8, 0.3, -0.3, -0.8, -1.2};
+    for (std::size_t k = 0; k < 6; ++k) {
+      const double d = ray(x, y, heading + angles[k]) - kRadius;
+      f[expr::slot::ir + k] = std::clamp(1.0 - d / kRange, 0.0, 1.0);
+    }
+  }
+
+  // Moves with wheel commands in [-1, 1]; returns the step's fitness term.
+  double move(control::WheelCommand c, const expr::Frame& f) {
+    const double v = 0.5 * (c.left + c.right), w = (c.right - c.left) / 0.053 * 0.5;
+    heading += w * kStep * 0.05;
+    const double nx = x + std::cos(heading) * v * kStep, ny = y + std::sin(heading) * v * kStep;
+    if (nx > kRadius && nx < 1 - kRadius && ny > kRadius && ny < 1 - kRadius) {
+      x = nx;
+      y = ny;
+    }
+    double i = 0.0;
+    for (std::size_t k = 0; k < 6; ++k) i = std::max(i, f[expr::slot::ir + k]);
+    const double speed = (std::abs(c.left) + std::abs(c.right)) / 2.0;
+    const double dv = std::abs(c.left - c.right) / 2.0;
+    return speed * (1.0 - std::sqrt(dv)) * (1.0 - i);
+  }
+};
+
+double avoidance_fitness(control::TreeController& ctl, std::uint64_t seed) {
+  double total = 0.0;
+  for (std::uint64_t epoch = 0; epoch < 3; ++epoch) {
+    Rng rng(seed, {epoch});
+    ToyWorld w{rng.uniform(0.2, 0.8), rng.uniform(0.2, 0.8), rng.uniform(0.0, 2 * std::numbers::pi)};
+    ctl.reset();
+    expr::Frame f{};
+    for (int s = 0; s < 150; ++s) {
+      w.sense(f);
+      total += w.move(ctl.step(f), f);
+    }
+  }
+  return total / 450.0;
+}
+
+TEST(GeneticProgramming, ObstacleAvoidanceToyImproves) {
+  std::vector<Primitive> p = {prim::function(Op::Add), prim::function(Op::Sub),
+                              prim::function(Op::Mul), prim::function(Op::Max),
+                              prim::function(Op::Gt),  prim::if_then_else(Type::Number),
+                              prim::erc(-1, 1),        prim::wheels()};
+  for (int k = 0; k < 6; ++k) p.push_back(*prim::observable("ir[" + std::to_string(k) + "]"));
+  const control::TreeControllerSpec spec{"toy", PrimitiveSet(std::move(p), Type::Wheels), {}, {}};
+  GpSettings s;
+  s.population = 60;
+  s.tournament = 3;
+  s.elitism = 2;
+  s.max_depth = 7;
+  s.max_size = 40;
+  s.init_max_depth = 4;
+  const GeneticProgramming gp(s, spec.primitives);
+  Rng init(99);
+  auto pop = gp.initial(init);
+  control::TreeController ctl(spec, pop[0].tree);
+  std::vector<double> best;
+  for (int g = 0;; ++g) {
+    for (Individual& ind : pop) {
+      ctl.rebind(ind.tree);
+      ind.fitness = avoidance_fitness(ctl, 2024);
+    }
+    best.push_back(pop[ranking(pop).front()].fitness);
+    if (g == 12) break;
+    Rng breed(99, {static_cast<std::uint64_t>(g)});
+    pop = gp.breed(pop, breed);
+  }
+  EXPECT_GT(best.back(), best.front());
+  EXPECT_GT(best.back(), 0.3);
+  const Tree& champion = pop[ranking(pop).front()].tree;
+  RecordProperty("best", to_script(champion, spec.primitives));
+  std::cout << "toy avoidance: best " << best.front() << " -> " << best.back() << ": "
+            << to_script(champion, spec.primitives) << "\n";
+}
+
+}  // namespace
+}  // namespace esc::evo::gp
