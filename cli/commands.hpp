@@ -16,7 +16,8 @@ inline constexpr int kExitUsage = 2;
 int check_command(const std::vector<std::filesystem::path>& files);
 
 struct RunOptions {
-  std::filesystem::path file;
+  std::filesystem::path file;                // with --resume: optional, else the stored script path
+  std::filesystem::path resume;              // non-empty: continue this run directory
   std::string experiment;                    // empty: the first one in the file
   std::optional<int> runs;
   std::optional<int> generations;
@@ -27,6 +28,21 @@ struct RunOptions {
 };
 
 int run_command(const RunOptions& options);
+
+struct ExportOptions {
+  std::filesystem::path dir;
+  std::string format;                        // "csv" or "json"
+  std::filesystem::path out;                 // empty: standard output
+};
+
+int export_command(const ExportOptions& options);
+
+struct ReportOptions {
+  std::filesystem::path dir;
+  std::filesystem::path out;                 // empty: DIR/report.html
+};
+
+int report_command(const ReportOptions& options);
 
 struct BenchOptions {
   int max_threads = 0;                       // 0: all cores

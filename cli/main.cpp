@@ -1,4 +1,4 @@
-// The `esc` command: check, run and benchmark experiment scripts.
+// The `esc` command: check, run and benchmark experiment scripts; export and report results.
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
 
   RunOptions run;
   auto* run_cmd = app.add_subcommand("run", "evolve the controllers of an experiment and compare them");
-  run_cmd->add_option("FILE", run.file, "script file")->required();
+  run_cmd->add_option("FILE", run.file, "script file (with --resume: default the stored script path)");
+  run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this directory");
   run_cmd->add_option("--experiment", run.experiment, "experiment to run (default: the first in the file)");
   run_cmd->add_option("--runs", run.runs, "independent runs per controller")->check(CLI::PositiveNumber);
   run_cmd->add_option("--generations", run.generations, "generations per run")->check(CLI::PositiveNumber);
@@ -28,6 +29,18 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
   run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off)");
+
+  ExportOptions exp;
+  auto* export_cmd = app.add_subcommand("export", "write a run directory's results as CSV or JSON");
+  export_cmd->add_option("DIR", exp.dir, "run directory")->required();
+  export_cmd->add_option("--format", exp.format, "csv (per-generation statistics) or json (everything)")
+      ->required()->check(CLI::IsMember({"csv", "json"}));
+  export_cmd->add_option("--out", exp.out, "output file (default: standard output)");
+
+  ReportOptions rep;
+  auto* report_cmd = app.add_subcommand("report", "write a self-contained HTML report of a run directory");
+  report_cmd->add_option("DIR", rep.dir, "run directory")->required();
+  report_cmd->add_option("--out", rep.out, "output file (default: DIR/report.html)");
 
   BenchOptions bench;
   auto* bench_cmd = app.add_subcommand("bench", "measure control steps per second and thread scaling");
@@ -45,6 +58,8 @@ int main(int argc, char** argv) {
   try {
     if (*check) return check_command(check_files);
     if (*run_cmd) return run_command(run);
+    if (*export_cmd) return export_command(exp);
+    if (*report_cmd) return report_command(rep);
     if (*bench_cmd) return bench_command(bench);
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "esc: error: out of memory\n");

@@ -1,9 +1,13 @@
 #pragma once
-// Progress of a campaign on the terminal, one line per generation: controller, run,
-// generation, best and mean fitness, evaluations per second and the estimated time left.
+// Progress of a campaign. On a terminal: one live line redrawn in place (a bar, the
+// controller, run and generation, best and mean fitness of the generation, evaluations
+// per second and the estimated time left) and one permanent line per finished run.
+// Otherwise (a pipe, a log file): one plain line per generation.
 // Forwards every event to the next listener (the run directory).
 #include <chrono>
 #include <cstdint>
+#include <span>
+#include <string>
 
 #include "runtime/eval/campaign.hpp"
 
@@ -11,20 +15,34 @@ namespace esc::cli {
 
 class ProgressPrinter final : public eval::CampaignListener {
  public:
-  ProgressPrinter(const eval::ExperimentSpec& spec, eval::CampaignListener& next);
+  // `already_done`: generations finished before this process started (a resumed run).
+  ProgressPrinter(const eval::ExperimentSpec& spec, eval::CampaignListener& next, bool live,
+                  std::int64_t already_done = 0);
 
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
+  void checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) override;
+  void best_traced(const control::ControllerSpec& controller, const eval::RunResult& run,
+                   std::span<const eval::TraceStep> trace) override;
   void run_done(const control::ControllerSpec& controller, const eval::RunResult& run) override;
+
+  // Ends the live line (call before printing anything else).
+  void close();
 
  private:
   const eval::ExperimentSpec* spec_;
   eval::CampaignListener* next_;
+  bool live_;
+  bool line_open_ = false;
   std::int64_t generations_total_;
-  std::int64_t generations_done_ = 0;
+  std::int64_t generations_done_;
+  std::int64_t done_here_ = 0;
   std::chrono::steady_clock::time_point start_;
 };
 
 [[nodiscard]] std::string format_duration(double seconds);
+
+// The progress bar text: `width` cells, filled in proportion to done / total.
+[[nodiscard]] std::string progress_bar(std::int64_t done, std::int64_t total, int width);
 
 }  // namespace esc::cli

@@ -1,7 +1,10 @@
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <iostream>
 #include <vector>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -16,18 +19,36 @@ namespace esc::cli {
 
 namespace {
 
+std::string p_text(double p) {
+  if (std::isnan(p)) return "n/a";
+  return p < 1e-4 ? fmt::format("{:.1e}", p) : fmt::format("{:.4f}", p);
+}
+
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
   fmt::print("\n{}: {} run{} x {} generations, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
              spec.runs == 1 ? "" : "s", spec.es.generations, spec.epochs, spec.steps, spec.seed);
   fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
              "best fitness mean ± sd", "median", "best run");
+  std::vector<std::vector<double>> finals;
   for (const auto& c : result.controllers) {
     std::vector<double> best;
     for (const auto& r : c.runs) best.push_back(r.best_fitness);
     const report::Summary s = report::summarise(best);
     fmt::print("{:<12} {:<14} {:>6}  {:>12.1f} ± {:<7.1f}  {:>10.1f}  {:>10.1f}\n", c.name, c.architecture,
                c.genome_size, s.mean, s.sd, s.median, s.max);
+    finals.push_back(std::move(best));
   }
+  if (result.controllers.size() < 2) return;
+  fmt::print("\n{:<26} {:>9} {:>7} {:>10}  {:>9} {:>10}\n", "pairwise (two-sided)", "Welch t", "df", "p",
+             "M-W U", "p");
+  for (std::size_t i = 0; i < finals.size(); ++i)
+    for (std::size_t j = i + 1; j < finals.size(); ++j) {
+      const report::TestResult w = report::welch_t_test(finals[i], finals[j]);
+      const report::TestResult m = report::mann_whitney_u(finals[i], finals[j]);
+      fmt::print("{:<26} {:>9.3f} {:>7.1f} {:>10}  {:>9.1f} {:>10}\n",
+                 fmt::format("{} vs {}", result.controllers[i].name, result.controllers[j].name), w.statistic, w.df,
+                 p_text(w.p_value), m.statistic, p_text(m.p_value));
+    }
 }
 
 std::filesystem::path default_out(const std::string& experiment) {
@@ -37,6 +58,16 @@ std::filesystem::path default_out(const std::string& experiment) {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
   return std::filesystem::path("runs") / fmt::format("{}-{}", experiment, stamp);
+}
+
+// The command-line settings as stored in the database, to be applied again on resume.
+nlohmann::ordered_json overrides_json(const RunOptions& o) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  if (o.runs) j["runs"] = *o.runs;
+  if (o.generations) j["generations"] = *o.generations;
+  if (o.seed) j["seed"] = *o.seed;
+  j["set"] = o.settings;
+  return j;
 }
 
 // Applies the command-line overrides; prints each problem, returns false if any.
@@ -64,43 +95,133 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
   return ok;
 }
 
+// The experiment `name` of a compiled script (the first one if `name` is empty), or null
+// after printing an error.
+eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
+                                      const std::string& name) {
+  if (compiled.experiments.empty()) {
+    fmt::print(stderr, "esc: error: {} declares no experiment to run\n", file.string());
+    return nullptr;
+  }
+  if (name.empty()) return &compiled.experiments.front();
+  std::string names;
+  for (auto& e : compiled.experiments) {
+    if (e.name == name) return &e;
+    names += (names.empty() ? "`" : ", `") + e.name + "`";
+  }
+  fmt::print(stderr, "esc: error: {} has no experiment `{}`; it declares {}\n", file.string(), name, names);
+  return nullptr;
+}
+
+std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compiled) {
+  std::vector<store::SourceFile> sources;
+  for (const auto& [name, text] : compiled.sources) sources.push_back({name, text});
+  return sources;
+}
+
+bool live_progress() { return isatty(STDOUT_FILENO) != 0; }
+
+eval::CampaignResult run_with_progress(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
+                                       store::RunDirectory& dir, std::int64_t already_done) {
+  ProgressPrinter progress(spec, dir, live_progress(), already_done);
+  eval::CampaignResult result = eval::run_campaign(spec, options, progress);
+  progress.close();
+  dir.finish(result);
+  return result;
+}
+
+int resume_command(const RunOptions& o) {
+  if (o.runs || o.generations || o.seed || !o.settings.empty() || !o.experiment.empty() || !o.out.empty()) {
+    fmt::print(stderr, "esc: error: --resume continues a run with its own settings: --runs, --generations, --seed, "
+                       "--set, --experiment and --out cannot be given with it\n");
+    return kExitUsage;
+  }
+  store::ResultsDb db = store::ResultsDb::open(o.resume);
+  const store::StoredExperiment stored = db.load_single();
+  const std::filesystem::path script = o.file.empty() ? stored.script : o.file;
+  if (stored.finished()) {
+    fmt::print("esc: {} is complete ({} x {} runs x {} generations); nothing to resume\n", o.resume.string(),
+               stored.controllers.size(), stored.runs, stored.generations);
+    return kExitOk;
+  }
+
+  compiler::CompileResult compiled = load_script(script);
+  if (!compiled.ok()) return kExitBadInput;
+  eval::ExperimentSpec* spec = pick_experiment(compiled, script, stored.name);
+  if (spec == nullptr) return kExitBadInput;
+  RunOptions replay;
+  try {
+    const auto& ov = stored.overrides;
+    if (ov.contains("runs")) replay.runs = ov["runs"].get<int>();
+    if (ov.contains("generations")) replay.generations = ov["generations"].get<int>();
+    if (ov.contains("seed")) replay.seed = ov["seed"].get<std::uint64_t>();
+    if (ov.contains("set")) replay.settings = ov["set"].get<std::vector<std::string>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", o.resume.string(), e.what()));
+  }
+  if (!apply_overrides(replay, *spec)) return kExitBadInput;
+
+  const std::vector<store::SourceFile> sources = sources_of(compiled);
+  const std::string hash = store::campaign_hash(spec->name, sources);
+  if (hash != stored.content_hash) {
+    fmt::print(stderr,
+               "esc: error: {} has changed since the run in {} started (content hash {}, stored {}); a run resumes "
+               "only with the script it started with (a copy is in {}/sources)\n",
+               script.string(), o.resume.string(), hash, stored.content_hash, o.resume.string());
+    return kExitBadInput;
+  }
+  if (spec->resolved_settings != stored.settings) {
+    for (const auto& [key, value] : spec->resolved_settings) {
+      const auto it = stored.settings.find(key);
+      if (it == stored.settings.end() || it->second != value) {
+        fmt::print(stderr, "esc: error: setting `{}` is now `{}` but the run in {} used `{}`; cannot resume\n", key,
+                   value, o.resume.string(), it == stored.settings.end() ? "nothing" : it->second);
+        return kExitBadInput;
+      }
+    }
+    fmt::print(stderr, "esc: error: the settings differ from the stored ones; cannot resume\n");
+    return kExitBadInput;
+  }
+
+  const eval::ResumePoint point = stored.resume_point();
+  std::int64_t done = 0;
+  for (const auto& f : point.finished) done += static_cast<std::int64_t>(f.result.generations.size());
+  for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
+  fmt::print("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
+             static_cast<std::int64_t>(spec->controllers.size()) * spec->runs * spec->es.generations);
+  store::RunDirectory dir = store::RunDirectory::resume(o.resume, std::move(db), stored);
+  const eval::CampaignResult result = run_with_progress(*spec, {o.threads, &point, true}, dir, done);
+  print_table(*spec, result);
+  fmt::print("\nresults: {}/summary.json (report: esc report {})\n", o.resume.string(), o.resume.string());
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_command(const RunOptions& o) {
+  if (!o.resume.empty()) return resume_command(o);
+  if (o.file.empty()) {
+    fmt::print(stderr, "esc: error: run needs a script FILE (or --resume DIR)\n");
+    return kExitUsage;
+  }
   compiler::CompileResult compiled = load_script(o.file);
   if (!compiled.ok()) return kExitBadInput;
-  if (compiled.experiments.empty()) {
-    fmt::print(stderr, "esc: error: {} declares no experiment to run\n", o.file.string());
-    return kExitBadInput;
-  }
-  eval::ExperimentSpec* spec = &compiled.experiments.front();
-  if (!o.experiment.empty()) {
-    spec = nullptr;
-    std::string names;
-    for (auto& e : compiled.experiments) {
-      if (e.name == o.experiment) spec = &e;
-      names += (names.empty() ? "`" : ", `") + e.name + "`";
-    }
-    if (spec == nullptr) {
-      fmt::print(stderr, "esc: error: {} has no experiment `{}`; it declares {}\n", o.file.string(),
-                 o.experiment, names);
-      return kExitBadInput;
-    }
-  }
+  eval::ExperimentSpec* spec = pick_experiment(compiled, o.file, o.experiment);
+  if (spec == nullptr) return kExitBadInput;
   if (!apply_overrides(o, *spec)) return kExitBadInput;
 
-  std::vector<store::SourceFile> sources;
-  for (const auto& [name, text] : compiled.sources) sources.push_back({name, text});
   const std::filesystem::path out = o.out.empty() ? default_out(spec->name) : o.out;
-  store::RunDirectory dir(out, *spec, sources);
-  ProgressPrinter progress(*spec, dir);
+  store::LaunchInfo launch;
+  launch.script = std::filesystem::absolute(o.file).lexically_normal();
+  launch.overrides = overrides_json(o);
+  launch.software_version = ESC_VERSION_STRING;
+  store::RunDirectory dir(out, *spec, sources_of(compiled), launch);
   fmt::print("esc: running {} ({} controller{}, {} run{}, {} generations) into {}\n", spec->name,
              spec->controllers.size(), spec->controllers.size() == 1 ? "" : "s", spec->runs,
              spec->runs == 1 ? "" : "s", spec->es.generations, out.string());
-  const eval::CampaignResult result = eval::run_campaign(*spec, {o.threads}, progress);
-  dir.finish(result);
+  const eval::CampaignResult result = run_with_progress(*spec, {o.threads, nullptr, true}, dir, 0);
   print_table(*spec, result);
-  fmt::print("\nresults: {}/summary.json\n", out.string());
+  fmt::print("\nresults: {}/summary.json (report: esc report {})\n", out.string(), out.string());
   return kExitOk;
 }
 

@@ -14,7 +14,8 @@ BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
 PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev
           libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev python3)
+          libgtest-dev libbenchmark-dev libopenmpi-dev openmpi-bin python3
+          libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js chromium)
 
 install_missing() {
   local missing=()
@@ -43,5 +44,6 @@ else
   # The paper's obstacle-avoidance comparison, shortened to a few minutes on 2 cores.
   "$BUILD_DIR/cli/esc" run experiments/paper/obstacle_avoidance.esc \
       --runs 3 --generations 30 --set epochs=5 --seed 1 --out "$out"
-  echo "report: $out (summary.json, per-run CSV, best genomes, settings.json)"
+  "$BUILD_DIR/cli/esc" report "$out"
+  echo "results: $out (esc.db, summary.json, per-run CSV, best genomes, settings.json, report.html)"
 fi

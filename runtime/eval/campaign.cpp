@@ -48,45 +48,102 @@ std::int64_t evaluate_all(const control::ControllerSpec& controller, std::vector
                           std::uint64_t seed, int generation, Workers& workers) {
   std::vector<std::int64_t> steps(pop.size(), 0);
   tbb::parallel_for(std::size_t{0}, pop.size(), [&](std::size_t i) {
-    const std::uint64_t s = derive_seed(seed, {static_cast<std::uint64_t>(Stream::Evaluate),
-                                               static_cast<std::uint64_t>(generation), i});
-    const Evaluation e = workers.local().evaluate(controller, pop[i].genes, s);
+    const Evaluation e = workers.local().evaluate(controller, pop[i].genes, evaluation_seed(seed, generation, i));
     pop[i].fitness = e.fitness;
     steps[i] = e.steps;
   });
   return std::accumulate(steps.begin(), steps.end(), std::int64_t{0});
 }
 
+// Collects a traced evaluation and counts the steps each action acted on.
+struct Recorder final : TraceSink {
+  std::vector<TraceStep> steps;
+  std::vector<std::int64_t> usage;
+  void on_step(const TraceStep& t) override {
+    steps.push_back(t);
+    if (t.action >= 0 && static_cast<std::size_t>(t.action) < usage.size()) ++usage[static_cast<std::size_t>(t.action)];
+  }
+};
+
+RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& es, int run) {
+  RunState st;
+  st.run = run;
+  st.seed = run_seed(spec.seed, run);
+  Rng init(st.seed, {static_cast<std::uint64_t>(Stream::Init)});
+  st.parents = es.initial(init);
+  return st;
+}
+
 RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
-                     Workers& workers, CampaignListener& listener) {
+                     const RunState* from, const CampaignOptions& options, Workers& workers,
+                     CampaignListener& listener) {
   const evo::EvolutionStrategy es(spec.es, controller.genome_size());
-  RunResult result;
-  result.run = run;
-  result.seed = run_seed(spec.seed, run);
-  Rng init(result.seed, {static_cast<std::uint64_t>(Stream::Init)});
-  std::vector<evo::Individual> parents = es.initial(init);
-  bool have_best = false;
-  for (int g = 0; g < spec.es.generations; ++g) {
+  RunState st = from != nullptr ? *from : fresh_state(spec, es, run);
+  for (int g = static_cast<int>(st.generations.size()); g < spec.es.generations; ++g) {
     const auto start = Clock::now();
-    Rng breed(result.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
-    std::vector<evo::Individual> offspring = es.breed(parents, breed);
-    const std::int64_t steps = evaluate_all(controller, offspring, result.seed, g, workers);
+    Rng breed(st.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
+    std::vector<evo::Individual> offspring = es.breed(st.parents, breed);
+    const std::int64_t steps = evaluate_all(controller, offspring, st.seed, g, workers);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    result.generations.push_back(summarise(g, offspring, steps, seconds));
-    for (const auto& ind : offspring) {
-      if (!have_best || ind.fitness > result.best_fitness) {
-        have_best = true;
-        result.best_fitness = ind.fitness;
-        result.best_genome = ind.genes;
+    st.generations.push_back(summarise(g, offspring, steps, seconds));
+    for (std::size_t i = 0; i < offspring.size(); ++i) {
+      if (!st.has_best || offspring[i].fitness > st.best_fitness) {
+        st.has_best = true;
+        st.best_fitness = offspring[i].fitness;
+        st.best_genome = offspring[i].genes;
+        st.best_generation = g;
+        st.best_index = static_cast<int>(i);
       }
     }
-    parents = es.select(parents, offspring);
-    listener.generation_done(controller, run, result.generations.back());
+    st.parents = es.select(st.parents, offspring);
+    listener.generation_done(controller, run, st.generations.back());
+    listener.checkpoint(controller, st);
+  }
+  RunResult result;
+  result.run = run;
+  result.seed = st.seed;
+  result.generations = std::move(st.generations);
+  result.best_fitness = st.best_fitness;
+  result.best_genome = std::move(st.best_genome);
+  result.best_generation = st.best_generation;
+  result.best_index = st.best_index;
+  if (st.has_best) {
+    // Replays the best evaluation (same genome, same stream): the fitness is the same, and
+    // the trace says which action acted when.
+    Recorder rec;
+    rec.usage.assign(controller.choice_names().size(), 0);
+    if (options.trace_best) rec.steps.reserve(static_cast<std::size_t>(spec.epochs) * static_cast<std::size_t>(spec.steps));
+    if (options.trace_best || !rec.usage.empty()) {
+      const std::uint64_t seed = evaluation_seed(result.seed, result.best_generation,
+                                                 static_cast<std::size_t>(result.best_index));
+      (void)workers.local().evaluate(controller, result.best_genome, seed, &rec);
+      result.action_usage = std::move(rec.usage);
+      if (options.trace_best) listener.best_traced(controller, result, rec.steps);
+    }
   }
   return result;
 }
 
+const RunResult* find_finished(const ResumePoint* resume, const std::string& controller, int run) {
+  if (resume == nullptr) return nullptr;
+  for (const auto& f : resume->finished)
+    if (f.controller == controller && f.result.run == run) return &f.result;
+  return nullptr;
+}
+
+const RunState* find_in_progress(const ResumePoint* resume, const std::string& controller, int run) {
+  if (resume == nullptr) return nullptr;
+  for (const auto& p : resume->in_progress)
+    if (p.controller == controller && p.state.run == run) return &p.state;
+  return nullptr;
+}
+
 }  // namespace
+
+std::uint64_t evaluation_seed(std::uint64_t run_seed, int generation, std::size_t index) noexcept {
+  return derive_seed(run_seed, {static_cast<std::uint64_t>(Stream::Evaluate), static_cast<std::uint64_t>(generation),
+                                static_cast<std::uint64_t>(index)});
+}
 
 std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept {
   return derive_seed(master_seed, {static_cast<std::uint64_t>(Stream::RunSeed), static_cast<std::uint64_t>(run)});
@@ -109,7 +166,12 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
     cr.architecture = c.architecture();
     cr.genome_size = c.genome_size();
     for (int run = 0; run < spec.runs; ++run) {
-      arena.execute([&] { cr.runs.push_back(evolve_one(spec, c, run, workers, listener)); });
+      if (const RunResult* done = find_finished(options.resume, c.name, run)) {
+        cr.runs.push_back(*done);
+        continue;
+      }
+      const RunState* partial = find_in_progress(options.resume, c.name, run);
+      arena.execute([&] { cr.runs.push_back(evolve_one(spec, c, run, partial, options, workers, listener)); });
       listener.run_done(c, cr.runs.back());
     }
     result.controllers.push_back(std::move(cr));

@@ -6,9 +6,11 @@
 // evaluation's stream is derived from (run seed, generation, individual), so results are
 // bit-identical for any thread count.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "runtime/eval/evaluator.hpp"
 #include "runtime/eval/experiment.hpp"
 
 namespace esc::eval {
@@ -29,7 +31,31 @@ struct RunResult {
   std::vector<GenerationStats> generations;
   double best_fitness = 0.0;   // best over all generations
   std::vector<double> best_genome;
+  int best_generation = 0;     // where the best evaluation happened: its generation and
+  int best_index = 0;          // offspring index, which fix its evaluation stream
+  // Control steps on which each action (symbolic head) or behavior (supervisor) acted,
+  // over the best evaluation replayed, in ControllerSpec::choice_names() order; empty for
+  // a classical head.
+  std::vector<std::int64_t> action_usage;
 };
+
+// Everything needed to continue a run after its last finished generation: restarting
+// generation `generations.size()` from `parents` reproduces the uninterrupted run bit for
+// bit, because every random stream is derived from (run seed, generation, individual).
+struct RunState {
+  int run = 0;
+  std::uint64_t seed = 0;
+  std::vector<GenerationStats> generations;   // finished so far
+  std::vector<evo::Individual> parents;       // selected for the next generation
+  bool has_best = false;
+  double best_fitness = 0.0;
+  std::vector<double> best_genome;
+  int best_generation = 0;
+  int best_index = 0;
+};
+
+// Seed of the evaluation of offspring `index` of generation `generation` of a run.
+[[nodiscard]] std::uint64_t evaluation_seed(std::uint64_t run_seed, int generation, std::size_t index) noexcept;
 
 struct ControllerResult {
   std::string name;
@@ -51,11 +77,36 @@ class CampaignListener {
   virtual ~CampaignListener() = default;
   virtual void generation_done(const control::ControllerSpec& /*controller*/, int /*run*/,
                                const GenerationStats& /*stats*/) {}
+  // After generation_done, with the whole state of the run: what a store commits to be
+  // able to resume (see RunState).
+  virtual void checkpoint(const control::ControllerSpec& /*controller*/, const RunState& /*state*/) {}
+  // Before run_done: every step of the run's best evaluation, replayed (same seed, same
+  // fitness). Only called when CampaignOptions::trace_best is set.
+  virtual void best_traced(const control::ControllerSpec& /*controller*/, const RunResult& /*run*/,
+                           std::span<const TraceStep> /*trace*/) {}
   virtual void run_done(const control::ControllerSpec& /*controller*/, const RunResult& /*run*/) {}
 };
 
+// Where to pick a campaign up again: the finished runs and the runs in progress, found
+// by controller name and run index. Finished runs are taken as they are (the listener
+// hears nothing of them); a run in progress continues from its state.
+struct ResumePoint {
+  struct Finished {
+    std::string controller;
+    RunResult result;
+  };
+  struct InProgress {
+    std::string controller;
+    RunState state;
+  };
+  std::vector<Finished> finished;
+  std::vector<InProgress> in_progress;
+};
+
 struct CampaignOptions {
-  int threads = 0;             // 0: all hardware threads
+  int threads = 0;                        // 0: all hardware threads
+  const ResumePoint* resume = nullptr;    // none: start from scratch
+  bool trace_best = false;                // replay each run's best evaluation for best_traced
 };
 
 [[nodiscard]] std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept;

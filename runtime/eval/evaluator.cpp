@@ -16,35 +16,61 @@ bool any_stop(const FitnessSpec& f, const expr::Frame& frame) noexcept {
   return false;
 }
 
+void report_step(TraceSink& trace, int epoch, int step, const sim::RobotState& state,
+                 const std::array<double, sim::kIrSensors>& ir, const control::WheelCommand& cmd,
+                 int action, double fitness) {
+  TraceStep t;
+  t.epoch = epoch;
+  t.step = step;
+  t.pose = state.pose;
+  t.ir = ir;
+  t.left_command = cmd.left;
+  t.right_command = cmd.right;
+  t.left_speed_mps = state.wheel_speed_mps[0];
+  t.right_speed_mps = state.wheel_speed_mps[1];
+  t.action = action;
+  t.fitness = fitness;
+  t.collided = state.collided;
+  trace.on_step(t);
+}
+
 }  // namespace
 
 Evaluator::Evaluator(const ExperimentSpec& spec) : spec_(&spec), world_(spec.arena, spec.robot) {}
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
-                               std::span<const double> genome, std::uint64_t seed) {
+                               std::span<const double> genome, std::uint64_t seed,
+                               TraceSink* trace) {
   const ExperimentSpec& s = *spec_;
   control::Controller ctl(controller, genome);
   std::array<double, sim::kIrSensors> ir{};
+  std::array<double, sim::kLightSensors> light{};
   expr::Frame frame{};
+  // The reading taken after each physics step serves both that step's fitness term and
+  // the next step's control input: the robot has not moved in between.
+  const auto sense = [&](Rng& rng) {
+    world_.read_ir(ir, rng);
+    world_.read_light(light, rng);
+    observe_light(light, frame);
+    observe_robot(world_, ir, frame);
+  };
   Evaluation result;
   for (int epoch = 0; epoch < s.epochs; ++epoch) {
     Rng rng(seed, {static_cast<std::uint64_t>(epoch)});
-    world_.reset(s.arena.fixed_start ? *s.arena.fixed_start : world_.random_free_pose(rng));
+    world_.begin_epoch(rng);   // random zones, then the start pose, then reset
     ctl.reset();
     frame.fill(0.0);
-    // The reading taken after each physics step serves both that step's fitness term and
-    // the next step's control input: the robot has not moved in between.
-    world_.read_ir(ir, rng);
-    observe_robot(world_, ir, frame);
+    sense(rng);
     for (int step = 0; step < s.steps; ++step) {
       observe_clock(epoch, step, s.robot.control_step_s, frame);
       const control::WheelCommand cmd = ctl.step(frame);
       world_.step(cmd.left, cmd.right);
-      world_.read_ir(ir, rng);
-      observe_robot(world_, ir, frame);
+      sense(rng);
       ++result.steps;
       result.fitness += s.fitness.step.eval(frame);
-      if (any_stop(s.fitness, frame)) break;
+      if (trace != nullptr) [[unlikely]]
+        report_step(*trace, epoch, step, world_.state(), ir, cmd, ctl.last_action(), result.fitness);
+      if (any_stop(s.fitness, frame) || world_.state().energy_empty) break;
     }
   }
   return result;

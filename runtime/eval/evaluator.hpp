@@ -4,6 +4,7 @@
 //   sense (IR) -> control -> act + physics -> observe -> fitness term -> stop conditions.
 // An Evaluator owns one simulated world and reuses it for every evaluation it runs, so a
 // worker thread keeps one Evaluator for a whole campaign.
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -17,14 +18,40 @@ struct Evaluation {
   std::int64_t steps = 0;   // control steps simulated (epochs may end early)
 };
 
+// One control step of a traced evaluation (the replay of a controller): the state after
+// the step's physics, the IR reading taken there, the command and the action that led to it.
+struct TraceStep {
+  int epoch = 0;
+  int step = 0;                               // from 0 within the epoch
+  sim::Pose pose;                             // after the step
+  std::array<double, sim::kIrSensors> ir{};   // read after the step (the next step's input)
+  double left_command = 0.0;                  // commands in [-1, 1] chosen by the controller
+  double right_command = 0.0;
+  double left_speed_mps = 0.0;                // measured wheel speeds after the step
+  double right_speed_mps = 0.0;
+  int action = -1;                            // symbolic head: index of the acting action
+  double fitness = 0.0;                       // accumulated over the evaluation so far
+  bool collided = false;
+};
+
+// Receives every step of a traced evaluation, in order.
+class TraceSink {
+ public:
+  virtual ~TraceSink() = default;
+  virtual void on_step(const TraceStep& step) = 0;
+};
+
 class Evaluator {
  public:
   // `spec` must outlive the evaluator.
   explicit Evaluator(const ExperimentSpec& spec);
 
   // Deterministic in (controller, genome, seed) whatever this evaluator ran before.
+  // With a `trace`, every step is also reported to it; the result is the same either way
+  // (the untraced path pays one predictable branch per step).
   [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller,
-                                    std::span<const double> genome, std::uint64_t seed);
+                                    std::span<const double> genome, std::uint64_t seed,
+                                    TraceSink* trace = nullptr);
 
  private:
   const ExperimentSpec* spec_;

@@ -11,6 +11,30 @@ namespace esc::store {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+constexpr const char* kCsvHeader = "generation,best,mean,sd,evaluations,steps,seconds\n";
+
+std::string csv_line(const eval::GenerationStats& g) {
+  return fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{:.3f}\n", g.generation, g.best, g.mean, g.sd, g.evaluations,
+                     g.steps, g.seconds);
+}
+
+std::pair<fs::path, ResultsDb> create_new(fs::path dir, const eval::ExperimentSpec& spec,
+                                          const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !(fs::is_directory(dir, ec) && fs::is_empty(dir, ec)))
+    throw std::runtime_error(fmt::format(
+        "output directory `{}` already exists and is not empty; results are never overwritten: "
+        "choose another --out or remove it", dir.string()));
+  fs::create_directories(dir / "sources", ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir.string(), ec.message()));
+  ResultsDb db = ResultsDb::create(dir, spec, sources, launch);
+  return {std::move(dir), std::move(db)};
+}
+
+}  // namespace
+
 std::uint64_t content_hash(std::string_view text, std::uint64_t h) noexcept {
   for (unsigned char ch : text) {
     h ^= ch;
@@ -30,21 +54,22 @@ void write_atomically(const fs::path& file, std::string_view text) {
   fs::rename(tmp, file);
 }
 
-RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec,
-                           const std::vector<SourceFile>& sources)
-    : dir_(std::move(dir)) {
-  std::error_code ec;
-  if (fs::exists(dir_, ec) && !(fs::is_directory(dir_, ec) && fs::is_empty(dir_, ec)))
-    throw std::runtime_error(fmt::format(
-        "output directory `{}` already exists and is not empty; results are never overwritten: "
-        "choose another --out or remove it", dir_.string()));
-  fs::create_directories(dir_ / "sources", ec);
-  if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir_.string(), ec.message()));
+std::string generations_csv(const std::vector<eval::GenerationStats>& generations) {
+  std::string s = kCsvHeader;
+  for (const auto& g : generations) s += csv_line(g);
+  return s;
+}
 
-  content_hash_ = content_hash(spec.name);
+RunDirectory::RunDirectory(fs::path dir, ResultsDb db) : dir_(std::move(dir)), db_(std::move(db)) {}
+
+RunDirectory::RunDirectory(std::pair<fs::path, ResultsDb> created)
+    : RunDirectory(std::move(created.first), std::move(created.second)) {}
+
+RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const std::vector<SourceFile>& sources,
+                           const LaunchInfo& launch)
+    : RunDirectory(create_new(std::move(dir), spec, sources, launch)) {
   nlohmann::ordered_json files = nlohmann::ordered_json::array();
   for (const SourceFile& s : sources) {
-    content_hash_ = content_hash(s.text, content_hash(s.name.generic_string(), content_hash_));
     const std::string flat = fmt::format("{:02}-{}", files.size(), s.name.filename().string());
     write_atomically(dir_ / "sources" / flat, s.text);
     files.push_back({{"name", s.name.generic_string()}, {"stored_as", "sources/" + flat}});
@@ -52,7 +77,7 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec,
   nlohmann::ordered_json settings(spec.resolved_settings);
   nlohmann::ordered_json doc = {{"experiment", spec.name},
                                 {"seed", spec.seed},
-                                {"content_hash", fmt::format("{:016x}", content_hash_)},
+                                {"content_hash", campaign_hash(spec.name, sources)},
                                 {"sources", files},
                                 {"settings", settings}};
   write_atomically(dir_ / "settings.json", doc.dump(2) + "\n");
@@ -61,33 +86,68 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec,
   write_summary();
 }
 
-fs::path RunDirectory::run_file(const control::ControllerSpec& c, int run, std::string_view ext) const {
-  return dir_ / c.name / fmt::format("run-{:02}{}", run + 1, ext);
+RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored) {
+  RunDirectory rd(std::move(dir), std::move(db));
+  rd.partial_ = stored.result();
+  for (const StoredController& c : stored.controllers) {
+    if (c.finished.empty() && c.in_progress.empty()) continue;
+    fs::create_directories(rd.dir_ / c.name);
+    for (const auto& r : c.finished) {
+      write_atomically(rd.run_file(c.name, r.run, ".csv"), generations_csv(r.generations));
+      rd.write_best(c.name, c.architecture, r);
+    }
+    for (const auto& s : c.in_progress)
+      write_atomically(rd.run_file(c.name, s.run, ".csv"), generations_csv(s.generations));
+  }
+  rd.write_summary();
+  return rd;
+}
+
+fs::path RunDirectory::run_file(const std::string& controller, int run, std::string_view ext) const {
+  return dir_ / controller / fmt::format("run-{:02}{}", run + 1, ext);
 }
 
 void RunDirectory::generation_done(const control::ControllerSpec& controller, int run,
                                    const eval::GenerationStats& g) {
   const std::string key = fmt::format("{}/{}", controller.name, run);
+  const fs::path file = run_file(controller.name, run, ".csv");
   if (key != csv_key_) {
     fs::create_directories(dir_ / controller.name);
-    csv_ = std::ofstream(run_file(controller, run, ".csv"), std::ios::trunc);
-    csv_ << "generation,best,mean,sd,evaluations,steps,seconds\n";
+    // A run continued after a resume appends to the CSV rewritten from the database.
+    const bool resumed = g.generation > 0 && fs::exists(file);
+    csv_ = std::ofstream(file, resumed ? std::ios::app : std::ios::trunc);
+    if (!resumed) csv_ << kCsvHeader;
     csv_key_ = key;
   }
-  csv_ << fmt::format("{},{:.17g},{:.17g},{:.17g},{},{},{:.3f}\n", g.generation, g.best, g.mean, g.sd,
-                      g.evaluations, g.steps, g.seconds);
+  csv_ << csv_line(g);
   csv_.flush();
-  if (!csv_) throw std::runtime_error(fmt::format("cannot write {}", run_file(controller, run, ".csv").string()));
+  if (!csv_) throw std::runtime_error(fmt::format("cannot write {}", file.string()));
 }
 
-void RunDirectory::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {
-  nlohmann::ordered_json best = {{"controller", controller.name},
-                                 {"architecture", controller.architecture()},
+void RunDirectory::checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) {
+  db_.commit_generation(controller.name, state);
+}
+
+void RunDirectory::best_traced(const control::ControllerSpec& controller, const eval::RunResult& run,
+                               std::span<const eval::TraceStep> trace) {
+  db_.commit_replay(controller.name, run, trace);
+}
+
+void RunDirectory::write_best(const std::string& controller, const std::string& architecture,
+                              const eval::RunResult& run) {
+  nlohmann::ordered_json best = {{"controller", controller},
+                                 {"architecture", architecture},
                                  {"run", run.run},
                                  {"seed", run.seed},
                                  {"fitness", run.best_fitness},
                                  {"genome", run.best_genome}};
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");
+}
+
+void RunDirectory::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {
+  db_.commit_run(controller.name, run);
+  fs::create_directories(dir_ / controller.name);
+  write_best(controller.name, controller.architecture(), run);
   if (partial_.controllers.empty() || partial_.controllers.back().name != controller.name)
     partial_.controllers.push_back({controller.name, controller.architecture(), controller.genome_size(), {}});
   partial_.controllers.back().runs.push_back(run);
@@ -95,6 +155,7 @@ void RunDirectory::run_done(const control::ControllerSpec& controller, const eva
 }
 
 void RunDirectory::finish(const eval::CampaignResult& result) {
+  db_.mark_finished();
   partial_ = result;
   write_summary();
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The output directory of `esc run`. It is written as the campaign goes, so a run that is
 // stopped halfway keeps every finished generation:
+//   esc.db                     the results database (results_db.hpp), committed every
+//                              generation: the source of truth, enough to resume
 //   sources/<file>             every script file the experiment was compiled from
 //   settings.json              experiment, master seed, resolved settings, content hash
 //   <controller>/run-NN.csv    per-generation statistics, one line appended per generation
@@ -11,42 +13,52 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "runtime/eval/campaign.hpp"
+#include "runtime/store/results_db.hpp"
 
 namespace esc::store {
 
-struct SourceFile {
-  std::filesystem::path name;   // as the compiler reported it
-  std::string text;
-};
-
 class RunDirectory final : public eval::CampaignListener {
  public:
-  // Creates `dir`. Throws std::runtime_error if it exists and is not empty (results are
-  // never overwritten) or cannot be created.
+  // Creates `dir` and its database. Throws std::runtime_error if it exists and is not
+  // empty (results are never overwritten) or cannot be created.
   RunDirectory(std::filesystem::path dir, const eval::ExperimentSpec& spec,
-               const std::vector<SourceFile>& sources);
+               const std::vector<SourceFile>& sources, const LaunchInfo& launch = {});
+
+  // Continues a directory whose database was opened and loaded (`stored`): rewrites the
+  // CSV, genome and summary files from the database, which is what survived a crash.
+  static RunDirectory resume(std::filesystem::path dir, ResultsDb db, const StoredExperiment& stored);
 
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
+  void checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) override;
+  void best_traced(const control::ControllerSpec& controller, const eval::RunResult& run,
+                   std::span<const eval::TraceStep> trace) override;
   void run_done(const control::ControllerSpec& controller, const eval::RunResult& run) override;
 
-  // Final summary (the same file, with every run).
+  // Final summary (the same file, with every run); marks the campaign finished.
   void finish(const eval::CampaignResult& result);
 
   [[nodiscard]] const std::filesystem::path& path() const noexcept { return dir_; }
 
  private:
-  std::filesystem::path run_file(const control::ControllerSpec& c, int run, std::string_view ext) const;
+  RunDirectory(std::filesystem::path dir, ResultsDb db);
+  explicit RunDirectory(std::pair<std::filesystem::path, ResultsDb> created);
+  std::filesystem::path run_file(const std::string& controller, int run, std::string_view ext) const;
+  void write_best(const std::string& controller, const std::string& architecture, const eval::RunResult& run);
   void write_summary();
 
   std::filesystem::path dir_;
-  std::uint64_t content_hash_ = 0;
+  ResultsDb db_;
   eval::CampaignResult partial_;      // runs finished so far, for summary.json
   std::ofstream csv_;                 // the run being written
   std::string csv_key_;
 };
+
+// The CSV text of a run's per-generation statistics (header included).
+[[nodiscard]] std::string generations_csv(const std::vector<eval::GenerationStats>& generations);
 
 // 64-bit FNV-1a of the text: a stable content key (not a cryptographic hash).
 [[nodiscard]] std::uint64_t content_hash(std::string_view text, std::uint64_t h = 0xcbf29ce484222325ULL) noexcept;

@@ -45,7 +45,7 @@ TEST(RunDirectory, WritesSettingsSourcesCsvGenomesAndSummary) {
   eval::GenerationStats g1{1, 3.0, 2.0, 0.5, 10, 100, 0.1};
   rd.generation_done(e.controllers[0], 0, g0);
   rd.generation_done(e.controllers[0], 0, g1);
-  eval::RunResult r{0, 99, {g0, g1}, 3.0, {0.25, -0.5}};
+  eval::RunResult r{0, 99, {g0, g1}, 3.0, {0.25, -0.5}, 1, 3, {}};
   rd.run_done(e.controllers[0], r);
 
   const auto settings = nlohmann::json::parse(slurp(dir / "settings.json"));

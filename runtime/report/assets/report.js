@@ -1,0 +1,368 @@
+// esc report: renders the data block of the page (runtime/report/html_report.cpp) with
+// Chart.js. Sets document.title to end in " (ready)" once every chart and the first
+// replay frame are drawn; errors are shown on the page (see the handler in the page).
+(function () {
+  'use strict';
+  const data = JSON.parse(document.getElementById('esc-data').textContent);
+  const root = document.getElementById('esc-report');
+  const palette = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#17becf', '#8c564b', '#e377c2',
+                   '#7f7f7f', '#bcbd22'];
+  const actionPalette = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#76b7b2', '#edc948', '#b07aa1', '#ff9da7',
+                         '#9c755f', '#bab0ac'];
+  Chart.defaults.animation = false;          // static plots: screenshots and printing show them whole
+  Chart.defaults.maintainAspectRatio = false;
+
+  function el(tag, attrs, children) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (k === 'text') e.textContent = v; else if (k === 'html') e.innerHTML = v; else e.setAttribute(k, v);
+    }
+    for (const c of children || []) e.appendChild(c);
+    return e;
+  }
+  function alpha(hex, a) {
+    const n = parseInt(hex.slice(1), 16);
+    return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${a})`;
+  }
+  function fmt(x, d) { return x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d); }
+  function fmtP(p) {
+    if (p === null || p === undefined) return '–';
+    return p < 1e-4 ? p.toExponential(1) : p.toFixed(4);
+  }
+  function meanSd(values) {
+    const n = values.length;
+    if (n === 0) return [NaN, NaN];
+    const m = values.reduce((a, b) => a + b, 0) / n;
+    const v = n > 1 ? values.reduce((a, b) => a + (b - m) * (b - m), 0) / (n - 1) : 0;
+    return [m, Math.sqrt(v)];
+  }
+  function quantile(sorted, q) {            // linear interpolation (numpy's default)
+    if (sorted.length === 0) return NaN;
+    const pos = (sorted.length - 1) * q;
+    const lo = Math.floor(pos), hi = Math.ceil(pos);
+    return sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo);
+  }
+  function chartCard(parent, title, note) {
+    const canvas = el('canvas');
+    const card = el('div', {class: 'card'}, [el('h3', {text: title}), el('div', {class: 'chart'}, [canvas])]);
+    if (note) card.appendChild(el('p', {class: 'note', text: note}));
+    parent.appendChild(card);
+    return canvas;
+  }
+
+  // Mean over runs, per generation, of one per-run series ("best" or "mean"), with +-sd.
+  function curves(controller, key) {
+    const runs = controller.runs;
+    const length = Math.max(0, ...runs.map(r => r[key].length));
+    const mean = [], lo = [], hi = [];
+    for (let g = 0; g < length; ++g) {
+      const [m, sd] = meanSd(runs.filter(r => g < r[key].length).map(r => r[key][g]));
+      mean.push(m); lo.push(m - sd); hi.push(m + sd);
+    }
+    return {mean, lo, hi, length};
+  }
+
+  function fitnessChart(parent, exp, key, title) {
+    const datasets = [];
+    let length = 0;
+    exp.controllers.forEach((c, i) => {
+      if (c.runs.length === 0) return;
+      const col = palette[i % palette.length];
+      const cv = curves(c, key);
+      length = Math.max(length, cv.length);
+      // The band: upper bound filled down to the lower bound (the next dataset).
+      datasets.push({label: `${c.name} +sd`, data: cv.hi, borderWidth: 0, pointRadius: 0, fill: '+1',
+                     backgroundColor: alpha(col, 0.15), escBand: true});
+      datasets.push({label: `${c.name} -sd`, data: cv.lo, borderWidth: 0, pointRadius: 0, fill: false,
+                     escBand: true});
+      datasets.push({label: c.name, data: cv.mean, borderColor: col, backgroundColor: col, borderWidth: 2,
+                     pointRadius: 0, fill: false});
+    });
+    const labels = Array.from({length}, (_, g) => g + 1);
+    return new Chart(chartCard(parent, title, 'Line: mean over runs; band: ± one standard deviation across runs.'), {
+      type: 'line',
+      data: {labels, datasets},
+      options: {
+        interaction: {mode: 'index', intersect: false},
+        plugins: {legend: {labels: {filter: item => !datasets[item.datasetIndex].escBand}},
+                  tooltip: {filter: item => !datasets[item.datasetIndex].escBand}},
+        scales: {x: {title: {display: true, text: 'generation'}}, y: {title: {display: true, text: 'fitness'}}},
+      },
+    });
+  }
+
+  // Box plot of the runs' best fitness: whisker (min..max) and box (Q1..Q3) as floating
+  // bars, the median as a line marker, every run as a dot.
+  function boxChart(parent, exp) {
+    const cs = exp.controllers.filter(c => c.runs.length > 0);
+    const labels = cs.map(c => c.name);
+    const whisker = [], box = [], median = [], dots = [];
+    cs.forEach(c => {
+      const v = c.runs.map(r => r.best_fitness).sort((a, b) => a - b);
+      whisker.push([v[0], v[v.length - 1]]);
+      box.push([quantile(v, 0.25), quantile(v, 0.75)]);
+      median.push({x: c.name, y: quantile(v, 0.5)});
+      v.forEach(y => dots.push({x: c.name, y}));
+    });
+    const colors = cs.map(c => palette[exp.controllers.indexOf(c) % palette.length]);
+    return new Chart(chartCard(parent, 'Best fitness of each run',
+                               'Box: quartiles; whiskers: lowest and highest run; bar: median; dots: runs.'), {
+      type: 'bar',
+      data: {
+        labels,
+        datasets: [
+          {label: 'range', data: whisker, backgroundColor: '#555', barPercentage: 0.03, categoryPercentage: 1, grouped: false},
+          {label: 'Q1–Q3', data: box, backgroundColor: colors.map(c => alpha(c, 0.35)), borderColor: colors,
+           borderWidth: 1.5, barPercentage: 0.5, categoryPercentage: 1, grouped: false},
+          {type: 'scatter', label: 'median', data: median, pointStyle: 'line', pointRadius: 28, borderWidth: 3,
+           borderColor: '#111', backgroundColor: '#111'},
+          {type: 'scatter', label: 'runs', data: dots, pointRadius: 3, backgroundColor: 'rgba(0,0,0,0.55)',
+           borderColor: 'rgba(0,0,0,0)'},
+        ],
+      },
+      options: {
+        plugins: {legend: {display: false}},
+        scales: {x: {type: 'category', labels}, y: {title: {display: true, text: 'best fitness'}}},
+      },
+    });
+  }
+
+  function statsTables(parent, exp) {
+    const card = el('div', {class: 'card'});
+    card.appendChild(el('h3', {text: 'Best fitness over runs'}));
+    const t = el('table');
+    t.appendChild(el('tr', {}, ['controller', 'runs', 'mean', 'sd', 'median', 'best', 'worst']
+      .map(h => el('th', {text: h}))));
+    for (const s of exp.stats.summary)
+      t.appendChild(el('tr', {}, [s.controller, String(s.n), fmt(s.mean, 2), fmt(s.sd, 2), fmt(s.median, 2),
+                                  fmt(s.best, 2), fmt(s.worst, 2)].map(v => el('td', {text: v}))));
+    card.appendChild(t);
+    if (exp.stats.pairs.length > 0) {
+      card.appendChild(el('h3', {text: 'Pairwise comparisons (two-sided)'}));
+      const p = el('table');
+      p.appendChild(el('tr', {}, ['pair', 'Welch t', 'df', 'Welch p', 'Mann-Whitney U', 'Mann-Whitney p']
+        .map(h => el('th', {text: h}))));
+      for (const r of exp.stats.pairs) {
+        const row = el('tr', {}, [el('td', {text: `${r.a} vs ${r.b}`}), el('td', {text: fmt(r.welch_t, 3)}),
+                                  el('td', {text: fmt(r.welch_df, 1)}), el('td', {text: fmtP(r.welch_p)}),
+                                  el('td', {text: fmt(r.mwu_u, 1)}), el('td', {text: fmtP(r.mwu_p)})]);
+        if (r.welch_p !== null && r.welch_p < 0.05) row.children[3].className = 'significant';
+        if (r.mwu_p !== null && r.mwu_p < 0.05) row.children[5].className = 'significant';
+        p.appendChild(row);
+      }
+      card.appendChild(p);
+      card.appendChild(el('p', {class: 'note', text:
+        'Welch: t-test with unequal variances. Mann-Whitney: normal approximation with tie and continuity ' +
+        'corrections. Bold: p < 0.05, uncorrected for multiple comparisons.'}));
+    }
+    parent.appendChild(card);
+  }
+
+  function usageChart(parent, c, color) {
+    // Fraction of the best evaluation's steps on which each behavior acted, mean over runs.
+    const fractions = c.actions.map((_, a) => meanSd(c.usage.map(u => {
+      const total = u.reduce((x, y) => x + y, 0);
+      return total > 0 ? u[a] / total : 0;
+    }))[0]);
+    return new Chart(chartCard(parent, `Behavior usage: ${c.name}`,
+                               'Share of control steps on which each behavior acted during the best evaluation ' +
+                               'of each run (mean over runs).'), {
+      type: 'bar',
+      data: {labels: c.actions, datasets: [{label: c.name, data: fractions.map(f => 100 * f),
+                                            backgroundColor: c.actions.map((_, i) => actionPalette[i % actionPalette.length])}]},
+      options: {plugins: {legend: {display: false}},
+                scales: {y: {min: 0, max: 100, title: {display: true, text: '% of steps'}}}},
+    });
+  }
+
+  // The replay: the arena drawn to scale, the trajectory so far, the robot with its
+  // heading and IR rays, and per step the IR readings, commands and acting behavior.
+  function replay(parent, exp) {
+    const withReplay = exp.controllers.filter(c => c.replay && c.replay.rows.length > 0);
+    if (withReplay.length === 0) return;
+    const card = el('div', {class: 'card'});
+    card.appendChild(el('h3', {text: 'Replay of the best controllers'}));
+    const select = el('select');
+    withReplay.forEach((c, i) => select.appendChild(el('option', {value: String(i), text: `${c.name} (run ${c.replay.run}, fitness ${fmt(c.replay.fitness, 2)})`})));
+    const play = el('button', {text: 'Pause'});
+    const slider = el('input', {type: 'range', min: '0', max: '0', value: '0'});
+    const speed = el('select');
+    [['1', '1x (real time)'], ['4', '4x'], ['16', '16x']].forEach(([v, t]) => speed.appendChild(el('option', {value: v, text: t})));
+    speed.value = '4';
+    const canvas = el('canvas', {class: 'arena', width: '560', height: '560'});
+    const action = el('span', {class: 'action'});
+    const readout = el('div', {class: 'readout'});
+    const irs = el('div', {class: 'irbars'});
+    const irFill = [], irText = [];
+    for (let i = 0; i < 8; ++i) {
+      const fill = el('div');
+      irFill.push(fill);
+      const text = el('span');
+      irText.push(text);
+      irs.appendChild(el('span', {text: `IR ${i}`}));
+      irs.appendChild(el('div', {class: 'irbar'}, [fill]));
+      irs.appendChild(text);
+    }
+    card.appendChild(el('div', {class: 'controls'}, [select, play, el('span', {text: 'speed'}), speed, slider]));
+    card.appendChild(el('div', {class: 'replay'}, [canvas, el('div', {}, [
+      el('div', {}, [el('span', {text: 'acting: '}), action]), el('h3', {text: 'IR sensors'}), irs,
+      el('h3', {text: 'State'}), readout])]));
+    const note = el('p', {class: 'note'});
+    card.appendChild(note);
+    parent.appendChild(card);
+
+    const arena = exp.arena;
+    const ctx = canvas.getContext('2d');
+    let c = withReplay[0], rows = c.replay.rows, index = 0, playing = true, last = null, carry = 0;
+    const margin = 12;
+    const scale = Math.min((canvas.width - 2 * margin) / (arena.width * 1000), (canvas.height - 2 * margin) / (arena.height * 1000));
+    canvas.height = Math.ceil(arena.height * 1000 * scale + 2 * margin);
+    const X = x => margin + x * scale;                               // mm -> px; y up in the arena
+    const Y = y => canvas.height - margin - y * scale;
+
+    function choose(i) {
+      c = withReplay[i];
+      rows = c.replay.rows;
+      index = 0;
+      slider.max = String(rows.length - 1);
+      const shown = rows.length < c.replay.total_steps ? `the first ${rows[rows.length - 1][0] + 1} of ${c.replay.total_epochs} epochs (${rows.length} of ${c.replay.total_steps} steps)` : `all ${c.replay.total_epochs} epochs (${rows.length} steps)`;
+      note.textContent = `Run ${c.replay.run}, evaluation seed ${c.replay.seed}: ${shown}. ` +
+        'Trajectory colored by the acting action or behavior (symbolic heads, supervisors); red marks: collisions.';
+      draw();
+    }
+    function draw() {
+      const r = rows[index];
+      const [epoch, step, x, y, heading, ir, left, right, act, fitness, collided] = r;
+      ctx.clearRect(0, 0, canvas.width, canvas.height);
+      ctx.fillStyle = '#fbfbf8';
+      ctx.fillRect(0, 0, canvas.width, canvas.height);
+      ctx.strokeStyle = '#333'; ctx.lineWidth = 3;
+      ctx.strokeRect(X(0), Y(arena.height * 1000), arena.width * 1000 * scale, arena.height * 1000 * scale);
+      ctx.fillStyle = '#8d96a8';
+      for (const cyl of arena.cylinders) {
+        ctx.beginPath(); ctx.arc(X(cyl.x * 1000), Y(cyl.y * 1000), cyl.radius * 1000 * scale, 0, 2 * Math.PI); ctx.fill();
+      }
+      for (const b of arena.boxes) {
+        ctx.save(); ctx.translate(X(b.x * 1000), Y(b.y * 1000)); ctx.rotate(-b.angle);
+        ctx.fillRect(-b.width * 500 * scale, -b.height * 500 * scale, b.width * 1000 * scale, b.height * 1000 * scale);
+        ctx.restore();
+      }
+      // Floor zones and lights; zones placed at random each epoch are not drawn (their
+      // position is not stored), nor the lights above them.
+      for (const z of arena.zones || []) {
+        if (z.random_position) continue;
+        ctx.fillStyle = z.recharge ? 'rgba(44,160,44,0.18)' : (z.visible ? 'rgba(60,60,60,0.18)' : 'rgba(60,60,60,0.06)');
+        ctx.strokeStyle = 'rgba(60,60,60,0.5)'; ctx.lineWidth = 1; ctx.setLineDash([4, 3]);
+        ctx.beginPath();
+        if (z.shape === 'circle') ctx.arc(X(z.x * 1000), Y(z.y * 1000), z.radius * 1000 * scale, 0, 2 * Math.PI);
+        else ctx.rect(X((z.x - z.width / 2) * 1000), Y((z.y + z.height / 2) * 1000), z.width * 1000 * scale, z.height * 1000 * scale);
+        ctx.fill(); ctx.stroke(); ctx.setLineDash([]);
+      }
+      for (const l of arena.lights || []) {
+        if (l.above_zone >= 0 && arena.zones[l.above_zone] && arena.zones[l.above_zone].random_position) continue;
+        const z = l.above_zone >= 0 ? arena.zones[l.above_zone] : l;
+        ctx.fillStyle = '#f2c12e'; ctx.strokeStyle = '#a67c00'; ctx.lineWidth = 1.5;
+        ctx.beginPath(); ctx.arc(X(z.x * 1000), Y(z.y * 1000), 7, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      }
+      // Trajectory of this epoch up to the current step.
+      let start = index;
+      while (start > 0 && rows[start - 1][0] === epoch) --start;
+      ctx.lineWidth = 2;
+      for (let i = start + 1; i <= index; ++i) {
+        const a = rows[i - 1], b = rows[i];
+        ctx.strokeStyle = b[8] >= 0 ? actionPalette[b[8] % actionPalette.length] : '#1f77b4';
+        ctx.beginPath(); ctx.moveTo(X(a[2]), Y(a[3])); ctx.lineTo(X(b[2]), Y(b[3])); ctx.stroke();
+      }
+      ctx.fillStyle = '#d62728';
+      for (let i = start; i <= index; ++i)
+        if (rows[i][10]) { ctx.beginPath(); ctx.arc(X(rows[i][2]), Y(rows[i][3]), 3, 0, 2 * Math.PI); ctx.fill(); }
+      // The robot, its heading and its 8 IR sensors (mount and facing angles from the simulator).
+      const rr = exp.robot_radius_mm;
+      ctx.fillStyle = collided ? 'rgba(214,39,40,0.35)' : 'rgba(31,119,180,0.25)';
+      ctx.strokeStyle = '#1d2330'; ctx.lineWidth = 1.5;
+      ctx.beginPath(); ctx.arc(X(x), Y(y), rr * scale, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      ctx.beginPath(); ctx.moveTo(X(x), Y(y));
+      ctx.lineTo(X(x + rr * Math.cos(heading)), Y(y + rr * Math.sin(heading))); ctx.stroke();
+      for (let i = 0; i < 8; ++i) {
+        const m = heading + exp.ir_mount_deg[i] * Math.PI / 180;    // where the sensor sits
+        const f = heading + exp.ir_facing_deg[i] * Math.PI / 180;   // where it looks
+        const sx = x + rr * Math.cos(m), sy = y + rr * Math.sin(m);
+        const len = 6 + 30 * ir[i];
+        ctx.strokeStyle = alpha('#d9822b', 0.25 + 0.75 * ir[i]); ctx.lineWidth = 2;
+        ctx.beginPath(); ctx.moveTo(X(sx), Y(sy));
+        ctx.lineTo(X(sx + len * Math.cos(f)), Y(sy + len * Math.sin(f))); ctx.stroke();
+      }
+      for (let i = 0; i < 8; ++i) {
+        irFill[i].style.width = `${Math.round(100 * ir[i])}%`;
+        irText[i].textContent = ir[i].toFixed(2);
+      }
+      action.textContent = act >= 0 ? (c.actions[act] || `action ${act}`) : 'wheels (classical head)';
+      action.style.background = act >= 0 ? alpha(actionPalette[act % actionPalette.length], 0.3) : '#e9eef8';
+      readout.textContent =
+        `epoch ${epoch + 1}, step ${step + 1}\n` +
+        `position  x ${x.toFixed(1)} mm  y ${y.toFixed(1)} mm  heading ${(heading * 180 / Math.PI).toFixed(0)} deg\n` +
+        `commands  left ${left.toFixed(2)}  right ${right.toFixed(2)}\n` +
+        `fitness so far  ${fitness.toFixed(3)}${collided ? '\ncollision' : ''}`;
+      slider.value = String(index);
+    }
+    function tick(time) {
+      if (playing && last !== null) {
+        carry += (time - last) / 100 * Number(speed.value);   // one control step is 100 ms
+        const n = Math.floor(carry);
+        if (n > 0) { carry -= n; index = (index + n) % rows.length; draw(); }
+      }
+      last = time;
+      requestAnimationFrame(tick);
+    }
+    select.addEventListener('change', () => choose(Number(select.value)));
+    play.addEventListener('click', () => { playing = !playing; play.textContent = playing ? 'Pause' : 'Play'; });
+    slider.addEventListener('input', () => { index = Number(slider.value); draw(); });
+    choose(0);
+    requestAnimationFrame(tick);
+  }
+
+  function render() {
+    root.innerHTML = '';
+    for (const exp of data.experiments) {
+      const section = el('section');
+      section.appendChild(el('h1', {text: `Experiment ${exp.name}`}));
+      const finished = exp.controllers.reduce((n, c) => n + c.runs.length, 0);
+      const unfinished = exp.controllers.reduce((n, c) => n + c.unfinished_runs, 0);
+      section.appendChild(el('p', {class: 'meta', text:
+        `${exp.controllers.length} controllers × ${exp.runs} runs × ${exp.generations} generations, ` +
+        `${exp.epochs} epochs × ${exp.steps} steps; seed ${exp.seed}; ${exp.status}` +
+        (exp.status !== 'finished' ? ` (${finished} runs finished, ${unfinished} in progress)` : '') +
+        `; script ${exp.script} (hash ${exp.content_hash}); esc ${exp.software_version}; started ${exp.created}`}));
+      section.appendChild(el('h2', {text: 'Fitness over generations'}));
+      const curvesGrid = el('div', {class: 'grid'});
+      section.appendChild(curvesGrid);
+      fitnessChart(curvesGrid, exp, 'best', 'Best fitness of the generation');
+      fitnessChart(curvesGrid, exp, 'mean', 'Mean fitness of the generation');
+      section.appendChild(el('h2', {text: 'Final results and statistics'}));
+      const statsGrid = el('div', {class: 'grid'});
+      section.appendChild(statsGrid);
+      boxChart(statsGrid, exp);
+      statsTables(statsGrid, exp);
+      const symbolic = exp.controllers.filter(c => c.actions.length > 0 && c.usage.length > 0);   // symbolic heads and supervisors
+      if (symbolic.length > 0) {
+        section.appendChild(el('h2', {text: 'Behavior usage'}));
+        const usageGrid = el('div', {class: 'grid'});
+        section.appendChild(usageGrid);
+        symbolic.forEach(c => usageChart(usageGrid, c, palette[exp.controllers.indexOf(c) % palette.length]));
+      }
+      section.appendChild(el('h2', {text: 'Replay'}));
+      replay(section, exp);
+      const settings = el('table');
+      settings.appendChild(el('tr', {}, [el('th', {text: 'setting'}), el('th', {text: 'value'})]));
+      for (const [k, v] of Object.entries(exp.settings))
+        settings.appendChild(el('tr', {}, [el('td', {text: k}), el('td', {text: v})]));
+      section.appendChild(el('h2', {text: 'Settings'}));
+      section.appendChild(el('div', {class: 'card'}, [settings]));
+      root.appendChild(section);
+    }
+    if (data.experiments.length === 0) root.appendChild(el('p', {text: 'No experiment stored.'}));
+  }
+
+  render();
+  if (window.escErrors.length === 0) document.title += ' (ready)';
+})();

@@ -1,0 +1,177 @@
+#include "runtime/report/html_report.hpp"
+
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "runtime/report/statistics.hpp"
+#include "runtime/sim/ir_sensor.hpp"
+
+extern const unsigned char esc_embed_chartjs[];
+extern const std::size_t esc_embed_chartjs_size;
+extern const unsigned char esc_embed_report_js[];
+extern const std::size_t esc_embed_report_js_size;
+extern const unsigned char esc_embed_report_css[];
+extern const std::size_t esc_embed_report_css_size;
+
+namespace esc::report {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::string_view embedded(const unsigned char* data, std::size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+// Rounds to `digits` decimals, so the page carries no meaningless digits.
+double round_to(double x, int digits) {
+  const double f = std::pow(10.0, digits);
+  return std::round(x * f) / f;
+}
+
+// A number or null (JSON has no NaN).
+json number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json replay_json(const store::StoredController& c, const ReportOptions& o) {
+  if (!c.replay) return nullptr;
+  const auto& steps = c.replay->steps;
+  // Whole epochs while they fit, at least the first epoch's beginning.
+  std::size_t keep = std::min(steps.size(), o.max_replay_steps);
+  if (keep < steps.size() && keep > 0) {
+    const int last_epoch = steps[keep].epoch;
+    std::size_t cut = keep;
+    while (cut > 0 && steps[cut - 1].epoch == last_epoch) --cut;
+    if (cut > 0) keep = cut;
+  }
+  json rows = json::array();
+  for (std::size_t i = 0; i < keep; ++i) {
+    const eval::TraceStep& t = steps[i];
+    json ir = json::array();
+    for (double v : t.ir) ir.push_back(round_to(v, 3));
+    rows.push_back({t.epoch, t.step, round_to(t.pose.x_m * 1000.0, 1), round_to(t.pose.y_m * 1000.0, 1),
+                    round_to(t.pose.heading_rad, 3), ir, round_to(t.left_command, 3), round_to(t.right_command, 3),
+                    t.action, round_to(t.fitness, 4), t.collided ? 1 : 0});
+  }
+  int epochs = steps.empty() ? 0 : steps.back().epoch + 1;
+  return {{"run", c.replay->run + 1},
+          {"seed", std::to_string(c.replay->seed)},
+          {"fitness", c.replay->fitness},
+          {"total_steps", steps.size()},
+          {"total_epochs", epochs},
+          {"columns", {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided"}},
+          {"rows", rows}};
+}
+
+json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
+  json controllers = json::array();
+  std::vector<std::vector<double>> finals;
+  json summary = json::array();
+  for (const store::StoredController& c : e.controllers) {
+    json runs = json::array();
+    std::vector<double> final_best;
+    json usage = json::array();
+    for (const auto& r : c.finished) {
+      json best = json::array();
+      json mean = json::array();
+      for (const auto& g : r.generations) {
+        best.push_back(g.best);
+        mean.push_back(g.mean);
+      }
+      runs.push_back({{"run", r.run + 1}, {"best_fitness", r.best_fitness}, {"best", best}, {"mean", mean}});
+      final_best.push_back(r.best_fitness);
+      if (!r.action_usage.empty()) usage.push_back(r.action_usage);
+    }
+    const Summary s = summarise(final_best);
+    summary.push_back({{"controller", c.name}, {"n", s.n}, {"mean", number(s.mean)}, {"sd", number(s.sd)},
+                       {"median", number(s.median)}, {"best", number(s.max)}, {"worst", number(s.min)}});
+    finals.push_back(std::move(final_best));
+    controllers.push_back({{"name", c.name}, {"architecture", c.architecture}, {"genome_size", c.genome_size},
+                           {"head", c.head}, {"actions", c.actions}, {"runs", runs},
+                           {"unfinished_runs", c.in_progress.size()}, {"usage", usage},
+                           {"replay", replay_json(c, o)}});
+  }
+  json pairs = json::array();
+  for (std::size_t i = 0; i < e.controllers.size(); ++i)
+    for (std::size_t j = i + 1; j < e.controllers.size(); ++j) {
+      const TestResult w = welch_t_test(finals[i], finals[j]);
+      const TestResult m = mann_whitney_u(finals[i], finals[j]);
+      pairs.push_back({{"a", e.controllers[i].name}, {"b", e.controllers[j].name}, {"welch_t", number(w.statistic)},
+                       {"welch_df", number(w.df)}, {"welch_p", number(w.p_value)}, {"mwu_u", number(m.statistic)},
+                       {"mwu_p", number(m.p_value)}});
+    }
+  return {{"name", e.name},
+          {"seed", std::to_string(e.seed)},
+          {"status", e.status},
+          {"created", e.created},
+          {"software_version", e.software_version},
+          {"content_hash", e.content_hash},
+          {"script", e.script.generic_string()},
+          {"settings", json(e.settings)},
+          {"runs", e.runs},
+          {"generations", e.generations},
+          {"epochs", e.epochs},
+          {"steps", e.steps},
+          {"arena", e.arena},
+          {"robot_radius_mm", e.robot_radius_m * 1000.0},
+          {"ir_mount_deg", sim::kIrMountDeg},
+          {"ir_facing_deg", sim::kIrFacingDeg},
+          {"controllers", controllers},
+          {"stats", {{"summary", summary}, {"pairs", pairs}}}};
+}
+
+std::string html_escape(std::string_view s) {
+  std::string out;
+  for (char ch : s) {
+    switch (ch) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += ch;
+    }
+  }
+  return out;
+}
+
+// JSON inside <script>: "</" would end the element early.
+std::string script_safe(std::string s) {
+  for (std::size_t i = 0; (i = s.find("</", i)) != std::string::npos; i += 3) s.replace(i, 2, "<\\/");
+  return s;
+}
+
+}  // namespace
+
+json report_data(const std::vector<store::StoredExperiment>& experiments, const ReportOptions& options) {
+  json exps = json::array();
+  for (const auto& e : experiments) exps.push_back(experiment_json(e, options));
+  return {{"experiments", exps}};
+}
+
+std::string html_report(const std::vector<store::StoredExperiment>& experiments, const ReportOptions& options) {
+  std::string title = "esc report";
+  if (!experiments.empty()) title += ": " + experiments.front().name;
+  std::string page;
+  page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  page += fmt::format("<title>{}</title>\n<style>\n", html_escape(title));
+  page += embedded(esc_embed_report_css, esc_embed_report_css_size);
+  page += "</style>\n</head>\n<body>\n";
+  // Installed first, so that an error anywhere below, Chart.js included, shows on the page.
+  page += "<script>window.escErrors=[];window.addEventListener('error',function(e){"
+          "window.escErrors.push(String(e.message));var d=document.getElementById('esc-errors');"
+          "if(d){var p=document.createElement('p');p.className='esc-error';p.textContent='Script error: '+e.message;"
+          "d.appendChild(p);}document.title=document.title.replace(' (ready)','')+' (script error)';});</script>\n";
+  page += "<div id=\"esc-errors\"></div>\n<main id=\"esc-report\"><p>Loading the report&hellip;</p></main>\n";
+  page += "<script id=\"esc-data\" type=\"application/json\">";
+  page += script_safe(report_data(experiments, options).dump());
+  page += "</script>\n<script>\n";
+  page += embedded(esc_embed_chartjs, esc_embed_chartjs_size);
+  page += "\n</script>\n<script>\n";
+  page += embedded(esc_embed_report_js, esc_embed_report_js_size);
+  page += "\n</script>\n</body>\n</html>\n";
+  return page;
+}
+
+}  // namespace esc::report

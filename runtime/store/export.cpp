@@ -1,0 +1,78 @@
+#include "runtime/store/export.hpp"
+
+#include <fmt/format.h>
+
+namespace esc::store {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json generations_json(const std::vector<eval::GenerationStats>& gens) {
+  json a = json::array();
+  for (const auto& g : gens)
+    a.push_back({{"generation", g.generation}, {"best", g.best}, {"mean", g.mean}, {"sd", g.sd},
+                 {"evaluations", g.evaluations}, {"steps", g.steps}, {"seconds", g.seconds}});
+  return a;
+}
+
+json run_json(const StoredController& c, const eval::RunResult& r) {
+  json usage = json::object();
+  for (std::size_t i = 0; i < r.action_usage.size(); ++i)
+    usage[i < c.actions.size() ? c.actions[i] : fmt::format("action{}", i)] = r.action_usage[i];
+  return {{"run", r.run + 1}, {"seed", r.seed}, {"status", "finished"}, {"best_fitness", r.best_fitness},
+          {"best_generation", r.best_generation}, {"best_index", r.best_index}, {"best_genome", r.best_genome},
+          {"behavior_usage", usage}, {"generations", generations_json(r.generations)}};
+}
+
+json run_json(const eval::RunState& s) {
+  json j = {{"run", s.run + 1}, {"seed", s.seed}, {"status", "running"}};
+  if (s.has_best) {
+    j["best_fitness"] = s.best_fitness;
+    j["best_genome"] = s.best_genome;
+  }
+  j["generations"] = generations_json(s.generations);
+  return j;
+}
+
+}  // namespace
+
+json export_json(const std::vector<StoredExperiment>& experiments) {
+  json exps = json::array();
+  for (const StoredExperiment& e : experiments) {
+    json sources = json::array();
+    for (const auto& s : e.sources) sources.push_back({{"name", s.name.generic_string()}, {"text", s.text}});
+    json controllers = json::object();
+    for (const StoredController& c : e.controllers) {
+      json runs = json::array();
+      for (const auto& r : c.finished) runs.push_back(run_json(c, r));
+      for (const auto& s : c.in_progress) runs.push_back(run_json(s));
+      controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size}, {"head", c.head},
+                             {"actions", c.actions}, {"runs", runs}};
+    }
+    exps.push_back({{"name", e.name}, {"seed", e.seed}, {"content_hash", e.content_hash}, {"status", e.status},
+                    {"created", e.created}, {"software_version", e.software_version},
+                    {"script", e.script.generic_string()}, {"overrides", e.overrides}, {"settings", json(e.settings)},
+                    {"arena", e.arena}, {"runs", e.runs}, {"generations", e.generations}, {"epochs", e.epochs},
+                    {"steps", e.steps}, {"sources", sources}, {"controllers", controllers}});
+  }
+  return {{"format", "esc results"}, {"schema_version", kSchemaVersion}, {"experiments", exps}};
+}
+
+std::string export_csv(const std::vector<StoredExperiment>& experiments) {
+  std::string out = "experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,seconds\n";
+  auto rows = [&](const std::string& exp, const std::string& ctl, int run, std::uint64_t seed, const char* status,
+                  const std::vector<eval::GenerationStats>& gens) {
+    for (const auto& g : gens)
+      out += fmt::format("{},{},{},{},{},{},{:.17g},{:.17g},{:.17g},{},{},{:.3f}\n", exp, ctl, run + 1, seed, status,
+                         g.generation, g.best, g.mean, g.sd, g.evaluations, g.steps, g.seconds);
+  };
+  for (const StoredExperiment& e : experiments)
+    for (const StoredController& c : e.controllers) {
+      for (const auto& r : c.finished) rows(e.name, c.name, r.run, r.seed, "finished", r.generations);
+      for (const auto& s : c.in_progress) rows(e.name, c.name, s.run, s.seed, "running", s.generations);
+    }
+  return out;
+}
+
+}  // namespace esc::store

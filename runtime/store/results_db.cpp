@@ -1,0 +1,578 @@
+#include "runtime/store/results_db.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+
+#include <fmt/format.h>
+
+#include "runtime/store/run_directory.hpp"
+
+namespace esc::store {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kSchema = R"sql(
+CREATE TABLE meta (
+  key   TEXT PRIMARY KEY,
+  value TEXT NOT NULL
+);
+CREATE TABLE experiments (
+  id               INTEGER PRIMARY KEY,
+  name             TEXT NOT NULL,
+  seed             TEXT NOT NULL,
+  content_hash     TEXT NOT NULL,
+  status           TEXT NOT NULL CHECK (status IN ('running', 'finished')),
+  created          TEXT NOT NULL,
+  software_version TEXT NOT NULL,
+  script_path      TEXT NOT NULL,
+  overrides        TEXT NOT NULL,
+  arena            TEXT NOT NULL,
+  robot_radius_m   REAL NOT NULL,
+  runs             INTEGER NOT NULL,
+  generations      INTEGER NOT NULL,
+  epochs           INTEGER NOT NULL,
+  steps            INTEGER NOT NULL
+);
+CREATE TABLE sources (
+  experiment_id INTEGER NOT NULL REFERENCES experiments(id),
+  idx           INTEGER NOT NULL,
+  name          TEXT NOT NULL,
+  text          TEXT NOT NULL,
+  PRIMARY KEY (experiment_id, idx)
+);
+CREATE TABLE settings (
+  experiment_id INTEGER NOT NULL REFERENCES experiments(id),
+  key           TEXT NOT NULL,
+  value         TEXT NOT NULL,
+  PRIMARY KEY (experiment_id, key)
+);
+CREATE TABLE controllers (
+  id            INTEGER PRIMARY KEY,
+  experiment_id INTEGER NOT NULL REFERENCES experiments(id),
+  idx           INTEGER NOT NULL,
+  name          TEXT NOT NULL,
+  architecture  TEXT NOT NULL,
+  genome_size   INTEGER NOT NULL,
+  head          TEXT NOT NULL,
+  actions       TEXT NOT NULL,
+  UNIQUE (experiment_id, name)
+);
+CREATE TABLE runs (
+  controller_id    INTEGER NOT NULL REFERENCES controllers(id),
+  run              INTEGER NOT NULL,
+  seed             TEXT NOT NULL,
+  status           TEXT NOT NULL CHECK (status IN ('running', 'finished')),
+  generations_done INTEGER NOT NULL,
+  best_fitness     REAL,
+  best_generation  INTEGER,
+  best_index       INTEGER,
+  best_genome      BLOB,
+  best_tree        TEXT,
+  PRIMARY KEY (controller_id, run)
+);
+CREATE TABLE generations (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  generation    INTEGER NOT NULL,
+  best          REAL NOT NULL,
+  mean          REAL NOT NULL,
+  sd            REAL NOT NULL,
+  evaluations   INTEGER NOT NULL,
+  steps         INTEGER NOT NULL,
+  seconds       REAL NOT NULL,
+  PRIMARY KEY (controller_id, run, generation)
+);
+CREATE TABLE run_state (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  parents       INTEGER NOT NULL,
+  genome_size   INTEGER NOT NULL,
+  sigma_count   INTEGER NOT NULL,
+  population    BLOB NOT NULL,
+  PRIMARY KEY (controller_id, run)
+);
+CREATE TABLE behavior_usage (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  action_idx    INTEGER NOT NULL,
+  action        TEXT NOT NULL,
+  steps         INTEGER NOT NULL,
+  PRIMARY KEY (controller_id, run, action_idx)
+);
+CREATE TABLE replays (
+  controller_id INTEGER PRIMARY KEY REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  seed          TEXT NOT NULL,
+  fitness       REAL NOT NULL,
+  columns       TEXT NOT NULL,
+  trace         BLOB NOT NULL
+);
+)sql";
+
+std::string now_utc() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+std::uint64_t parse_u64(const std::string& s, const char* what) {
+  try {
+    std::size_t used = 0;
+    const unsigned long long v = std::stoull(s, &used);
+    if (used != s.size()) throw std::invalid_argument(s);
+    return v;
+  } catch (const std::exception&) {
+    throw StoreError(fmt::format("the database is damaged: {} `{}` is not a number", what, s));
+  }
+}
+
+const char* head_name(control::Head h) {
+  switch (h) {
+    case control::Head::Classical: return "classical";
+    case control::Head::Symbolic: return "symbolic";
+    case control::Head::Supervisor: return "supervisor";
+  }
+  return "unknown";
+}
+
+nlohmann::ordered_json arena_json(const sim::ArenaSpec& a) {
+  nlohmann::ordered_json boxes = nlohmann::ordered_json::array();
+  for (const auto& b : a.boxes)
+    boxes.push_back({{"x", b.center_m.x}, {"y", b.center_m.y}, {"width", b.size_m.x}, {"height", b.size_m.y},
+                     {"angle", b.angle_rad}});
+  nlohmann::ordered_json cylinders = nlohmann::ordered_json::array();
+  for (const auto& c : a.cylinders)
+    cylinders.push_back({{"x", c.center_m.x}, {"y", c.center_m.y}, {"radius", c.radius_m}});
+  nlohmann::ordered_json lights = nlohmann::ordered_json::array();
+  for (const auto& l : a.lights)
+    lights.push_back({{"x", l.position_m.x}, {"y", l.position_m.y}, {"above_zone", l.above_zone}});
+  nlohmann::ordered_json zones = nlohmann::ordered_json::array();
+  for (const auto& z : a.zones)
+    zones.push_back({{"shape", z.shape == sim::ZoneShape::Circle ? "circle" : "rectangle"}, {"x", z.center_m.x},
+                     {"y", z.center_m.y}, {"radius", z.radius_m}, {"width", z.size_m.x}, {"height", z.size_m.y},
+                     {"visible", z.visible}, {"random_position", z.random_position}, {"recharge", z.recharge}});
+  return {{"width", a.width_m}, {"height", a.height_m}, {"boxes", boxes}, {"cylinders", cylinders},
+          {"lights", lights}, {"zones", zones}};
+}
+
+std::vector<double> pack_population(const std::vector<evo::Individual>& pop, std::size_t genome_size,
+                                    std::size_t sigma_count) {
+  std::vector<double> v;
+  v.reserve(pop.size() * (1 + genome_size + sigma_count));
+  for (const auto& ind : pop) {
+    v.push_back(ind.fitness);
+    v.insert(v.end(), ind.genes.begin(), ind.genes.end());
+    v.insert(v.end(), ind.sigmas.begin(), ind.sigmas.end());
+  }
+  return v;
+}
+
+std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
+  std::vector<double> v;
+  v.reserve(trace.size() * kTraceColumns);
+  for (const auto& t : trace) {
+    v.push_back(t.epoch);
+    v.push_back(t.step);
+    v.push_back(t.pose.x_m);
+    v.push_back(t.pose.y_m);
+    v.push_back(t.pose.heading_rad);
+    v.insert(v.end(), t.ir.begin(), t.ir.end());
+    v.push_back(t.left_command);
+    v.push_back(t.right_command);
+    v.push_back(t.left_speed_mps);
+    v.push_back(t.right_speed_mps);
+    v.push_back(t.action);
+    v.push_back(t.fitness);
+    v.push_back(t.collided ? 1.0 : 0.0);
+  }
+  return v;
+}
+
+std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v) {
+  if (v.size() % kTraceColumns != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
+  std::vector<eval::TraceStep> out(v.size() / kTraceColumns);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double* r = &v[i * kTraceColumns];
+    eval::TraceStep& t = out[i];
+    t.epoch = static_cast<int>(r[0]);
+    t.step = static_cast<int>(r[1]);
+    t.pose = {r[2], r[3], r[4]};
+    for (std::size_t k = 0; k < t.ir.size(); ++k) t.ir[k] = r[5 + k];
+    t.left_command = r[13];
+    t.right_command = r[14];
+    t.left_speed_mps = r[15];
+    t.right_speed_mps = r[16];
+    t.action = static_cast<int>(r[17]);
+    t.fitness = r[18];
+    t.collided = r[19] != 0.0;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> trace_column_names() {
+  std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
+  for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
+  for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", "fitness", "collided"})
+    c.emplace_back(n);
+  return c;
+}
+
+std::string campaign_hash(std::string_view experiment, const std::vector<SourceFile>& sources) {
+  // File names without their directories, in name order: the same script run as `a.esc` or
+  // as `/x/a.esc` (as `esc run --resume` does, from the stored absolute path) is the same
+  // campaign, whatever order the compiler listed its files in.
+  std::vector<std::pair<std::string, std::string_view>> files;
+  for (const SourceFile& s : sources) files.emplace_back(s.name.filename().generic_string(), s.text);
+  std::sort(files.begin(), files.end());
+  std::uint64_t h = content_hash(experiment);
+  for (const auto& [name, text] : files) h = content_hash(text, content_hash(name, h));
+  return fmt::format("{:016x}", h);
+}
+
+ResultsDb::ResultsDb(sql::Database db, fs::path file) : db_(std::move(db)), file_(std::move(file)) {}
+
+ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spec,
+                            const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
+  const fs::path file = dir / kDatabaseFile;
+  if (fs::exists(file)) throw StoreError(fmt::format("{} already exists; results are never overwritten", file.string()));
+  ResultsDb r(sql::Database(file, sql::Database::Mode::Create), file);
+  sql::Database& db = r.db_;
+  // WAL: a commit is one append to the log, atomic after a crash; synchronous=FULL makes it
+  // durable across power loss too (one fsync per generation costs nothing here).
+  db.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+  db.exec(fmt::format("PRAGMA application_id={}; PRAGMA user_version={};", kApplicationId, kSchemaVersion));
+  sql::Transaction tx(db);
+  db.exec(kSchema);
+  auto meta = db.prepare("INSERT INTO meta(key, value) VALUES (?, ?)");
+  meta.bind(1, "format").bind(2, "esc results").run();
+  meta.bind(1, "schema_version").bind(2, std::to_string(kSchemaVersion)).run();
+  meta.bind(1, "software_version").bind(2, launch.software_version).run();
+
+  auto ins = db.prepare(
+      "INSERT INTO experiments(name, seed, content_hash, status, created, software_version, script_path, "
+      "overrides, arena, robot_radius_m, runs, generations, epochs, steps) "
+      "VALUES (?, ?, ?, 'running', ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  ins.bind(1, spec.name)
+      .bind(2, std::to_string(spec.seed))
+      .bind(3, campaign_hash(spec.name, sources))
+      .bind(4, now_utc())
+      .bind(5, launch.software_version)
+      .bind(6, launch.script.generic_string())
+      .bind(7, launch.overrides.dump())
+      .bind(8, arena_json(spec.arena).dump())
+      .bind(9, spec.robot.body_radius_m)
+      .bind(10, spec.runs)
+      .bind(11, spec.es.generations)
+      .bind(12, spec.epochs)
+      .bind(13, spec.steps)
+      .run();
+  r.experiment_id_ = db.last_insert_rowid();
+
+  auto src = db.prepare("INSERT INTO sources(experiment_id, idx, name, text) VALUES (?, ?, ?, ?)");
+  for (std::size_t i = 0; i < sources.size(); ++i)
+    src.bind(1, r.experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, sources[i].name.generic_string())
+        .bind(4, sources[i].text).run();
+  auto set = db.prepare("INSERT INTO settings(experiment_id, key, value) VALUES (?, ?, ?)");
+  for (const auto& [k, v] : spec.resolved_settings) set.bind(1, r.experiment_id_).bind(2, k).bind(3, v).run();
+  auto ctl = db.prepare(
+      "INSERT INTO controllers(experiment_id, idx, name, architecture, genome_size, head, actions) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < spec.controllers.size(); ++i) {
+    const control::ControllerSpec& c = spec.controllers[i];
+    const nlohmann::json actions = c.choice_names();
+    ctl.bind(1, r.experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, c.name).bind(4, c.architecture())
+        .bind(5, static_cast<std::int64_t>(c.genome_size()))
+        .bind(6, head_name(c.head))
+        .bind(7, actions.dump())
+        .run();
+    r.controller_ids_[c.name] = db.last_insert_rowid();
+  }
+  tx.commit();
+  return r;
+}
+
+ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw StoreError(fmt::format("`{}` is not a directory", dir.string()));
+  const fs::path file = dir / kDatabaseFile;
+  if (!fs::is_regular_file(file, ec))
+    throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
+  try {
+    ResultsDb r(sql::Database(file, read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite), file);
+    auto id = r.db_.prepare("PRAGMA application_id");
+    const std::int64_t app = id.step() ? id.int64(0) : 0;
+    if (app != kApplicationId)
+      throw StoreError(fmt::format("{} is an SQLite database but not one written by esc", file.string()));
+    auto ver = r.db_.prepare("PRAGMA user_version");
+    const std::int64_t version = ver.step() ? ver.int64(0) : 0;
+    if (version > kSchemaVersion)
+      throw StoreError(fmt::format("{} was written by a newer esc (schema {}; this esc reads up to {})",
+                                   file.string(), version, kSchemaVersion));
+    auto check = r.db_.prepare("PRAGMA quick_check");
+    const std::string verdict = check.step() ? check.text(0) : "no answer";
+    if (verdict != "ok") throw StoreError(fmt::format("{} is damaged: {}", file.string(), verdict));
+    if (!read_only) r.db_.exec("PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+    auto ex = r.db_.prepare("SELECT id FROM experiments ORDER BY id LIMIT 1");
+    if (!ex.step())
+      throw StoreError(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
+    r.experiment_id_ = ex.int64(0);
+    auto ctl = r.db_.prepare("SELECT id, name FROM controllers WHERE experiment_id = ?");
+    ctl.bind(1, r.experiment_id_);
+    while (ctl.step()) r.controller_ids_[ctl.text(1)] = ctl.int64(0);
+    return r;
+  } catch (const sql::SqliteError& e) {
+    throw StoreError(fmt::format("{} is damaged or not an esc database: {}", file.string(), e.what()));
+  }
+}
+
+std::int64_t ResultsDb::controller_id(const std::string& name) {
+  const auto it = controller_ids_.find(name);
+  if (it == controller_ids_.end()) throw StoreError(fmt::format("the database has no controller `{}`", name));
+  return it->second;
+}
+
+void ResultsDb::commit_generation(const std::string& controller, const eval::RunState& st) {
+  const std::int64_t cid = controller_id(controller);
+  const eval::GenerationStats& g = st.generations.back();
+  sql::Transaction tx(db_);
+  db_.prepare(
+         "INSERT INTO generations(controller_id, run, generation, best, mean, sd, evaluations, steps, seconds) "
+         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)")
+      .bind(1, cid).bind(2, st.run).bind(3, g.generation).bind(4, g.best).bind(5, g.mean).bind(6, g.sd)
+      .bind(7, g.evaluations).bind(8, g.steps).bind(9, g.seconds)
+      .run();
+  auto run = db_.prepare(
+      "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
+      "best_generation, best_index, best_genome) VALUES (?, ?, ?, 'running', ?, ?, ?, ?, ?)");
+  run.bind(1, cid).bind(2, st.run).bind(3, std::to_string(st.seed)).bind(4, static_cast<std::int64_t>(st.generations.size()));
+  if (st.has_best)
+    run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
+  run.run();
+  const std::size_t genome_size = st.parents.empty() ? 0 : st.parents.front().genes.size();
+  const std::size_t sigma_count = st.parents.empty() ? 0 : st.parents.front().sigmas.size();
+  db_.prepare(
+         "INSERT OR REPLACE INTO run_state(controller_id, run, parents, genome_size, sigma_count, population) "
+         "VALUES (?, ?, ?, ?, ?, ?)")
+      .bind(1, cid).bind(2, st.run).bind(3, static_cast<std::int64_t>(st.parents.size()))
+      .bind(4, static_cast<std::int64_t>(genome_size)).bind(5, static_cast<std::int64_t>(sigma_count))
+      .bind_blob(6, pack_population(st.parents, genome_size, sigma_count))
+      .run();
+  tx.commit();
+}
+
+void ResultsDb::commit_replay(const std::string& controller, const eval::RunResult& run,
+                              std::span<const eval::TraceStep> trace) {
+  const std::int64_t cid = controller_id(controller);
+  const std::uint64_t seed = eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
+  nlohmann::json columns = trace_column_names();
+  sql::Transaction tx(db_);
+  // One replay per controller: its best run's (the earliest run on a tie). Replaying the
+  // same run again (after a resume) rewrites the same row.
+  db_.prepare(
+         "INSERT INTO replays(controller_id, run, seed, fitness, columns, trace) VALUES (?, ?, ?, ?, ?, ?) "
+         "ON CONFLICT(controller_id) DO UPDATE SET run = excluded.run, seed = excluded.seed, "
+         "fitness = excluded.fitness, columns = excluded.columns, trace = excluded.trace "
+         "WHERE excluded.fitness > replays.fitness OR excluded.run = replays.run")
+      .bind(1, cid).bind(2, run.run).bind(3, std::to_string(seed)).bind(4, run.best_fitness).bind(5, columns.dump())
+      .bind_blob(6, pack_trace(trace))
+      .run();
+  tx.commit();
+}
+
+void ResultsDb::commit_run(const std::string& controller, const eval::RunResult& run) {
+  const std::int64_t cid = controller_id(controller);
+  std::vector<std::string> actions;
+  {
+    auto q = db_.prepare("SELECT actions FROM controllers WHERE id = ?");
+    q.bind(1, cid);
+    if (q.step()) actions = nlohmann::json::parse(q.text(0)).get<std::vector<std::string>>();
+  }
+  sql::Transaction tx(db_);
+  db_.prepare(
+         "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
+         "best_generation, best_index, best_genome) VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?)")
+      .bind(1, cid).bind(2, run.run).bind(3, std::to_string(run.seed))
+      .bind(4, static_cast<std::int64_t>(run.generations.size())).bind(5, run.best_fitness)
+      .bind(6, run.best_generation).bind(7, run.best_index).bind_blob(8, run.best_genome)
+      .run();
+  db_.prepare("DELETE FROM run_state WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
+  db_.prepare("DELETE FROM behavior_usage WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
+  auto use = db_.prepare(
+      "INSERT INTO behavior_usage(controller_id, run, action_idx, action, steps) VALUES (?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < run.action_usage.size(); ++i)
+    use.bind(1, cid).bind(2, run.run).bind(3, static_cast<std::int64_t>(i))
+        .bind(4, i < actions.size() ? actions[i] : fmt::format("action{}", i)).bind(5, run.action_usage[i])
+        .run();
+  tx.commit();
+}
+
+void ResultsDb::mark_finished() {
+  db_.prepare("UPDATE experiments SET status = 'finished' WHERE id = ?").bind(1, experiment_id_).run();
+}
+
+std::vector<StoredExperiment> ResultsDb::load() {
+  try {
+    std::vector<StoredExperiment> out;
+    auto ex = db_.prepare(
+        "SELECT id, name, seed, content_hash, status, created, software_version, script_path, overrides, arena, "
+        "robot_radius_m, runs, generations, epochs, steps FROM experiments ORDER BY id");
+    while (ex.step()) {
+      StoredExperiment e;
+      e.id = ex.int64(0);
+      e.name = ex.text(1);
+      e.seed = parse_u64(ex.text(2), "experiment seed");
+      e.content_hash = ex.text(3);
+      e.status = ex.text(4);
+      e.created = ex.text(5);
+      e.software_version = ex.text(6);
+      e.script = ex.text(7);
+      e.overrides = nlohmann::ordered_json::parse(ex.text(8));
+      e.arena = nlohmann::ordered_json::parse(ex.text(9));
+      e.robot_radius_m = ex.real(10);
+      e.runs = ex.integer(11);
+      e.generations = ex.integer(12);
+      e.epochs = ex.integer(13);
+      e.steps = ex.integer(14);
+      out.push_back(std::move(e));
+    }
+    for (StoredExperiment& e : out) {
+      auto src = db_.prepare("SELECT name, text FROM sources WHERE experiment_id = ? ORDER BY idx");
+      src.bind(1, e.id);
+      while (src.step()) e.sources.push_back({src.text(0), src.text(1)});
+      auto set = db_.prepare("SELECT key, value FROM settings WHERE experiment_id = ?");
+      set.bind(1, e.id);
+      while (set.step()) e.settings[set.text(0)] = set.text(1);
+      auto ctl = db_.prepare(
+          "SELECT id, name, architecture, genome_size, head, actions FROM controllers WHERE experiment_id = ? "
+          "ORDER BY idx");
+      ctl.bind(1, e.id);
+      while (ctl.step()) {
+        StoredController c;
+        c.id = ctl.int64(0);
+        c.name = ctl.text(1);
+        c.architecture = ctl.text(2);
+        c.genome_size = static_cast<std::size_t>(ctl.int64(3));
+        c.head = ctl.text(4);
+        c.actions = nlohmann::json::parse(ctl.text(5)).get<std::vector<std::string>>();
+        e.controllers.push_back(std::move(c));
+      }
+      for (StoredController& c : e.controllers) {
+        auto runs = db_.prepare(
+            "SELECT run, seed, status, generations_done, best_fitness, best_generation, best_index, best_genome "
+            "FROM runs WHERE controller_id = ? ORDER BY run");
+        runs.bind(1, c.id);
+        while (runs.step()) {
+          const int run = runs.integer(0);
+          std::vector<eval::GenerationStats> gens;
+          auto g = db_.prepare(
+              "SELECT generation, best, mean, sd, evaluations, steps, seconds FROM generations "
+              "WHERE controller_id = ? AND run = ? ORDER BY generation");
+          g.bind(1, c.id).bind(2, run);
+          while (g.step())
+            gens.push_back({g.integer(0), g.real(1), g.real(2), g.real(3), g.int64(4), g.int64(5), g.real(6)});
+          const auto done = static_cast<std::size_t>(runs.int64(3));
+          bool contiguous = gens.size() == done;
+          for (std::size_t i = 0; contiguous && i < gens.size(); ++i) contiguous = gens[i].generation == static_cast<int>(i);
+          if (!contiguous)
+            throw StoreError(fmt::format("{} is damaged: run {} of {} has {} generations stored, {} expected",
+                                         file_.string(), run + 1, c.name, gens.size(), done));
+          const bool has_best = !runs.is_null(4);
+          if (runs.text(2) == "finished") {
+            eval::RunResult r;
+            r.run = run;
+            r.seed = parse_u64(runs.text(1), "run seed");
+            r.generations = std::move(gens);
+            r.best_fitness = runs.real(4);
+            r.best_generation = runs.integer(5);
+            r.best_index = runs.integer(6);
+            r.best_genome = runs.doubles(7);
+            auto u = db_.prepare("SELECT steps FROM behavior_usage WHERE controller_id = ? AND run = ? ORDER BY action_idx");
+            u.bind(1, c.id).bind(2, run);
+            while (u.step()) r.action_usage.push_back(u.int64(0));
+            c.finished.push_back(std::move(r));
+          } else {
+            eval::RunState s;
+            s.run = run;
+            s.seed = parse_u64(runs.text(1), "run seed");
+            s.generations = std::move(gens);
+            s.has_best = has_best;
+            if (has_best) {
+              s.best_fitness = runs.real(4);
+              s.best_generation = runs.integer(5);
+              s.best_index = runs.integer(6);
+              s.best_genome = runs.doubles(7);
+            }
+            auto st = db_.prepare(
+                "SELECT parents, genome_size, sigma_count, population FROM run_state WHERE controller_id = ? AND run = ?");
+            st.bind(1, c.id).bind(2, run);
+            if (!st.step())
+              throw StoreError(fmt::format("{} is damaged: run {} of {} is unfinished but has no state to resume from",
+                                           file_.string(), run + 1, c.name));
+            const auto parents = static_cast<std::size_t>(st.int64(0));
+            const auto genes = static_cast<std::size_t>(st.int64(1));
+            const auto sigmas = static_cast<std::size_t>(st.int64(2));
+            const std::vector<double> pop = st.doubles(3);
+            if (genes != c.genome_size || pop.size() != parents * (1 + genes + sigmas))
+              throw StoreError(fmt::format("{} is damaged: the stored population of run {} of {} has the wrong size",
+                                           file_.string(), run + 1, c.name));
+            for (std::size_t p = 0; p < parents; ++p) {
+              const double* row = pop.data() + p * (1 + genes + sigmas);
+              evo::Individual ind;
+              ind.fitness = row[0];
+              ind.genes.assign(row + 1, row + 1 + genes);
+              ind.sigmas.assign(row + 1 + genes, row + 1 + genes + sigmas);
+              s.parents.push_back(std::move(ind));
+            }
+            c.in_progress.push_back(std::move(s));
+          }
+        }
+        auto rp = db_.prepare("SELECT run, seed, fitness, trace FROM replays WHERE controller_id = ?");
+        rp.bind(1, c.id);
+        if (rp.step()) c.replay = StoredReplay{rp.integer(0), parse_u64(rp.text(1), "replay seed"), rp.real(2),
+                                               unpack_trace(rp.doubles(3))};
+      }
+    }
+    return out;
+  } catch (const sql::SqliteError& e) {
+    throw StoreError(fmt::format("{} is damaged: {}", file_.string(), e.what()));
+  } catch (const nlohmann::json::exception& e) {
+    throw StoreError(fmt::format("{} is damaged: {}", file_.string(), e.what()));
+  }
+}
+
+StoredExperiment ResultsDb::load_single() {
+  std::vector<StoredExperiment> all = load();
+  if (all.size() != 1)
+    throw StoreError(fmt::format("{} holds {} experiments; a run directory holds one", file_.string(), all.size()));
+  return std::move(all.front());
+}
+
+eval::CampaignResult StoredExperiment::result() const {
+  eval::CampaignResult r;
+  r.experiment = name;
+  r.seed = seed;
+  for (const StoredController& c : controllers) {
+    if (c.finished.empty()) continue;
+    r.controllers.push_back({c.name, c.architecture, c.genome_size, c.finished});
+  }
+  return r;
+}
+
+eval::ResumePoint StoredExperiment::resume_point() const {
+  eval::ResumePoint p;
+  for (const StoredController& c : controllers) {
+    for (const auto& f : c.finished) p.finished.push_back({c.name, f});
+    for (const auto& s : c.in_progress) p.in_progress.push_back({c.name, s});
+  }
+  return p;
+}
+
+}  // namespace esc::store

@@ -1,0 +1,138 @@
+#pragma once
+// The results database of a run directory: DIR/esc.db, one SQLite file (schema in
+// docs/results-store.md). It is the source of truth: every generation is committed in one
+// transaction (statistics, the run's best so far and the parents needed to continue), so
+// after a crash at any moment the database holds a consistent state to resume from. The
+// CSV and JSON files of the directory are views of it, rewritten on resume.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/eval/campaign.hpp"
+#include "runtime/store/sqlite.hpp"
+
+namespace esc::store {
+
+inline constexpr const char* kDatabaseFile = "esc.db";
+inline constexpr int kSchemaVersion = 1;
+// PRAGMA application_id of an esc database: "ESC1".
+inline constexpr std::int32_t kApplicationId = 0x45534331;
+
+// A problem with a stored directory (missing, foreign, damaged, mismatched), with a
+// message meant for the user.
+class StoreError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SourceFile {
+  std::filesystem::path name;   // as the compiler reported it
+  std::string text;
+};
+
+// How the campaign was started, kept so that `esc run --resume` can rebuild it.
+struct LaunchInfo {
+  std::filesystem::path script;                   // absolute path of the script run
+  nlohmann::ordered_json overrides = nlohmann::ordered_json::object();   // command-line settings
+  std::string software_version;
+};
+
+// Columns of a stored replay trace, one row of doubles per control step.
+inline constexpr std::size_t kTraceColumns = 20;
+[[nodiscard]] std::vector<std::string> trace_column_names();
+
+struct StoredReplay {
+  int run = 0;
+  std::uint64_t seed = 0;       // the evaluation's seed
+  double fitness = 0.0;
+  std::vector<eval::TraceStep> steps;
+};
+
+struct StoredController {
+  std::int64_t id = 0;
+  std::string name;
+  std::string architecture;
+  std::size_t genome_size = 0;
+  std::string head;                       // "classical", "symbolic" or "supervisor"
+  std::vector<std::string> actions;       // what usage counts: action or behavior names
+  std::vector<eval::RunResult> finished;  // in run order
+  std::vector<eval::RunState> in_progress;
+  std::optional<StoredReplay> replay;     // the best run's best evaluation, if traced
+};
+
+struct StoredExperiment {
+  std::int64_t id = 0;
+  std::string name;
+  std::uint64_t seed = 0;
+  std::string content_hash;
+  std::string status;                     // "running" or "finished"
+  std::string created;                    // ISO 8601, UTC
+  std::string software_version;
+  std::filesystem::path script;
+  nlohmann::ordered_json overrides;
+  std::map<std::string, std::string> settings;
+  nlohmann::ordered_json arena;           // walls and obstacles, metres
+  double robot_radius_m = 0.0;
+  int runs = 0;
+  int generations = 0;
+  int epochs = 0;
+  int steps = 0;
+  std::vector<SourceFile> sources;
+  std::vector<StoredController> controllers;
+
+  [[nodiscard]] bool finished() const noexcept { return status == "finished"; }
+  // The finished runs as a campaign result (what summary.json shows).
+  [[nodiscard]] eval::CampaignResult result() const;
+  // Where `esc run --resume` picks the campaign up.
+  [[nodiscard]] eval::ResumePoint resume_point() const;
+};
+
+// Content key of a campaign: the experiment name and every source file (file name without
+// its directory, and text), as 16 hex digits of FNV-1a.
+[[nodiscard]] std::string campaign_hash(std::string_view experiment, const std::vector<SourceFile>& sources);
+
+class ResultsDb {
+ public:
+  // Creates DIR/esc.db and stores the experiment, its sources and settings in one
+  // transaction. Throws StoreError if the database exists.
+  static ResultsDb create(const std::filesystem::path& dir, const eval::ExperimentSpec& spec,
+                          const std::vector<SourceFile>& sources, const LaunchInfo& launch);
+  // Opens an existing database and checks it is an esc database this version can read,
+  // undamaged. Throws StoreError with a clear message otherwise.
+  static ResultsDb open(const std::filesystem::path& dir, bool read_only = false);
+
+  // One generation of one run, in one transaction: its statistics, the run's best so far
+  // and the state to continue from.
+  void commit_generation(const std::string& controller, const eval::RunState& state);
+  // The run's best evaluation replayed; kept if it is the controller's best run so far.
+  void commit_replay(const std::string& controller, const eval::RunResult& run,
+                     std::span<const eval::TraceStep> trace);
+  // The run is finished: its best genome, behavior usage; its resume state is dropped.
+  void commit_run(const std::string& controller, const eval::RunResult& run);
+  void mark_finished();
+
+  // Everything stored, experiment by experiment. Throws StoreError on inconsistent content.
+  [[nodiscard]] std::vector<StoredExperiment> load();
+  // The experiment this database was created for (the only one `esc run` writes).
+  [[nodiscard]] StoredExperiment load_single();
+
+  [[nodiscard]] std::int64_t experiment_id() const noexcept { return experiment_id_; }
+
+ private:
+  ResultsDb(sql::Database db, std::filesystem::path file);
+  std::int64_t controller_id(const std::string& name);
+
+  sql::Database db_;
+  std::filesystem::path file_;
+  std::int64_t experiment_id_ = 0;
+  std::map<std::string, std::int64_t> controller_ids_;
+};
+
+}  // namespace esc::store

@@ -1,0 +1,263 @@
+// End-to-end tests of results that last: a run killed with SIGKILL mid-way and resumed ends
+// bit-identical to an uninterrupted run; resume refuses finished, foreign, damaged and
+// changed inputs without touching anything; export; the HTML report in headless Chromium.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status = -1;
+  std::string output;   // stdout and stderr together
+};
+
+Outcome shell(const std::string& cmd) {
+  Outcome o;
+  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return o;
+  std::array<char, 4096> buf{};
+  for (std::size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;) o.output.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return o;
+}
+
+Outcome esc(const std::string& args) { return shell(std::string(ESC_BINARY) + " " + args); }
+
+fs::path scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("esc-results-test-" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d.parent_path());
+  return d;
+}
+
+std::string tiny() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny.esc"; }
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(slurp(p)); }
+
+// Generations committed so far, read through `esc export` while the run writes.
+int committed_generations(const fs::path& dir) {
+  const Outcome o = esc("export " + dir.string() + " --format csv");
+  if (o.status != 0) return 0;
+  int lines = 0;
+  for (char ch : o.output) lines += ch == '\n' ? 1 : 0;
+  return lines - 1;
+}
+
+// Same experiment, same seed: summary.json equal in everything but nothing else.
+void expect_same_summary(const fs::path& a, const fs::path& b) {
+  const auto sa = read_json(a / "summary.json");
+  const auto sb = read_json(b / "summary.json");
+  ASSERT_EQ(sa["controllers"].size(), sb["controllers"].size());
+  for (const auto& [name, c] : sa["controllers"].items()) {
+    const auto& runs_a = c["runs"];
+    const auto& runs_b = sb["controllers"][name]["runs"];
+    ASSERT_EQ(runs_a.size(), runs_b.size()) << name;
+    for (std::size_t r = 0; r < runs_a.size(); ++r) {
+      EXPECT_EQ(runs_a[r]["seed"], runs_b[r]["seed"]);
+      EXPECT_EQ(runs_a[r]["best_fitness"], runs_b[r]["best_fitness"]) << name << " run " << r;
+      EXPECT_EQ(runs_a[r]["best"], runs_b[r]["best"]) << name << " run " << r;
+      EXPECT_EQ(runs_a[r]["mean"], runs_b[r]["mean"]) << name << " run " << r;
+      EXPECT_EQ(runs_a[r]["sd"], runs_b[r]["sd"]) << name << " run " << r;
+    }
+  }
+  EXPECT_EQ(slurp(a / "summary.json"), slurp(b / "summary.json"));
+}
+
+constexpr const char* kLonger = " --generations 30 --seed 5 ";   // 4 x 30 generations, about 2 s
+
+TEST(Results, KilledRunResumesBitIdentical) {
+  const fs::path reference = scratch("reference");
+  const fs::path killed = scratch("killed");
+  ASSERT_EQ(esc("run " + tiny() + kLonger + "--threads 2 --out " + reference.string()).status, 0);
+
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
+    const std::string out = killed.string();
+    const std::string file = tiny();
+    execl(ESC_BINARY, ESC_BINARY, "run", file.c_str(), "--generations", "30", "--seed", "5", "--threads", "1",
+          "--out", out.c_str(), static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  // Wait until a good part of the campaign is committed, then kill it without warning.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int seen = 0;
+  while ((seen = committed_generations(killed)) < 40 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  int status = 0;
+  const bool still_running = waitpid(child, &status, WNOHANG) == 0;
+  kill(child, SIGKILL);
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(still_running) << "the run finished before it could be killed";
+  ASSERT_GE(seen, 40);
+  ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
+
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming"), std::string::npos) << resumed.output;
+  expect_same_summary(reference, killed);
+  for (const char* run : {"CC/run-01", "CC/run-02", "SC/run-01", "SC/run-02"})
+    EXPECT_EQ(slurp(reference / (std::string(run) + ".best.json")), slurp(killed / (std::string(run) + ".best.json")))
+        << run;
+  EXPECT_EQ(committed_generations(killed), 120);
+
+  // Resuming a finished run changes nothing and says so.
+  const std::string before = slurp(killed / "summary.json");
+  const Outcome again = esc("run --resume " + killed.string());
+  EXPECT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("complete"), std::string::npos) << again.output;
+  EXPECT_EQ(slurp(killed / "summary.json"), before);
+
+  // The exports agree with each other and with summary.json.
+  const auto exported = nlohmann::json::parse(esc("export " + killed.string() + " --format json").output);
+  const auto& e = exported["experiments"][0];
+  EXPECT_EQ(e["status"], "finished");
+  EXPECT_EQ(e["controllers"]["SC"]["runs"][1]["best_fitness"],
+            read_json(killed / "summary.json")["controllers"]["SC"]["runs"][1]["best_fitness"]);
+  EXPECT_EQ(e["controllers"]["SC"]["runs"][0]["behavior_usage"].size(), 3U);
+}
+
+TEST(Results, ResumeRefusesWhatItCannotContinue) {
+  // Not an esc directory.
+  const fs::path foreign = scratch("foreign");
+  fs::create_directories(foreign);
+  std::ofstream(foreign / "notes.txt") << "mine";
+  Outcome o = esc("run --resume " + foreign.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("not an esc run directory"), std::string::npos) << o.output;
+  EXPECT_EQ(slurp(foreign / "notes.txt"), "mine");
+  EXPECT_EQ(esc("run --resume " + (foreign / "missing").string()).status, 1);
+
+  // A damaged database: garbage over the header, then a truncated file.
+  const fs::path damaged = scratch("damaged");
+  ASSERT_EQ(esc("run " + tiny() + " --generations 2 --out " + damaged.string()).status, 0);
+  std::string db = slurp(damaged / "esc.db");
+  ASSERT_GT(db.size(), 4096U);
+  const std::string summary = slurp(damaged / "summary.json");
+  std::string garbled = db;
+  for (std::size_t i = 0; i < 100; ++i) garbled[i] = static_cast<char>('x' + i % 3);
+  std::ofstream(damaged / "esc.db", std::ios::binary | std::ios::trunc) << garbled;
+  o = esc("run --resume " + damaged.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("esc: error:"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("esc.db"), std::string::npos) << o.output;
+  EXPECT_EQ(slurp(damaged / "esc.db"), garbled);
+  EXPECT_EQ(slurp(damaged / "summary.json"), summary);
+  std::ofstream(damaged / "esc.db", std::ios::binary | std::ios::trunc) << db.substr(0, db.size() / 2);
+  o = esc("run --resume " + damaged.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_EQ(esc("report " + damaged.string()).status, 1);
+  EXPECT_FALSE(fs::exists(damaged / "report.html"));
+
+  // A script that changed since the run started.
+  const fs::path src = scratch("src");
+  fs::create_directories(src);
+  fs::copy_file(tiny(), src / "tiny.esc");
+  const fs::path changed = scratch("changed");
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
+    const std::string out = changed.string();
+    const std::string file = (src / "tiny.esc").string();
+    execl(ESC_BINARY, ESC_BINARY, "run", file.c_str(), "--generations", "200", "--threads", "1", "--out",
+          out.c_str(), static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (committed_generations(changed) < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  std::ofstream(src / "tiny.esc", std::ios::app) << "\n// an edit\n";
+  const std::string csv = slurp(changed / "CC" / "run-01.csv");
+  o = esc("run --resume " + changed.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("has changed"), std::string::npos) << o.output;
+  EXPECT_EQ(slurp(changed / "CC" / "run-01.csv"), csv);
+
+  // Options that would change the run are refused with --resume.
+  EXPECT_EQ(esc("run --resume " + changed.string() + " --generations 3").status, 2);
+}
+
+TEST(Results, ExportFormats) {
+  const fs::path out = scratch("export");
+  ASSERT_EQ(esc("run " + tiny() + " --generations 3 --out " + out.string()).status, 0);
+  const Outcome csv = esc("export " + out.string() + " --format csv");
+  ASSERT_EQ(csv.status, 0) << csv.output;
+  EXPECT_EQ(csv.output.rfind("experiment,controller,run,run_seed,status,generation,best,mean,sd", 0), 0U);
+  EXPECT_NE(csv.output.find("\ntiny,SC,2,"), std::string::npos);
+  ASSERT_EQ(esc("export " + out.string() + " --format json --out " + (out / "all.json").string()).status, 0);
+  const auto j = read_json(out / "all.json");
+  EXPECT_EQ(j["experiments"][0]["name"], "tiny");
+  EXPECT_EQ(j["experiments"][0]["controllers"]["CC"]["runs"][0]["generations"].size(), 3U);
+  EXPECT_FALSE(j["experiments"][0]["sources"].empty());
+  EXPECT_EQ(esc("export " + out.string() + " --format xml").status, 2);
+}
+
+// The report in a real browser: loads with no script error, and the screenshot is not blank.
+TEST(Results, ReportRendersInHeadlessChromium) {
+  const fs::path out = scratch("report");
+  ASSERT_EQ(esc("run " + tiny() + " --generations 8 --out " + out.string()).status, 0);
+  const Outcome rep = esc("report " + out.string());
+  ASSERT_EQ(rep.status, 0) << rep.output;
+  const fs::path page = out / "report.html";
+  ASSERT_TRUE(fs::exists(page));
+  const std::string html = slurp(page);
+  // Self-contained: no script, style sheet or image loaded from elsewhere.
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("<img"), std::string::npos);
+  EXPECT_NE(html.find("Chart.js v3"), std::string::npos);
+
+  if (shell("command -v chromium").status != 0)
+    GTEST_SKIP() << "chromium is not installed (Debian package `chromium`; scripts/esc-setup.sh installs it)";
+  const std::string browser = "chromium --headless --no-sandbox --disable-gpu --disable-dev-shm-usage "
+                              "--user-data-dir=" + (out / "profile").string() + " ";
+  const Outcome dom = shell("timeout 60 " + browser + "--virtual-time-budget=3000 --dump-dom file://" +
+                            page.string() + " 2>/dev/null");
+  ASSERT_EQ(dom.status, 0) << dom.output.substr(0, 2000);
+  EXPECT_NE(dom.output.find("(ready)</title>"), std::string::npos) << dom.output.substr(0, 600);
+  EXPECT_EQ(dom.output.find("class=\"esc-error\""), std::string::npos) << "script error in the page";
+  EXPECT_EQ(dom.output.find("(script error)</title>"), std::string::npos);
+  EXPECT_NE(dom.output.find("Replay of the best controllers"), std::string::npos);
+  EXPECT_NE(dom.output.find("Behavior usage: SC"), std::string::npos);
+
+  const fs::path png = out / "report.png";
+  const Outcome shot = shell("timeout 60 " + browser + "--window-size=1280,2000 --screenshot=" + png.string() +
+                             " file://" + page.string());
+  ASSERT_EQ(shot.status, 0) << shot.output;
+  ASSERT_TRUE(fs::exists(png));
+  const std::string image = slurp(png);
+  EXPECT_EQ(image.substr(1, 3), "PNG");
+  // A blank 1280x2000 page compresses to a few kilobytes; plots, text and the arena do not.
+  EXPECT_GT(image.size(), 60000U) << "the screenshot looks blank";
+}
+
+}  // namespace

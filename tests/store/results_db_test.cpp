@@ -1,0 +1,200 @@
+// The results database: what is committed loads back exactly (bit for bit, for resume);
+// foreign, damaged and newer databases give clear errors; exports show what is stored.
+#include "runtime/store/results_db.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "runtime/store/export.hpp"
+#include "runtime/store/run_directory.hpp"
+#include "runtime/store/sqlite.hpp"
+
+namespace esc::store {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("esc-db-test-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+eval::ExperimentSpec spec() {
+  eval::ExperimentSpec e;
+  e.name = "demo";
+  e.seed = 18446744073709551557ULL;   // above INT64_MAX: stored as text
+  e.runs = 2;
+  e.es.generations = 3;
+  e.resolved_settings = {{"epochs", "10"}, {"steps", "150"}};
+  e.arena.cylinders.push_back({{0.2, 0.3}, 0.025});
+  control::ControllerSpec c;
+  c.name = "SC";
+  c.mlp.inputs = {5, 6};
+  c.head = control::Head::Symbolic;
+  c.actions.resize(2);
+  c.actions[0].name = "forward";
+  c.actions[1].name = "left";
+  e.controllers.push_back(c);
+  return e;
+}
+
+eval::RunState state(int generations) {
+  eval::RunState s;
+  s.run = 1;
+  s.seed = 0xfedcba9876543210ULL;
+  for (int g = 0; g < generations; ++g)
+    s.generations.push_back({g, 1.0 / 3.0 + g, 0.1 * g, 1e-300, 20, 1234, 0.25});
+  const std::size_t n = spec().controllers[0].genome_size();
+  std::vector<double> a(n);
+  std::vector<double> b(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = static_cast<double>(i) / 7.0 - 0.5;
+    b[i] = -1.0 / (1.0 + static_cast<double>(i));
+  }
+  s.parents = {{a, {0.05}, 3.25}, {b, {0.01}, -2.5}};
+  s.has_best = true;
+  s.best_fitness = 9.875;
+  s.best_genome = {0.5, 0.25, -0.125};
+  s.best_generation = 1;
+  s.best_index = 17;
+  return s;
+}
+
+TEST(ResultsDb, GenerationStateRoundTripsBitForBit) {
+  const fs::path dir = fresh_dir("roundtrip");
+  const eval::ExperimentSpec e = spec();
+  {
+    ResultsDb db = ResultsDb::create(dir, e, {{"a/main.esc", "experiment demo {}"}}, {"/x/main.esc", {}, "0.1.0"});
+    db.commit_generation("SC", state(1));
+    db.commit_generation("SC", state(2));
+  }
+  ResultsDb db = ResultsDb::open(dir);
+  const StoredExperiment s = db.load_single();
+  EXPECT_EQ(s.name, "demo");
+  EXPECT_EQ(s.seed, e.seed);
+  EXPECT_EQ(s.status, "running");
+  EXPECT_EQ(s.settings, e.resolved_settings);
+  EXPECT_EQ(s.script, fs::path("/x/main.esc"));
+  EXPECT_EQ(s.sources.at(0).text, "experiment demo {}");
+  ASSERT_EQ(s.controllers.size(), 1U);
+  const StoredController& c = s.controllers[0];
+  EXPECT_EQ(c.head, "symbolic");
+  EXPECT_EQ(c.actions, (std::vector<std::string>{"forward", "left"}));
+  ASSERT_EQ(c.in_progress.size(), 1U);
+  const eval::RunState want = state(2);
+  const eval::RunState& got = c.in_progress[0];
+  EXPECT_EQ(got.seed, want.seed);
+  ASSERT_EQ(got.generations.size(), 2U);
+  EXPECT_EQ(got.generations[1].best, want.generations[1].best);
+  EXPECT_EQ(got.generations[1].sd, want.generations[1].sd);
+  ASSERT_EQ(got.parents.size(), 2U);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(got.parents[i].genes, want.parents[i].genes);
+    EXPECT_EQ(got.parents[i].sigmas, want.parents[i].sigmas);
+    EXPECT_EQ(got.parents[i].fitness, want.parents[i].fitness);
+  }
+  EXPECT_EQ(got.best_genome, want.best_genome);
+  EXPECT_EQ(got.best_index, 17);
+  const eval::ResumePoint p = s.resume_point();
+  EXPECT_EQ(p.in_progress.size(), 1U);
+  EXPECT_TRUE(p.finished.empty());
+}
+
+TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
+  const fs::path dir = fresh_dir("finished");
+  const eval::ExperimentSpec e = spec();
+  ResultsDb db = ResultsDb::create(dir, e, {}, {});
+  eval::RunResult r{0, 5, {{0, 2.0, 1.0, 0.5, 10, 100, 0.1}}, 2.0, {0.1}, 0, 3, {7, 3}};
+  db.commit_generation("SC", {0, 5, r.generations, {{{0.1}, {0.1}, 2.0}}, true, 2.0, {0.1}, 0, 3});
+  eval::TraceStep t;
+  t.epoch = 0;
+  t.step = 4;
+  t.pose = {0.1, 0.2, 0.3};
+  t.ir[3] = 0.75;
+  t.action = 1;
+  t.fitness = 2.0;
+  t.collided = true;
+  const std::vector<eval::TraceStep> trace = {t};
+  db.commit_replay("SC", r, trace);
+  db.commit_run("SC", r);
+  eval::RunResult worse = r;
+  worse.run = 1;
+  worse.best_fitness = 1.0;
+  db.commit_replay("SC", worse, trace);   // not better: the replay of run 0 stays
+  db.mark_finished();
+  const StoredExperiment s = db.load_single();
+  EXPECT_TRUE(s.finished());
+  const StoredController& c = s.controllers[0];
+  ASSERT_EQ(c.finished.size(), 1U);
+  EXPECT_TRUE(c.in_progress.empty());
+  EXPECT_EQ(c.finished[0].action_usage, (std::vector<std::int64_t>{7, 3}));
+  ASSERT_TRUE(c.replay.has_value());
+  EXPECT_EQ(c.replay->run, 0);
+  ASSERT_EQ(c.replay->steps.size(), 1U);
+  EXPECT_EQ(c.replay->steps[0].ir[3], 0.75);
+  EXPECT_EQ(c.replay->steps[0].action, 1);
+  EXPECT_TRUE(c.replay->steps[0].collided);
+
+  const std::string csv = export_csv({s});
+  EXPECT_NE(csv.find("demo,SC,1,5,finished,0,2,1,0.5,10,100,0.100"), std::string::npos) << csv;
+  const auto j = export_json({s});
+  EXPECT_EQ(j["experiments"][0]["controllers"]["SC"]["runs"][0]["behavior_usage"]["forward"], 7);
+}
+
+TEST(ResultsDb, ClearErrorsForForeignDamagedAndNewerDatabases) {
+  const fs::path none = fresh_dir("none");
+  EXPECT_THROW((void)ResultsDb::open(none), StoreError);
+  EXPECT_THROW((void)ResultsDb::open(none / "missing"), StoreError);
+
+  const fs::path text = fresh_dir("text");
+  std::ofstream(text / kDatabaseFile) << "this is not a database, but it is long enough to look like one......";
+  try {
+    (void)ResultsDb::open(text);
+    ADD_FAILURE() << "opened a text file";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("esc.db"), std::string::npos) << e.what();
+  }
+
+  const fs::path foreign = fresh_dir("foreign");
+  {
+    sql::Database db(foreign / kDatabaseFile, sql::Database::Mode::Create);
+    db.exec("CREATE TABLE t(x)");
+  }
+  try {
+    (void)ResultsDb::open(foreign);
+    ADD_FAILURE() << "opened a foreign database";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("not one written by esc"), std::string::npos) << e.what();
+  }
+
+  const fs::path newer = fresh_dir("newer");
+  { (void)ResultsDb::create(newer, spec(), {}, {}); }
+  {
+    sql::Database db(newer / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    db.exec("PRAGMA user_version=99");
+  }
+  try {
+    (void)ResultsDb::open(newer);
+    ADD_FAILURE() << "opened a newer database";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("newer esc"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)ResultsDb::create(newer, spec(), {}, {}), StoreError);   // never overwritten
+}
+
+TEST(ResultsDb, CampaignHashIgnoresDirectoriesAndOrder) {
+  const std::vector<SourceFile> a = {{"x/main.esc", "A"}, {"/lib/k.esc", "K"}};
+  const std::vector<SourceFile> b = {{"/abs/k.esc", "K"}, {"/abs/x/main.esc", "A"}};
+  const std::vector<SourceFile> c = {{"x/main.esc", "A "}, {"/lib/k.esc", "K"}};
+  EXPECT_EQ(campaign_hash("e", a), campaign_hash("e", b));
+  EXPECT_NE(campaign_hash("e", a), campaign_hash("e", c));
+  EXPECT_NE(campaign_hash("e", a), campaign_hash("f", a));
+}
+
+}  // namespace
+}  // namespace esc::store
