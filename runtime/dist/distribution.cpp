@@ -1,0 +1,84 @@
+#include "runtime/dist/distribution.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include <mpi.h>
+
+#include "runtime/dist/mpi_session.hpp"
+
+namespace esc::dist {
+
+struct Distribution::Impl {
+  MPI_Win window = MPI_WIN_NULL;
+  std::int64_t* counter = nullptr;   // on rank 0: the next item to hand out
+  int rank = 0;
+  int size = 1;
+};
+
+Distribution::Distribution() {
+  const MpiSession* session = MpiSession::current();
+  if (session == nullptr || !session->active() || session->size() < 2) return;
+  impl_ = std::make_unique<Impl>();
+  impl_->rank = session->rank();
+  impl_->size = session->size();
+  const MPI_Aint bytes = impl_->rank == 0 ? static_cast<MPI_Aint>(sizeof(std::int64_t)) : 0;
+  MPI_Win_allocate(bytes, sizeof(std::int64_t), MPI_INFO_NULL, MPI_COMM_WORLD, &impl_->counter,
+                   &impl_->window);
+}
+
+Distribution::~Distribution() {
+  if (impl_) MPI_Win_free(&impl_->window);
+}
+
+void Distribution::run(std::size_t n, std::size_t width, std::size_t chunk, std::span<double> results,
+                       const std::function<void(std::size_t, std::size_t)>& evaluate) {
+  if (!impl_) {
+    evaluate(0, n);
+    return;
+  }
+  chunk = std::max<std::size_t>(chunk, 1);
+  // Reset the counter on rank 0 before anyone takes from it.
+  if (impl_->rank == 0) {
+    MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, impl_->window);
+    *impl_->counter = 0;
+    MPI_Win_unlock(0, impl_->window);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+
+  // Take chunks until the generation is used up; remember which items were ours.
+  std::vector<double> mine;   // packed: index, then `width` values, per item
+  const auto step = static_cast<std::int64_t>(chunk);
+  for (;;) {
+    std::int64_t first = 0;
+    MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, impl_->window);
+    MPI_Fetch_and_op(&step, &first, MPI_INT64_T, 0, 0, MPI_SUM, impl_->window);
+    MPI_Win_unlock(0, impl_->window);
+    if (first >= static_cast<std::int64_t>(n)) break;
+    const auto begin = static_cast<std::size_t>(first);
+    const std::size_t end = std::min(n, begin + chunk);
+    evaluate(begin, end);
+    for (std::size_t i = begin; i < end; ++i) {
+      mine.push_back(static_cast<double>(i));
+      mine.insert(mine.end(), results.begin() + static_cast<std::ptrdiff_t>(i * width),
+                  results.begin() + static_cast<std::ptrdiff_t>((i + 1) * width));
+    }
+  }
+
+  // Everyone receives everyone's results, bit for bit.
+  const int count = static_cast<int>(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(impl_->size));
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  std::vector<int> offsets(counts.size(), 0);
+  for (std::size_t r = 1; r < counts.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(static_cast<std::size_t>(offsets.back() + counts.back()));
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                 MPI_COMM_WORLD);
+  for (std::size_t p = 0; p < all.size(); p += width + 1) {
+    const auto i = static_cast<std::size_t>(all[p]);
+    std::copy_n(all.begin() + static_cast<std::ptrdiff_t>(p + 1), width,
+                results.begin() + static_cast<std::ptrdiff_t>(i * width));
+  }
+}
+
+}  // namespace esc::dist

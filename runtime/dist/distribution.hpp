@@ -1,0 +1,41 @@
+#pragma once
+// How the evaluations of one generation are shared out among processes. Each
+// evaluation's result depends only on its genome and seed, so every way of sharing gives
+// the same results; this only decides who computes what.
+//
+// Alone (no MPI), a process evaluates everything. Under MPI, ranks take chunks of the
+// generation from a shared counter on rank 0 (an MPI atomic fetch-and-add), so a rank
+// whose evaluations end early (collisions) simply takes more: dynamic load balancing.
+// Afterwards every rank receives every result (bit for bit, an all-gather of the packed
+// values), so all ranks continue with identical populations.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+
+namespace esc::dist {
+
+class Distribution {
+ public:
+  // Collective under MPI: every rank must construct it, in the same order.
+  Distribution();
+  ~Distribution();
+  Distribution(const Distribution&) = delete;
+  Distribution& operator=(const Distribution&) = delete;
+
+  // Evaluates items [0, n). `evaluate(first, last)` computes items [first, last) with this
+  // process's threads and writes their results into `results` (`width` doubles per item,
+  // item i at [i * width, (i + 1) * width)). On return, every process holds all n results.
+  // `chunk` is how many items a process takes at a time (its thread count is a good value).
+  void run(std::size_t n, std::size_t width, std::size_t chunk, std::span<double> results,
+           const std::function<void(std::size_t first, std::size_t last)>& evaluate);
+
+  [[nodiscard]] bool distributed() const noexcept { return impl_ != nullptr; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace esc::dist

@@ -1,0 +1,49 @@
+#include "runtime/dist/mpi_session.hpp"
+
+#include <cstdlib>
+
+#include <mpi.h>
+
+namespace esc::dist {
+
+namespace {
+const MpiSession* g_session = nullptr;
+}
+
+bool launched_by_mpi() noexcept {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
+    if (std::getenv(v) != nullptr) return true;
+  return false;
+}
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+  g_session = this;
+  if (!launched_by_mpi()) return;
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  active_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() {
+  if (active_) MPI_Finalize();
+  g_session = nullptr;
+}
+
+bool MpiSession::all_ok(bool ok) const {
+  if (!active_) return ok;
+  int mine = ok ? 1 : 0;
+  int all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  return all == 1;
+}
+
+void MpiSession::abort(int status) const {
+  if (active_) MPI_Abort(MPI_COMM_WORLD, status);
+  std::exit(status);
+}
+
+const MpiSession* MpiSession::current() noexcept { return g_session; }
+
+}  // namespace esc::dist

@@ -1,0 +1,49 @@
+#pragma once
+// The process's place in an MPI job. esc runs as a plain process unless it was started by
+// an MPI launcher (mpirun sets OMPI_COMM_WORLD_SIZE / PMI_SIZE / PMIX_RANK), so a normal
+// `esc run` never pays MPI's start-up or needs a launcher.
+//
+// Under MPI every rank runs the same campaign logic (compiling the same script, breeding
+// the same populations from the same streams); only evaluations are shared out, and their
+// results gathered back to every rank (see distribution.hpp). Rank 0 alone writes results
+// and prints progress.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace esc::dist {
+
+class MpiSession {
+ public:
+  // Initialises MPI (thread level: funneled) when launched by mpirun, else does nothing.
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  [[nodiscard]] bool active() const noexcept { return active_; }
+  [[nodiscard]] int rank() const noexcept { return rank_; }
+  [[nodiscard]] int size() const noexcept { return size_; }
+  [[nodiscard]] bool is_root() const noexcept { return rank_ == 0; }
+
+  // True when every rank passes true (a collective: all ranks must call it). Used so a
+  // failure on one rank (an existing output directory on rank 0) stops every rank.
+  [[nodiscard]] bool all_ok(bool ok) const;
+
+  // Ends the job from any rank after a fatal error (MPI_Abort), so no rank waits forever.
+  [[noreturn]] void abort(int status) const;
+
+  // The session of this process, set by the constructor; null before.
+  [[nodiscard]] static const MpiSession* current() noexcept;
+
+ private:
+  bool active_ = false;
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+// True when the environment says an MPI launcher started this process.
+[[nodiscard]] bool launched_by_mpi() noexcept;
+
+}  // namespace esc::dist
