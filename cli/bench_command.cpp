@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include "bench/campaign_estimate.hpp"
 #include "bench/workloads.hpp"
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
@@ -46,9 +47,33 @@ const control::ControllerSpec* paper_sc(const eval::ExperimentSpec& e) {
   return found;
 }
 
+int campaign_command(const BenchOptions& o) {
+  const compiler::CompileResult compiled = load_script(o.campaign);
+  if (!compiled.ok()) return kExitBadInput;
+  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+  fmt::print("measuring each controller on one core for {:.1f} s ...\n", o.min_time_s);
+  const auto costs = bench::estimate_campaign(compiled.experiments, o.min_time_s);
+  fmt::print("\n{:<30} {:<12} {:<10} {:>12} {:>14} {:>12} {:>11}\n", "experiment", "controller", "arch",
+             "evaluations", "steps (max)", "steps/s/core", "core-hours");
+  double core_seconds = 0.0;
+  for (const auto& c : costs) {
+    core_seconds += c.core_seconds();
+    fmt::print("{:<30} {:<12} {:<10} {:>12.0f} {:>14.0f} {:>12.0f} {:>11.2f}\n", c.experiment, c.controller,
+               c.architecture, c.evaluations, c.max_steps, c.steps_per_second, c.core_seconds() / 3600.0);
+  }
+  fmt::print("\ntotal: {:.2f} core-hours at most (every epoch at full length; early epochs end sooner)\n",
+             core_seconds / 3600.0);
+  fmt::print("wall time at most: {:.2f} h on this machine's {} cores, {:.2f} h on 16 cores "
+             "(assuming linear scaling: see docs/performance.md for measured speed-ups)\n",
+             core_seconds / 3600.0 / cores, cores, core_seconds / 3600.0 / 16.0);
+  fmt::print("machine: {}\n", cpu_model());
+  return kExitOk;
+}
+
 }  // namespace
 
 int bench_command(const BenchOptions& o) {
+  if (!o.campaign.empty()) return campaign_command(o);
   const std::filesystem::path script = std::filesystem::path(ESC_STDLIB_DIR) / "paper" / "obstacle_avoidance.esc";
   compiler::CompileResult compiled = load_script(script);
   if (!compiled.ok() || compiled.experiments.empty()) return kExitBadInput;

@@ -48,6 +48,7 @@ struct BenchOptions {
   int max_threads = 0;                       // 0: all cores
   double min_time_s = 0.5;
   std::vector<std::string> benchmark_args;   // passed to Google Benchmark
+  std::filesystem::path campaign;            // estimate this script's campaign instead
 };
 
 int bench_command(const BenchOptions& options);

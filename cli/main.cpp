@@ -7,9 +7,12 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "runtime/dist/mpi_session.hpp"
 
 int main(int argc, char** argv) {
   using namespace esc::cli;
+  // Under mpirun every rank runs this same command; a plain process never starts MPI.
+  const esc::dist::MpiSession mpi(argc, argv);
   CLI::App app{"esc: evolutionary robotics experiments written as scripts"};
   app.require_subcommand(1);
   app.set_version_flag("--version", ESC_VERSION);
@@ -47,6 +50,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--threads", bench.max_threads, "largest thread count (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--min-time", bench.min_time_s, "seconds per benchmark")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--campaign", bench.campaign,
+                        "estimate the cost of every experiment of a script from measured rates");
   bench_cmd->add_option("--benchmark", bench.benchmark_args, "arguments for Google Benchmark (--benchmark_filter=...)");
 
   try {
@@ -66,5 +71,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     fmt::print(stderr, "esc: error: {}\n", e.what());
   }
+  // The other ranks of an MPI job may be waiting for this one: end them all.
+  if (mpi.active() && mpi.size() > 1) mpi.abort(kExitBadInput);
   return kExitBadInput;
 }

@@ -1,7 +1,9 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <functional>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 #include <unistd.h>
@@ -11,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
 #include "cli/progress.hpp"
+#include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/store/run_directory.hpp"
@@ -121,13 +124,44 @@ std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compile
 
 bool live_progress() { return isatty(STDOUT_FILENO) != 0; }
 
-eval::CampaignResult run_with_progress(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
-                                       store::RunDirectory& dir, std::int64_t already_done) {
-  ProgressPrinter progress(spec, dir, live_progress(), already_done);
-  eval::CampaignResult result = eval::run_campaign(spec, options, progress);
+// True on the ranks of an MPI job other than rank 0: they follow the campaign silently.
+bool follower_rank() {
+  const dist::MpiSession* mpi = dist::MpiSession::current();
+  return mpi != nullptr && mpi->active() && !mpi->is_root();
+}
+
+// Runs the campaign on every rank of an MPI job, or alone. Rank 0 (or the lone process)
+// opens the run directory with `open`, writes every result and prints the progress and
+// the table; the other ranks evaluate their share of each generation and write nothing.
+// If `open` fails on rank 0, every rank stops.
+int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
+                   const std::function<store::RunDirectory()>& open, std::int64_t already_done,
+                   const std::filesystem::path& out) {
+  const dist::MpiSession* mpi = dist::MpiSession::current();
+  const bool job = mpi != nullptr && mpi->active();
+  if (follower_rank()) {
+    if (!mpi->all_ok(true)) return kExitBadInput;
+    eval::CampaignListener silent;
+    eval::CampaignOptions quiet = options;
+    quiet.trace_best = false;
+    (void)eval::run_campaign(spec, quiet, silent);
+    return kExitOk;
+  }
+  std::optional<store::RunDirectory> dir;
+  try {
+    dir.emplace(open());
+  } catch (...) {
+    if (job) (void)mpi->all_ok(false);
+    throw;
+  }
+  if (job) (void)mpi->all_ok(true);
+  ProgressPrinter progress(spec, *dir, live_progress(), already_done);
+  const eval::CampaignResult result = eval::run_campaign(spec, options, progress);
   progress.close();
-  dir.finish(result);
-  return result;
+  dir->finish(result);
+  print_table(spec, result);
+  fmt::print("\nresults: {}/summary.json (report: esc report {})\n", out.string(), out.string());
+  return kExitOk;
 }
 
 int resume_command(const RunOptions& o) {
@@ -187,13 +221,12 @@ int resume_command(const RunOptions& o) {
   std::int64_t done = 0;
   for (const auto& f : point.finished) done += static_cast<std::int64_t>(f.result.generations.size());
   for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
-  fmt::print("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
-             static_cast<std::int64_t>(spec->controllers.size()) * spec->runs * spec->es.generations);
-  store::RunDirectory dir = store::RunDirectory::resume(o.resume, std::move(db), stored);
-  const eval::CampaignResult result = run_with_progress(*spec, {o.threads, &point, true}, dir, done);
-  print_table(*spec, result);
-  fmt::print("\nresults: {}/summary.json (report: esc report {})\n", o.resume.string(), o.resume.string());
-  return kExitOk;
+  if (!follower_rank())
+    fmt::print("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
+               static_cast<std::int64_t>(spec->controllers.size()) * spec->runs * spec->es.generations);
+  return run_everywhere(
+      *spec, {o.threads, &point, true},
+      [&] { return store::RunDirectory::resume(o.resume, std::move(db), stored); }, done, o.resume);
 }
 
 }  // namespace
@@ -215,14 +248,14 @@ int run_command(const RunOptions& o) {
   launch.script = std::filesystem::absolute(o.file).lexically_normal();
   launch.overrides = overrides_json(o);
   launch.software_version = ESC_VERSION_STRING;
-  store::RunDirectory dir(out, *spec, sources_of(compiled), launch);
-  fmt::print("esc: running {} ({} controller{}, {} run{}, {} generations) into {}\n", spec->name,
-             spec->controllers.size(), spec->controllers.size() == 1 ? "" : "s", spec->runs,
-             spec->runs == 1 ? "" : "s", spec->es.generations, out.string());
-  const eval::CampaignResult result = run_with_progress(*spec, {o.threads, nullptr, true}, dir, 0);
-  print_table(*spec, result);
-  fmt::print("\nresults: {}/summary.json (report: esc report {})\n", out.string(), out.string());
-  return kExitOk;
+  const auto open = [&] {
+    store::RunDirectory dir(out, *spec, sources_of(compiled), launch);
+    fmt::print("esc: running {} ({} controller{}, {} run{}, {} generations) into {}\n", spec->name,
+               spec->controllers.size(), spec->controllers.size() == 1 ? "" : "s", spec->runs,
+               spec->runs == 1 ? "" : "s", spec->es.generations, out.string());
+    return dir;
+  };
+  return run_everywhere(*spec, {o.threads, nullptr, true}, open, 0, out);
 }
 
 }  // namespace esc::cli

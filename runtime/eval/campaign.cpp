@@ -11,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include "runtime/core/rng.hpp"
+#include "runtime/dist/distribution.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/evo/es.hpp"
 
@@ -42,17 +43,33 @@ GenerationStats summarise(int generation, const std::vector<evo::Individual>& of
   return g;
 }
 
+// Where evaluations run: this process's threads, and the other MPI ranks if any.
+struct Evaluators {
+  Workers& workers;
+  dist::Distribution& distribution;
+  std::size_t chunk;   // evaluations a process takes at a time: its thread count
+};
+
 // Evaluates every individual in parallel; each result lands in its own slot, so the
-// outcome does not depend on which worker ran what.
+// outcome does not depend on which worker or rank ran what.
 std::int64_t evaluate_all(const control::ControllerSpec& controller, std::vector<evo::Individual>& pop,
-                          std::uint64_t seed, int generation, Workers& workers) {
-  std::vector<std::int64_t> steps(pop.size(), 0);
-  tbb::parallel_for(std::size_t{0}, pop.size(), [&](std::size_t i) {
-    const Evaluation e = workers.local().evaluate(controller, pop[i].genes, evaluation_seed(seed, generation, i));
-    pop[i].fitness = e.fitness;
-    steps[i] = e.steps;
+                          std::uint64_t seed, int generation, Evaluators& ev) {
+  constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
+  std::vector<double> results(pop.size() * kWidth, 0.0);
+  ev.distribution.run(pop.size(), kWidth, ev.chunk, results, [&](std::size_t first, std::size_t last) {
+    tbb::parallel_for(first, last, [&](std::size_t i) {
+      const Evaluation e =
+          ev.workers.local().evaluate(controller, pop[i].genes, evaluation_seed(seed, generation, i));
+      results[i * kWidth] = e.fitness;
+      results[i * kWidth + 1] = static_cast<double>(e.steps);
+    });
   });
-  return std::accumulate(steps.begin(), steps.end(), std::int64_t{0});
+  std::int64_t steps = 0;
+  for (std::size_t i = 0; i < pop.size(); ++i) {
+    pop[i].fitness = results[i * kWidth];
+    steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
+  }
+  return steps;
 }
 
 // Collects a traced evaluation and counts the steps each action acted on.
@@ -75,7 +92,7 @@ RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& e
 }
 
 RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
-                     const RunState* from, const CampaignOptions& options, Workers& workers,
+                     const RunState* from, const CampaignOptions& options, Evaluators& ev,
                      CampaignListener& listener) {
   const evo::EvolutionStrategy es(spec.es, controller.genome_size());
   RunState st = from != nullptr ? *from : fresh_state(spec, es, run);
@@ -83,7 +100,7 @@ RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& 
     const auto start = Clock::now();
     Rng breed(st.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
     std::vector<evo::Individual> offspring = es.breed(st.parents, breed);
-    const std::int64_t steps = evaluate_all(controller, offspring, st.seed, g, workers);
+    const std::int64_t steps = evaluate_all(controller, offspring, st.seed, g, ev);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     st.generations.push_back(summarise(g, offspring, steps, seconds));
     for (std::size_t i = 0; i < offspring.size(); ++i) {
@@ -116,7 +133,7 @@ RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& 
     if (options.trace_best || !rec.usage.empty()) {
       const std::uint64_t seed = evaluation_seed(result.seed, result.best_generation,
                                                  static_cast<std::size_t>(result.best_index));
-      (void)workers.local().evaluate(controller, result.best_genome, seed, &rec);
+      (void)ev.workers.local().evaluate(controller, result.best_genome, seed, &rec);
       result.action_usage = std::move(rec.usage);
       if (options.trace_best) listener.best_traced(controller, result, rec.steps);
     }
@@ -160,6 +177,8 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
                                   static_cast<std::size_t>(threads));
   tbb::task_arena arena(threads);
   Workers workers([&spec] { return Evaluator(spec); });
+  dist::Distribution distribution;
+  Evaluators ev{workers, distribution, static_cast<std::size_t>(threads)};
   for (const control::ControllerSpec& c : spec.controllers) {
     ControllerResult cr;
     cr.name = c.name;
@@ -171,7 +190,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
         continue;
       }
       const RunState* partial = find_in_progress(options.resume, c.name, run);
-      arena.execute([&] { cr.runs.push_back(evolve_one(spec, c, run, partial, options, workers, listener)); });
+      arena.execute([&] { cr.runs.push_back(evolve_one(spec, c, run, partial, options, ev, listener)); });
       listener.run_done(c, cr.runs.back());
     }
     result.controllers.push_back(std::move(cr));

@@ -1,51 +1,16 @@
 // End-to-end tests of the `esc` command: exit codes, located diagnostics, the run
 // directory, improvement of fitness, and identical results for any thread count.
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
+
+#include "tests/cli/esc_process.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
-
-struct Outcome {
-  int status = -1;
-  std::string output;   // stdout and stderr together
-};
-
-Outcome esc(const std::string& args) {
-  const std::string cmd = std::string(ESC_BINARY) + " " + args + " 2>&1";
-  Outcome o;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return o;
-  std::array<char, 4096> buf{};
-  for (std::size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;) o.output.append(buf.data(), n);
-  const int raw = pclose(pipe);
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  return o;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("esc-cli-test-" + std::to_string(::getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d.parent_path());
-  return d;
-}
-
-std::string tiny() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny.esc"; }
-
-nlohmann::json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
+using namespace cli_test;
 
 TEST(Cli, NoCommandIsAUsageError) { EXPECT_EQ(esc("").status, 2); }
 
@@ -152,6 +117,19 @@ TEST(Cli, PaperObstacleAvoidanceImprovesForEveryController) {
     }
     EXPECT_GT(last, first) << name;
   }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Cli, BenchEstimatesACampaignFromMeasuredRates) {
+  const Outcome o = esc("bench --campaign " + tiny() + " --min-time 0.05");
+  ASSERT_EQ(o.status, 0) << o.output;
+  // tiny: 2 runs x 6 generations x 20 offspring = 240 evaluations of 3 epochs x 80 steps.
+  EXPECT_NE(o.output.find("240"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("57600"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("core-hours"), std::string::npos);
 }
 
 }  // namespace

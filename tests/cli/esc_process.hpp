@@ -1,0 +1,57 @@
+#pragma once
+// Running the `esc` binary from end-to-end tests: its exit status and output, scratch
+// directories, and reading what it wrote.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace cli_test {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status = -1;
+  std::string output;   // stdout and stderr together
+};
+
+inline Outcome shell(const std::string& cmd) {
+  Outcome o;
+  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return o;
+  std::array<char, 4096> buf{};
+  for (std::size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;) o.output.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return o;
+}
+
+inline Outcome esc(const std::string& args) { return shell(std::string(ESC_BINARY) + " " + args); }
+
+// A fresh, empty path under the temporary directory, per test process and name.
+inline fs::path scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("esc-cli-test-" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d.parent_path());
+  return d;
+}
+
+inline std::string tiny() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny.esc"; }
+
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(slurp(p)); }
+
+}  // namespace cli_test
