@@ -114,6 +114,14 @@ int bench_command(const BenchOptions& o) {
                  it->second["steps/s"], it->second["evals/s"], it->second["steps/s"] / base->second["steps/s"]);
     }
   }
+  for (const char* size : {"15", "50", "150"}) {
+    const auto flat = reporter.values.find(fmt::format("BM_GpFlat/{}", size));
+    const auto rec = reporter.values.find(fmt::format("BM_GpRecursive/{}", size));
+    if (flat == reporter.values.end() || rec == reporter.values.end()) continue;
+    fmt::print("GP trees of ~{} nodes: flat {:.1f}M evals/s, recursive {:.1f}M evals/s ({:.2f}x)\n", size,
+               flat->second["items_per_second"] / 1e6, rec->second["items_per_second"] / 1e6,
+               flat->second["items_per_second"] / rec->second["items_per_second"]);
+  }
   return kExitOk;
 }
 
