@@ -84,7 +84,32 @@ struct ArenaSize {
   SourceRange where;
 };
 
+struct Light {
+  Name name;
+  std::optional<Quantity> x, y;     // `at (x, y)`
+  std::optional<Name> above;        // `above ZONE`
+  std::optional<Quantity> height, intensity;
+  SourceRange where;
+};
+struct Zone {
+  Name name;
+  bool circle = true;
+  Quantity radius, w, h;
+  bool random = false;
+  Quantity x, y;                    // when !random
+  std::vector<Name> flags;          // visible / invisible / recharge
+  SourceRange where;
+};
+struct ArenaLength {                // `sweep_cell 4cm`, `reach_radius 5cm`
+  Quantity value;
+  SourceRange where;
+};
+
 struct ArenaDecl : DeclHead {
+  std::vector<Light> lights;
+  std::vector<Zone> zones;
+  std::vector<ArenaLength> sweep_cells;    // more than one is an error
+  std::vector<ArenaLength> reach_radii;    // more than one is an error
   std::vector<ArenaSize> sizes;     // more than one is an error
   std::vector<Cylinder> cylinders;
   std::vector<Block> blocks;
@@ -126,8 +151,18 @@ struct Layer {
   SourceRange where;
 };
 
+// `forward(0.5)` in a supervisor's behavior list.
+struct SupervisedRef {
+  Name name;
+  std::vector<Quantity> args;
+  SourceRange where;
+};
+
 struct ControllerDecl : DeclHead {
   bool symbolic = false;
+  bool supervisor = false;
+  bool elman = false;
+  std::vector<SupervisedRef> behaviors;
   SourceRange kind_where;
   std::vector<Input> inputs;
   std::vector<Layer> layers;

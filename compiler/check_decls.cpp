@@ -216,8 +216,153 @@ const std::optional<sim::ArenaSpec>& Model::arena(const ast::ArenaDecl& d) {
         a.fixed_start = sim::Pose{*x, *y, *heading};
     }
   }
+  // Zones first: a light may stand above one.
+  std::map<std::string, std::size_t> zone_index;
+  for (std::size_t i = 0; i < d.zones.size(); ++i) {
+    const ast::Zone& z = d.zones[i];
+    if (i == sim::kMaxZones)
+      sink_.error(z.where, fmt::format("an arena holds at most {} zones", sim::kMaxZones));
+    if (!z.name.text.empty() && !zone_index.try_emplace(z.name.text, i).second) {
+      sink_.error(z.name.where, fmt::format("zone `{}` is already declared in this arena", z.name.text))
+          .notes.emplace_back(d.zones[zone_index[z.name.text]].name.where, "first declared here");
+      continue;
+    }
+    sim::Zone k;
+    k.shape = z.circle ? sim::ZoneShape::Circle : sim::ZoneShape::Rectangle;
+    double half_w = 0, half_h = 0;
+    if (z.circle) {
+      const auto r = to_si(z.radius, Dim::Length, sink_);
+      if (!r) continue;
+      if (*r <= 0) {
+        sink_.error(z.radius.where, "a zone's radius must be greater than 0");
+        continue;
+      }
+      k.radius_m = *r;
+      half_w = half_h = *r;
+    } else {
+      const auto w = to_si(z.w, Dim::Length, sink_), h = to_si(z.h, Dim::Length, sink_);
+      if (!w || !h) continue;
+      if (*w <= 0 || *h <= 0) {
+        sink_.error(z.where, "a zone's width and height must be greater than 0");
+        continue;
+      }
+      k.size_m = {*w, *h};
+      half_w = *w / 2;
+      half_h = *h / 2;
+    }
+    bool vis_given = false;
+    std::set<std::string> flags;
+    for (const ast::Name& f : z.flags) {
+      if (!flags.insert(f.text).second) {
+        sink_.error(f.where, fmt::format("`{}` is already given for this zone", f.text));
+        continue;
+      }
+      if (f.text == "recharge") {
+        k.recharge = true;
+      } else {
+        if (vis_given) sink_.error(f.where, "a zone is either `visible` or `invisible`");
+        vis_given = true;
+        k.visible = f.text == "visible";
+      }
+    }
+    if (z.random) {
+      k.random_position = true;
+      if (size_ok) k.center_m = {a.width_m / 2, a.height_m / 2};
+      if (size_ok && (2 * half_w > a.width_m + kEps || 2 * half_h > a.height_m + kEps)) {
+        sink_.error(z.where, fmt::format("this zone is larger than the arena ({})", arena_text));
+        continue;
+      }
+    } else {
+      const auto x = to_si(z.x, Dim::Length, sink_), y = to_si(z.y, Dim::Length, sink_);
+      if (!x || !y) continue;
+      k.center_m = {*x, *y};
+      if (size_ok && (*x - half_w < -kEps || *y - half_h < -kEps || *x + half_w > a.width_m + kEps ||
+                      *y + half_h > a.height_m + kEps)) {
+        sink_.error(z.where, fmt::format("this zone is not inside the arena ({})", arena_text))
+            .help.push_back("positions are measured from the arena's lower-left inner corner to the zone's centre");
+        continue;
+      }
+    }
+    a.zones.push_back(k);
+  }
+  std::set<std::string> light_names;
+  for (std::size_t i = 0; i < d.lights.size(); ++i) {
+    const ast::Light& l = d.lights[i];
+    if (i == sim::kMaxLights)
+      sink_.error(l.where, fmt::format("an arena holds at most {} lights", sim::kMaxLights));
+    if (!l.name.text.empty() && !light_names.insert(l.name.text).second) {
+      sink_.error(l.name.where, fmt::format("light `{}` is already declared in this arena", l.name.text));
+      continue;
+    }
+    sim::LightSource k;
+    if (l.height) {
+      const auto h = to_si(*l.height, Dim::Length, sink_);
+      if (!h) continue;
+      if (*h < 0) {
+        sink_.error(l.height->where, "a light's height must not be negative");
+        continue;
+      }
+      k.height_m = *h;
+    }
+    if (l.intensity) {
+      const auto v = to_si(*l.intensity, Dim::None, sink_);
+      if (!v) continue;
+      if (*v <= 0) {
+        sink_.error(l.intensity->where, "a light's intensity must be greater than 0");
+        continue;
+      }
+      k.intensity = *v;
+    }
+    if (l.above) {
+      const auto it = zone_index.find(l.above->text);
+      if (it == zone_index.end()) {
+        std::vector<std::string> zones;
+        for (const ast::Zone& z : d.zones) zones.push_back(z.name.text);
+        std::string msg = fmt::format("unknown zone `{}` in arena `{}`", l.above->text, d.name.text);
+        if (auto best = closest(l.above->text, zones)) msg += fmt::format("; did you mean `{}`?", *best);
+        sink_.error(l.above->where, msg);
+        continue;
+      }
+      k.above_zone = static_cast<int>(it->second);
+      if (it->second < a.zones.size()) k.position_m = a.zones[it->second].center_m;
+    } else if (l.x && l.y) {
+      const auto x = to_si(*l.x, Dim::Length, sink_), y = to_si(*l.y, Dim::Length, sink_);
+      if (!x || !y) continue;
+      if (size_ok && (*x < -kEps || *y < -kEps || *x > a.width_m + kEps || *y > a.height_m + kEps)) {
+        sink_.error(l.where, fmt::format("this light is not inside the arena ({})", arena_text));
+        continue;
+      }
+      k.position_m = {*x, *y};
+    }
+    a.lights.push_back(k);
+  }
+  auto length_item = [&](const std::vector<ast::ArenaLength>& items, std::string_view word, double& out) {
+    for (std::size_t i = 1; i < items.size(); ++i)
+      sink_.error(items[i].where, fmt::format("the arena's `{}` is already given", word))
+          .notes.emplace_back(items[0].where, "first given here");
+    if (items.empty()) return;
+    const auto v = to_si(items[0].value, Dim::Length, sink_);
+    if (!v) return;
+    if (*v <= 0) {
+      sink_.error(items[0].value.where, fmt::format("`{}` must be greater than 0", word));
+      return;
+    }
+    out = *v;
+  };
+  length_item(d.sweep_cells, "sweep_cell", a.sweep_cell_m);
+  length_item(d.reach_radii, "reach_radius", a.reach_radius_m);
   if (sink_.errors() == errors) slot = a;
   return slot;
+}
+
+const ArenaNames& Model::arena_names(const ast::ArenaDecl& d) {
+  auto [it, fresh] = arena_names_.try_emplace(&d);
+  if (fresh) {
+    it->second.arena = d.name.text;
+    for (const ast::Zone& z : d.zones) it->second.zones.push_back(z.name.text);
+    for (const ast::Light& l : d.lights) it->second.lights.push_back(l.name.text);
+  }
+  return it->second;
 }
 
 // ---- robots -------------------------------------------------------------------------
@@ -298,22 +443,25 @@ const std::optional<sim::KheperaParams>& Model::robot(const ast::RobotDecl& d) {
 
 // ---- behaviors ----------------------------------------------------------------------
 
-const std::optional<control::Behavior>& Model::behavior(const ast::BehaviorDecl& d) {
-  if (auto it = behaviors_.find(&d); it != behaviors_.end()) return it->second;
-  auto& slot = behaviors_[&d];
+const std::optional<control::Behavior>& Model::behavior(const ast::BehaviorDecl& d, const ast::ArenaDecl* arena) {
+  const Key key{&d, arena};
+  if (auto it = behaviors_.find(key); it != behaviors_.end()) return it->second;
+  if (arena != nullptr && !behavior(d)) return behaviors_[key];   // reported without the arena
+  auto& slot = behaviors_[key];
   if (d.poisoned) return slot;
   const int errors = sink_.errors();
   control::Behavior b;
   b.name = d.name.text;
   ExprScope scope;
+  if (arena != nullptr) scope.arena = &arena_names(*arena);
   for (const ast::Name& p : d.params) {
     if (std::find(scope.params.begin(), scope.params.end(), p.text) != scope.params.end()) {
-      sink_.error(p.where, fmt::format("parameter `{}` is listed twice", p.text));
+      if (arena == nullptr) sink_.error(p.where, fmt::format("parameter `{}` is listed twice", p.text));
       continue;
     }
     scope.params.push_back(p.text);
   }
-  if (d.params.size() > expr::kMaxParams)
+  if (d.params.size() > expr::kMaxParams && arena == nullptr)
     sink_.error(d.params[expr::kMaxParams].where,
                 fmt::format("a behavior takes at most {} parameters, `{}` has {}", expr::kMaxParams, d.name.text,
                             d.params.size()));
@@ -340,14 +488,17 @@ const std::optional<control::Behavior>& Model::behavior(const ast::BehaviorDecl&
 
 // ---- fitness ------------------------------------------------------------------------
 
-const std::optional<FitnessResult>& Model::fitness(const ast::FitnessDecl& d) {
-  if (auto it = fitnesses_.find(&d); it != fitnesses_.end()) return it->second;
-  auto& slot = fitnesses_[&d];
+const std::optional<FitnessResult>& Model::fitness(const ast::FitnessDecl& d, const ast::ArenaDecl* arena) {
+  const Key key{&d, arena};
+  if (auto it = fitnesses_.find(key); it != fitnesses_.end()) return it->second;
+  if (arena != nullptr && !fitness(d)) return fitnesses_[key];   // reported without the arena
+  auto& slot = fitnesses_[key];
   if (d.poisoned) return slot;
   const int errors = sink_.errors();
   FitnessResult f;
   f.spec.name = d.name.text;
-  const ExprScope scope;
+  ExprScope scope;
+  if (arena != nullptr) scope.arena = &arena_names(*arena);
   if (d.steps.empty())
     sink_.error(d.name.where, fmt::format("fitness `{}` has no `step:` term", d.name.text))
         .help.push_back("add `step: forward_speed`, the value added up at every control step");
@@ -376,7 +527,11 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
   const int errors = sink_.errors();
   control::ControllerSpec c;
   c.name = d.name.text;
-  c.head = d.symbolic ? control::Head::Symbolic : control::Head::Classical;
+  c.head = d.supervisor ? control::Head::Supervisor : d.symbolic ? control::Head::Symbolic : control::Head::Classical;
+  c.mlp.kind = d.elman ? control::NetworkKind::Elman : control::NetworkKind::Mlp;
+  const bool chooses = d.symbolic || d.supervisor;   // no `wheels` output
+  auto& used = controller_behaviors_[&d];
+  used.clear();
 
   std::vector<std::string> observables;
   for (const auto& o : expr::kObservables) observables.emplace_back(o.name);
@@ -425,6 +580,9 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
       if (d.symbolic) {
         sink_.error(l.where, "a symbolic controller's network has no `wheels` output: its outputs choose among the actions")
             .help.push_back("write `symbolic(mlp(ir[0..7] -> hidden 14), actions [forward, left, right])`");
+      } else if (d.supervisor) {
+        sink_.error(l.where, "a supervisor's network has no `wheels` output: its outputs choose among the behaviors")
+            .help.push_back("write `supervisor(elman(ir[0..7] -> hidden 5), behaviors [forward(0.5), left(0.3)])`");
       } else if (i + 1 != d.layers.size()) {
         sink_.error(l.where, "`wheels` must be the last layer");
       }
@@ -437,7 +595,19 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
       if (!best) diag.help.push_back("layers are `hidden N` and, last, `wheels`");
     }
   }
-  if (!d.symbolic && !has_wheels && sink_.errors() == errors)
+  if (d.elman && sink_.errors() == errors) {
+    std::vector<const ast::Layer*> hidden;
+    for (const ast::Layer& l : d.layers)
+      if (l.word.text == "hidden") hidden.push_back(&l);
+    if (hidden.empty())
+      sink_.error(d.kind_where, "an Elman network needs exactly one hidden layer, found none")
+          .help.push_back("write `elman(ir[0..7] -> hidden 5 -> wheels)`");
+    else if (hidden.size() > 1)
+      sink_.error(hidden[1]->where,
+                  fmt::format("an Elman network has exactly one hidden layer, found {}", hidden.size()))
+          .help.push_back("use `mlp(...)` for several hidden layers");
+  }
+  if (!chooses && !has_wheels && sink_.errors() == errors)
     sink_.error(d.kind_where, "a classical controller must end with `-> wheels`")
         .help.push_back("write `mlp(ir[0..7] -> hidden 20 -> wheels)`");
 
@@ -449,12 +619,83 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
     }
     const Symbol* s = lookup(a, DeclKind::Behavior);
     if (s == nullptr) continue;
-    const auto& b = behavior(*static_cast<const ast::BehaviorDecl*>(s->decl));
-    if (b) c.actions.push_back(*b);
+    const auto* bd = static_cast<const ast::BehaviorDecl*>(s->decl);
+    const auto& b = behavior(*bd);
+    if (b) {
+      c.actions.push_back(*b);
+      used.push_back(bd);
+    }
+  }
+  bool behaviors_ok = true;
+  for (const ast::SupervisedRef& r : d.behaviors) {
+    const Symbol* s = lookup(r.name, DeclKind::Behavior);
+    if (s == nullptr) {
+      behaviors_ok = false;
+      continue;
+    }
+    const auto* bd = static_cast<const ast::BehaviorDecl*>(s->decl);
+    const auto& b = behavior(*bd);
+    if (!b) {
+      behaviors_ok = false;
+      continue;
+    }
+    if (r.args.size() != b->params.size()) {
+      Diagnostic& diag = sink_.error(
+          r.where, fmt::format("behavior `{}` takes {} argument{}, found {}", r.name.text, b->params.size(),
+                               b->params.size() == 1 ? "" : "s", r.args.size()));
+      diag.notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", r.name.text));
+      if (!b->params.empty())
+        diag.help.push_back(fmt::format("give a constant for each parameter: `{}({})`", r.name.text,
+                                        fmt::join(b->params, ", ")));
+      behaviors_ok = false;
+      continue;
+    }
+    control::BehaviorCall call{*b, {}};
+    std::string label = r.name.text;
+    std::vector<std::string> shown;
+    bool args_ok = true;
+    for (const ast::Quantity& q : r.args) {
+      if (!q.finite) {
+        args_ok = false;
+        continue;
+      }
+      const auto v = to_si(q, Dim::None, sink_);
+      if (!v) {
+        args_ok = false;
+        continue;
+      }
+      call.args.push_back(*v);
+      shown.push_back(number_text(*v));
+    }
+    if (!args_ok) {
+      behaviors_ok = false;
+      continue;
+    }
+    if (!r.args.empty()) label += fmt::format("({})", fmt::join(shown, ", "));
+    c.behaviors.push_back({label, std::move(call)});
+    used.push_back(bd);
   }
   if (c.mlp.inputs.empty() && sink_.errors() == errors) sink_.error(d.kind_where, "a controller needs at least one input");
-  if (sink_.errors() == errors && c.actions.size() == d.actions.size()) slot = std::move(c);
+  if (sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok) slot = std::move(c);
   return slot;
+}
+
+bool Model::bind_behaviors(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena) {
+  const auto it = controller_behaviors_.find(&d);
+  if (it == controller_behaviors_.end()) return true;
+  const auto& decls = it->second;
+  bool ok = true;
+  std::size_t k = 0;
+  auto rebind = [&](control::Behavior& b) {
+    if (k >= decls.size()) return;
+    const auto& bound = behavior(*decls[k++], &arena);
+    if (bound) b = *bound;
+    else ok = false;
+  };
+  for (control::Behavior& b : c.actions) rebind(b);
+  for (control::SupervisedBehavior& s : c.behaviors)
+    if (auto* call = std::get_if<control::BehaviorCall>(&s.what)) rebind(call->behavior);
+  return ok;
 }
 
 }  // namespace esc::compiler

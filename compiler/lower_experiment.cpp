@@ -83,6 +83,8 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   std::string step_text;
   std::vector<std::string> stop_texts;
   bool epochs_gave_steps = false;
+  const ast::FitnessDecl* fitness_decl = nullptr;
+  std::vector<const ast::ControllerDecl*> controller_decls;
 
   for (const ast::ExpItem& item : d.items) {
     auto [it, fresh] = first.try_emplace(item.kind, &item);
@@ -156,7 +158,8 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
           ok = false;
           break;
         }
-        const auto& f = fitness(*static_cast<const ast::FitnessDecl*>(s->decl));
+        fitness_decl = static_cast<const ast::FitnessDecl*>(s->decl);
+        const auto& f = fitness(*fitness_decl);
         if (!f) {
           ok = false;
           break;
@@ -274,9 +277,14 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
             ok = false;
             continue;
           }
-          const auto& c = controller(*static_cast<const ast::ControllerDecl*>(s->decl));
-          if (!c) ok = false;
-          else x.controllers.push_back(*c);
+          const auto* cd = static_cast<const ast::ControllerDecl*>(s->decl);
+          const auto& c = controller(*cd);
+          if (!c) {
+            ok = false;
+          } else {
+            x.controllers.push_back(*c);
+            controller_decls.push_back(cd);
+          }
         }
         break;
       }
@@ -292,6 +300,16 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   require(K::Fitness, "fitness", "fitness <name>");
   require(K::Compare, "controllers to compare", "compare <controller>, <controller>");
 
+  // `in(zone)` and `reached(light)` resolve in this experiment's arena.
+  if (ok && sink_.errors() == errors && arena_decl != nullptr) {
+    if (fitness_decl != nullptr) {
+      const auto& f = fitness(*fitness_decl, arena_decl);
+      if (f) x.fitness = f->spec;
+      else ok = false;
+    }
+    for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
+      if (!bind_behaviors(x.controllers[i], *controller_decls[i], *arena_decl)) ok = false;
+  }
   if (ok && sink_.errors() == errors && arena_decl != nullptr) {
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)check_fit(*arena_decl, x.arena, x.robot, use);

@@ -151,7 +151,8 @@ class Lowerer {
     if (best) msg += fmt::format("; did you mean `{}`?", *best);
     Diagnostic& d = sink_.error(where, msg);
     if (!best) d.help.push_back("observables are listed in docs/language.md (`speed`, `forward_speed`, "
-                                "`wheel_diff`, `wheels[i]`, `ir[i]`, `collision`, `step`, `time`, `epoch`)");
+                                "`wheel_diff`, `wheels[i]`, `ir[i]`, `light[i]`, `energy`, `collision`, `step`, "
+                                "`time`, `epoch`, `in(zone)`, `reached(light)`, ...)");
   }
 
   Node index(const ast::Expr& e) {
@@ -182,7 +183,36 @@ class Lowerer {
     return load(o->first + static_cast<expr::Slot>(v));
   }
 
+  Node parametrised(const ast::Expr& e, const expr::ParametrisedObservable& o) {
+    if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
+      sink_.error(e.where, fmt::format("`{}` takes the name of a {} of the arena, as in `{}(NAME)`", o.name,
+                                       o.argument, o.name));
+      return failed();
+    }
+    const ast::Expr& arg = *e.args[0];
+    if (scope_.arena == nullptr) return load(o.first);
+    const bool zone = o.argument == "zone";
+    const std::vector<std::string>& names = zone ? scope_.arena->zones : scope_.arena->lights;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == arg.text) return load(o.first + static_cast<expr::Slot>(i));
+    std::string msg = fmt::format("unknown {} `{}` in arena `{}`", o.argument, arg.text, scope_.arena->arena);
+    const auto best = closest(arg.text, names);
+    if (best) msg += fmt::format("; did you mean `{}`?", *best);
+    Diagnostic& d = sink_.error(arg.where, msg);
+    if (!best) {
+      if (names.empty())
+        d.help.push_back(fmt::format("arena `{}` declares no {}; add one, as in `{}`", scope_.arena->arena, o.argument,
+                                     zone ? "zone base circle radius 10cm at (30cm, 30cm)"
+                                          : "light lamp at (30cm, 30cm)"));
+      else
+        d.help.push_back(fmt::format("{}s of arena `{}`: {}", o.argument, scope_.arena->arena,
+                                     quoted_list(names, ", ")));
+    }
+    return failed();
+  }
+
   Node call(const ast::Expr& e) {
+    if (const auto p = expr::find_parametrised(e.text)) return parametrised(e, *p);
     const Function* f = nullptr;
     for (const Function& k : kFunctions)
       if (k.name == e.text) f = &k;

@@ -11,8 +11,19 @@
 
 namespace esc::compiler {
 
+// The zones and lights of an experiment's arena, in declaration order: `in(zone)` and
+// `reached(light)` read slot first + index.
+struct ArenaNames {
+  std::string arena;                 // the arena's name, for messages
+  std::vector<std::string> zones, lights;
+};
+
 struct ExprScope {
   std::vector<std::string> params;   // behavior parameters, read from slot::param + i
+  // The arena `in(...)` / `reached(...)` resolve in. Null outside an experiment: then their
+  // argument is only checked to be a name (each experiment lowers the expression again with
+  // its arena).
+  const ArenaNames* arena = nullptr;
 };
 
 // Reports errors to `sink`; nullopt when the expression has one.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "compiler/ast.hpp"
+#include "compiler/lower_expr.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/eval/experiment.hpp"
@@ -46,8 +47,13 @@ class Model {
 
   const std::optional<sim::ArenaSpec>& arena(const ast::ArenaDecl& d);
   const std::optional<sim::KheperaParams>& robot(const ast::RobotDecl& d);
-  const std::optional<control::Behavior>& behavior(const ast::BehaviorDecl& d);
-  const std::optional<FitnessResult>& fitness(const ast::FitnessDecl& d);
+  // With an arena, `in(zone)` / `reached(light)` resolve in it (memoised per pair).
+  const std::optional<control::Behavior>& behavior(const ast::BehaviorDecl& d, const ast::ArenaDecl* arena = nullptr);
+  const std::optional<FitnessResult>& fitness(const ast::FitnessDecl& d, const ast::ArenaDecl* arena = nullptr);
+  const ArenaNames& arena_names(const ast::ArenaDecl& d);
+  // Lowers the controller's behaviors (actions, supervised behaviors) again in `arena`;
+  // false when one fails (reported).
+  bool bind_behaviors(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena);
   const std::optional<control::ControllerSpec>& controller(const ast::ControllerDecl& d);
   std::optional<eval::ExperimentSpec> experiment(const ast::ExperimentDecl& d);
 
@@ -63,8 +69,12 @@ class Model {
   std::map<const void*, std::optional<sim::ArenaSpec>> arenas_;
   std::map<const void*, std::optional<sim::KheperaParams>> robots_;
   std::set<const void*> robots_in_progress_;
-  std::map<const void*, std::optional<control::Behavior>> behaviors_;
-  std::map<const void*, std::optional<FitnessResult>> fitnesses_;
+  using Key = std::pair<const void*, const void*>;   // declaration, arena (or null)
+  std::map<Key, std::optional<control::Behavior>> behaviors_;
+  std::map<Key, std::optional<FitnessResult>> fitnesses_;
+  std::map<const void*, ArenaNames> arena_names_;
+  // The behavior declarations a controller uses, in the order of its actions / behaviors.
+  std::map<const void*, std::vector<const ast::BehaviorDecl*>> controller_behaviors_;
   std::map<const void*, std::optional<control::ControllerSpec>> controllers_;
   std::map<const void*, std::optional<eval::ExperimentSpec>> experiments_;
   std::map<const void*, std::string> robot_names_;

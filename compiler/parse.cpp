@@ -290,6 +290,40 @@ class Builder {
         st.random = true;
         st.where = span(r);
         a.starts.push_back(std::move(st));
+      } else if (auto* l = dynamic_cast<P::ArenaLightContext*>(it)) {
+        ast::Light k;
+        k.name = name(l->name);
+        if (auto* p = l->point()) {
+          k.x = quantity(p->x);
+          k.y = quantity(p->y);
+        }
+        if (l->zone != nullptr) k.above = name(l->zone);
+        if (l->h != nullptr) k.height = quantity(l->h);
+        if (l->i != nullptr) k.intensity = quantity(l->i);
+        k.where = span(l);
+        a.lights.push_back(std::move(k));
+      } else if (auto* z = dynamic_cast<P::ArenaZoneContext*>(it)) {
+        ast::Zone k;
+        k.name = name(z->name);
+        k.circle = z->CIRCLE() != nullptr;
+        if (z->r != nullptr) k.radius = quantity(z->r);
+        if (z->w != nullptr) k.w = quantity(z->w);
+        if (z->h != nullptr) k.h = quantity(z->h);
+        k.random = z->RANDOM() != nullptr;
+        if (auto* p = z->point()) {
+          k.x = quantity(p->x);
+          k.y = quantity(p->y);
+        }
+        for (P::ZoneFlagContext* f : z->zoneFlag()) {
+          if (f == nullptr || f->getStart() == nullptr) continue;
+          k.flags.push_back({f->getStart()->getText(), at(f->getStart())});
+        }
+        k.where = span(z);
+        a.zones.push_back(std::move(k));
+      } else if (auto* sc = dynamic_cast<P::ArenaSweepCellContext*>(it)) {
+        a.sweep_cells.push_back({quantity(sc->q), span(sc)});
+      } else if (auto* rr = dynamic_cast<P::ArenaReachRadiusContext*>(it)) {
+        a.reach_radii.push_back({quantity(rr->q), span(rr)});
       } else if (auto* f = dynamic_cast<P::ArenaStartAtContext*>(it)) {
         ast::Start st;
         st.random = false;
@@ -370,13 +404,28 @@ class Builder {
     head(d, c, c->name, order);
     if (auto* m = dynamic_cast<P::MlpControllerContext*>(c->controllerExpr())) {
       d.symbolic = false;
+      d.elman = m->net != nullptr && m->net->getType() == P::ELMAN;
       d.kind_where = at(m->getStart());
       network(m->network(), d);
     } else if (auto* s = dynamic_cast<P::SymbolicControllerContext*>(c->controllerExpr())) {
       d.symbolic = true;
+      d.elman = s->net != nullptr && s->net->getType() == P::ELMAN;
       d.kind_where = at(s->getStart());
       network(s->network(), d);
       for (P::IdentContext* a : s->ident()) d.actions.push_back(name(a));
+    } else if (auto* v = dynamic_cast<P::SupervisorControllerContext*>(c->controllerExpr())) {
+      d.supervisor = true;
+      d.elman = v->net != nullptr && v->net->getType() == P::ELMAN;
+      d.kind_where = at(v->getStart());
+      network(v->network(), d);
+      for (P::SupervisedContext* b : v->supervised()) {
+        if (b == nullptr) continue;
+        ast::SupervisedRef r;
+        r.name = name(b->ident());
+        for (P::QuantityContext* q : b->quantity()) r.args.push_back(quantity(q));
+        r.where = span(b);
+        d.behaviors.push_back(std::move(r));
+      }
     } else {
       d.poisoned = true;
     }

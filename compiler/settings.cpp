@@ -63,6 +63,22 @@ const std::vector<RobotSetting>& robot_settings() {
       {"ir_noise", K::Quantity, Dim::None, 0, false, kInf, "standard deviation of IR noise (readings 0..1)",
        [](const sim::KheperaParams& p) { return p.ir.noise_sd; },
        [](sim::KheperaParams& p, double v) { p.ir.noise_sd = v; }},
+      {"light_half_distance", K::Quantity, Dim::Length, 0, true, kInf,
+       "a unit light straight ahead at this distance reads 0.5",
+       [](const sim::KheperaParams& p) { return p.light.half_distance_m; },
+       [](sim::KheperaParams& p, double v) { p.light.half_distance_m = v; }},
+      {"light_noise", K::Quantity, Dim::None, 0, false, kInf, "standard deviation of light noise (readings 0..1)",
+       [](const sim::KheperaParams& p) { return p.light.noise_sd; },
+       [](sim::KheperaParams& p, double v) { p.light.noise_sd = v; }},
+      {"energy", K::Flag, Dim::None, 0, false, 1, "energy accumulator on or off",
+       [](const sim::KheperaParams& p) { return p.energy.enabled ? 1.0 : 0.0; },
+       [](sim::KheperaParams& p, double v) { p.energy.enabled = v != 0.0; }},
+      {"energy_discharge", K::Whole, Dim::None, 1, false, 100000000, "control steps from full to empty",
+       [](const sim::KheperaParams& p) { return static_cast<double>(p.energy.discharge_steps); },
+       [](sim::KheperaParams& p, double v) { p.energy.discharge_steps = static_cast<int>(v); }},
+      {"energy_recharge", K::Whole, Dim::None, 1, false, 100000000, "control steps from empty to full in a recharge zone",
+       [](const sim::KheperaParams& p) { return static_cast<double>(p.energy.recharge_steps); },
+       [](sim::KheperaParams& p, double v) { p.energy.recharge_steps = static_cast<int>(v); }},
   };
   return table;
 }
@@ -176,6 +192,10 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   r["arena.size"] = fmt::format("{} m x {} m", number_text(spec.arena.width_m), number_text(spec.arena.height_m));
   r["arena.cylinders"] = std::to_string(spec.arena.cylinders.size());
   r["arena.blocks"] = std::to_string(spec.arena.boxes.size());
+  r["arena.lights"] = std::to_string(spec.arena.lights.size());
+  r["arena.zones"] = std::to_string(spec.arena.zones.size());
+  r["arena.sweep_cell"] = fmt::format("{} m", number_text(spec.arena.sweep_cell_m));
+  r["arena.reach_radius"] = fmt::format("{} m", number_text(spec.arena.reach_radius_m));
   if (spec.arena.fixed_start)
     r["arena.start"] = fmt::format("({} m, {} m) heading {} rad", number_text(spec.arena.fixed_start->x_m),
                                    number_text(spec.arena.fixed_start->y_m),

@@ -27,7 +27,11 @@ bool is_wordish(std::size_t type) {
     case EscParser::HEADING: case EscParser::CYLINDER: case EscParser::BLOCK:
     case EscParser::MLP: case EscParser::SYMBOLIC: case EscParser::ACTIONS:
     case EscParser::FOR: case EscParser::GENERATIONS: case EscParser::RUNS:
-    case EscParser::SEED: case EscParser::COMPARE: case EscParser::EVOLVE: case EscParser::ON:
+    case EscParser::SEED: case EscParser::COMPARE: case EscParser::EVOLVE: case EscParser::LIGHT:
+    case EscParser::ABOVE: case EscParser::HEIGHT: case EscParser::INTENSITY: case EscParser::ZONE:
+    case EscParser::CIRCLE: case EscParser::RECT: case EscParser::VISIBLE: case EscParser::INVISIBLE:
+    case EscParser::RECHARGE: case EscParser::SWEEP_CELL: case EscParser::REACH_RADIUS:
+    case EscParser::ELMAN: case EscParser::SUPERVISOR: case EscParser::BEHAVIORS: case EscParser::ON:
     case EscParser::OFF: return true;
     default: return false;
   }
@@ -92,7 +96,8 @@ Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocab
     return e;
   }
   if (!name && has(EscParser::CYLINDER) && has(EscParser::BLOCK)) {
-    e.phrase = "an arena item (`size`, `cylinder`, `block` or `start`) or `}`";
+    e.phrase = "an arena item (`size`, `cylinder`, `block`, `start`, `light`, `zone`, `sweep_cell` or "
+               "`reach_radius`) or `}`";
     return e;
   }
   if (has(EscParser::NUMBER) && has(EscParser::LPAREN) && has(EscParser::NOT) && name) {

@@ -32,7 +32,13 @@ arenaItem
   | BLOCK AT point SIZE w=quantity X h=quantity (ANGLE a=quantity)? ';'?            # arenaBlock
   | START RANDOM ';'?                                                               # arenaStartRandom
   | START AT point (HEADING a=quantity)? ';'?                                       # arenaStartAt
+  | LIGHT name=ident (AT point | ABOVE zone=ident) (HEIGHT h=quantity)? (INTENSITY i=quantity)? ';'?   # arenaLight
+  | ZONE name=ident (CIRCLE RADIUS r=quantity | RECT w=quantity X h=quantity)
+      AT (point | RANDOM) zoneFlag* ';'?                                            # arenaZone
+  | SWEEP_CELL q=quantity ';'?                                                      # arenaSweepCell
+  | REACH_RADIUS q=quantity ';'?                                                    # arenaReachRadius
   ;
+zoneFlag : VISIBLE | INVISIBLE | RECHARGE ;
 
 point : '(' x=quantity ',' y=quantity ')' ;
 
@@ -59,9 +65,11 @@ fitnessItem
 // ---- controllers --------------------------------------------------------------------
 controllerDecl : CONTROLLER name=ident '=' controllerExpr ';'? ;
 controllerExpr
-  : MLP '(' network ')'                                                               # mlpController
-  | SYMBOLIC '(' MLP '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'        # symbolicController
+  : net=(MLP | ELMAN) '(' network ')'                                                 # mlpController
+  | SYMBOLIC '(' net=(MLP | ELMAN) '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'   # symbolicController
+  | SUPERVISOR '(' net=(MLP | ELMAN) '(' network ')' ',' BEHAVIORS '[' supervised (',' supervised)* ']' ')'   # supervisorController
   ;
+supervised : ident ('(' (quantity (',' quantity)*)? ')')? ;
 network : input (',' input)* ('->' layer)* ;
 input : ident ('[' lo=NUMBER ('..' hi=NUMBER)? ']')? ;
 layer : ident NUMBER? ;
@@ -104,7 +112,9 @@ expr
 ident
   : ID | X | STEPS | STEP | EPOCH | EPOCHS | STOP | WHEN | AT | RADIUS | SIZE | BOX | ANGLE
   | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
-  | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | ON | OFF
+  | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
+  | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
+  | SUPERVISOR | BEHAVIORS | ON | OFF
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -150,6 +160,21 @@ RUNS : 'runs' ;
 SEED : 'seed' ;
 COMPARE : 'compare' ;
 EVOLVE : 'evolve' ;
+LIGHT : 'light' ;
+ABOVE : 'above' ;
+HEIGHT : 'height' ;
+INTENSITY : 'intensity' ;
+ZONE : 'zone' ;
+CIRCLE : 'circle' ;
+RECT : 'rect' ;
+VISIBLE : 'visible' ;
+INVISIBLE : 'invisible' ;
+RECHARGE : 'recharge' ;
+SWEEP_CELL : 'sweep_cell' ;
+REACH_RADIUS : 'reach_radius' ;
+ELMAN : 'elman' ;
+SUPERVISOR : 'supervisor' ;
+BEHAVIORS : 'behaviors' ;
 ON : 'on' ;
 OFF : 'off' ;
 
