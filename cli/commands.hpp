@@ -25,6 +25,7 @@ struct RunOptions {
   int threads = 0;                           // 0: all cores
   std::filesystem::path out;                 // empty: runs/<experiment>-<timestamp>
   std::vector<std::string> settings;         // KEY=VALUE
+  std::filesystem::path cache;               // empty: <out>/deps (dependency experiments' runs)
 };
 
 int run_command(const RunOptions& options);

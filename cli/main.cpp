@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)");
   run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
+  run_cmd->add_option("--cache", run.cache,
+                      "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");
   run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off)");
 
   ExportOptions exp;

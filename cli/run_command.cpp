@@ -1,8 +1,11 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <functional>
 #include <iostream>
+#include <memory>
+#include <variant>
 #include <optional>
 #include <vector>
 
@@ -164,6 +167,96 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   return kExitOk;
 }
 
+// Runs every experiment whose evolved controllers `spec` uses (with the same command-line
+// overrides) into `cache`/<experiment>-<hash>, or reuses a finished run there, and fills
+// the FixedController genomes with the best genome over its runs. Dependencies of
+// dependencies first. Prints what it does; false after printing an error.
+bool prepare_dependencies(eval::ExperimentSpec& spec, const compiler::CompileResult& compiled, const RunOptions& o,
+                          const std::filesystem::path& cache, const std::filesystem::path& script, int depth = 0) {
+  if (spec.dependencies.empty()) return true;
+  if (depth > 64) {
+    fmt::print(stderr, "esc: error: dependencies of `{}` nest too deeply\n", spec.name);
+    return false;
+  }
+  if (dist::MpiSession::current() != nullptr && dist::MpiSession::current()->active()) {
+    fmt::print(stderr, "esc: error: `{}` uses evolved controllers of other experiments; run it without MPI\n",
+               spec.name);
+    return false;
+  }
+  const std::vector<store::SourceFile> sources = sources_of(compiled);
+  for (const eval::Dependency& dep : spec.dependencies) {
+    const auto found = std::find_if(compiled.all_experiments.begin(), compiled.all_experiments.end(),
+                                    [&](const eval::ExperimentSpec& e) { return e.name == dep.experiment; });
+    if (found == compiled.all_experiments.end()) {
+      fmt::print(stderr, "esc: error: experiment `{}` (a dependency of `{}`) was not compiled\n", dep.experiment,
+                 spec.name);
+      return false;
+    }
+    eval::ExperimentSpec d = *found;
+    if (!apply_overrides(o, d)) return false;
+    if (!prepare_dependencies(d, compiled, o, cache, script, depth + 1)) return false;
+    // Content key: the sources, the experiment and every resolved setting.
+    std::string key = d.name;
+    for (const auto& [k, v] : d.resolved_settings) key += fmt::format("\n{}={}", k, v);
+    const std::filesystem::path dir = cache / fmt::format("{}-{}", d.name, store::campaign_hash(key, sources));
+    bool reuse = false;
+    std::error_code ec;
+    if (std::filesystem::exists(dir / "esc.db", ec)) {
+      try {
+        reuse = store::ResultsDb::open(dir, true).load_single().finished();
+      } catch (const store::StoreError&) {
+        reuse = false;
+      }
+      if (!reuse) {
+        fmt::print("esc: dependency {}: {} is incomplete; running it again\n", d.name, dir.string());
+        std::filesystem::remove_all(dir);
+      }
+    }
+    if (reuse) {
+      fmt::print("esc: dependency {}: reused {}\n", d.name, dir.string());
+    } else {
+      fmt::print("esc: dependency {}: running into {}\n", d.name, dir.string());
+      store::LaunchInfo launch;
+      launch.script = std::filesystem::absolute(script).lexically_normal();
+      launch.overrides = overrides_json(o);
+      launch.software_version = ESC_VERSION_STRING;
+      std::filesystem::create_directories(cache);
+      const int rc = run_everywhere(
+          d, {o.threads, nullptr, true}, [&] { return store::RunDirectory(dir, d, sources, launch); }, 0, dir);
+      if (rc != kExitOk) return false;
+    }
+    const store::StoredExperiment stored = store::ResultsDb::open(dir, true).load_single();
+    const auto sc = std::find_if(stored.controllers.begin(), stored.controllers.end(),
+                                 [&](const store::StoredController& c) { return c.name == dep.controller; });
+    const auto ctl = std::find_if(d.controllers.begin(), d.controllers.end(),
+                                  [&](const control::ControllerSpec& c) { return c.name == dep.controller; });
+    if (sc == stored.controllers.end() || sc->finished.empty() || ctl == d.controllers.end()) {
+      fmt::print(stderr, "esc: error: {} holds no finished run of controller `{}`\n", dir.string(), dep.controller);
+      return false;
+    }
+    const eval::RunResult* best = &sc->finished.front();
+    for (const eval::RunResult& r : sc->finished)
+      if (r.best_fitness > best->best_fitness) best = &r;
+    auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
+    if (best->best_genome.size() != frozen->genome_size()) {
+      fmt::print(stderr, "esc: error: {}: the best genome of `{}` has {} genes, expected {}\n", dir.string(),
+                 dep.controller, best->best_genome.size(), frozen->genome_size());
+      return false;
+    }
+    fmt::print("esc: dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})\n",
+               d.name, dep.controller, sc->finished.size(), sc->finished.size() == 1 ? "" : "s", best->best_fitness,
+               best->run + 1);
+    for (const auto& [ci, bi] : dep.targets) {
+      if (ci >= spec.controllers.size() || bi >= spec.controllers[ci].behaviors.size()) continue;
+      auto* fixed = std::get_if<control::FixedController>(&spec.controllers[ci].behaviors[bi].what);
+      if (fixed == nullptr) continue;
+      fixed->spec = frozen;
+      fixed->genome = best->best_genome;
+    }
+  }
+  return true;
+}
+
 int resume_command(const RunOptions& o) {
   if (o.runs || o.generations || o.seed || !o.settings.empty() || !o.experiment.empty() || !o.out.empty()) {
     fmt::print(stderr, "esc: error: --resume continues a run with its own settings: --runs, --generations, --seed, "
@@ -194,6 +287,8 @@ int resume_command(const RunOptions& o) {
     throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", o.resume.string(), e.what()));
   }
   if (!apply_overrides(replay, *spec)) return kExitBadInput;
+  if (!prepare_dependencies(*spec, compiled, replay, o.cache.empty() ? o.resume / "deps" : o.cache, script))
+    return kExitBadInput;
 
   const std::vector<store::SourceFile> sources = sources_of(compiled);
   const std::string hash = store::campaign_hash(spec->name, sources);
@@ -244,6 +339,8 @@ int run_command(const RunOptions& o) {
   if (!apply_overrides(o, *spec)) return kExitBadInput;
 
   const std::filesystem::path out = o.out.empty() ? default_out(spec->name) : o.out;
+  if (!prepare_dependencies(*spec, compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file))
+    return kExitBadInput;
   store::LaunchInfo launch;
   launch.script = std::filesystem::absolute(o.file).lexically_normal();
   launch.overrides = overrides_json(o);

@@ -122,6 +122,9 @@ struct RobotDecl : DeclHead {
 };
 
 struct BehaviorDecl : DeclHead {
+  // `behavior avoid = evolved from experiment E controller C`: no parameters or body.
+  bool evolved = false;
+  Name from_experiment, from_controller;
   std::vector<Name> params;
   Name body_fn;                     // `wheels`
   std::vector<ExprPtr> body_args;

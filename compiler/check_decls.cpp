@@ -1,6 +1,8 @@
 // Names and the lowering of arenas, robots, behaviors, fitness functions and controllers.
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -106,6 +108,99 @@ void Model::check_all() {
     for (const auto& d : m->fitnesses) (void)fitness(d);
     for (const auto& d : m->controllers) (void)controller(d);
   }
+  check_dependency_cycles();
+}
+
+// ---- evolved behaviors --------------------------------------------------------------
+
+const std::optional<Model::EvolvedRef>& Model::evolved(const ast::BehaviorDecl& d) {
+  if (auto it = evolved_.find(&d); it != evolved_.end()) return it->second;
+  auto& slot = evolved_[&d];
+  if (d.poisoned || !d.evolved) return slot;
+  const Symbol* xs = lookup(d.from_experiment, DeclKind::Experiment);
+  if (xs == nullptr) return slot;
+  const auto* xd = static_cast<const ast::ExperimentDecl*>(xs->decl);
+  std::vector<std::string> compared;
+  const ast::Name* found = nullptr;
+  for (const ast::ExpItem& item : xd->items)
+    if (item.kind == ast::ExpItem::Kind::Compare)
+      for (const ast::Name& n : item.refs) {
+        compared.push_back(n.text);
+        if (n.text == d.from_controller.text && found == nullptr) found = &n;
+      }
+  if (d.from_controller.text.empty()) return slot;
+  if (found == nullptr) {
+    std::string msg = fmt::format("experiment `{}` does not compare a controller `{}`", d.from_experiment.text,
+                                  d.from_controller.text);
+    const auto best = closest(d.from_controller.text, compared);
+    if (best) msg += fmt::format("; did you mean `{}`?", *best);
+    Diagnostic& diag = sink_.error(d.from_controller.where, msg);
+    diag.notes.emplace_back(xd->name.where, fmt::format("`{}` is declared here", d.from_experiment.text));
+    if (!best && !compared.empty())
+      diag.help.push_back(fmt::format("`{}` compares {}", d.from_experiment.text, quoted_list(compared, ", ")));
+    return slot;
+  }
+  const Symbol* cs = lookup(d.from_controller, DeclKind::Controller);
+  if (cs == nullptr) return slot;
+  slot = EvolvedRef{xd, static_cast<const ast::ControllerDecl*>(cs->decl)};
+  return slot;
+}
+
+void Model::check_dependency_cycles() {
+  // Edges: experiment -> the experiments whose evolved controllers its controllers use.
+  struct Edge {
+    const ast::ExperimentDecl* to;
+    const ast::BehaviorDecl* via;
+  };
+  std::map<const ast::ExperimentDecl*, std::vector<Edge>> edges;
+  std::vector<const ast::ExperimentDecl*> all;
+  for (const ast::Module* m : modules_)
+    for (const auto& x : m->experiments) {
+      all.push_back(&x);
+      auto& out = edges[&x];
+      for (const ast::ExpItem& item : x.items) {
+        if (item.kind != ast::ExpItem::Kind::Compare) continue;
+        for (const ast::Name& ref : item.refs) {
+          const auto it = symbols_.find(ref.text);
+          if (it == symbols_.end() || it->second.kind != DeclKind::Controller) continue;
+          const auto* cd = static_cast<const ast::ControllerDecl*>(it->second.decl);
+          for (const ast::SupervisedRef& r : cd->behaviors) {
+            const auto bt = symbols_.find(r.name.text);
+            if (bt == symbols_.end() || bt->second.kind != DeclKind::Behavior) continue;
+            const auto* bd = static_cast<const ast::BehaviorDecl*>(bt->second.decl);
+            if (!bd->evolved) continue;
+            if (const auto& e = evolved(*bd)) out.push_back({e->experiment, bd});
+          }
+        }
+      }
+    }
+  std::map<const ast::ExperimentDecl*, int> state;   // 0 new, 1 on the stack, 2 done
+  std::vector<const ast::ExperimentDecl*> stack;
+  std::set<std::set<const ast::ExperimentDecl*>> reported;
+  std::function<void(const ast::ExperimentDecl*)> visit = [&](const ast::ExperimentDecl* x) {
+    state[x] = 1;
+    stack.push_back(x);
+    for (const Edge& e : edges[x]) {
+      if (state[e.to] == 1) {
+        const auto from = std::find(stack.begin(), stack.end(), e.to);
+        std::set<const ast::ExperimentDecl*> members(from, stack.end());
+        if (!reported.insert(members).second) continue;
+        std::string path;
+        for (auto it = from; it != stack.end(); ++it) path += fmt::format("`{}` -> ", (*it)->name.text);
+        path += fmt::format("`{}`", e.to->name.text);
+        Diagnostic& d = sink_.error(e.via->from_experiment.where,
+                                    fmt::format("experiments depend on each other's evolved controllers in a cycle: {}",
+                                                path));
+        d.help.push_back("an experiment can use the evolved controllers only of experiments that do not use its own");
+      } else if (state[e.to] == 0 && stack.size() < 1000) {
+        visit(e.to);
+      }
+    }
+    stack.pop_back();
+    state[x] = 2;
+  };
+  for (const ast::ExperimentDecl* x : all)
+    if (state[x] == 0) visit(x);
 }
 
 // ---- arenas -------------------------------------------------------------------------
@@ -449,6 +544,10 @@ const std::optional<control::Behavior>& Model::behavior(const ast::BehaviorDecl&
   if (arena != nullptr && !behavior(d)) return behaviors_[key];   // reported without the arena
   auto& slot = behaviors_[key];
   if (d.poisoned) return slot;
+  if (d.evolved) {   // not a hand-written behavior: see evolved()
+    (void)evolved(d);
+    return slot;
+  }
   const int errors = sink_.errors();
   control::Behavior b;
   b.name = d.name.text;
@@ -620,6 +719,12 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
     const Symbol* s = lookup(a, DeclKind::Behavior);
     if (s == nullptr) continue;
     const auto* bd = static_cast<const ast::BehaviorDecl*>(s->decl);
+    if (bd->evolved) {
+      sink_.error(a.where, fmt::format("`{}` is an evolved controller: it can be a supervisor's behavior, not a "
+                                       "symbolic controller's action", a.text))
+          .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", a.text));
+      continue;
+    }
     const auto& b = behavior(*bd);
     if (b) {
       c.actions.push_back(*b);
@@ -634,6 +739,27 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
       continue;
     }
     const auto* bd = static_cast<const ast::BehaviorDecl*>(s->decl);
+    if (bd->evolved) {
+      if (!r.args.empty()) {
+        sink_.error(r.where, fmt::format("`{}` is an evolved controller and takes no arguments", r.name.text))
+            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", r.name.text));
+        behaviors_ok = false;
+        continue;
+      }
+      const auto& e = evolved(*bd);
+      if (!e) {
+        behaviors_ok = false;
+        continue;
+      }
+      const auto& sub = controller(*e->controller);   // null while in a cycle (reported)
+      if (!sub) {
+        behaviors_ok = false;
+        continue;
+      }
+      c.behaviors.push_back({r.name.text, control::FixedController{
+                                              std::make_shared<const control::ControllerSpec>(*sub), {}}});
+      continue;
+    }
     const auto& b = behavior(*bd);
     if (!b) {
       behaviors_ok = false;

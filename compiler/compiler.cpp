@@ -90,9 +90,13 @@ class Driver {
     for (std::size_t i = 0; i < modules_.size(); ++i)
       if (done.count(i) == 0) model.declare(modules_[i]);
     model.check_all();
-    auto experiments = model.experiments(modules_[main]);
+    std::vector<eval::ExperimentSpec> all;
+    auto experiments = model.experiments(modules_[main], &all);
     result_.diagnostics = std::move(sink_.items());
-    if (result_.ok()) result_.experiments = std::move(experiments);
+    if (result_.ok()) {
+      result_.experiments = std::move(experiments);
+      result_.all_experiments = std::move(all);
+    }
   }
 
  private:
@@ -157,6 +161,7 @@ CompileResult compile_source(std::string_view text, const fs::path& name, const 
     driver.run(text, name);
   } catch (const std::exception& e) {
     result.experiments.clear();
+    result.all_experiments.clear();
     result.diagnostics.push_back(Diagnostic{Severity::Error, SourceRange{name, 0, 0, 1},
                                             fmt::format("internal compiler error: {}", e.what()), {}, {}});
   } catch (...) {

@@ -20,6 +20,9 @@ struct CompileOptions {
 struct CompileResult {
   std::vector<Diagnostic> diagnostics;           // in source order, errors and warnings
   std::vector<eval::ExperimentSpec> experiments; // in declaration order; empty on error
+  // Every experiment of every file read (imported ones included), for the dependencies of
+  // evolved behaviors; empty on error.
+  std::vector<eval::ExperimentSpec> all_experiments;
   SourceMap sources;                             // text of every file read, for rendering
   [[nodiscard]] bool ok() const noexcept;        // no diagnostic of severity Error
 };

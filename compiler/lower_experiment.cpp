@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -316,6 +317,23 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   }
   if (!ok || sink_.errors() != errors) return std::nullopt;
 
+  // Evolved behaviors: which experiment's controller fills which supervised behavior.
+  for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i) {
+    const auto& behaviors = x.controllers[i].behaviors;
+    for (std::size_t j = 0; j < behaviors.size() && j < controller_decls[i]->behaviors.size(); ++j) {
+      if (!std::holds_alternative<control::FixedController>(behaviors[j].what)) continue;
+      const auto it = symbols_.find(controller_decls[i]->behaviors[j].name.text);
+      if (it == symbols_.end() || it->second.kind != DeclKind::Behavior) continue;
+      const auto& e = evolved(*static_cast<const ast::BehaviorDecl*>(it->second.decl));
+      if (!e) continue;
+      const std::string xn = e->experiment->name.text, cn = e->controller->name.text;
+      auto dep = std::find_if(x.dependencies.begin(), x.dependencies.end(),
+                              [&](const eval::Dependency& k) { return k.experiment == xn && k.controller == cn; });
+      if (dep == x.dependencies.end()) dep = x.dependencies.insert(x.dependencies.end(), eval::Dependency{xn, cn, {}});
+      dep->targets.emplace_back(i, j);
+    }
+  }
+
   x.resolved_settings["robot"] = robot_name;
   x.resolved_settings["fitness.step"] = step_text;
   std::string stops;
@@ -326,12 +344,13 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   return slot;
 }
 
-std::vector<eval::ExperimentSpec> Model::experiments(const ast::Module& main) {
+std::vector<eval::ExperimentSpec> Model::experiments(const ast::Module& main, std::vector<eval::ExperimentSpec>* all) {
   std::vector<eval::ExperimentSpec> out;
   // Check every experiment of every file; return those of the main file.
   for (const ast::Module* m : modules_)
     for (const auto& d : m->experiments) {
       auto x = experiment(d);
+      if (all != nullptr && x) all->push_back(*x);
       if (m == &main && x) out.push_back(std::move(*x));
     }
   return out;

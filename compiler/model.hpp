@@ -37,7 +37,9 @@ class Model {
 
   void declare(const ast::Module& m);       // registers names; reports duplicates
   void check_all();                          // lowers every declaration once
-  [[nodiscard]] std::vector<eval::ExperimentSpec> experiments(const ast::Module& main);
+  // The main file's experiments; `all`, when given, receives every experiment of every file.
+  [[nodiscard]] std::vector<eval::ExperimentSpec> experiments(const ast::Module& main,
+                                                              std::vector<eval::ExperimentSpec>* all = nullptr);
 
  private:
   // Looks `ref` up as a `want`; reports unknown names and wrong kinds. Null when it fails
@@ -56,6 +58,15 @@ class Model {
   bool bind_behaviors(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena);
   const std::optional<control::ControllerSpec>& controller(const ast::ControllerDecl& d);
   std::optional<eval::ExperimentSpec> experiment(const ast::ExperimentDecl& d);
+
+  // `behavior b = evolved from experiment E controller C`, resolved (reported once).
+  struct EvolvedRef {
+    const ast::ExperimentDecl* experiment = nullptr;
+    const ast::ControllerDecl* controller = nullptr;
+  };
+  const std::optional<EvolvedRef>& evolved(const ast::BehaviorDecl& d);
+  // Reports every cycle of experiments that use each other's evolved controllers.
+  void check_dependency_cycles();
 
   // Applies `robot { ... }` settings in order; false when one is wrong (reported).
   bool apply_settings(sim::KheperaParams& p, const std::vector<ast::Setting>& settings);
@@ -78,6 +89,7 @@ class Model {
   std::map<const void*, std::optional<control::ControllerSpec>> controllers_;
   std::map<const void*, std::optional<eval::ExperimentSpec>> experiments_;
   std::map<const void*, std::string> robot_names_;
+  std::map<const void*, std::optional<EvolvedRef>> evolved_;
 };
 
 }  // namespace esc::compiler

@@ -350,6 +350,12 @@ class Builder {
   ast::BehaviorDecl behavior(P::BehaviorDeclContext* c, int order) {
     ast::BehaviorDecl b;
     head(b, c, c->name, order);
+    if (c->EVOLVED() != nullptr) {
+      b.evolved = true;
+      if (c->exp != nullptr) b.from_experiment = name(c->exp);
+      if (c->ctl != nullptr) b.from_controller = name(c->ctl);
+      return b;
+    }
     const auto ids = c->ident();
     for (std::size_t i = 1; i < ids.size(); ++i) b.params.push_back(name(ids[i]));
     if (P::CallContext* call = c->body) {

@@ -52,7 +52,11 @@ setting : key=ident value ';'? ;
 value : quantity | ON | OFF | TRUE | FALSE ;
 
 // ---- behaviors ----------------------------------------------------------------------
-behaviorDecl : BEHAVIOR name=ident '(' (ident (',' ident)*)? ')' '{' body=call ';'? '}' ;
+behaviorDecl
+  : BEHAVIOR name=ident '(' (ident (',' ident)*)? ')' '{' body=call ';'? '}'
+  // Another experiment's evolved controller, frozen with the best genome over its runs.
+  | BEHAVIOR name=ident '=' EVOLVED FROM EXPERIMENT exp=ident CONTROLLER ctl=ident ';'?
+  ;
 call : fn=ident '(' (expr (',' expr)*)? ')' ;
 
 // ---- fitness ------------------------------------------------------------------------
@@ -114,7 +118,7 @@ ident
   | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
-  | SUPERVISOR | BEHAVIORS | ON | OFF
+  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -177,6 +181,8 @@ SUPERVISOR : 'supervisor' ;
 BEHAVIORS : 'behaviors' ;
 ON : 'on' ;
 OFF : 'off' ;
+EVOLVED : 'evolved' ;
+FROM : 'from' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;

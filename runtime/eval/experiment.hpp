@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "runtime/control/controller_spec.hpp"
@@ -23,6 +24,16 @@ struct FitnessSpec {
   std::vector<expr::Program> stop_when;
 };
 
+// A supervised behavior that is another experiment's evolved controller
+// (`behavior avoid = evolved from experiment E controller C`): the experiment E must run
+// first; the best genome of C over all its runs fills each target's FixedController.
+struct Dependency {
+  std::string experiment;           // E
+  std::string controller;           // C, one of E's compared controllers
+  // Where to put it: (index in `controllers`, index in that controller's `behaviors`).
+  std::vector<std::pair<std::size_t, std::size_t>> targets;
+};
+
 struct ExperimentSpec {
   std::string name;
   std::string arena_name;
@@ -37,6 +48,8 @@ struct ExperimentSpec {
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
   // Every setting as resolved, for the run directory ("epochs" -> "10", ...).
   std::map<std::string, std::string> resolved_settings;
+  // Evolved behaviors to fill in before running, one per (experiment, controller) used.
+  std::vector<Dependency> dependencies;
 };
 
 }  // namespace esc::eval

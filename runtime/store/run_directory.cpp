@@ -23,7 +23,15 @@ std::string csv_line(const eval::GenerationStats& g) {
 std::pair<fs::path, ResultsDb> create_new(fs::path dir, const eval::ExperimentSpec& spec,
                                           const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
   std::error_code ec;
-  if (fs::exists(dir, ec) && !(fs::is_directory(dir, ec) && fs::is_empty(dir, ec)))
+  // Empty, or holding only `deps/` (the runs of the experiments whose evolved controllers
+  // this one uses, written first by `esc run`).
+  bool fresh = !fs::exists(dir, ec);
+  if (!fresh && fs::is_directory(dir, ec)) {
+    fresh = true;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+      if (entry.path().filename() != "deps") fresh = false;
+  }
+  if (!fresh)
     throw std::runtime_error(fmt::format(
         "output directory `{}` already exists and is not empty; results are never overwritten: "
         "choose another --out or remove it", dir.string()));

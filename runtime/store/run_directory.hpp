@@ -22,8 +22,8 @@ namespace esc::store {
 
 class RunDirectory final : public eval::CampaignListener {
  public:
-  // Creates `dir` and its database. Throws std::runtime_error if it exists and is not
-  // empty (results are never overwritten) or cannot be created.
+  // Creates `dir` and its database. Throws std::runtime_error if it exists and holds
+  // anything but a `deps/` directory (results are never overwritten) or cannot be created.
   RunDirectory(std::filesystem::path dir, const eval::ExperimentSpec& spec,
                const std::vector<SourceFile>& sources, const LaunchInfo& launch = {});
 

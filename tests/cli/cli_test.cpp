@@ -132,4 +132,38 @@ TEST(Cli, BenchEstimatesACampaignFromMeasuredRates) {
   EXPECT_NE(o.output.find("core-hours"), std::string::npos);
 }
 
+TEST(Cli, EvolvedBehaviorsRunTheirExperimentFirstAndReuseIt) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
+  const fs::path out = scratch("evolved");
+  Outcome o = esc("run " + script + " --experiment supervised --threads 2 --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("esc: dependency basic: running into"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("controller CC frozen with the best genome of 2 runs"), std::string::npos) << o.output;
+  ASSERT_TRUE(fs::is_directory(out / "deps"));
+  fs::path dep;
+  for (const auto& e : fs::directory_iterator(out / "deps")) dep = e.path();
+  EXPECT_EQ(dep.filename().string().rfind("basic-", 0), 0u) << dep;
+  const auto basic = read_json(dep / "summary.json");
+  EXPECT_EQ(basic["experiment"], "basic");
+  EXPECT_EQ(basic["controllers"]["CC"]["runs"].size(), 2U);
+  const auto top = read_json(out / "summary.json");
+  EXPECT_EQ(top["experiment"], "supervised");
+  EXPECT_EQ(top["controllers"]["SV"]["runs"].size(), 2U);
+
+  // A shared cache: the second run reuses the first one's dependency run.
+  const fs::path cache = scratch("evolved-cache");
+  o = esc("run " + script + " --experiment supervised --runs 1 --out " + scratch("evolved-1").string() +
+          " --cache " + cache.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("running into"), std::string::npos) << o.output;
+  const fs::path second = scratch("evolved-2");
+  o = esc("run " + script + " --experiment supervised --runs 1 --out " + second.string() + " --cache " +
+          cache.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("esc: dependency basic: reused"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("running into"), std::string::npos) << o.output;
+  EXPECT_TRUE(fs::exists(second / "summary.json"));
+  EXPECT_FALSE(fs::exists(second / "deps"));
+}
+
 }  // namespace
