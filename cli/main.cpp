@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   using namespace esc::cli;
   // Under mpirun every rank runs this same command; a plain process never starts MPI.
   const esc::dist::MpiSession mpi(argc, argv);
+  // Ranges with bounds a person can read in the error message.
+  const CLI::Range kAtLeastOne(1, 1'000'000'000, "at least 1");
+  const CLI::Range kThreads(0, 4096, "0 (all cores) to 4096");
   CLI::App app{"esc: evolutionary robotics experiments written as scripts"};
   app.require_subcommand(1);
   app.set_version_flag("--version", ESC_VERSION);
@@ -26,10 +29,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("FILE", run.file, "script file (with --resume: default the stored script path)");
   run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this directory");
   run_cmd->add_option("--experiment", run.experiment, "experiment to run (default: the first in the file)");
-  run_cmd->add_option("--runs", run.runs, "independent runs per controller")->check(CLI::PositiveNumber);
-  run_cmd->add_option("--generations", run.generations, "generations per run")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--runs", run.runs, "independent runs per controller")->check(kAtLeastOne);
+  run_cmd->add_option("--generations", run.generations, "generations per run")->check(kAtLeastOne);
   run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)");
-  run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(kThreads);
   run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
   run_cmd->add_option("--cache", run.cache,
                       "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");
@@ -50,7 +53,7 @@ int main(int argc, char** argv) {
   BenchOptions bench;
   auto* bench_cmd = app.add_subcommand("bench", "measure control steps per second and thread scaling");
   bench_cmd->add_option("--threads", bench.max_threads, "largest thread count (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kThreads);
   bench_cmd->add_option("--min-time", bench.min_time_s, "seconds per benchmark")->check(CLI::PositiveNumber);
   bench_cmd->add_option("--campaign", bench.campaign,
                         "estimate the cost of every experiment of a script from measured rates");

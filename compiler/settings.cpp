@@ -9,6 +9,7 @@
 #include "compiler/compiler.hpp"
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
+#include "runtime/sim/validate.hpp"
 
 namespace esc::compiler {
 
@@ -153,6 +154,14 @@ std::string check_robot(const sim::KheperaParams& p) {
   if (p.wheel_base_m > 2 * p.body_radius_m)
     return fmt::format("the wheel base ({} m) is wider than the body ({} m across)", number_text(p.wheel_base_m),
                        number_text(2 * p.body_radius_m));
+  // The contact solver only sees walls a limited distance ahead of the moving body.
+  const double travel_m = p.motor.max_speed_mps * p.control_step_s / p.physics_substeps;
+  if (travel_m > sim::kMaxTravelPerSubstep_m) {
+    const auto needed = static_cast<int>(std::ceil(p.motor.max_speed_mps * p.control_step_s / sim::kMaxTravelPerSubstep_m));
+    return fmt::format("at full speed the robot moves {} mm per physics substep, more than the {} mm the contact "
+                       "solver looks ahead: use `substeps {}` or more, or a lower `max_speed`",
+                       number_text(travel_m * 1000), number_text(sim::kMaxTravelPerSubstep_m * 1000), needed);
+  }
   return {};
 }
 
