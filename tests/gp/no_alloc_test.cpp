@@ -1,6 +1,5 @@
-// TreeController::step and FlatProgram::run must not allocate. The global operator new is
-// replaced in this file to count calls while a flag is set (nothing here uses Eigen or
-// malloc directly).
+// TreeController::step and FlatProgram::run must not allocate (allocations counted by
+// tests/support/allocation_counter.hpp).
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -10,30 +9,8 @@
 #include "runtime/control/tree_controller.hpp"
 #include "runtime/evo/gp/init.hpp"
 #include "tests/gp/helpers.hpp"
+#include "tests/support/allocation_counter.hpp"
 
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_news{0};
-
-void* counted_new(std::size_t n) {
-  if (g_counting.load(std::memory_order_relaxed)) g_news.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return counted_new(n); }
-void* operator new[](std::size_t n) { return counted_new(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try { return counted_new(n); } catch (...) { return nullptr; }
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  try { return counted_new(n); } catch (...) { return nullptr; }
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace esc::control {
 namespace {
