@@ -184,6 +184,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
     cr.name = c.name;
     cr.architecture = c.architecture();
     cr.genome_size = c.genome_size();
+    cr.choices = c.choice_names();
     for (int run = 0; run < spec.runs; ++run) {
       if (const RunResult* done = find_finished(options.resume, c.name, run)) {
         cr.runs.push_back(*done);

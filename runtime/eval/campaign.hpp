@@ -62,6 +62,7 @@ struct ControllerResult {
   std::string architecture;
   std::size_t genome_size = 0;
   std::vector<RunResult> runs;
+  std::vector<std::string> choices;   // names of the actions or behaviors (RunResult::action_usage)
 };
 
 struct CampaignResult {

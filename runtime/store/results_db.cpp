@@ -561,7 +561,7 @@ eval::CampaignResult StoredExperiment::result() const {
   r.seed = seed;
   for (const StoredController& c : controllers) {
     if (c.finished.empty()) continue;
-    r.controllers.push_back({c.name, c.architecture, c.genome_size, c.finished});
+    r.controllers.push_back({c.name, c.architecture, c.genome_size, c.finished, c.actions});
   }
   return r;
 }

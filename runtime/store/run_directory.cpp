@@ -157,7 +157,8 @@ void RunDirectory::run_done(const control::ControllerSpec& controller, const eva
   fs::create_directories(dir_ / controller.name);
   write_best(controller.name, controller.architecture(), run);
   if (partial_.controllers.empty() || partial_.controllers.back().name != controller.name)
-    partial_.controllers.push_back({controller.name, controller.architecture(), controller.genome_size(), {}});
+    partial_.controllers.push_back(
+        {controller.name, controller.architecture(), controller.genome_size(), {}, controller.choice_names()});
   partial_.controllers.back().runs.push_back(run);
   write_summary();
 }

@@ -15,8 +15,15 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
         mean.push_back(g.mean);
         sd.push_back(g.sd);
       }
-      runs.push_back({{"run", r.run}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
-                      {"best", best}, {"mean", mean}, {"sd", sd}});
+      nlohmann::ordered_json run = {{"run", r.run}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
+                                    {"best", best}, {"mean", mean}, {"sd", sd}};
+      // Steps per action or behavior in the run's best evaluation (symbolic heads, supervisors).
+      if (!r.action_usage.empty() && r.action_usage.size() == c.choices.size()) {
+        nlohmann::ordered_json usage = nlohmann::ordered_json::object();
+        for (std::size_t i = 0; i < c.choices.size(); ++i) usage[c.choices[i]] = r.action_usage[i];
+        run["behavior_usage"] = usage;
+      }
+      runs.push_back(run);
     }
     controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"runs", runs}};

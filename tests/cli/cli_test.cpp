@@ -69,6 +69,14 @@ TEST(Cli, RunWritesResultsAndNeverOverwritesThem) {
     EXPECT_TRUE(fs::exists(out / name / "run-02.best.json"));
   }
   EXPECT_TRUE(fs::exists(out / "settings.json"));
+  // The symbolic controller's runs say how often each action acted in their best evaluation.
+  for (const auto& r : s["controllers"]["SC"]["runs"]) {
+    ASSERT_TRUE(r.contains("behavior_usage")) << r.dump();
+    std::int64_t steps = 0;
+    for (const char* action : {"forward", "left", "right"}) steps += r["behavior_usage"][action].get<std::int64_t>();
+    EXPECT_GT(steps, 0);
+  }
+  EXPECT_FALSE(s["controllers"]["CC"]["runs"][0].contains("behavior_usage"));
   const std::string before = read_json(out / "summary.json").dump();
   const Outcome again = esc("run " + tiny() + " --out " + out.string());
   EXPECT_EQ(again.status, 1) << again.output;
