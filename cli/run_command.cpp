@@ -30,6 +30,27 @@ std::string p_text(double p) {
   return p < 1e-4 ? fmt::format("{:.1e}", p) : fmt::format("{:.4f}", p);
 }
 
+// Share of control steps each action or behavior acted, over the best evaluations of all
+// runs (symbolic heads and supervisors).
+void print_usage(const eval::CampaignResult& result) {
+  bool header = false;
+  for (const auto& c : result.controllers) {
+    std::vector<std::int64_t> steps(c.choices.size(), 0);
+    for (const auto& r : c.runs)
+      for (std::size_t i = 0; i < r.action_usage.size() && i < steps.size(); ++i) steps[i] += r.action_usage[i];
+    std::int64_t total = 0;
+    for (std::int64_t n : steps) total += n;
+    if (total == 0) continue;
+    if (!header) fmt::print("\nbehavior usage (share of steps in each run's best evaluation)\n");
+    header = true;
+    std::string line;
+    for (std::size_t i = 0; i < steps.size(); ++i)
+      line += fmt::format("{}{} {:.0f}%", i == 0 ? "" : ", ", c.choices[i],
+                          100.0 * static_cast<double>(steps[i]) / static_cast<double>(total));
+    fmt::print("{:<12} {}\n", c.name, line);
+  }
+}
+
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
   fmt::print("\n{}: {} run{} x {} generations, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
              spec.runs == 1 ? "" : "s", spec.es.generations, spec.epochs, spec.steps, spec.seed);
@@ -44,6 +65,7 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
                c.genome_size, s.mean, s.sd, s.median, s.max);
     finals.push_back(std::move(best));
   }
+  print_usage(result);
   if (result.controllers.size() < 2) return;
   fmt::print("\n{:<26} {:>9} {:>7} {:>10}  {:>9} {:>10}\n", "pairwise (two-sided)", "Welch t", "df", "p",
              "M-W U", "p");

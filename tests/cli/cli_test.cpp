@@ -55,6 +55,7 @@ TEST(Cli, RunWritesResultsAndNeverOverwritesThem) {
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("ETA"), std::string::npos);
   EXPECT_NE(o.output.find("eval/s"), std::string::npos);
+  EXPECT_NE(o.output.find("behavior usage"), std::string::npos) << o.output;
   const auto s = read_json(out / "summary.json");
   EXPECT_EQ(s["experiment"], "tiny");
   EXPECT_EQ(s["seed"], 3);
