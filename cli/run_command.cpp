@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/dependencies.hpp"
 #include "cli/load.hpp"
 #include "cli/progress.hpp"
 #include "runtime/dist/mpi_session.hpp"
@@ -53,7 +54,7 @@ void print_usage(const eval::CampaignResult& result) {
 
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
   fmt::print("\n{}: {} run{} x {} generations, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
-             spec.runs == 1 ? "" : "s", spec.es.generations, spec.epochs, spec.steps, spec.seed);
+             spec.runs == 1 ? "" : "s", spec.generations(), spec.epochs, spec.steps, spec.seed);
   fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
              "best fitness mean ± sd", "median", "best run");
   std::vector<std::vector<double>> finals;
@@ -189,94 +190,22 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   return kExitOk;
 }
 
-// Runs every experiment whose evolved controllers `spec` uses (with the same command-line
-// overrides) into `cache`/<experiment>-<hash>, or reuses a finished run there, and fills
-// the FixedController genomes with the best genome over its runs. Dependencies of
-// dependencies first. Prints what it does; false after printing an error.
-bool prepare_dependencies(eval::ExperimentSpec& spec, const compiler::CompileResult& compiled, const RunOptions& o,
-                          const std::filesystem::path& cache, const std::filesystem::path& script, int depth = 0) {
-  if (spec.dependencies.empty()) return true;
-  if (depth > 64) {
-    fmt::print(stderr, "esc: error: dependencies of `{}` nest too deeply\n", spec.name);
-    return false;
-  }
-  if (dist::MpiSession::current() != nullptr && dist::MpiSession::current()->active()) {
-    fmt::print(stderr, "esc: error: `{}` uses evolved controllers of other experiments; run it without MPI\n",
-               spec.name);
-    return false;
-  }
-  const std::vector<store::SourceFile> sources = sources_of(compiled);
-  for (const eval::Dependency& dep : spec.dependencies) {
-    const auto found = std::find_if(compiled.all_experiments.begin(), compiled.all_experiments.end(),
-                                    [&](const eval::ExperimentSpec& e) { return e.name == dep.experiment; });
-    if (found == compiled.all_experiments.end()) {
-      fmt::print(stderr, "esc: error: experiment `{}` (a dependency of `{}`) was not compiled\n", dep.experiment,
-                 spec.name);
-      return false;
-    }
-    eval::ExperimentSpec d = *found;
-    if (!apply_overrides(o, d)) return false;
-    if (!prepare_dependencies(d, compiled, o, cache, script, depth + 1)) return false;
-    // Content key: the sources, the experiment and every resolved setting.
-    std::string key = d.name;
-    for (const auto& [k, v] : d.resolved_settings) key += fmt::format("\n{}={}", k, v);
-    const std::filesystem::path dir = cache / fmt::format("{}-{}", d.name, store::campaign_hash(key, sources));
-    bool reuse = false;
-    std::error_code ec;
-    if (std::filesystem::exists(dir / "esc.db", ec)) {
-      try {
-        reuse = store::ResultsDb::open(dir, true).load_single().finished();
-      } catch (const store::StoreError&) {
-        reuse = false;
-      }
-      if (!reuse) {
-        fmt::print("esc: dependency {}: {} is incomplete; running it again\n", d.name, dir.string());
-        std::filesystem::remove_all(dir);
-      }
-    }
-    if (reuse) {
-      fmt::print("esc: dependency {}: reused {}\n", d.name, dir.string());
-    } else {
-      fmt::print("esc: dependency {}: running into {}\n", d.name, dir.string());
-      store::LaunchInfo launch;
-      launch.script = std::filesystem::absolute(script).lexically_normal();
-      launch.overrides = overrides_json(o);
-      launch.software_version = ESC_VERSION_STRING;
-      std::filesystem::create_directories(cache);
-      const int rc = run_everywhere(
-          d, {o.threads, nullptr, true}, [&] { return store::RunDirectory(dir, d, sources, launch); }, 0, dir);
-      if (rc != kExitOk) return false;
-    }
-    const store::StoredExperiment stored = store::ResultsDb::open(dir, true).load_single();
-    const auto sc = std::find_if(stored.controllers.begin(), stored.controllers.end(),
-                                 [&](const store::StoredController& c) { return c.name == dep.controller; });
-    const auto ctl = std::find_if(d.controllers.begin(), d.controllers.end(),
-                                  [&](const control::ControllerSpec& c) { return c.name == dep.controller; });
-    if (sc == stored.controllers.end() || sc->finished.empty() || ctl == d.controllers.end()) {
-      fmt::print(stderr, "esc: error: {} holds no finished run of controller `{}`\n", dir.string(), dep.controller);
-      return false;
-    }
-    const eval::RunResult* best = &sc->finished.front();
-    for (const eval::RunResult& r : sc->finished)
-      if (r.best_fitness > best->best_fitness) best = &r;
-    auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
-    if (best->best_genome.size() != frozen->genome_size()) {
-      fmt::print(stderr, "esc: error: {}: the best genome of `{}` has {} genes, expected {}\n", dir.string(),
-                 dep.controller, best->best_genome.size(), frozen->genome_size());
-      return false;
-    }
-    fmt::print("esc: dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})\n",
-               d.name, dep.controller, sc->finished.size(), sc->finished.size() == 1 ? "" : "s", best->best_fitness,
-               best->run + 1);
-    for (const auto& [ci, bi] : dep.targets) {
-      if (ci >= spec.controllers.size() || bi >= spec.controllers[ci].behaviors.size()) continue;
-      auto* fixed = std::get_if<control::FixedController>(&spec.controllers[ci].behaviors[bi].what);
-      if (fixed == nullptr) continue;
-      fixed->spec = frozen;
-      fixed->genome = best->best_genome;
-    }
-  }
-  return true;
+// How dependencies run: with the same command-line overrides and thread count, each into
+// its own directory under `cache`.
+DependencyContext dependency_context(const compiler::CompileResult& compiled, const RunOptions& o,
+                                     const std::filesystem::path& cache, const std::filesystem::path& script) {
+  return DependencyContext{
+      compiled, [&o](eval::ExperimentSpec& d) { return apply_overrides(o, d); },
+      [&compiled, &o, script](const eval::ExperimentSpec& d, const std::filesystem::path& dir) {
+        store::LaunchInfo launch;
+        launch.script = std::filesystem::absolute(script).lexically_normal();
+        launch.overrides = overrides_json(o);
+        launch.software_version = ESC_VERSION_STRING;
+        return run_everywhere(
+            d, {o.threads, nullptr, true}, [&] { return store::RunDirectory(dir, d, sources_of(compiled), launch); }, 0,
+            dir);
+      },
+      cache, ESC_VERSION_STRING};
 }
 
 int resume_command(const RunOptions& o) {
@@ -309,7 +238,8 @@ int resume_command(const RunOptions& o) {
     throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", o.resume.string(), e.what()));
   }
   if (!apply_overrides(replay, *spec)) return kExitBadInput;
-  if (!prepare_dependencies(*spec, compiled, replay, o.cache.empty() ? o.resume / "deps" : o.cache, script))
+  if (!prepare_dependencies(*spec, dependency_context(compiled, replay, o.cache.empty() ? o.resume / "deps" : o.cache,
+                                                      script)))
     return kExitBadInput;
 
   const std::vector<store::SourceFile> sources = sources_of(compiled);
@@ -340,7 +270,7 @@ int resume_command(const RunOptions& o) {
   for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
   if (!follower_rank())
     fmt::print("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
-               static_cast<std::int64_t>(spec->controllers.size()) * spec->runs * spec->es.generations);
+               static_cast<std::int64_t>(spec->controllers.size()) * spec->runs * spec->generations());
   return run_everywhere(
       *spec, {o.threads, &point, true},
       [&] { return store::RunDirectory::resume(o.resume, std::move(db), stored); }, done, o.resume);
@@ -361,7 +291,7 @@ int run_command(const RunOptions& o) {
   if (!apply_overrides(o, *spec)) return kExitBadInput;
 
   const std::filesystem::path out = o.out.empty() ? default_out(spec->name) : o.out;
-  if (!prepare_dependencies(*spec, compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file))
+  if (!prepare_dependencies(*spec, dependency_context(compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file)))
     return kExitBadInput;
   store::LaunchInfo launch;
   launch.script = std::filesystem::absolute(o.file).lexically_normal();
@@ -371,7 +301,7 @@ int run_command(const RunOptions& o) {
     store::RunDirectory dir(out, *spec, sources_of(compiled), launch);
     fmt::print("esc: running {} ({} controller{}, {} run{}, {} generations) into {}\n", spec->name,
                spec->controllers.size(), spec->controllers.size() == 1 ? "" : "s", spec->runs,
-               spec->runs == 1 ? "" : "s", spec->es.generations, out.string());
+               spec->runs == 1 ? "" : "s", spec->generations(), out.string());
     return dir;
   };
   return run_everywhere(*spec, {o.threads, nullptr, true}, open, 0, out);

@@ -122,6 +122,8 @@ struct RobotDecl : DeclHead {
 };
 
 struct BehaviorDecl : DeclHead {
+  // A member of `library L { ... }`: name.text is `L.member`; `member` is the bare name.
+  std::string library, member;
   // `behavior avoid = evolved from experiment E controller C`: no parameters or body.
   bool evolved = false;
   Name from_experiment, from_controller;
@@ -130,6 +132,10 @@ struct BehaviorDecl : DeclHead {
   std::vector<ExprPtr> body_args;
   SourceRange body_where;
   std::vector<std::string> body_text;   // source text of each argument
+};
+
+struct LibraryDecl : DeclHead {
+  std::vector<std::string> members;   // qualified names (`L.member`), in order
 };
 
 struct FitnessTerm {
@@ -180,7 +186,7 @@ struct EsOption {
 };
 
 struct ExpItem {
-  enum class Kind { Arena, Robot, Epochs, Steps, Fitness, Evolve, Runs, Seed, Compare };
+  enum class Kind { Arena, Robot, Epochs, Steps, Fitness, Evolve, Runs, Seed, Compare, StartFrom };
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword
   std::vector<Name> refs;           // arena/robot/fitness/evolve method/compare list
@@ -188,6 +194,7 @@ struct ExpItem {
   std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed
   std::vector<EsOption> options;    // evolve es(...)
   std::optional<Quantity> generations;
+  bool evaluate_only = false;       // StartFrom: `evaluate from ...` rather than `start from ...`
 };
 
 struct ExperimentDecl : DeclHead {
@@ -203,6 +210,7 @@ struct Module {
   std::vector<FitnessDecl> fitnesses;
   std::vector<ControllerDecl> controllers;
   std::vector<ExperimentDecl> experiments;
+  std::vector<LibraryDecl> libraries;
   bool syntax_ok = true;
 };
 

@@ -23,6 +23,7 @@ std::string_view kind_name(DeclKind k) noexcept {
     case DeclKind::Fitness: return "fitness";
     case DeclKind::Controller: return "controller";
     case DeclKind::Experiment: return "experiment";
+    case DeclKind::Library: return "library";
   }
   return "declaration";
 }
@@ -44,7 +45,7 @@ void Model::add(DeclKind k, const ast::DeclHead& h, const void* d) {
   Diagnostic& diag = sink_.error(h.name.where, fmt::format("`{}` is already declared", h.name.text));
   diag.notes.emplace_back(first.head->name.where,
                           fmt::format("first declared here, as {}", article(kind_name(first.kind))));
-  diag.help.push_back("every arena, robot, behavior, fitness, controller and experiment needs its own name");
+  diag.help.push_back("every arena, robot, behavior, fitness, controller, experiment and library needs its own name");
 }
 
 void Model::declare(const ast::Module& m) {
@@ -64,6 +65,7 @@ void Model::declare(const ast::Module& m) {
   collect(DeclKind::Fitness, m.fitnesses);
   collect(DeclKind::Controller, m.controllers);
   collect(DeclKind::Experiment, m.experiments);
+  collect(DeclKind::Library, m.libraries);
   std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& [order, kd] : all) add(kd.first, *kd.second, ptr[kd.second]);
 }
@@ -150,7 +152,7 @@ void Model::check_dependency_cycles() {
   // Edges: experiment -> the experiments whose evolved controllers its controllers use.
   struct Edge {
     const ast::ExperimentDecl* to;
-    const ast::BehaviorDecl* via;
+    const ast::Name* via;   // where the other experiment is named
   };
   std::map<const ast::ExperimentDecl*, std::vector<Edge>> edges;
   std::vector<const ast::ExperimentDecl*> all;
@@ -159,17 +161,21 @@ void Model::check_dependency_cycles() {
       all.push_back(&x);
       auto& out = edges[&x];
       for (const ast::ExpItem& item : x.items) {
+        if (item.kind == ast::ExpItem::Kind::StartFrom) {
+          const auto it = symbols_.find(item.refs[0].text);
+          if (it != symbols_.end() && it->second.kind == DeclKind::Experiment && it->second.decl != &x)
+            out.push_back({static_cast<const ast::ExperimentDecl*>(it->second.decl), &item.refs[0]});
+          continue;
+        }
         if (item.kind != ast::ExpItem::Kind::Compare) continue;
         for (const ast::Name& ref : item.refs) {
           const auto it = symbols_.find(ref.text);
           if (it == symbols_.end() || it->second.kind != DeclKind::Controller) continue;
           const auto* cd = static_cast<const ast::ControllerDecl*>(it->second.decl);
-          for (const ast::SupervisedRef& r : cd->behaviors) {
-            const auto bt = symbols_.find(r.name.text);
-            if (bt == symbols_.end() || bt->second.kind != DeclKind::Behavior) continue;
-            const auto* bd = static_cast<const ast::BehaviorDecl*>(bt->second.decl);
+          for (const Supervised& sv : supervised(*cd)) {
+            const ast::BehaviorDecl* bd = sv.decl;
             if (!bd->evolved) continue;
-            if (const auto& e = evolved(*bd)) out.push_back({e->experiment, bd});
+            if (const auto& e = evolved(*bd)) out.push_back({e->experiment, &bd->from_experiment});
           }
         }
       }
@@ -188,7 +194,7 @@ void Model::check_dependency_cycles() {
         std::string path;
         for (auto it = from; it != stack.end(); ++it) path += fmt::format("`{}` -> ", (*it)->name.text);
         path += fmt::format("`{}`", e.to->name.text);
-        Diagnostic& d = sink_.error(e.via->from_experiment.where,
+        Diagnostic& d = sink_.error(e.via->where,
                                     fmt::format("experiments depend on each other's evolved controllers in a cycle: {}",
                                                 path));
         d.help.push_back("an experiment can use the evolved controllers only of experiments that do not use its own");
@@ -619,6 +625,46 @@ const std::optional<FitnessResult>& Model::fitness(const ast::FitnessDecl& d, co
 
 // ---- controllers --------------------------------------------------------------------
 
+const std::vector<Model::Supervised>& Model::supervised(const ast::ControllerDecl& d) {
+  if (auto it = supervised_.find(&d); it != supervised_.end()) return it->second;
+  auto& out = supervised_[&d];
+  for (const ast::SupervisedRef& r : d.behaviors) {
+    const auto it = symbols_.find(r.name.text);
+    if (it != symbols_.end() && it->second.kind == DeclKind::Library) {
+      const auto* lib = static_cast<const ast::LibraryDecl*>(it->second.decl);
+      if (!r.args.empty()) {
+        sink_.error(r.where, fmt::format("`{}` is a library and takes no arguments", r.name.text))
+            .notes.emplace_back(lib->name.where, fmt::format("`{}` is declared here", r.name.text));
+        supervised_failed_.insert(&d);
+        continue;
+      }
+      if (lib->poisoned) {
+        supervised_failed_.insert(&d);
+        continue;
+      }
+      if (lib->members.empty())
+        sink_.error(r.where, fmt::format("library `{}` has no behaviors", r.name.text))
+            .notes.emplace_back(lib->name.where, fmt::format("`{}` is declared here", r.name.text));
+      for (const std::string& m : lib->members) {
+        const auto mt = symbols_.find(m);
+        if (mt == symbols_.end() || mt->second.kind != DeclKind::Behavior || mt->second.head->poisoned) {
+          supervised_failed_.insert(&d);
+          continue;
+        }
+        out.push_back({&r, static_cast<const ast::BehaviorDecl*>(mt->second.decl)});
+      }
+      continue;
+    }
+    const Symbol* s = lookup(r.name, DeclKind::Behavior);
+    if (s == nullptr) {
+      supervised_failed_.insert(&d);
+      continue;
+    }
+    out.push_back({&r, static_cast<const ast::BehaviorDecl*>(s->decl)});
+  }
+  return out;
+}
+
 const std::optional<control::ControllerSpec>& Model::controller(const ast::ControllerDecl& d) {
   if (auto it = controllers_.find(&d); it != controllers_.end()) return it->second;
   auto& slot = controllers_[&d];
@@ -731,18 +777,17 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
       used.push_back(bd);
     }
   }
-  bool behaviors_ok = true;
-  for (const ast::SupervisedRef& r : d.behaviors) {
-    const Symbol* s = lookup(r.name, DeclKind::Behavior);
-    if (s == nullptr) {
-      behaviors_ok = false;
-      continue;
-    }
-    const auto* bd = static_cast<const ast::BehaviorDecl*>(s->decl);
+  bool behaviors_ok = supervised_failed_.count(&d) == 0;
+  std::map<std::string, int> labels;   // a behavior listed twice (a library repeated) gets `_2`, `_3`, ...
+  for (const Supervised& sv : supervised(d)) {
+    const ast::SupervisedRef& r = *sv.ref;
+    const ast::BehaviorDecl* bd = sv.decl;
+    std::string name = bd->library.empty() ? bd->name.text : bd->member;
+    if (const int n = ++labels[name]; n > 1) name += fmt::format("_{}", n);
     if (bd->evolved) {
       if (!r.args.empty()) {
-        sink_.error(r.where, fmt::format("`{}` is an evolved controller and takes no arguments", r.name.text))
-            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", r.name.text));
+        sink_.error(r.where, fmt::format("`{}` is an evolved controller and takes no arguments", bd->name.text))
+            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
         behaviors_ok = false;
         continue;
       }
@@ -756,7 +801,7 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
         behaviors_ok = false;
         continue;
       }
-      c.behaviors.push_back({r.name.text, control::FixedController{
+      c.behaviors.push_back({name, control::FixedController{
                                               std::make_shared<const control::ControllerSpec>(*sub), {}}});
       continue;
     }
@@ -767,17 +812,17 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
     }
     if (r.args.size() != b->params.size()) {
       Diagnostic& diag = sink_.error(
-          r.where, fmt::format("behavior `{}` takes {} argument{}, found {}", r.name.text, b->params.size(),
+          r.where, fmt::format("behavior `{}` takes {} argument{}, found {}", bd->name.text, b->params.size(),
                                b->params.size() == 1 ? "" : "s", r.args.size()));
-      diag.notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", r.name.text));
+      diag.notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
       if (!b->params.empty())
-        diag.help.push_back(fmt::format("give a constant for each parameter: `{}({})`", r.name.text,
+        diag.help.push_back(fmt::format("give a constant for each parameter: `{}({})`", bd->name.text,
                                         fmt::join(b->params, ", ")));
       behaviors_ok = false;
       continue;
     }
     control::BehaviorCall call{*b, {}};
-    std::string label = r.name.text;
+    std::string label = name;
     std::vector<std::string> shown;
     bool args_ok = true;
     for (const ast::Quantity& q : r.args) {

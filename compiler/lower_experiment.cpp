@@ -86,6 +86,7 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   bool epochs_gave_steps = false;
   const ast::FitnessDecl* fitness_decl = nullptr;
   std::vector<const ast::ControllerDecl*> controller_decls;
+  const ast::ExperimentDecl* start_decl = nullptr;
 
   for (const ast::ExpItem& item : d.items) {
     auto [it, fresh] = first.try_emplace(item.kind, &item);
@@ -103,6 +104,7 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
         case K::Runs: word = "runs"; break;
         case K::Seed: word = "seed"; break;
         case K::Compare: word = "compare"; break;
+        case K::StartFrom: word = item.evaluate_only ? "evaluate from" : "start from"; break;
       }
       sink_.error(item.where, fmt::format("`{}` is already given in this experiment", word))
           .notes.emplace_back(prior->where, "first given here");
@@ -257,6 +259,21 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
               .help.push_back("raise `lambda`, or use `plus` selection");
         break;
       }
+      case K::StartFrom: {
+        const Symbol* s = lookup(item.refs[0], DeclKind::Experiment);
+        if (s == nullptr) {
+          ok = false;
+          break;
+        }
+        start_decl = static_cast<const ast::ExperimentDecl*>(s->decl);
+        if (start_decl == &d) {
+          sink_.error(item.refs[0].where, fmt::format("experiment `{}` cannot start from itself", d.name.text));
+          ok = false;
+          break;
+        }
+        x.start_from = eval::StartFrom{item.refs[0].text, item.evaluate_only, {}};
+        break;
+      }
       case K::Runs:
         if (!item.numbers.empty())
           if (auto n = to_whole(item.numbers[0], "`runs`", 1, kIntMax, sink_)) x.runs = static_cast<int>(*n);
@@ -315,16 +332,16 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)check_fit(*arena_decl, x.arena, x.robot, use);
   }
+  if (start_decl != nullptr) check_start_from(*start_decl, first);
   if (!ok || sink_.errors() != errors) return std::nullopt;
 
   // Evolved behaviors: which experiment's controller fills which supervised behavior.
   for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i) {
     const auto& behaviors = x.controllers[i].behaviors;
-    for (std::size_t j = 0; j < behaviors.size() && j < controller_decls[i]->behaviors.size(); ++j) {
+    const auto& listed = supervised(*controller_decls[i]);
+    for (std::size_t j = 0; j < behaviors.size() && j < listed.size(); ++j) {
       if (!std::holds_alternative<control::FixedController>(behaviors[j].what)) continue;
-      const auto it = symbols_.find(controller_decls[i]->behaviors[j].name.text);
-      if (it == symbols_.end() || it->second.kind != DeclKind::Behavior) continue;
-      const auto& e = evolved(*static_cast<const ast::BehaviorDecl*>(it->second.decl));
+      const auto& e = evolved(*listed[j].decl);
       if (!e) continue;
       const std::string xn = e->experiment->name.text, cn = e->controller->name.text;
       auto dep = std::find_if(x.dependencies.begin(), x.dependencies.end(),
@@ -342,6 +359,32 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   resolve_settings(x);
   slot = x;
   return slot;
+}
+
+void Model::check_start_from(const ast::ExperimentDecl& from,
+                             const std::map<ast::ExpItem::Kind, const ast::ExpItem*>& first) {
+  using K = ast::ExpItem::Kind;
+  const ast::ExpItem& item = *first.at(K::StartFrom);
+  if (item.evaluate_only && first.count(K::Evolve) != 0) {
+    Diagnostic& diag =
+        sink_.error(first.at(K::Evolve)->where, "an experiment that evaluates stored controllers evolves nothing");
+    diag.notes.emplace_back(item.where, "it evaluates stored controllers here");
+    diag.help.push_back(fmt::format("write `start from experiment {}` to evolve on from them", from.name.text));
+  }
+  std::vector<std::string> theirs;
+  for (const ast::ExpItem& i : from.items)
+    if (i.kind == K::Compare)
+      for (const ast::Name& n : i.refs) theirs.push_back(n.text);
+  const auto c = first.find(K::Compare);
+  if (c == first.end()) return;
+  for (const ast::Name& n : c->second->refs) {
+    if (n.text.empty() || std::find(theirs.begin(), theirs.end(), n.text) != theirs.end()) continue;
+    Diagnostic& diag = sink_.error(
+        n.where, fmt::format("experiment `{}` does not compare `{}`: there is no stored `{}` to start from",
+                             from.name.text, n.text, n.text));
+    diag.notes.emplace_back(item.refs[0].where, fmt::format("`{}` is named here", from.name.text));
+    if (!theirs.empty()) diag.help.push_back(fmt::format("`{}` compares {}", from.name.text, quoted_list(theirs, ", ")));
+  }
 }
 
 std::vector<eval::ExperimentSpec> Model::experiments(const ast::Module& main, std::vector<eval::ExperimentSpec>* all) {

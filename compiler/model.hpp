@@ -16,7 +16,7 @@
 
 namespace esc::compiler {
 
-enum class DeclKind { Arena, Robot, Behavior, Fitness, Controller, Experiment };
+enum class DeclKind { Arena, Robot, Behavior, Fitness, Controller, Experiment, Library };
 [[nodiscard]] std::string_view kind_name(DeclKind k) noexcept;
 
 struct Symbol {
@@ -58,6 +58,18 @@ class Model {
   bool bind_behaviors(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena);
   const std::optional<control::ControllerSpec>& controller(const ast::ControllerDecl& d);
   std::optional<eval::ExperimentSpec> experiment(const ast::ExperimentDecl& d);
+  // `start from` / `evaluate from experiment E`: E compares every controller compared
+  // here, and an evaluation evolves nothing (reported).
+  void check_start_from(const ast::ExperimentDecl& from,
+                        const std::map<ast::ExpItem::Kind, const ast::ExpItem*>& first);
+
+  // A supervisor's behavior list with libraries expanded into their members, in order;
+  // entries that fail to resolve are reported (once) and left out.
+  struct Supervised {
+    const ast::SupervisedRef* ref;
+    const ast::BehaviorDecl* decl;
+  };
+  const std::vector<Supervised>& supervised(const ast::ControllerDecl& d);
 
   // `behavior b = evolved from experiment E controller C`, resolved (reported once).
   struct EvolvedRef {
@@ -90,6 +102,8 @@ class Model {
   std::map<const void*, std::optional<eval::ExperimentSpec>> experiments_;
   std::map<const void*, std::string> robot_names_;
   std::map<const void*, std::optional<EvolvedRef>> evolved_;
+  std::map<const void*, std::vector<Supervised>> supervised_;
+  std::set<const void*> supervised_failed_;
 };
 
 }  // namespace esc::compiler

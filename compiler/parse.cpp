@@ -100,6 +100,7 @@ class Builder {
       else if (auto* fi = d->fitnessDecl()) m.fitnesses.push_back(fitness(fi, order));
       else if (auto* co = d->controllerDecl()) m.controllers.push_back(controller(co, order));
       else if (auto* ex = d->experimentDecl()) m.experiments.push_back(experiment(ex, order));
+      else if (auto* li = d->libraryDecl()) library(li, m, order);
     }
   }
 
@@ -369,6 +370,22 @@ class Builder {
     return b;
   }
 
+  // The members become behaviors named `L.member`, declared right after the library.
+  void library(P::LibraryDeclContext* c, ast::Module& m, int& order) {
+    ast::LibraryDecl l;
+    head(l, c, c->name, order);
+    for (P::BehaviorDeclContext* b : c->behaviorDecl()) {
+      if (b == nullptr) continue;
+      ast::BehaviorDecl d = behavior(b, ++order);
+      d.member = d.name.text;
+      d.library = l.name.text;
+      if (!d.name.text.empty()) d.name.text = l.name.text + "." + d.member;
+      l.members.push_back(d.name.text);
+      m.behaviors.push_back(std::move(d));
+    }
+    m.libraries.push_back(std::move(l));
+  }
+
   ast::FitnessDecl fitness(P::FitnessDeclContext* c, int order) {
     ast::FitnessDecl f;
     head(f, c, c->name, order);
@@ -427,7 +444,12 @@ class Builder {
       for (P::SupervisedContext* b : v->supervised()) {
         if (b == nullptr) continue;
         ast::SupervisedRef r;
-        r.name = name(b->ident());
+        r.name = name(b->ident(0));
+        if (b->member != nullptr) {
+          const ast::Name member = name(b->member);
+          r.name.text += "." + member.text;
+          r.name.where = span(b);
+        }
         for (P::QuantityContext* q : b->quantity()) r.args.push_back(quantity(q));
         r.where = span(b);
         d.behaviors.push_back(std::move(r));
@@ -485,6 +507,10 @@ class Builder {
       } else if (auto* se = dynamic_cast<P::ExpSeedContext*>(it)) {
         item.kind = K::Seed;
         item.numbers.push_back(number(se->NUMBER()));
+      } else if (auto* sf = dynamic_cast<P::ExpStartFromContext*>(it)) {
+        item.kind = K::StartFrom;
+        item.evaluate_only = sf->kw != nullptr && sf->kw->getType() == P::EVALUATE;
+        item.refs.push_back(name(sf->ident()));
       } else if (auto* co = dynamic_cast<P::ExpCompareContext*>(it)) {
         item.kind = K::Compare;
         for (P::IdentContext* i : co->ident()) item.refs.push_back(name(i));

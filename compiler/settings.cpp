@@ -186,7 +186,10 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   r["runs"] = std::to_string(spec.runs);
   r["seed"] = std::to_string(spec.seed);
   const evo::EsSettings& es = spec.es;
-  r["generations"] = std::to_string(es.generations);
+  r["generations"] = std::to_string(spec.generations());
+  if (spec.start_from)
+    r["start_from"] = fmt::format("{} from experiment {}", spec.start_from->evaluate_only ? "evaluate" : "start",
+                                  spec.start_from->experiment);
   r["mu"] = std::to_string(es.mu);
   r["lambda"] = std::to_string(es.lambda);
   r["selection"] = es.selection == evo::Selection::Comma ? "comma" : "plus";

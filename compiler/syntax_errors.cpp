@@ -32,7 +32,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::CIRCLE: case EscParser::RECT: case EscParser::VISIBLE: case EscParser::INVISIBLE:
     case EscParser::RECHARGE: case EscParser::SWEEP_CELL: case EscParser::REACH_RADIUS:
     case EscParser::ELMAN: case EscParser::SUPERVISOR: case EscParser::BEHAVIORS: case EscParser::ON:
-    case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM: return true;
+    case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM:
+    case EscParser::EVALUATE: return true;
     default: return false;
   }
 }

@@ -19,6 +19,7 @@ decl
   | fitnessDecl
   | controllerDecl
   | experimentDecl
+  | libraryDecl
   ;
 
 importDecl : IMPORT STRING ';'? ;
@@ -57,6 +58,11 @@ behaviorDecl
   // Another experiment's evolved controller, frozen with the best genome over its runs.
   | BEHAVIOR name=ident '=' EVOLVED FROM EXPERIMENT exp=ident CONTROLLER ctl=ident ';'?
   ;
+// A named group of behaviors; a member `avoid` of `library classical { ... }` is
+// `classical.avoid` elsewhere, and the library's name in a supervisor's list stands for
+// all its members in order.
+libraryDecl : LIBRARY name=ident '{' behaviorDecl* '}' ;
+
 call : fn=ident '(' (expr (',' expr)*)? ')' ;
 
 // ---- fitness ------------------------------------------------------------------------
@@ -73,7 +79,7 @@ controllerExpr
   | SYMBOLIC '(' net=(MLP | ELMAN) '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'   # symbolicController
   | SUPERVISOR '(' net=(MLP | ELMAN) '(' network ')' ',' BEHAVIORS '[' supervised (',' supervised)* ']' ')'   # supervisorController
   ;
-supervised : ident ('(' (quantity (',' quantity)*)? ')')? ;
+supervised : ident ('.' member=ident)? ('(' (quantity (',' quantity)*)? ')')? ;
 network : input (',' input)* ('->' layer)* ;
 input : ident ('[' lo=NUMBER ('..' hi=NUMBER)? ']')? ;
 layer : ident NUMBER? ;
@@ -90,6 +96,9 @@ expItem
   | RUNS NUMBER ';'?                                                              # expRuns
   | SEED NUMBER ';'?                                                              # expSeed
   | COMPARE ident (',' ident)* ';'?                                               # expCompare
+  // Each run takes the best genome of the same run of another experiment (which runs
+  // first): `evaluate` only evaluates it here; `start` evolves on from it.
+  | kw=(START | EVALUATE) FROM EXPERIMENT ident ';'?                              # expStartFrom
   ;
 esOption : ident ('[' lo=quantity ',' hi=quantity ']' | quantity)? ;
 
@@ -118,7 +127,7 @@ ident
   | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
-  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM
+  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -129,6 +138,7 @@ BEHAVIOR : 'behavior' ;
 FITNESS : 'fitness' ;
 CONTROLLER : 'controller' ;
 EXPERIMENT : 'experiment' ;
+LIBRARY : 'library' ;
 IF : 'if' ;
 THEN : 'then' ;
 ELSE : 'else' ;
@@ -183,9 +193,11 @@ ON : 'on' ;
 OFF : 'off' ;
 EVOLVED : 'evolved' ;
 FROM : 'from' ;
+EVALUATE : 'evaluate' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;
+DOT : '.' ;
 LE : '<=' ;
 GE : '>=' ;
 EQ : '==' ;

@@ -82,24 +82,50 @@ struct Recorder final : TraceSink {
   }
 };
 
-RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& es, int run) {
+// The genome run `run` of controller `index` starts from (`start from` / `evaluate from`),
+// or null when it starts from a random population.
+const std::vector<double>* start_genome(const ExperimentSpec& spec, std::size_t index, int run) {
+  if (!spec.start_from || index >= spec.start_from->genomes.size()) return nullptr;
+  const auto& runs = spec.start_from->genomes[index];
+  if (runs.empty()) return nullptr;
+  return &runs[static_cast<std::size_t>(run) % runs.size()];
+}
+
+RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& es, int run,
+                     const std::vector<double>* start) {
   RunState st;
   st.run = run;
   st.seed = run_seed(spec.seed, run);
+  if (start != nullptr) {
+    st.parents = es.seeded(*start);
+    return st;
+  }
   Rng init(st.seed, {static_cast<std::uint64_t>(Stream::Init)});
   st.parents = es.initial(init);
   return st;
 }
 
-RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
-                     const RunState* from, const CampaignOptions& options, Evaluators& ev,
-                     CampaignListener& listener) {
+// Generation g's offspring. A run that starts from a stored genome keeps it unchanged as
+// offspring 0 of generation 0, so that generation measures it in the new setting; a run
+// that only evaluates it has that one offspring.
+std::vector<evo::Individual> offspring_of(const ExperimentSpec& spec, const evo::EvolutionStrategy& es,
+                                          const RunState& st, const std::vector<double>* start, int g) {
+  if (start != nullptr && spec.start_from->evaluate_only) return {st.parents.front()};
+  Rng breed(st.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
+  std::vector<evo::Individual> offspring = es.breed(st.parents, breed);
+  if (start != nullptr && g == 0) offspring.front() = st.parents.front();
+  return offspring;
+}
+
+RunResult evolve_one(const ExperimentSpec& spec, std::size_t index, int run, const RunState* from,
+                     const CampaignOptions& options, Evaluators& ev, CampaignListener& listener) {
+  const control::ControllerSpec& controller = spec.controllers[index];
   const evo::EvolutionStrategy es(spec.es, controller.genome_size());
-  RunState st = from != nullptr ? *from : fresh_state(spec, es, run);
-  for (int g = static_cast<int>(st.generations.size()); g < spec.es.generations; ++g) {
+  const std::vector<double>* seed_genome = start_genome(spec, index, run);
+  RunState st = from != nullptr ? *from : fresh_state(spec, es, run, seed_genome);
+  for (int g = static_cast<int>(st.generations.size()); g < spec.generations(); ++g) {
     const auto start = Clock::now();
-    Rng breed(st.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
-    std::vector<evo::Individual> offspring = es.breed(st.parents, breed);
+    std::vector<evo::Individual> offspring = offspring_of(spec, es, st, seed_genome, g);
     const std::int64_t steps = evaluate_all(controller, offspring, st.seed, g, ev);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     st.generations.push_back(summarise(g, offspring, steps, seconds));
@@ -112,7 +138,7 @@ RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& 
         st.best_index = static_cast<int>(i);
       }
     }
-    st.parents = es.select(st.parents, offspring);
+    if (!spec.start_from || !spec.start_from->evaluate_only) st.parents = es.select(st.parents, offspring);
     listener.generation_done(controller, run, st.generations.back());
     listener.checkpoint(controller, st);
   }
@@ -179,7 +205,8 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
   Workers workers([&spec] { return Evaluator(spec); });
   dist::Distribution distribution;
   Evaluators ev{workers, distribution, static_cast<std::size_t>(threads)};
-  for (const control::ControllerSpec& c : spec.controllers) {
+  for (std::size_t index = 0; index < spec.controllers.size(); ++index) {
+    const control::ControllerSpec& c = spec.controllers[index];
     ControllerResult cr;
     cr.name = c.name;
     cr.architecture = c.architecture();
@@ -191,7 +218,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
         continue;
       }
       const RunState* partial = find_in_progress(options.resume, c.name, run);
-      arena.execute([&] { cr.runs.push_back(evolve_one(spec, c, run, partial, options, ev, listener)); });
+      arena.execute([&] { cr.runs.push_back(evolve_one(spec, index, run, partial, options, ev, listener)); });
       listener.run_done(c, cr.runs.back());
     }
     result.controllers.push_back(std::move(cr));

@@ -63,6 +63,7 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
     sense(rng);
     for (int step = 0; step < s.steps; ++step) {
       observe_clock(epoch, step, s.robot.control_step_s, frame);
+      observe_noise(seed, epoch, step, frame);
       const control::WheelCommand cmd = ctl.step(frame);
       world_.step(cmd.left, cmd.right);
       sense(rng);

@@ -3,6 +3,7 @@
 // from a script. Runtime code sees only this, never the parse tree.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,17 @@ struct Dependency {
   std::vector<std::pair<std::size_t, std::size_t>> targets;
 };
 
+// `start from experiment E` / `evaluate from experiment E`: every run r begins with the
+// best genome of run r (modulo E's run count) of E's controller of the same name, which
+// must run first. Evaluating only, a run is one generation holding that genome alone;
+// starting from it, generation 0's parents are copies of it and offspring 0 is it unchanged.
+struct StartFrom {
+  std::string experiment;
+  bool evaluate_only = false;
+  // Filled in before running: [controller index][E's run] -> best genome of that run.
+  std::vector<std::vector<std::vector<double>>> genomes;
+};
+
 struct ExperimentSpec {
   std::string name;
   std::string arena_name;
@@ -50,6 +62,12 @@ struct ExperimentSpec {
   std::map<std::string, std::string> resolved_settings;
   // Evolved behaviors to fill in before running, one per (experiment, controller) used.
   std::vector<Dependency> dependencies;
+  std::optional<StartFrom> start_from;
+
+  // Generations each run evolves: 1 when only evaluating stored controllers.
+  [[nodiscard]] int generations() const noexcept {
+    return start_from && start_from->evaluate_only ? 1 : es.generations;
+  }
 };
 
 }  // namespace esc::eval

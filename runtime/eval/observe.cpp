@@ -1,5 +1,7 @@
 #include "runtime/eval/observe.hpp"
 
+#include "runtime/core/rng.hpp"
+
 #include <cmath>
 #include <cstddef>
 
@@ -47,6 +49,11 @@ void observe_clock(int epoch, int step, double control_step_s, expr::Frame& fram
   frame[expr::slot::epoch] = epoch;
   frame[expr::slot::step] = step;
   frame[expr::slot::time] = step * control_step_s;
+}
+
+void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) noexcept {
+  const std::uint64_t h = derive_seed(seed, {static_cast<std::uint64_t>(epoch), static_cast<std::uint64_t>(step)});
+  frame[expr::slot::noise] = static_cast<double>(h >> 11) * 0x1.0p-53;
 }
 
 }  // namespace esc::eval

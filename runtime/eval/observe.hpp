@@ -3,6 +3,7 @@
 // programs, behaviors and controllers read. Observables come from the physical state
 // (measured wheel speeds, actual displacement), never from the commands.
 #include <array>
+#include <cstdint>
 
 #include "runtime/expr/observables.hpp"
 #include "runtime/sim/world.hpp"
@@ -21,5 +22,8 @@ void observe_light(const std::array<double, sim::kLightSensors>& light,
 
 // Writes the clock observables: step (from 0), time in seconds, epoch.
 void observe_clock(int epoch, int step, double control_step_s, expr::Frame& frame) noexcept;
+// `noise`: a hash of (evaluation seed, epoch, step), so it draws nothing from the
+// evaluation's streams and costs the same whether a script reads it or not.
+void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) noexcept;
 
 }  // namespace esc::eval

@@ -68,6 +68,19 @@ std::vector<Individual> EvolutionStrategy::initial(Rng& rng) const {
   return pop;
 }
 
+std::vector<Individual> EvolutionStrategy::seeded(std::span<const double> genome) const {
+  require(genome.size() == n_, "seeded needs a genome of " + std::to_string(n_) + " genes, got " +
+                                   std::to_string(genome.size()));
+  const std::size_t n_sigmas = s_.step_sizes == StepSizes::One ? 1 : n_;
+  const double sigma = s_.initial_sigma * (s_.upper - s_.lower);
+  std::vector<Individual> pop(static_cast<std::size_t>(s_.mu));
+  for (Individual& ind : pop) {
+    ind.genes.assign(genome.begin(), genome.end());
+    ind.sigmas.assign(n_sigmas, sigma);
+  }
+  return pop;
+}
+
 std::vector<Individual> EvolutionStrategy::breed(std::span<const Individual> parents,
                                                  Rng& rng) const {
   require(!parents.empty(), "breed needs at least one parent");

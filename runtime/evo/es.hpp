@@ -46,6 +46,10 @@ class EvolutionStrategy {
   // mu individuals, genes uniform in the bounds, sigmas at the initial step size.
   [[nodiscard]] std::vector<Individual> initial(Rng& rng) const;
 
+  // mu copies of `genome` (which must have genome_size() genes), sigmas at the initial
+  // step size: evolution that goes on from a known solution.
+  [[nodiscard]] std::vector<Individual> seeded(std::span<const double> genome) const;
+
   // lambda offspring of `parents` (fitness not yet set). Each parent in turn is the first
   // parent of lambda / mu offspring (the paper's "each parent gives birth to 5"); the
   // mate for recombination is drawn uniformly.

@@ -32,7 +32,8 @@ inline constexpr Slot new_cell = 28;      // 1 on the step the centre enters an 
 inline constexpr Slot cells_visited = 29; // grid cells visited this epoch (start cell included)
 inline constexpr Slot in_zone = 30;       // in_zone[z]: `in(zone)`, 1 when the centre is in zone z
 inline constexpr Slot reached = 38;       // reached[l]: `reached(light)`, 1 on entering light l's reach
-inline constexpr Slot param = 42;         // param[0..3]: parameters of the running behavior (last)
+inline constexpr Slot noise = 42;         // uniform in [0, 1), fresh at every step of an evaluation
+inline constexpr Slot param = 43;         // param[0..3]: parameters of the running behavior (last)
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -45,7 +46,7 @@ inline constexpr Slot kFrameSize = slot::param + kMaxParams;
 
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
-static_assert(slot::reached + kMaxLights == slot::param);
+static_assert(slot::reached + kMaxLights == slot::noise);
 
 using Frame = std::array<double, kFrameSize>;
 
@@ -87,6 +88,8 @@ inline constexpr std::array kObservables = {
                "1 on a step when the centre entered a grid cell not yet visited this epoch"},
     Observable{"cells_visited", slot::cells_visited, 1, false, "count",
                "grid cells visited in this epoch, the start cell included"},
+    Observable{"noise", slot::noise, 1, false, "fraction",
+               "uniform random in [0, 1), new at every step, reproducible from the evaluation's seed"},
 };
 
 // Observables that take an argument naming a thing of the arena, `in(zone)` and

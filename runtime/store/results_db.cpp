@@ -270,7 +270,7 @@ ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spe
       .bind(8, arena_json(spec.arena).dump())
       .bind(9, spec.robot.body_radius_m)
       .bind(10, spec.runs)
-      .bind(11, spec.es.generations)
+      .bind(11, spec.generations())
       .bind(12, spec.epochs)
       .bind(13, spec.steps)
       .run();

@@ -1,0 +1,33 @@
+#pragma once
+// Experiments that need another experiment's results first: supervisors over evolved
+// behaviors (`behavior b = evolved from experiment E controller C`) and runs that start
+// from stored controllers (`start from` / `evaluate from experiment E`). Each experiment
+// they need runs into the cache, or a finished run there is reused. The cache directory
+// is named by a hash of the experiment's fingerprint (runtime/eval/fingerprint.hpp) and
+// the esc version, so a change to what the experiment reads (its arena, fitness,
+// controllers, behaviors, settings, or the genomes of its own dependencies) runs it again,
+// and nothing else does.
+#include <filesystem>
+#include <functional>
+
+#include "compiler/compiler.hpp"
+#include "runtime/eval/experiment.hpp"
+
+namespace esc::cli {
+
+struct DependencyContext {
+  const compiler::CompileResult& compiled;
+  // Applies the command line's overrides to a dependency (as to the main experiment);
+  // false after printing an error.
+  std::function<bool(eval::ExperimentSpec&)> apply_overrides;
+  // Runs an experiment into a new directory; returns the process exit status.
+  std::function<int(const eval::ExperimentSpec&, const std::filesystem::path&)> run_into;
+  std::filesystem::path cache;
+  std::string version;   // part of every cache key
+};
+
+// Fills `spec`'s frozen behaviors and start genomes, running what it needs first
+// (dependencies of dependencies before). Prints what it does; false after printing an error.
+[[nodiscard]] bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context);
+
+}  // namespace esc::cli

@@ -1,0 +1,85 @@
+#include "runtime/eval/fingerprint.hpp"
+
+#include <span>
+#include <variant>
+
+#include <fmt/format.h>
+
+namespace esc::eval {
+
+namespace {
+
+class Writer {
+ public:
+  void line(std::string_view key, std::string_view value) { out_ += fmt::format("{} {}\n", key, value); }
+  void number(std::string_view key, double v) { line(key, fmt::format("{:a}", v)); }
+  void numbers(std::string_view key, std::span<const double> v) {
+    std::string s;
+    for (double x : v) s += fmt::format("{:a} ", x);
+    line(key, s);
+  }
+  void program(std::string_view key, const expr::Program& p) {
+    std::string s;
+    for (const expr::Instr& i : p.code()) s += fmt::format("{}:{}:{:a} ", static_cast<int>(i.op), i.slot, i.value);
+    line(key, s);
+  }
+  void behavior(std::string_view key, const control::Behavior& b) {
+    line(key, fmt::format("{} ({})", b.name, fmt::join(b.params, ", ")));
+    program(fmt::format("{}.left", key), b.left);
+    program(fmt::format("{}.right", key), b.right);
+  }
+  void controller(const std::string& key, const control::ControllerSpec& c) {
+    line(key, fmt::format("{} head {} kind {} activation {} inputs {} hidden {}", c.name, static_cast<int>(c.head),
+                          static_cast<int>(c.mlp.kind), static_cast<int>(c.mlp.hidden_activation),
+                          fmt::join(c.mlp.inputs, ","), fmt::join(c.mlp.hidden, ",")));
+    for (std::size_t i = 0; i < c.actions.size(); ++i) behavior(fmt::format("{}.action{}", key, i), c.actions[i]);
+    for (std::size_t i = 0; i < c.behaviors.size(); ++i) {
+      const std::string k = fmt::format("{}.behavior{}", key, i);
+      line(k, c.behaviors[i].name);
+      if (const auto* call = std::get_if<control::BehaviorCall>(&c.behaviors[i].what)) {
+        behavior(k + ".call", call->behavior);
+        numbers(k + ".args", call->args);
+      } else if (const auto* fixed = std::get_if<control::FixedController>(&c.behaviors[i].what)) {
+        if (fixed->spec) controller(k + ".fixed", *fixed->spec);
+        numbers(k + ".genome", fixed->genome);
+      }
+    }
+  }
+  [[nodiscard]] std::string text() && { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+}  // namespace
+
+std::string fingerprint(const ExperimentSpec& spec) {
+  Writer w;
+  for (const auto& [key, value] : spec.resolved_settings) w.line("setting." + key, value);
+  const sim::ArenaSpec& a = spec.arena;
+  w.numbers("arena.size", std::initializer_list<double>{a.width_m, a.height_m, a.sweep_cell_m, a.reach_radius_m});
+  for (const auto& b : a.boxes)
+    w.numbers("arena.box", std::initializer_list<double>{b.center_m.x, b.center_m.y, b.size_m.x, b.size_m.y, b.angle_rad});
+  for (const auto& c : a.cylinders)
+    w.numbers("arena.cylinder", std::initializer_list<double>{c.center_m.x, c.center_m.y, c.radius_m});
+  if (a.fixed_start)
+    w.numbers("arena.start", std::initializer_list<double>{a.fixed_start->x_m, a.fixed_start->y_m, a.fixed_start->heading_rad});
+  for (const auto& l : a.lights)
+    w.numbers("arena.light", std::initializer_list<double>{l.position_m.x, l.position_m.y, l.height_m, l.intensity,
+                                                           static_cast<double>(l.above_zone)});
+  for (const auto& z : a.zones)
+    w.numbers("arena.zone", std::initializer_list<double>{static_cast<double>(z.shape), z.center_m.x, z.center_m.y,
+                                                          z.radius_m, z.size_m.x, z.size_m.y, z.visible ? 1.0 : 0.0,
+                                                          z.random_position ? 1.0 : 0.0, z.recharge ? 1.0 : 0.0});
+  w.program("fitness.step", spec.fitness.step);
+  for (const auto& p : spec.fitness.stop_when) w.program("fitness.stop", p);
+  for (std::size_t i = 0; i < spec.controllers.size(); ++i)
+    w.controller(fmt::format("controller{}", i), spec.controllers[i]);
+  if (spec.start_from)
+    for (std::size_t c = 0; c < spec.start_from->genomes.size(); ++c)
+      for (std::size_t r = 0; r < spec.start_from->genomes[c].size(); ++r)
+        w.numbers(fmt::format("start.{}.{}", c, r), spec.start_from->genomes[c][r]);
+  return std::move(w).text();
+}
+
+}  // namespace esc::eval
