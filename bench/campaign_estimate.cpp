@@ -37,7 +37,8 @@ std::vector<ControllerCost> estimate_campaign(const std::vector<eval::Experiment
       k.experiment = e.name;
       k.controller = c.name;
       k.architecture = c.architecture();
-      k.evaluations = static_cast<double>(e.runs) * e.es.generations * e.es.lambda;
+      const bool evaluate_only = e.start_from && e.start_from->evaluate_only;
+      k.evaluations = static_cast<double>(e.runs) * e.generations() * (evaluate_only ? 1 : e.es.lambda);
       k.max_steps = k.evaluations * e.epochs * e.steps;
       k.steps_per_second = measure_rate(e, c, seconds_each);
       costs.push_back(k);

@@ -1,6 +1,8 @@
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <thread>
 #include <variant>
@@ -61,14 +63,34 @@ void zero_evolved_genomes(control::ControllerSpec& c) {
     }
 }
 
+// The script's experiments and every experiment they need first (evolved behaviors, start
+// genomes), each once, those needed first before those that need them.
+std::vector<eval::ExperimentSpec> whole_campaign(const compiler::CompileResult& compiled) {
+  std::vector<eval::ExperimentSpec> out;
+  std::set<std::string> seen;
+  std::function<void(const eval::ExperimentSpec&)> add = [&](const eval::ExperimentSpec& e) {
+    if (!seen.insert(e.name).second) return;
+    std::vector<std::string> needs;
+    for (const eval::Dependency& d : e.dependencies) needs.push_back(d.experiment);
+    if (e.start_from) needs.push_back(e.start_from->experiment);
+    for (const std::string& n : needs)
+      for (const eval::ExperimentSpec& x : compiled.all_experiments)
+        if (x.name == n) add(x);
+    out.push_back(e);
+  };
+  for (const eval::ExperimentSpec& e : compiled.experiments) add(e);
+  return out;
+}
+
 int campaign_command(const BenchOptions& o) {
   compiler::CompileResult compiled = load_script(o.campaign);
   if (!compiled.ok()) return kExitBadInput;
-  for (eval::ExperimentSpec& e : compiled.experiments)
+  std::vector<eval::ExperimentSpec> experiments = whole_campaign(compiled);
+  for (eval::ExperimentSpec& e : experiments)
     for (control::ControllerSpec& c : e.controllers) zero_evolved_genomes(c);
   const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
   fmt::print("measuring each controller on one core for {:.1f} s ...\n", o.min_time_s);
-  const auto costs = bench::estimate_campaign(compiled.experiments, o.min_time_s);
+  const auto costs = bench::estimate_campaign(experiments, o.min_time_s);
   fmt::print("\n{:<30} {:<12} {:<10} {:>12} {:>14} {:>12} {:>11}\n", "experiment", "controller", "arch",
              "evaluations", "steps (max)", "steps/s/core", "core-hours");
   double core_seconds = 0.0;

@@ -47,4 +47,19 @@ TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   EXPECT_EQ(slurp(out / "keep.txt"), "precious");
 }
 
+TEST(Mpi, ARunKilledHalfwayResumesUnderThreeRanksBitIdentical) {
+  const fs::path reference = scratch("mpi-resume-reference");
+  const fs::path killed = scratch("mpi-resume-killed");
+  const Outcome a = esc("run " + tiny() + " --generations 30 --seed 5 --threads 1 --out " + reference.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const int seen = run_and_kill({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1"}, killed, 40);
+  ASSERT_GE(seen, 40) << "the run finished before it could be killed";
+  ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
+  const Outcome resumed = shell(mpirun(3) + "run --resume " + killed.string() + " --threads 1");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming"), std::string::npos) << resumed.output;
+  EXPECT_EQ(committed_generations(killed), 120);
+  EXPECT_EQ(slurp(reference / "summary.json"), slurp(killed / "summary.json"));
+}
+
 }  // namespace

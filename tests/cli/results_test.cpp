@@ -1,19 +1,14 @@
 // End-to-end tests of results that last: a run killed with SIGKILL mid-way and resumed ends
 // bit-identical to an uninterrupted run; resume refuses finished, foreign, damaged and
 // changed inputs without touching anything; export; the HTML report in headless Chromium.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -25,15 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 using namespace cli_test;
-
-// Generations committed so far, read through `esc export` while the run writes.
-int committed_generations(const fs::path& dir) {
-  const Outcome o = esc("export " + dir.string() + " --format csv");
-  if (o.status != 0) return 0;
-  int lines = 0;
-  for (char ch : o.output) lines += ch == '\n' ? 1 : 0;
-  return lines - 1;
-}
 
 // Same experiment, same seed: summary.json equal in everything but nothing else.
 void expect_same_summary(const fs::path& a, const fs::path& b) {
@@ -62,27 +48,8 @@ TEST(Results, KilledRunResumesBitIdentical) {
   const fs::path killed = scratch("killed");
   ASSERT_EQ(esc("run " + tiny() + kLonger + "--threads 2 --out " + reference.string()).status, 0);
 
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
-    const std::string out = killed.string();
-    const std::string file = tiny();
-    execl(ESC_BINARY, ESC_BINARY, "run", file.c_str(), "--generations", "30", "--seed", "5", "--threads", "1",
-          "--out", out.c_str(), static_cast<char*>(nullptr));
-    std::_Exit(127);
-  }
-  // Wait until a good part of the campaign is committed, then kill it without warning.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  int seen = 0;
-  while ((seen = committed_generations(killed)) < 40 && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  int status = 0;
-  const bool still_running = waitpid(child, &status, WNOHANG) == 0;
-  kill(child, SIGKILL);
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(still_running) << "the run finished before it could be killed";
-  ASSERT_GE(seen, 40);
+  const int seen = run_and_kill({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1"}, killed, 40);
+  ASSERT_GE(seen, 40) << "the run finished before it could be killed";
   ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
 
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
@@ -147,22 +114,7 @@ TEST(Results, ResumeRefusesWhatItCannotContinue) {
   fs::create_directories(src);
   fs::copy_file(tiny(), src / "tiny.esc");
   const fs::path changed = scratch("changed");
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
-    const std::string out = changed.string();
-    const std::string file = (src / "tiny.esc").string();
-    execl(ESC_BINARY, ESC_BINARY, "run", file.c_str(), "--generations", "200", "--threads", "1", "--out",
-          out.c_str(), static_cast<char*>(nullptr));
-    std::_Exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (committed_generations(changed) < 3 && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
+  ASSERT_GE(run_and_kill({"run", (src / "tiny.esc").string(), "--generations", "200", "--threads", "1"}, changed, 3), 3);
   std::ofstream(src / "tiny.esc", std::ios::app) << "\n// an edit\n";
   const std::string csv = slurp(changed / "CC" / "run-01.csv");
   o = esc("run --resume " + changed.string());
