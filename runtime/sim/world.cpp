@@ -118,7 +118,7 @@ struct World::Impl {
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btRigidBody>> statics;
-  std::unique_ptr<btCylinderShapeZ> body_shape;
+  std::unique_ptr<btSphereShape> body_shape;
   std::unique_ptr<btRigidBody> body;
   std::unique_ptr<btDiscreteDynamicsWorld> world;
 
@@ -170,17 +170,24 @@ struct World::Impl {
 
     // The body, added last so its broadphase handle and unique id are the same after
     // every remove-and-add in reset().
-    body_shape = std::make_unique<btCylinderShapeZ>(
-        btVector3(bt(r.body_radius_m), bt(r.body_radius_m), bt(r.body_height_m / 2)));
-    body_shape->setMargin(kCollisionMargin_m);
+    // The body only moves in the plane z = 0, where every static shape is centred, so a
+    // sphere meets a wall exactly where the vertical cylinder of the same radius would, and
+    // Bullet's sphere-box contact is closed-form (with speculative contacts): no GJK at
+    // every substep the robot spends against a wall. (Sphere-sphere contacts are not
+    // speculative, so obstacle cylinders stay cylinders, met by GJK.)
+    body_shape = std::make_unique<btSphereShape>(bt(r.body_radius_m));
+    // The inertia of the body, a solid cylinder, not of the sphere standing in for it.
     btVector3 inertia(0, 0, 0);
-    body_shape->calculateLocalInertia(bt(r.mass_kg), inertia);
+    btCylinderShapeZ(btVector3(bt(r.body_radius_m), bt(r.body_radius_m), bt(r.body_height_m / 2)))
+        .calculateLocalInertia(bt(r.mass_kg), inertia);
     btRigidBody::btRigidBodyConstructionInfo info(bt(r.mass_kg), nullptr, body_shape.get(), inertia);
     info.m_friction = kContactFriction;
     info.m_restitution = kRestitution;
     body = std::make_unique<btRigidBody>(info);
     body->setLinearFactor(btVector3(1, 1, 0));   // planar: no z motion,
     body->setAngularFactor(btVector3(0, 0, 1));  // rotation about z only
+    // It turns about z only: no gyroscopic torque to integrate.
+    body->setFlags(body->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
     body->setActivationState(DISABLE_DEACTIVATION);
     body->setSleepingThresholds(0, 0);
     world->addRigidBody(body.get());
@@ -319,8 +326,7 @@ struct World::Impl {
   // real body takes its place (reset() removes every trace but the capacities).
   void warm_up() {
     const double half_diagonal = 0.5 * std::hypot(arena.width_m, arena.height_m) + kWallThickness_m;
-    btCylinderShapeZ big(btVector3(bt(half_diagonal), bt(half_diagonal), bt(robot.body_height_m / 2)));
-    big.setMargin(kCollisionMargin_m);
+    btSphereShape big(bt(half_diagonal));
     world->removeRigidBody(body.get());
     body->setCollisionShape(&big);
     btTransform tr;
