@@ -1,5 +1,6 @@
 #include "runtime/sim/world.hpp"
 
+#include <BulletCollision/CollisionDispatch/btSphereBoxCollisionAlgorithm.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -113,6 +114,7 @@ struct World::Impl {
 
   // Bullet; the dynamics world is declared last so it is destroyed first.
   std::unique_ptr<btDefaultCollisionConfiguration> config;
+  std::unique_ptr<btSphereBoxCollisionAlgorithm::CreateFunc> sphere_box, box_sphere;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btAxisSweep3> broadphase;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
@@ -134,6 +136,13 @@ struct World::Impl {
     set_up_floor();
     config = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
+    // Bullet's default configuration sends sphere-box pairs to GJK; its closed-form
+    // sphere-box algorithm is opt-in.
+    sphere_box = std::make_unique<btSphereBoxCollisionAlgorithm::CreateFunc>();
+    box_sphere = std::make_unique<btSphereBoxCollisionAlgorithm::CreateFunc>();
+    box_sphere->m_swapped = true;
+    dispatcher->registerCollisionCreateFunc(SPHERE_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, sphere_box.get());
+    dispatcher->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, SPHERE_SHAPE_PROXYTYPE, box_sphere.get());
     // Manifolds keep points up to gContactBreakingThreshold (0.02 m) apart, not a
     // fraction of the body size, so the solver sees a wall before the body reaches it.
     dispatcher->setDispatcherFlags(dispatcher->getDispatcherFlags() &
