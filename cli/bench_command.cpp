@@ -108,22 +108,64 @@ int campaign_command(const BenchOptions& o) {
   return kExitOk;
 }
 
+
+// The paper's two workloads: obstacle avoidance with the 8-14-6 symbolic controller, and
+// the energy experiment with the 17-5-2 Elman classical controller (IR and light sensors,
+// the accumulator, a recharge zone drawn at random every epoch).
+struct PaperWorkload {
+  std::string script;        // under experiments/
+  std::string controller;    // empty: the 8-14-6 symbolic controller
+  std::string what;          // how the line is labelled
+  compiler::CompileResult compiled;
+  const eval::ExperimentSpec* experiment = nullptr;
+  const control::ControllerSpec* controller_spec = nullptr;
+};
+
+bool load_workload(PaperWorkload& w) {
+  const std::filesystem::path script = std::filesystem::path(ESC_STDLIB_DIR) / w.script;
+  w.compiled = load_script(script);
+  if (!w.compiled.ok() || w.compiled.experiments.empty()) return false;
+  w.experiment = &w.compiled.experiments.front();
+  for (const auto& c : w.experiment->controllers)
+    if (c.name == w.controller) w.controller_spec = &c;
+  if (w.controller.empty()) w.controller_spec = paper_sc(*w.experiment);
+  if (w.controller_spec == nullptr)
+    fmt::print(stderr, "esc: error: {} has no controller `{}` to benchmark\n", script.string(), w.controller);
+  return w.controller_spec != nullptr;
+}
+
+void print_workload(const PaperWorkload& w, const CollectingReporter& reporter, const std::vector<int>& counts) {
+  const std::string name = fmt::format("{}/{}", w.experiment->name, w.controller_spec->name);
+  const auto one = reporter.values.find("step/" + name);
+  if (one != reporter.values.end())
+    fmt::print("{} ({} {}, inertia {}): {:.0f} control steps/s per core ({})\n", name,
+               w.controller_spec->architecture(), w.controller_spec->head == control::Head::Symbolic ? "symbolic" : "classical",
+               w.experiment->robot.motor.inertia ? "on" : "off", one->second.at("steps/s"), w.what);
+  const auto base = reporter.values.find(fmt::format("threads/{}/1/real_time", name));
+  if (base == reporter.values.end()) return;
+  for (int t : counts) {
+    const auto it = reporter.values.find(fmt::format("threads/{}/{}/real_time", name, t));
+    if (it == reporter.values.end()) continue;
+    fmt::print("{:>3} thread{}: {:>9.0f} steps/s  {:>7.1f} evals/s  speed-up {:.2f}x\n", t, t == 1 ? " " : "s",
+               it->second.at("steps/s"), it->second.at("evals/s"), it->second.at("steps/s") / base->second.at("steps/s"));
+  }
+}
+
 }  // namespace
 
 int bench_command(const BenchOptions& o) {
   if (!o.campaign.empty()) return campaign_command(o);
-  const std::filesystem::path script = std::filesystem::path(ESC_STDLIB_DIR) / "paper" / "obstacle_avoidance.esc";
-  compiler::CompileResult compiled = load_script(script);
-  if (!compiled.ok() || compiled.experiments.empty()) return kExitBadInput;
-  const eval::ExperimentSpec& experiment = compiled.experiments.front();
-  const control::ControllerSpec* sc = paper_sc(experiment);
-  if (sc == nullptr) {
-    fmt::print(stderr, "esc: error: {} has no symbolic controller to benchmark\n", script.string());
-    return kExitBadInput;
-  }
+  std::vector<PaperWorkload> workloads(2);
+  workloads[0].script = "paper/obstacle_avoidance.esc";
+  workloads[0].what = "IR, physics, network, fitness";
+  workloads[1].script = "paper/energy.esc";
+  workloads[1].controller = "CC";
+  workloads[1].what = "IR, light, energy, recharge zone, physics, Elman network, fitness";
+  for (PaperWorkload& w : workloads)
+    if (!load_workload(w)) return kExitBadInput;
   const int max_threads = o.max_threads > 0 ? o.max_threads : static_cast<int>(std::thread::hardware_concurrency());
   const std::vector<int> counts = thread_counts(std::max(1, max_threads));
-  bench::register_workload({&experiment, sc}, counts);
+  for (const PaperWorkload& w : workloads) bench::register_workload({w.experiment, w.controller_spec}, counts);
 
   std::vector<std::string> args = {"esc bench", fmt::format("--benchmark_min_time={}", o.min_time_s)};
   args.insert(args.end(), o.benchmark_args.begin(), o.benchmark_args.end());
@@ -136,22 +178,8 @@ int bench_command(const BenchOptions& o) {
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
 
-  const std::string name = fmt::format("{}/{}", experiment.name, sc->name);
   fmt::print("\nmachine: {}, {} hardware threads\n", cpu_model(), std::thread::hardware_concurrency());
-  const auto one = reporter.values.find("step/" + name);
-  if (one != reporter.values.end())
-    fmt::print("{} ({} {}, inertia {}): {:.0f} control steps/s per core (IR, physics, network, fitness)\n",
-               name, sc->architecture(), "symbolic", experiment.robot.motor.inertia ? "on" : "off",
-               one->second["steps/s"]);
-  const auto base = reporter.values.find(fmt::format("threads/{}/1/real_time", name));
-  if (base != reporter.values.end()) {
-    for (int t : counts) {
-      const auto it = reporter.values.find(fmt::format("threads/{}/{}/real_time", name, t));
-      if (it == reporter.values.end()) continue;
-      fmt::print("{:>3} thread{}: {:>9.0f} steps/s  {:>7.1f} evals/s  speed-up {:.2f}x\n", t, t == 1 ? " " : "s",
-                 it->second["steps/s"], it->second["evals/s"], it->second["steps/s"] / base->second["steps/s"]);
-    }
-  }
+  for (const PaperWorkload& w : workloads) print_workload(w, reporter, counts);
   for (const char* size : {"15", "50", "150"}) {
     const auto flat = reporter.values.find(fmt::format("BM_GpFlat/{}", size));
     const auto rec = reporter.values.find(fmt::format("BM_GpRecursive/{}", size));
