@@ -42,7 +42,8 @@ void threads(benchmark::State& state, Workload w) {
   const int t = static_cast<int>(state.range(0));
   tbb::task_arena arena(t);
   tbb::enumerable_thread_specific<eval::Evaluator> workers([&] { return eval::Evaluator(*w.experiment); });
-  const std::size_t batch = 30U * static_cast<std::size_t>(t);   // a generation-sized batch per thread count
+  // One generation of the experiment (lambda evaluations), as a run evaluates it.
+  const auto batch = static_cast<std::size_t>(w.experiment->es.lambda);
   const auto genomes = random_genomes(w, batch);
   std::vector<std::int64_t> steps(batch, 0);
   std::int64_t total_steps = 0;
