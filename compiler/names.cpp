@@ -30,9 +30,10 @@ std::optional<std::string> closest(std::string_view word, const std::vector<std:
   for (const std::string& c : candidates) {
     if (c == word || c.size() > 64) continue;
     const std::size_t d = edit_distance(word, c);
-    // Allow about one edit per three characters, at least one.
+    // Allow about one edit per three characters, at least one, but keep something in
+    // common: `c` is no suggestion for an unknown `d` (but `CC` is for `C`).
     const std::size_t limit = std::max<std::size_t>(1, std::max(word.size(), c.size()) / 3);
-    if (d <= limit && (!best || d < best_d)) {
+    if (d <= limit && d < std::max(word.size(), c.size()) && (!best || d < best_d)) {
       best = c;
       best_d = d;
     }
