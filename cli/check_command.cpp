@@ -15,7 +15,8 @@ int check_command(const std::vector<std::filesystem::path>& files) {
     }
     std::string names;
     for (const auto& e : r.experiments) names += (names.empty() ? "" : ", ") + e.name;
-    fmt::print("{}: ok ({} experiment{}{}{})\n", f.string(), r.experiments.size(),
+    if (!follower_rank())
+      fmt::print("{}: ok ({} experiment{}{}{})\n", f.string(), r.experiments.size(),
                r.experiments.size() == 1 ? "" : "s", names.empty() ? "" : ": ", names);
   }
   return status;

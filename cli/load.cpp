@@ -7,6 +7,8 @@
 
 #include <unistd.h>
 
+#include "runtime/dist/mpi_session.hpp"
+
 namespace esc::cli {
 
 compiler::CompileOptions default_compile_options() {
@@ -20,9 +22,14 @@ compiler::CompileOptions default_compile_options() {
   return o;
 }
 
+bool follower_rank() {
+  const dist::MpiSession* mpi = dist::MpiSession::current();
+  return mpi != nullptr && mpi->active() && !mpi->is_root();
+}
+
 compiler::CompileResult load_script(const std::filesystem::path& file) {
   compiler::CompileResult r = compiler::compile_file(file, default_compile_options());
-  if (!r.diagnostics.empty())
+  if (!r.diagnostics.empty() && !follower_rank())
     std::cerr << compiler::render_all(r.diagnostics, r.sources, isatty(STDERR_FILENO) != 0);
   return r;
 }

@@ -150,12 +150,6 @@ std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compile
 
 bool live_progress() { return isatty(STDOUT_FILENO) != 0; }
 
-// True on the ranks of an MPI job other than rank 0: they follow the campaign silently.
-bool follower_rank() {
-  const dist::MpiSession* mpi = dist::MpiSession::current();
-  return mpi != nullptr && mpi->active() && !mpi->is_root();
-}
-
 // Runs the campaign on every rank of an MPI job, or alone. Rank 0 (or the lone process)
 // opens the run directory with `open`, writes every result and prints the progress and
 // the table; the other ranks evaluate their share of each generation and write nothing.

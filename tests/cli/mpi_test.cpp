@@ -38,6 +38,16 @@ TEST(Mpi, ThreeRanksGiveTheSameSummaryAsOneProcess) {
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
 }
 
+TEST(Mpi, DiagnosticsArePrintedOnceNotOncePerRank) {
+  const std::string bad = std::string(ESC_SOURCE_DIR) + "/tests/bad/unknown_one_letter_name.esc";
+  const Outcome o = shell(mpirun(3) + "check " + bad);
+  EXPECT_NE(o.status, 0);
+  const std::string line = "error: unknown name `q`";
+  const auto first = o.output.find(line);
+  ASSERT_NE(first, std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find(line, first + 1), std::string::npos) << o.output;
+}
+
 TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   const fs::path out = scratch("mpi-exists");
   fs::create_directories(out);
