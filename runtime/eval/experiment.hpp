@@ -1,14 +1,17 @@
 #pragma once
 // A checked, fully resolved experiment: everything a run needs, produced by the compiler
 // from a script. Runtime code sees only this, never the parse tree.
+#include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/evo/es.hpp"
+#include "runtime/evo/gp/gp.hpp"
 #include "runtime/expr/program.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/khepera_params.hpp"
@@ -44,12 +47,36 @@ struct ExperimentSpec {
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;
   std::uint64_t seed = 1;
-  evo::EsSettings es;
+  evo::EsSettings es;                 // evolves the networks
+  // `evolve gp(...)`: evolves the tree controllers (the compiler requires it when one is
+  // compared). Its primitive set is each tree controller's own.
+  std::optional<evo::gp::GpSettings> gp;
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
   // Every setting as resolved, for the run directory ("epochs" -> "10", ...).
   std::map<std::string, std::string> resolved_settings;
   // Evolved behaviors to fill in before running, one per (experiment, controller) used.
   std::vector<Dependency> dependencies;
+
+  // Generations a compared controller evolves for: the GP's for a tree, else the ES's.
+  [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
+    return c.is_tree() && gp ? gp->generations : es.generations;
+  }
+  // The most generations of any compared controller (the ES's when none is compared).
+  [[nodiscard]] int max_generations() const noexcept {
+    int g = controllers.empty() ? es.generations : 0;
+    for (const auto& c : controllers) g = std::max(g, generations_for(c));
+    return g;
+  }
+  // Generations of the whole campaign: every run of every controller.
+  [[nodiscard]] std::int64_t total_generations() const noexcept {
+    std::int64_t n = 0;
+    for (const auto& c : controllers) n += static_cast<std::int64_t>(runs) * generations_for(c);
+    return n;
+  }
+  // The size tables show for a controller: its network's weights, or a tree's node limit.
+  [[nodiscard]] std::size_t genome_size_of(const control::ControllerSpec& c) const noexcept {
+    return c.is_tree() && gp ? static_cast<std::size_t>(gp->max_size) : c.genome_size();
+  }
 };
 
 }  // namespace esc::eval

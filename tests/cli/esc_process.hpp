@@ -44,6 +44,8 @@ inline fs::path scratch(const std::string& name) {
 }
 
 inline std::string tiny() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny.esc"; }
+// A network and two tree controllers, evolved by the ES and by GP (tests/cli/data/tiny_gp.esc).
+inline std::string tiny_gp() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_gp.esc"; }
 
 inline std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -38,6 +38,20 @@ TEST(Mpi, ThreeRanksGiveTheSameSummaryAsOneProcess) {
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
 }
 
+TEST(Mpi, ThreeRanksGiveTheSameGpResultsAsOneProcess) {
+  const fs::path one = scratch("mpi-gp-1");
+  const fs::path three = scratch("mpi-gp-3");
+  const std::string args = "run " + tiny_gp() + " --threads 1 --seed 5 --out ";
+  const Outcome a = esc(args + one.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + three.string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  const auto sa = read_json(one / "summary.json");
+  const auto sb = read_json(three / "summary.json");
+  EXPECT_EQ(results_only(sa), results_only(sb));
+  EXPECT_EQ(sa["controllers"]["GS"]["runs"][1]["best_tree"], sb["controllers"]["GS"]["runs"][1]["best_tree"]);
+}
+
 TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   const fs::path out = scratch("mpi-exists");
   fs::create_directories(out);

@@ -19,41 +19,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 using namespace cli_test;
-
-// Generations committed so far, read through `esc export` while the run writes.
-int committed_generations(const fs::path& dir) {
-  const Outcome o = esc("export " + dir.string() + " --format csv");
-  if (o.status != 0) return 0;
-  int lines = 0;
-  for (char ch : o.output) lines += ch == '\n' ? 1 : 0;
-  return lines - 1;
-}
-
-// Same experiment, same seed: summary.json equal in everything but nothing else.
-void expect_same_summary(const fs::path& a, const fs::path& b) {
-  const auto sa = read_json(a / "summary.json");
-  const auto sb = read_json(b / "summary.json");
-  ASSERT_EQ(sa["controllers"].size(), sb["controllers"].size());
-  for (const auto& [name, c] : sa["controllers"].items()) {
-    const auto& runs_a = c["runs"];
-    const auto& runs_b = sb["controllers"][name]["runs"];
-    ASSERT_EQ(runs_a.size(), runs_b.size()) << name;
-    for (std::size_t r = 0; r < runs_a.size(); ++r) {
-      EXPECT_EQ(runs_a[r]["seed"], runs_b[r]["seed"]);
-      EXPECT_EQ(runs_a[r]["best_fitness"], runs_b[r]["best_fitness"]) << name << " run " << r;
-      EXPECT_EQ(runs_a[r]["best"], runs_b[r]["best"]) << name << " run " << r;
-      EXPECT_EQ(runs_a[r]["mean"], runs_b[r]["mean"]) << name << " run " << r;
-      EXPECT_EQ(runs_a[r]["sd"], runs_b[r]["sd"]) << name << " run " << r;
-    }
-  }
-  EXPECT_EQ(slurp(a / "summary.json"), slurp(b / "summary.json"));
-}
 
 constexpr const char* kLonger = " --generations 30 --seed 5 ";   // 4 x 30 generations, about 2 s
 
@@ -62,27 +34,13 @@ TEST(Results, KilledRunResumesBitIdentical) {
   const fs::path killed = scratch("killed");
   ASSERT_EQ(esc("run " + tiny() + kLonger + "--threads 2 --out " + reference.string()).status, 0);
 
-  const pid_t child = fork();
+  const pid_t child =
+      spawn_esc({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1", "--out", killed.string()});
   ASSERT_GE(child, 0);
-  if (child == 0) {
-    if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
-    const std::string out = killed.string();
-    const std::string file = tiny();
-    execl(ESC_BINARY, ESC_BINARY, "run", file.c_str(), "--generations", "30", "--seed", "5", "--threads", "1",
-          "--out", out.c_str(), static_cast<char*>(nullptr));
-    std::_Exit(127);
-  }
   // Wait until a good part of the campaign is committed, then kill it without warning.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  int seen = 0;
-  while ((seen = committed_generations(killed)) < 40 && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  int status = 0;
-  const bool still_running = waitpid(child, &status, WNOHANG) == 0;
-  kill(child, SIGKILL);
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(still_running) << "the run finished before it could be killed";
-  ASSERT_GE(seen, 40);
+  const Killed k = kill_when_committed(child, killed, 40);
+  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
+  ASSERT_GE(k.seen, 40);
   ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
 
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
@@ -147,16 +105,9 @@ TEST(Results, ResumeRefusesWhatItCannotContinue) {
   fs::create_directories(src);
   fs::copy_file(tiny(), src / "tiny.esc");
   const fs::path changed = scratch("changed");
-  const pid_t child = fork();
+  const pid_t child = spawn_esc(
+      {"run", (src / "tiny.esc").string(), "--generations", "200", "--threads", "1", "--out", changed.string()});
   ASSERT_GE(child, 0);
-  if (child == 0) {
-    if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
-    const std::string out = changed.string();
-    const std::string file = (src / "tiny.esc").string();
-    execl(ESC_BINARY, ESC_BINARY, "run", file.c_str(), "--generations", "200", "--threads", "1", "--out",
-          out.c_str(), static_cast<char*>(nullptr));
-    std::_Exit(127);
-  }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (committed_generations(changed) < 3 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
