@@ -15,7 +15,7 @@ struct ControllerCost {
   std::string experiment;
   std::string controller;
   std::string architecture;
-  double evaluations = 0.0;      // runs x generations x lambda
+  double evaluations = 0.0;      // runs x generations x (lambda, or the GP population for a tree)
   double max_steps = 0.0;        // evaluations x epochs x steps
   double steps_per_second = 0.0; // measured on one core
   [[nodiscard]] double core_seconds() const noexcept { return max_steps / steps_per_second; }

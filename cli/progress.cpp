@@ -28,7 +28,7 @@ ProgressPrinter::ProgressPrinter(const eval::ExperimentSpec& spec, eval::Campaig
     : spec_(&spec),
       next_(&next),
       live_(live),
-      generations_total_(static_cast<std::int64_t>(spec.controllers.size()) * spec.runs * spec.generations()),
+      generations_total_(spec.total_generations()),
       generations_done_(already_done),
       start_(std::chrono::steady_clock::now()) {}
 
@@ -46,13 +46,14 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
     const double percent = 100.0 * static_cast<double>(generations_done_) / static_cast<double>(generations_total_);
     fmt::print("\r\033[K{} {:>3.0f}%  {} run {}/{} gen {}/{}  best {:.2f}  mean {:.2f}  {:.0f} eval/s  ETA {}",
                progress_bar(generations_done_, generations_total_, 24), percent, controller.name, run + 1,
-               spec_->runs, g.generation + 1, spec_->generations(), g.best, g.mean, rate, format_duration(eta));
+               spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best, g.mean, rate,
+               format_duration(eta));
     line_open_ = true;
   } else {
     fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}/{:<4} best {:>9.2f}  mean {:>9.2f}  {:>6.0f} eval/s  "
                "{:>5.0f}k steps/s  ETA {}\n",
-               controller.name, run + 1, spec_->runs, g.generation + 1, spec_->generations(), g.best, g.mean,
-               rate, steps_rate / 1000.0, format_duration(eta));
+               controller.name, run + 1, spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best,
+               g.mean, rate, steps_rate / 1000.0, format_duration(eta));
   }
   std::fflush(stdout);
 }

@@ -52,9 +52,25 @@ void print_usage(const eval::CampaignResult& result) {
   }
 }
 
+// "250 generations", or "250 (ES) / 50 (GP) generations" when the algorithms differ.
+std::string generations_text(const eval::ExperimentSpec& spec) {
+  int es = -1, gp = -1;
+  for (const auto& c : spec.controllers) (c.is_tree() ? gp : es) = spec.generations_for(c);
+  if (es >= 0 && gp >= 0 && es != gp) return fmt::format("{} (ES) / {} (GP) generations", es, gp);
+  return fmt::format("{} generations", spec.max_generations());
+}
+
+// The best tree of each run of the tree controllers, as script code.
+void print_trees(const eval::CampaignResult& result) {
+  for (const auto& c : result.controllers)
+    for (const auto& r : c.runs)
+      if (!r.best_tree.empty())
+        fmt::print("{:<12} run {} best tree (fitness {:.1f}): {}\n", c.name, r.run + 1, r.best_fitness, r.best_tree);
+}
+
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
-  fmt::print("\n{}: {} run{} x {} generations, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
-             spec.runs == 1 ? "" : "s", spec.generations(), spec.epochs, spec.steps, spec.seed);
+  fmt::print("\n{}: {} run{} x {}, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
+             spec.runs == 1 ? "" : "s", generations_text(spec), spec.epochs, spec.steps, spec.seed);
   fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
              "best fitness mean ± sd", "median", "best run");
   std::vector<std::vector<double>> finals;
@@ -67,6 +83,10 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
     finals.push_back(std::move(best));
   }
   print_usage(result);
+  if (std::any_of(spec.controllers.begin(), spec.controllers.end(), [](const auto& c) { return c.is_tree(); })) {
+    fmt::print("\n");
+    print_trees(result);
+  }
   if (result.controllers.size() < 2) return;
   fmt::print("\n{:<26} {:>9} {:>7} {:>10}  {:>9} {:>10}\n", "pairwise (two-sided)", "Welch t", "df", "p",
              "M-W U", "p");
@@ -264,7 +284,7 @@ int resume_command(const RunOptions& o) {
   for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
   if (!follower_rank())
     fmt::print("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
-               static_cast<std::int64_t>(spec->controllers.size()) * spec->runs * spec->generations());
+               spec->total_generations());
   return run_everywhere(
       *spec, {o.threads, &point, true},
       [&] { return store::RunDirectory::resume(o.resume, std::move(db), stored); }, done, o.resume);
@@ -293,9 +313,9 @@ int run_command(const RunOptions& o) {
   launch.software_version = ESC_VERSION_STRING;
   const auto open = [&] {
     store::RunDirectory dir(out, *spec, sources_of(compiled), launch);
-    fmt::print("esc: running {} ({} controller{}, {} run{}, {} generations) into {}\n", spec->name,
+    fmt::print("esc: running {} ({} controller{}, {} run{}, {}) into {}\n", spec->name,
                spec->controllers.size(), spec->controllers.size() == 1 ? "" : "s", spec->runs,
-               spec->runs == 1 ? "" : "s", spec->generations(), out.string());
+               spec->runs == 1 ? "" : "s", generations_text(*spec), out.string());
     return dir;
   };
   return run_everywhere(*spec, {o.threads, nullptr, true}, open, 0, out);

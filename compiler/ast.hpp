@@ -171,11 +171,35 @@ struct ControllerDecl : DeclHead {
   bool symbolic = false;
   bool supervisor = false;
   bool elman = false;
+  // `tree(RESULT, primitives P)`: a GP tree instead of a network. RESULT is `wheels`
+  // (tree_result), `actions [...]` (symbolic) or `behaviors [...]` (supervisor).
+  bool tree = false;
+  Name tree_result;
+  Name primitives;
   std::vector<SupervisedRef> behaviors;
   SourceRange kind_where;
   std::vector<Input> inputs;
   std::vector<Layer> layers;
   std::vector<Name> actions;
+};
+
+// ---- primitive sets: `primitives NAME { functions ... terminals ... }` ----------------
+struct PrimFunction {
+  std::string text;                 // "+", "min", "if", ...
+  SourceRange where;
+};
+struct PrimTerminal {
+  enum class Kind { Observable, Erc, Constant, Bool };
+  Kind kind = Kind::Observable;
+  Name name;                        // Observable; Erc: the word `erc`
+  std::optional<Quantity> lo, hi;   // Observable: `ir[3]` lo only, `ir[0..7]` both; Erc: the range
+  Quantity value;                   // Constant
+  bool flag = false;                // Bool
+  SourceRange where;
+};
+struct PrimitivesDecl : DeclHead {
+  std::vector<PrimFunction> functions;
+  std::vector<PrimTerminal> terminals;
 };
 
 struct EsOption {
@@ -211,6 +235,7 @@ struct Module {
   std::vector<ControllerDecl> controllers;
   std::vector<ExperimentDecl> experiments;
   std::vector<LibraryDecl> libraries;
+  std::vector<PrimitivesDecl> primitives;
   bool syntax_ok = true;
 };
 

@@ -24,6 +24,7 @@ std::string_view kind_name(DeclKind k) noexcept {
     case DeclKind::Controller: return "controller";
     case DeclKind::Experiment: return "experiment";
     case DeclKind::Library: return "library";
+    case DeclKind::Primitives: return "primitive set";
   }
   return "declaration";
 }
@@ -45,7 +46,8 @@ void Model::add(DeclKind k, const ast::DeclHead& h, const void* d) {
   Diagnostic& diag = sink_.error(h.name.where, fmt::format("`{}` is already declared", h.name.text));
   diag.notes.emplace_back(first.head->name.where,
                           fmt::format("first declared here, as {}", article(kind_name(first.kind))));
-  diag.help.push_back("every arena, robot, behavior, fitness, controller, experiment and library needs its own name");
+  diag.help.push_back(
+      "every arena, robot, behavior, fitness, controller, experiment, library and primitive set needs its own name");
 }
 
 void Model::declare(const ast::Module& m) {
@@ -66,6 +68,7 @@ void Model::declare(const ast::Module& m) {
   collect(DeclKind::Controller, m.controllers);
   collect(DeclKind::Experiment, m.experiments);
   collect(DeclKind::Library, m.libraries);
+  collect(DeclKind::Primitives, m.primitives);
   std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& [order, kd] : all) add(kd.first, *kd.second, ptr[kd.second]);
 }
@@ -108,6 +111,7 @@ void Model::check_all() {
     for (const auto& d : m->robots) (void)robot(d);
     for (const auto& d : m->behaviors) (void)behavior(d);
     for (const auto& d : m->fitnesses) (void)fitness(d);
+    for (const auto& d : m->primitives) (void)primitives(d);
     for (const auto& d : m->controllers) (void)controller(d);
   }
   check_dependency_cycles();
@@ -752,7 +756,7 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
                   fmt::format("an Elman network has exactly one hidden layer, found {}", hidden.size()))
           .help.push_back("use `mlp(...)` for several hidden layers");
   }
-  if (!chooses && !has_wheels && sink_.errors() == errors)
+  if (!d.tree && !chooses && !has_wheels && sink_.errors() == errors)
     sink_.error(d.kind_where, "a classical controller must end with `-> wheels`")
         .help.push_back("write `mlp(ir[0..7] -> hidden 20 -> wheels)`");
 
@@ -801,6 +805,13 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
         behaviors_ok = false;
         continue;
       }
+      if (sub->is_tree()) {
+        sink_.error(r.where, fmt::format("`{}` is evolved by tree controller `{}`: evolved trees cannot be "
+                                              "supervised yet, only evolved networks", bd->name.text, sub->name))
+            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
+        behaviors_ok = false;
+        continue;
+      }
       c.behaviors.push_back({name, control::FixedController{
                                               std::make_shared<const control::ControllerSpec>(*sub), {}}});
       continue;
@@ -846,7 +857,10 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
     c.behaviors.push_back({label, std::move(call)});
     used.push_back(bd);
   }
-  if (c.mlp.inputs.empty() && sink_.errors() == errors) sink_.error(d.kind_where, "a controller needs at least one input");
+  if (!d.tree && c.mlp.inputs.empty() && sink_.errors() == errors)
+    sink_.error(d.kind_where, "a controller needs at least one input");
+  if (d.tree && sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok && !lower_tree(d, c))
+    behaviors_ok = false;
   if (sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok) slot = std::move(c);
   return slot;
 }

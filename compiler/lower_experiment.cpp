@@ -87,8 +87,21 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   const ast::FitnessDecl* fitness_decl = nullptr;
   std::vector<const ast::ControllerDecl*> controller_decls;
   const ast::ExperimentDecl* start_decl = nullptr;
+  std::vector<const ast::Name*> compared;   // the names in `compare`, one per controller
+  const ast::ExpItem* gp_item = nullptr;
 
   for (const ast::ExpItem& item : d.items) {
+    // `evolve gp(...)` evolves the trees, beside an `evolve es(...)` for the networks.
+    if (item.kind == K::Evolve && !item.refs.empty() && item.refs[0].text == "gp") {
+      if (gp_item != nullptr) {
+        sink_.error(item.where, "`evolve gp` is already given in this experiment")
+            .notes.emplace_back(gp_item->where, "first given here");
+        continue;
+      }
+      gp_item = &item;
+      lower_gp(item, x);
+      continue;
+    }
     auto [it, fresh] = first.try_emplace(item.kind, &item);
     const bool steps_again = item.kind == K::Steps && epochs_gave_steps;
     if (!fresh || steps_again) {
@@ -176,8 +189,10 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
         const ast::Name& method = item.refs[0];
         if (method.text != "es") {
           std::string msg = fmt::format("unknown evolution method `{}`", method.text);
-          if (closest(method.text, {"es"})) msg += "; did you mean `es`?";
-          sink_.error(method.where, msg).help.push_back("write `evolve es(mu 30, lambda 150, comma) for 250 generations`");
+          if (const auto best = closest(method.text, {"es", "gp"})) msg += fmt::format("; did you mean `{}`?", *best);
+          Diagnostic& diag = sink_.error(method.where, msg);
+          diag.help.push_back("write `evolve es(mu 30, lambda 150, comma) for 250 generations` (networks)");
+          diag.help.push_back("or `evolve gp(population 150, tournament 7) for 50 generations` (tree controllers)");
           break;
         }
         evo::EsSettings& es = x.es;
@@ -302,6 +317,7 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
           } else {
             x.controllers.push_back(*c);
             controller_decls.push_back(cd);
+            compared.push_back(&ref);
           }
         }
         break;
@@ -317,6 +333,10 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
   require(K::Arena, "arena", "arena <name>");
   require(K::Fitness, "fitness", "fitness <name>");
   require(K::Compare, "controllers to compare", "compare <controller>, <controller>");
+  if (ok && sink_.errors() == errors) {
+    const auto es_item = first.find(K::Evolve);
+    check_algorithms(d, x, compared, es_item == first.end() ? nullptr : es_item->second, gp_item);
+  }
 
   // `in(zone)` and `reached(light)` resolve in this experiment's arena.
   if (ok && sink_.errors() == errors && arena_decl != nullptr) {
@@ -332,7 +352,14 @@ std::optional<eval::ExperimentSpec> Model::experiment(const ast::ExperimentDecl&
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)check_fit(*arena_decl, x.arena, x.robot, use);
   }
-  if (start_decl != nullptr) check_start_from(*start_decl, first);
+  if (start_decl != nullptr) {
+    check_start_from(*start_decl, first);
+    for (const control::ControllerSpec& c : x.controllers)
+      if (c.is_tree())
+        sink_.error(first[K::StartFrom]->where,
+                    fmt::format("tree controller `{}` cannot start from stored trees yet; only networks can", c.name))
+            .help.push_back("compare the tree controllers in an experiment of their own");
+  }
   if (!ok || sink_.errors() != errors) return std::nullopt;
 
   // Evolved behaviors: which experiment's controller fills which supervised behavior.

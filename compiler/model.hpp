@@ -16,7 +16,7 @@
 
 namespace esc::compiler {
 
-enum class DeclKind { Arena, Robot, Behavior, Fitness, Controller, Experiment, Library };
+enum class DeclKind { Arena, Robot, Behavior, Fitness, Controller, Experiment, Library, Primitives };
 [[nodiscard]] std::string_view kind_name(DeclKind k) noexcept;
 
 struct Symbol {
@@ -70,6 +70,27 @@ class Model {
     const ast::BehaviorDecl* decl;
   };
   const std::vector<Supervised>& supervised(const ast::ControllerDecl& d);
+
+  // ---- genetic programming (check_gp.cpp) ----
+  // A `primitives` declaration: its functions and terminals, without what a tree's result
+  // adds (wheels, the actions, the behaviors, if-then-else over the result).
+  struct PrimitiveList {
+    std::vector<evo::gp::Primitive> items;
+    bool branches = false;            // `if` is listed
+  };
+  const std::optional<PrimitiveList>& primitives(const ast::PrimitivesDecl& d);
+  // Gives `c` (its head, actions and behaviors lowered) the primitive set of `tree(...)`;
+  // false when that fails (reported).
+  bool lower_tree(const ast::ControllerDecl& d, control::ControllerSpec& c);
+  // `evolve gp(...) [for N generations]` -> x.gp (problems reported).
+  void lower_gp(const ast::ExpItem& item, eval::ExperimentSpec& x);
+  // Every compared controller has its algorithm (`es` for networks, `gp` for trees), and
+  // the GP settings suit every tree's primitives (reported at `compared` / `gp_item`).
+  void check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,
+                        const std::vector<const ast::Name*>& compared, const ast::ExpItem* es_item,
+                        const ast::ExpItem* gp_item);
+  std::map<const void*, std::optional<PrimitiveList>> primitive_lists_;
+  std::set<std::string> reported_sets_;   // unbuildable (set, root) pairs already reported
 
   // `behavior b = evolved from experiment E controller C`, resolved (reported once).
   struct EvolvedRef {

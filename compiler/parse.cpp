@@ -101,6 +101,7 @@ class Builder {
       else if (auto* co = d->controllerDecl()) m.controllers.push_back(controller(co, order));
       else if (auto* ex = d->experimentDecl()) m.experiments.push_back(experiment(ex, order));
       else if (auto* li = d->libraryDecl()) library(li, m, order);
+      else if (auto* pr = d->primitivesDecl()) m.primitives.push_back(primitives(pr, order));
     }
   }
 
@@ -441,23 +442,82 @@ class Builder {
       d.elman = v->net != nullptr && v->net->getType() == P::ELMAN;
       d.kind_where = at(v->getStart());
       network(v->network(), d);
-      for (P::SupervisedContext* b : v->supervised()) {
-        if (b == nullptr) continue;
-        ast::SupervisedRef r;
-        r.name = name(b->ident(0));
-        if (b->member != nullptr) {
-          const ast::Name member = name(b->member);
-          r.name.text += "." + member.text;
-          r.name.where = span(b);
-        }
-        for (P::QuantityContext* q : b->quantity()) r.args.push_back(quantity(q));
-        r.where = span(b);
-        d.behaviors.push_back(std::move(r));
+      supervised(v->supervised(), d);
+    } else if (auto* t = dynamic_cast<P::TreeControllerContext*>(c->controllerExpr())) {
+      d.tree = true;
+      d.kind_where = at(t->getStart());
+      if (t->prims != nullptr) d.primitives = name(t->prims);
+      if (P::TreeResultContext* r = t->treeResult()) {
+        d.symbolic = r->ACTIONS() != nullptr;
+        d.supervisor = r->BEHAVIORS() != nullptr;
+        if (d.symbolic)
+          for (P::IdentContext* a : r->ident()) d.actions.push_back(name(a));
+        else if (d.supervisor)
+          supervised(r->supervised(), d);
+        else if (!r->ident().empty())
+          d.tree_result = name(r->ident()[0]);
       }
     } else {
       d.poisoned = true;
     }
     return d;
+  }
+
+  void supervised(const std::vector<P::SupervisedContext*>& list, ast::ControllerDecl& d) {
+    for (P::SupervisedContext* b : list) {
+      if (b == nullptr) continue;
+      ast::SupervisedRef r;
+      r.name = name(b->ident(0));
+      if (b->member != nullptr) {
+        const ast::Name member = name(b->member);
+        r.name.text += "." + member.text;
+        r.name.where = span(b);
+      }
+      for (P::QuantityContext* q : b->quantity()) r.args.push_back(quantity(q));
+      r.where = span(b);
+      d.behaviors.push_back(std::move(r));
+    }
+  }
+
+  ast::PrimitivesDecl primitives(P::PrimitivesDeclContext* c, int order) {
+    ast::PrimitivesDecl p;
+    head(p, c, c->name, order);
+    for (P::PrimItemContext* it : c->primItem()) {
+      if (auto* f = dynamic_cast<P::PrimFunctionsContext*>(it)) {
+        for (P::PrimFunctionContext* fn : f->primFunction())
+          if (fn != nullptr && fn->getStart() != nullptr)
+            p.functions.push_back({fn->getStart()->getText(), at(fn->getStart())});
+        continue;
+      }
+      auto* list = dynamic_cast<P::PrimTerminalsContext*>(it);
+      if (list == nullptr) continue;
+      for (P::PrimTerminalContext* t : list->primTerminal()) {
+        ast::PrimTerminal k;
+        k.where = span(t);
+        if (auto* e = dynamic_cast<P::PrimErcContext*>(t)) {
+          k.kind = ast::PrimTerminal::Kind::Erc;
+          k.name = name(e->ident());
+          k.lo = quantity(e->lo);
+          k.hi = quantity(e->hi);
+        } else if (auto* o = dynamic_cast<P::PrimObservableContext*>(t)) {
+          k.kind = ast::PrimTerminal::Kind::Observable;
+          k.name = name(o->ident());
+          const auto nums = o->NUMBER();
+          if (!nums.empty()) k.lo = number(nums[0]);
+          if (nums.size() > 1) k.hi = number(nums[1]);
+        } else if (auto* q = dynamic_cast<P::PrimConstantContext*>(t)) {
+          k.kind = ast::PrimTerminal::Kind::Constant;
+          k.value = quantity(q->quantity());
+        } else if (auto* b = dynamic_cast<P::PrimBoolContext*>(t)) {
+          k.kind = ast::PrimTerminal::Kind::Bool;
+          k.flag = b->TRUE() != nullptr;
+        } else {
+          continue;
+        }
+        p.terminals.push_back(std::move(k));
+      }
+    }
+    return p;
   }
 
   ast::ExperimentDecl experiment(P::ExperimentDeclContext* c, int order) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "compiler/compiler.hpp"
+#include "compiler/gp_settings.hpp"
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
 #include "runtime/sim/validate.hpp"
@@ -186,7 +187,7 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   r["runs"] = std::to_string(spec.runs);
   r["seed"] = std::to_string(spec.seed);
   const evo::EsSettings& es = spec.es;
-  r["generations"] = std::to_string(spec.generations());
+  r["generations"] = std::to_string(spec.start_from && spec.start_from->evaluate_only ? 1 : spec.es.generations);
   if (spec.start_from)
     r["start_from"] = fmt::format("{} from experiment {}", spec.start_from->evaluate_only ? "evaluate" : "start",
                                   spec.start_from->experiment);
@@ -220,6 +221,7 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   std::string names;
   for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;
   r["compare"] = names;
+  resolve_gp_settings(spec);
 }
 
 namespace {
@@ -229,6 +231,7 @@ const std::vector<std::string>& setting_keys() {
     std::vector<std::string> k = {"epochs", "steps", "runs", "seed", "generations", "mu", "lambda",
                                   "selection", "recombination", "step_sizes", "sigma", "bounds"};
     for (const RobotSetting& s : robot_settings()) k.push_back("robot." + std::string(s.name));
+    for (const std::string& g : gp_option_names()) k.push_back("gp." + g);
     return k;
   }();
   return keys;
@@ -274,8 +277,11 @@ std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key
     if ((err = whole(key, value, 1, kIntMax, n)).empty()) spec.runs = static_cast<int>(n);
   } else if (key == "seed") {
     if ((err = whole(key, value, 0, (1LL << 53), n)).empty()) spec.seed = static_cast<std::uint64_t>(n);
-  } else if (key == "generations") {
-    if ((err = whole(key, value, 1, kIntMax, n)).empty()) spec.es.generations = static_cast<int>(n);
+  } else if (key == "generations") {   // of the ES and of the GP alike
+    if ((err = whole(key, value, 1, kIntMax, n)).empty()) {
+      spec.es.generations = static_cast<int>(n);
+      if (spec.gp) spec.gp->generations = static_cast<int>(n);
+    }
   } else if (key == "mu") {
     if ((err = whole(key, value, 1, kIntMax, n)).empty()) spec.es.mu = static_cast<int>(n);
   } else if (key == "lambda") {
@@ -314,6 +320,8 @@ std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key
       spec.es.lower = lo;
       spec.es.upper = hi;
     }
+  } else if (key.rfind("gp.", 0) == 0) {
+    err = apply_gp_setting(spec, key.substr(3), value);
   } else if (key.rfind("robot.", 0) == 0) {
     const std::string name = key.substr(6);
     const RobotSetting* s = find_robot_setting(name);
@@ -347,6 +355,7 @@ std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key
   }
   if (!err.empty()) return err;
   if (std::string m = check_es(spec.es); !m.empty()) return m;
+  if (std::string m = check_gp(spec); !m.empty()) return m;
   if (std::string m = check_robot(spec.robot); !m.empty()) return m;
   resolve_settings(spec);
   experiment = std::move(spec);

@@ -32,8 +32,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::CIRCLE: case EscParser::RECT: case EscParser::VISIBLE: case EscParser::INVISIBLE:
     case EscParser::RECHARGE: case EscParser::SWEEP_CELL: case EscParser::REACH_RADIUS:
     case EscParser::ELMAN: case EscParser::SUPERVISOR: case EscParser::BEHAVIORS: case EscParser::ON:
-    case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM:
-    case EscParser::EVALUATE: return true;
+    case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM: case EscParser::TREE:
+    case EscParser::FUNCTIONS: case EscParser::TERMINALS: case EscParser::EVALUATE: return true;
     default: return false;
   }
 }
@@ -87,8 +87,8 @@ Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocab
     }
   }
   if (has(EscParser::ARENA) && has(EscParser::EXPERIMENT) && has(EscParser::BEHAVIOR)) {
-    e.phrase = "a declaration (`import`, `arena`, `robot`, `behavior`, `fitness`, `controller` "
-               "or `experiment`)";
+    e.phrase = "a declaration (`import`, `arena`, `robot`, `behavior`, `fitness`, `controller`, "
+               "`experiment` or `primitives`)";
     return e;
   }
   if (!name && has(EscParser::EPOCHS) && has(EscParser::COMPARE)) {
@@ -148,6 +148,7 @@ std::string decl_name_kind(antlr4::TokenStream* ts, const antlr4::Token* prev) {
     case EscParser::FITNESS: return "fitness";
     case EscParser::CONTROLLER: return "controller";
     case EscParser::EXPERIMENT: return "experiment";
+    case EscParser::PRIMITIVES: return "primitives";
     default: return {};
   }
 }
@@ -292,7 +293,7 @@ void SyntaxErrorListener::parser_error(antlr4::Parser* parser, antlr4::Token* of
   const std::size_t ot = offending->getType();
   const bool decl_keyword = ot == EscParser::IMPORT || ot == EscParser::ARENA || ot == EscParser::ROBOT ||
                             ot == EscParser::BEHAVIOR || ot == EscParser::FITNESS || ot == EscParser::CONTROLLER ||
-                            ot == EscParser::EXPERIMENT;
+                            ot == EscParser::EXPERIMENT || ot == EscParser::PRIMITIVES;
   if (decl_keyword && ex.closer && ex.closer_text == "}" && set.contains(static_cast<std::size_t>(EscParser::RBRACE)) &&
       !set.contains(ot)) {
     // A declaration starts inside an unclosed block: the `}` is missing.

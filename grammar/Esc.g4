@@ -20,6 +20,7 @@ decl
   | controllerDecl
   | experimentDecl
   | libraryDecl
+  | primitivesDecl
   ;
 
 importDecl : IMPORT STRING ';'? ;
@@ -78,11 +79,37 @@ controllerExpr
   : net=(MLP | ELMAN) '(' network ')'                                                 # mlpController
   | SYMBOLIC '(' net=(MLP | ELMAN) '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'   # symbolicController
   | SUPERVISOR '(' net=(MLP | ELMAN) '(' network ')' ',' BEHAVIORS '[' supervised (',' supervised)* ']' ')'   # supervisorController
+  // A GP tree: its result (`wheels`, or a choice among actions or behaviors) and its primitives.
+  | TREE '(' treeResult ',' PRIMITIVES prims=ident ')'                                 # treeController
+  ;
+treeResult
+  : ACTIONS '[' ident (',' ident)* ']'
+  | BEHAVIORS '[' supervised (',' supervised)* ']'
+  | ident
   ;
 supervised : ident ('.' member=ident)? ('(' (quantity (',' quantity)*)? ')')? ;
 network : input (',' input)* ('->' layer)* ;
 input : ident ('[' lo=NUMBER ('..' hi=NUMBER)? ']')? ;
 layer : ident NUMBER? ;
+
+// ---- primitive sets (genetic programming) -------------------------------------------
+// Functions are operator symbols or function names, spaces or commas between them; a
+// function name is a plain ID (never a keyword), so the word `terminals` ends the list.
+primitivesDecl : PRIMITIVES name=ident '{' primItem* '}' ;
+primItem
+  : FUNCTIONS primFunction (','? primFunction)* ';'?           # primFunctions
+  | TERMINALS primTerminal (',' primTerminal)* ';'?            # primTerminals
+  ;
+primFunction
+  : op=('+' | '-' | '*' | '/' | '^' | '<' | '<=' | '>' | '>=' | '==' | '!=')
+  | AND | OR | NOT | IF | ID
+  ;
+primTerminal
+  : ident '(' lo=quantity ',' hi=quantity ')'                  # primErc
+  | ident ('[' lo=NUMBER ('..' hi=NUMBER)? ']')?               # primObservable
+  | quantity                                                   # primConstant
+  | (TRUE | FALSE)                                             # primBool
+  ;
 
 // ---- experiments --------------------------------------------------------------------
 experimentDecl : EXPERIMENT name=ident '{' expItem* '}' ;
@@ -127,7 +154,7 @@ ident
   | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
-  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE
+  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | TREE | FUNCTIONS | TERMINALS
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -139,6 +166,7 @@ FITNESS : 'fitness' ;
 CONTROLLER : 'controller' ;
 EXPERIMENT : 'experiment' ;
 LIBRARY : 'library' ;
+PRIMITIVES : 'primitives' ;
 IF : 'if' ;
 THEN : 'then' ;
 ELSE : 'else' ;
@@ -194,6 +222,9 @@ OFF : 'off' ;
 EVOLVED : 'evolved' ;
 FROM : 'from' ;
 EVALUATE : 'evaluate' ;
+TREE : 'tree' ;
+FUNCTIONS : 'functions' ;
+TERMINALS : 'terminals' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;

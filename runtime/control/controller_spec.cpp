@@ -16,6 +16,7 @@ int ControllerSpec::output_count() const noexcept {
 }
 
 std::size_t ControllerSpec::genome_size() const noexcept {
+  if (is_tree()) return 0;
   // Each layer out x (in + 1): one bias and one weight per input for every neuron; an
   // Elman hidden layer also takes its own previous activations as inputs, out x (in + 1 + out).
   const bool elman = mlp.kind == NetworkKind::Elman;
@@ -32,6 +33,8 @@ std::size_t ControllerSpec::genome_size() const noexcept {
 }
 
 std::string ControllerSpec::architecture() const {
+  if (is_tree())
+    return head == Head::Classical ? "tree wheels" : head == Head::Symbolic ? "tree actions" : "tree behaviors";
   std::string s = std::to_string(mlp.inputs.size());
   for (int h : mlp.hidden) {
     s += '-' + std::to_string(h);

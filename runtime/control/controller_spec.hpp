@@ -1,6 +1,8 @@
 #pragma once
 // What the compiler produces for a `controller` declaration: the network's shape and its
 // head. The genome is the flat vector of the network's weights; genome_size() says how long.
+// A GP tree controller (`tree(...)`) has primitives instead of a network: its genome is a
+// tree (runtime/evo/gp), run by control::TreeDriver.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -9,6 +11,11 @@
 
 #include "runtime/control/behavior.hpp"
 #include "runtime/expr/observables.hpp"
+
+// Only a pointer is held here: the GP engine (esc_gp) builds on esc_control, not the reverse.
+namespace esc::evo::gp {
+class PrimitiveSet;
+}
 
 namespace esc::control {
 
@@ -70,13 +77,22 @@ struct ControllerSpec {
   Head head = Head::Classical;
   std::vector<Behavior> actions;               // Symbolic head only
   std::vector<SupervisedBehavior> behaviors;   // Supervisor head only
+  // Set for a tree controller, whose head says what the tree returns: Classical a Wheels
+  // tree (both wheel commands), Symbolic an Action tree (one of `actions`, with its
+  // parameters), Supervisor a Behavior tree (one of `behaviors`). `mlp` is then unused.
+  // Shared and immutable: copies of the spec share one set.
+  std::shared_ptr<const evo::gp::PrimitiveSet> primitives;
+  std::string primitives_name;                 // the script's `primitives` declaration
 
+  [[nodiscard]] bool is_tree() const noexcept { return primitives != nullptr; }
   // Classical: 2. Symbolic: actions + all their parameters. Supervisor: behaviors.
   [[nodiscard]] int output_count() const noexcept;
   // The supervisor's genome is its own network only; sub-controllers' weights are fixed.
+  // 0 for a tree controller: a tree has no fixed size.
   [[nodiscard]] std::size_t genome_size() const noexcept;
   // "8-14-6" style architecture string for tables; an Elman hidden layer is marked with
   // an r (recurrent): "17-5r-2". A supervisor's string is its own network's: "17-5r-4".
+  // A tree controller: "tree wheels", "tree actions" or "tree behaviors".
   [[nodiscard]] std::string architecture() const;
   // What Controller::usage() counts, in index order: the action names (Symbolic), the
   // behavior names (Supervisor), nothing (Classical).

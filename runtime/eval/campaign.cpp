@@ -2,16 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <numeric>
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/dist/distribution.hpp"
+#include "runtime/eval/campaign_parts.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/evo/es.hpp"
 
@@ -20,67 +16,7 @@ namespace esc::eval {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using Workers = tbb::enumerable_thread_specific<Evaluator>;
-
-GenerationStats summarise(int generation, const std::vector<evo::Individual>& offspring,
-                          std::int64_t steps, double seconds) {
-  GenerationStats g;
-  g.generation = generation;
-  g.evaluations = static_cast<std::int64_t>(offspring.size());
-  g.steps = steps;
-  g.seconds = seconds;
-  double sum = 0.0;
-  g.best = offspring.front().fitness;
-  for (const auto& i : offspring) {
-    sum += i.fitness;
-    g.best = std::max(g.best, i.fitness);
-  }
-  const auto n = static_cast<double>(offspring.size());
-  g.mean = sum / n;
-  double sq = 0.0;
-  for (const auto& i : offspring) sq += (i.fitness - g.mean) * (i.fitness - g.mean);
-  g.sd = offspring.size() > 1 ? std::sqrt(sq / (n - 1.0)) : 0.0;
-  return g;
-}
-
-// Where evaluations run: this process's threads, and the other MPI ranks if any.
-struct Evaluators {
-  Workers& workers;
-  dist::Distribution& distribution;
-  std::size_t chunk;   // evaluations a process takes at a time: its thread count
-};
-
-// Evaluates every individual in parallel; each result lands in its own slot, so the
-// outcome does not depend on which worker or rank ran what.
-std::int64_t evaluate_all(const control::ControllerSpec& controller, std::vector<evo::Individual>& pop,
-                          std::uint64_t seed, int generation, Evaluators& ev) {
-  constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
-  std::vector<double> results(pop.size() * kWidth, 0.0);
-  ev.distribution.run(pop.size(), kWidth, ev.chunk, results, [&](std::size_t first, std::size_t last) {
-    tbb::parallel_for(first, last, [&](std::size_t i) {
-      const Evaluation e =
-          ev.workers.local().evaluate(controller, pop[i].genes, evaluation_seed(seed, generation, i));
-      results[i * kWidth] = e.fitness;
-      results[i * kWidth + 1] = static_cast<double>(e.steps);
-    });
-  });
-  std::int64_t steps = 0;
-  for (std::size_t i = 0; i < pop.size(); ++i) {
-    pop[i].fitness = results[i * kWidth];
-    steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
-  }
-  return steps;
-}
-
-// Collects a traced evaluation and counts the steps each action acted on.
-struct Recorder final : TraceSink {
-  std::vector<TraceStep> steps;
-  std::vector<std::int64_t> usage;
-  void on_step(const TraceStep& t) override {
-    steps.push_back(t);
-    if (t.action >= 0 && static_cast<std::size_t>(t.action) < usage.size()) ++usage[static_cast<std::size_t>(t.action)];
-  }
-};
+using detail::Evaluators;
 
 // The genome run `run` of controller `index` starts from (`start from` / `evaluate from`),
 // or null when it starts from a random population.
@@ -117,53 +53,38 @@ std::vector<evo::Individual> offspring_of(const ExperimentSpec& spec, const evo:
   return offspring;
 }
 
-RunResult evolve_one(const ExperimentSpec& spec, std::size_t index, int run, const RunState* from,
-                     const CampaignOptions& options, Evaluators& ev, CampaignListener& listener) {
-  const control::ControllerSpec& controller = spec.controllers[index];
+RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
+                     const RunState* from, const CampaignOptions& options, Evaluators& ev,
+                     CampaignListener& listener) {
   const evo::EvolutionStrategy es(spec.es, controller.genome_size());
+  const auto index = static_cast<std::size_t>(&controller - spec.controllers.data());
   const std::vector<double>* seed_genome = start_genome(spec, index, run);
   RunState st = from != nullptr ? *from : fresh_state(spec, es, run, seed_genome);
-  for (int g = static_cast<int>(st.generations.size()); g < spec.generations(); ++g) {
+  std::vector<double> fitness;
+  for (int g = static_cast<int>(st.generations.size()); g < spec.generations_for(controller); ++g) {
     const auto start = Clock::now();
     std::vector<evo::Individual> offspring = offspring_of(spec, es, st, seed_genome, g);
-    const std::int64_t steps = evaluate_all(controller, offspring, st.seed, g, ev);
+    const std::int64_t steps = detail::evaluate_all(
+        offspring.size(), st.seed, g, ev,
+        [&](Evaluator& e, std::size_t i, std::uint64_t seed) {
+          return e.evaluate(controller, offspring[i].genes, seed);
+        },
+        fitness);
+    for (std::size_t i = 0; i < offspring.size(); ++i) offspring[i].fitness = fitness[i];
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    st.generations.push_back(summarise(g, offspring, steps, seconds));
-    for (std::size_t i = 0; i < offspring.size(); ++i) {
-      if (!st.has_best || offspring[i].fitness > st.best_fitness) {
-        st.has_best = true;
-        st.best_fitness = offspring[i].fitness;
-        st.best_genome = offspring[i].genes;
-        st.best_generation = g;
-        st.best_index = static_cast<int>(i);
-      }
-    }
+    st.generations.push_back(detail::summarise(g, fitness, steps, seconds));
+    if (const auto best = detail::improve_best(st, g, fitness)) st.best_genome = offspring[*best].genes;
     if (!spec.start_from || !spec.start_from->evaluate_only) st.parents = es.select(st.parents, offspring);
     listener.generation_done(controller, run, st.generations.back());
     listener.checkpoint(controller, st);
   }
-  RunResult result;
-  result.run = run;
-  result.seed = st.seed;
-  result.generations = std::move(st.generations);
-  result.best_fitness = st.best_fitness;
-  result.best_genome = std::move(st.best_genome);
-  result.best_generation = st.best_generation;
-  result.best_index = st.best_index;
-  if (st.has_best) {
-    // Replays the best evaluation (same genome, same stream): the fitness is the same, and
-    // the trace says which action acted when.
-    Recorder rec;
-    rec.usage.assign(controller.choice_names().size(), 0);
-    if (options.trace_best) rec.steps.reserve(static_cast<std::size_t>(spec.epochs) * static_cast<std::size_t>(spec.steps));
-    if (options.trace_best || !rec.usage.empty()) {
-      const std::uint64_t seed = evaluation_seed(result.seed, result.best_generation,
-                                                 static_cast<std::size_t>(result.best_index));
-      (void)ev.workers.local().evaluate(controller, result.best_genome, seed, &rec);
-      result.action_usage = std::move(rec.usage);
-      if (options.trace_best) listener.best_traced(controller, result, rec.steps);
-    }
-  }
+  const bool has_best = st.has_best;
+  RunResult result = detail::close_run(std::move(st));
+  if (has_best)
+    detail::replay_best(spec, controller, result, options, ev, listener,
+                        [&](Evaluator& e, std::uint64_t seed, TraceSink* sink) {
+                          return e.evaluate(controller, result.best_genome, seed, sink);
+                        });
   return result;
 }
 
@@ -202,15 +123,14 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
   const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
                                   static_cast<std::size_t>(threads));
   tbb::task_arena arena(threads);
-  Workers workers([&spec] { return Evaluator(spec); });
+  detail::Workers workers([&spec] { return Evaluator(spec); });
   dist::Distribution distribution;
   Evaluators ev{workers, distribution, static_cast<std::size_t>(threads)};
-  for (std::size_t index = 0; index < spec.controllers.size(); ++index) {
-    const control::ControllerSpec& c = spec.controllers[index];
+  for (const control::ControllerSpec& c : spec.controllers) {
     ControllerResult cr;
     cr.name = c.name;
     cr.architecture = c.architecture();
-    cr.genome_size = c.genome_size();
+    cr.genome_size = spec.genome_size_of(c);
     cr.choices = c.choice_names();
     for (int run = 0; run < spec.runs; ++run) {
       if (const RunResult* done = find_finished(options.resume, c.name, run)) {
@@ -218,7 +138,8 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
         continue;
       }
       const RunState* partial = find_in_progress(options.resume, c.name, run);
-      arena.execute([&] { cr.runs.push_back(evolve_one(spec, index, run, partial, options, ev, listener)); });
+      const auto evolve = c.is_tree() ? detail::evolve_tree : evolve_one;
+      arena.execute([&] { cr.runs.push_back(evolve(spec, c, run, partial, options, ev, listener)); });
       listener.run_done(c, cr.runs.back());
     }
     result.controllers.push_back(std::move(cr));

@@ -1,7 +1,7 @@
 #pragma once
 // A campaign: for every compared controller, `runs` independent evolutions of
-// `generations` generations. Each run's seed is derived from the master seed and the run
-// index alone, so all controllers of an experiment meet the same start poses (common
+// `generations` generations, by the ES for networks and by genetic programming for trees.
+// Each run's seed is derived from the master seed and the run index alone, so all controllers of an experiment meet the same start poses (common
 // random numbers make the comparison sharper). Offspring are evaluated in parallel; each
 // evaluation's stream is derived from (run seed, generation, individual), so results are
 // bit-identical for any thread count.
@@ -30,6 +30,7 @@ struct RunResult {
   std::uint64_t seed = 0;
   std::vector<GenerationStats> generations;
   double best_fitness = 0.0;   // best over all generations
+  // Network weights; for a tree controller the best tree encoded (runtime/evo/gp/codec.hpp).
   std::vector<double> best_genome;
   int best_generation = 0;     // where the best evaluation happened: its generation and
   int best_index = 0;          // offspring index, which fix its evaluation stream
@@ -37,6 +38,10 @@ struct RunResult {
   // over the best evaluation replayed, in ControllerSpec::choice_names() order; empty for
   // a classical head.
   std::vector<std::int64_t> action_usage;
+  std::string best_tree{};     // tree controllers: the best tree as script code (gp::to_script)
+  // The best Wheels or Action tree as a behavior's body, `wheels(LEFT, RIGHT)`, computing the
+  // same commands (an Action tree with its actions inlined); empty for a Behavior tree.
+  std::string best_behavior{};
 };
 
 // Everything needed to continue a run after its last finished generation: restarting
@@ -46,12 +51,14 @@ struct RunState {
   int run = 0;
   std::uint64_t seed = 0;
   std::vector<GenerationStats> generations;   // finished so far
-  std::vector<evo::Individual> parents;       // selected for the next generation
+  std::vector<evo::Individual> parents;       // ES: selected for the next generation
   bool has_best = false;
   double best_fitness = 0.0;
-  std::vector<double> best_genome;
+  std::vector<double> best_genome;            // as RunResult::best_genome
   int best_generation = 0;
   int best_index = 0;
+  // GP: the last generation evaluated, with its fitness; the next one is bred from it.
+  std::vector<evo::gp::Individual> population{};
 };
 
 // Seed of the evaluation of offspring `index` of generation `generation` of a run.
@@ -112,7 +119,8 @@ struct CampaignOptions {
 
 [[nodiscard]] std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept;
 
-// Throws std::invalid_argument on impossible ES settings (from the strategy).
+// Throws std::invalid_argument on impossible ES or GP settings (from the algorithms), or a
+// tree controller compared without GP settings.
 [[nodiscard]] CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& options,
                                           CampaignListener& listener);
 

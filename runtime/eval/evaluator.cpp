@@ -3,8 +3,10 @@
 #include <array>
 
 #include "runtime/control/controller.hpp"
+#include "runtime/control/tree_driver.hpp"
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/observe.hpp"
+#include "runtime/evo/gp/codec.hpp"
 
 namespace esc::eval {
 
@@ -41,8 +43,20 @@ Evaluator::Evaluator(const ExperimentSpec& spec) : spec_(&spec), world_(spec.are
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
                                std::span<const double> genome, std::uint64_t seed,
                                TraceSink* trace) {
-  const ExperimentSpec& s = *spec_;
+  if (controller.is_tree()) return evaluate(controller, evo::gp::decode(genome, *controller.primitives), seed, trace);
   control::Controller ctl(controller, genome);
+  return run(ctl, seed, trace);
+}
+
+Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
+                               std::uint64_t seed, TraceSink* trace) {
+  control::TreeDriver ctl(controller, tree);
+  return run(ctl, seed, trace);
+}
+
+template <class Driver>
+Evaluation Evaluator::run(Driver& ctl, std::uint64_t seed, TraceSink* trace) {
+  const ExperimentSpec& s = *spec_;
   std::array<double, sim::kIrSensors> ir{};
   std::array<double, sim::kLightSensors> light{};
   expr::Frame frame{};

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "runtime/eval/experiment.hpp"
+#include "runtime/evo/gp/tree.hpp"
 #include "runtime/sim/world.hpp"
 
 namespace esc::eval {
@@ -48,12 +49,20 @@ class Evaluator {
 
   // Deterministic in (controller, genome, seed) whatever this evaluator ran before.
   // With a `trace`, every step is also reported to it; the result is the same either way
-  // (the untraced path pays one predictable branch per step).
+  // (the untraced path pays one predictable branch per step). A tree controller's genome
+  // is its encoded tree (runtime/evo/gp/codec.hpp).
   [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller,
                                     std::span<const double> genome, std::uint64_t seed,
                                     TraceSink* trace = nullptr);
+  // A tree controller and its tree: the same evaluation as with the encoded tree.
+  [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
+                                    std::uint64_t seed, TraceSink* trace = nullptr);
 
  private:
+  // The epochs, with any controller that has reset(), step(frame) and last_action().
+  template <class Driver>
+  Evaluation run(Driver& ctl, std::uint64_t seed, TraceSink* trace);
+
   const ExperimentSpec* spec_;
   sim::World world_;
 };

@@ -1,6 +1,7 @@
 #pragma once
 // A checked, fully resolved experiment: everything a run needs, produced by the compiler
 // from a script. Runtime code sees only this, never the parse tree.
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/evo/es.hpp"
+#include "runtime/evo/gp/gp.hpp"
 #include "runtime/expr/program.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/khepera_params.hpp"
@@ -56,7 +58,10 @@ struct ExperimentSpec {
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;
   std::uint64_t seed = 1;
-  evo::EsSettings es;
+  evo::EsSettings es;                 // evolves the networks
+  // `evolve gp(...)`: evolves the tree controllers (the compiler requires it when one is
+  // compared). Its primitive set is each tree controller's own.
+  std::optional<evo::gp::GpSettings> gp;
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
   // Every setting as resolved, for the run directory ("epochs" -> "10", ...).
   std::map<std::string, std::string> resolved_settings;
@@ -64,9 +69,27 @@ struct ExperimentSpec {
   std::vector<Dependency> dependencies;
   std::optional<StartFrom> start_from;
 
-  // Generations each run evolves: 1 when only evaluating stored controllers.
-  [[nodiscard]] int generations() const noexcept {
-    return start_from && start_from->evaluate_only ? 1 : es.generations;
+  // Generations a compared controller evolves for: 1 when only evaluating stored
+  // controllers, else the GP's for a tree and the ES's for a network.
+  [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
+    if (start_from && start_from->evaluate_only) return 1;
+    return c.is_tree() && gp ? gp->generations : es.generations;
+  }
+  // The most generations of any compared controller (the ES's when none is compared).
+  [[nodiscard]] int max_generations() const noexcept {
+    int g = controllers.empty() ? es.generations : 0;
+    for (const auto& c : controllers) g = std::max(g, generations_for(c));
+    return g;
+  }
+  // Generations of the whole campaign: every run of every controller.
+  [[nodiscard]] std::int64_t total_generations() const noexcept {
+    std::int64_t n = 0;
+    for (const auto& c : controllers) n += static_cast<std::int64_t>(runs) * generations_for(c);
+    return n;
+  }
+  // The size tables show for a controller: its network's weights, or a tree's node limit.
+  [[nodiscard]] std::size_t genome_size_of(const control::ControllerSpec& c) const noexcept {
+    return c.is_tree() && gp ? static_cast<std::size_t>(gp->max_size) : c.genome_size();
   }
 };
 

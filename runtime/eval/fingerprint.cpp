@@ -1,5 +1,7 @@
 #include "runtime/eval/fingerprint.hpp"
 
+#include "runtime/evo/gp/primitive_set.hpp"
+
 #include <span>
 #include <variant>
 
@@ -32,6 +34,11 @@ class Writer {
     line(key, fmt::format("{} head {} kind {} activation {} inputs {} hidden {}", c.name, static_cast<int>(c.head),
                           static_cast<int>(c.mlp.kind), static_cast<int>(c.mlp.hidden_activation),
                           fmt::join(c.mlp.inputs, ","), fmt::join(c.mlp.hidden, ",")));
+    if (c.primitives)
+      for (const evo::gp::Primitive& p : c.primitives->primitives())
+        line(key + ".primitive",
+             fmt::format("{} {} {} {} {} {} {:a} {:a} {:a} {}", p.name, static_cast<int>(p.kind), static_cast<int>(p.result),
+                         static_cast<int>(p.arity), static_cast<int>(p.op), p.slot, p.value, p.lo, p.hi, p.index));
     for (std::size_t i = 0; i < c.actions.size(); ++i) behavior(fmt::format("{}.action{}", key, i), c.actions[i]);
     for (std::size_t i = 0; i < c.behaviors.size(); ++i) {
       const std::string k = fmt::format("{}.behavior{}", key, i);

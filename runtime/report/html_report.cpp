@@ -80,6 +80,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
         mean.push_back(g.mean);
       }
       runs.push_back({{"run", r.run + 1}, {"best_fitness", r.best_fitness}, {"best", best}, {"mean", mean}});
+      if (!r.best_tree.empty()) runs.back()["best_tree"] = r.best_tree;   // tree controllers
       final_best.push_back(r.best_fitness);
       if (!r.action_usage.empty()) usage.push_back(r.action_usage);
     }

@@ -20,9 +20,12 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
   json usage = json::object();
   for (std::size_t i = 0; i < r.action_usage.size(); ++i)
     usage[i < c.actions.size() ? c.actions[i] : fmt::format("action{}", i)] = r.action_usage[i];
-  return {{"run", r.run + 1}, {"seed", r.seed}, {"status", "finished"}, {"best_fitness", r.best_fitness},
-          {"best_generation", r.best_generation}, {"best_index", r.best_index}, {"best_genome", r.best_genome},
-          {"behavior_usage", usage}, {"generations", generations_json(r.generations)}};
+  json j = {{"run", r.run + 1}, {"seed", r.seed}, {"status", "finished"}, {"best_fitness", r.best_fitness},
+            {"best_generation", r.best_generation}, {"best_index", r.best_index}, {"best_genome", r.best_genome}};
+  if (!r.best_tree.empty()) j["best_tree"] = r.best_tree;
+  j["behavior_usage"] = usage;
+  j["generations"] = generations_json(r.generations);
+  return j;
 }
 
 json run_json(const eval::RunState& s) {

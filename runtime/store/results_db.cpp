@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "runtime/store/run_directory.hpp"
+#include "runtime/store/tree_state.hpp"
 
 namespace esc::store {
 
@@ -71,6 +72,7 @@ CREATE TABLE runs (
   best_index       INTEGER,
   best_genome      BLOB,
   best_tree        TEXT,
+  best_behavior    TEXT,
   PRIMARY KEY (controller_id, run)
 );
 CREATE TABLE generations (
@@ -91,6 +93,14 @@ CREATE TABLE run_state (
   parents       INTEGER NOT NULL,
   genome_size   INTEGER NOT NULL,
   sigma_count   INTEGER NOT NULL,
+  population    BLOB NOT NULL,
+  PRIMARY KEY (controller_id, run)
+);
+-- Schema 2 (GP); also what opening a schema-1 database for writing adds to it.
+CREATE TABLE tree_state (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  individuals   INTEGER NOT NULL,
   population    BLOB NOT NULL,
   PRIMARY KEY (controller_id, run)
 );
@@ -132,8 +142,9 @@ std::uint64_t parse_u64(const std::string& s, const char* what) {
   }
 }
 
-const char* head_name(control::Head h) {
-  switch (h) {
+const char* head_name(const control::ControllerSpec& c) {
+  if (c.is_tree()) return "tree";
+  switch (c.head) {
     case control::Head::Classical: return "classical";
     case control::Head::Symbolic: return "symbolic";
     case control::Head::Supervisor: return "supervisor";
@@ -270,7 +281,7 @@ ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spe
       .bind(8, arena_json(spec.arena).dump())
       .bind(9, spec.robot.body_radius_m)
       .bind(10, spec.runs)
-      .bind(11, spec.generations())
+      .bind(11, spec.max_generations())
       .bind(12, spec.epochs)
       .bind(13, spec.steps)
       .run();
@@ -289,8 +300,8 @@ ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spe
     const control::ControllerSpec& c = spec.controllers[i];
     const nlohmann::json actions = c.choice_names();
     ctl.bind(1, r.experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, c.name).bind(4, c.architecture())
-        .bind(5, static_cast<std::int64_t>(c.genome_size()))
-        .bind(6, head_name(c.head))
+        .bind(5, static_cast<std::int64_t>(spec.genome_size_of(c)))
+        .bind(6, head_name(c))
         .bind(7, actions.dump())
         .run();
     r.controller_ids_[c.name] = db.last_insert_rowid();
@@ -320,6 +331,8 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     const std::string verdict = check.step() ? check.text(0) : "no answer";
     if (verdict != "ok") throw StoreError(fmt::format("{} is damaged: {}", file.string(), verdict));
     if (!read_only) r.db_.exec("PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
+    r.schema_version_ = static_cast<int>(version);
+    if (!read_only && version < kSchemaVersion) r.upgrade();
     auto ex = r.db_.prepare("SELECT id FROM experiments ORDER BY id LIMIT 1");
     if (!ex.step())
       throw StoreError(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
@@ -331,6 +344,18 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
   } catch (const sql::SqliteError& e) {
     throw StoreError(fmt::format("{} is damaged or not an esc database: {}", file.string(), e.what()));
   }
+}
+
+void ResultsDb::upgrade() {
+  // 1 -> 2: what GP needs (runs of networks are untouched).
+  sql::Transaction tx(db_);
+  const std::string schema = kSchema;
+  db_.exec("ALTER TABLE runs ADD COLUMN best_behavior TEXT;");
+  db_.exec(schema.substr(schema.find("CREATE TABLE tree_state"),
+                         schema.find("CREATE TABLE behavior_usage") - schema.find("CREATE TABLE tree_state")));
+  db_.exec(fmt::format("PRAGMA user_version={};", kSchemaVersion));
+  tx.commit();
+  schema_version_ = kSchemaVersion;
 }
 
 std::int64_t ResultsDb::controller_id(const std::string& name) {
@@ -356,6 +381,14 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   if (st.has_best)
     run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
   run.run();
+  if (!st.population.empty()) {   // a GP run
+    db_.prepare("INSERT OR REPLACE INTO tree_state(controller_id, run, individuals, population) VALUES (?, ?, ?, ?)")
+        .bind(1, cid).bind(2, st.run).bind(3, static_cast<std::int64_t>(st.population.size()))
+        .bind_blob(4, pack_trees(st.population))
+        .run();
+    tx.commit();
+    return;
+  }
   const std::size_t genome_size = st.parents.empty() ? 0 : st.parents.front().genes.size();
   const std::size_t sigma_count = st.parents.empty() ? 0 : st.parents.front().sigmas.size();
   db_.prepare(
@@ -396,14 +429,18 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
     if (q.step()) actions = nlohmann::json::parse(q.text(0)).get<std::vector<std::string>>();
   }
   sql::Transaction tx(db_);
-  db_.prepare(
-         "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
-         "best_generation, best_index, best_genome) VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?)")
-      .bind(1, cid).bind(2, run.run).bind(3, std::to_string(run.seed))
+  auto row = db_.prepare(
+      "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
+      "best_generation, best_index, best_genome, best_tree, best_behavior) "
+      "VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?, ?, ?)");
+  row.bind(1, cid).bind(2, run.run).bind(3, std::to_string(run.seed))
       .bind(4, static_cast<std::int64_t>(run.generations.size())).bind(5, run.best_fitness)
-      .bind(6, run.best_generation).bind(7, run.best_index).bind_blob(8, run.best_genome)
-      .run();
+      .bind(6, run.best_generation).bind(7, run.best_index).bind_blob(8, run.best_genome);
+  if (!run.best_tree.empty()) row.bind(9, run.best_tree);
+  if (!run.best_behavior.empty()) row.bind(10, run.best_behavior);
+  row.run();
   db_.prepare("DELETE FROM run_state WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
+  db_.prepare("DELETE FROM tree_state WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
   db_.prepare("DELETE FROM behavior_usage WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
   auto use = db_.prepare(
       "INSERT INTO behavior_usage(controller_id, run, action_idx, action, steps) VALUES (?, ?, ?, ?, ?)");
@@ -465,9 +502,10 @@ std::vector<StoredExperiment> ResultsDb::load() {
         e.controllers.push_back(std::move(c));
       }
       for (StoredController& c : e.controllers) {
-        auto runs = db_.prepare(
-            "SELECT run, seed, status, generations_done, best_fitness, best_generation, best_index, best_genome "
-            "FROM runs WHERE controller_id = ? ORDER BY run");
+        auto runs = db_.prepare(fmt::format(
+            "SELECT run, seed, status, generations_done, best_fitness, best_generation, best_index, best_genome, "
+            "best_tree, {} FROM runs WHERE controller_id = ? ORDER BY run",
+            schema_version_ >= 2 ? "best_behavior" : "NULL"));
         runs.bind(1, c.id);
         while (runs.step()) {
           const int run = runs.integer(0);
@@ -494,6 +532,8 @@ std::vector<StoredExperiment> ResultsDb::load() {
             r.best_generation = runs.integer(5);
             r.best_index = runs.integer(6);
             r.best_genome = runs.doubles(7);
+            if (!runs.is_null(8)) r.best_tree = runs.text(8);
+            if (!runs.is_null(9)) r.best_behavior = runs.text(9);
             auto u = db_.prepare("SELECT steps FROM behavior_usage WHERE controller_id = ? AND run = ? ORDER BY action_idx");
             u.bind(1, c.id).bind(2, run);
             while (u.step()) r.action_usage.push_back(u.int64(0));
@@ -509,6 +549,11 @@ std::vector<StoredExperiment> ResultsDb::load() {
               s.best_generation = runs.integer(5);
               s.best_index = runs.integer(6);
               s.best_genome = runs.doubles(7);
+            }
+            if (c.head == "tree") {
+              load_tree_state(c, s);
+              c.in_progress.push_back(std::move(s));
+              continue;
             }
             auto st = db_.prepare(
                 "SELECT parents, genome_size, sigma_count, population FROM run_state WHERE controller_id = ? AND run = ?");
@@ -546,6 +591,19 @@ std::vector<StoredExperiment> ResultsDb::load() {
   } catch (const nlohmann::json::exception& e) {
     throw StoreError(fmt::format("{} is damaged: {}", file_.string(), e.what()));
   }
+}
+
+void ResultsDb::load_tree_state(const StoredController& c, eval::RunState& s) {
+  auto st = db_.prepare("SELECT individuals, population FROM tree_state WHERE controller_id = ? AND run = ?");
+  st.bind(1, c.id).bind(2, s.run);
+  if (!st.step())
+    throw StoreError(fmt::format("{} is damaged: run {} of {} is unfinished but has no state to resume from",
+                                 file_.string(), s.run + 1, c.name));
+  auto trees = unpack_trees(st.doubles(1), static_cast<std::size_t>(st.int64(0)));
+  if (!trees)
+    throw StoreError(fmt::format("{} is damaged: the stored population of run {} of {} is unreadable", file_.string(),
+                                 s.run + 1, c.name));
+  s.population = std::move(*trees);
 }
 
 StoredExperiment ResultsDb::load_single() {

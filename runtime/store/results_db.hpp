@@ -21,7 +21,9 @@
 namespace esc::store {
 
 inline constexpr const char* kDatabaseFile = "esc.db";
-inline constexpr int kSchemaVersion = 1;
+// 2: GP (table tree_state; runs.best_tree and runs.best_behavior hold a tree controller's
+// best tree as script code). A schema-1 database opened for writing is upgraded to 2.
+inline constexpr int kSchemaVersion = 2;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -60,7 +62,7 @@ struct StoredController {
   std::string name;
   std::string architecture;
   std::size_t genome_size = 0;
-  std::string head;                       // "classical", "symbolic" or "supervisor"
+  std::string head;                       // "classical", "symbolic", "supervisor" or "tree"
   std::vector<std::string> actions;       // what usage counts: action or behavior names
   std::vector<eval::RunResult> finished;  // in run order
   std::vector<eval::RunState> in_progress;
@@ -128,6 +130,11 @@ class ResultsDb {
  private:
   ResultsDb(sql::Database db, std::filesystem::path file);
   std::int64_t controller_id(const std::string& name);
+  // The GP population run `s.run` of tree controller `c` resumes from.
+  void load_tree_state(const StoredController& c, eval::RunState& s);
+  void upgrade();   // to kSchemaVersion
+
+  int schema_version_ = kSchemaVersion;
 
   sql::Database db_;
   std::filesystem::path file_;

@@ -62,6 +62,19 @@ void write_atomically(const fs::path& file, std::string_view text) {
   fs::rename(tmp, file);
 }
 
+std::string best_tree_script(const std::string& controller, const std::string& architecture,
+                             const eval::RunResult& run) {
+  std::string s = fmt::format("// The best tree of controller {} ({}), run {}: fitness {:.17g}\n"
+                              "// (generation {}, individual {}, run seed {}).\n",
+                              controller, architecture, run.run + 1, run.best_fitness, run.best_generation,
+                              run.best_index, run.seed);
+  if (run.best_behavior != run.best_tree)
+    s += "// The tree chooses among its controller's actions or behaviors at each step:\n// " + run.best_tree + "\n";
+  if (run.best_behavior.empty()) return s;
+  if (run.best_behavior != run.best_tree) s += "// As a behavior, its actions' wheel commands inlined:\n";
+  return s + fmt::format("behavior {}_run{:02}() {{ {} }}\n", controller, run.run + 1, run.best_behavior);
+}
+
 std::string generations_csv(const std::vector<eval::GenerationStats>& generations) {
   std::string s = kCsvHeader;
   for (const auto& g : generations) s += csv_line(g);
@@ -91,12 +104,14 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const
   write_atomically(dir_ / "settings.json", doc.dump(2) + "\n");
   partial_.experiment = spec.name;
   partial_.seed = spec.seed;
+  for (const control::ControllerSpec& c : spec.controllers) genome_sizes_[c.name] = spec.genome_size_of(c);
   write_summary();
 }
 
 RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored) {
   RunDirectory rd(std::move(dir), std::move(db));
   rd.partial_ = stored.result();
+  for (const StoredController& c : stored.controllers) rd.genome_sizes_[c.name] = c.genome_size;
   for (const StoredController& c : stored.controllers) {
     if (c.finished.empty() && c.in_progress.empty()) continue;
     fs::create_directories(rd.dir_ / c.name);
@@ -149,7 +164,10 @@ void RunDirectory::write_best(const std::string& controller, const std::string& 
                                  {"seed", run.seed},
                                  {"fitness", run.best_fitness},
                                  {"genome", run.best_genome}};
+  if (!run.best_tree.empty()) best["tree"] = run.best_tree;
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");
+  if (!run.best_tree.empty())
+    write_atomically(run_file(controller, run.run, ".best.esc"), best_tree_script(controller, architecture, run));
 }
 
 void RunDirectory::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {
@@ -158,7 +176,7 @@ void RunDirectory::run_done(const control::ControllerSpec& controller, const eva
   write_best(controller.name, controller.architecture(), run);
   if (partial_.controllers.empty() || partial_.controllers.back().name != controller.name)
     partial_.controllers.push_back(
-        {controller.name, controller.architecture(), controller.genome_size(), {}, controller.choice_names()});
+        {controller.name, controller.architecture(), genome_sizes_[controller.name], {}, controller.choice_names()});
   partial_.controllers.back().runs.push_back(run);
   write_summary();
 }

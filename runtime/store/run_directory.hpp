@@ -6,7 +6,10 @@
 //   sources/<file>             every script file the experiment was compiled from
 //   settings.json              experiment, master seed, resolved settings, content hash
 //   <controller>/run-NN.csv    per-generation statistics, one line appended per generation
-//   <controller>/run-NN.best.json   best genome of the run and its fitness
+//   <controller>/run-NN.best.json   best genome of the run and its fitness (a tree
+//                              controller's also holds the tree as script code, "tree")
+//   <controller>/run-NN.best.esc    tree controllers: the best tree as script code (a
+//                              Wheels tree as a behavior declaration, to paste)
 //   summary.json               all runs finished so far (rewritten atomically after each)
 #include <cstdint>
 #include <filesystem>
@@ -53,9 +56,16 @@ class RunDirectory final : public eval::CampaignListener {
   std::filesystem::path dir_;
   ResultsDb db_;
   eval::CampaignResult partial_;      // runs finished so far, for summary.json
+  std::map<std::string, std::size_t> genome_sizes_;   // per controller, as tables show it
   std::ofstream csv_;                 // the run being written
   std::string csv_key_;
 };
+
+// The text of a tree controller's run-NN.best.esc: comments saying where the tree comes
+// from, then the tree as `behavior CONTROLLER_runNN() { wheels(...) }` to paste (a Wheels
+// tree, or an Action tree with its actions inlined); a Behavior tree as a comment.
+[[nodiscard]] std::string best_tree_script(const std::string& controller, const std::string& architecture,
+                                           const eval::RunResult& run);
 
 // The CSV text of a run's per-generation statistics (header included).
 [[nodiscard]] std::string generations_csv(const std::vector<eval::GenerationStats>& generations);

@@ -17,6 +17,7 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
       }
       nlohmann::ordered_json run = {{"run", r.run}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
                                     {"best", best}, {"mean", mean}, {"sd", sd}};
+      if (!r.best_tree.empty()) run["best_tree"] = r.best_tree;   // tree controllers, as script code
       // Steps per action or behavior in the run's best evaluation (symbolic heads, supervisors).
       if (!r.action_usage.empty() && r.action_usage.size() == c.choices.size()) {
         nlohmann::ordered_json usage = nlohmann::ordered_json::object();

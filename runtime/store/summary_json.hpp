@@ -2,7 +2,8 @@
 // summary.json: the machine-readable result of a campaign.
 // {"experiment": name, "seed": master seed, "controllers": {NAME: {"architecture": "8-14-6",
 //   "genome_size": 216, "runs": [{"run": 0, "seed": ..., "best_fitness": ...,
-//   "best": [per generation], "mean": [per generation], "sd": [per generation]}]}}}
+//   "best": [per generation], "mean": [per generation], "sd": [per generation],
+//   "best_tree": script code (tree controllers only)}]}}}
 #include <nlohmann/json.hpp>
 
 #include "runtime/eval/campaign.hpp"

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
 
 namespace {
 
@@ -48,6 +49,20 @@ TEST(Mpi, DiagnosticsArePrintedOnceNotOncePerRank) {
   EXPECT_EQ(o.output.find(line, first + 1), std::string::npos) << o.output;
 }
 
+TEST(Mpi, ThreeRanksGiveTheSameGpResultsAsOneProcess) {
+  const fs::path one = scratch("mpi-gp-1");
+  const fs::path three = scratch("mpi-gp-3");
+  const std::string args = "run " + tiny_gp() + " --threads 1 --seed 5 --out ";
+  const Outcome a = esc(args + one.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + three.string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  const auto sa = read_json(one / "summary.json");
+  const auto sb = read_json(three / "summary.json");
+  EXPECT_EQ(results_only(sa), results_only(sb));
+  EXPECT_EQ(sa["controllers"]["GS"]["runs"][1]["best_tree"], sb["controllers"]["GS"]["runs"][1]["best_tree"]);
+}
+
 TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   const fs::path out = scratch("mpi-exists");
   fs::create_directories(out);
@@ -62,8 +77,12 @@ TEST(Mpi, ARunKilledHalfwayResumesUnderThreeRanksBitIdentical) {
   const fs::path killed = scratch("mpi-resume-killed");
   const Outcome a = esc("run " + tiny() + " --generations 30 --seed 5 --threads 1 --out " + reference.string());
   ASSERT_EQ(a.status, 0) << a.output;
-  const int seen = run_and_kill({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1"}, killed, 40);
-  ASSERT_GE(seen, 40) << "the run finished before it could be killed";
+  const pid_t child =
+      spawn_esc({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1", "--out", killed.string()});
+  ASSERT_GE(child, 0);
+  const Killed k = kill_when_committed(child, killed, 40);
+  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
+  ASSERT_GE(k.seen, 40);
   ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
   const Outcome resumed = shell(mpirun(3) + "run --resume " + killed.string() + " --threads 1");
   ASSERT_EQ(resumed.status, 0) << resumed.output;

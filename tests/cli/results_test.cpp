@@ -14,32 +14,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 using namespace cli_test;
-
-// Same experiment, same seed: summary.json equal in everything but nothing else.
-void expect_same_summary(const fs::path& a, const fs::path& b) {
-  const auto sa = read_json(a / "summary.json");
-  const auto sb = read_json(b / "summary.json");
-  ASSERT_EQ(sa["controllers"].size(), sb["controllers"].size());
-  for (const auto& [name, c] : sa["controllers"].items()) {
-    const auto& runs_a = c["runs"];
-    const auto& runs_b = sb["controllers"][name]["runs"];
-    ASSERT_EQ(runs_a.size(), runs_b.size()) << name;
-    for (std::size_t r = 0; r < runs_a.size(); ++r) {
-      EXPECT_EQ(runs_a[r]["seed"], runs_b[r]["seed"]);
-      EXPECT_EQ(runs_a[r]["best_fitness"], runs_b[r]["best_fitness"]) << name << " run " << r;
-      EXPECT_EQ(runs_a[r]["best"], runs_b[r]["best"]) << name << " run " << r;
-      EXPECT_EQ(runs_a[r]["mean"], runs_b[r]["mean"]) << name << " run " << r;
-      EXPECT_EQ(runs_a[r]["sd"], runs_b[r]["sd"]) << name << " run " << r;
-    }
-  }
-  EXPECT_EQ(slurp(a / "summary.json"), slurp(b / "summary.json"));
-}
 
 constexpr const char* kLonger = " --generations 30 --seed 5 ";   // 4 x 30 generations, about 2 s
 
@@ -48,8 +29,13 @@ TEST(Results, KilledRunResumesBitIdentical) {
   const fs::path killed = scratch("killed");
   ASSERT_EQ(esc("run " + tiny() + kLonger + "--threads 2 --out " + reference.string()).status, 0);
 
-  const int seen = run_and_kill({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1"}, killed, 40);
-  ASSERT_GE(seen, 40) << "the run finished before it could be killed";
+  const pid_t child =
+      spawn_esc({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1", "--out", killed.string()});
+  ASSERT_GE(child, 0);
+  // Wait until a good part of the campaign is committed, then kill it without warning.
+  const Killed k = kill_when_committed(child, killed, 40);
+  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
+  ASSERT_GE(k.seen, 40);
   ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
 
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
@@ -114,7 +100,10 @@ TEST(Results, ResumeRefusesWhatItCannotContinue) {
   fs::create_directories(src);
   fs::copy_file(tiny(), src / "tiny.esc");
   const fs::path changed = scratch("changed");
-  ASSERT_GE(run_and_kill({"run", (src / "tiny.esc").string(), "--generations", "200", "--threads", "1"}, changed, 3), 3);
+  const pid_t child = spawn_esc(
+      {"run", (src / "tiny.esc").string(), "--generations", "200", "--threads", "1", "--out", changed.string()});
+  ASSERT_GE(child, 0);
+  ASSERT_GE(kill_when_committed(child, changed, 3).seen, 3);
   std::ofstream(src / "tiny.esc", std::ios::app) << "\n// an edit\n";
   const std::string csv = slurp(changed / "CC" / "run-01.csv");
   o = esc("run --resume " + changed.string());

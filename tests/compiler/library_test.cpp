@@ -91,11 +91,11 @@ TEST(StartFrom, NamesTheExperimentAndKeepsOneGenerationWhenEvaluating) {
   ASSERT_TRUE(again.start_from.has_value());
   EXPECT_EQ(again.start_from->experiment, "basic");
   EXPECT_TRUE(again.start_from->evaluate_only);
-  EXPECT_EQ(again.generations(), 1);
+  EXPECT_EQ(again.max_generations(), 1);
   EXPECT_EQ(again.resolved_settings.at("start_from"), "evaluate from experiment basic");
   const eval::ExperimentSpec& more = r.experiments[2];
   EXPECT_FALSE(more.start_from->evaluate_only);
-  EXPECT_EQ(more.generations(), 7);
+  EXPECT_EQ(more.max_generations(), 7);
 }
 
 TEST(StartFrom, TheOtherExperimentMustCompareTheSameControllers) {

@@ -4,45 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "runtime/eval/campaign.hpp"
+#include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/test_experiment.hpp"
 
 namespace esc::eval {
 namespace {
 
-// Keeps the state after generation `at` of every run.
-struct Snapshotter final : CampaignListener {
-  int at = 0;
-  std::vector<ResumePoint::InProgress> states;
-  std::vector<std::pair<RunResult, std::vector<TraceStep>>> traces;
-  void checkpoint(const control::ControllerSpec& c, const RunState& s) override {
-    if (static_cast<int>(s.generations.size()) == at + 1) states.push_back({c.name, s});
-  }
-  void best_traced(const control::ControllerSpec&, const RunResult& r, std::span<const TraceStep> t) override {
-    traces.emplace_back(r, std::vector<TraceStep>(t.begin(), t.end()));
-  }
-};
-
-void expect_same(const CampaignResult& a, const CampaignResult& b) {
-  ASSERT_EQ(a.controllers.size(), b.controllers.size());
-  for (std::size_t c = 0; c < a.controllers.size(); ++c) {
-    ASSERT_EQ(a.controllers[c].runs.size(), b.controllers[c].runs.size());
-    for (std::size_t r = 0; r < a.controllers[c].runs.size(); ++r) {
-      const RunResult& x = a.controllers[c].runs[r];
-      const RunResult& y = b.controllers[c].runs[r];
-      EXPECT_EQ(x.best_fitness, y.best_fitness);
-      EXPECT_EQ(x.best_genome, y.best_genome);
-      EXPECT_EQ(x.best_generation, y.best_generation);
-      EXPECT_EQ(x.best_index, y.best_index);
-      ASSERT_EQ(x.generations.size(), y.generations.size());
-      for (std::size_t g = 0; g < x.generations.size(); ++g) {
-        EXPECT_EQ(x.generations[g].best, y.generations[g].best);
-        EXPECT_EQ(x.generations[g].mean, y.generations[g].mean);
-        EXPECT_EQ(x.generations[g].sd, y.generations[g].sd);
-        EXPECT_EQ(x.generations[g].steps, y.generations[g].steps);
-      }
-    }
-  }
-}
+using testing::expect_same;
+using testing::Snapshotter;
 
 TEST(Resume, ContinuingFromAnyGenerationIsBitIdentical) {
   ExperimentSpec spec = testing::small_experiment();

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "runtime/control/tree_controller.hpp"
+#include "runtime/control/tree_driver.hpp"
 #include "runtime/evo/gp/init.hpp"
 #include "tests/gp/helpers.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -45,6 +46,37 @@ TEST(NoAlloc, TreeControllerStepDoesNotAllocate) {
     EXPECT_EQ(g_news.load(), 0) << spec.name;
     EXPECT_TRUE(std::isfinite(sum));
   }
+}
+
+TEST(NoAlloc, TreeDriverOverAnEvolvedNetworkDoesNotAllocate) {
+  auto net = std::make_shared<ControllerSpec>();
+  for (expr::Slot i = 0; i < expr::kIrCount; ++i) net->mlp.inputs.push_back(expr::slot::ir + i);
+  net->mlp.hidden = {4};
+  net->mlp.kind = NetworkKind::Elman;
+  ControllerSpec spec;
+  spec.name = "tv";
+  spec.head = Head::Supervisor;
+  spec.behaviors.push_back({"go", BehaviorCall{gp::test::signed_behavior("go", 1, 1), {0.5}}});
+  spec.behaviors.push_back({"net", FixedController{net, std::vector<double>(net->genome_size(), 0.1)}});
+  auto p = gp::test::numeric_primitives();
+  p.push_back(gp::prim::behavior("go", 0));
+  p.push_back(gp::prim::behavior("net", 1));
+  p.push_back(gp::prim::if_then_else(gp::Type::Behavior));
+  spec.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), gp::Type::Behavior);
+  Rng rng(3);
+  std::vector<expr::Frame> frames;
+  for (int k = 0; k < 50; ++k) frames.push_back(gp::test::random_frame(rng));
+  double sum = 0.0;
+  for (int k = 0; k < 10; ++k) {
+    TreeDriver driver(spec, gp::full(*spec.primitives, gp::Type::Behavior, 5, rng));
+    g_news = 0;
+    g_counting = true;
+    driver.reset();
+    for (expr::Frame& f : frames) sum += driver.step(f).left;
+    g_counting = false;
+    EXPECT_EQ(g_news.load(), 0);
+  }
+  EXPECT_TRUE(std::isfinite(sum));
 }
 
 }  // namespace

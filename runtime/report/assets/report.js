@@ -350,6 +350,17 @@
         section.appendChild(usageGrid);
         symbolic.forEach(c => usageChart(usageGrid, c, palette[exp.controllers.indexOf(c) % palette.length]));
       }
+      const trees = exp.controllers.filter(c => c.runs.some(r => r.best_tree));   // tree controllers
+      if (trees.length > 0) {
+        section.appendChild(el('h2', {text: 'Best trees'}));
+        const card = el('div', {class: 'card'});
+        section.appendChild(card);
+        for (const c of trees) {
+          card.appendChild(el('h3', {text: `${c.name} (${c.architecture})`}));
+          for (const r of c.runs)
+            card.appendChild(el('p', {class: 'tree', text: `run ${r.run}, fitness ${fmt(r.best_fitness, 1)}: ${r.best_tree}`}));
+        }
+      }
       section.appendChild(el('h2', {text: 'Replay'}));
       replay(section, exp);
       const settings = el('table');

@@ -1,0 +1,290 @@
+// Genetic programming in scripts: `primitives` declarations, the primitive set of a
+// `tree(...)` controller, `evolve gp(...)`, and which algorithm evolves which controller.
+#include <algorithm>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "compiler/gp_settings.hpp"
+#include "compiler/model.hpp"
+#include "compiler/names.hpp"
+#include "compiler/quantities.hpp"
+#include "compiler/units.hpp"
+#include "runtime/expr/observables.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+namespace gp = evo::gp;
+using expr::Op;
+
+struct FunctionName {
+  std::string_view name;
+  Op op;
+};
+
+// `if` is not here: it is if-then-else over Numbers and over the tree's result.
+constexpr FunctionName kFunctions[] = {
+    {"+", Op::Add},         {"-", Op::Sub},      {"*", Op::Mul},   {"/", Op::Div},   {"^", Op::Pow},
+    {"pow", Op::Pow},       {"min", Op::Min},    {"max", Op::Max}, {"abs", Op::Abs}, {"sqrt", Op::Sqrt},
+    {"exp", Op::Exp},       {"log", Op::Log},    {"tanh", Op::Tanh}, {"sigmoid", Op::Sigmoid},
+    {"clamp", Op::Clamp},   {"neg", Op::Neg},    {"<", Op::Lt},    {"<=", Op::Le},   {">", Op::Gt},
+    {">=", Op::Ge},         {"==", Op::Eq},      {"!=", Op::Ne},   {"and", Op::And}, {"or", Op::Or},
+    {"not", Op::Not},
+};
+
+std::vector<std::string> function_words() {
+  std::vector<std::string> v;
+  for (const FunctionName& f : kFunctions) v.emplace_back(f.name);
+  v.emplace_back("if");
+  return v;
+}
+
+std::string function_help() {
+  std::string s;
+  for (const std::string& w : function_words()) s += (s.empty() ? "" : " ") + w;
+  return "functions: " + s;
+}
+
+gp::Type root_of(control::Head h) {
+  return h == control::Head::Symbolic ? gp::Type::Action
+         : h == control::Head::Supervisor ? gp::Type::Behavior
+                                          : gp::Type::Wheels;
+}
+
+std::string_view use_of(gp::Type root) {
+  return root == gp::Type::Action ? "an Action tree" : root == gp::Type::Behavior ? "a Behavior tree" : "a Wheels tree";
+}
+
+}  // namespace
+
+const std::optional<Model::PrimitiveList>& Model::primitives(const ast::PrimitivesDecl& d) {
+  if (auto it = primitive_lists_.find(&d); it != primitive_lists_.end()) return it->second;
+  auto& slot = primitive_lists_[&d];
+  if (d.poisoned) return slot;
+  const int errors = sink_.errors();
+  PrimitiveList list;
+  std::map<std::string, SourceRange> seen;
+  const auto once = [&](const std::string& text, const SourceRange& where) {
+    if (auto [it, fresh] = seen.try_emplace(text, where); !fresh) {
+      sink_.error(where, fmt::format("`{}` is listed twice", text)).notes.emplace_back(it->second, "first listed here");
+      return false;
+    }
+    return true;
+  };
+
+  for (const ast::PrimFunction& f : d.functions) {
+    if (!once(f.text, f.where)) continue;
+    if (f.text == "if") {
+      list.branches = true;
+      list.items.push_back(gp::prim::if_then_else(gp::Type::Number));
+      continue;
+    }
+    const auto* fn = std::find_if(std::begin(kFunctions), std::end(kFunctions),
+                                  [&](const FunctionName& k) { return k.name == f.text; });
+    if (fn == std::end(kFunctions)) {
+      std::string msg = fmt::format("unknown function `{}`", f.text);
+      const auto best = closest(f.text, function_words());
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      sink_.error(f.where, msg).help.push_back(function_help());
+      continue;
+    }
+    list.items.push_back(gp::prim::function(fn->op));
+  }
+
+  std::vector<std::string> observables;
+  for (const auto& o : expr::kObservables) observables.emplace_back(o.name);
+  for (const ast::PrimTerminal& t : d.terminals) {
+    using TK = ast::PrimTerminal::Kind;
+    if (t.kind == TK::Bool) {
+      if (once(t.flag ? "true" : "false", t.where))
+        list.items.push_back(gp::prim::constant(gp::Type::Bool, t.flag ? 1 : 0));
+      continue;
+    }
+    if (t.kind == TK::Constant) {
+      if (!t.value.finite) continue;
+      double v = t.value.value;
+      if (!t.value.unit.empty()) {
+        const auto u = find_unit(t.value.unit);
+        if (!u) {
+          sink_.error(t.value.unit_where, fmt::format("unknown unit `{}`", t.value.unit));
+          continue;
+        }
+        v *= u->to_si;
+      }
+      if (once(number_text(v), t.where)) list.items.push_back(gp::prim::constant(gp::Type::Number, v));
+      continue;
+    }
+    if (t.kind == TK::Erc) {
+      if (t.name.text != "erc") {
+        sink_.error(t.name.where, fmt::format("unknown terminal `{}(...)`", t.name.text))
+            .help.push_back("the terminal with arguments is `erc(LO, HI)`, an ephemeral random constant");
+        continue;
+      }
+      const auto lo = to_si(*t.lo, Dim::None, sink_), hi = to_si(*t.hi, Dim::None, sink_);
+      if (!lo || !hi) continue;
+      if (!(*lo < *hi)) {
+        sink_.error(t.where, fmt::format("empty range: `erc({}, {})` needs its first bound below the second",
+                                         number_text(*lo), number_text(*hi)));
+        continue;
+      }
+      list.items.push_back(gp::prim::erc(*lo, *hi));
+      continue;
+    }
+    // An observable, all of an array, or a range of it.
+    const std::string& name = t.name.text;
+    if (name.empty()) continue;
+    const auto o = expr::find_observable(name);
+    if (!o) {
+      if (const auto s = symbols_.find(name); s != symbols_.end() && s->second.kind == DeclKind::Behavior) {
+        sink_.error(t.name.where, fmt::format("`{}` is a behavior, not a terminal", name))
+            .help.push_back("a tree controller lists its actions or behaviors itself: "
+                            "`tree(actions [forward, left, right], primitives P)`");
+        continue;
+      }
+      if (name == "erc") {
+        sink_.error(t.where, "`erc` needs its range").help.push_back("write `erc(-1, 1)`");
+        continue;
+      }
+      std::string msg = fmt::format("unknown observable `{}`", name);
+      const auto best = closest(name, observables);
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& diag = sink_.error(t.name.where, msg);
+      if (!best) diag.help.push_back("terminals are observables (`ir[0..7]`, `speed`, ...), numbers, `true`, "
+                                     "`false` and `erc(LO, HI)`");
+      continue;
+    }
+    if (t.lo && !o->indexed) {
+      sink_.error(t.where, fmt::format("`{}` is a single value and cannot be indexed", name));
+      continue;
+    }
+    long long first = 0, last = o->indexed ? o->count - 1 : 0;
+    if (t.lo) {
+      const auto lo = to_whole(*t.lo, "an index", 0, o->count - 1, sink_);
+      std::optional<long long> hi = lo;
+      if (t.hi) hi = to_whole(*t.hi, "an index", 0, o->count - 1, sink_);
+      if (!lo || !hi) continue;
+      if (*hi < *lo) {
+        sink_.error(t.where, fmt::format("empty range `{}[{}..{}]`: the first index must not exceed the last", name,
+                                         *lo, *hi));
+        continue;
+      }
+      first = *lo;
+      last = *hi;
+    }
+    for (long long i = first; i <= last; ++i) {
+      const std::string shown = o->indexed ? fmt::format("{}[{}]", name, i) : name;
+      if (!once(shown, t.where)) continue;
+      if (auto p = gp::prim::observable(shown)) list.items.push_back(std::move(*p));
+    }
+  }
+  if (sink_.errors() == errors) slot = std::move(list);
+  return slot;
+}
+
+bool Model::lower_tree(const ast::ControllerDecl& d, control::ControllerSpec& c) {
+  if (!d.symbolic && !d.supervisor && d.tree_result.text != "wheels") {
+    if (d.tree_result.text.empty()) return false;   // a syntax error, reported
+    std::string msg = fmt::format("unknown tree result `{}`", d.tree_result.text);
+    if (closest(d.tree_result.text, {"wheels", "actions", "behaviors"})) msg += "; did you mean `wheels`?";
+    sink_.error(d.tree_result.where, msg)
+        .help.push_back("a tree returns `wheels`, one of `actions [A, B, ...]` or one of `behaviors [A, B(0.5), ...]`");
+    return false;
+  }
+  const Symbol* s = lookup(d.primitives, DeclKind::Primitives);
+  if (s == nullptr) return false;
+  const auto* pd = static_cast<const ast::PrimitivesDecl*>(s->decl);
+  const auto& list = primitives(*pd);
+  if (!list) return false;
+  const gp::Type root = root_of(c.head);
+  std::vector<gp::Primitive> items = list->items;
+  if (list->branches) items.push_back(gp::prim::if_then_else(root));
+  if (root == gp::Type::Wheels) items.push_back(gp::prim::wheels());
+  for (std::size_t k = 0; k < c.actions.size(); ++k)
+    items.push_back(gp::prim::action(c.actions[k].name, static_cast<std::uint32_t>(k),
+                                     static_cast<std::uint8_t>(c.actions[k].params.size())));
+  for (std::size_t k = 0; k < c.behaviors.size(); ++k)
+    items.push_back(gp::prim::behavior(c.behaviors[k].name, static_cast<std::uint32_t>(k)));
+  try {
+    c.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(items), root);
+  } catch (const std::invalid_argument& e) {
+    std::string why = e.what();
+    if (why.rfind("primitive set: ", 0) == 0) why.erase(0, 15);
+    const std::string msg = fmt::format("primitive set `{}` cannot build {}: {}", pd->name.text, use_of(root), why);
+    if (reported_sets_.insert(msg).second)
+      sink_.error(pd->name.where, msg)
+          .notes.emplace_back(d.primitives.where,
+                              fmt::format("used by tree controller `{}` here, which needs {}", d.name.text,
+                                          use_of(root)));
+    return false;
+  }
+  c.primitives_name = pd->name.text;
+  return true;
+}
+
+void Model::lower_gp(const ast::ExpItem& item, eval::ExperimentSpec& x) {
+  gp::GpSettings s = x.gp.value_or(gp::GpSettings{});
+  std::map<std::string, const ast::EsOption*> seen;
+  for (const ast::EsOption& o : item.options) {
+    const std::string& n = o.name.text;
+    if (n.empty()) continue;
+    const GpOption* opt = find_gp_option(n);
+    if (opt == nullptr) {
+      std::string msg = fmt::format("unknown GP option `{}`", n);
+      const auto best = closest(n, gp_option_names());
+      if (best) msg += fmt::format("; did you mean `{}`?", *best);
+      Diagnostic& diag = sink_.error(o.name.where, msg);
+      if (!best) diag.help.push_back(fmt::format("GP options: {}", fmt::join(gp_option_names(), ", ")));
+      continue;
+    }
+    if (auto [it, fresh] = seen.try_emplace(n, &o); !fresh) {
+      sink_.error(o.where, fmt::format("`{}` is already given", n))
+          .notes.emplace_back(it->second->where, "first given here");
+      continue;
+    }
+    const bool range = opt->kind == GpOption::Kind::Depths;
+    if (range != o.lo.has_value() || (!range && !o.value)) {
+      if (range)
+        sink_.error(o.where, "`init_depth` takes a range of depths").help.push_back("write `init_depth [2, 6]`");
+      else
+        sink_.error(o.where, fmt::format("`{}` needs a value", n)).help.push_back(fmt::format("write `{} 7`", n));
+      continue;
+    }
+    const auto v = to_si(range ? *o.lo : *o.value, Dim::None, sink_);
+    const auto hi = range ? to_si(*o.hi, Dim::None, sink_) : std::optional<double>(0.0);
+    if (!v || !hi) continue;
+    if (std::string m = set_gp_option(s, *opt, *v, *hi); !m.empty()) sink_.error(o.where, m);
+  }
+  if (item.generations) {
+    if (seen.count("generations") != 0)
+      sink_.error(item.generations->where, "the number of generations is already given in `gp(...)`");
+    else if (auto v = to_whole(*item.generations, "`generations`", 1, std::numeric_limits<int>::max(), sink_))
+      s.generations = static_cast<int>(*v);
+  }
+  x.gp = s;
+}
+
+void Model::check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,
+                             const std::vector<const ast::Name*>& compared, const ast::ExpItem* es_item,
+                             const ast::ExpItem* gp_item) {
+  for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i) {
+    const control::ControllerSpec& c = x.controllers[i];
+    if (c.is_tree() && gp_item == nullptr) {
+      sink_.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
+                                                  "`evolve gp(...)` to evolve it", c.name, d.name.text))
+          .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
+    } else if (!c.is_tree() && gp_item != nullptr && es_item == nullptr) {
+      sink_.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
+                                                  "(`evolve gp`)", c.name, d.name.text))
+          .help.push_back("networks are evolved by the ES: add `evolve es(mu 30, lambda 150) for 250 generations`");
+    }
+  }
+  if (gp_item != nullptr)
+    if (std::string m = check_gp(x); !m.empty()) sink_.error(gp_item->where, m);
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,105 @@
+#include "runtime/eval/campaign_parts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace esc::eval::detail {
+
+namespace {
+
+// Collects a traced evaluation and counts the steps each action acted on.
+struct Recorder final : TraceSink {
+  std::vector<TraceStep> steps;
+  std::vector<std::int64_t> usage;
+  void on_step(const TraceStep& t) override {
+    steps.push_back(t);
+    if (t.action >= 0 && static_cast<std::size_t>(t.action) < usage.size()) ++usage[static_cast<std::size_t>(t.action)];
+  }
+};
+
+}  // namespace
+
+std::int64_t evaluate_all(std::size_t n, std::uint64_t run_seed, int generation, Evaluators& ev,
+                          const EvaluateOne& evaluate, std::vector<double>& fitness) {
+  constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
+  std::vector<double> results(n * kWidth, 0.0);
+  ev.distribution.run(n, kWidth, ev.chunk, results, [&](std::size_t first, std::size_t last) {
+    tbb::parallel_for(first, last, [&](std::size_t i) {
+      const Evaluation e = evaluate(ev.workers.local(), i, evaluation_seed(run_seed, generation, i));
+      results[i * kWidth] = e.fitness;
+      results[i * kWidth + 1] = static_cast<double>(e.steps);
+    });
+  });
+  fitness.assign(n, 0.0);
+  std::int64_t steps = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    fitness[i] = results[i * kWidth];
+    steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
+  }
+  return steps;
+}
+
+GenerationStats summarise(int generation, std::span<const double> fitness, std::int64_t steps, double seconds) {
+  GenerationStats g;
+  g.generation = generation;
+  g.evaluations = static_cast<std::int64_t>(fitness.size());
+  g.steps = steps;
+  g.seconds = seconds;
+  double sum = 0.0;
+  g.best = fitness.front();
+  for (const double f : fitness) {
+    sum += f;
+    g.best = std::max(g.best, f);
+  }
+  const auto n = static_cast<double>(fitness.size());
+  g.mean = sum / n;
+  double sq = 0.0;
+  for (const double f : fitness) sq += (f - g.mean) * (f - g.mean);
+  g.sd = fitness.size() > 1 ? std::sqrt(sq / (n - 1.0)) : 0.0;
+  return g;
+}
+
+std::optional<std::size_t> improve_best(RunState& st, int generation, std::span<const double> fitness) {
+  std::optional<std::size_t> found;
+  for (std::size_t i = 0; i < fitness.size(); ++i) {
+    if (!st.has_best || fitness[i] > st.best_fitness) {
+      st.has_best = true;
+      st.best_fitness = fitness[i];
+      st.best_generation = generation;
+      st.best_index = static_cast<int>(i);
+      found = i;
+    }
+  }
+  return found;
+}
+
+RunResult close_run(RunState&& st) {
+  RunResult result;
+  result.run = st.run;
+  result.seed = st.seed;
+  result.generations = std::move(st.generations);
+  result.best_fitness = st.best_fitness;
+  result.best_genome = std::move(st.best_genome);
+  result.best_generation = st.best_generation;
+  result.best_index = st.best_index;
+  return result;
+}
+
+void replay_best(const ExperimentSpec& spec, const control::ControllerSpec& controller, RunResult& result,
+                 const CampaignOptions& options, Evaluators& ev, CampaignListener& listener,
+                 const std::function<Evaluation(Evaluator&, std::uint64_t, TraceSink*)>& replay) {
+  Recorder rec;
+  rec.usage.assign(controller.choice_names().size(), 0);
+  if (options.trace_best)
+    rec.steps.reserve(static_cast<std::size_t>(spec.epochs) * static_cast<std::size_t>(spec.steps));
+  if (!options.trace_best && rec.usage.empty()) return;
+  const std::uint64_t seed =
+      evaluation_seed(result.seed, result.best_generation, static_cast<std::size_t>(result.best_index));
+  (void)replay(ev.workers.local(), seed, &rec);
+  result.action_usage = std::move(rec.usage);
+  if (options.trace_best) listener.best_traced(controller, result, rec.steps);
+}
+
+}  // namespace esc::eval::detail

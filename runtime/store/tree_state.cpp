@@ -1,0 +1,64 @@
+#include "runtime/store/tree_state.hpp"
+
+#include <cmath>
+
+namespace esc::store {
+
+namespace {
+
+constexpr std::size_t kNodeWidth = 5;   // prim, arity, type, length, value
+
+// A whole number in [0, max] held by a double, or nullopt.
+std::optional<std::uint32_t> whole(double v, double max) {
+  if (!(v >= 0.0 && v <= max && std::floor(v) == v)) return std::nullopt;
+  return static_cast<std::uint32_t>(v);
+}
+
+}  // namespace
+
+std::vector<double> pack_trees(const std::vector<evo::gp::Individual>& population) {
+  std::vector<double> v;
+  for (const evo::gp::Individual& ind : population) {
+    v.push_back(ind.fitness);
+    v.push_back(static_cast<double>(ind.tree.size()));
+    for (const evo::gp::Node& n : ind.tree.nodes) {
+      v.push_back(n.prim);
+      v.push_back(n.arity);
+      v.push_back(static_cast<double>(evo::gp::index_of(n.type)));
+      v.push_back(n.length);
+      v.push_back(n.value);
+    }
+  }
+  return v;
+}
+
+std::optional<std::vector<evo::gp::Individual>> unpack_trees(const std::vector<double>& blob, std::size_t count) {
+  std::vector<evo::gp::Individual> pop;
+  pop.reserve(count);
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (blob.size() - at < 2) return std::nullopt;
+    evo::gp::Individual ind;
+    ind.fitness = blob[at];
+    const auto nodes = whole(blob[at + 1], static_cast<double>((blob.size() - at - 2) / kNodeWidth));
+    if (!nodes) return std::nullopt;
+    at += 2;
+    ind.tree.nodes.resize(*nodes);
+    for (evo::gp::Node& n : ind.tree.nodes) {
+      const auto prim = whole(blob[at], 0xFFFF), arity = whole(blob[at + 1], evo::gp::kMaxArity),
+                 type = whole(blob[at + 2], evo::gp::kTypeCount - 1), length = whole(blob[at + 3], 1e9);
+      if (!prim || !arity || !type || !length) return std::nullopt;
+      n.prim = static_cast<evo::gp::PrimitiveId>(*prim);
+      n.arity = static_cast<std::uint8_t>(*arity);
+      n.type = evo::gp::kAllTypes[*type];
+      n.length = *length;
+      n.value = blob[at + 4];
+      at += kNodeWidth;
+    }
+    pop.push_back(std::move(ind));
+  }
+  if (at != blob.size()) return std::nullopt;
+  return pop;
+}
+
+}  // namespace esc::store

@@ -1,0 +1,81 @@
+#pragma once
+// What the end-to-end tests of stored results share: an `esc run` started in the
+// background (to be killed), the generations a run directory has committed so far, and
+// the comparison of two runs' summaries.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+
+namespace cli_test {
+
+// Starts `esc ARGS...` with its standard output discarded; returns its process id.
+inline pid_t spawn_esc(const std::vector<std::string>& args) {
+  const pid_t child = fork();
+  if (child != 0) return child;
+  if (std::freopen("/dev/null", "w", stdout) == nullptr) std::_Exit(127);
+  std::vector<char*> argv{const_cast<char*>(ESC_BINARY)};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  execv(ESC_BINARY, argv.data());
+  std::_Exit(127);
+}
+
+// Generations committed so far, read through `esc export` while the run writes.
+inline int committed_generations(const fs::path& dir) {
+  const Outcome o = esc("export " + dir.string() + " --format csv");
+  if (o.status != 0) return 0;
+  int lines = 0;
+  for (char ch : o.output) lines += ch == '\n' ? 1 : 0;
+  return lines - 1;
+}
+
+// Kills `child` (without warning: SIGKILL) once `dir` has `at_least` generations committed
+// (or after a minute); returns whether it was still running then and the count seen.
+struct Killed {
+  bool still_running = false;
+  int seen = 0;
+};
+inline Killed kill_when_committed(pid_t child, const fs::path& dir, int at_least) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  Killed k;
+  while ((k.seen = committed_generations(dir)) < at_least && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  int status = 0;
+  k.still_running = waitpid(child, &status, WNOHANG) == 0;
+  kill(child, SIGKILL);
+  waitpid(child, &status, 0);
+  return k;
+}
+
+// Same experiment, same seed: summary.json equal in everything but nothing else.
+inline void expect_same_summary(const fs::path& a, const fs::path& b) {
+  const auto sa = read_json(a / "summary.json");
+  const auto sb = read_json(b / "summary.json");
+  ASSERT_EQ(sa["controllers"].size(), sb["controllers"].size());
+  for (const auto& [name, c] : sa["controllers"].items()) {
+    const auto& runs_a = c["runs"];
+    const auto& runs_b = sb["controllers"][name]["runs"];
+    ASSERT_EQ(runs_a.size(), runs_b.size()) << name;
+    for (std::size_t r = 0; r < runs_a.size(); ++r) {
+      EXPECT_EQ(runs_a[r]["seed"], runs_b[r]["seed"]);
+      EXPECT_EQ(runs_a[r]["best_fitness"], runs_b[r]["best_fitness"]) << name << " run " << r;
+      EXPECT_EQ(runs_a[r]["best"], runs_b[r]["best"]) << name << " run " << r;
+      EXPECT_EQ(runs_a[r]["mean"], runs_b[r]["mean"]) << name << " run " << r;
+      EXPECT_EQ(runs_a[r]["sd"], runs_b[r]["sd"]) << name << " run " << r;
+    }
+  }
+  EXPECT_EQ(slurp(a / "summary.json"), slurp(b / "summary.json"));
+}
+
+}  // namespace cli_test

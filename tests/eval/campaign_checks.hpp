@@ -1,0 +1,53 @@
+#pragma once
+// What the campaign tests check: two campaigns gave the same results bit for bit, and a
+// listener that keeps the state of every run after one generation (to resume from) and
+// every best evaluation replayed.
+#include <gtest/gtest.h>
+
+#include <utility>
+#include <vector>
+
+#include "runtime/eval/campaign.hpp"
+
+namespace esc::testing {
+
+// Keeps the state after generation `at` of every run, and every traced best evaluation.
+struct Snapshotter final : eval::CampaignListener {
+  int at = 0;
+  std::vector<eval::ResumePoint::InProgress> states;
+  std::vector<std::pair<eval::RunResult, std::vector<eval::TraceStep>>> traces;
+  void checkpoint(const control::ControllerSpec& c, const eval::RunState& s) override {
+    if (static_cast<int>(s.generations.size()) == at + 1) states.push_back({c.name, s});
+  }
+  void best_traced(const control::ControllerSpec&, const eval::RunResult& r,
+                   std::span<const eval::TraceStep> t) override {
+    traces.emplace_back(r, std::vector<eval::TraceStep>(t.begin(), t.end()));
+  }
+};
+
+inline void expect_same(const eval::CampaignResult& a, const eval::CampaignResult& b) {
+  ASSERT_EQ(a.controllers.size(), b.controllers.size());
+  for (std::size_t c = 0; c < a.controllers.size(); ++c) {
+    ASSERT_EQ(a.controllers[c].runs.size(), b.controllers[c].runs.size());
+    for (std::size_t r = 0; r < a.controllers[c].runs.size(); ++r) {
+      const eval::RunResult& x = a.controllers[c].runs[r];
+      const eval::RunResult& y = b.controllers[c].runs[r];
+      EXPECT_EQ(x.best_fitness, y.best_fitness);
+      EXPECT_EQ(x.best_genome, y.best_genome);
+      EXPECT_EQ(x.best_tree, y.best_tree);
+      EXPECT_EQ(x.best_behavior, y.best_behavior);
+      EXPECT_EQ(x.best_generation, y.best_generation);
+      EXPECT_EQ(x.best_index, y.best_index);
+      EXPECT_EQ(x.action_usage, y.action_usage);
+      ASSERT_EQ(x.generations.size(), y.generations.size());
+      for (std::size_t g = 0; g < x.generations.size(); ++g) {
+        EXPECT_EQ(x.generations[g].best, y.generations[g].best);
+        EXPECT_EQ(x.generations[g].mean, y.generations[g].mean);
+        EXPECT_EQ(x.generations[g].sd, y.generations[g].sd);
+        EXPECT_EQ(x.generations[g].steps, y.generations[g].steps);
+      }
+    }
+  }
+}
+
+}  // namespace esc::testing

@@ -1,0 +1,103 @@
+// control::TreeDriver: a compared tree controller (a ControllerSpec with primitives) bound
+// to a tree. A Behavior tree's delegates are hand-written behaviors with constant
+// arguments and evolved networks, each network run by the driver's own Controller, reset
+// with it; the head and the primitives' root must agree.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "runtime/control/tree_driver.hpp"
+#include "tests/gp/helpers.hpp"
+
+namespace esc::control {
+namespace {
+
+namespace gp = evo::gp;
+
+std::shared_ptr<const ControllerSpec> elman() {
+  auto net = std::make_shared<ControllerSpec>();
+  net->name = "net";
+  for (expr::Slot i = 0; i < expr::kIrCount; ++i) net->mlp.inputs.push_back(expr::slot::ir + i);
+  net->mlp.hidden = {3};
+  net->mlp.kind = NetworkKind::Elman;
+  return net;
+}
+
+std::vector<double> weights(std::size_t n) {
+  Rng rng(5);
+  std::vector<double> w(n);
+  for (double& x : w) x = rng.uniform(-1.0, 1.0);
+  return w;
+}
+
+// A tree supervisor over go(0.5) and an evolved Elman network.
+ControllerSpec supervisor() {
+  ControllerSpec c;
+  c.name = "TV";
+  c.head = Head::Supervisor;
+  const auto net = elman();
+  c.behaviors.push_back({"go(0.5)", BehaviorCall{gp::test::signed_behavior("go", 1, 1), {0.5}}});
+  c.behaviors.push_back({"net", FixedController{net, weights(net->genome_size())}});
+  auto p = gp::test::numeric_primitives();
+  p.push_back(gp::prim::behavior("go(0.5)", 0));
+  p.push_back(gp::prim::behavior("net", 1));
+  p.push_back(gp::prim::if_then_else(gp::Type::Behavior));
+  c.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), gp::Type::Behavior);
+  return c;
+}
+
+std::vector<expr::Frame> frames(int n) {
+  Rng rng(11);
+  std::vector<expr::Frame> out;
+  for (int k = 0; k < n; ++k) out.push_back(gp::test::random_frame(rng));
+  return out;
+}
+
+TEST(TreeDriver, AnEvolvedNetworkDelegateRunsLikeItsController) {
+  const ControllerSpec spec = supervisor();
+  const auto& fixed = std::get<FixedController>(spec.behaviors[1].what);
+  Controller alone(*fixed.spec, fixed.genome);
+  TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"net"}));
+  for (int round = 0; round < 2; ++round) {   // reset() clears the network's context
+    driver.reset();
+    alone.reset();
+    for (expr::Frame f : frames(30)) {
+      expr::Frame g = f;
+      const WheelCommand a = driver.step(f);
+      const WheelCommand b = alone.step(g);
+      EXPECT_EQ(a.left, b.left);
+      EXPECT_EQ(a.right, b.right);
+      EXPECT_EQ(driver.last_action(), 1);
+    }
+  }
+}
+
+TEST(TreeDriver, AHandWrittenDelegateGetsItsArguments) {
+  const ControllerSpec spec = supervisor();
+  // if ir[0] > 0.5 then net else go(0.5)
+  TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"ir[0]", {"erc", 0.5}, ">", "net", "go(0.5)", "if"}));
+  expr::Frame f{};
+  f[expr::slot::ir] = 0.1;
+  const WheelCommand w = driver.step(f);
+  EXPECT_EQ(w.left, 0.5);
+  EXPECT_EQ(w.right, 0.5);
+  EXPECT_EQ(driver.last_action(), 0);
+  f[expr::slot::ir] = 0.9;
+  (void)driver.step(f);
+  EXPECT_EQ(driver.last_action(), 1);
+  EXPECT_EQ(driver.tree_spec().behaviors.size(), 2u);
+}
+
+TEST(TreeDriver, TheHeadMustMatchThePrimitives) {
+  ControllerSpec spec = supervisor();
+  const gp::Tree tree = gp::test::postfix(*spec.primitives, {"net"});
+  spec.head = Head::Classical;
+  EXPECT_THROW(TreeDriver(spec, tree), std::invalid_argument);
+  ControllerSpec network = *elman();
+  EXPECT_THROW(TreeDriver(network, tree), std::invalid_argument);
+  // A tree spec is not a network: Controller refuses it.
+  EXPECT_THROW(Controller(supervisor(), {}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace esc::control
