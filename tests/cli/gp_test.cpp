@@ -59,16 +59,10 @@ TEST(GpCli, NetworkAndTreesInOneCompareLineSameForOneOrTwoThreads) {
 TEST(GpCli, KilledGpRunResumesBitIdentical) {
   const fs::path reference = scratch("gp-reference");
   const fs::path killed = scratch("gp-killed");
-  const std::string args = " --generations 30 --seed 5 ";   // 3 controllers x 2 runs x 30 generations
+  const std::string args = " --generations 100 --seed 5 ";   // 3 controllers x 2 runs x 100 generations
   ASSERT_EQ(esc("run " + tiny_gp() + args + "--threads 2 --out " + reference.string()).status, 0);
-  const pid_t child =
-      spawn_esc({"run", tiny_gp(), "--generations", "30", "--seed", "5", "--threads", "1", "--out", killed.string()});
-  ASSERT_GE(child, 0);
-  // Kill it once the ES controller's runs are done and the GP runs are under way.
-  const Killed k = kill_when_committed(child, killed, 80);
-  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
-  ASSERT_GE(k.seen, 80);
-  ASSERT_LT(committed_generations(killed), 180) << "nothing left to resume";
+  // Killed once the ES controller's runs are done and the GP runs are under way.
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny_gp(), killed, 240, 600));
 
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
@@ -76,7 +70,7 @@ TEST(GpCli, KilledGpRunResumesBitIdentical) {
   expect_same_summary(reference, killed);
   for (const char* file : {"GS/run-01.best.json", "GS/run-02.best.json", "GW/run-01.best.esc", "GW/run-02.best.esc"})
     EXPECT_EQ(slurp(reference / file), slurp(killed / file)) << file;
-  EXPECT_EQ(committed_generations(killed), 180);
+  EXPECT_EQ(committed_generations(killed), 600);
 }
 
 TEST(GpCli, TreeSupervisorOverAnEvolvedNetwork) {

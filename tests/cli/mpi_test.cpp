@@ -75,19 +75,13 @@ TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
 TEST(Mpi, ARunKilledHalfwayResumesUnderThreeRanksBitIdentical) {
   const fs::path reference = scratch("mpi-resume-reference");
   const fs::path killed = scratch("mpi-resume-killed");
-  const Outcome a = esc("run " + tiny() + " --generations 30 --seed 5 --threads 1 --out " + reference.string());
+  const Outcome a = esc("run " + tiny() + " --generations 100 --seed 5 --threads 1 --out " + reference.string());
   ASSERT_EQ(a.status, 0) << a.output;
-  const pid_t child =
-      spawn_esc({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1", "--out", killed.string()});
-  ASSERT_GE(child, 0);
-  const Killed k = kill_when_committed(child, killed, 40);
-  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
-  ASSERT_GE(k.seen, 40);
-  ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 40, 400));
   const Outcome resumed = shell(mpirun(3) + "run --resume " + killed.string() + " --threads 1");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resuming"), std::string::npos) << resumed.output;
-  EXPECT_EQ(committed_generations(killed), 120);
+  EXPECT_EQ(committed_generations(killed), 400);
   EXPECT_EQ(slurp(reference / "summary.json"), slurp(killed / "summary.json"));
 }
 

@@ -58,6 +58,18 @@ inline Killed kill_when_committed(pid_t child, const fs::path& dir, int at_least
   return k;
 }
 
+// `esc run SCRIPT --generations 100 --seed 5 --threads 1 --out DIR`, killed once `at_least`
+// generations are committed and before all `total` are; wrap in ASSERT_NO_FATAL_FAILURE.
+inline void run_killed_halfway(const std::string& script, const fs::path& dir, int at_least, int total) {
+  const pid_t child =
+      spawn_esc({"run", script, "--generations", "100", "--seed", "5", "--threads", "1", "--out", dir.string()});
+  ASSERT_GE(child, 0);
+  const Killed k = kill_when_committed(child, dir, at_least);
+  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
+  ASSERT_GE(k.seen, at_least);
+  ASSERT_LT(committed_generations(dir), total) << "nothing left to resume";
+}
+
 // Same experiment, same seed: summary.json equal in everything but nothing else.
 inline void expect_same_summary(const fs::path& a, const fs::path& b) {
   const auto sa = read_json(a / "summary.json");

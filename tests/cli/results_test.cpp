@@ -22,21 +22,14 @@ namespace fs = std::filesystem;
 
 using namespace cli_test;
 
-constexpr const char* kLonger = " --generations 30 --seed 5 ";   // 4 x 30 generations, about 2 s
+constexpr const char* kLonger = " --generations 100 --seed 5 ";   // 4 x 100 generations, about 2.5 s
 
 TEST(Results, KilledRunResumesBitIdentical) {
   const fs::path reference = scratch("reference");
   const fs::path killed = scratch("killed");
   ASSERT_EQ(esc("run " + tiny() + kLonger + "--threads 2 --out " + reference.string()).status, 0);
 
-  const pid_t child =
-      spawn_esc({"run", tiny(), "--generations", "30", "--seed", "5", "--threads", "1", "--out", killed.string()});
-  ASSERT_GE(child, 0);
-  // Wait until a good part of the campaign is committed, then kill it without warning.
-  const Killed k = kill_when_committed(child, killed, 40);
-  ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
-  ASSERT_GE(k.seen, 40);
-  ASSERT_LT(committed_generations(killed), 120) << "nothing left to resume";
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 40, 400));
 
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
@@ -45,7 +38,7 @@ TEST(Results, KilledRunResumesBitIdentical) {
   for (const char* run : {"CC/run-01", "CC/run-02", "SC/run-01", "SC/run-02"})
     EXPECT_EQ(slurp(reference / (std::string(run) + ".best.json")), slurp(killed / (std::string(run) + ".best.json")))
         << run;
-  EXPECT_EQ(committed_generations(killed), 120);
+  EXPECT_EQ(committed_generations(killed), 400);
 
   // Resuming a finished run changes nothing and says so.
   const std::string before = slurp(killed / "summary.json");
