@@ -1,7 +1,11 @@
 #include "runtime/dist/distribution.hpp"
 
 #include <algorithm>
+#include <mutex>
 #include <vector>
+
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include <mpi.h>
 
@@ -11,6 +15,7 @@ namespace esc::dist {
 
 struct Distribution::Impl {
   MPI_Win window = MPI_WIN_NULL;
+  bool serialized = false;           // any thread may call MPI, one at a time
   std::int64_t* counter = nullptr;   // on rank 0: the next item to hand out
   int rank = 0;
   int size = 1;
@@ -22,6 +27,7 @@ Distribution::Distribution() {
   impl_ = std::make_unique<Impl>();
   impl_->rank = session->rank();
   impl_->size = session->size();
+  impl_->serialized = session->thread_support() >= MPI_THREAD_SERIALIZED;
   const MPI_Aint bytes = impl_->rank == 0 ? static_cast<MPI_Aint>(sizeof(std::int64_t)) : 0;
   MPI_Win_allocate(bytes, sizeof(std::int64_t), MPI_INFO_NULL, MPI_COMM_WORLD, &impl_->counter,
                    &impl_->window);
@@ -31,13 +37,12 @@ Distribution::~Distribution() {
   if (impl_) MPI_Win_free(&impl_->window);
 }
 
-void Distribution::run(std::size_t n, std::size_t width, std::size_t chunk, std::span<double> results,
-                       const std::function<void(std::size_t, std::size_t)>& evaluate) {
+void Distribution::run(std::size_t n, std::size_t width, std::size_t threads, std::span<double> results,
+                       const std::function<void(std::size_t)>& evaluate) {
   if (!impl_) {
-    evaluate(0, n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { evaluate(i); });
     return;
   }
-  chunk = std::max<std::size_t>(chunk, 1);
   // Reset the counter on rank 0 before anyone takes from it.
   if (impl_->rank == 0) {
     MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, impl_->window);
@@ -46,24 +51,42 @@ void Distribution::run(std::size_t n, std::size_t width, std::size_t chunk, std:
   }
   MPI_Barrier(MPI_COMM_WORLD);
 
-  // Take chunks until the generation is used up; remember which items were ours.
-  std::vector<double> mine;   // packed: index, then `width` values, per item
-  const auto step = static_cast<std::int64_t>(chunk);
-  for (;;) {
+  // Each thread takes items one at a time until the generation is used up. MPI is called
+  // by one thread at a time (MPI_THREAD_SERIALIZED); with less thread support, only this
+  // thread fetches, a batch of `threads` items at a time.
+  std::mutex mpi;
+  const auto take = [&](std::int64_t count) {
     std::int64_t first = 0;
+    const std::lock_guard<std::mutex> lock(mpi);
     MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, impl_->window);
-    MPI_Fetch_and_op(&step, &first, MPI_INT64_T, 0, 0, MPI_SUM, impl_->window);
+    MPI_Fetch_and_op(&count, &first, MPI_INT64_T, 0, 0, MPI_SUM, impl_->window);
     MPI_Win_unlock(0, impl_->window);
-    if (first >= static_cast<std::int64_t>(n)) break;
-    const auto begin = static_cast<std::size_t>(first);
-    const std::size_t end = std::min(n, begin + chunk);
-    evaluate(begin, end);
-    for (std::size_t i = begin; i < end; ++i) {
+    return first;
+  };
+  std::vector<std::vector<std::size_t>> done(std::max<std::size_t>(threads, 1));
+  if (impl_->serialized) {
+    tbb::parallel_for(std::size_t{0}, done.size(), [&](std::size_t t) {
+      for (std::int64_t i; (i = take(1)) < static_cast<std::int64_t>(n);) {
+        evaluate(static_cast<std::size_t>(i));
+        done[t].push_back(static_cast<std::size_t>(i));
+      }
+    }, tbb::simple_partitioner());
+  } else {
+    const auto batch = static_cast<std::int64_t>(done.size());
+    for (std::int64_t first; (first = take(batch)) < static_cast<std::int64_t>(n);) {
+      const auto begin = static_cast<std::size_t>(first);
+      const std::size_t end = std::min(n, begin + done.size());
+      tbb::parallel_for(begin, end, [&](std::size_t i) { evaluate(i); });
+      for (std::size_t i = begin; i < end; ++i) done[0].push_back(i);
+    }
+  }
+  std::vector<double> mine;   // packed: index, then `width` values, per item
+  for (const auto& items : done)
+    for (const std::size_t i : items) {
       mine.push_back(static_cast<double>(i));
       mine.insert(mine.end(), results.begin() + static_cast<std::ptrdiff_t>(i * width),
                   results.begin() + static_cast<std::ptrdiff_t>((i + 1) * width));
     }
-  }
 
   // Everyone receives everyone's results, bit for bit.
   const int count = static_cast<int>(mine.size());

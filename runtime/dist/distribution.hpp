@@ -24,12 +24,14 @@ class Distribution {
   Distribution(const Distribution&) = delete;
   Distribution& operator=(const Distribution&) = delete;
 
-  // Evaluates items [0, n). `evaluate(first, last)` computes items [first, last) with this
-  // process's threads and writes their results into `results` (`width` doubles per item,
-  // item i at [i * width, (i + 1) * width)). On return, every process holds all n results.
-  // `chunk` is how many items a process takes at a time (its thread count is a good value).
-  void run(std::size_t n, std::size_t width, std::size_t chunk, std::span<double> results,
-           const std::function<void(std::size_t first, std::size_t last)>& evaluate);
+  // Evaluates items [0, n) with `threads` of this process's threads (in the caller's TBB
+  // arena): `evaluate(i)` computes item i and writes its results into `results` (`width`
+  // doubles per item, item i at [i * width, (i + 1) * width)); it is called concurrently
+  // for different items. On return, every process holds all n results. Under MPI each
+  // thread takes one item at a time from the shared counter, so neither a rank nor a
+  // thread waits on another's long evaluation until the generation runs out.
+  void run(std::size_t n, std::size_t width, std::size_t threads, std::span<double> results,
+           const std::function<void(std::size_t i)>& evaluate);
 
   [[nodiscard]] bool distributed() const noexcept { return impl_ != nullptr; }
 

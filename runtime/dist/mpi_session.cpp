@@ -19,8 +19,8 @@ bool launched_by_mpi() noexcept {
 MpiSession::MpiSession(int& argc, char**& argv) {
   g_session = this;
   if (!launched_by_mpi()) return;
-  int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  // Worker threads fetch evaluations from the shared counter themselves (Distribution).
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &thread_support_);
   active_ = true;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);

@@ -26,6 +26,8 @@ class MpiSession {
   [[nodiscard]] int rank() const noexcept { return rank_; }
   [[nodiscard]] int size() const noexcept { return size_; }
   [[nodiscard]] bool is_root() const noexcept { return rank_ == 0; }
+  // The MPI thread level granted (MPI_THREAD_SINGLE .. MPI_THREAD_MULTIPLE); 0 when inactive.
+  [[nodiscard]] int thread_support() const noexcept { return thread_support_; }
 
   // True when every rank passes true (a collective: all ranks must call it). Used so a
   // failure on one rank (an existing output directory on rank 0) stops every rank.
@@ -41,6 +43,7 @@ class MpiSession {
   bool active_ = false;
   int rank_ = 0;
   int size_ = 1;
+  int thread_support_ = 0;
 };
 
 // True when the environment says an MPI launcher started this process.

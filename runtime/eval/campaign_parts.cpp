@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
 
 namespace esc::eval::detail {
 
@@ -25,12 +24,10 @@ std::int64_t evaluate_all(std::size_t n, std::uint64_t run_seed, int generation,
                           const EvaluateOne& evaluate, std::vector<double>& fitness) {
   constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
   std::vector<double> results(n * kWidth, 0.0);
-  ev.distribution.run(n, kWidth, ev.chunk, results, [&](std::size_t first, std::size_t last) {
-    tbb::parallel_for(first, last, [&](std::size_t i) {
-      const Evaluation e = evaluate(ev.workers.local(), i, evaluation_seed(run_seed, generation, i));
-      results[i * kWidth] = e.fitness;
-      results[i * kWidth + 1] = static_cast<double>(e.steps);
-    });
+  ev.distribution.run(n, kWidth, ev.threads, results, [&](std::size_t i) {
+    const Evaluation e = evaluate(ev.workers.local(), i, evaluation_seed(run_seed, generation, i));
+    results[i * kWidth] = e.fitness;
+    results[i * kWidth + 1] = static_cast<double>(e.steps);
   });
   fitness.assign(n, 0.0);
   std::int64_t steps = 0;

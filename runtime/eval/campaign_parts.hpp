@@ -22,7 +22,7 @@ using Workers = tbb::enumerable_thread_specific<Evaluator>;
 struct Evaluators {
   Workers& workers;
   dist::Distribution& distribution;
-  std::size_t chunk;   // evaluations a process takes at a time: its thread count
+  std::size_t threads;   // this process's worker threads
 };
 
 // evaluate(evaluator, i, seed): individual i of the generation, with its evaluation seed.
