@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "runtime/eval/evaluator.hpp"
 
 #include <array>
@@ -18,10 +19,15 @@ bool any_stop(const FitnessSpec& f, const expr::Frame& frame) noexcept {
   return false;
 }
 
-void report_step(TraceSink& trace, int epoch, int step, const sim::RobotState& state,
+void report_step(TraceSink& trace, int epoch, int step, const sim::World& world,
                  const std::array<double, sim::kIrSensors>& ir, const control::WheelCommand& cmd,
                  int action, double fitness) {
+  const sim::RobotState& state = world.state();
   TraceStep t;
+  t.energy = state.energy;
+  const auto zones = world.zone_centers();
+  t.zone_count = std::min(zones.size(), t.zones.size());
+  std::copy_n(zones.begin(), t.zone_count, t.zones.begin());
   t.epoch = epoch;
   t.step = step;
   t.pose = state.pose;
@@ -84,7 +90,7 @@ Evaluation Evaluator::run(Driver& ctl, std::uint64_t seed, TraceSink* trace) {
       ++result.steps;
       result.fitness += s.fitness.step.eval(frame);
       if (trace != nullptr) [[unlikely]]
-        report_step(*trace, epoch, step, world_.state(), ir, cmd, ctl.last_action(), result.fitness);
+        report_step(*trace, epoch, step, world_, ir, cmd, ctl.last_action(), result.fitness);
       if (any_stop(s.fitness, frame) || world_.state().energy_empty) break;
     }
   }

@@ -33,6 +33,11 @@ struct TraceStep {
   int action = -1;                            // symbolic head: index of the acting action
   double fitness = 0.0;                       // accumulated over the evaluation so far
   bool collided = false;
+  double energy = 1.0;                        // accumulator level after the step
+  // Where the arena's zones are this epoch (random ones move at every epoch start); the
+  // first `zone_count` entries, in the arena's order.
+  std::array<sim::Vec2, sim::kMaxZones> zones{};
+  std::size_t zone_count = 0;
 };
 
 // Receives every step of a traced evaluation, in order.

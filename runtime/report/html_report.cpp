@@ -52,15 +52,27 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
     for (double v : t.ir) ir.push_back(round_to(v, 3));
     rows.push_back({t.epoch, t.step, round_to(t.pose.x_m * 1000.0, 1), round_to(t.pose.y_m * 1000.0, 1),
                     round_to(t.pose.heading_rad, 3), ir, round_to(t.left_command, 3), round_to(t.right_command, 3),
-                    t.action, round_to(t.fitness, 4), t.collided ? 1 : 0});
+                    t.action, round_to(t.fitness, 4), t.collided ? 1 : 0, round_to(t.energy, 3)});
   }
   int epochs = steps.empty() ? 0 : steps.back().epoch + 1;
+  // Where the zones were in each epoch (random zones move at every epoch start), in mm.
+  json epoch_zones = json::array();
+  for (const eval::TraceStep& t : steps) {
+    if (static_cast<std::size_t>(t.epoch) < epoch_zones.size()) continue;
+    while (epoch_zones.size() < static_cast<std::size_t>(t.epoch)) epoch_zones.push_back(json::array());
+    json zones = json::array();
+    for (std::size_t z = 0; z < t.zone_count; ++z)
+      zones.push_back({round_to(t.zones[z].x * 1000.0, 1), round_to(t.zones[z].y * 1000.0, 1)});
+    epoch_zones.push_back(std::move(zones));
+  }
   return {{"run", c.replay->run + 1},
           {"seed", std::to_string(c.replay->seed)},
           {"fitness", c.replay->fitness},
           {"total_steps", steps.size()},
           {"total_epochs", epochs},
-          {"columns", {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided"}},
+          {"columns",
+           {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided", "energy"}},
+          {"epoch_zones", epoch_zones},
           {"rows", rows}};
 }
 

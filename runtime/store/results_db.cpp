@@ -184,9 +184,15 @@ std::vector<double> pack_population(const std::vector<evo::Individual>& pop, std
   return v;
 }
 
+// A replay row: the kTraceColumns fixed columns, then the accumulator level and the
+// position of each of the arena's zones in this epoch (x, y). Traces stored before these
+// columns existed have exactly kTraceColumns per row.
+std::size_t trace_width(std::size_t zones) { return kTraceColumns + 1 + 2 * zones; }
+
 std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
+  const std::size_t zones = trace.empty() ? 0 : trace.front().zone_count;
   std::vector<double> v;
-  v.reserve(trace.size() * kTraceColumns);
+  v.reserve(trace.size() * trace_width(zones));
   for (const auto& t : trace) {
     v.push_back(t.epoch);
     v.push_back(t.step);
@@ -201,15 +207,24 @@ std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
     v.push_back(t.action);
     v.push_back(t.fitness);
     v.push_back(t.collided ? 1.0 : 0.0);
+    v.push_back(t.energy);
+    for (std::size_t z = 0; z < zones; ++z) {
+      v.push_back(t.zones[z].x);
+      v.push_back(t.zones[z].y);
+    }
   }
   return v;
 }
 
-std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v) {
-  if (v.size() % kTraceColumns != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
-  std::vector<eval::TraceStep> out(v.size() / kTraceColumns);
+std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, std::size_t width) {
+  const bool extended = width > kTraceColumns;
+  const std::size_t zones = extended ? (width - kTraceColumns - 1) / 2 : 0;
+  if (width < kTraceColumns || (extended && trace_width(zones) != width) || zones > sim::kMaxZones)
+    throw StoreError(fmt::format("the database is damaged: a replay trace has {} columns", width));
+  if (v.size() % width != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
+  std::vector<eval::TraceStep> out(v.size() / width);
   for (std::size_t i = 0; i < out.size(); ++i) {
-    const double* r = &v[i * kTraceColumns];
+    const double* r = &v[i * width];
     eval::TraceStep& t = out[i];
     t.epoch = static_cast<int>(r[0]);
     t.step = static_cast<int>(r[1]);
@@ -222,6 +237,10 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v) {
     t.action = static_cast<int>(r[17]);
     t.fitness = r[18];
     t.collided = r[19] != 0.0;
+    if (!extended) continue;
+    t.energy = r[kTraceColumns];
+    t.zone_count = zones;
+    for (std::size_t z = 0; z < zones; ++z) t.zones[z] = {r[kTraceColumns + 1 + 2 * z], r[kTraceColumns + 2 + 2 * z]};
   }
   return out;
 }
@@ -406,6 +425,11 @@ void ResultsDb::commit_replay(const std::string& controller, const eval::RunResu
   const std::int64_t cid = controller_id(controller);
   const std::uint64_t seed = eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
   nlohmann::json columns = trace_column_names();
+  columns.push_back("energy");
+  for (std::size_t z = 0; z < (trace.empty() ? 0 : trace.front().zone_count); ++z) {
+    columns.push_back(fmt::format("zone{}_x", z));
+    columns.push_back(fmt::format("zone{}_y", z));
+  }
   sql::Transaction tx(db_);
   // One replay per controller: its best run's (the earliest run on a tie). Replaying the
   // same run again (after a resume) rewrites the same row.
@@ -579,10 +603,11 @@ std::vector<StoredExperiment> ResultsDb::load() {
             c.in_progress.push_back(std::move(s));
           }
         }
-        auto rp = db_.prepare("SELECT run, seed, fitness, trace FROM replays WHERE controller_id = ?");
+        auto rp = db_.prepare("SELECT run, seed, fitness, trace, columns FROM replays WHERE controller_id = ?");
         rp.bind(1, c.id);
-        if (rp.step()) c.replay = StoredReplay{rp.integer(0), parse_u64(rp.text(1), "replay seed"), rp.real(2),
-                                               unpack_trace(rp.doubles(3))};
+        if (rp.step())
+          c.replay = StoredReplay{rp.integer(0), parse_u64(rp.text(1), "replay seed"), rp.real(2),
+                                  unpack_trace(rp.doubles(3), nlohmann::json::parse(rp.text(4)).size())};
       }
     }
     return out;

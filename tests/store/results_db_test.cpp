@@ -119,6 +119,10 @@ TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
   t.action = 1;
   t.fitness = 2.0;
   t.collided = true;
+  t.energy = 0.25;
+  t.zone_count = 2;
+  t.zones[0] = {0.4, 0.45};
+  t.zones[1] = {0.05, 0.5};
   const std::vector<eval::TraceStep> trace = {t};
   db.commit_replay("SC", r, trace);
   db.commit_run("SC", r);
@@ -139,6 +143,11 @@ TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
   EXPECT_EQ(c.replay->steps[0].ir[3], 0.75);
   EXPECT_EQ(c.replay->steps[0].action, 1);
   EXPECT_TRUE(c.replay->steps[0].collided);
+  // The accumulator and where the (possibly random) zones were that epoch.
+  EXPECT_EQ(c.replay->steps[0].energy, 0.25);
+  ASSERT_EQ(c.replay->steps[0].zone_count, 2U);
+  EXPECT_EQ(c.replay->steps[0].zones[1].x, 0.05);
+  EXPECT_EQ(c.replay->steps[0].zones[1].y, 0.5);
 
   const std::string csv = export_csv({s});
   EXPECT_NE(csv.find("demo,SC,1,5,finished,0,2,1,0.5,10,100,0.100"), std::string::npos) << csv;

@@ -232,7 +232,7 @@
     }
     function draw() {
       const r = rows[index];
-      const [epoch, step, x, y, heading, ir, left, right, act, fitness, collided] = r;
+      const [epoch, step, x, y, heading, ir, left, right, act, fitness, collided, energy] = r;
       ctx.clearRect(0, 0, canvas.width, canvas.height);
       ctx.fillStyle = '#fbfbf8';
       ctx.fillRect(0, 0, canvas.width, canvas.height);
@@ -247,22 +247,35 @@
         ctx.fillRect(-b.width * 500 * scale, -b.height * 500 * scale, b.width * 1000 * scale, b.height * 1000 * scale);
         ctx.restore();
       }
-      // Floor zones and lights; zones placed at random each epoch are not drawn (their
-      // position is not stored), nor the lights above them.
-      for (const z of arena.zones || []) {
-        if (z.random_position) continue;
+      // Floor zones where they were in this epoch (random ones move at every epoch start;
+      // replays stored by older versions lack their positions, and skip them), and lights.
+      const placed = (c.replay.epoch_zones || [])[epoch] || [];
+      const zoneAt = (i) => {
+        const z = arena.zones[i];
+        if (!z.random_position) return [z.x * 1000, z.y * 1000];
+        return placed[i] || null;
+      };
+      (arena.zones || []).forEach((z, i) => {
+        const at = zoneAt(i);
+        if (!at) return;
         ctx.fillStyle = z.recharge ? 'rgba(44,160,44,0.18)' : (z.visible ? 'rgba(60,60,60,0.18)' : 'rgba(60,60,60,0.06)');
         ctx.strokeStyle = 'rgba(60,60,60,0.5)'; ctx.lineWidth = 1; ctx.setLineDash([4, 3]);
         ctx.beginPath();
-        if (z.shape === 'circle') ctx.arc(X(z.x * 1000), Y(z.y * 1000), z.radius * 1000 * scale, 0, 2 * Math.PI);
-        else ctx.rect(X((z.x - z.width / 2) * 1000), Y((z.y + z.height / 2) * 1000), z.width * 1000 * scale, z.height * 1000 * scale);
+        if (z.shape === 'circle') ctx.arc(X(at[0]), Y(at[1]), z.radius * 1000 * scale, 0, 2 * Math.PI);
+        else ctx.rect(X(at[0] - z.width * 500), Y(at[1] + z.height * 500), z.width * 1000 * scale, z.height * 1000 * scale);
         ctx.fill(); ctx.stroke(); ctx.setLineDash([]);
-      }
+      });
       for (const l of arena.lights || []) {
-        if (l.above_zone >= 0 && arena.zones[l.above_zone] && arena.zones[l.above_zone].random_position) continue;
-        const z = l.above_zone >= 0 ? arena.zones[l.above_zone] : l;
+        const at = l.above_zone >= 0 ? zoneAt(l.above_zone) : [l.x * 1000, l.y * 1000];
+        if (!at) continue;
         ctx.fillStyle = '#f2c12e'; ctx.strokeStyle = '#a67c00'; ctx.lineWidth = 1.5;
-        ctx.beginPath(); ctx.arc(X(z.x * 1000), Y(z.y * 1000), 7, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+        ctx.beginPath(); ctx.arc(X(at[0]), Y(at[1]), 7, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      }
+      if (energy !== undefined && energy < 1) {
+        // The accumulator, as a bar in the arena's top left corner.
+        ctx.fillStyle = '#ddd'; ctx.fillRect(8, 8, 60, 8);
+        ctx.fillStyle = energy > 0.2 ? '#2ca02c' : '#d62728'; ctx.fillRect(8, 8, 60 * energy, 8);
+        ctx.strokeStyle = '#555'; ctx.lineWidth = 1; ctx.strokeRect(8, 8, 60, 8);
       }
       // Trajectory of this epoch up to the current step.
       let start = index;
@@ -302,7 +315,7 @@
         `epoch ${epoch + 1}, step ${step + 1}\n` +
         `position  x ${x.toFixed(1)} mm  y ${y.toFixed(1)} mm  heading ${(heading * 180 / Math.PI).toFixed(0)} deg\n` +
         `commands  left ${left.toFixed(2)}  right ${right.toFixed(2)}\n` +
-        `fitness so far  ${fitness.toFixed(3)}${collided ? '\ncollision' : ''}`;
+        `fitness so far  ${fitness.toFixed(3)}${energy !== undefined && energy < 1 ? `\nenergy  ${energy.toFixed(2)}` : ''}${collided ? '\ncollision' : ''}`;
       slider.value = String(index);
     }
     function tick(time) {
