@@ -5,6 +5,8 @@
 #include <memory>
 #include <variant>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
@@ -27,6 +29,14 @@ struct Prepared {
 
 bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth);
 
+bool finished_run(const std::filesystem::path& dir) {
+  try {
+    return store::ResultsDb::open(dir, true).load_single().finished();
+  } catch (const store::StoreError&) {
+    return false;
+  }
+}
+
 // Runs experiment `name` into the cache, or reuses a finished run of the same fingerprint.
 std::optional<Prepared> run_or_reuse(const std::string& name, const std::string& user, const DependencyContext& cx,
                                      int depth) {
@@ -41,26 +51,33 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   if (!prepare(p.spec, cx, depth + 1)) return std::nullopt;
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
-  bool reuse = false;
+  // A cache entry appears only once its run has finished: the run goes into a directory of
+  // its own (`.partial-PID`) and is renamed into place, so concurrent processes sharing a
+  // cache never see, reuse or delete each other's unfinished runs.
   std::error_code ec;
-  if (std::filesystem::exists(p.dir / "esc.db", ec)) {
-    try {
-      reuse = store::ResultsDb::open(p.dir, true).load_single().finished();
-    } catch (const store::StoreError&) {
-      reuse = false;
-    }
-    if (!reuse) {
-      fmt::print("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
-      std::filesystem::remove_all(p.dir);
-    }
+  if (std::filesystem::exists(p.dir / "esc.db", ec) && !finished_run(p.dir)) {
+    fmt::print("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
+    std::filesystem::remove_all(p.dir, ec);
   }
-  if (reuse) {
+  if (std::filesystem::exists(p.dir / "esc.db", ec)) {
     fmt::print("esc: dependency {}: reused {}\n", name, p.dir.string());
   } else {
-    fmt::print("esc: dependency {}: running into {}\n", name, p.dir.string());
+    const std::filesystem::path partial = p.dir.string() + fmt::format(".partial-{}", ::getpid());
+    fmt::print("esc: dependency {}: running into {}\n", name, partial.string());
     std::filesystem::create_directories(cx.cache);
-    if (cx.run_into(p.spec, p.dir) != kExitOk) return std::nullopt;
-    std::ofstream(p.dir / "fingerprint.txt") << key;
+    std::filesystem::remove_all(partial, ec);
+    if (cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
+    std::ofstream(partial / "fingerprint.txt") << key;
+    std::filesystem::rename(partial, p.dir, ec);
+    if (ec) {
+      // Another process finished the same run first: its result is the same; keep it.
+      if (!finished_run(p.dir)) {
+        fmt::print(stderr, "esc: error: cannot move {} to {}: {}\n", partial.string(), p.dir.string(), ec.message());
+        return std::nullopt;
+      }
+      std::filesystem::remove_all(partial, ec);
+    }
+    fmt::print("esc: dependency {}: finished in {}\n", name, p.dir.string());
   }
   p.stored = store::ResultsDb::open(p.dir, true).load_single();
   return p;

@@ -116,6 +116,8 @@ nlohmann::ordered_json overrides_json(const RunOptions& o) {
   if (o.generations) j["generations"] = *o.generations;
   if (o.seed) j["seed"] = *o.seed;
   j["set"] = o.settings;
+  // Where dependencies were run or reused, so that a resume finds them again.
+  if (!o.cache.empty()) j["cache"] = std::filesystem::absolute(o.cache).lexically_normal().string();
   return j;
 }
 
@@ -248,13 +250,12 @@ int resume_command(const RunOptions& o) {
     if (ov.contains("generations")) replay.generations = ov["generations"].get<int>();
     if (ov.contains("seed")) replay.seed = ov["seed"].get<std::uint64_t>();
     if (ov.contains("set")) replay.settings = ov["set"].get<std::vector<std::string>>();
+    if (ov.contains("cache")) replay.cache = ov["cache"].get<std::string>();
   } catch (const nlohmann::json::exception& e) {
     throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", o.resume.string(), e.what()));
   }
   if (!apply_overrides(replay, *spec)) return kExitBadInput;
-  if (!prepare_dependencies(*spec, dependency_context(compiled, replay, o.cache.empty() ? o.resume / "deps" : o.cache,
-                                                      script)))
-    return kExitBadInput;
+  replay.threads = o.threads;
 
   const std::vector<store::SourceFile> sources = sources_of(compiled);
   const std::string hash = store::campaign_hash(spec->name, sources);
@@ -277,6 +278,9 @@ int resume_command(const RunOptions& o) {
     fmt::print(stderr, "esc: error: the settings differ from the stored ones; cannot resume\n");
     return kExitBadInput;
   }
+  // Dependencies last: a script that cannot resume should not first run them.
+  const std::filesystem::path cache = !o.cache.empty() ? o.cache : !replay.cache.empty() ? replay.cache : o.resume / "deps";
+  if (!prepare_dependencies(*spec, dependency_context(compiled, replay, cache, script))) return kExitBadInput;
 
   const eval::ResumePoint point = stored.resume_point();
   std::int64_t done = 0;

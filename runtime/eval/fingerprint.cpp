@@ -62,6 +62,7 @@ class Writer {
 
 std::string fingerprint(const ExperimentSpec& spec) {
   Writer w;
+  w.line("results_revision", std::to_string(kResultsRevision));
   for (const auto& [key, value] : spec.resolved_settings) w.line("setting." + key, value);
   const sim::ArenaSpec& a = spec.arena;
   w.numbers("arena.size", std::initializer_list<double>{a.width_m, a.height_m, a.sweep_cell_m, a.reach_radius_m});

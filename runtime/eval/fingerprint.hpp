@@ -11,6 +11,13 @@
 
 namespace esc::eval {
 
+// What the code computes, as opposed to what the script asks: bump it with every change
+// that alters results (the simulator, observables, evaluation, the evolution loops), so
+// cached runs made by an earlier build are not reused. 2: sphere body, closed-form
+// sphere-box contact, free-space substeps (results differ in the last digits).
+inline constexpr int kResultsRevision = 2;
+
+// Starts with kResultsRevision.
 [[nodiscard]] std::string fingerprint(const ExperimentSpec& spec);
 
 }  // namespace esc::eval
