@@ -111,4 +111,23 @@ TEST(StartFrom, EvaluatingAStoredGenomeAgainGivesItsStoredFitness) {
     }
 }
 
+TEST(DependencyCache, TwoProcessesMayShareACache) {
+  const fs::path dir = scratch("shared-cache");
+  fs::create_directories(dir);
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/start_from.esc";
+  const std::string run = std::string(ESC_BINARY) + " run " + script + " --experiment again --threads 1 --cache " +
+                          (dir / "cache").string() + " --out ";
+  const Outcome o = shell(run + (dir / "a").string() + " > " + (dir / "a.log").string() + " 2>&1 & " + run +
+                          (dir / "b").string() + " > " + (dir / "b.log").string() + " 2>&1; s=$?; wait $!; t=$?; "
+                          "exit $((s + t))");
+  ASSERT_EQ(o.status, 0) << slurp(dir / "a.log") << slurp(dir / "b.log");
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir / "cache")) {
+    ++entries;
+    EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+  }
+  EXPECT_EQ(entries, 1);
+  EXPECT_EQ(read_json(dir / "a" / "summary.json")["controllers"], read_json(dir / "b" / "summary.json")["controllers"]);
+}
+
 }  // namespace
