@@ -19,6 +19,7 @@
 #include "cli/progress.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/campaign.hpp"
+#include "runtime/eval/fingerprint.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/store/run_directory.hpp"
 
@@ -107,6 +108,12 @@ std::filesystem::path default_out(const std::string& experiment) {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
   return std::filesystem::path("runs") / fmt::format("{}-{}", experiment, stamp);
+}
+
+// What an experiment received from the experiments it depends on (frozen behaviors, start
+// genomes), as a hash of its fingerprint: a resume must find the same.
+std::string inputs_hash(const eval::ExperimentSpec& spec) {
+  return fmt::format("{:016x}", store::content_hash(eval::fingerprint(spec)));
 }
 
 // The command-line settings as stored in the database, to be applied again on resume.
@@ -281,6 +288,13 @@ int resume_command(const RunOptions& o) {
   // Dependencies last: a script that cannot resume should not first run them.
   const std::filesystem::path cache = !o.cache.empty() ? o.cache : !replay.cache.empty() ? replay.cache : o.resume / "deps";
   if (!prepare_dependencies(*spec, dependency_context(compiled, replay, cache, script))) return kExitBadInput;
+  if (stored.overrides.contains("inputs") && stored.overrides["inputs"] != inputs_hash(*spec)) {
+    fmt::print(stderr,
+               "esc: error: the evolved behaviors or start genomes found in {} differ from those the run in {} "
+               "started with; cannot resume (give --cache the directory the run used)\n",
+               cache.string(), o.resume.string());
+    return kExitBadInput;
+  }
 
   const eval::ResumePoint point = stored.resume_point();
   std::int64_t done = 0;
@@ -314,6 +328,7 @@ int run_command(const RunOptions& o) {
   store::LaunchInfo launch;
   launch.script = std::filesystem::absolute(o.file).lexically_normal();
   launch.overrides = overrides_json(o);
+  if (!spec->dependencies.empty() || spec->start_from) launch.overrides["inputs"] = inputs_hash(*spec);
   launch.software_version = ESC_VERSION_STRING;
   const auto open = [&] {
     store::RunDirectory dir(out, *spec, sources_of(compiled), launch);
