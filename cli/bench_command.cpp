@@ -70,10 +70,7 @@ std::vector<eval::ExperimentSpec> whole_campaign(const compiler::CompileResult& 
   std::set<std::string> seen;
   std::function<void(const eval::ExperimentSpec&)> add = [&](const eval::ExperimentSpec& e) {
     if (!seen.insert(e.name).second) return;
-    std::vector<std::string> needs;
-    for (const eval::Dependency& d : e.dependencies) needs.push_back(d.experiment);
-    if (e.start_from) needs.push_back(e.start_from->experiment);
-    for (const std::string& n : needs)
+    for (const std::string& n : e.needs())
       for (const eval::ExperimentSpec& x : compiled.all_experiments)
         if (x.name == n) add(x);
     out.push_back(e);

@@ -151,13 +151,13 @@ bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth)
     fmt::print(stderr, "esc: error: `{}` uses the results of other experiments; run it without MPI\n", spec.name);
     return false;
   }
-  for (const eval::Dependency& dep : spec.dependencies) {
-    const auto p = run_or_reuse(dep.experiment, spec.name, cx, depth);
-    if (!p || !freeze_behaviors(spec, dep, *p)) return false;
-  }
-  if (spec.start_from) {
-    const auto p = run_or_reuse(spec.start_from->experiment, spec.name, cx, depth);
-    if (!p || !fill_start_genomes(spec, *p)) return false;
+  // Each experiment once, however many of its controllers are used.
+  for (const std::string& name : spec.needs()) {
+    const auto p = run_or_reuse(name, spec.name, cx, depth);
+    if (!p) return false;
+    for (const eval::Dependency& dep : spec.dependencies)
+      if (dep.experiment == name && !freeze_behaviors(spec, dep, *p)) return false;
+    if (spec.start_from && spec.start_from->experiment == name && !fill_start_genomes(spec, *p)) return false;
   }
   return true;
 }

@@ -187,7 +187,7 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   r["runs"] = std::to_string(spec.runs);
   r["seed"] = std::to_string(spec.seed);
   const evo::EsSettings& es = spec.es;
-  r["generations"] = std::to_string(spec.start_from && spec.start_from->evaluate_only ? 1 : spec.es.generations);
+  r["generations"] = std::to_string(spec.es_generations());
   if (spec.start_from)
     r["start_from"] = fmt::format("{} from experiment {}", spec.start_from->evaluate_only ? "evaluate" : "start",
                                   spec.start_from->experiment);

@@ -69,11 +69,25 @@ struct ExperimentSpec {
   std::vector<Dependency> dependencies;
   std::optional<StartFrom> start_from;
 
-  // Generations a compared controller evolves for: 1 when only evaluating stored
-  // controllers, else the GP's for a tree and the ES's for a network.
+  // Experiments that must have run before this one (evolved behaviors, start genomes),
+  // each named once, in the order they are first needed.
+  [[nodiscard]] std::vector<std::string> needs() const {
+    std::vector<std::string> n;
+    const auto add = [&n](const std::string& x) {
+      if (std::find(n.begin(), n.end(), x) == n.end()) n.push_back(x);
+    };
+    for (const Dependency& d : dependencies) add(d.experiment);
+    if (start_from) add(start_from->experiment);
+    return n;
+  }
+
+  // Generations the networks evolve for: 1 when only evaluating stored controllers.
+  [[nodiscard]] int es_generations() const noexcept {
+    return start_from && start_from->evaluate_only ? 1 : es.generations;
+  }
+  // Generations a compared controller evolves for: the GP's for a tree, else es_generations().
   [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
-    if (start_from && start_from->evaluate_only) return 1;
-    return c.is_tree() && gp ? gp->generations : es.generations;
+    return c.is_tree() && gp ? gp->generations : es_generations();
   }
   // The most generations of any compared controller (the ES's when none is compared).
   [[nodiscard]] int max_generations() const noexcept {
