@@ -247,11 +247,16 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, std::siz
 
 }  // namespace
 
-std::vector<std::string> trace_column_names() {
+std::vector<std::string> trace_column_names(std::size_t zones) {
   std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
   for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
   for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", "fitness", "collided"})
     c.emplace_back(n);
+  c.emplace_back("energy");
+  for (std::size_t z = 0; z < zones; ++z) {
+    c.push_back(fmt::format("zone{}_x", z));
+    c.push_back(fmt::format("zone{}_y", z));
+  }
   return c;
 }
 
@@ -424,12 +429,7 @@ void ResultsDb::commit_replay(const std::string& controller, const eval::RunResu
                               std::span<const eval::TraceStep> trace) {
   const std::int64_t cid = controller_id(controller);
   const std::uint64_t seed = eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
-  nlohmann::json columns = trace_column_names();
-  columns.push_back("energy");
-  for (std::size_t z = 0; z < (trace.empty() ? 0 : trace.front().zone_count); ++z) {
-    columns.push_back(fmt::format("zone{}_x", z));
-    columns.push_back(fmt::format("zone{}_y", z));
-  }
+  const nlohmann::json columns = trace_column_names(trace.empty() ? 0 : trace.front().zone_count);
   sql::Transaction tx(db_);
   // One replay per controller: its best run's (the earliest run on a tie). Replaying the
   // same run again (after a resume) rewrites the same row.

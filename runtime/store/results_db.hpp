@@ -46,9 +46,11 @@ struct LaunchInfo {
   std::string software_version;
 };
 
-// Columns of a stored replay trace, one row of doubles per control step.
+// Columns of a stored replay trace, one row of doubles per control step: kTraceColumns
+// fixed ones, then (since replays record them) the accumulator and x, y of each of the
+// arena's `zones` in that epoch.
 inline constexpr std::size_t kTraceColumns = 20;
-[[nodiscard]] std::vector<std::string> trace_column_names();
+[[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones);
 
 struct StoredReplay {
   int run = 0;
