@@ -1,6 +1,7 @@
 #include "cli/dependencies.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <fstream>
 #include <memory>
 #include <variant>
@@ -8,8 +9,10 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/load.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
 #include "runtime/store/results_db.hpp"
@@ -29,6 +32,84 @@ struct Prepared {
 
 bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth);
 
+// Under MPI every rank prepares the same dependencies in the same order (running one is a
+// collective); rank 0 alone reads and writes the cache, tells the others what it decided
+// (reuse or run) and sends them what it read, and alone prints.
+const dist::MpiSession* job() {
+  const dist::MpiSession* mpi = dist::MpiSession::current();
+  return mpi != nullptr && mpi->active() ? mpi : nullptr;
+}
+
+template <typename... Args>
+void say(fmt::format_string<Args...> format, Args&&... args) {
+  if (!follower_rank()) fmt::print(format, std::forward<Args>(args)...);
+}
+
+template <typename... Args>
+void complain(fmt::format_string<Args...> format, Args&&... args) {
+  if (!follower_rank()) fmt::print(stderr, format, std::forward<Args>(args)...);
+}
+
+// Rank 0's answer on every rank.
+bool agree(bool rank0) {
+  if (job() == nullptr) return rank0;
+  std::string text = rank0 ? "1" : "0";
+  job()->broadcast(text);
+  return text == "1";
+}
+
+// What dependents read of a finished run (its finished runs' best genomes), from rank 0
+// to the others. Doubles travel as their bits, so every rank holds the same genomes.
+std::string pack(const store::StoredExperiment& stored) {
+  nlohmann::json j = {{"runs", stored.runs}, {"controllers", nlohmann::json::array()}};
+  for (const store::StoredController& c : stored.controllers) {
+    nlohmann::json runs = nlohmann::json::array();
+    for (const eval::RunResult& r : c.finished) {
+      std::vector<std::uint64_t> genome;
+      for (const double g : r.best_genome) genome.push_back(std::bit_cast<std::uint64_t>(g));
+      runs.push_back({{"run", r.run}, {"best_fitness", std::bit_cast<std::uint64_t>(r.best_fitness)},
+                      {"best_genome", genome}});
+    }
+    j["controllers"].push_back({{"name", c.name}, {"finished", runs}});
+  }
+  return j.dump();
+}
+
+store::StoredExperiment unpack(const std::string& text) {
+  const nlohmann::json j = nlohmann::json::parse(text);
+  store::StoredExperiment stored;
+  stored.runs = j["runs"].get<int>();
+  for (const nlohmann::json& c : j["controllers"]) {
+    store::StoredController& sc = stored.controllers.emplace_back();
+    sc.name = c["name"].get<std::string>();
+    for (const nlohmann::json& r : c["finished"]) {
+      eval::RunResult& result = sc.finished.emplace_back();
+      result.run = r["run"].get<int>();
+      result.best_fitness = std::bit_cast<double>(r["best_fitness"].get<std::uint64_t>());
+      for (const std::uint64_t g : r["best_genome"].get<std::vector<std::uint64_t>>())
+        result.best_genome.push_back(std::bit_cast<double>(g));
+    }
+  }
+  return stored;
+}
+
+// Rank 0 loads the finished run in `dir`; every rank returns what it holds. Null after
+// printing an error.
+std::optional<store::StoredExperiment> load_finished(const std::filesystem::path& dir) {
+  std::string text;
+  if (!follower_rank()) {
+    try {
+      text = pack(store::ResultsDb::open(dir, true).load_single());
+    } catch (const store::StoreError& e) {
+      complain("esc: error: {}\n", e.what());
+    }
+  }
+  if (job() != nullptr) job()->broadcast(text);
+  if (text.empty()) return std::nullopt;
+  return unpack(text);
+}
+
+
 bool finished_run(const std::filesystem::path& dir) {
   try {
     return store::ResultsDb::open(dir, true).load_single().finished();
@@ -43,7 +124,7 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   const auto& all = cx.compiled.all_experiments;
   const auto found = std::find_if(all.begin(), all.end(), [&](const eval::ExperimentSpec& e) { return e.name == name; });
   if (found == all.end()) {
-    fmt::print(stderr, "esc: error: experiment `{}` (needed by `{}`) was not compiled\n", name, user);
+    complain("esc: error: experiment `{}` (needed by `{}`) was not compiled\n", name, user);
     return std::nullopt;
   }
   Prepared p{*found, {}, {}};
@@ -54,32 +135,45 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   // A cache entry appears only once its run has finished: the run goes into a directory of
   // its own (`.partial-PID`) and is renamed into place, so concurrent processes sharing a
   // cache never see, reuse or delete each other's unfinished runs.
+  // Rank 0 decides whether to reuse; the others follow.
   std::error_code ec;
-  if (std::filesystem::exists(p.dir / "esc.db", ec) && !finished_run(p.dir)) {
-    fmt::print("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
-    std::filesystem::remove_all(p.dir, ec);
+  bool reuse = false;
+  if (!follower_rank()) {
+    if (std::filesystem::exists(p.dir / "esc.db", ec) && !finished_run(p.dir)) {
+      say("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
+      std::filesystem::remove_all(p.dir, ec);
+    }
+    reuse = std::filesystem::exists(p.dir / "esc.db", ec);
   }
-  if (std::filesystem::exists(p.dir / "esc.db", ec)) {
-    fmt::print("esc: dependency {}: reused {}\n", name, p.dir.string());
+  if (agree(reuse)) {
+    say("esc: dependency {}: reused {}\n", name, p.dir.string());
   } else {
     const std::filesystem::path partial = p.dir.string() + fmt::format(".partial-{}", ::getpid());
-    fmt::print("esc: dependency {}: running into {}\n", name, partial.string());
-    std::filesystem::create_directories(cx.cache);
-    std::filesystem::remove_all(partial, ec);
-    if (cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
-    std::ofstream(partial / "fingerprint.txt") << key;
-    std::filesystem::rename(partial, p.dir, ec);
-    if (ec) {
-      // Another process finished the same run first: its result is the same; keep it.
-      if (!finished_run(p.dir)) {
-        fmt::print(stderr, "esc: error: cannot move {} to {}: {}\n", partial.string(), p.dir.string(), ec.message());
-        return std::nullopt;
-      }
+    say("esc: dependency {}: running into {}\n", name, partial.string());
+    if (!follower_rank()) {
+      std::filesystem::create_directories(cx.cache);
       std::filesystem::remove_all(partial, ec);
     }
-    fmt::print("esc: dependency {}: finished in {}\n", name, p.dir.string());
+    if (cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
+    bool moved = true;
+    if (!follower_rank()) {
+      std::ofstream(partial / "fingerprint.txt") << key;
+      std::filesystem::rename(partial, p.dir, ec);
+      if (ec) {
+        // Another process finished the same run first: its result is the same; keep it.
+        moved = finished_run(p.dir);
+        if (!moved)
+          complain("esc: error: cannot move {} to {}: {}\n", partial.string(), p.dir.string(), ec.message());
+        else
+          std::filesystem::remove_all(partial, ec);
+      }
+    }
+    if (!agree(moved)) return std::nullopt;
+    say("esc: dependency {}: finished in {}\n", name, p.dir.string());
   }
-  p.stored = store::ResultsDb::open(p.dir, true).load_single();
+  auto stored = load_finished(p.dir);
+  if (!stored) return std::nullopt;
+  p.stored = std::move(*stored);
   return p;
 }
 
@@ -87,7 +181,7 @@ const store::StoredController* stored_controller(const Prepared& p, const std::s
   const auto& cs = p.stored.controllers;
   const auto it = std::find_if(cs.begin(), cs.end(), [&](const store::StoredController& c) { return c.name == name; });
   if (it == cs.end() || it->finished.empty()) {
-    fmt::print(stderr, "esc: error: {} holds no finished run of controller `{}`\n", p.dir.string(), name);
+    complain("esc: error: {} holds no finished run of controller `{}`\n", p.dir.string(), name);
     return nullptr;
   }
   return &*it;
@@ -103,11 +197,11 @@ bool freeze_behaviors(eval::ExperimentSpec& spec, const eval::Dependency& dep, c
     if (r.best_fitness > best->best_fitness) best = &r;
   auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
   if (best->best_genome.size() != frozen->genome_size()) {
-    fmt::print(stderr, "esc: error: {}: the best genome of `{}` has {} genes, expected {}\n", p.dir.string(),
+    complain("esc: error: {}: the best genome of `{}` has {} genes, expected {}\n", p.dir.string(),
                dep.controller, best->best_genome.size(), frozen->genome_size());
     return false;
   }
-  fmt::print("esc: dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})\n",
+  say("esc: dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})\n",
              dep.experiment, dep.controller, sc->finished.size(), sc->finished.size() == 1 ? "" : "s",
              best->best_fitness, best->run + 1);
   for (const auto& [ci, bi] : dep.targets) {
@@ -129,14 +223,14 @@ bool fill_start_genomes(eval::ExperimentSpec& spec, const Prepared& p) {
     auto& runs = start.genomes.emplace_back();
     for (const eval::RunResult& r : sc->finished) {
       if (r.best_genome.size() != c.genome_size()) {
-        fmt::print(stderr, "esc: error: {}: run {} of `{}` stored {} genes, but `{}` has {} here\n", p.dir.string(),
+        complain("esc: error: {}: run {} of `{}` stored {} genes, but `{}` has {} here\n", p.dir.string(),
                    r.run + 1, c.name, r.best_genome.size(), c.name, c.genome_size());
         return false;
       }
       runs.push_back(r.best_genome);
     }
   }
-  fmt::print("esc: {} {} from the best genomes of {} ({} run{} each)\n", spec.name,
+  say("esc: {} {} from the best genomes of {} ({} run{} each)\n", spec.name,
              start.evaluate_only ? "evaluates" : "starts", start.experiment, p.stored.runs, p.stored.runs == 1 ? "" : "s");
   return true;
 }
@@ -144,11 +238,7 @@ bool fill_start_genomes(eval::ExperimentSpec& spec, const Prepared& p) {
 bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth) {
   if (spec.dependencies.empty() && !spec.start_from) return true;
   if (depth > kMaxDepth) {
-    fmt::print(stderr, "esc: error: dependencies of `{}` nest too deeply\n", spec.name);
-    return false;
-  }
-  if (dist::MpiSession::current() != nullptr && dist::MpiSession::current()->active()) {
-    fmt::print(stderr, "esc: error: `{}` uses the results of other experiments; run it without MPI\n", spec.name);
+    complain("esc: error: dependencies of `{}` nest too deeply\n", spec.name);
     return false;
   }
   // Each experiment once, however many of its controllers are used.

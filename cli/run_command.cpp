@@ -182,7 +182,8 @@ bool live_progress() { return isatty(STDOUT_FILENO) != 0; }
 // Runs the campaign on every rank of an MPI job, or alone. Rank 0 (or the lone process)
 // opens the run directory with `open`, writes every result and prints the progress and
 // the table; the other ranks evaluate their share of each generation and write nothing.
-// If `open` fails on rank 0, every rank stops.
+// If `open` fails on rank 0, every rank stops. `out`: where to tell the user the results
+// are (nothing when empty).
 int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
                    const std::function<store::RunDirectory()>& open, std::int64_t already_done,
                    const std::filesystem::path& out) {
@@ -199,9 +200,12 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   std::optional<store::RunDirectory> dir;
   try {
     dir.emplace(open());
-  } catch (...) {
+  } catch (const std::exception& e) {
+    // Every rank learns of it and ends normally: no MPI_Abort racing their MPI_Finalize
+    // (with Open MPI that can leave mpirun waiting forever).
+    fmt::print(stderr, "esc: error: {}\n", e.what());
     if (job) (void)mpi->all_ok(false);
-    throw;
+    return kExitBadInput;
   }
   if (job) (void)mpi->all_ok(true);
   ProgressPrinter progress(spec, *dir, live_progress(), already_done);
@@ -209,7 +213,7 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   progress.close();
   dir->finish(result);
   print_table(spec, result);
-  fmt::print("\nresults: {}/summary.json (report: esc report {})\n", out.string(), out.string());
+  if (!out.empty()) fmt::print("\nresults: {}/summary.json (report: esc report {})\n", out.string(), out.string());
   return kExitOk;
 }
 
@@ -226,7 +230,7 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
         launch.software_version = ESC_VERSION_STRING;
         return run_everywhere(
             d, {o.threads, nullptr, true}, [&] { return store::RunDirectory(dir, d, sources_of(compiled), launch); }, 0,
-            dir);
+            {});   // it is renamed when finished: prepare_dependencies says where it went
       },
       cache, ESC_VERSION_STRING};
 }

@@ -37,6 +37,8 @@ Distribution::~Distribution() {
   if (impl_) MPI_Win_free(&impl_->window);
 }
 
+int Distribution::ranks() const noexcept { return impl_ ? impl_->size : 1; }
+
 void Distribution::run(std::size_t n, std::size_t width, std::size_t threads, std::span<double> results,
                        const std::function<void(std::size_t)>& evaluate) {
   if (!impl_) {

@@ -34,6 +34,8 @@ class Distribution {
            const std::function<void(std::size_t i)>& evaluate);
 
   [[nodiscard]] bool distributed() const noexcept { return impl_ != nullptr; }
+  // Processes sharing the work: the MPI job's size, or 1.
+  [[nodiscard]] int ranks() const noexcept;
 
  private:
   struct Impl;

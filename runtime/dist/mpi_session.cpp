@@ -1,5 +1,6 @@
 #include "runtime/dist/mpi_session.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <mpi.h>
@@ -37,6 +38,17 @@ bool MpiSession::all_ok(bool ok) const {
   int all = 0;
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
   return all == 1;
+}
+
+void MpiSession::broadcast(std::string& text) const {
+  if (!active_) return;
+  auto size = static_cast<unsigned long long>(text.size());
+  MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+  text.resize(static_cast<std::size_t>(size));
+  // In pieces: MPI counts are ints.
+  constexpr std::size_t kPiece = std::size_t{1} << 30;
+  for (std::size_t at = 0; at < text.size(); at += kPiece)
+    MPI_Bcast(text.data() + at, static_cast<int>(std::min(kPiece, text.size() - at)), MPI_CHAR, 0, MPI_COMM_WORLD);
 }
 
 void MpiSession::abort(int status) const {

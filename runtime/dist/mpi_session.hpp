@@ -33,6 +33,10 @@ class MpiSession {
   // failure on one rank (an existing output directory on rank 0) stops every rank.
   [[nodiscard]] bool all_ok(bool ok) const;
 
+  // Rank 0's `text` on every rank (a collective: all ranks must call it). Used for what
+  // rank 0 alone reads from files, so that the other ranks never touch the filesystem.
+  void broadcast(std::string& text) const;
+
   // Ends the job from any rank after a fatal error (MPI_Abort), so no rank waits forever.
   [[noreturn]] void abort(int status) const;
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
+#include <memory>
 
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
@@ -9,7 +11,6 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign_parts.hpp"
 #include "runtime/eval/evaluator.hpp"
-#include "runtime/evo/es.hpp"
 
 namespace esc::eval {
 
@@ -17,75 +18,58 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using detail::Evaluators;
+using detail::RunJob;
 
-// The genome run `run` of controller `index` starts from (`start from` / `evaluate from`),
-// or null when it starts from a random population.
-const std::vector<double>* start_genome(const ExperimentSpec& spec, std::size_t index, int run) {
-  if (!spec.start_from || index >= spec.start_from->genomes.size()) return nullptr;
-  const auto& runs = spec.start_from->genomes[index];
-  if (runs.empty()) return nullptr;
-  return &runs[static_cast<std::size_t>(run) % runs.size()];
-}
+// Runs advance together while their generations hold fewer than this many evaluations per
+// worker (thread of any rank): a generation's last evaluations leave workers idle until
+// the longest one ends, and pooling several runs' generations makes that tail a smaller
+// share of each round. With lambda = 150 on 2 cores, runs go one at a time.
+constexpr std::size_t kEvaluationsPerWorker = 16;
 
-RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& es, int run,
-                     const std::vector<double>* start) {
-  RunState st;
-  st.run = run;
-  st.seed = run_seed(spec.seed, run);
-  if (start != nullptr) {
-    st.parents = es.seeded(*start);
-    return st;
+// Where each job's individuals sit in the round's pool.
+struct Pool {
+  std::vector<std::size_t> first;   // job j's individuals are [first[j], first[j + 1])
+  [[nodiscard]] std::size_t size() const { return first.back(); }
+  [[nodiscard]] std::size_t job_of(std::size_t i) const {
+    return static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), i) - first.begin()) - 1;
   }
-  Rng init(st.seed, {static_cast<std::uint64_t>(Stream::Init)});
-  st.parents = es.initial(init);
-  return st;
-}
+};
 
-// Generation g's offspring. A run that starts from a stored genome keeps it unchanged as
-// offspring 0 of generation 0, so that generation measures it in the new setting; a run
-// that only evaluates it has that one offspring.
-std::vector<evo::Individual> offspring_of(const ExperimentSpec& spec, const evo::EvolutionStrategy& es,
-                                          const RunState& st, const std::vector<double>* start, int g) {
-  if (start != nullptr && spec.start_from->evaluate_only) return {st.parents.front()};
-  Rng breed(st.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
-  std::vector<evo::Individual> offspring = es.breed(st.parents, breed);
-  if (start != nullptr && g == 0) offspring.front() = st.parents.front();
-  return offspring;
-}
-
-RunResult evolve_one(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
-                     const RunState* from, const CampaignOptions& options, Evaluators& ev,
-                     CampaignListener& listener) {
-  const evo::EvolutionStrategy es(spec.es, controller.genome_size());
-  const auto index = static_cast<std::size_t>(&controller - spec.controllers.data());
-  const std::vector<double>* seed_genome = start_genome(spec, index, run);
-  RunState st = from != nullptr ? *from : fresh_state(spec, es, run, seed_genome);
+// One generation of every active run: breeds them, evaluates the pooled individuals on
+// every worker and rank, and hands each run its fitness and statistics. A run's share of
+// the round's wall time is its share of the control steps.
+void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, CampaignListener& listener) {
+  const auto start = Clock::now();
+  Pool pool{{0}};
+  for (const auto& job : active) pool.first.push_back(pool.first.back() + job->breed());
+  constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
+  std::vector<double> results(pool.size() * kWidth, 0.0);
+  ev.distribution.run(pool.size(), kWidth, ev.threads, results, [&](std::size_t i) {
+    const std::size_t j = pool.job_of(i);
+    const RunJob& job = *active[j];
+    const std::size_t k = i - pool.first[j];
+    const Evaluation e = job.evaluate(ev.workers.local(), k, evaluation_seed(job.state().seed, job.generation(), k));
+    results[i * kWidth] = e.fitness;
+    results[i * kWidth + 1] = static_cast<double>(e.steps);
+  });
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::vector<double> fitness;
-  for (int g = static_cast<int>(st.generations.size()); g < spec.generations_for(controller); ++g) {
-    const auto start = Clock::now();
-    std::vector<evo::Individual> offspring = offspring_of(spec, es, st, seed_genome, g);
-    const std::int64_t steps = detail::evaluate_all(
-        offspring.size(), st.seed, g, ev,
-        [&](Evaluator& e, std::size_t i, std::uint64_t seed) {
-          return e.evaluate(controller, offspring[i].genes, seed);
-        },
-        fitness);
-    for (std::size_t i = 0; i < offspring.size(); ++i) offspring[i].fitness = fitness[i];
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    st.generations.push_back(detail::summarise(g, fitness, steps, seconds));
-    if (const auto best = detail::improve_best(st, g, fitness)) st.best_genome = offspring[*best].genes;
-    if (!spec.start_from || !spec.start_from->evaluate_only) st.parents = es.select(st.parents, offspring);
-    listener.generation_done(controller, run, st.generations.back());
-    listener.checkpoint(controller, st);
+  std::vector<std::int64_t> steps(active.size(), 0);
+  std::int64_t all_steps = 0;
+  for (std::size_t i = 0; i < pool.size(); ++i) {
+    steps[pool.job_of(i)] += static_cast<std::int64_t>(results[i * kWidth + 1]);
+    all_steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
   }
-  const bool has_best = st.has_best;
-  RunResult result = detail::close_run(std::move(st));
-  if (has_best)
-    detail::replay_best(spec, controller, result, options, ev, listener,
-                        [&](Evaluator& e, std::uint64_t seed, TraceSink* sink) {
-                          return e.evaluate(controller, result.best_genome, seed, sink);
-                        });
-  return result;
+  for (std::size_t j = 0; j < active.size(); ++j) {
+    RunJob& job = *active[j];
+    fitness.clear();
+    for (std::size_t i = pool.first[j]; i < pool.first[j + 1]; ++i) fitness.push_back(results[i * kWidth]);
+    const double share = all_steps > 0 ? static_cast<double>(steps[j]) / static_cast<double>(all_steps)
+                                       : static_cast<double>(fitness.size()) / static_cast<double>(pool.size());
+    job.evaluated(fitness, detail::summarise(job.generation(), fitness, steps[j], seconds * share));
+    listener.generation_done(job.controller(), job.state().run, job.state().generations.back());
+    listener.checkpoint(job.controller(), job.state());
+  }
 }
 
 const RunResult* find_finished(const ResumePoint* resume, const std::string& controller, int run) {
@@ -126,24 +110,71 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
   detail::Workers workers([&spec] { return Evaluator(spec); });
   dist::Distribution distribution;
   Evaluators ev{workers, distribution, static_cast<std::size_t>(threads)};
+
+  // Every run, in controller then run order: finished ones (from a resume) as they are,
+  // the others queued.
+  struct Queued {
+    const control::ControllerSpec* controller;
+    int run;
+    const RunState* from;
+  };
+  std::deque<Queued> queue;
   for (const control::ControllerSpec& c : spec.controllers) {
-    ControllerResult cr;
+    ControllerResult& cr = result.controllers.emplace_back();
     cr.name = c.name;
     cr.architecture = c.architecture();
     cr.genome_size = spec.genome_size_of(c);
     cr.choices = c.choice_names();
+    cr.runs.resize(static_cast<std::size_t>(spec.runs));
     for (int run = 0; run < spec.runs; ++run) {
-      if (const RunResult* done = find_finished(options.resume, c.name, run)) {
-        cr.runs.push_back(*done);
-        continue;
-      }
-      const RunState* partial = find_in_progress(options.resume, c.name, run);
-      const auto evolve = c.is_tree() ? detail::evolve_tree : evolve_one;
-      arena.execute([&] { cr.runs.push_back(evolve(spec, c, run, partial, options, ev, listener)); });
-      listener.run_done(c, cr.runs.back());
+      if (const RunResult* done = find_finished(options.resume, c.name, run))
+        cr.runs[static_cast<std::size_t>(run)] = *done;
+      else
+        queue.push_back({&c, run, find_in_progress(options.resume, c.name, run)});
     }
-    result.controllers.push_back(std::move(cr));
   }
+
+  const std::size_t workers_everywhere = ev.threads * static_cast<std::size_t>(distribution.ranks());
+  const auto room_for_another = [&](const std::vector<std::unique_ptr<RunJob>>& active) {
+    if (active.empty()) return true;
+    if (options.runs_at_once > 0) return active.size() < static_cast<std::size_t>(options.runs_at_once);
+    std::size_t evaluations = 0;
+    for (const auto& job : active) evaluations += job->evaluations_per_generation();
+    return evaluations < kEvaluationsPerWorker * workers_everywhere;
+  };
+  const auto close = [&](RunJob& job) {
+    const control::ControllerSpec& c = job.controller();
+    RunResult& slot = result.controllers[static_cast<std::size_t>(&c - spec.controllers.data())]
+                          .runs[static_cast<std::size_t>(job.state().run)];
+    slot = job.close(spec, options, ev, listener);
+    listener.run_done(c, slot);
+  };
+  std::vector<std::unique_ptr<RunJob>> active;
+  arena.execute([&] {
+    while (true) {
+      while (!queue.empty() && room_for_another(active)) {
+        const Queued q = queue.front();
+        queue.pop_front();
+        const auto start = q.controller->is_tree() ? detail::gp_run : detail::es_run;
+        std::unique_ptr<RunJob> job = start(spec, *q.controller, q.run, q.from);
+        // A run stopped after its last generation but before it was closed.
+        if (job->finished())
+          close(*job);
+        else
+          active.push_back(std::move(job));
+      }
+      if (active.empty()) break;
+      advance(active, ev, listener);
+      for (auto it = active.begin(); it != active.end();) {
+        if ((*it)->finished()) {
+          close(**it);
+          it = active.erase(it);
+        } else {
+          ++it;
+        }
+      }
+    }
+  });
   return result;
 }
 

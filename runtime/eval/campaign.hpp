@@ -79,7 +79,9 @@ struct CampaignResult {
 };
 
 // Told about progress as the campaign goes; called from the thread that called
-// run_campaign, never concurrently.
+// run_campaign, never concurrently. When several runs advance together, their events
+// interleave: each run's own events come in order, and its run_done after its last
+// generation.
 class CampaignListener {
  public:
   virtual ~CampaignListener() = default;
@@ -115,6 +117,10 @@ struct CampaignOptions {
   int threads = 0;                        // 0: all hardware threads
   const ResumePoint* resume = nullptr;    // none: start from scratch
   bool trace_best = false;                // replay each run's best evaluation for best_traced
+  // How many runs advance together, their generations' evaluations dealt out as one pool;
+  // 0: as many as keep every worker of every rank busy (campaign.cpp). Results do not
+  // depend on it; the order in which the listener hears of runs does.
+  int runs_at_once = 0;
 };
 
 [[nodiscard]] std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept;

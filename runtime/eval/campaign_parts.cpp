@@ -20,24 +20,6 @@ struct Recorder final : TraceSink {
 
 }  // namespace
 
-std::int64_t evaluate_all(std::size_t n, std::uint64_t run_seed, int generation, Evaluators& ev,
-                          const EvaluateOne& evaluate, std::vector<double>& fitness) {
-  constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
-  std::vector<double> results(n * kWidth, 0.0);
-  ev.distribution.run(n, kWidth, ev.threads, results, [&](std::size_t i) {
-    const Evaluation e = evaluate(ev.workers.local(), i, evaluation_seed(run_seed, generation, i));
-    results[i * kWidth] = e.fitness;
-    results[i * kWidth + 1] = static_cast<double>(e.steps);
-  });
-  fitness.assign(n, 0.0);
-  std::int64_t steps = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    fitness[i] = results[i * kWidth];
-    steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
-  }
-  return steps;
-}
-
 GenerationStats summarise(int generation, std::span<const double> fitness, std::int64_t steps, double seconds) {
   GenerationStats g;
   g.generation = generation;

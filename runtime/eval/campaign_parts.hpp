@@ -1,10 +1,11 @@
 #pragma once
-// What the two generation loops of a campaign share (campaign.cpp: the ES for networks,
-// tree_campaign.cpp: GP for trees): where evaluations run, the parallel evaluation of one
-// generation, its statistics, the run's best so far and the replay of the best evaluation.
-// Internal to esc_eval.
+// The parts of a campaign (campaign.cpp) below the loop over runs: a run as a job that
+// advances one generation at a time (es_run.cpp: the ES for networks, gp_run.cpp: genetic
+// programming for trees), so that the campaign can advance several runs together and deal
+// out their evaluations as one pool; and what both kinds of run share. Internal to esc_eval.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -25,14 +26,51 @@ struct Evaluators {
   std::size_t threads;   // this process's worker threads
 };
 
-// evaluate(evaluator, i, seed): individual i of the generation, with its evaluation seed.
-using EvaluateOne = std::function<Evaluation(Evaluator&, std::size_t, std::uint64_t)>;
+// One run of one controller. The campaign calls breed(), evaluates the individuals it
+// made (concurrently, in any order, on any rank), then evaluated(); until finished().
+// Every random stream comes from (run seed, purpose, generation, individual), so the run
+// is the same however its evaluations were shared out and whichever runs it advanced with.
+class RunJob {
+ public:
+  RunJob(const control::ControllerSpec& controller, RunState state, int generations)
+      : controller_(&controller), state_(std::move(state)), generations_(generations) {}
+  virtual ~RunJob() = default;
+  RunJob(const RunJob&) = delete;
+  RunJob& operator=(const RunJob&) = delete;
 
-// Evaluates individuals [0, n) of generation `generation` in parallel into fitness[0, n);
-// returns the control steps simulated. Each result lands in its own slot, so the outcome
-// does not depend on which worker or rank ran what.
-std::int64_t evaluate_all(std::size_t n, std::uint64_t run_seed, int generation, Evaluators& ev,
-                          const EvaluateOne& evaluate, std::vector<double>& fitness);
+  [[nodiscard]] const control::ControllerSpec& controller() const noexcept { return *controller_; }
+  [[nodiscard]] const RunState& state() const noexcept { return state_; }
+  // The generation breed() makes next.
+  [[nodiscard]] int generation() const noexcept { return static_cast<int>(state_.generations.size()); }
+  [[nodiscard]] bool finished() const noexcept { return generation() >= generations_; }
+  // How many individuals each generation evaluates.
+  [[nodiscard]] virtual std::size_t evaluations_per_generation() const = 0;
+
+  // Makes generation generation()'s individuals; returns how many there are.
+  virtual std::size_t breed() = 0;
+  // Evaluates individual i of the bred generation; called concurrently for different i.
+  [[nodiscard]] virtual Evaluation evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const = 0;
+  // The bred generation's fitness (in individual order) and statistics: selects, and
+  // keeps the run's best.
+  virtual void evaluated(std::span<const double> fitness, const GenerationStats& stats) = 0;
+  // The finished run; its best evaluation replayed where the options or the controller
+  // ask for it (replay_best).
+  [[nodiscard]] virtual RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
+                                        CampaignListener& listener) = 0;
+
+ protected:
+  const control::ControllerSpec* controller_;
+  RunState state_;
+  int generations_;
+};
+
+// A run of a network controller by the ES, fresh or continued from `from`.
+[[nodiscard]] std::unique_ptr<RunJob> es_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
+                                             int run, const RunState* from);
+// A run of a tree controller by genetic programming. Throws std::invalid_argument when
+// the experiment has no GP settings or `from` holds trees this controller cannot have.
+[[nodiscard]] std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
+                                             int run, const RunState* from);
 
 [[nodiscard]] GenerationStats summarise(int generation, std::span<const double> fitness, std::int64_t steps,
                                         double seconds);
@@ -50,10 +88,5 @@ std::optional<std::size_t> improve_best(RunState& st, int generation, std::span<
 void replay_best(const ExperimentSpec& spec, const control::ControllerSpec& controller, RunResult& result,
                  const CampaignOptions& options, Evaluators& ev, CampaignListener& listener,
                  const std::function<Evaluation(Evaluator&, std::uint64_t, TraceSink*)>& replay);
-
-// One run of a tree controller by genetic programming (tree_campaign.cpp).
-[[nodiscard]] RunResult evolve_tree(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
-                                    const RunState* from, const CampaignOptions& options, Evaluators& ev,
-                                    CampaignListener& listener);
 
 }  // namespace esc::eval::detail

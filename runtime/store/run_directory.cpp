@@ -1,5 +1,6 @@
 #include "runtime/store/run_directory.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -174,10 +175,15 @@ void RunDirectory::run_done(const control::ControllerSpec& controller, const eva
   db_.commit_run(controller.name, run);
   fs::create_directories(dir_ / controller.name);
   write_best(controller.name, controller.architecture(), run);
-  if (partial_.controllers.empty() || partial_.controllers.back().name != controller.name)
-    partial_.controllers.push_back(
-        {controller.name, controller.architecture(), genome_sizes_[controller.name], {}, controller.choice_names()});
-  partial_.controllers.back().runs.push_back(run);
+  // Runs that advance together finish in any order: each goes to its controller, in
+  // run order.
+  auto& cs = partial_.controllers;
+  auto c = std::find_if(cs.begin(), cs.end(), [&](const eval::ControllerResult& r) { return r.name == controller.name; });
+  if (c == cs.end())
+    c = cs.insert(cs.end(), {controller.name, controller.architecture(), genome_sizes_[controller.name], {},
+                             controller.choice_names()});
+  const auto at = std::find_if(c->runs.begin(), c->runs.end(), [&](const eval::RunResult& r) { return r.run > run.run; });
+  c->runs.insert(at, run);
   write_summary();
 }
 

@@ -1,5 +1,7 @@
 // The same script under `mpirun -np 3` gives the same results as one process: every rank
-// breeds the same populations, evaluations are shared out dynamically, results gathered.
+// breeds the same populations, evaluations (of several runs at once where generations are
+// small) are shared out dynamically, results gathered; experiments a script needs first
+// run under MPI too, and their cache is reused by a single process.
 #include <unistd.h>
 
 #include <fstream>
@@ -64,12 +66,34 @@ TEST(Mpi, ThreeRanksGiveTheSameGpResultsAsOneProcess) {
   EXPECT_EQ(sa["controllers"]["GS"]["runs"][1]["best_tree"], sb["controllers"]["GS"]["runs"][1]["best_tree"]);
 }
 
+TEST(Mpi, DependenciesRunUnderThreeRanksAsInOneProcess) {
+  const fs::path dir = scratch("mpi-deps");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
+  const std::string args = "run " + script + " --experiment supervised --threads 1 --out ";
+  const Outcome a = esc(args + (dir / "one").string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + (dir / "three").string() + " --cache " + (dir / "cache").string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_NE(b.output.find("esc: dependency basic: running into"), std::string::npos) << b.output;
+  // Printed once, by rank 0.
+  const auto frozen = b.output.find("controller CC frozen");
+  ASSERT_NE(frozen, std::string::npos) << b.output;
+  EXPECT_EQ(b.output.find("controller CC frozen", frozen + 1), std::string::npos) << b.output;
+  EXPECT_EQ(results_only(read_json(dir / "one" / "summary.json")), results_only(read_json(dir / "three" / "summary.json")));
+  // The cache the MPI job filled serves a single process.
+  const Outcome c = esc(args + (dir / "again").string() + " --cache " + (dir / "cache").string());
+  ASSERT_EQ(c.status, 0) << c.output;
+  EXPECT_NE(c.output.find("esc: dependency basic: reused"), std::string::npos) << c.output;
+  EXPECT_EQ(results_only(read_json(dir / "one" / "summary.json")), results_only(read_json(dir / "again" / "summary.json")));
+}
+
 TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   const fs::path out = scratch("mpi-exists");
   fs::create_directories(out);
   std::ofstream(out / "keep.txt") << "precious";
   const Outcome o = shell(mpirun(3) + "run " + tiny() + " --out " + out.string());
   EXPECT_NE(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("esc: error:"), std::string::npos) << o.output;
   EXPECT_EQ(slurp(out / "keep.txt"), "precious");
 }
 

@@ -1,0 +1,108 @@
+// A run of a network controller by the evolution strategy. Generation g's offspring are
+// bred with Rng(run seed, Breed, g) from the parents selected after generation g - 1 (the
+// initial population, Rng(run seed, Init), for g = 0), so a run continued from any
+// checkpoint is the run that was not interrupted.
+#include "runtime/core/rng.hpp"
+#include "runtime/eval/campaign_parts.hpp"
+#include "runtime/evo/es.hpp"
+
+namespace esc::eval::detail {
+
+namespace {
+
+// The genome run `run` of controller `index` starts from (`start from` / `evaluate from`),
+// or null when it starts from a random population.
+const std::vector<double>* start_genome(const ExperimentSpec& spec, std::size_t index, int run) {
+  if (!spec.start_from || index >= spec.start_from->genomes.size()) return nullptr;
+  const auto& runs = spec.start_from->genomes[index];
+  if (runs.empty()) return nullptr;
+  return &runs[static_cast<std::size_t>(run) % runs.size()];
+}
+
+RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& es, int run,
+                     const std::vector<double>* start) {
+  RunState st;
+  st.run = run;
+  st.seed = run_seed(spec.seed, run);
+  if (start != nullptr) {
+    st.parents = es.seeded(*start);
+    return st;
+  }
+  Rng init(st.seed, {static_cast<std::uint64_t>(Stream::Init)});
+  st.parents = es.initial(init);
+  return st;
+}
+
+class EsRun final : public RunJob {
+ public:
+  EsRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
+      : EsRun(spec, controller, run, from, evo::EvolutionStrategy(spec.es, controller.genome_size()),
+              start_genome(spec, static_cast<std::size_t>(&controller - spec.controllers.data()), run)) {}
+
+  std::size_t evaluations_per_generation() const override {
+    return evaluate_only() ? 1 : static_cast<std::size_t>(es_.settings().lambda);
+  }
+
+  // A run that starts from a stored genome keeps it unchanged as offspring 0 of
+  // generation 0, so that generation measures it in the new setting; a run that only
+  // evaluates it has that one offspring.
+  std::size_t breed() override {
+    const int g = generation();
+    if (evaluate_only()) {
+      offspring_ = {state_.parents.front()};
+      return offspring_.size();
+    }
+    Rng rng(state_.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
+    offspring_ = es_.breed(state_.parents, rng);
+    if (start_ != nullptr && g == 0) offspring_.front() = state_.parents.front();
+    return offspring_.size();
+  }
+
+  Evaluation evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const override {
+    return e.evaluate(*controller_, offspring_[i].genes, seed);
+  }
+
+  void evaluated(std::span<const double> fitness, const GenerationStats& stats) override {
+    for (std::size_t i = 0; i < offspring_.size(); ++i) offspring_[i].fitness = fitness[i];
+    state_.generations.push_back(stats);
+    if (const auto best = improve_best(state_, stats.generation, fitness)) state_.best_genome = offspring_[*best].genes;
+    if (!evaluate_only()) state_.parents = es_.select(state_.parents, offspring_);
+  }
+
+  RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
+                  CampaignListener& listener) override {
+    const bool has_best = state_.has_best;
+    RunResult result = close_run(std::move(state_));
+    if (has_best)
+      replay_best(spec, *controller_, result, options, ev, listener,
+                  [&](Evaluator& e, std::uint64_t seed, TraceSink* sink) {
+                    return e.evaluate(*controller_, result.best_genome, seed, sink);
+                  });
+    return result;
+  }
+
+ private:
+  EsRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from,
+        evo::EvolutionStrategy es, const std::vector<double>* start)
+      : RunJob(controller, from != nullptr ? *from : fresh_state(spec, es, run, start),
+               spec.generations_for(controller)),
+        es_(std::move(es)),
+        start_(start),
+        evaluate_only_(start != nullptr && spec.start_from->evaluate_only) {}
+
+  [[nodiscard]] bool evaluate_only() const noexcept { return evaluate_only_; }
+
+  evo::EvolutionStrategy es_;
+  const std::vector<double>* start_;   // the stored genome the run starts from, or null
+  bool evaluate_only_;
+  std::vector<evo::Individual> offspring_;
+};
+
+}  // namespace
+
+std::unique_ptr<RunJob> es_run(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
+                               const RunState* from) {
+  return std::make_unique<EsRun>(spec, controller, run, from);
+}
+
+}  // namespace esc::eval::detail

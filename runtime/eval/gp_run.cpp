@@ -1,0 +1,120 @@
+// A run of a tree controller by generational genetic programming, with the guarantees of
+// the ES run: every random stream comes from (run seed, purpose, generation, individual),
+// so a run is the same for any thread count, any sharing among MPI ranks, and when resumed
+// after any generation. Generation 0 evaluates the initial population (Stream::Init);
+// generation g > 0 breeds from generation g - 1 with Rng(seed, Breed, g) and evaluates the
+// result. Every individual is evaluated, elites too: fitness is measured from random start
+// poses, so an elite is judged on this generation's streams like everyone else.
+#include <memory>
+#include <stdexcept>
+
+#include "runtime/core/rng.hpp"
+#include "runtime/eval/campaign_parts.hpp"
+#include "runtime/evo/gp/codec.hpp"
+#include "runtime/evo/gp/inline_actions.hpp"
+#include "runtime/evo/gp/print.hpp"
+
+namespace esc::eval::detail {
+
+namespace {
+
+// The tree as the body of a behavior that computes the same wheel commands, or "" when
+// there is none (a Behavior tree; actions reading an arena's zones or lights).
+std::string behavior_body(const control::ControllerSpec& controller, const evo::gp::Tree& tree) {
+  const evo::gp::PrimitiveSet& set = *controller.primitives;
+  if (set.root() == evo::gp::Type::Wheels) return evo::gp::to_script(tree, set);
+  if (set.root() != evo::gp::Type::Action) return {};
+  try {
+    const evo::gp::InlinedTree inlined = evo::gp::inline_actions(tree, set, controller.actions);
+    return evo::gp::to_script(inlined.tree, inlined.set);
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+}
+
+class GpRun final : public RunJob {
+ public:
+  GpRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
+      : RunJob(controller, from != nullptr ? *from : fresh_state(spec, run), spec.generations_for(controller)),
+        gp_(*spec.gp, *controller.primitives),
+        population_size_(static_cast<std::size_t>(spec.gp->population)) {
+    // A stored population must be one this script could have bred (the store keeps trees
+    // without their primitive set).
+    if (!state_.generations.empty() && state_.population.size() != population_size_)
+      throw std::invalid_argument("tree controller '" + controller.name + "': the state to resume from holds " +
+                                  std::to_string(state_.population.size()) + " trees, the population is " +
+                                  std::to_string(population_size_));
+    for (const evo::gp::Individual& ind : state_.population)
+      if (const std::string why = evo::gp::check(ind.tree, *controller.primitives, controller.primitives->root());
+          !why.empty())
+        throw std::invalid_argument("tree controller '" + controller.name +
+                                    "': a tree to resume from is not one of its primitive set: " + why);
+  }
+
+  std::size_t evaluations_per_generation() const override { return population_size_; }
+
+  std::size_t breed() override {
+    const int g = generation();
+    if (g == 0) {
+      Rng init(state_.seed, {static_cast<std::uint64_t>(Stream::Init)});
+      bred_ = gp_.initial(init);
+    } else {
+      Rng rng(state_.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
+      bred_ = gp_.breed(state_.population, rng);
+    }
+    return bred_.size();
+  }
+
+  Evaluation evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const override {
+    return e.evaluate(*controller_, bred_[i].tree, seed);
+  }
+
+  void evaluated(std::span<const double> fitness, const GenerationStats& stats) override {
+    for (std::size_t i = 0; i < bred_.size(); ++i) bred_[i].fitness = fitness[i];
+    state_.generations.push_back(stats);
+    if (const auto best = improve_best(state_, stats.generation, fitness))
+      state_.best_genome = evo::gp::encode(bred_[*best].tree);
+    state_.population = std::move(bred_);
+    bred_.clear();
+  }
+
+  RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
+                  CampaignListener& listener) override {
+    const bool has_best = state_.has_best;
+    RunResult result = close_run(std::move(state_));
+    if (!has_best) return result;
+    const control::ControllerSpec& controller = *controller_;
+    const evo::gp::Tree best = evo::gp::decode(result.best_genome, *controller.primitives);
+    result.best_tree = evo::gp::to_script(best, *controller.primitives);
+    result.best_behavior = behavior_body(controller, best);
+    replay_best(spec, controller, result, options, ev, listener,
+                [&](Evaluator& e, std::uint64_t seed, TraceSink* sink) {
+                  return e.evaluate(controller, best, seed, sink);
+                });
+    return result;
+  }
+
+ private:
+  static RunState fresh_state(const ExperimentSpec& spec, int run) {
+    RunState st;
+    st.run = run;
+    st.seed = run_seed(spec.seed, run);
+    return st;
+  }
+
+  evo::gp::GeneticProgramming gp_;
+  std::size_t population_size_;
+  std::vector<evo::gp::Individual> bred_;
+};
+
+}  // namespace
+
+std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
+                               const RunState* from) {
+  if (!spec.gp)
+    throw std::invalid_argument("tree controller '" + controller.name + "' is compared, but experiment '" +
+                                spec.name + "' has no GP settings");
+  return std::make_unique<GpRun>(spec, controller, run, from);
+}
+
+}  // namespace esc::eval::detail
