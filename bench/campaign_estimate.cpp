@@ -1,8 +1,12 @@
 #include "bench/campaign_estimate.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <deque>
+#include <functional>
 
 #include "runtime/core/rng.hpp"
+#include "runtime/eval/campaign.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/gp/init.hpp"
@@ -33,7 +37,63 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
   return static_cast<double>(steps) / elapsed;
 }
 
+std::size_t evaluations_per_generation(const eval::ExperimentSpec& e, const control::ControllerSpec& c) {
+  if (e.start_from && e.start_from->evaluate_only) return 1;
+  return static_cast<std::size_t>(c.is_tree() && e.gp ? e.gp->population : e.es.lambda);
+}
+
+// Rounds of runs advancing together until every run of `runs` is done; their length.
+struct QueuedRun {
+  double evaluation_seconds;
+  std::size_t evaluations;   // per generation
+  int generations_left;
+};
+
+double rounds_seconds(std::deque<QueuedRun> queue, std::size_t workers) {
+  double seconds = 0.0;
+  std::vector<QueuedRun> active;
+  std::vector<double> busy_until(workers);
+  while (true) {
+    std::size_t pooled = 0;
+    for (const QueuedRun& r : active) pooled += r.evaluations;
+    while (!queue.empty() && eval::room_for_another_run(active.size(), pooled, workers, 0)) {
+      pooled += queue.front().evaluations;
+      active.push_back(queue.front());
+      queue.pop_front();
+    }
+    if (active.empty()) return seconds;
+    // A min-heap of when each worker is next free: the first free takes the next evaluation.
+    std::fill(busy_until.begin(), busy_until.end(), 0.0);
+    for (const QueuedRun& r : active)
+      for (std::size_t i = 0; i < r.evaluations; ++i) {
+        std::pop_heap(busy_until.begin(), busy_until.end(), std::greater<>());
+        busy_until.back() += r.evaluation_seconds;
+        std::push_heap(busy_until.begin(), busy_until.end(), std::greater<>());
+      }
+    seconds += *std::max_element(busy_until.begin(), busy_until.end());
+    for (QueuedRun& r : active) --r.generations_left;
+    std::erase_if(active, [](const QueuedRun& r) { return r.generations_left <= 0; });
+  }
+}
+
 }  // namespace
+
+double wall_seconds(const std::vector<eval::ExperimentSpec>& experiments, const std::vector<ControllerCost>& costs,
+                    std::size_t workers) {
+  double seconds = 0.0;
+  std::size_t k = 0;
+  for (const eval::ExperimentSpec& e : experiments) {
+    std::deque<QueuedRun> queue;
+    for (const control::ControllerSpec& c : e.controllers) {
+      const ControllerCost& cost = costs.at(k++);
+      const double evaluation_seconds = static_cast<double>(e.epochs) * e.steps / cost.steps_per_second;
+      for (int run = 0; run < e.runs; ++run)
+        queue.push_back({evaluation_seconds, evaluations_per_generation(e, c), e.generations_for(c)});
+    }
+    seconds += rounds_seconds(std::move(queue), std::max<std::size_t>(workers, 1));
+  }
+  return seconds;
+}
 
 std::vector<ControllerCost> estimate_campaign(const std::vector<eval::ExperimentSpec>& experiments,
                                               double seconds_each) {
@@ -44,9 +104,8 @@ std::vector<ControllerCost> estimate_campaign(const std::vector<eval::Experiment
       k.experiment = e.name;
       k.controller = c.name;
       k.architecture = c.architecture();
-      const bool evaluate_only = e.start_from && e.start_from->evaluate_only;
-      const int per_generation = evaluate_only ? 1 : c.is_tree() && e.gp ? e.gp->population : e.es.lambda;
-      k.evaluations = static_cast<double>(e.runs) * e.generations_for(c) * per_generation;
+      k.evaluations = static_cast<double>(e.runs) * e.generations_for(c) *
+                      static_cast<double>(evaluations_per_generation(e, c));
       k.max_steps = k.evaluations * e.epochs * e.steps;
       k.steps_per_second = measure_rate(e, c, seconds_each);
       costs.push_back(k);

@@ -21,8 +21,19 @@ struct ControllerCost {
   [[nodiscard]] double core_seconds() const noexcept { return max_steps / steps_per_second; }
 };
 
-// Measures each controller of each experiment for about `seconds_each` on one core.
+// Measures each controller of each experiment for about `seconds_each` on one core; in
+// experiment then controller order.
 [[nodiscard]] std::vector<ControllerCost> estimate_campaign(const std::vector<eval::ExperimentSpec>& experiments,
                                                             double seconds_each);
+
+// The campaign's wall time on `workers` workers (threads of all ranks), at most: every
+// evaluation at full length and at its controller's one-core rate, scheduled as
+// run_campaign schedules them (runs advancing together by eval::room_for_another_run,
+// each round's pooled evaluations taken one at a time by the first free worker, a round
+// ending with its longest worker), experiments one after the other. What it leaves out:
+// evaluations that end early, and anything that makes a worker slower than one core alone
+// (memory bandwidth, MPI messages), which only a measurement shows.
+[[nodiscard]] double wall_seconds(const std::vector<eval::ExperimentSpec>& experiments,
+                                  const std::vector<ControllerCost>& costs, std::size_t workers);
 
 }  // namespace esc::bench

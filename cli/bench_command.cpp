@@ -85,7 +85,7 @@ int campaign_command(const BenchOptions& o) {
   std::vector<eval::ExperimentSpec> experiments = whole_campaign(compiled);
   for (eval::ExperimentSpec& e : experiments)
     for (control::ControllerSpec& c : e.controllers) zero_evolved_genomes(c);
-  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+  const std::size_t cores = std::max(1U, std::thread::hardware_concurrency());
   fmt::print("measuring each controller on one core for {:.1f} s ...\n", o.min_time_s);
   const auto costs = bench::estimate_campaign(experiments, o.min_time_s);
   fmt::print("\n{:<30} {:<12} {:<10} {:>12} {:>14} {:>12} {:>11}\n", "experiment", "controller", "arch",
@@ -98,9 +98,14 @@ int campaign_command(const BenchOptions& o) {
   }
   fmt::print("\ntotal: {:.2f} core-hours at most (every epoch at full length; early epochs end sooner)\n",
              core_seconds / 3600.0);
-  fmt::print("wall time at most: {:.2f} h on this machine's {} cores, {:.2f} h on 16 cores "
-             "(assuming linear scaling: see docs/performance.md for measured speed-ups)\n",
-             core_seconds / 3600.0 / cores, cores, core_seconds / 3600.0 / 16.0);
+  fmt::print("wall time at most, with the campaign's own scheduling of full-length evaluations and every worker "
+             "at the one-core rate (docs/performance.md gives measured speed-ups):\n");
+  for (const std::size_t workers : std::set<std::size_t>{cores, 16, 64, 256}) {
+    const double wall = bench::wall_seconds(experiments, costs, workers);
+    fmt::print("  {:>4} workers{:<22} {:>8.2f} h   ({:.0f}% of a linear speed-up)\n", workers,
+               workers == cores ? " (this machine)" : workers == 256 ? " (e.g. 16 ranks x 16)" : "", wall / 3600.0,
+               100.0 * core_seconds / static_cast<double>(workers) / wall);
+  }
   fmt::print("machine: {}\n", cpu_model());
   return kExitOk;
 }

@@ -20,12 +20,6 @@ using Clock = std::chrono::steady_clock;
 using detail::Evaluators;
 using detail::RunJob;
 
-// Runs advance together while their generations hold fewer than this many evaluations per
-// worker (thread of any rank): a generation's last evaluations leave workers idle until
-// the longest one ends, and pooling several runs' generations makes that tail a smaller
-// share of each round. With lambda = 150 on 2 cores, runs go one at a time.
-constexpr std::size_t kEvaluationsPerWorker = 16;
-
 // Where each job's individuals sit in the round's pool.
 struct Pool {
   std::vector<std::size_t> first;   // job j's individuals are [first[j], first[j + 1])
@@ -97,6 +91,18 @@ std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept {
   return derive_seed(master_seed, {static_cast<std::uint64_t>(Stream::RunSeed), static_cast<std::uint64_t>(run)});
 }
 
+bool room_for_another_run(std::size_t active_runs, std::size_t pooled_evaluations, std::size_t workers,
+                          int runs_at_once) noexcept {
+  if (active_runs == 0) return true;
+  if (runs_at_once > 0) return active_runs < static_cast<std::size_t>(runs_at_once);
+  // Runs advance together while their generations hold fewer than this many evaluations
+  // per worker: a generation's last evaluations leave workers idle until the longest one
+  // ends, and pooling several runs' generations makes that tail a smaller share of each
+  // round. With lambda = 150 on 2 cores, runs go one at a time.
+  constexpr std::size_t kEvaluationsPerWorker = 16;
+  return pooled_evaluations < kEvaluationsPerWorker * workers;
+}
+
 CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& options,
                             CampaignListener& listener) {
   CampaignResult result;
@@ -136,11 +142,9 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
 
   const std::size_t workers_everywhere = ev.threads * static_cast<std::size_t>(distribution.ranks());
   const auto room_for_another = [&](const std::vector<std::unique_ptr<RunJob>>& active) {
-    if (active.empty()) return true;
-    if (options.runs_at_once > 0) return active.size() < static_cast<std::size_t>(options.runs_at_once);
     std::size_t evaluations = 0;
     for (const auto& job : active) evaluations += job->evaluations_per_generation();
-    return evaluations < kEvaluationsPerWorker * workers_everywhere;
+    return room_for_another_run(active.size(), evaluations, workers_everywhere, options.runs_at_once);
   };
   const auto close = [&](RunJob& job) {
     const control::ControllerSpec& c = job.controller();

@@ -125,6 +125,12 @@ struct CampaignOptions {
 
 [[nodiscard]] std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept;
 
+// Whether another run joins the `active_runs` advancing together, whose generations pool
+// `pooled_evaluations` evaluations, on `workers` workers (threads of all ranks), under
+// CampaignOptions::runs_at_once. Shared with the campaign's wall-time estimate.
+[[nodiscard]] bool room_for_another_run(std::size_t active_runs, std::size_t pooled_evaluations,
+                                        std::size_t workers, int runs_at_once) noexcept;
+
 // Throws std::invalid_argument on impossible ES or GP settings (from the algorithms), or a
 // tree controller compared without GP settings.
 [[nodiscard]] CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& options,
