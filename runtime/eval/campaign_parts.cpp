@@ -20,6 +20,11 @@ struct Recorder final : TraceSink {
 
 }  // namespace
 
+std::optional<std::size_t> RunJob::record(std::span<const double> fitness, const GenerationStats& stats) {
+  state_.generations.push_back(stats);
+  return improve_best(state_, stats.generation, fitness);
+}
+
 GenerationStats summarise(int generation, std::span<const double> fitness, std::int64_t steps, double seconds) {
   GenerationStats g;
   g.generation = generation;

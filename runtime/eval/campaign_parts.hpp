@@ -59,6 +59,10 @@ class RunJob {
                                         CampaignListener& listener) = 0;
 
  protected:
+  // Appends the generation's statistics and returns the individual that beat the run's best
+  // so far, if one did (its genome is the caller's to keep).
+  std::optional<std::size_t> record(std::span<const double> fitness, const GenerationStats& stats);
+
   const control::ControllerSpec* controller_;
   RunState state_;
   int generations_;

@@ -64,8 +64,7 @@ class EsRun final : public RunJob {
 
   void evaluated(std::span<const double> fitness, const GenerationStats& stats) override {
     for (std::size_t i = 0; i < offspring_.size(); ++i) offspring_[i].fitness = fitness[i];
-    state_.generations.push_back(stats);
-    if (const auto best = improve_best(state_, stats.generation, fitness)) state_.best_genome = offspring_[*best].genes;
+    if (const auto best = record(fitness, stats)) state_.best_genome = offspring_[*best].genes;
     if (!evaluate_only()) state_.parents = es_.select(state_.parents, offspring_);
   }
 

@@ -71,9 +71,7 @@ class GpRun final : public RunJob {
 
   void evaluated(std::span<const double> fitness, const GenerationStats& stats) override {
     for (std::size_t i = 0; i < bred_.size(); ++i) bred_[i].fitness = fitness[i];
-    state_.generations.push_back(stats);
-    if (const auto best = improve_best(state_, stats.generation, fitness))
-      state_.best_genome = evo::gp::encode(bred_[*best].tree);
+    if (const auto best = record(fitness, stats)) state_.best_genome = evo::gp::encode(bred_[*best].tree);
     state_.population = std::move(bred_);
     bred_.clear();
   }
