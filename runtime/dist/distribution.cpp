@@ -37,7 +37,13 @@ Distribution::~Distribution() {
   if (impl_) MPI_Win_free(&impl_->window);
 }
 
-int Distribution::ranks() const noexcept { return impl_ ? impl_->size : 1; }
+std::size_t Distribution::workers(std::size_t threads_here) const {
+  if (!impl_) return threads_here;
+  auto mine = static_cast<unsigned long long>(threads_here);
+  unsigned long long all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  return static_cast<std::size_t>(all);
+}
 
 void Distribution::run(std::size_t n, std::size_t width, std::size_t threads, std::span<double> results,
                        const std::function<void(std::size_t)>& evaluate) {

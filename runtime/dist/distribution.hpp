@@ -34,8 +34,10 @@ class Distribution {
            const std::function<void(std::size_t i)>& evaluate);
 
   [[nodiscard]] bool distributed() const noexcept { return impl_ != nullptr; }
-  // Processes sharing the work: the MPI job's size, or 1.
-  [[nodiscard]] int ranks() const noexcept;
+  // Worker threads of all processes, given this one's: the sum over the MPI job's ranks
+  // (which may differ, e.g. nodes with other core counts), the same on every rank.
+  // Collective under MPI.
+  [[nodiscard]] std::size_t workers(std::size_t threads_here) const;
 
  private:
   struct Impl;

@@ -140,7 +140,8 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
     }
   }
 
-  const std::size_t workers_everywhere = ev.threads * static_cast<std::size_t>(distribution.ranks());
+  // Every rank must pool the same runs: count workers the same everywhere.
+  const std::size_t workers_everywhere = distribution.workers(ev.threads);
   const auto room_for_another = [&](const std::vector<std::unique_ptr<RunJob>>& active) {
     std::size_t evaluations = 0;
     for (const auto& job : active) evaluations += job->evaluations_per_generation();

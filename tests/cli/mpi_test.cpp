@@ -42,6 +42,22 @@ TEST(Mpi, ThreeRanksGiveTheSameSummaryAsOneProcess) {
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
 }
 
+TEST(Mpi, RanksWithDifferentThreadCountsPoolTheSameRuns) {
+  // 1 + 3 + 3 threads: every rank must count 7 workers, so that all pool the same runs
+  // (counting its own threads times 3 ranks, rank 0 would pool 3 runs, the others 4).
+  const fs::path one = scratch("mpi-mixed-1");
+  const fs::path mixed = scratch("mpi-mixed-3");
+  const std::string args = "run " + tiny() + " --seed 5 --runs 4 --generations 3 --out ";
+  const Outcome a = esc(args + one.string() + " --threads 1");
+  ASSERT_EQ(a.status, 0) << a.output;
+  std::string launcher = std::string(ESC_MPIEXEC) + " --oversubscribe";
+  if (::geteuid() == 0) launcher += " --allow-run-as-root";
+  const std::string each = std::string(ESC_BINARY) + " " + args + mixed.string();
+  const Outcome b = shell(launcher + " -np 1 " + each + " --threads 1 : -np 2 " + each + " --threads 3");
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(mixed / "summary.json")));
+}
+
 TEST(Mpi, DiagnosticsArePrintedOnceNotOncePerRank) {
   const std::string bad = std::string(ESC_SOURCE_DIR) + "/tests/bad/unknown_one_letter_name.esc";
   const Outcome o = shell(mpirun(3) + "check " + bad);
