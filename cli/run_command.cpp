@@ -250,6 +250,14 @@ int resume_command(const RunOptions& o) {
     return kExitOk;
   }
 
+  std::error_code ec;
+  if (o.file.empty() && !std::filesystem::exists(script, ec)) {
+    fmt::print(stderr,
+               "esc: error: the script the run in {} started from, {}, is gone; give its new place: esc run FILE "
+               "--resume {} (a copy of every file it read is in {}/sources)\n",
+               o.resume.string(), script.string(), o.resume.string(), o.resume.string());
+    return kExitBadInput;
+  }
   compiler::CompileResult compiled = load_script(script);
   if (!compiled.ok()) return kExitBadInput;
   eval::ExperimentSpec* spec = pick_experiment(compiled, script, stored.name);

@@ -106,6 +106,18 @@ TEST(Results, ResumeRefusesWhatItCannotContinue) {
 
   // Options that would change the run are refused with --resume.
   EXPECT_EQ(esc("run --resume " + changed.string() + " --generations 3").status, 2);
+
+  // A script moved away: resume says where it can be given, and continues when it is (a
+  // campaign is known by its files' names and texts, not their directories).
+  fs::rename(src / "tiny.esc", src / "edited.esc");
+  o = esc("run --resume " + changed.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("is gone; give its new place: esc run FILE --resume"), std::string::npos) << o.output;
+  fs::create_directories(src / "elsewhere");
+  fs::copy_file(tiny(), src / "elsewhere" / "tiny.esc");
+  o = esc("run " + (src / "elsewhere" / "tiny.esc").string() + " --resume " + changed.string() + " --threads 2");
+  EXPECT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(committed_generations(changed), 2 * 2 * 200);   // controllers x runs x generations
 }
 
 TEST(Results, ExportFormats) {
