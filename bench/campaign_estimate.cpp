@@ -4,6 +4,7 @@
 #include <chrono>
 #include <deque>
 #include <functional>
+#include <span>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign.hpp"
@@ -18,7 +19,8 @@ namespace {
 // Per-core control steps per second of evaluating random genomes (an early generation:
 // short epochs, many resets), measured for about `seconds`. Trees are drawn as a GP run's
 // initial population is.
-double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec& c, double seconds) {
+double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec& c, double seconds,
+                    std::vector<double>& lengths) {
   eval::Evaluator evaluator(e);
   Rng rng(2024);
   std::vector<double> genome(c.genome_size());
@@ -32,7 +34,9 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
     else
       for (double& g : genome) g = rng.uniform(e.es.lower, e.es.upper);
     steps += evaluator.evaluate(c, genome, i).steps;
+    const double before = elapsed;
     elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    lengths.push_back(elapsed - before);
   }
   return static_cast<double>(steps) / elapsed;
 }
@@ -42,17 +46,17 @@ std::size_t evaluations_per_generation(const eval::ExperimentSpec& e, const cont
   return static_cast<std::size_t>(c.is_tree() && e.gp ? e.gp->population : e.es.lambda);
 }
 
-// Rounds of runs advancing together until every run of `runs` is done; their length.
+// A run waiting or advancing in the model, with the lengths its evaluations take in turn.
 struct QueuedRun {
-  double evaluation_seconds;
+  std::span<const double> lengths;
   std::size_t evaluations;   // per generation
   int generations_left;
 };
 
-double rounds_seconds(std::deque<QueuedRun> queue, std::size_t workers) {
-  double seconds = 0.0;
+void schedule_rounds(std::deque<QueuedRun> queue, std::size_t workers, Schedule& out) {
   std::vector<QueuedRun> active;
   std::vector<double> busy_until(workers);
+  std::size_t drawn = 0;
   while (true) {
     std::size_t pooled = 0;
     for (const QueuedRun& r : active) pooled += r.evaluations;
@@ -61,16 +65,18 @@ double rounds_seconds(std::deque<QueuedRun> queue, std::size_t workers) {
       active.push_back(queue.front());
       queue.pop_front();
     }
-    if (active.empty()) return seconds;
+    if (active.empty()) return;
     // A min-heap of when each worker is next free: the first free takes the next evaluation.
     std::fill(busy_until.begin(), busy_until.end(), 0.0);
     for (const QueuedRun& r : active)
       for (std::size_t i = 0; i < r.evaluations; ++i) {
+        const double length = r.lengths[drawn++ % r.lengths.size()];
+        out.work_seconds += length;
         std::pop_heap(busy_until.begin(), busy_until.end(), std::greater<>());
-        busy_until.back() += r.evaluation_seconds;
+        busy_until.back() += length;
         std::push_heap(busy_until.begin(), busy_until.end(), std::greater<>());
       }
-    seconds += *std::max_element(busy_until.begin(), busy_until.end());
+    out.wall_seconds += *std::max_element(busy_until.begin(), busy_until.end());
     for (QueuedRun& r : active) --r.generations_left;
     std::erase_if(active, [](const QueuedRun& r) { return r.generations_left <= 0; });
   }
@@ -78,21 +84,26 @@ double rounds_seconds(std::deque<QueuedRun> queue, std::size_t workers) {
 
 }  // namespace
 
-double wall_seconds(const std::vector<eval::ExperimentSpec>& experiments, const std::vector<ControllerCost>& costs,
-                    std::size_t workers) {
-  double seconds = 0.0;
+Schedule schedule(const std::vector<eval::ExperimentSpec>& experiments, const std::vector<ControllerCost>& costs,
+                  std::size_t workers, Lengths lengths) {
+  Schedule out;
+  std::vector<double> full(costs.size());
   std::size_t k = 0;
   for (const eval::ExperimentSpec& e : experiments) {
     std::deque<QueuedRun> queue;
     for (const control::ControllerSpec& c : e.controllers) {
-      const ControllerCost& cost = costs.at(k++);
-      const double evaluation_seconds = static_cast<double>(e.epochs) * e.steps / cost.steps_per_second;
+      const ControllerCost& cost = costs.at(k);
+      full[k] = static_cast<double>(e.epochs) * e.steps / cost.steps_per_second;
+      const std::span<const double> drawn = lengths == Lengths::Measured && !cost.evaluation_seconds.empty()
+                                                ? std::span<const double>(cost.evaluation_seconds)
+                                                : std::span<const double>(&full[k], 1);
       for (int run = 0; run < e.runs; ++run)
-        queue.push_back({evaluation_seconds, evaluations_per_generation(e, c), e.generations_for(c)});
+        queue.push_back({drawn, evaluations_per_generation(e, c), e.generations_for(c)});
+      ++k;
     }
-    seconds += rounds_seconds(std::move(queue), std::max<std::size_t>(workers, 1));
+    schedule_rounds(std::move(queue), std::max<std::size_t>(workers, 1), out);
   }
-  return seconds;
+  return out;
 }
 
 std::vector<ControllerCost> estimate_campaign(const std::vector<eval::ExperimentSpec>& experiments,
@@ -107,7 +118,7 @@ std::vector<ControllerCost> estimate_campaign(const std::vector<eval::Experiment
       k.evaluations = static_cast<double>(e.runs) * e.generations_for(c) *
                       static_cast<double>(evaluations_per_generation(e, c));
       k.max_steps = k.evaluations * e.epochs * e.steps;
-      k.steps_per_second = measure_rate(e, c, seconds_each);
+      k.steps_per_second = measure_rate(e, c, seconds_each, k.evaluation_seconds);
       costs.push_back(k);
     }
   }

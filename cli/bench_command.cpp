@@ -98,13 +98,15 @@ int campaign_command(const BenchOptions& o) {
   }
   fmt::print("\ntotal: {:.2f} core-hours at most (every epoch at full length; early epochs end sooner)\n",
              core_seconds / 3600.0);
-  fmt::print("wall time at most, with the campaign's own scheduling of full-length evaluations and every worker "
-             "at the one-core rate (docs/performance.md gives measured speed-ups):\n");
+  fmt::print("wall time at most: full-length evaluations scheduled as `esc run` schedules them, every worker at the "
+             "one-core rate; and the share of a linear speed-up with evaluations as long as measured (they end early, "
+             "so rounds wait longer for their last one). docs/performance.md gives measured speed-ups.\n");
   for (const std::size_t workers : std::set<std::size_t>{cores, 16, 64, 256}) {
-    const double wall = bench::wall_seconds(experiments, costs, workers);
-    fmt::print("  {:>4} workers{:<22} {:>8.2f} h   ({:.0f}% of a linear speed-up)\n", workers,
-               workers == cores ? " (this machine)" : workers == 256 ? " (e.g. 16 ranks x 16)" : "", wall / 3600.0,
-               100.0 * core_seconds / static_cast<double>(workers) / wall);
+    const bench::Schedule full = bench::schedule(experiments, costs, workers, bench::Lengths::Full);
+    const bench::Schedule measured = bench::schedule(experiments, costs, workers, bench::Lengths::Measured);
+    fmt::print("  {:>4} workers{:<22} {:>8.2f} h   {:.0f}% of linear; {:.0f}% with measured lengths\n", workers,
+               workers == cores ? " (this machine)" : workers == 256 ? " (e.g. 16 ranks x 16)" : "",
+               full.wall_seconds / 3600.0, 100.0 * full.efficiency(workers), 100.0 * measured.efficiency(workers));
   }
   fmt::print("machine: {}\n", cpu_model());
   return kExitOk;

@@ -16,11 +16,14 @@ namespace {
 
 using namespace cli_test;
 
-std::string mpirun(int ranks) {
-  std::string cmd = std::string(ESC_MPIEXEC) + " --oversubscribe -np " + std::to_string(ranks);
+// The launcher with its options, before the ranks' programs.
+std::string launcher() {
+  std::string cmd = std::string(ESC_MPIEXEC) + " --oversubscribe";
   if (::geteuid() == 0) cmd += " --allow-run-as-root";
-  return cmd + " " + ESC_BINARY + " ";
+  return cmd;
 }
+
+std::string mpirun(int ranks) { return launcher() + " -np " + std::to_string(ranks) + " " + ESC_BINARY + " "; }
 
 nlohmann::json results_only(const nlohmann::json& summary) {
   nlohmann::json r;
@@ -50,10 +53,8 @@ TEST(Mpi, RanksWithDifferentThreadCountsPoolTheSameRuns) {
   const std::string args = "run " + tiny() + " --seed 5 --runs 4 --generations 3 --out ";
   const Outcome a = esc(args + one.string() + " --threads 1");
   ASSERT_EQ(a.status, 0) << a.output;
-  std::string launcher = std::string(ESC_MPIEXEC) + " --oversubscribe";
-  if (::geteuid() == 0) launcher += " --allow-run-as-root";
   const std::string each = std::string(ESC_BINARY) + " " + args + mixed.string();
-  const Outcome b = shell(launcher + " -np 1 " + each + " --threads 1 : -np 2 " + each + " --threads 3");
+  const Outcome b = shell(launcher() + " -np 1 " + each + " --threads 1 : -np 2 " + each + " --threads 3");
   ASSERT_EQ(b.status, 0) << b.output;
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(mixed / "summary.json")));
 }
