@@ -2,6 +2,7 @@
 // bit-identical to an uninterrupted run; resume refuses finished, foreign, damaged and
 // changed inputs without touching anything; export; the HTML report in headless Chromium.
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -54,6 +55,26 @@ TEST(Results, KilledRunResumesBitIdentical) {
   EXPECT_EQ(e["controllers"]["SC"]["runs"][1]["best_fitness"],
             read_json(killed / "summary.json")["controllers"]["SC"]["runs"][1]["best_fitness"]);
   EXPECT_EQ(e["controllers"]["SC"]["runs"][0]["behavior_usage"].size(), 3U);
+}
+
+TEST(Results, KilledWithSeveralRunsInProgressResumesBitIdentical) {
+  // Two threads: tiny's 20 offspring are fewer than 16 per worker, so both runs of a
+  // controller advance together and are both in progress when the process is killed.
+  const fs::path reference = scratch("reference-1");
+  const fs::path killed = scratch("killed-together");
+  ASSERT_EQ(esc("run " + tiny() + kLonger + "--threads 1 --out " + reference.string()).status, 0);
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 40, 400, "2"));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 1");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_same_summary(reference, killed);
+  for (const char* run : {"CC/run-01", "CC/run-02", "SC/run-01", "SC/run-02"}) {
+    EXPECT_EQ(slurp(reference / (std::string(run) + ".best.json")), slurp(killed / (std::string(run) + ".best.json")))
+        << run;
+    // A header and one line per generation, whichever process wrote it.
+    const std::string csv = slurp(killed / (std::string(run) + ".csv"));
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 101) << run;
+  }
+  EXPECT_EQ(committed_generations(killed), 400);
 }
 
 TEST(Results, ResumeRefusesWhatItCannotContinue) {
