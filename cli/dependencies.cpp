@@ -40,16 +40,6 @@ const dist::MpiSession* job() {
   return mpi != nullptr && mpi->active() ? mpi : nullptr;
 }
 
-template <typename... Args>
-void say(fmt::format_string<Args...> format, Args&&... args) {
-  if (!follower_rank()) fmt::print(format, std::forward<Args>(args)...);
-}
-
-template <typename... Args>
-void complain(fmt::format_string<Args...> format, Args&&... args) {
-  if (!follower_rank()) fmt::print(stderr, format, std::forward<Args>(args)...);
-}
-
 // Rank 0's answer on every rank.
 bool agree(bool rank0) {
   if (job() == nullptr) return rank0;
@@ -150,11 +140,16 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   } else {
     const std::filesystem::path partial = p.dir.string() + fmt::format(".partial-{}", ::getpid());
     say("esc: dependency {}: running into {}\n", name, partial.string());
+    bool ready = true;
     if (!follower_rank()) {
-      std::filesystem::create_directories(cx.cache);
+      std::filesystem::create_directories(cx.cache, ec);
+      if (ec) {
+        complain("esc: error: cannot create the dependency cache {}: {}\n", cx.cache.string(), ec.message());
+        ready = false;
+      }
       std::filesystem::remove_all(partial, ec);
     }
-    if (cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
+    if (!agree(ready) || cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
     bool moved = true;
     if (!follower_rank()) {
       std::ofstream(partial / "fingerprint.txt") << key;

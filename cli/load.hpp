@@ -3,6 +3,9 @@
 // in $ESC_PATH, then in the shipped experiments/ directory; diagnostics rendered to stderr.
 #include <filesystem>
 #include <optional>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "compiler/compiler.hpp"
 
@@ -13,6 +16,17 @@ namespace esc::cli {
 // True on the ranks of an MPI job other than rank 0: they compile and compute like rank 0
 // but print nothing, so a job's output reads like one process's.
 [[nodiscard]] bool follower_rank();
+
+// fmt::print to stdout (say) or stderr (complain), on rank 0 or a lone process only.
+template <typename... Args>
+void say(fmt::format_string<Args...> format, Args&&... args) {
+  if (!follower_rank()) fmt::print(format, std::forward<Args>(args)...);
+}
+
+template <typename... Args>
+void complain(fmt::format_string<Args...> format, Args&&... args) {
+  if (!follower_rank()) fmt::print(stderr, format, std::forward<Args>(args)...);
+}
 
 // Compiles `file`, prints its diagnostics (colored on a terminal) to stderr (rank 0 only),
 // returns the result whether or not it succeeded.

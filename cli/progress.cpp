@@ -32,28 +32,33 @@ ProgressPrinter::ProgressPrinter(const eval::ExperimentSpec& spec, eval::Campaig
       generations_done_(already_done),
       start_(std::chrono::steady_clock::now()) {}
 
+void ProgressPrinter::round_evaluated(const eval::RoundStats& round) {
+  next_->round_evaluated(round);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const auto done_here = done_here_ + static_cast<std::int64_t>(round.runs);
+  const auto left = generations_total_ - generations_done_ - static_cast<std::int64_t>(round.runs);
+  eta_seconds_ = elapsed / static_cast<double>(done_here) * static_cast<double>(std::max<std::int64_t>(left, 0));
+  evaluations_per_second_ = round.seconds > 0.0 ? static_cast<double>(round.evaluations) / round.seconds : 0.0;
+  steps_per_second_ = round.seconds > 0.0 ? static_cast<double>(round.steps) / round.seconds : 0.0;
+}
+
 void ProgressPrinter::generation_done(const control::ControllerSpec& controller, int run,
                                       const eval::GenerationStats& g) {
   next_->generation_done(controller, run, g);
   ++generations_done_;
   ++done_here_;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double eta = elapsed / static_cast<double>(done_here_) *
-                     static_cast<double>(generations_total_ - generations_done_);
-  const double rate = g.seconds > 0.0 ? static_cast<double>(g.evaluations) / g.seconds : 0.0;
-  const double steps_rate = g.seconds > 0.0 ? static_cast<double>(g.steps) / g.seconds : 0.0;
   if (live_) {
     const double percent = 100.0 * static_cast<double>(generations_done_) / static_cast<double>(generations_total_);
     fmt::print("\r\033[K{} {:>3.0f}%  {} run {}/{} gen {}/{}  best {:.2f}  mean {:.2f}  {:.0f} eval/s  ETA {}",
                progress_bar(generations_done_, generations_total_, 24), percent, controller.name, run + 1,
-               spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best, g.mean, rate,
-               format_duration(eta));
+               spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best, g.mean,
+               evaluations_per_second_, format_duration(eta_seconds_));
     line_open_ = true;
   } else {
     fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}/{:<4} best {:>9.2f}  mean {:>9.2f}  {:>6.0f} eval/s  "
                "{:>5.0f}k steps/s  ETA {}\n",
                controller.name, run + 1, spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best,
-               g.mean, rate, steps_rate / 1000.0, format_duration(eta));
+               g.mean, evaluations_per_second_, steps_per_second_ / 1000.0, format_duration(eta_seconds_));
   }
   std::fflush(stdout);
 }

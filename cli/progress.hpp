@@ -2,6 +2,7 @@
 // Progress of a campaign. On a terminal: one live line redrawn in place (a bar, the
 // controller, run and generation, best and mean fitness of the generation, evaluations
 // per second and the estimated time left) and one permanent line per finished run.
+// Rates and time left are those of the last round: every run advancing together.
 // Otherwise (a pipe, a log file): one plain line per generation.
 // Forwards every event to the next listener (the run directory).
 #include <chrono>
@@ -19,6 +20,7 @@ class ProgressPrinter final : public eval::CampaignListener {
   ProgressPrinter(const eval::ExperimentSpec& spec, eval::CampaignListener& next, bool live,
                   std::int64_t already_done = 0);
 
+  void round_evaluated(const eval::RoundStats& round) override;
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
   void checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) override;
@@ -38,6 +40,11 @@ class ProgressPrinter final : public eval::CampaignListener {
   std::int64_t generations_done_;
   std::int64_t done_here_ = 0;
   std::chrono::steady_clock::time_point start_;
+  // Of the last round (all runs advancing together): evaluations and control steps per
+  // second, and the time left once its generations are done.
+  double evaluations_per_second_ = 0.0;
+  double steps_per_second_ = 0.0;
+  double eta_seconds_ = 0.0;
 };
 
 [[nodiscard]] std::string format_duration(double seconds);

@@ -137,7 +137,7 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
   for (const std::string& kv : o.settings) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {
-      fmt::print(stderr, "esc: error: --set expects KEY=VALUE, got `{}`\n", kv);
+      complain("esc: error: --set expects KEY=VALUE, got `{}`\n", kv);
       return false;
     }
     settings.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
@@ -146,7 +146,7 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
   for (const auto& [key, value] : settings) {
     const std::string error = compiler::apply_setting(spec, key, value);
     if (!error.empty()) {
-      fmt::print(stderr, "esc: error: {}={}: {}\n", key, value, error);
+      complain("esc: error: {}={}: {}\n", key, value, error);
       ok = false;
     }
   }
@@ -158,7 +158,7 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
 eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
                                       const std::string& name) {
   if (compiled.experiments.empty()) {
-    fmt::print(stderr, "esc: error: {} declares no experiment to run\n", file.string());
+    complain("esc: error: {} declares no experiment to run\n", file.string());
     return nullptr;
   }
   if (name.empty()) return &compiled.experiments.front();
@@ -167,7 +167,7 @@ eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const s
     if (e.name == name) return &e;
     names += (names.empty() ? "`" : ", `") + e.name + "`";
   }
-  fmt::print(stderr, "esc: error: {} has no experiment `{}`; it declares {}\n", file.string(), name, names);
+  complain("esc: error: {} has no experiment `{}`; it declares {}\n", file.string(), name, names);
   return nullptr;
 }
 
@@ -203,7 +203,7 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   } catch (const std::exception& e) {
     // Every rank learns of it and ends normally: no MPI_Abort racing their MPI_Finalize
     // (with Open MPI that can leave mpirun waiting forever).
-    fmt::print(stderr, "esc: error: {}\n", e.what());
+    complain("esc: error: {}\n", e.what());
     if (job) (void)mpi->all_ok(false);
     return kExitBadInput;
   }
@@ -237,7 +237,7 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
 
 int resume_command(const RunOptions& o) {
   if (o.runs || o.generations || o.seed || !o.settings.empty() || !o.experiment.empty() || !o.out.empty()) {
-    fmt::print(stderr, "esc: error: --resume continues a run with its own settings: --runs, --generations, --seed, "
+    complain("esc: error: --resume continues a run with its own settings: --runs, --generations, --seed, "
                        "--set, --experiment and --out cannot be given with it\n");
     return kExitUsage;
   }
@@ -245,7 +245,7 @@ int resume_command(const RunOptions& o) {
   const store::StoredExperiment stored = db.load_single();
   const std::filesystem::path script = o.file.empty() ? stored.script : o.file;
   if (stored.finished()) {
-    fmt::print("esc: {} is complete ({} x {} runs x {} generations); nothing to resume\n", o.resume.string(),
+    say("esc: {} is complete ({} x {} runs x {} generations); nothing to resume\n", o.resume.string(),
                stored.controllers.size(), stored.runs, stored.generations);
     return kExitOk;
   }
@@ -289,12 +289,12 @@ int resume_command(const RunOptions& o) {
     for (const auto& [key, value] : spec->resolved_settings) {
       const auto it = stored.settings.find(key);
       if (it == stored.settings.end() || it->second != value) {
-        fmt::print(stderr, "esc: error: setting `{}` is now `{}` but the run in {} used `{}`; cannot resume\n", key,
+        complain("esc: error: setting `{}` is now `{}` but the run in {} used `{}`; cannot resume\n", key,
                    value, o.resume.string(), it == stored.settings.end() ? "nothing" : it->second);
         return kExitBadInput;
       }
     }
-    fmt::print(stderr, "esc: error: the settings differ from the stored ones; cannot resume\n");
+    complain("esc: error: the settings differ from the stored ones; cannot resume\n");
     return kExitBadInput;
   }
   // Dependencies last: a script that cannot resume should not first run them.
@@ -312,9 +312,8 @@ int resume_command(const RunOptions& o) {
   std::int64_t done = 0;
   for (const auto& f : point.finished) done += static_cast<std::int64_t>(f.result.generations.size());
   for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
-  if (!follower_rank())
-    fmt::print("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
-               spec->total_generations());
+  say("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
+      spec->total_generations());
   return run_everywhere(
       *spec, {o.threads, &point, true},
       [&] { return store::RunDirectory::resume(o.resume, std::move(db), stored); }, done, o.resume);
@@ -325,7 +324,7 @@ int resume_command(const RunOptions& o) {
 int run_command(const RunOptions& o) {
   if (!o.resume.empty()) return resume_command(o);
   if (o.file.empty()) {
-    fmt::print(stderr, "esc: error: run needs a script FILE (or --resume DIR)\n");
+    complain("esc: error: run needs a script FILE (or --resume DIR)\n");
     return kExitUsage;
   }
   compiler::CompileResult compiled = load_script(o.file);

@@ -30,8 +30,7 @@ struct Pool {
 };
 
 // One generation of every active run: breeds them, evaluates the pooled individuals on
-// every worker and rank, and hands each run its fitness and statistics. A run's share of
-// the round's wall time is its share of the control steps.
+// every worker and rank, and hands each run its fitness and statistics.
 void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, CampaignListener& listener) {
   const auto start = Clock::now();
   Pool pool{{0}};
@@ -54,13 +53,12 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
     steps[pool.job_of(i)] += static_cast<std::int64_t>(results[i * kWidth + 1]);
     all_steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
   }
+  listener.round_evaluated({active.size(), static_cast<std::int64_t>(pool.size()), all_steps, seconds});
   for (std::size_t j = 0; j < active.size(); ++j) {
     RunJob& job = *active[j];
     fitness.clear();
     for (std::size_t i = pool.first[j]; i < pool.first[j + 1]; ++i) fitness.push_back(results[i * kWidth]);
-    const double share = all_steps > 0 ? static_cast<double>(steps[j]) / static_cast<double>(all_steps)
-                                       : static_cast<double>(fitness.size()) / static_cast<double>(pool.size());
-    job.evaluated(fitness, detail::summarise(job.generation(), fitness, steps[j], seconds * share));
+    job.evaluated(fitness, detail::summarise(job.generation(), fitness, steps[j], seconds));
     listener.generation_done(job.controller(), job.state().run, job.state().generations.back());
     listener.checkpoint(job.controller(), job.state());
   }

@@ -22,7 +22,18 @@ struct GenerationStats {
   double sd = 0.0;
   std::int64_t evaluations = 0;
   std::int64_t steps = 0;      // control steps simulated in this generation
-  double seconds = 0.0;        // wall time of the generation (not part of the result proper)
+  // Wall time of the round that evaluated this generation, shared with the runs that
+  // advanced with it (not part of the result proper).
+  double seconds = 0.0;
+};
+
+// One round of the campaign: a generation of every run advancing together, evaluated as
+// one pool.
+struct RoundStats {
+  std::size_t runs = 0;
+  std::int64_t evaluations = 0;
+  std::int64_t steps = 0;
+  double seconds = 0.0;        // wall time
 };
 
 struct RunResult {
@@ -85,6 +96,8 @@ struct CampaignResult {
 class CampaignListener {
  public:
   virtual ~CampaignListener() = default;
+  // Once a round's pool is evaluated, before the generation_done of each of its runs.
+  virtual void round_evaluated(const RoundStats& /*round*/) {}
   virtual void generation_done(const control::ControllerSpec& /*controller*/, int /*run*/,
                                const GenerationStats& /*stats*/) {}
   // After generation_done, with the whole state of the run: what a store commits to be

@@ -105,14 +105,14 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const
   write_atomically(dir_ / "settings.json", doc.dump(2) + "\n");
   partial_.experiment = spec.name;
   partial_.seed = spec.seed;
-  for (const control::ControllerSpec& c : spec.controllers) genome_sizes_[c.name] = spec.genome_size_of(c);
+  for (const control::ControllerSpec& c : spec.controllers) controllers_.emplace_back(c.name, spec.genome_size_of(c));
   write_summary();
 }
 
 RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored) {
   RunDirectory rd(std::move(dir), std::move(db));
   rd.partial_ = stored.result();
-  for (const StoredController& c : stored.controllers) rd.genome_sizes_[c.name] = c.genome_size;
+  for (const StoredController& c : stored.controllers) rd.controllers_.emplace_back(c.name, c.genome_size);
   for (const StoredController& c : stored.controllers) {
     if (c.finished.empty() && c.in_progress.empty()) continue;
     fs::create_directories(rd.dir_ / c.name);
@@ -175,13 +175,19 @@ void RunDirectory::run_done(const control::ControllerSpec& controller, const eva
   db_.commit_run(controller.name, run);
   fs::create_directories(dir_ / controller.name);
   write_best(controller.name, controller.architecture(), run);
-  // Runs that advance together finish in any order: each goes to its controller, in
-  // run order.
+  // Runs that advance together finish in any order: each goes to its controller, in run
+  // order, and controllers stay in the experiment's order.
+  const auto rank = [&](const std::string& name) {
+    return std::find_if(controllers_.begin(), controllers_.end(), [&](const auto& c) { return c.first == name; }) -
+           controllers_.begin();
+  };
   auto& cs = partial_.controllers;
-  auto c = std::find_if(cs.begin(), cs.end(), [&](const eval::ControllerResult& r) { return r.name == controller.name; });
-  if (c == cs.end())
-    c = cs.insert(cs.end(), {controller.name, controller.architecture(), genome_sizes_[controller.name], {},
-                             controller.choice_names()});
+  auto c = std::find_if(cs.begin(), cs.end(),
+                        [&](const eval::ControllerResult& r) { return rank(r.name) >= rank(controller.name); });
+  if (c == cs.end() || c->name != controller.name) {
+    const auto size = controllers_.at(static_cast<std::size_t>(rank(controller.name))).second;
+    c = cs.insert(c, {controller.name, controller.architecture(), size, {}, controller.choice_names()});
+  }
   const auto at = std::find_if(c->runs.begin(), c->runs.end(), [&](const eval::RunResult& r) { return r.run > run.run; });
   c->runs.insert(at, run);
   write_summary();

@@ -14,9 +14,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "runtime/eval/campaign.hpp"
 #include "runtime/store/results_db.hpp"
@@ -56,7 +56,9 @@ class RunDirectory final : public eval::CampaignListener {
   std::filesystem::path dir_;
   ResultsDb db_;
   eval::CampaignResult partial_;      // runs finished so far, for summary.json
-  std::map<std::string, std::size_t> genome_sizes_;   // per controller, as tables show it
+  // Every compared controller in the experiment's order, with its genome size as tables
+  // show it: summary.json lists controllers in this order whichever finishes a run first.
+  std::vector<std::pair<std::string, std::size_t>> controllers_;
   std::ofstream csv_;                 // the run being written
   std::string csv_key_;
 };

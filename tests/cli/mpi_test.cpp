@@ -104,6 +104,17 @@ TEST(Mpi, DependenciesRunUnderThreeRanksAsInOneProcess) {
   EXPECT_EQ(results_only(read_json(dir / "one" / "summary.json")), results_only(read_json(dir / "again" / "summary.json")));
 }
 
+TEST(Mpi, AnUnwritableDependencyCacheStopsEveryRankCleanly) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
+  const Outcome o = shell(mpirun(3) + "run " + script + " --experiment supervised --threads 1 --cache /proc/esc-cache --out " +
+                          scratch("mpi-bad-cache").string());
+  EXPECT_NE(o.status, 0) << o.output;
+  const auto first = o.output.find("esc: error: cannot create the dependency cache");
+  ASSERT_NE(first, std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("esc: error: cannot create the dependency cache", first + 1), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("MPI_ABORT"), std::string::npos) << o.output;
+}
+
 TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   const fs::path out = scratch("mpi-exists");
   fs::create_directories(out);

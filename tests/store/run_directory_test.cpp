@@ -60,6 +60,32 @@ TEST(RunDirectory, WritesSettingsSourcesCsvGenomesAndSummary) {
   fs::remove_all(dir);
 }
 
+TEST(RunDirectory, RunsFinishingInAnyOrderKeepTheExperimentsOrder) {
+  // Runs advancing together finish out of order: summary.json still lists controllers as
+  // the experiment compares them, and each controller's runs by index.
+  const fs::path dir = fresh_dir("order");
+  eval::ExperimentSpec e = spec();
+  e.controllers.push_back(e.controllers[0]);
+  e.controllers[1].name = "SC";
+  RunDirectory rd(dir, e, {});
+  const eval::GenerationStats g{0, 1.0, 1.0, 0.0, 10, 100, 0.1};
+  const auto run = [&](int index) { return eval::RunResult{index, 7, {g}, 1.0 + index, {0.5}, 0, 0, {}}; };
+  rd.run_done(e.controllers[1], run(0));
+  rd.run_done(e.controllers[0], run(1));
+  rd.run_done(e.controllers[0], run(0));
+  rd.run_done(e.controllers[1], run(1));
+  // ordered_json: the file's key order is the order written.
+  const auto summary = nlohmann::ordered_json::parse(slurp(dir / "summary.json"));
+  std::vector<std::string> names;
+  for (const auto& [name, c] : summary["controllers"].items()) names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"CC", "SC"}));
+  for (const char* c : {"CC", "SC"}) {
+    EXPECT_EQ(summary["controllers"][c]["runs"][0]["best_fitness"], 1.0) << c;
+    EXPECT_EQ(summary["controllers"][c]["runs"][1]["best_fitness"], 2.0) << c;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(RunDirectory, NeverOverwritesExistingResults) {
   const fs::path dir = fresh_dir("exists");
   fs::create_directories(dir);
