@@ -1,11 +1,16 @@
 #include "cli/dependencies.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
 #include <bit>
+#include <charconv>
 #include <fstream>
 #include <memory>
 #include <variant>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -100,12 +105,96 @@ std::optional<store::StoredExperiment> load_finished(const std::filesystem::path
 }
 
 
+// This machine's name as it appears in the cache's `.partial-HOST-PID` directories.
+std::string host_name() {
+  std::array<char, 256> buffer{};
+  if (::gethostname(buffer.data(), buffer.size() - 1) != 0) return "localhost";
+  std::string host(buffer.data());
+  for (char& c : host)
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '-' && c != '.') c = '_';
+  return host;
+}
+
+std::filesystem::path partial_of(const std::filesystem::path& entry) {
+  return entry.string() + fmt::format(".partial-{}-{}", host_name(), ::getpid());
+}
+
+// Whether process `pid` of this machine has ended: it does not exist, or it is a zombie
+// (killed, not yet reaped by its parent).
+bool process_gone(pid_t pid) {
+  if (::kill(pid, 0) != 0) return errno == ESRCH;
+  std::ifstream stat(fmt::format("/proc/{}/stat", pid));
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto paren = line.rfind(')');
+  return paren != std::string::npos && paren + 2 < line.size() && (line[paren + 2] == 'Z' || line[paren + 2] == 'X');
+}
+
+// A run that a process of this machine, now gone, left unfinished for cache entry `entry`
+// (`ENTRY.partial-HOST-PID` holding a database). Other such directories of gone processes
+// (killed before their database was made) are removed; those of live processes and other
+// machines are left alone.
+std::optional<std::filesystem::path> abandoned_partial(const std::filesystem::path& entry) {
+  const std::string prefix = entry.filename().string() + ".partial-" + host_name() + "-";
+  std::optional<std::filesystem::path> found;
+  std::error_code ec;
+  std::vector<std::filesystem::path> gone;
+  for (auto it = std::filesystem::directory_iterator(entry.parent_path(), ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string digits = name.substr(prefix.size());
+    pid_t pid = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), pid);
+    if (error != std::errc() || end != digits.data() + digits.size() || pid <= 0) continue;
+    if (!process_gone(pid)) continue;
+    gone.push_back(it->path());
+  }
+  for (const std::filesystem::path& dir : gone) {
+    if (!found && std::filesystem::exists(dir / "esc.db", ec))
+      found = dir;
+    else
+      std::filesystem::remove_all(dir, ec);
+  }
+  return found;
+}
+
 bool finished_run(const std::filesystem::path& dir) {
   try {
     return store::ResultsDb::open(dir, true).load_single().finished();
   } catch (const store::StoreError&) {
     return false;
   }
+}
+
+std::optional<Prepared> load_into(Prepared& p) {
+  auto stored = load_finished(p.dir);
+  if (!stored) return std::nullopt;
+  p.stored = std::move(*stored);
+  return std::move(p);
+}
+
+// Moves a finished run from `partial` into its cache entry and loads what dependents read
+// of it.
+std::optional<Prepared> finish_dependency(const std::string& name, const std::string& key,
+                                          const std::filesystem::path& partial, Prepared& p) {
+  std::error_code ec;
+  bool moved = true;
+  if (!follower_rank()) {
+    std::ofstream(partial / "fingerprint.txt") << key;
+    std::filesystem::rename(partial, p.dir, ec);
+    if (ec) {
+      // Another process finished the same run first: its result is the same; keep it.
+      moved = finished_run(p.dir);
+      if (!moved)
+        complain("esc: error: cannot move {} to {}: {}\n", partial.string(), p.dir.string(), ec.message());
+      else
+        std::filesystem::remove_all(partial, ec);
+    }
+  }
+  if (!agree(moved)) return std::nullopt;
+  say("esc: dependency {}: finished in {}\n", name, p.dir.string());
+  return load_into(p);
 }
 
 // Runs experiment `name` into the cache, or reuses a finished run of the same fingerprint.
@@ -123,8 +212,9 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
   // A cache entry appears only once its run has finished: the run goes into a directory of
-  // its own (`.partial-PID`) and is renamed into place, so concurrent processes sharing a
-  // cache never see, reuse or delete each other's unfinished runs.
+  // its own (`.partial-HOST-PID`) and is renamed into place, so concurrent processes sharing
+  // a cache never see, reuse or delete each other's unfinished runs; one whose process is
+  // gone is continued.
   // Rank 0 decides whether to reuse; the others follow.
   std::error_code ec;
   bool reuse = false;
@@ -138,7 +228,18 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   if (agree(reuse)) {
     say("esc: dependency {}: reused {}\n", name, p.dir.string());
   } else {
-    const std::filesystem::path partial = p.dir.string() + fmt::format(".partial-{}", ::getpid());
+    const std::filesystem::path partial = partial_of(p.dir);
+    // Under MPI the other ranks would have to read the abandoned run: it starts again.
+    if (job() == nullptr) {
+      if (const auto abandoned = abandoned_partial(p.dir)) {
+        std::filesystem::rename(*abandoned, partial, ec);
+        if (!ec) {
+          say("esc: dependency {}: continuing the run a stopped process left in {}\n", name, abandoned->string());
+          if (cx.resume_into(p.spec, partial) == kExitOk) return finish_dependency(name, key, partial, p);
+          say("esc: dependency {}: running it again\n", name);
+        }
+      }
+    }
     say("esc: dependency {}: running into {}\n", name, partial.string());
     bool ready = true;
     if (!follower_rank()) {
@@ -150,26 +251,9 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
       std::filesystem::remove_all(partial, ec);
     }
     if (!agree(ready) || cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
-    bool moved = true;
-    if (!follower_rank()) {
-      std::ofstream(partial / "fingerprint.txt") << key;
-      std::filesystem::rename(partial, p.dir, ec);
-      if (ec) {
-        // Another process finished the same run first: its result is the same; keep it.
-        moved = finished_run(p.dir);
-        if (!moved)
-          complain("esc: error: cannot move {} to {}: {}\n", partial.string(), p.dir.string(), ec.message());
-        else
-          std::filesystem::remove_all(partial, ec);
-      }
-    }
-    if (!agree(moved)) return std::nullopt;
-    say("esc: dependency {}: finished in {}\n", name, p.dir.string());
+    return finish_dependency(name, key, partial, p);
   }
-  auto stored = load_finished(p.dir);
-  if (!stored) return std::nullopt;
-  p.stored = std::move(*stored);
-  return p;
+  return load_into(p);
 }
 
 const store::StoredController* stored_controller(const Prepared& p, const std::string& name) {

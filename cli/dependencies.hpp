@@ -6,7 +6,8 @@
 // is named by a hash of the experiment's fingerprint (runtime/eval/fingerprint.hpp) and
 // the esc version, so a change to what the experiment reads (its arena, fitness,
 // controllers, behaviors, settings, or the genomes of its own dependencies) runs it again,
-// and nothing else does.
+// and nothing else does. A run killed halfway is continued by the next process on the same
+// machine that needs it (not under MPI, where it starts again).
 #include <filesystem>
 #include <functional>
 
@@ -22,6 +23,9 @@ struct DependencyContext {
   std::function<bool(eval::ExperimentSpec&)> apply_overrides;
   // Runs an experiment into a new directory; returns the process exit status.
   std::function<int(const eval::ExperimentSpec&, const std::filesystem::path&)> run_into;
+  // Continues the run of an experiment in a directory a killed process left; returns the
+  // process exit status (not kExitOk if the directory cannot be continued).
+  std::function<int(const eval::ExperimentSpec&, const std::filesystem::path&)> resume_into;
   std::filesystem::path cache;
   std::string version;   // part of every cache key
 };

@@ -217,6 +217,14 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   return kExitOk;
 }
 
+// Generations finished before a resume: the progress starts from them.
+std::int64_t generations_done(const eval::ResumePoint& point) {
+  std::int64_t done = 0;
+  for (const auto& f : point.finished) done += static_cast<std::int64_t>(f.result.generations.size());
+  for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
+  return done;
+}
+
 // How dependencies run: with the same command-line overrides and thread count, each into
 // its own directory under `cache`.
 DependencyContext dependency_context(const compiler::CompileResult& compiled, const RunOptions& o,
@@ -231,6 +239,19 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
         return run_everywhere(
             d, {o.threads, nullptr, true}, [&] { return store::RunDirectory(dir, d, sources_of(compiled), launch); }, 0,
             {});   // it is renamed when finished: prepare_dependencies says where it went
+      },
+      [&o](const eval::ExperimentSpec& d, const std::filesystem::path& dir) {
+        try {
+          store::ResultsDb db = store::ResultsDb::open(dir);
+          const store::StoredExperiment stored = db.load_single();
+          const eval::ResumePoint point = stored.resume_point();
+          return run_everywhere(
+              d, {o.threads, &point, true}, [&] { return store::RunDirectory::resume(dir, std::move(db), stored); },
+              generations_done(point), {});
+        } catch (const store::StoreError& e) {
+          complain("esc: {}: cannot continue: {}\n", dir.string(), e.what());
+          return kExitBadInput;
+        }
       },
       cache, ESC_VERSION_STRING};
 }
@@ -309,9 +330,7 @@ int resume_command(const RunOptions& o) {
   }
 
   const eval::ResumePoint point = stored.resume_point();
-  std::int64_t done = 0;
-  for (const auto& f : point.finished) done += static_cast<std::int64_t>(f.result.generations.size());
-  for (const auto& p : point.in_progress) done += static_cast<std::int64_t>(p.state.generations.size());
+  const std::int64_t done = generations_done(point);
   say("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
       spec->total_generations());
   return run_everywhere(

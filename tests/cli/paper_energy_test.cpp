@@ -2,13 +2,16 @@
 // the dependency cache, and experiments that evaluate or start from stored controllers.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <regex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "esc_process.hpp"
+#include "results_support.hpp"
 
 namespace {
 
@@ -128,6 +131,48 @@ TEST(DependencyCache, TwoProcessesMayShareACache) {
   }
   EXPECT_EQ(entries, 1);
   EXPECT_EQ(read_json(dir / "a" / "summary.json")["controllers"], read_json(dir / "b" / "summary.json")["controllers"]);
+}
+
+TEST(DependencyCache, ARunKilledInADependencyContinuesIt) {
+  const fs::path dir = scratch("killed-dependency");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
+  const std::vector<std::string> args = {"run",           script, "--experiment", "supervised", "--generations",
+                                         "300",           "--set", "epochs=10",   "--threads",  "1"};
+  std::string line;
+  for (const std::string& a : args) line += a + " ";
+  const Outcome reference = esc(line + "--cache " + (dir / "ref").string() + " --out " + (dir / "ref-out").string());
+  ASSERT_EQ(reference.status, 0) << reference.output;
+
+  // Killed while `basic` (2 runs x 300 generations) runs into its .partial directory.
+  std::vector<std::string> killed = args;
+  killed.insert(killed.end(), {"--cache", (dir / "cache").string(), "--out", (dir / "killed").string()});
+  const pid_t child = spawn_esc(killed);
+  ASSERT_GE(child, 0);
+  fs::path partial;
+  for (int i = 0; i < 3000 && partial.empty(); ++i) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir / "cache", ec))
+      if (e.path().filename().string().find(".partial-") != std::string::npos) partial = e.path();
+    if (partial.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_FALSE(partial.empty());
+  const Killed k = kill_when_committed(child, partial, 40);
+  ASSERT_TRUE(k.still_running) << "the dependency finished before it could be killed";
+  ASSERT_LT(committed_generations(partial), 600);
+
+  const Outcome again =
+      esc(line + "--cache " + (dir / "cache").string() + " --out " + (dir / "again").string());
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("continuing the run a stopped process left in " + partial.string()), std::string::npos)
+      << again.output;
+  fs::path ref_basic, basic;
+  for (const auto& e : fs::directory_iterator(dir / "ref")) ref_basic = e.path();
+  for (const auto& e : fs::directory_iterator(dir / "cache")) {
+    EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos) << e.path();
+    basic = e.path();
+  }
+  expect_same_summary(ref_basic, basic);
+  expect_same_summary(dir / "ref-out", dir / "again");
 }
 
 }  // namespace
