@@ -45,11 +45,21 @@ void print_usage(const eval::CampaignResult& result) {
     if (total == 0) continue;
     if (!header) fmt::print("\nbehavior usage (share of steps in each run's best evaluation)\n");
     header = true;
-    std::string line;
-    for (std::size_t i = 0; i < steps.size(); ++i)
-      line += fmt::format("{}{} {:.0f}%", i == 0 ? "" : ", ", c.choices[i],
-                          100.0 * static_cast<double>(steps[i]) / static_cast<double>(total));
-    fmt::print("{:<12} {}\n", c.name, line);
+    // Wrapped (sensitivity.esc's supervisors choose among 24 behaviors).
+    constexpr std::size_t kWidth = 100;
+    std::string line = fmt::format("{:<12} ", c.name);
+    const std::size_t indent = line.size();
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const std::string entry = fmt::format("{} {:.0f}%{}", c.choices[i],
+                                            100.0 * static_cast<double>(steps[i]) / static_cast<double>(total),
+                                            i + 1 < steps.size() ? "," : "");
+      if (line.size() > indent && line.size() + 1 + entry.size() > kWidth) {
+        fmt::print("{}\n", line);
+        line = std::string(indent, ' ');
+      }
+      line += (line.size() > indent ? " " : "") + entry;
+    }
+    fmt::print("{}\n", line);
   }
 }
 
