@@ -1,23 +1,18 @@
 #include "cli/dependencies.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cctype>
-#include <cerrno>
 #include <bit>
-#include <charconv>
 #include <fstream>
 #include <memory>
+#include <system_error>
 #include <variant>
-
-#include <signal.h>
-#include <unistd.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
+#include "cli/partial_run.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
 #include "runtime/store/results_db.hpp"
@@ -105,60 +100,6 @@ std::optional<store::StoredExperiment> load_finished(const std::filesystem::path
 }
 
 
-// This machine's name as it appears in the cache's `.partial-HOST-PID` directories.
-std::string host_name() {
-  std::array<char, 256> buffer{};
-  if (::gethostname(buffer.data(), buffer.size() - 1) != 0) return "localhost";
-  std::string host(buffer.data());
-  for (char& c : host)
-    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '-' && c != '.') c = '_';
-  return host;
-}
-
-std::filesystem::path partial_of(const std::filesystem::path& entry) {
-  return entry.string() + fmt::format(".partial-{}-{}", host_name(), ::getpid());
-}
-
-// Whether process `pid` of this machine has ended: it does not exist, or it is a zombie
-// (killed, not yet reaped by its parent).
-bool process_gone(pid_t pid) {
-  if (::kill(pid, 0) != 0) return errno == ESRCH;
-  std::ifstream stat(fmt::format("/proc/{}/stat", pid));
-  std::string line;
-  if (!std::getline(stat, line)) return false;
-  const auto paren = line.rfind(')');
-  return paren != std::string::npos && paren + 2 < line.size() && (line[paren + 2] == 'Z' || line[paren + 2] == 'X');
-}
-
-// A run that a process of this machine, now gone, left unfinished for cache entry `entry`
-// (`ENTRY.partial-HOST-PID` holding a database). Other such directories of gone processes
-// (killed before their database was made) are removed; those of live processes and other
-// machines are left alone.
-std::optional<std::filesystem::path> abandoned_partial(const std::filesystem::path& entry) {
-  const std::string prefix = entry.filename().string() + ".partial-" + host_name() + "-";
-  std::optional<std::filesystem::path> found;
-  std::error_code ec;
-  std::vector<std::filesystem::path> gone;
-  for (auto it = std::filesystem::directory_iterator(entry.parent_path(), ec);
-       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.rfind(prefix, 0) != 0) continue;
-    const std::string digits = name.substr(prefix.size());
-    pid_t pid = 0;
-    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), pid);
-    if (error != std::errc() || end != digits.data() + digits.size() || pid <= 0) continue;
-    if (!process_gone(pid)) continue;
-    gone.push_back(it->path());
-  }
-  for (const std::filesystem::path& dir : gone) {
-    if (!found && std::filesystem::exists(dir / "esc.db", ec))
-      found = dir;
-    else
-      std::filesystem::remove_all(dir, ec);
-  }
-  return found;
-}
-
 bool finished_run(const std::filesystem::path& dir) {
   try {
     return store::ResultsDb::open(dir, true).load_single().finished();
@@ -212,8 +153,8 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
   // A cache entry appears only once its run has finished: the run goes into a directory of
-  // its own (`.partial-HOST-PID`) and is renamed into place, so concurrent processes sharing
-  // a cache never see, reuse or delete each other's unfinished runs; one whose process is
+  // its own (partial_run.hpp) and is renamed into place, so concurrent processes sharing a
+  // cache never see, reuse or delete each other's unfinished runs; one whose process is
   // gone is continued.
   // Rank 0 decides whether to reuse; the others follow.
   std::error_code ec;
@@ -227,33 +168,32 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   }
   if (agree(reuse)) {
     say("esc: dependency {}: reused {}\n", name, p.dir.string());
-  } else {
-    const std::filesystem::path partial = partial_of(p.dir);
-    // Under MPI the other ranks would have to read the abandoned run: it starts again.
-    if (job() == nullptr) {
-      if (const auto abandoned = abandoned_partial(p.dir)) {
-        std::filesystem::rename(*abandoned, partial, ec);
-        if (!ec) {
-          say("esc: dependency {}: continuing the run a stopped process left in {}\n", name, abandoned->string());
-          if (cx.resume_into(p.spec, partial) == kExitOk) return finish_dependency(name, key, partial, p);
-          say("esc: dependency {}: running it again\n", name);
-        }
-      }
-    }
-    say("esc: dependency {}: running into {}\n", name, partial.string());
-    bool ready = true;
-    if (!follower_rank()) {
-      std::filesystem::create_directories(cx.cache, ec);
-      if (ec) {
-        complain("esc: error: cannot create the dependency cache {}: {}\n", cx.cache.string(), ec.message());
-        ready = false;
-      }
-      std::filesystem::remove_all(partial, ec);
-    }
-    if (!agree(ready) || cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
-    return finish_dependency(name, key, partial, p);
+    return load_into(p);
   }
-  return load_into(p);
+  // Rank 0 names the run's directory and holds its lock; the other ranks only follow.
+  std::optional<PartialRun> mine;
+  if (!follower_rank()) {
+    std::filesystem::create_directories(cx.cache, ec);
+    try {
+      mine.emplace(PartialRun::create(p.dir));
+    } catch (const std::system_error& e) {
+      complain("esc: error: cannot create the dependency cache {}: {}\n", cx.cache.string(), e.what());
+    }
+  }
+  if (!agree(mine.has_value())) return std::nullopt;
+  const std::filesystem::path partial = mine ? mine->dir() : std::filesystem::path();
+  // Under MPI the other ranks would have to read the abandoned run: it starts again.
+  if (job() == nullptr) {
+    if (const auto abandoned = take_over_abandoned(p.dir, *mine)) {
+      say("esc: dependency {}: continuing the run a stopped process left in {}\n", name, abandoned->string());
+      if (cx.resume_into(p.spec, partial) == kExitOk) return finish_dependency(name, key, partial, p);
+      say("esc: dependency {}: running it again\n", name);
+    }
+  }
+  say("esc: dependency {}: running into {}\n", name, partial.string());
+  if (!follower_rank()) std::filesystem::remove_all(partial, ec);
+  if (cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
+  return finish_dependency(name, key, partial, p);
 }
 
 const store::StoredController* stored_controller(const Prepared& p, const std::string& name) {

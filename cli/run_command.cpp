@@ -258,7 +258,8 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
           return run_everywhere(
               d, {o.threads, &point, true}, [&] { return store::RunDirectory::resume(dir, std::move(db), stored); },
               generations_done(point), {});
-        } catch (const store::StoreError& e) {
+        } catch (const std::exception& e) {
+          // Whatever stops it (a damaged database, a full disk), the caller runs it afresh.
           complain("esc: {}: cannot continue: {}\n", dir.string(), e.what());
           return kExitBadInput;
         }
@@ -283,10 +284,9 @@ int resume_command(const RunOptions& o) {
 
   std::error_code ec;
   if (o.file.empty() && !std::filesystem::exists(script, ec)) {
-    fmt::print(stderr,
-               "esc: error: the script the run in {} started from, {}, is gone; give its new place: esc run FILE "
-               "--resume {} (a copy of every file it read is in {}/sources)\n",
-               o.resume.string(), script.string(), o.resume.string(), o.resume.string());
+    complain("esc: error: the script the run in {} started from, {}, is gone; give its new place: esc run FILE "
+             "--resume {} (a copy of every file it read is in {}/sources)\n",
+             o.resume.string(), script.string(), o.resume.string(), o.resume.string());
     return kExitBadInput;
   }
   compiler::CompileResult compiled = load_script(script);
@@ -310,10 +310,9 @@ int resume_command(const RunOptions& o) {
   const std::vector<store::SourceFile> sources = sources_of(compiled);
   const std::string hash = store::campaign_hash(spec->name, sources);
   if (hash != stored.content_hash) {
-    fmt::print(stderr,
-               "esc: error: {} has changed since the run in {} started (content hash {}, stored {}); a run resumes "
-               "only with the script it started with (a copy is in {}/sources)\n",
-               script.string(), o.resume.string(), hash, stored.content_hash, o.resume.string());
+    complain("esc: error: {} has changed since the run in {} started (content hash {}, stored {}); a run resumes "
+             "only with the script it started with (a copy is in {}/sources)\n",
+             script.string(), o.resume.string(), hash, stored.content_hash, o.resume.string());
     return kExitBadInput;
   }
   if (spec->resolved_settings != stored.settings) {
@@ -321,7 +320,7 @@ int resume_command(const RunOptions& o) {
       const auto it = stored.settings.find(key);
       if (it == stored.settings.end() || it->second != value) {
         complain("esc: error: setting `{}` is now `{}` but the run in {} used `{}`; cannot resume\n", key,
-                   value, o.resume.string(), it == stored.settings.end() ? "nothing" : it->second);
+                 value, o.resume.string(), it == stored.settings.end() ? "nothing" : it->second);
         return kExitBadInput;
       }
     }
@@ -332,10 +331,9 @@ int resume_command(const RunOptions& o) {
   const std::filesystem::path cache = !o.cache.empty() ? o.cache : !replay.cache.empty() ? replay.cache : o.resume / "deps";
   if (!prepare_dependencies(*spec, dependency_context(compiled, replay, cache, script))) return kExitBadInput;
   if (stored.overrides.contains("inputs") && stored.overrides["inputs"] != inputs_hash(*spec)) {
-    fmt::print(stderr,
-               "esc: error: the evolved behaviors or start genomes found in {} differ from those the run in {} "
-               "started with; cannot resume (give --cache the directory the run used)\n",
-               cache.string(), o.resume.string());
+    complain("esc: error: the evolved behaviors or start genomes found in {} differ from those the run in {} "
+             "started with; cannot resume (give --cache the directory the run used)\n",
+             cache.string(), o.resume.string());
     return kExitBadInput;
   }
 

@@ -152,7 +152,7 @@ TEST(DependencyCache, ARunKilledInADependencyContinuesIt) {
   for (int i = 0; i < 3000 && partial.empty(); ++i) {
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(dir / "cache", ec))
-      if (e.path().filename().string().find(".partial-") != std::string::npos) partial = e.path();
+      if (e.is_directory() && e.path().filename().string().find(".partial-") != std::string::npos) partial = e.path();
     if (partial.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   ASSERT_FALSE(partial.empty());
