@@ -23,6 +23,7 @@ struct RunOptions {
   std::optional<int> generations;
   std::optional<std::uint64_t> seed;
   int threads = 0;                           // 0: all cores
+  int runs_at_once = 0;                      // 0: as many as keep every worker busy
   std::filesystem::path out;                 // empty: runs/<experiment>-<timestamp>
   std::vector<std::string> settings;         // KEY=VALUE
   std::filesystem::path cache;               // empty: <out>/deps (dependency experiments' runs)

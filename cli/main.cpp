@@ -33,6 +33,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--generations", run.generations, "generations per run")->check(kAtLeastOne);
   run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)");
   run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(kThreads);
+  run_cmd->add_option("--runs-at-once", run.runs_at_once,
+                      "runs advancing together, their evaluations pooled (default: enough to keep every worker "
+                      "busy; results never depend on it)")
+      ->check(kAtLeastOne);
   run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
   run_cmd->add_option("--cache", run.cache,
                       "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");

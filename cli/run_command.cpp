@@ -227,6 +227,16 @@ int run_everywhere(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   return kExitOk;
 }
 
+// How the campaign runs on this machine (never what it computes).
+eval::CampaignOptions campaign_options(const RunOptions& o, const eval::ResumePoint* resume) {
+  eval::CampaignOptions c;
+  c.threads = o.threads;
+  c.resume = resume;
+  c.trace_best = true;
+  c.runs_at_once = o.runs_at_once;
+  return c;
+}
+
 // Generations finished before a resume: the progress starts from them.
 std::int64_t generations_done(const eval::ResumePoint& point) {
   std::int64_t done = 0;
@@ -247,7 +257,7 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
         launch.overrides = overrides_json(o);
         launch.software_version = ESC_VERSION_STRING;
         return run_everywhere(
-            d, {o.threads, nullptr, true}, [&] { return store::RunDirectory(dir, d, sources_of(compiled), launch); }, 0,
+            d, campaign_options(o, nullptr), [&] { return store::RunDirectory(dir, d, sources_of(compiled), launch); }, 0,
             {});   // it is renamed when finished: prepare_dependencies says where it went
       },
       [&o](const eval::ExperimentSpec& d, const std::filesystem::path& dir) {
@@ -256,7 +266,7 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
           const store::StoredExperiment stored = db.load_single();
           const eval::ResumePoint point = stored.resume_point();
           return run_everywhere(
-              d, {o.threads, &point, true}, [&] { return store::RunDirectory::resume(dir, std::move(db), stored); },
+              d, campaign_options(o, &point), [&] { return store::RunDirectory::resume(dir, std::move(db), stored); },
               generations_done(point), {});
         } catch (const std::exception& e) {
           // Whatever stops it (a damaged database, a full disk), the caller runs it afresh.
@@ -306,6 +316,7 @@ int resume_command(const RunOptions& o) {
   }
   if (!apply_overrides(replay, *spec)) return kExitBadInput;
   replay.threads = o.threads;
+  replay.runs_at_once = o.runs_at_once;
 
   const std::vector<store::SourceFile> sources = sources_of(compiled);
   const std::string hash = store::campaign_hash(spec->name, sources);
@@ -342,7 +353,7 @@ int resume_command(const RunOptions& o) {
   say("esc: resuming {} in {}: {} of {} generations done\n", spec->name, o.resume.string(), done,
       spec->total_generations());
   return run_everywhere(
-      *spec, {o.threads, &point, true},
+      *spec, campaign_options(o, &point),
       [&] { return store::RunDirectory::resume(o.resume, std::move(db), stored); }, done, o.resume);
 }
 
@@ -375,7 +386,7 @@ int run_command(const RunOptions& o) {
                spec->runs == 1 ? "" : "s", generations_text(*spec), out.string());
     return dir;
   };
-  return run_everywhere(*spec, {o.threads, nullptr, true}, open, 0, out);
+  return run_everywhere(*spec, campaign_options(o, nullptr), open, 0, out);
 }
 
 }  // namespace esc::cli

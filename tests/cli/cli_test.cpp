@@ -87,17 +87,23 @@ TEST(Cli, RunWritesResultsAndNeverOverwritesThem) {
 TEST(Cli, SameSeedSameResultsWithOneOrTwoThreadsAndFitnessImproves) {
   const fs::path a = scratch("t1");
   const fs::path b = scratch("t2");
+  const fs::path c = scratch("t2-one-run-at-once");
   const std::string common = "run " + tiny() + " --runs 2 --generations 6 --seed 11 --set epochs=2";
   ASSERT_EQ(esc(common + " --threads 1 --out " + a.string()).status, 0);
+  // On 2 threads tiny's two runs advance together, unless told otherwise.
   ASSERT_EQ(esc(common + " --threads 2 --out " + b.string()).status, 0);
+  ASSERT_EQ(esc(common + " --threads 2 --runs-at-once 1 --out " + c.string()).status, 0);
+  EXPECT_EQ(esc(common + " --runs-at-once 0 --out " + scratch("t0").string()).status, 2);
   const auto sa = read_json(a / "summary.json");
   const auto sb = read_json(b / "summary.json");
+  const auto sc = read_json(c / "summary.json");
   for (const char* name : {"CC", "SC"}) {
     double first = 0.0;
     double last = 0.0;
     for (std::size_t r = 0; r < 2; ++r) {
       EXPECT_EQ(sa["controllers"][name]["runs"][r]["best"], sb["controllers"][name]["runs"][r]["best"]);
       EXPECT_EQ(sa["controllers"][name]["runs"][r]["mean"], sb["controllers"][name]["runs"][r]["mean"]);
+      EXPECT_EQ(sa["controllers"][name]["runs"][r]["mean"], sc["controllers"][name]["runs"][r]["mean"]);
       first += sa["controllers"][name]["runs"][r]["mean"].front().get<double>();
       last += sa["controllers"][name]["runs"][r]["mean"].back().get<double>();
     }
