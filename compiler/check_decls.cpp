@@ -682,8 +682,7 @@ const std::optional<control::ControllerSpec>& Model::controller(const ast::Contr
   auto& used = controller_behaviors_[&d];
   used.clear();
 
-  std::vector<std::string> observables;
-  for (const auto& o : expr::kObservables) observables.emplace_back(o.name);
+  const std::vector<std::string> observables = expr::observable_names();
   for (const ast::Input& in : d.inputs) {
     const auto o = expr::find_observable(in.name.text);
     if (!o) {

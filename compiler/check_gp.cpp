@@ -96,8 +96,7 @@ const std::optional<Model::PrimitiveList>& Model::primitives(const ast::Primitiv
     list.items.push_back(gp::prim::function(fn->op));
   }
 
-  std::vector<std::string> observables;
-  for (const auto& o : expr::kObservables) observables.emplace_back(o.name);
+  const std::vector<std::string> observables = expr::observable_names();
   for (const ast::PrimTerminal& t : d.terminals) {
     using TK = ast::PrimTerminal::Kind;
     if (t.kind == TK::Bool) {

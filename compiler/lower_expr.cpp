@@ -125,7 +125,8 @@ class Lowerer {
 
   std::vector<std::string> known_names() const {
     std::vector<std::string> v = scope_.params;
-    for (const auto& o : expr::kObservables) v.emplace_back(o.name);
+    const std::vector<std::string> observables = expr::observable_names();
+    v.insert(v.end(), observables.begin(), observables.end());
     return v;
   }
 

@@ -8,7 +8,9 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace esc::expr {
 
@@ -118,6 +120,13 @@ inline constexpr std::array kParametrised = {
   for (const auto& o : kObservables)
     if (o.name == name) return o;
   return std::nullopt;
+}
+
+// Every observable's script name, in slot order (what "did you mean" suggests from).
+[[nodiscard]] inline std::vector<std::string> observable_names() {
+  std::vector<std::string> names;
+  for (const auto& o : kObservables) names.emplace_back(o.name);
+  return names;
 }
 
 [[nodiscard]] constexpr std::optional<ParametrisedObservable> find_parametrised(
