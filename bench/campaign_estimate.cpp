@@ -41,11 +41,6 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
   return static_cast<double>(steps) / elapsed;
 }
 
-std::size_t evaluations_per_generation(const eval::ExperimentSpec& e, const control::ControllerSpec& c) {
-  if (e.start_from && e.start_from->evaluate_only) return 1;
-  return static_cast<std::size_t>(c.is_tree() && e.gp ? e.gp->population : e.es.lambda);
-}
-
 // A run waiting or advancing in the model, with the lengths its evaluations take in turn.
 struct QueuedRun {
   std::span<const double> lengths;
@@ -98,7 +93,7 @@ Schedule schedule(const std::vector<eval::ExperimentSpec>& experiments, const st
                                                 ? std::span<const double>(cost.evaluation_seconds)
                                                 : std::span<const double>(&full[k], 1);
       for (int run = 0; run < e.runs; ++run)
-        queue.push_back({drawn, evaluations_per_generation(e, c), e.generations_for(c)});
+        queue.push_back({drawn, e.evaluations_per_generation(c), e.generations_for(c)});
       ++k;
     }
     schedule_rounds(std::move(queue), std::max<std::size_t>(workers, 1), out);
@@ -116,7 +111,7 @@ std::vector<ControllerCost> estimate_campaign(const std::vector<eval::Experiment
       k.controller = c.name;
       k.architecture = c.architecture();
       k.evaluations = static_cast<double>(e.runs) * e.generations_for(c) *
-                      static_cast<double>(evaluations_per_generation(e, c));
+                      static_cast<double>(e.evaluations_per_generation(c));
       k.max_steps = k.evaluations * e.epochs * e.steps;
       k.steps_per_second = measure_rate(e, c, seconds_each, k.evaluation_seconds);
       costs.push_back(k);

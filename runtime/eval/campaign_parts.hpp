@@ -32,8 +32,11 @@ struct Evaluators {
 // is the same however its evaluations were shared out and whichever runs it advanced with.
 class RunJob {
  public:
-  RunJob(const control::ControllerSpec& controller, RunState state, int generations)
-      : controller_(&controller), state_(std::move(state)), generations_(generations) {}
+  RunJob(const ExperimentSpec& spec, const control::ControllerSpec& controller, RunState state)
+      : controller_(&controller),
+        state_(std::move(state)),
+        generations_(spec.generations_for(controller)),
+        evaluations_(spec.evaluations_per_generation(controller)) {}
   virtual ~RunJob() = default;
   RunJob(const RunJob&) = delete;
   RunJob& operator=(const RunJob&) = delete;
@@ -44,7 +47,7 @@ class RunJob {
   [[nodiscard]] int generation() const noexcept { return static_cast<int>(state_.generations.size()); }
   [[nodiscard]] bool finished() const noexcept { return generation() >= generations_; }
   // How many individuals each generation evaluates.
-  [[nodiscard]] virtual std::size_t evaluations_per_generation() const = 0;
+  [[nodiscard]] std::size_t evaluations_per_generation() const noexcept { return evaluations_; }
 
   // Makes generation generation()'s individuals; returns how many there are.
   virtual std::size_t breed() = 0;
@@ -66,6 +69,7 @@ class RunJob {
   const control::ControllerSpec* controller_;
   RunState state_;
   int generations_;
+  std::size_t evaluations_;
 };
 
 // A run of a network controller by the ES, fresh or continued from `from`.

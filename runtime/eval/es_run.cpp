@@ -39,10 +39,6 @@ class EsRun final : public RunJob {
       : EsRun(spec, controller, run, from, evo::EvolutionStrategy(spec.es, controller.genome_size()),
               start_genome(spec, static_cast<std::size_t>(&controller - spec.controllers.data()), run)) {}
 
-  std::size_t evaluations_per_generation() const override {
-    return evaluate_only() ? 1 : static_cast<std::size_t>(es_.settings().lambda);
-  }
-
   // A run that starts from a stored genome keeps it unchanged as offspring 0 of
   // generation 0, so that generation measures it in the new setting; a run that only
   // evaluates it has that one offspring.
@@ -83,8 +79,7 @@ class EsRun final : public RunJob {
  private:
   EsRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from,
         evo::EvolutionStrategy es, const std::vector<double>* start)
-      : RunJob(controller, from != nullptr ? *from : fresh_state(spec, es, run, start),
-               spec.generations_for(controller)),
+      : RunJob(spec, controller, from != nullptr ? *from : fresh_state(spec, es, run, start)),
         es_(std::move(es)),
         start_(start),
         evaluate_only_(start != nullptr && spec.start_from->evaluate_only) {}

@@ -89,6 +89,12 @@ struct ExperimentSpec {
   [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
     return c.is_tree() && gp ? gp->generations : es_generations();
   }
+  // Individuals a compared controller evaluates each generation: the GP population for a
+  // tree, else the ES's lambda, or 1 when the experiment only evaluates stored genomes.
+  [[nodiscard]] std::size_t evaluations_per_generation(const control::ControllerSpec& c) const noexcept {
+    if (c.is_tree() && gp) return static_cast<std::size_t>(gp->population);
+    return start_from && start_from->evaluate_only ? 1 : static_cast<std::size_t>(es.lambda);
+  }
   // The most generations of any compared controller (the ES's when none is compared).
   [[nodiscard]] int max_generations() const noexcept {
     int g = controllers.empty() ? es.generations : 0;

@@ -35,23 +35,20 @@ std::string behavior_body(const control::ControllerSpec& controller, const evo::
 class GpRun final : public RunJob {
  public:
   GpRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
-      : RunJob(controller, from != nullptr ? *from : fresh_state(spec, run), spec.generations_for(controller)),
-        gp_(*spec.gp, *controller.primitives),
-        population_size_(static_cast<std::size_t>(spec.gp->population)) {
+      : RunJob(spec, controller, from != nullptr ? *from : fresh_state(spec, run)),
+        gp_(*spec.gp, *controller.primitives) {
     // A stored population must be one this script could have bred (the store keeps trees
     // without their primitive set).
-    if (!state_.generations.empty() && state_.population.size() != population_size_)
+    if (!state_.generations.empty() && state_.population.size() != evaluations_per_generation())
       throw std::invalid_argument("tree controller '" + controller.name + "': the state to resume from holds " +
                                   std::to_string(state_.population.size()) + " trees, the population is " +
-                                  std::to_string(population_size_));
+                                  std::to_string(evaluations_per_generation()));
     for (const evo::gp::Individual& ind : state_.population)
       if (const std::string why = evo::gp::check(ind.tree, *controller.primitives, controller.primitives->root());
           !why.empty())
         throw std::invalid_argument("tree controller '" + controller.name +
                                     "': a tree to resume from is not one of its primitive set: " + why);
   }
-
-  std::size_t evaluations_per_generation() const override { return population_size_; }
 
   std::size_t breed() override {
     const int g = generation();
@@ -101,7 +98,6 @@ class GpRun final : public RunJob {
   }
 
   evo::gp::GeneticProgramming gp_;
-  std::size_t population_size_;
   std::vector<evo::gp::Individual> bred_;
 };
 
