@@ -99,7 +99,6 @@ std::optional<store::StoredExperiment> load_finished(const std::filesystem::path
   return unpack(text);
 }
 
-
 bool finished_run(const std::filesystem::path& dir) {
   try {
     return store::ResultsDb::open(dir, true).load_single().finished();

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <numeric>
 
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
@@ -48,11 +49,10 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::vector<double> fitness;
   std::vector<std::int64_t> steps(active.size(), 0);
-  std::int64_t all_steps = 0;
-  for (std::size_t i = 0; i < pool.size(); ++i) {
-    steps[pool.job_of(i)] += static_cast<std::int64_t>(results[i * kWidth + 1]);
-    all_steps += static_cast<std::int64_t>(results[i * kWidth + 1]);
-  }
+  for (std::size_t j = 0; j < active.size(); ++j)
+    for (std::size_t i = pool.first[j]; i < pool.first[j + 1]; ++i)
+      steps[j] += static_cast<std::int64_t>(results[i * kWidth + 1]);
+  const std::int64_t all_steps = std::accumulate(steps.begin(), steps.end(), std::int64_t{0});
   listener.round_evaluated({active.size(), static_cast<std::int64_t>(pool.size()), all_steps, seconds});
   for (std::size_t j = 0; j < active.size(); ++j) {
     RunJob& job = *active[j];
