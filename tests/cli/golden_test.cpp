@@ -1,0 +1,82 @@
+// Golden results: every experiment of every shipped script, run short, must give exactly
+// the per-generation results recorded in tests/golden/*.json (best, mean and sd of every
+// generation of every run, and each run's best fitness), bit for bit. A refactoring or an
+// optimisation that moves any of them fails here; a deliberate change of results is
+// recorded by running this test with ESC_UPDATE_GOLDEN=1 (which rewrites the files), a bump
+// of eval::kResultsRevision and a paragraph in docs/decisions.md.
+//
+// Each file names its script, experiment and command-line arguments; to cover a new
+// experiment, add a file with those three and an empty "controllers" object, then update.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+
+namespace {
+
+using namespace cli_test;
+using nlohmann::json;
+
+fs::path golden_dir() { return fs::path(ESC_SOURCE_DIR) / "tests" / "golden"; }
+
+std::vector<std::string> golden_files() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(golden_dir()))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The results proper of a summary.json: per controller, per run, the fitness figures.
+json results_of(const json& summary) {
+  json out = json::object();
+  for (const auto& [name, c] : summary.at("controllers").items()) {
+    json runs = json::array();
+    for (const json& r : c.at("runs"))
+      runs.push_back({{"best_fitness", r.at("best_fitness")}, {"best", r.at("best")}, {"mean", r.at("mean")},
+                      {"sd", r.at("sd")}});
+    out[name] = runs;
+  }
+  return out;
+}
+
+class Golden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Golden, ShortRunGivesTheRecordedResults) {
+  const fs::path file = golden_dir() / (GetParam() + ".json");
+  json golden = read_json(file);
+  const fs::path out = scratch("golden-" + GetParam());
+  const std::string script = (fs::path(ESC_SOURCE_DIR) / golden.at("script").get<std::string>()).string();
+  const Outcome o = esc("run " + script + " --experiment " + golden.at("experiment").get<std::string>() + " " +
+                        golden.at("args").get<std::string>() + " --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const json got = results_of(read_json(out / "summary.json"));
+  if (const char* update = std::getenv("ESC_UPDATE_GOLDEN"); update != nullptr && std::string(update) == "1") {
+    golden["controllers"] = got;
+    std::ofstream(file) << golden.dump(1) << "\n";
+    GTEST_SKIP() << "rewrote " << file;
+  }
+  const json& want = golden.at("controllers");
+  ASSERT_EQ(want.size(), got.size()) << "controllers differ: " << got.dump();
+  for (const auto& [name, runs] : want.items()) {
+    ASSERT_TRUE(got.contains(name)) << "no controller " << name;
+    // Element by element, so a failure names the first generation that moved.
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      for (const char* key : {"best", "mean", "sd"})
+        for (std::size_t g = 0; g < runs[r][key].size(); ++g)
+          ASSERT_EQ(runs[r][key][g].get<double>(), got[name][r][key][g].get<double>())
+              << name << " run " << r << " generation " << g << " " << key;
+    EXPECT_EQ(runs, got[name]) << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedScripts, Golden, ::testing::ValuesIn(golden_files()),
+                         [](const auto& param_info) { return param_info.param; });
+
+}  // namespace
