@@ -20,12 +20,17 @@
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/fingerprint.hpp"
+#include "runtime/report/comparisons.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/store/run_directory.hpp"
 
 namespace esc::cli {
 
 namespace {
+
+std::string number_or_na(double x, int decimals) {
+  return std::isnan(x) ? "n/a" : fmt::format("{:.{}f}", x, decimals);
+}
 
 std::string p_text(double p) {
   if (std::isnan(p)) return "n/a";
@@ -99,16 +104,18 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
     print_trees(result);
   }
   if (result.controllers.size() < 2) return;
-  fmt::print("\n{:<26} {:>9} {:>7} {:>10}  {:>9} {:>10}\n", "pairwise (two-sided)", "Welch t", "df", "p",
-             "M-W U", "p");
-  for (std::size_t i = 0; i < finals.size(); ++i)
-    for (std::size_t j = i + 1; j < finals.size(); ++j) {
-      const report::TestResult w = report::welch_t_test(finals[i], finals[j]);
-      const report::TestResult m = report::mann_whitney_u(finals[i], finals[j]);
-      fmt::print("{:<26} {:>9.3f} {:>7.1f} {:>10}  {:>9.1f} {:>10}\n",
-                 fmt::format("{} vs {}", result.controllers[i].name, result.controllers[j].name), w.statistic, w.df,
-                 p_text(w.p_value), m.statistic, p_text(m.p_value));
-    }
+  fmt::print("\n{:<26} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}\n", "pairwise (two-sided)", "Welch t",
+             "df", "p", "p Holm", "M-W U", "p", "p Holm", "A12");
+  for (const report::Comparison& c : report::compare(finals, report::all_pairs(finals.size())))
+    fmt::print("{:<26} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}\n",
+               fmt::format("{} vs {}", result.controllers[c.a].name, result.controllers[c.b].name),
+               number_or_na(c.welch.statistic, 3), number_or_na(c.welch.df, 1), p_text(c.welch.p_value),
+               p_text(c.welch_p_holm), number_or_na(c.mann_whitney.statistic, 1), p_text(c.mann_whitney.p_value),
+               p_text(c.mann_whitney_p_holm), number_or_na(c.a12, 2));
+  const std::size_t pairs = finals.size() * (finals.size() - 1) / 2;
+  fmt::print("Holm: p adjusted over the {} pair{} shown, for each test. Mann-Whitney p exact when a sample has at most "
+             "8 runs and no ties. A12: chance the first beats the second.\n",
+             pairs, pairs == 1 ? "" : "s");
 }
 
 std::filesystem::path default_out(const std::string& experiment) {

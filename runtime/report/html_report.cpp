@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/report/comparisons.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 
@@ -106,14 +107,13 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
                            {"replay", replay_json(c, o)}});
   }
   json pairs = json::array();
-  for (std::size_t i = 0; i < e.controllers.size(); ++i)
-    for (std::size_t j = i + 1; j < e.controllers.size(); ++j) {
-      const TestResult w = welch_t_test(finals[i], finals[j]);
-      const TestResult m = mann_whitney_u(finals[i], finals[j]);
-      pairs.push_back({{"a", e.controllers[i].name}, {"b", e.controllers[j].name}, {"welch_t", number(w.statistic)},
-                       {"welch_df", number(w.df)}, {"welch_p", number(w.p_value)}, {"mwu_u", number(m.statistic)},
-                       {"mwu_p", number(m.p_value)}});
-    }
+  for (const Comparison& c : compare(finals, all_pairs(finals.size())))
+    pairs.push_back({{"a", e.controllers[c.a].name}, {"b", e.controllers[c.b].name},
+                     {"welch_t", number(c.welch.statistic)}, {"welch_df", number(c.welch.df)},
+                     {"welch_p", number(c.welch.p_value)}, {"welch_p_holm", number(c.welch_p_holm)},
+                     {"mwu_u", number(c.mann_whitney.statistic)}, {"mwu_p", number(c.mann_whitney.p_value)},
+                     {"mwu_p_holm", number(c.mann_whitney_p_holm)}, {"mwu_exact", c.mann_whitney.exact},
+                     {"a12", number(c.a12)}});
   return {{"name", e.name},
           {"seed", std::to_string(e.seed)},
           {"status", e.status},

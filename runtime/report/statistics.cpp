@@ -2,14 +2,67 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <limits>
+#include <numeric>
 #include <vector>
 
+#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 namespace esc::report {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+TestResult undefined() { return {kNaN, kNaN, kNaN, false}; }
+
+double median_of_sorted(const std::vector<double>& v) {
+  const std::size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Both samples pooled and sorted, each value remembering its sample.
+struct Pooled {
+  double x;
+  bool first;
+};
+std::vector<Pooled> pool(std::span<const double> a, std::span<const double> b) {
+  std::vector<Pooled> all;
+  all.reserve(a.size() + b.size());
+  for (double x : a) all.push_back({x, true});
+  for (double x : b) all.push_back({x, false});
+  std::sort(all.begin(), all.end(), [](const Pooled& l, const Pooled& r) { return l.x < r.x; });
+  return all;
+}
+
+// P(U >= k) for samples of sizes m and n without ties: the count of the C(m+n, m) equally
+// likely arrangements whose U is at least k. Arrangements are built in rank order; an
+// element of the first sample placed after `t - j` elements of the second adds t - j to U.
+// Counts are positive sums only, so doubles keep their relative precision.
+double exact_u_sf(std::size_t m, std::size_t n, std::size_t k) {
+  if (m > n) std::swap(m, n);   // U's distribution is symmetric in the two sizes
+  const std::size_t top = m * n;
+  // ways[j][u]: arrangements of the first t elements holding j of the smaller sample, with U = u.
+  std::vector<std::vector<double>> ways(m + 1, std::vector<double>(top + 1, 0.0));
+  ways[0][0] = 1.0;
+  for (std::size_t t = 0; t < m + n; ++t)
+    for (std::size_t j = std::min(m, t + 1); j >= 1; --j) {
+      const std::size_t add = t - (j - 1);   // elements of the larger sample placed before
+      if (add > n) continue;                 // more of the larger sample than it has
+      for (std::size_t u = top; u + 1 > add; --u) ways[j][u] += ways[j - 1][u - add];
+    }
+  const std::vector<double>& c = ways[m];
+  double total = 0.0, tail = 0.0;
+  for (std::size_t u = 0; u <= top; ++u) {
+    total += c[u];
+    if (u >= k) tail += c[u];
+  }
+  return tail / total;
+}
+
+}  // namespace
 
 Summary summarise(std::span<const double> sample) {
   Summary s;
@@ -22,41 +75,32 @@ Summary summarise(std::span<const double> sample) {
   double sq = 0.0;
   for (double x : v) sq += (x - s.mean) * (x - s.mean);
   s.sd = s.n > 1 ? std::sqrt(sq / (n - 1.0)) : 0.0;
-  s.median = s.n % 2 == 1 ? v[s.n / 2] : 0.5 * (v[s.n / 2 - 1] + v[s.n / 2]);
+  s.median = median_of_sorted(v);
   s.min = v.front();
   s.max = v.back();
   return s;
 }
 
 TestResult welch_t_test(std::span<const double> a, std::span<const double> b) {
-  TestResult r;
-  r.p_value = std::numeric_limits<double>::quiet_NaN();
-  if (a.size() < 2 || b.size() < 2) return r;
+  if (a.size() < 2 || b.size() < 2) return undefined();
   const Summary sa = summarise(a);
   const Summary sb = summarise(b);
   const double va = sa.sd * sa.sd / static_cast<double>(sa.n);
   const double vb = sb.sd * sb.sd / static_cast<double>(sb.n);
   const double se2 = va + vb;
-  if (!(se2 > 0.0)) return r;
+  if (!(se2 > 0.0) || !std::isfinite(se2)) return undefined();
+  TestResult r;
   r.statistic = (sa.mean - sb.mean) / std::sqrt(se2);
   r.df = se2 * se2 / (va * va / static_cast<double>(sa.n - 1) + vb * vb / static_cast<double>(sb.n - 1));
+  if (!std::isfinite(r.statistic) || !std::isfinite(r.df)) return undefined();
   const boost::math::students_t dist(r.df);
   r.p_value = std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(dist, std::fabs(r.statistic))));
   return r;
 }
 
-TestResult mann_whitney_u(std::span<const double> a, std::span<const double> b) {
-  TestResult r;
-  r.p_value = std::numeric_limits<double>::quiet_NaN();
-  if (a.empty() || b.empty()) return r;
-  struct Value {
-    double x;
-    bool first;
-  };
-  std::vector<Value> all;
-  for (double x : a) all.push_back({x, true});
-  for (double x : b) all.push_back({x, false});
-  std::sort(all.begin(), all.end(), [](const Value& l, const Value& m) { return l.x < m.x; });
+TestResult mann_whitney_u(std::span<const double> a, std::span<const double> b, UMethod method) {
+  if (a.empty() || b.empty()) return undefined();
+  const std::vector<Pooled> all = pool(a, b);
   const auto n = static_cast<double>(all.size());
   double rank_sum_a = 0.0;
   double ties = 0.0;   // sum of t^3 - t over groups of tied values
@@ -72,14 +116,57 @@ TestResult mann_whitney_u(std::span<const double> a, std::span<const double> b) 
   }
   const auto n1 = static_cast<double>(a.size());
   const auto n2 = static_cast<double>(b.size());
+  TestResult r;
   r.statistic = rank_sum_a - n1 * (n1 + 1.0) / 2.0;
+  const double u = std::max(r.statistic, n1 * n2 - r.statistic);   // the larger U
+  const double cells = std::min(n1, n2) * (n1 + n2) * n1 * n2;
+  const bool can_be_exact = ties == 0.0 && cells <= kMaxExactCells;
+  const bool exact = can_be_exact && (method == UMethod::Exact ||
+                                      (method == UMethod::Auto && (a.size() <= 8 || b.size() <= 8)));
+  if (exact) {
+    r.exact = true;
+    r.p_value = std::min(1.0, 2.0 * exact_u_sf(a.size(), b.size(), static_cast<std::size_t>(u)));
+    return r;
+  }
   const double mu = n1 * n2 / 2.0;
   const double var = n1 * n2 / 12.0 * ((n + 1.0) - ties / (n * (n - 1.0)));
-  if (!(var > 0.0)) return r;
-  const double u = std::max(r.statistic, n1 * n2 - r.statistic);   // the larger U
+  if (!(var > 0.0)) return undefined();
   const double z = (u - mu - 0.5) / std::sqrt(var);
   const boost::math::normal_distribution<double> normal;
   r.p_value = std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(normal, z)));
+  return r;
+}
+
+double vargha_delaney_a12(std::span<const double> a, std::span<const double> b) {
+  if (a.empty() || b.empty()) return kNaN;
+  const TestResult u = mann_whitney_u(a, b, UMethod::Asymptotic);
+  // U of the first sample counts the pairs it wins, ties as half: A12 is its share.
+  return (std::isnan(u.statistic) ? 0.5 * static_cast<double>(a.size() * b.size()) : u.statistic) /
+         (static_cast<double>(a.size()) * static_cast<double>(b.size()));
+}
+
+TestResult brown_forsythe(std::span<const double> a, std::span<const double> b) {
+  if (a.size() < 2 || b.size() < 2) return undefined();
+  // Absolute deviations from each sample's median, then a one-way ANOVA of them.
+  const auto deviations = [](std::span<const double> s) {
+    std::vector<double> v(s.begin(), s.end());
+    std::sort(v.begin(), v.end());
+    const double med = median_of_sorted(v);
+    for (double& x : v) x = std::fabs(x - med);
+    return v;
+  };
+  const std::vector<double> za = deviations(a), zb = deviations(b);
+  const Summary sa = summarise(za), sb = summarise(zb);
+  const auto na = static_cast<double>(za.size()), nb = static_cast<double>(zb.size());
+  const double grand = (sa.mean * na + sb.mean * nb) / (na + nb);
+  const double between = na * (sa.mean - grand) * (sa.mean - grand) + nb * (sb.mean - grand) * (sb.mean - grand);
+  const double within = (na - 1.0) * sa.sd * sa.sd + (nb - 1.0) * sb.sd * sb.sd;
+  if (!(within > 0.0) || !std::isfinite(within)) return undefined();
+  TestResult r;
+  r.df = na + nb - 2.0;
+  r.statistic = r.df * between / within;
+  const boost::math::fisher_f dist(1.0, r.df);
+  r.p_value = boost::math::cdf(boost::math::complement(dist, r.statistic));
   return r;
 }
 

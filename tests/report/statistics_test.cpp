@@ -1,6 +1,8 @@
 #include "runtime/report/statistics.hpp"
+#include "runtime/report/comparisons.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -33,45 +35,154 @@ TEST(Statistics, SmallSamples) {
 namespace esc::report {
 namespace {
 
-// Reference values computed independently with SciPy 1.10.1 (Debian python3-scipy):
-//   stats.ttest_ind(a, b, equal_var=False)
-//   stats.mannwhitneyu(a, b, alternative="two-sided", method="asymptotic", use_continuity=True)
+// Reference values computed outside esc with SciPy 1.10.1 (Debian python3-scipy) and, for
+// Holm, statsmodels 0.13.5 (python3-statsmodels):
+//   stats.ttest_ind(a, b, equal_var=False)                      t, p (df by its formula)
+//   stats.mannwhitneyu(a, b, alternative="two-sided", method="auto")         U, p
+//   stats.mannwhitneyu(a, b, alternative="two-sided", method="asymptotic")   p
+//   U / (len(a) * len(b))                                       A12
+//   stats.levene(a, b, center="median")                         W, p (Brown-Forsythe)
 struct Reference {
   std::vector<double> a, b;
-  double t, t_p, df, u, u_p;
+  double t, t_p, df, u, u_p, u_p_asymptotic, a12, w, w_p;
+  bool exact;   // method="auto" chose the exact distribution (a sample of <= 8, no ties)
 };
 
 const std::vector<Reference>& references() {
   static const std::vector<Reference> r = {
       {{19.1, 21.4, 18.7, 22.3, 20.5, 19.9, 23.1, 18.2, 20.8, 21.7},
        {17.2, 18.9, 16.5, 19.4, 17.8, 18.1, 20.2, 16.9, 17.5, 18.6},
-       3.9229798778206626, 0.0011587360429312936, 16.442519867750786, 90.0, 0.0028272720911168077},
-      {{1, 2, 2, 3, 3, 3, 4, 5}, {2, 3, 3, 4, 4, 5, 5, 6, 7},   // many ties
-       -2.122744235620042, 0.05104508769182007, 14.818510553350144, 17.0, 0.06935045438181722},
+       3.9229798778206626, 0.0011587360429312936, 16.442519867750786, 90.0, 0.0028272720911168077,
+       0.0028272720911168077, 0.9, 1.1193857965451082, 0.30404353456881394, false},
+      {{1, 2, 2, 3, 3, 3, 4, 5}, {2, 3, 3, 4, 4, 5, 5, 6, 7},   // many ties: asymptotic
+       -2.122744235620042, 0.05104508769182007, 14.818510553350144, 17.0, 0.06935045438181722,
+       0.06935045438181722, 0.2361111111111111, 0.6161682550115022, 0.44469637871570644, false},
       {{10.5, 12.25, 9.75, 11.0, 13.5}, {8.0, 15.0, 6.5, 17.25, 9.0, 14.0, 7.5},   // unequal sizes and spreads
-       0.20860073431196707, 0.8400613553841353, 7.864100811498811, 20.0, 0.7453330673308027},
+       0.20860073431196707, 0.8400613553841353, 7.864100811498811, 20.0, 0.7550505050505051,
+       0.7453330673308027, 0.5714285714285714, 2.8047687802080774, 0.12492414090213945, true},
+      {{1088.4, 1092.1, 1079.5, 1101.2}, {889.7, 901.3, 870.2, 912.8},   // complete separation: p = 2 / C(8, 4)
+       19.415171155815347, 2.0248270623902397e-05, 4.384673228962692, 16.0, 0.02857142857142857,
+       0.03038282197657749, 1.0, 1.7609194100829235, 0.23277273115841304, true},
+      {{3.1, 2.7, 4.4}, {1.2, 5.9, 3.3, 0.8}, 0.4697161901456929, 0.6627833855852261, 4.041286769821515, 7.0,
+       0.8571428571428571, 0.8596837951986662, 0.5833333333333334, 2.3463878652840853, 0.18614087795603876, true},
+      {{1306.4, 1311.2, 1299.8, 1308.5, 1302.1, 1315.7, 1304.9, 1309.3},
+       {1267.5, 1281.4, 1259.9, 1288.2, 1301.0, 1273.6, 1262.3, 1279.8},
+       5.860355835347375, 0.00025572770057047254, 8.85983383652938, 63.0, 0.0003108003108003108,
+       0.0013593755271592322, 0.984375, 6.0464840759348295, 0.02756436666363478, true},
+      {{0.5, 0.9, 0.1, 0.7, 0.3}, {0.2, 0.8, 0.6, 0.4, 0.05, 0.95, 0.55, 0.45, 0.35, 0.15, 0.25, 0.65},
+       0.30927685641354324, 0.7666376445425749, 6.604994324631102, 33.0, 0.7989657401422106,
+       0.7921473917958973, 0.55, 0.07871696698706782, 0.7828763760162034, true},
   };
   return r;
 }
+
+double tolerance(double v) { return 1e-12 + 1e-9 * std::fabs(v); }
 
 TEST(Statistics, WelchMatchesScipy) {
   for (const Reference& r : references()) {
     const TestResult w = welch_t_test(r.a, r.b);
     EXPECT_NEAR(w.statistic, r.t, 1e-12);
     EXPECT_NEAR(w.df, r.df, 1e-10);
-    EXPECT_NEAR(w.p_value, r.t_p, 1e-12 + 1e-9 * r.t_p);
+    EXPECT_NEAR(w.p_value, r.t_p, tolerance(r.t_p));
   }
 }
 
-TEST(Statistics, MannWhitneyMatchesScipy) {
+TEST(Statistics, MannWhitneyMatchesScipyAuto) {
   for (const Reference& r : references()) {
     const TestResult m = mann_whitney_u(r.a, r.b);
     EXPECT_DOUBLE_EQ(m.statistic, r.u);
-    EXPECT_NEAR(m.p_value, r.u_p, 1e-12 + 1e-9 * r.u_p);
+    EXPECT_EQ(m.exact, r.exact);
+    EXPECT_NEAR(m.p_value, r.u_p, tolerance(r.u_p));
     // Swapping the samples keeps the p-value and gives the other U.
     const TestResult swapped = mann_whitney_u(r.b, r.a);
     EXPECT_NEAR(swapped.p_value, m.p_value, 1e-15);
     EXPECT_DOUBLE_EQ(swapped.statistic, static_cast<double>(r.a.size() * r.b.size()) - r.u);
+  }
+}
+
+TEST(Statistics, ExactMannWhitneyWithOneSmallSample) {
+  // 8 against 40 values: SciPy's "auto" is exact whenever one sample has at most 8.
+  const std::vector<double> a = {0.371, 1.482, 3.333, 5.924, 9.255, 13.326, 0.837, 6.388};
+  const std::vector<double> b = {3.5307,  5.1214,  7.7721,  11.4828, 16.2535, 22.0842, 9.8749,  17.8256, 7.7363,
+                                 17.807,  9.8377,  22.0284, 16.1791, 11.3898, 7.6605,  4.9912,  3.3819,  21.9326,
+                                 3.3433,  4.914,   7.5447,  11.2354, 15.9861, 21.7968, 9.5675,  17.4982, 7.3889,
+                                 17.4396, 9.4503,  21.621,  15.7517, 10.9424, 7.1931,  4.5038,  21.9745, 21.4052,
+                                 21.8959, 4.3466,  6.9573,  10.628};
+  const TestResult m = mann_whitney_u(a, b);
+  EXPECT_TRUE(m.exact);
+  EXPECT_DOUBLE_EQ(m.statistic, 55.0);
+  EXPECT_NEAR(m.p_value, 0.0025286936368511957, tolerance(0.0025286936368511957));
+}
+
+TEST(Statistics, MannWhitneyAsymptoticMatchesScipy) {
+  for (const Reference& r : references())
+    EXPECT_NEAR(mann_whitney_u(r.a, r.b, UMethod::Asymptotic).p_value, r.u_p_asymptotic,
+                tolerance(r.u_p_asymptotic));
+}
+
+TEST(Statistics, ExactMannWhitneyIsRefusedForTies) {
+  const Reference& tied = references()[1];
+  const TestResult m = mann_whitney_u(tied.a, tied.b, UMethod::Exact);
+  EXPECT_FALSE(m.exact);
+  EXPECT_NEAR(m.p_value, tied.u_p_asymptotic, tolerance(tied.u_p_asymptotic));
+}
+
+TEST(Statistics, VarghaDelaneyA12) {
+  for (const Reference& r : references()) {
+    EXPECT_NEAR(vargha_delaney_a12(r.a, r.b), r.a12, 1e-15);
+    EXPECT_NEAR(vargha_delaney_a12(r.b, r.a), 1.0 - r.a12, 1e-15);
+  }
+  const std::vector<double> flat = {2.0, 2.0};
+  EXPECT_DOUBLE_EQ(vargha_delaney_a12(flat, flat), 0.5);
+}
+
+TEST(Statistics, BrownForsytheMatchesScipyLevene) {
+  for (const Reference& r : references()) {
+    const TestResult w = brown_forsythe(r.a, r.b);
+    EXPECT_NEAR(w.statistic, r.w, tolerance(r.w));
+    EXPECT_DOUBLE_EQ(w.df, static_cast<double>(r.a.size() + r.b.size() - 2));
+    EXPECT_NEAR(w.p_value, r.w_p, tolerance(r.w_p));
+  }
+}
+
+TEST(Statistics, HolmMatchesStatsmodels) {
+  // multipletests(p, method="holm")[1]
+  const std::vector<double> p = {0.01, 0.04, 0.03, 0.005, 0.2, 0.5};
+  const std::vector<double> want = {0.05, 0.12, 0.12, 0.03, 0.4, 0.5};
+  const std::vector<double> got = holm(p);
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-15) << i;
+  const std::vector<double> tied = holm(std::vector<double>{0.02, 0.02, 0.3});
+  EXPECT_NEAR(tied[0], 0.06, 1e-15);
+  EXPECT_NEAR(tied[1], 0.06, 1e-15);
+  EXPECT_NEAR(tied[2], 0.3, 1e-15);
+}
+
+TEST(Statistics, HolmLeavesUndefinedTestsOutOfTheFamily) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> got = holm(std::vector<double>{0.01, nan, 0.04});
+  EXPECT_NEAR(got[0], 0.02, 1e-15);   // a family of two, not three
+  EXPECT_TRUE(std::isnan(got[1]));
+  EXPECT_NEAR(got[2], 0.04, 1e-15);
+}
+
+TEST(Statistics, ComparisonsAdjustEachTestOverTheFamily) {
+  const std::vector<std::vector<double>> samples = {references()[0].a, references()[0].b, references()[3].a};
+  const auto pairs = all_pairs(samples.size());
+  ASSERT_EQ(pairs.size(), 3U);
+  const std::vector<Comparison> cs = compare(samples, pairs);
+  std::vector<double> welch_p, mw_p;
+  for (const Comparison& c : cs) {
+    EXPECT_EQ(c.welch.p_value, welch_t_test(samples[c.a], samples[c.b]).p_value);
+    EXPECT_EQ(c.a12, vargha_delaney_a12(samples[c.a], samples[c.b]));
+    welch_p.push_back(c.welch.p_value);
+    mw_p.push_back(c.mann_whitney.p_value);
+  }
+  const std::vector<double> wh = holm(welch_p), mh = holm(mw_p);
+  for (std::size_t k = 0; k < cs.size(); ++k) {
+    EXPECT_EQ(cs[k].welch_p_holm, wh[k]);
+    EXPECT_EQ(cs[k].mann_whitney_p_holm, mh[k]);
+    EXPECT_GE(cs[k].welch_p_holm, cs[k].welch.p_value);
   }
 }
 
@@ -82,6 +193,10 @@ TEST(Statistics, UndefinedTestsGiveNaN) {
   EXPECT_TRUE(std::isnan(welch_t_test(flat, flat).p_value));
   EXPECT_TRUE(std::isnan(mann_whitney_u(flat, flat).p_value));
   EXPECT_TRUE(std::isnan(mann_whitney_u({}, flat).p_value));
+  EXPECT_TRUE(std::isnan(welch_t_test(one, flat).statistic));   // never a number for an undefined test
+  EXPECT_TRUE(std::isnan(brown_forsythe(one, flat).p_value));
+  EXPECT_TRUE(std::isnan(brown_forsythe(flat, flat).p_value));
+  EXPECT_TRUE(std::isnan(vargha_delaney_a12({}, flat)));
   // Identical samples with spread: no difference at all.
   const std::vector<double> x = {1, 2, 3, 4};
   EXPECT_NEAR(welch_t_test(x, x).p_value, 1.0, 1e-12);

@@ -24,9 +24,9 @@
     const n = parseInt(hex.slice(1), 16);
     return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${a})`;
   }
-  function fmt(x, d) { return x === null || x === undefined || Number.isNaN(x) ? '–' : Number(x).toFixed(d); }
+  function fmt(x, d) { return x === null || x === undefined || Number.isNaN(x) ? 'n/a' : Number(x).toFixed(d); }
   function fmtP(p) {
-    if (p === null || p === undefined) return '–';
+    if (p === null || p === undefined) return 'n/a';
     return p < 1e-4 ? p.toExponential(1) : p.toFixed(4);
   }
   function meanSd(values) {
@@ -140,20 +140,23 @@
     if (exp.stats.pairs.length > 0) {
       card.appendChild(el('h3', {text: 'Pairwise comparisons (two-sided)'}));
       const p = el('table');
-      p.appendChild(el('tr', {}, ['pair', 'Welch t', 'df', 'Welch p', 'Mann-Whitney U', 'Mann-Whitney p']
-        .map(h => el('th', {text: h}))));
+      p.appendChild(el('tr', {}, ['pair', 'Welch t', 'df', 'Welch p', 'p Holm', 'Mann-Whitney U', 'Mann-Whitney p',
+                                  'p Holm', 'A12'].map(h => el('th', {text: h}))));
       for (const r of exp.stats.pairs) {
-        const row = el('tr', {}, [el('td', {text: `${r.a} vs ${r.b}`}), el('td', {text: fmt(r.welch_t, 3)}),
-                                  el('td', {text: fmt(r.welch_df, 1)}), el('td', {text: fmtP(r.welch_p)}),
-                                  el('td', {text: fmt(r.mwu_u, 1)}), el('td', {text: fmtP(r.mwu_p)})]);
-        if (r.welch_p !== null && r.welch_p < 0.05) row.children[3].className = 'significant';
-        if (r.mwu_p !== null && r.mwu_p < 0.05) row.children[5].className = 'significant';
+        const row = el('tr', {}, [`${r.a} vs ${r.b}`, fmt(r.welch_t, 3), fmt(r.welch_df, 1), fmtP(r.welch_p),
+                                  fmtP(r.welch_p_holm), fmt(r.mwu_u, 1), fmtP(r.mwu_p) + (r.mwu_exact ? ' (exact)' : ''),
+                                  fmtP(r.mwu_p_holm), fmt(r.a12, 2)].map(v => el('td', {text: v})));
+        if (r.welch_p_holm !== null && r.welch_p_holm < 0.05) row.children[4].className = 'significant';
+        if (r.mwu_p_holm !== null && r.mwu_p_holm < 0.05) row.children[7].className = 'significant';
         p.appendChild(row);
       }
       card.appendChild(p);
       card.appendChild(el('p', {class: 'note', text:
-        'Welch: t-test with unequal variances. Mann-Whitney: normal approximation with tie and continuity ' +
-        'corrections. Bold: p < 0.05, uncorrected for multiple comparisons.'}));
+        'Welch: t-test with unequal variances. Mann-Whitney: exact when a sample has at most 8 runs and there are ' +
+        'no ties, else the normal approximation with tie and continuity corrections (as SciPy\'s method "auto"). ' +
+        'Holm: p adjusted over the pairs of this table, for each test; bold: adjusted p < 0.05. A12: Vargha-Delaney ' +
+        'effect size, the chance that a run of the first beats a run of the second (0.5: no effect). n/a: the test ' +
+        'is undefined for these samples.'}));
     }
     parent.appendChild(card);
   }
