@@ -39,11 +39,14 @@ struct Expr {
 };
 using ExprPtr = std::unique_ptr<Expr>;
 
+// A setting's value as written, in a script or after `esc run --set KEY=`: `50ms`, `3`, `on`,
+// a word (`comma`), or a range `[-1, 1]`.
 struct Value {
-  enum class Kind { Quantity, Bool } kind = Kind::Quantity;
-  Quantity q;
-  bool flag = false;
-  std::string text;
+  enum class Kind { Quantity, Bool, Word, Range } kind = Kind::Quantity;
+  Quantity q;                // Quantity; Range: the lower bound
+  Quantity hi;               // Range: the upper bound
+  bool flag = false;         // Bool (`on`, `true`)
+  std::string text;          // as written (Word: the word)
   SourceRange where;
 };
 

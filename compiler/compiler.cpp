@@ -12,8 +12,15 @@
 
 #include <fmt/format.h>
 
-#include "compiler/model.hpp"
+#include "compiler/lower_arena.hpp"
+#include "compiler/lower_behavior.hpp"
+#include "compiler/lower_controller.hpp"
+#include "compiler/lower_experiment.hpp"
+#include "compiler/lower_fitness.hpp"
+#include "compiler/lower_primitives.hpp"
+#include "compiler/lower_robot.hpp"
 #include "compiler/parse.hpp"
+#include "compiler/resolver.hpp"
 #include "compiler/text.hpp"
 
 namespace esc::compiler {
@@ -78,20 +85,19 @@ class Driver {
       }
     }
     // Declare names with imported files first (post-order), then check everything.
-    Model model(sink_);
+    Resolver names(sink_);
     std::set<std::size_t> done;
     std::function<void(std::size_t, int)> visit = [&](std::size_t i, int depth) {
       if (!done.insert(i).second) return;
       if (depth < 1000)
         for (std::size_t j : edges_[i]) visit(j, depth + 1);
-      model.declare(modules_[i]);
+      names.declare(modules_[i]);
     };
     visit(main, 0);
     for (std::size_t i = 0; i < modules_.size(); ++i)
-      if (done.count(i) == 0) model.declare(modules_[i]);
-    model.check_all();
+      if (done.count(i) == 0) names.declare(modules_[i]);
     std::vector<eval::ExperimentSpec> all;
-    auto experiments = model.experiments(modules_[main], &all);
+    auto experiments = lower_all(names, modules_[main], all);
     result_.diagnostics = std::move(sink_.items());
     if (result_.ok()) {
       result_.experiments = std::move(experiments);
@@ -100,6 +106,37 @@ class Driver {
   }
 
  private:
+  // Lowers every declaration of every file once (each reported once); returns the main
+  // file's experiments, and every file's in `all`.
+  std::vector<eval::ExperimentSpec> lower_all(Resolver& names, const ast::Module& main,
+                                              std::vector<eval::ExperimentSpec>& all) {
+    ArenaLowering arenas(sink_);
+    RobotLowering robots(sink_, names);
+    BehaviorLowering behaviors(sink_, names, arenas);
+    FitnessLowering fitnesses(sink_, arenas);
+    PrimitivesLowering primitives(sink_, names);
+    ControllerLowering controllers(sink_, names, behaviors, primitives);
+    ExperimentLowering experiments(sink_, names, Lowerings{arenas, robots, behaviors, fitnesses, controllers});
+    for (const ast::Module* m : names.modules()) {
+      for (const auto& d : m->arenas) (void)arenas.lower(d);
+      for (const auto& d : m->robots) (void)robots.lower(d);
+      for (const auto& d : m->behaviors) (void)behaviors.lower(d);
+      for (const auto& d : m->fitnesses) (void)fitnesses.lower(d);
+      for (const auto& d : m->primitives) (void)primitives.lower(d);
+      for (const auto& d : m->controllers) (void)controllers.lower(d);
+    }
+    experiments.check_cycles();
+    std::vector<eval::ExperimentSpec> out;
+    for (const ast::Module* m : names.modules())
+      for (const auto& d : m->experiments) {
+        const auto& x = experiments.lower(d);
+        if (!x) continue;
+        all.push_back(*x);
+        if (m == &main) out.push_back(*x);
+      }
+    return out;
+  }
+
   static fs::path key_of(const fs::path& p) {
     std::error_code ec;
     fs::path k = fs::weakly_canonical(p, ec);

@@ -1,13 +1,14 @@
 #include "compiler/gp_settings.hpp"
 
-#include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
+#include "compiler/setting_values.hpp"
 
 namespace esc::compiler {
 
@@ -15,14 +16,7 @@ namespace {
 
 using K = GpOption::Kind;
 using S = evo::gp::GpSettings;
-
-// A plain number written in `text` (spaces around it allowed), or nullopt.
-std::optional<double> plain(std::string_view text) {
-  double v = 0;
-  std::string unit;
-  if (!split_value(text, v, unit) || !unit.empty()) return std::nullopt;
-  return v;
-}
+constexpr long long kIntMax = std::numeric_limits<int>::max();
 
 // A single tree controller's set (a Number terminal) for settings no tree is compared with.
 const evo::gp::PrimitiveSet& neutral_set() {
@@ -35,6 +29,17 @@ std::string without_prefix(std::string message) {
   constexpr std::string_view prefix = "genetic programming: ";
   if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
   return message;
+}
+
+// The text of an option's value in `s`: resolved settings, and the example of help lines.
+std::string option_text(const GpOption& o, const S& s) {
+  switch (o.kind) {
+    case K::Whole: return std::to_string(s.*o.whole);
+    case K::Fraction:
+    case K::Plain: return number_text(s.*o.real);
+    case K::Depths: return fmt::format("[{}, {}]", s.init_min_depth, s.init_max_depth);
+  }
+  return {};
 }
 
 }  // namespace
@@ -71,65 +76,76 @@ std::vector<std::string> gp_option_names() {
   return names;
 }
 
-std::string set_gp_option(S& s, const GpOption& o, double value, double hi) {
-  constexpr double kIntMax = std::numeric_limits<int>::max();
-  const auto whole = [&](double v, double min) -> std::string {
-    if (!(std::floor(v) == v && v >= min && v <= kIntMax))
-      return fmt::format("`{}` takes a whole number of at least {}, found {}", o.name, min, number_text(v));
-    return {};
-  };
+bool read_gp_option(S& s, const GpOption& o, const ast::Value& v, Sink& sink) {
   switch (o.kind) {
-    case K::Whole:
-      if (std::string m = whole(value, static_cast<double>(o.min)); !m.empty()) return m;
-      s.*o.whole = static_cast<int>(value);
-      return {};
+    case K::Whole: {
+      const auto n = read_count(v, o.name, o.min, kIntMax, sink);
+      if (n) s.*o.whole = static_cast<int>(*n);
+      return n.has_value();
+    }
     case K::Fraction:
-      if (!(value >= 0.0 && value <= 1.0))
-        return fmt::format("`{}` is a probability in [0, 1], found {}", o.name, number_text(value));
-      s.*o.real = value;
-      return {};
-    case K::Plain:
-      if (!(std::isfinite(value) && value >= 0.0))
-        return fmt::format("`{}` must be at least 0, found {}", o.name, number_text(value));
-      s.*o.real = value;
-      return {};
-    case K::Depths:
-      if (std::string m = whole(value, 1); !m.empty()) return m;
-      if (std::string m = whole(hi, 1); !m.empty()) return m;
-      if (hi < value)
-        return fmt::format("`init_depth [{}, {}]` is empty: the first depth must not exceed the second",
-                           number_text(value), number_text(hi));
-      s.init_min_depth = static_cast<int>(value);
-      s.init_max_depth = static_cast<int>(hi);
-      return {};
+    case K::Plain: {
+      const auto x = read_quantity(v, o.name, Dim::None, sink);
+      if (!x) return false;
+      if (o.kind == K::Fraction && !(*x >= 0.0 && *x <= 1.0)) {
+        sink.error(v.where, fmt::format("`{}` is a probability in [0, 1], found {}", o.name, number_text(*x)));
+        return false;
+      }
+      if (o.kind == K::Plain && !(*x >= 0.0)) {
+        sink.error(v.where, fmt::format("`{}` must be at least 0, found {}", o.name, number_text(*x)));
+        return false;
+      }
+      s.*o.real = *x;
+      return true;
+    }
+    case K::Depths: {
+      const auto r = read_range(v, o.name, "[2, 6]", sink);
+      if (!r) return false;
+      ast::Value lo = v, hi = v;
+      lo.kind = hi.kind = ast::Value::Kind::Quantity;
+      hi.q = v.hi;
+      const auto first = read_count(lo, o.name, 1, kIntMax, sink), last = read_count(hi, o.name, 1, kIntMax, sink);
+      if (!first || !last) return false;
+      if (*last < *first) {
+        sink.error(v.where, fmt::format("`init_depth [{}, {}]` is empty: the first depth must not exceed the second",
+                                        *first, *last));
+        return false;
+      }
+      s.init_min_depth = static_cast<int>(*first);
+      s.init_max_depth = static_cast<int>(*last);
+      return true;
+    }
   }
-  return {};
+  return false;
 }
 
-std::string apply_gp_setting(eval::ExperimentSpec& spec, std::string_view key, std::string_view value) {
-  const GpOption* o = find_gp_option(key);
-  if (o == nullptr) {
-    std::string err = fmt::format("unknown GP setting `gp.{}`", key);
-    if (auto best = closest(key, gp_option_names())) err += fmt::format("; did you mean `gp.{}`?", *best);
-    return err + fmt::format(" (GP settings: {})", fmt::join(gp_option_names(), ", "));
+void lower_gp_item(const ast::ExpItem& item, eval::ExperimentSpec& x, Sink& sink) {
+  S s = x.gp.value_or(S{});
+  const S defaults;
+  std::map<std::string, const ast::EsOption*> seen;
+  for (const ast::EsOption& o : item.options) {
+    const std::string& n = o.name.text;
+    if (n.empty()) continue;
+    const GpOption* opt = find_gp_option(n);
+    if (opt == nullptr) {
+      suggest(sink.error(o.name.where, fmt::format("unknown GP option `{}`", n)), n, gp_option_names(),
+              {.otherwise = fmt::format("GP options: {}", fmt::join(gp_option_names(), ", "))});
+      continue;
+    }
+    if (auto [it, fresh] = seen.try_emplace(n, &o); !fresh) {
+      sink.error(o.where, fmt::format("`{}` is already given", n)).notes.emplace_back(it->second->where, "first given here");
+      continue;
+    }
+    const OptionShape shape = opt->kind == K::Depths ? OptionShape::Range : OptionShape::Value;
+    if (const auto v = option_value(o, shape, option_text(*opt, defaults), sink)) (void)read_gp_option(s, *opt, *v, sink);
   }
-  S scratch = spec.gp.value_or(S{});
-  if (o->kind == K::Depths) {
-    std::string v(value);
-    if (!v.empty() && v.front() == '[') v.erase(0, 1);
-    if (!v.empty() && v.back() == ']') v.pop_back();
-    const std::size_t comma = v.find(',');
-    const auto lo = comma == std::string::npos ? std::nullopt : plain(v.substr(0, comma));
-    const auto hi = comma == std::string::npos ? std::nullopt : plain(v.substr(comma + 1));
-    if (!lo || !hi) return fmt::format("`gp.init_depth` takes two whole numbers, as in `[2, 6]`, found `{}`", value);
-    if (std::string m = set_gp_option(scratch, *o, *lo, *hi); !m.empty()) return m;
-  } else {
-    const auto v = plain(value);
-    if (!v) return fmt::format("`gp.{}` takes a plain number, found `{}`", key, value);
-    if (std::string m = set_gp_option(scratch, *o, *v); !m.empty()) return m;
+  if (item.generations) {
+    if (seen.count("generations") != 0)
+      sink.error(item.generations->where, "the number of generations is already given in `gp(...)`");
+    else if (auto v = to_whole(*item.generations, "`generations`", 1, kIntMax, sink))
+      s.generations = static_cast<int>(*v);
   }
-  if (spec.gp) spec.gp = scratch;
-  return {};
+  x.gp = s;
 }
 
 std::string check_gp(const eval::ExperimentSpec& spec) {
@@ -158,16 +174,7 @@ void resolve_gp_settings(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;
   for (auto it = r.begin(); it != r.end();) it = it->first.rfind("gp.", 0) == 0 ? r.erase(it) : std::next(it);
   if (!spec.gp) return;
-  const S& s = *spec.gp;
-  for (const GpOption& o : gp_options()) {
-    const std::string key = "gp." + std::string(o.name);
-    switch (o.kind) {
-      case K::Whole: r[key] = std::to_string(s.*o.whole); break;
-      case K::Fraction:
-      case K::Plain: r[key] = number_text(s.*o.real); break;
-      case K::Depths: r[key] = fmt::format("[{}, {}]", s.init_min_depth, s.init_max_depth); break;
-    }
-  }
+  for (const GpOption& o : gp_options()) r["gp." + std::string(o.name)] = option_text(o, *spec.gp);
 }
 
 }  // namespace esc::compiler

@@ -1,11 +1,14 @@
 #pragma once
-// The options of `evolve gp(...)` (runtime/evo/gp/gp.hpp's GpSettings): their names, how
-// they are read in a script and in `esc run --set gp.KEY=VALUE`, their resolved-settings
-// text, and the check that the settings suit every compared tree controller.
+// The options of `evolve gp(...)` (runtime/evo/gp/gp.hpp's GpSettings): one table for
+// scripts, `esc run --set gp.KEY=VALUE`, resolved settings (`gp.KEY`) and the
+// documentation; the reading of each option's value, and the check that the settings suit
+// every compared tree controller (the GP engine's own).
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "compiler/ast.hpp"
+#include "compiler/sink.hpp"
 #include "runtime/eval/experiment.hpp"
 
 namespace esc::compiler {
@@ -28,14 +31,12 @@ struct GpOption {
 [[nodiscard]] const GpOption* find_gp_option(std::string_view name);
 [[nodiscard]] std::vector<std::string> gp_option_names();
 
-// Sets option `o` to `value` (Depths: `value` and `hi`); a message when the value does not
-// fit its kind ("`crossover` must be in [0, 1], found 1.5"), else empty.
-[[nodiscard]] std::string set_gp_option(evo::gp::GpSettings& s, const GpOption& o, double value, double hi = 0);
+// Reads `v` (a script's value or a `--set gp.KEY=` value) as option `o` into `s`; reports
+// at `v` ("`crossover` is a probability in [0, 1], found 1.5").
+bool read_gp_option(evo::gp::GpSettings& s, const GpOption& o, const ast::Value& v, Sink& sink);
 
-// `--set gp.KEY=VALUE`: `key` without the `gp.` prefix, `value` trimmed. An experiment
-// without GP settings checks the value and ignores it (dependencies of a GP experiment get
-// the same --set).
-[[nodiscard]] std::string apply_gp_setting(eval::ExperimentSpec& spec, std::string_view key, std::string_view value);
+// `evolve gp(...) [for N generations]` -> x.gp; problems reported.
+void lower_gp_item(const ast::ExpItem& item, eval::ExperimentSpec& x, Sink& sink);
 
 // Empty when the GP settings (if any) suit every compared tree controller's primitive set
 // (GeneticProgramming accepts them), else the first problem, naming the controller.

@@ -113,9 +113,8 @@ class Lowerer {
     if (e.unit.empty()) return constant(e.number);
     const auto u = find_unit(e.unit);
     if (!u) {
-      std::string msg = fmt::format("unknown unit `{}`", e.unit);
-      if (auto best = closest(e.unit, unit_names())) msg += fmt::format("; did you mean `{}`?", *best);
-      Diagnostic& d = sink_.error(e.unit_where, msg);
+      Diagnostic& d = sink_.error(e.unit_where, fmt::format("unknown unit `{}`", e.unit));
+      suggest(d, e.unit, unit_names());
       if (e.unit.find('/') != std::string::npos)
         d.help.push_back("to divide by a name, put the quantity in parentheses: `(2cm) / speed`");
       return failed();
@@ -147,13 +146,10 @@ class Lowerer {
   }
 
   void unknown_name(const std::string& text, const SourceRange& where) {
-    std::string msg = fmt::format("unknown name `{}`", text);
-    const auto best = closest(text, known_names());
-    if (best) msg += fmt::format("; did you mean `{}`?", *best);
-    Diagnostic& d = sink_.error(where, msg);
-    if (!best) d.help.push_back("observables are listed in docs/language.md (`speed`, `forward_speed`, "
-                                "`wheel_diff`, `wheels[i]`, `ir[i]`, `light[i]`, `energy`, `collision`, `step`, "
-                                "`time`, `epoch`, `in(zone)`, `reached(light)`, ...)");
+    suggest(sink_.error(where, fmt::format("unknown name `{}`", text)), text, known_names(),
+            {.otherwise = "observables are listed in docs/language.md (`speed`, `forward_speed`, `wheel_diff`, "
+                          "`wheels[i]`, `ir[i]`, `light[i]`, `energy`, `collision`, `step`, `time`, `epoch`, "
+                          "`in(zone)`, `reached(light)`, ...)"});
   }
 
   Node index(const ast::Expr& e) {
@@ -196,19 +192,13 @@ class Lowerer {
     const std::vector<std::string>& names = zone ? scope_.arena->zones : scope_.arena->lights;
     for (std::size_t i = 0; i < names.size(); ++i)
       if (names[i] == arg.text) return load(o.first + static_cast<expr::Slot>(i));
-    std::string msg = fmt::format("unknown {} `{}` in arena `{}`", o.argument, arg.text, scope_.arena->arena);
-    const auto best = closest(arg.text, names);
-    if (best) msg += fmt::format("; did you mean `{}`?", *best);
-    Diagnostic& d = sink_.error(arg.where, msg);
-    if (!best) {
-      if (names.empty())
-        d.help.push_back(fmt::format("arena `{}` declares no {}; add one, as in `{}`", scope_.arena->arena, o.argument,
-                                     zone ? "zone base circle radius 10cm at (30cm, 30cm)"
-                                          : "light lamp at (30cm, 30cm)"));
-      else
-        d.help.push_back(fmt::format("{}s of arena `{}`: {}", o.argument, scope_.arena->arena,
-                                     quoted_list(names, ", ")));
-    }
+    const std::string otherwise =
+        names.empty() ? fmt::format("arena `{}` declares no {}; add one, as in `{}`", scope_.arena->arena, o.argument,
+                                    zone ? "zone base circle radius 10cm at (30cm, 30cm)" : "light lamp at (30cm, 30cm)")
+                      : fmt::format("{}s of arena `{}`: {}", o.argument, scope_.arena->arena, quoted_list(names, ", "));
+    suggest(sink_.error(arg.where, fmt::format("unknown {} `{}` in arena `{}`", o.argument, arg.text,
+                                               scope_.arena->arena)),
+            arg.text, names, {.otherwise = otherwise});
     return failed();
   }
 
@@ -223,11 +213,8 @@ class Lowerer {
             .help.push_back(fmt::format("index an array with brackets: `{}[0]`", e.text));
         return failed();
       }
-      std::string msg = fmt::format("unknown function `{}`", e.text);
-      const auto best = closest(e.text, function_names());
-      if (best) msg += fmt::format("; did you mean `{}`?", *best);
-      Diagnostic& d = sink_.error(e.unit_where, msg);
-      if (!best) d.help.push_back("functions: min, max, abs, sqrt, exp, log, tanh, sigmoid, clamp, pow");
+      suggest(sink_.error(e.unit_where, fmt::format("unknown function `{}`", e.text)), e.text, function_names(),
+              {.otherwise = "functions: min, max, abs, sqrt, exp, log, tanh, sigmoid, clamp, pow"});
       // Still check the arguments.
       for (const auto& a : e.args) (void)lower(*a);
       return failed();

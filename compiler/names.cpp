@@ -41,9 +41,12 @@ std::optional<std::string> closest(std::string_view word, const std::vector<std:
   return best;
 }
 
-std::optional<std::string> did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
-  if (auto c = closest(word, candidates)) return "did you mean `" + *c + "`?";
-  return std::nullopt;
+bool suggest(Diagnostic& d, std::string_view word, const std::vector<std::string>& candidates,
+             const Suggestion& how) {
+  const auto best = closest(word, candidates);
+  if (best) d.message += "; did you mean `" + std::string(how.prefix) + *best + "`?";
+  if ((!best || how.always) && !how.otherwise.empty()) d.help.push_back(how.otherwise);
+  return best.has_value();
 }
 
 std::string quoted_list(const std::vector<std::string>& items, std::string_view last_sep) {

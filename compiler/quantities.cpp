@@ -9,86 +9,55 @@
 
 namespace esc::compiler {
 
-Reading read_quantity(double value, std::string_view text, std::string_view unit, Dim want) {
-  Reading r;
-  if (unit.empty()) {
-    if (want == Dim::None || value == 0.0) {
-      r.ok = true;
-      r.si = value;
-      return r;
-    }
-    r.message = fmt::format("missing unit: expected {}", dim_phrase(want));
-    r.help = fmt::format("write `{}{}`", text, example_unit(want));
-    return r;
-  }
-  const auto u = find_unit(unit);
-  if (!u) {
-    r.message = fmt::format("unknown unit `{}`", unit);
-    if (auto best = closest(unit, unit_names()))
-      r.message += fmt::format("; did you mean `{}`?", *best);
-    else
-      r.help = "units are mm, cm, m, ms, s, deg, rad, mm/s, cm/s, m/s, mm/s^2, cm/s^2, m/s^2, g, kg";
-    if (unit.find('/') != std::string_view::npos)
-      r.help = fmt::format("to divide by a name, put the quantity in parentheses: `({}{}) / ...`", text,
-                           unit.substr(0, unit.find('/')));
-    return r;
-  }
-  if (u->dim != want) {
-    if (want == Dim::None)
-      r.message = fmt::format("expected a plain number, found {} (`{}`)", dim_phrase(u->dim), unit);
-    else
-      r.message = fmt::format("expected {}, found {} (`{}`)", dim_phrase(want), dim_phrase(u->dim), unit);
-    if (want != Dim::None) r.help = fmt::format("write `{}{}`", text, example_unit(want));
-    else r.help = fmt::format("write `{}`", text);
-    return r;
-  }
-  r.ok = true;
-  r.si = value * u->to_si;
-  return r;
-}
-
 std::optional<double> to_si(const ast::Quantity& q, Dim want, Sink& sink) {
   if (!q.finite) return std::nullopt;
-  const Reading r = read_quantity(q.value, q.text, q.unit, want);
-  if (r.ok) return r.si;
-  Diagnostic& d = sink.error(q.unit.empty() ? q.where : q.unit_where, r.message);
-  if (!r.help.empty()) d.help.push_back(r.help);
-  return std::nullopt;
-}
-
-Reading read_whole(double value, std::string_view text, std::string_view unit, std::string_view what,
-                   long long min, long long max) {
-  Reading r;
-  if (!unit.empty()) {
-    r.message = fmt::format("{} is a count and takes no unit, found `{}`", what, unit);
-    r.help = fmt::format("write `{}`", text);
-    return r;
+  if (q.unit.empty()) {
+    if (want == Dim::None || q.value == 0.0) return q.value;
+    sink.error(q.where, fmt::format("missing unit: expected {}", dim_phrase(want)))
+        .help.push_back(fmt::format("write `{}{}`", q.text, example_unit(want)));
+    return std::nullopt;
   }
-  if (value != std::floor(value)) {
-    r.message = fmt::format("{} must be a whole number, found `{}`", what, text);
-    return r;
+  const auto u = find_unit(q.unit);
+  if (!u) {
+    Diagnostic& d = sink.error(q.unit_where, fmt::format("unknown unit `{}`", q.unit));
+    suggest(d, q.unit, unit_names(),
+            {.otherwise = "units are mm, cm, m, ms, s, deg, rad, mm/s, cm/s, m/s, mm/s^2, cm/s^2, m/s^2, g, kg"});
+    if (const std::size_t slash = q.unit.find('/'); slash != std::string::npos)
+      d.help = {fmt::format("to divide by a name, put the quantity in parentheses: `({}{}) / ...`", q.text,
+                            q.unit.substr(0, slash))};
+    return std::nullopt;
   }
-  if (value < static_cast<double>(min)) {
-    r.message = fmt::format("{} must be at least {}, found {}", what, min, text);
-    return r;
+  if (u->dim != want) {
+    Diagnostic& d = sink.error(
+        q.unit_where, want == Dim::None
+                          ? fmt::format("expected a plain number, found {} (`{}`)", dim_phrase(u->dim), q.unit)
+                          : fmt::format("expected {}, found {} (`{}`)", dim_phrase(want), dim_phrase(u->dim), q.unit));
+    d.help.push_back(fmt::format("write `{}{}`", q.text, want == Dim::None ? "" : example_unit(want)));
+    return std::nullopt;
   }
-  if (value > static_cast<double>(max)) {
-    r.message = fmt::format("{} must be at most {}, found {}", what, max, text);
-    return r;
-  }
-  r.ok = true;
-  r.si = value;
-  return r;
+  return q.value * u->to_si;
 }
 
 std::optional<long long> to_whole(const ast::Quantity& q, std::string_view what, long long min, long long max,
                                   Sink& sink) {
   if (!q.finite) return std::nullopt;
-  const Reading r = read_whole(q.value, q.text, q.unit, what, min, max);
-  if (r.ok) return static_cast<long long>(r.si);
-  Diagnostic& d = sink.error(q.unit.empty() ? q.where : q.unit_where, r.message);
-  if (!r.help.empty()) d.help.push_back(r.help);
-  return std::nullopt;
+  std::string message;
+  if (!q.unit.empty()) {
+    sink.error(q.unit_where, fmt::format("{} is a count and takes no unit, found `{}`", what, q.unit))
+        .help.push_back(fmt::format("write `{}`", q.text));
+    return std::nullopt;
+  }
+  if (q.value != std::floor(q.value))
+    message = fmt::format("{} must be a whole number, found `{}`", what, q.text);
+  else if (q.value < static_cast<double>(min))
+    message = fmt::format("{} must be at least {}, found {}", what, min, q.text);
+  else if (q.value > static_cast<double>(max))
+    message = fmt::format("{} must be at most {}, found {}", what, max, q.text);
+  if (!message.empty()) {
+    sink.error(q.where, message);
+    return std::nullopt;
+  }
+  return static_cast<long long>(q.value);
 }
 
 bool split_value(std::string_view text, double& value, std::string& unit) {

@@ -310,10 +310,9 @@ void SyntaxErrorListener::parser_error(antlr4::Parser* parser, antlr4::Token* of
     return;
   }
   if (is_wordish(offending->getType()) && !ex.words.empty()) {
-    if (auto best = closest(offending->getText(), ex.words)) {
-      Diagnostic& d = sink_.error(where, "unknown word " + shown(offending) + "; did you mean `" +
-                                             *best + "`?");
-      d.help.push_back("expected " + ex.phrase + after);
+    if (closest(offending->getText(), ex.words)) {
+      suggest(sink_.error(where, "unknown word " + shown(offending)), offending->getText(), ex.words,
+              {.otherwise = "expected " + ex.phrase + after, .always = true});
       return;
     }
   }

@@ -1,178 +1,359 @@
 #include "runtime/sim/validate.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
-#include <string>
 
 namespace esc::sim {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& field, const char* what, double value) {
-  std::ostringstream msg;
-  msg << field << " must be " << what << " (got " << value << ")";
-  throw std::invalid_argument(msg.str());
+using D = Dimension;
+using O = Object;
+using R = Relation;
+
+// Rounding in a script's units (60cm is 0.6000000000000001 m) never puts a part outside.
+constexpr double kInsideTolerance_m = 1e-9;
+
+constexpr std::string_view kContactAlso[] = {"max_speed", "control_step", "body_radius", "wheel_base"};
+constexpr std::string_view kSweepAlso[] = {"size"};
+constexpr std::string_view kWheelBaseAlso[] = {"body_radius"};
+constexpr std::string_view kFitAlso[] = {"body_radius"};
+
+constexpr std::string_view kInside = "positions are measured from the arena's lower-left inner corner";
+constexpr std::string_view kStartClear = "a body placed inside a wall or an obstacle is pushed out by the solver";
+
+// In the order of `Rule` (checked by a static_assert below).
+constexpr RuleInfo kRules[] = {
+    {Rule::ArenaWidth, O::Arena, "size", {}, R::Above, D::Length, "arena.width_m", "an arena has an inside"},
+    {Rule::ArenaHeight, O::Arena, "size", {}, R::Above, D::Length, "arena.height_m", "an arena has an inside"},
+    {Rule::ObstacleCount, O::Arena, "block", {}, R::AtMost, D::Count, "arena obstacle count",
+     "Bullet's broadphase indexes objects with 16-bit handles"},
+    {Rule::BlockSize, O::Arena, "block", {}, R::Above, D::Length, "arena.boxes[{}].size_m", "a block has a body"},
+    {Rule::BlockInside, O::Arena, "block", {}, R::AtMost, D::Length, "arena.boxes[{}] beyond the walls", kInside},
+    {Rule::CylinderRadius, O::Arena, "cylinder", {}, R::Above, D::Length, "arena.cylinders[{}].radius_m",
+     "a cylinder has a body"},
+    {Rule::CylinderInside, O::Arena, "cylinder", {}, R::AtMost, D::Length, "arena.cylinders[{}] beyond the walls",
+     kInside},
+    {Rule::StartInside, O::Arena, "start", {}, R::AtMost, D::Length, "arena.fixed_start beyond the walls", kInside},
+    {Rule::ZoneCount, O::Arena, "zone", {}, R::AtMost, D::Count, "arena zone count",
+     "the observable frame holds one `in(zone)` slot per zone"},
+    {Rule::ZoneRadius, O::Arena, "zone", {}, R::Above, D::Length, "arena.zones[{}].radius_m", "a zone has an area"},
+    {Rule::ZoneSize, O::Arena, "zone", {}, R::Above, D::Length, "arena.zones[{}].size_m", "a zone has an area"},
+    {Rule::ZoneInside, O::Arena, "zone", {}, R::AtMost, D::Length, "arena.zones[{}] beyond the walls", kInside},
+    {Rule::ZoneFits, O::Arena, "zone", {}, R::AtMost, D::Length, "arena.zones[{}] larger than the arena",
+     "a zone placed at random lies inside the arena"},
+    {Rule::LightCount, O::Arena, "light", {}, R::AtMost, D::Count, "arena light count",
+     "the observable frame holds one `reached(light)` slot per light"},
+    {Rule::LightHeight, O::Arena, "light", {}, R::AtLeast, D::Length, "arena.lights[{}].height_m",
+     "a light stands at or above the sensors' plane"},
+    {Rule::LightIntensity, O::Arena, "light", {}, R::AtLeast, D::Number, "arena.lights[{}].intensity",
+     "a light adds to the readings"},
+    {Rule::LightZone, O::Arena, "light", {}, R::AtMost, D::Count, "arena.lights[{}].above_zone",
+     "a light stands above a zone of its arena (-1: a fixed light)"},
+    {Rule::LightInside, O::Arena, "light", {}, R::AtMost, D::Length, "arena.lights[{}].position_m beyond the walls",
+     kInside},
+    {Rule::SweepCell, O::Arena, "sweep_cell", {}, R::Above, D::Length, "arena.sweep_cell_m",
+     "the area-sweeping grid has cells"},
+    {Rule::SweepGrid, O::Arena, "sweep_cell", kSweepAlso, R::AtMost, D::Count, "arena.sweep_cell_m: sweep grid cells",
+     "the area-sweeping grid keeps one bit per cell for every robot"},
+    {Rule::ReachRadius, O::Arena, "reach_radius", {}, R::Above, D::Length, "arena.reach_radius_m",
+     "`reached(light)` needs a distance"},
+    {Rule::RobotFits, O::Placement, "size", kFitAlso, R::Above, D::Length, "arena side against the robot's diameter",
+     "the robot must fit between the walls"},
+    {Rule::StartClearOfWalls, O::Placement, "start", kFitAlso, R::AtLeast, D::Length,
+     "arena.fixed_start distance to a wall", kStartClear},
+    {Rule::StartClearOfCylinder, O::Placement, "start", kFitAlso, R::AtLeast, D::Length,
+     "arena.fixed_start distance to arena.cylinders[{}]", kStartClear},
+    {Rule::StartClearOfBlock, O::Placement, "start", kFitAlso, R::AtLeast, D::Length,
+     "arena.fixed_start distance to arena.boxes[{}]", kStartClear},
+    {Rule::BodyRadius, O::Robot, "body_radius", {}, R::Above, D::Length, "robot.body_radius_m", "a body has a size"},
+    {Rule::BodyHeight, O::Robot, "body_height", {}, R::Above, D::Length, "robot.body_height_m", "a body has a size"},
+    {Rule::Mass, O::Robot, "mass", {}, R::Above, D::Mass, "robot.mass_kg", "a body has a mass"},
+    {Rule::WheelBase, O::Robot, "wheel_base", {}, R::Above, D::Length, "robot.wheel_base_m",
+     "the wheels are apart"},
+    {Rule::WheelBaseWithinBody, O::Robot, "wheel_base", kWheelBaseAlso, R::AtMost, D::Length,
+     "robot.wheel_base_m against the body's diameter", "the wheels are under the body"},
+    {Rule::MaxSpeed, O::Robot, "max_speed", {}, R::Above, D::Speed, "robot.motor.max_speed_mps",
+     "command 1.0 drives forward"},
+    {Rule::TimeConstant, O::Robot, "time_constant", {}, R::AtLeast, D::Time, "robot.motor.time_constant_s",
+     "a lag is never negative"},
+    {Rule::MaxAccel, O::Robot, "max_accel", {}, R::Above, D::Acceleration, "robot.motor.max_accel_mps2",
+     "the wheels can speed up"},
+    {Rule::IrRange, O::Robot, "ir_range", {}, R::Above, D::Length, "robot.ir.range_m", "a sensor sees some distance"},
+    {Rule::IrApertureMin, O::Robot, "ir_aperture", {}, R::AtLeast, D::Angle, "robot.ir.aperture_rad",
+     "an aperture is never negative"},
+    {Rule::IrApertureMax, O::Robot, "ir_aperture", {}, R::Below, D::Angle, "robot.ir.aperture_rad",
+     "a sensor's rays point forward of the sensor"},
+    {Rule::IrRaysMin, O::Robot, "ir_rays", {}, R::AtLeast, D::Count, "robot.ir.rays", "a sensor casts a ray"},
+    {Rule::IrRaysMax, O::Robot, "ir_rays", {}, R::AtMost, D::Count, "robot.ir.rays",
+     "the IR model holds at most 64 rays per sensor"},
+    {Rule::IrNoise, O::Robot, "ir_noise", {}, R::AtLeast, D::Number, "robot.ir.noise_sd",
+     "a standard deviation is never negative"},
+    {Rule::ControlStep, O::Robot, "control_step", {}, R::Above, D::Time, "robot.control_step_s",
+     "time advances at every step"},
+    {Rule::SubstepsMin, O::Robot, "substeps", {}, R::AtLeast, D::Count, "robot.physics_substeps",
+     "physics advances at every control step"},
+    {Rule::SubstepsMax, O::Robot, "substeps", {}, R::AtMost, D::Count, "robot.physics_substeps",
+     "a control step stays a bounded amount of work"},
+    {Rule::LightHalfDistance, O::Robot, "light_half_distance", {}, R::Above, D::Length,
+     "robot.light.half_distance_m", "light fades with distance"},
+    {Rule::LightNoise, O::Robot, "light_noise", {}, R::AtLeast, D::Number, "robot.light.noise_sd",
+     "a standard deviation is never negative"},
+    {Rule::EnergyDischargeMin, O::Robot, "energy_discharge", {}, R::AtLeast, D::Count,
+     "robot.energy.discharge_steps", "the accumulator takes a step to empty"},
+    {Rule::EnergyDischargeMax, O::Robot, "energy_discharge", {}, R::AtMost, D::Count,
+     "robot.energy.discharge_steps", "the accumulator counts in 64-bit integer units"},
+    {Rule::EnergyRechargeMin, O::Robot, "energy_recharge", {}, R::AtLeast, D::Count, "robot.energy.recharge_steps",
+     "the accumulator takes a step to fill"},
+    {Rule::EnergyRechargeMax, O::Robot, "energy_recharge", {}, R::AtMost, D::Count, "robot.energy.recharge_steps",
+     "the accumulator counts in 64-bit integer units"},
+    {Rule::ContactLookAhead, O::Robot, "substeps", kContactAlso, R::AtMost, D::Length,
+     "robot.physics_substeps: travel of the body's rim per substep",
+     "the contact solver sees walls only 10 mm ahead of the moving body"},
+};
+
+constexpr bool in_rule_order() {
+  for (std::size_t i = 0; i < std::size(kRules); ++i)
+    if (static_cast<std::size_t>(kRules[i].rule) != i) return false;
+  return true;
+}
+static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
+static_assert(static_cast<std::size_t>(Rule::ContactLookAhead) + 1 == std::size(kRules));
+
+// True when `found` relates to `limit` as `rel` demands; NaN never does.
+bool holds(Relation rel, double found, double limit) {
+  switch (rel) {
+    case R::Above: return found > limit && std::isfinite(found);
+    case R::AtLeast: return found >= limit && std::isfinite(found);
+    case R::Below: return found < limit;
+    case R::AtMost: return found <= limit;
+  }
+  return false;
 }
 
-void positive(const std::string& field, double v) {
-  if (!(v > 0.0) || !std::isfinite(v)) fail(field, "positive and finite", v);
-}
-void non_negative(const std::string& field, double v) {
-  if (!(v >= 0.0) || !std::isfinite(v)) fail(field, "non-negative and finite", v);
-}
-void finite(const std::string& field, double v) {
-  if (!std::isfinite(v)) fail(field, "finite", v);
+class Checker {
+ public:
+  explicit Checker(std::vector<Problem>& out) : out_(out) {}
+
+  // Records a problem unless `found` relates to `limit` as the rule demands; true when it does.
+  bool require(Rule rule, double found, double limit, int index = -1) {
+    if (holds(rule_info(rule).relation, found, limit)) return true;
+    fail(rule, found, limit, index);
+    return false;
+  }
+  void fail(Rule rule, double found, double limit, int index) { out_.push_back(Problem{rule, index, found, limit}); }
+  // "Lies inside": `beyond` is how far a part reaches past the walls (NaN fails too).
+  bool inside(Rule rule, double beyond, int index) {
+    if (beyond <= kInsideTolerance_m) return true;
+    fail(rule, beyond, 0.0, index);
+    return false;
+  }
+
+ private:
+  std::vector<Problem>& out_;
+};
+
+// How far the axis-aligned extent [lo_x, hi_x] x [lo_y, hi_y] reaches past the walls (<= 0 inside).
+double beyond(const ArenaSpec& a, double lo_x, double hi_x, double lo_y, double hi_y) {
+  return std::max({-lo_x, hi_x - a.width_m, -lo_y, hi_y - a.height_m});
 }
 
-void inside_arena(const std::string& field, const ArenaSpec& arena, double lo_x, double hi_x,
-                  double lo_y, double hi_y) {
-  if (lo_x < 0.0 || hi_x > arena.width_m || lo_y < 0.0 || hi_y > arena.height_m) {
-    std::ostringstream msg;
-    msg << field << " must lie inside the arena [0, " << arena.width_m << "] x [0, "
-        << arena.height_m << "] m (it spans [" << lo_x << ", " << hi_x << "] x [" << lo_y
-        << ", " << hi_y << "] m)";
-    throw std::invalid_argument(msg.str());
+std::array<Vec2, 4> corners(const BoxObstacle& b) {
+  const double c = std::cos(b.angle_rad), s = std::sin(b.angle_rad);
+  const double hx = b.size_m.x / 2, hy = b.size_m.y / 2;
+  const std::array<Vec2, 4> d = {{{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}}};
+  std::array<Vec2, 4> k;
+  for (std::size_t i = 0; i < 4; ++i)
+    k[i] = {b.center_m.x + c * d[i].x - s * d[i].y, b.center_m.y + s * d[i].x + c * d[i].y};
+  return k;
+}
+
+// Distance from a point to a rotated box (0 inside).
+double distance_to_box(const BoxObstacle& b, double px, double py) {
+  const double c = std::cos(-b.angle_rad), s = std::sin(-b.angle_rad);
+  const double dx = px - b.center_m.x, dy = py - b.center_m.y;
+  const double lx = c * dx - s * dy, ly = s * dx + c * dy;
+  return std::hypot(std::max(std::abs(lx) - b.size_m.x / 2, 0.0), std::max(std::abs(ly) - b.size_m.y / 2, 0.0));
+}
+
+void check_obstacles(const ArenaSpec& a, bool sized, Checker& c) {
+  const std::size_t obstacles = a.boxes.size() + a.cylinders.size();
+  c.require(Rule::ObstacleCount, static_cast<double>(obstacles), static_cast<double>(kMaxObstacles),
+            static_cast<int>(kMaxObstacles));
+  for (std::size_t i = 0; i < a.boxes.size(); ++i) {
+    const BoxObstacle& b = a.boxes[i];
+    const int at = static_cast<int>(i);
+    if (!c.require(Rule::BlockSize, std::min(b.size_m.x, b.size_m.y), 0.0, at) || !sized) continue;
+    double reach = -std::numeric_limits<double>::infinity();
+    for (const Vec2& p : corners(b)) reach = std::max(reach, beyond(a, p.x, p.x, p.y, p.y));
+    if (!std::isfinite(b.angle_rad + b.center_m.x + b.center_m.y)) reach = std::numeric_limits<double>::quiet_NaN();
+    c.inside(Rule::BlockInside, reach, at);
+  }
+  for (std::size_t i = 0; i < a.cylinders.size(); ++i) {
+    const CylinderObstacle& k = a.cylinders[i];
+    const int at = static_cast<int>(i);
+    if (!c.require(Rule::CylinderRadius, k.radius_m, 0.0, at) || !sized) continue;
+    c.inside(Rule::CylinderInside,
+             beyond(a, k.center_m.x - k.radius_m, k.center_m.x + k.radius_m, k.center_m.y - k.radius_m,
+                    k.center_m.y + k.radius_m),
+             at);
   }
 }
 
-void validate_zones(const ArenaSpec& arena) {
-  if (arena.zones.size() > kMaxZones)
-    fail("arena zone count", "at most 8", static_cast<double>(arena.zones.size()));
-  for (std::size_t i = 0; i < arena.zones.size(); ++i) {
-    const Zone& z = arena.zones[i];
-    const std::string f = "arena.zones[" + std::to_string(i) + "]";
-    double hx = 0.0;
-    double hy = 0.0;
-    if (z.shape == ZoneShape::Circle) {
-      positive(f + ".radius_m", z.radius_m);
-      hx = hy = z.radius_m;
-    } else if (z.shape == ZoneShape::Rectangle) {
-      positive(f + ".size_m.x", z.size_m.x);
-      positive(f + ".size_m.y", z.size_m.y);
-      hx = 0.5 * z.size_m.x;
-      hy = 0.5 * z.size_m.y;
-    } else {
-      fail(f + ".shape", "Circle or Rectangle", static_cast<double>(z.shape));
-    }
-    if (z.random_position) {
-      // Only the size matters: the zone must fit.
-      inside_arena(f, arena, 0.0, 2 * hx, 0.0, 2 * hy);
-    } else {
-      finite(f + ".center_m.x", z.center_m.x);
-      finite(f + ".center_m.y", z.center_m.y);
-      inside_arena(f, arena, z.center_m.x - hx, z.center_m.x + hx, z.center_m.y - hy,
-                   z.center_m.y + hy);
-    }
+void check_zones(const ArenaSpec& a, bool sized, Checker& c) {
+  c.require(Rule::ZoneCount, static_cast<double>(a.zones.size()), static_cast<double>(kMaxZones),
+            static_cast<int>(kMaxZones));
+  for (std::size_t i = 0; i < a.zones.size(); ++i) {
+    const Zone& z = a.zones[i];
+    const int at = static_cast<int>(i);
+    const bool circle = z.shape == ZoneShape::Circle;
+    const double hx = circle ? z.radius_m : z.size_m.x / 2, hy = circle ? z.radius_m : z.size_m.y / 2;
+    if (!(circle ? c.require(Rule::ZoneRadius, z.radius_m, 0.0, at)
+                 : c.require(Rule::ZoneSize, std::min(z.size_m.x, z.size_m.y), 0.0, at)) ||
+        !sized)
+      continue;
+    if (z.random_position)
+      c.inside(Rule::ZoneFits, std::max(2 * hx - a.width_m, 2 * hy - a.height_m), at);
+    else
+      c.inside(Rule::ZoneInside, beyond(a, z.center_m.x - hx, z.center_m.x + hx, z.center_m.y - hy, z.center_m.y + hy),
+               at);
   }
 }
 
-void validate_lights(const ArenaSpec& arena) {
-  if (arena.lights.size() > kMaxLights)
-    fail("arena light count", "at most 4", static_cast<double>(arena.lights.size()));
-  for (std::size_t i = 0; i < arena.lights.size(); ++i) {
-    const LightSource& l = arena.lights[i];
-    const std::string f = "arena.lights[" + std::to_string(i) + "]";
-    non_negative(f + ".height_m", l.height_m);
-    non_negative(f + ".intensity", l.intensity);
-    if (l.above_zone < -1 || l.above_zone >= static_cast<int>(arena.zones.size())) {
-      std::ostringstream msg;
-      msg << f << ".above_zone must be -1 (a fixed light) or the index of a zone, 0.."
-          << static_cast<int>(arena.zones.size()) - 1 << " (got " << l.above_zone << ")";
-      throw std::invalid_argument(msg.str());
-    }
-    if (l.above_zone == -1) {
-      finite(f + ".position_m.x", l.position_m.x);
-      finite(f + ".position_m.y", l.position_m.y);
-      inside_arena(f + ".position_m", arena, l.position_m.x, l.position_m.x, l.position_m.y,
-                   l.position_m.y);
-    }
+void check_lights(const ArenaSpec& a, bool sized, Checker& c) {
+  c.require(Rule::LightCount, static_cast<double>(a.lights.size()), static_cast<double>(kMaxLights),
+            static_cast<int>(kMaxLights));
+  for (std::size_t i = 0; i < a.lights.size(); ++i) {
+    const LightSource& l = a.lights[i];
+    const int at = static_cast<int>(i);
+    c.require(Rule::LightHeight, l.height_m, 0.0, at);
+    c.require(Rule::LightIntensity, l.intensity, 0.0, at);
+    if (l.above_zone < -1 || l.above_zone >= static_cast<int>(a.zones.size()))
+      c.fail(Rule::LightZone, l.above_zone, static_cast<double>(a.zones.size()) - 1, at);
+    if (l.above_zone == -1 && sized)
+      c.inside(Rule::LightInside, beyond(a, l.position_m.x, l.position_m.x, l.position_m.y, l.position_m.y), at);
   }
+}
+
+[[noreturn]] void throw_first(const std::vector<Problem>& problems) {
+  throw std::invalid_argument(problems.front().message());
 }
 
 }  // namespace
 
+std::span<const RuleInfo> rules() noexcept { return kRules; }
+
+const RuleInfo& rule_info(Rule r) noexcept { return kRules[static_cast<std::size_t>(r)]; }
+
+std::string_view relation_words(Relation r) noexcept {
+  switch (r) {
+    case R::Above: return "above";
+    case R::AtLeast: return "at least";
+    case R::Below: return "below";
+    case R::AtMost: return "at most";
+  }
+  return "";
+}
+
+const RuleInfo& Problem::info() const noexcept { return rule_info(rule); }
+
+std::string Problem::message() const {
+  const RuleInfo& r = info();
+  std::string field(r.field);
+  if (const std::size_t at = field.find("{}"); at != std::string::npos) field.replace(at, 2, std::to_string(index));
+  std::ostringstream msg;
+  msg << field << " must be " << relation_words(r.relation) << ' ' << limit << " (got " << found << "): " << r.why;
+  return msg.str();
+}
+
+std::vector<Problem> arena_problems(const ArenaSpec& a) {
+  std::vector<Problem> out;
+  Checker c(out);
+  const bool wide = c.require(Rule::ArenaWidth, a.width_m, 0.0);
+  const bool sized = c.require(Rule::ArenaHeight, a.height_m, 0.0) && wide;
+  check_obstacles(a, sized, c);
+  if (a.fixed_start && sized) {
+    const Pose& p = *a.fixed_start;
+    const double reach = std::isfinite(p.heading_rad) ? beyond(a, p.x_m, p.x_m, p.y_m, p.y_m)
+                                                      : std::numeric_limits<double>::quiet_NaN();
+    c.inside(Rule::StartInside, reach, -1);
+  }
+  check_zones(a, sized, c);
+  check_lights(a, sized, c);
+  if (c.require(Rule::SweepCell, a.sweep_cell_m, 0.0) && sized) {
+    const double cells = std::ceil(a.width_m / a.sweep_cell_m) * std::ceil(a.height_m / a.sweep_cell_m);
+    c.require(Rule::SweepGrid, cells, kMaxSweepCells);
+  }
+  c.require(Rule::ReachRadius, a.reach_radius_m, 0.0);
+  return out;
+}
+
+std::vector<Problem> placement_problems(const ArenaSpec& a, const KheperaParams& robot) {
+  std::vector<Problem> out;
+  Checker c(out);
+  const double r = robot.body_radius_m;
+  if (!c.require(Rule::RobotFits, std::min(a.width_m, a.height_m), 2 * r) || !a.fixed_start) return out;
+  const Pose& p = *a.fixed_start;
+  if (!c.require(Rule::StartClearOfWalls, std::min({p.x_m, p.y_m, a.width_m - p.x_m, a.height_m - p.y_m}), r))
+    return out;
+  for (std::size_t i = 0; i < a.cylinders.size(); ++i) {
+    const CylinderObstacle& k = a.cylinders[i];
+    if (!c.require(Rule::StartClearOfCylinder,
+                   std::hypot(p.x_m - k.center_m.x, p.y_m - k.center_m.y) - k.radius_m, r, static_cast<int>(i)))
+      return out;
+  }
+  for (std::size_t i = 0; i < a.boxes.size(); ++i)
+    if (!c.require(Rule::StartClearOfBlock, distance_to_box(a.boxes[i], p.x_m, p.y_m), r, static_cast<int>(i)))
+      return out;
+  return out;
+}
+
+std::vector<Problem> robot_problems(const KheperaParams& robot) {
+  std::vector<Problem> out;
+  Checker c(out);
+  const bool body = c.require(Rule::BodyRadius, robot.body_radius_m, 0.0);
+  c.require(Rule::BodyHeight, robot.body_height_m, 0.0);
+  c.require(Rule::Mass, robot.mass_kg, 0.0);
+  const bool wheels = c.require(Rule::WheelBase, robot.wheel_base_m, 0.0);
+  if (body && wheels) c.require(Rule::WheelBaseWithinBody, robot.wheel_base_m, 2 * robot.body_radius_m);
+  const bool speed = c.require(Rule::MaxSpeed, robot.motor.max_speed_mps, 0.0);
+  c.require(Rule::TimeConstant, robot.motor.time_constant_s, 0.0);
+  c.require(Rule::MaxAccel, robot.motor.max_accel_mps2, 0.0);
+  c.require(Rule::IrRange, robot.ir.range_m, 0.0);
+  if (c.require(Rule::IrApertureMin, robot.ir.aperture_rad, 0.0))
+    c.require(Rule::IrApertureMax, robot.ir.aperture_rad, std::numbers::pi);
+  if (c.require(Rule::IrRaysMin, robot.ir.rays, 1)) c.require(Rule::IrRaysMax, robot.ir.rays, kMaxIrRays);
+  c.require(Rule::IrNoise, robot.ir.noise_sd, 0.0);
+  const bool step = c.require(Rule::ControlStep, robot.control_step_s, 0.0);
+  const bool substeps = c.require(Rule::SubstepsMin, robot.physics_substeps, 1) &&
+                        c.require(Rule::SubstepsMax, robot.physics_substeps, kMaxPhysicsSubsteps);
+  c.require(Rule::LightHalfDistance, robot.light.half_distance_m, 0.0);
+  c.require(Rule::LightNoise, robot.light.noise_sd, 0.0);
+  if (c.require(Rule::EnergyDischargeMin, robot.energy.discharge_steps, 1))
+    c.require(Rule::EnergyDischargeMax, robot.energy.discharge_steps, kMaxEnergySteps);
+  if (c.require(Rule::EnergyRechargeMin, robot.energy.recharge_steps, 1))
+    c.require(Rule::EnergyRechargeMax, robot.energy.recharge_steps, kMaxEnergySteps);
+  if (body && wheels && speed && step && substeps) {
+    // Fastest point of the body: centre speed plus rim speed, at most
+    // max_speed * max(1, 2 R / wheel_base) for commands in [-1, 1].
+    const double rim = robot.motor.max_speed_mps * std::max(1.0, 2.0 * robot.body_radius_m / robot.wheel_base_m);
+    c.require(Rule::ContactLookAhead, rim * robot.control_step_s / robot.physics_substeps, kMaxTravelPerSubstep_m);
+  }
+  return out;
+}
+
 void validate_arena(const ArenaSpec& arena) {
-  positive("arena.width_m", arena.width_m);
-  positive("arena.height_m", arena.height_m);
-  // Bullet's sweep-and-prune broadphase indexes objects with 16-bit handles.
-  constexpr std::size_t kMaxObstacles = 30000;
-  if (arena.boxes.size() + arena.cylinders.size() > kMaxObstacles)
-    fail("arena obstacle count", "at most 30000", static_cast<double>(arena.boxes.size() + arena.cylinders.size()));
-  for (std::size_t i = 0; i < arena.boxes.size(); ++i) {
-    const BoxObstacle& b = arena.boxes[i];
-    const std::string f = "arena.boxes[" + std::to_string(i) + "]";
-    finite(f + ".center_m.x", b.center_m.x);
-    finite(f + ".center_m.y", b.center_m.y);
-    positive(f + ".size_m.x", b.size_m.x);
-    positive(f + ".size_m.y", b.size_m.y);
-    finite(f + ".angle_rad", b.angle_rad);
-  }
-  for (std::size_t i = 0; i < arena.cylinders.size(); ++i) {
-    const CylinderObstacle& c = arena.cylinders[i];
-    const std::string f = "arena.cylinders[" + std::to_string(i) + "]";
-    finite(f + ".center_m.x", c.center_m.x);
-    finite(f + ".center_m.y", c.center_m.y);
-    positive(f + ".radius_m", c.radius_m);
-  }
-  if (arena.fixed_start) {
-    finite("arena.fixed_start.x_m", arena.fixed_start->x_m);
-    finite("arena.fixed_start.y_m", arena.fixed_start->y_m);
-    finite("arena.fixed_start.heading_rad", arena.fixed_start->heading_rad);
-  }
-  validate_zones(arena);
-  validate_lights(arena);
-  positive("arena.sweep_cell_m", arena.sweep_cell_m);
-  const double cells = std::ceil(arena.width_m / arena.sweep_cell_m) *
-                       std::ceil(arena.height_m / arena.sweep_cell_m);
-  if (cells > kMaxSweepCells) {
-    std::ostringstream msg;
-    msg << "arena.sweep_cell_m must be larger: " << arena.sweep_cell_m << " m cells make "
-        << cells << " cells, more than " << kMaxSweepCells;
-    throw std::invalid_argument(msg.str());
-  }
-  positive("arena.reach_radius_m", arena.reach_radius_m);
+  if (const auto problems = arena_problems(arena); !problems.empty()) throw_first(problems);
 }
 
 void validate_robot(const KheperaParams& robot) {
-  positive("robot.body_radius_m", robot.body_radius_m);
-  positive("robot.body_height_m", robot.body_height_m);
-  positive("robot.mass_kg", robot.mass_kg);
-  positive("robot.wheel_base_m", robot.wheel_base_m);
-  positive("robot.motor.max_speed_mps", robot.motor.max_speed_mps);
-  non_negative("robot.motor.time_constant_s", robot.motor.time_constant_s);
-  positive("robot.motor.max_accel_mps2", robot.motor.max_accel_mps2);
-  positive("robot.ir.range_m", robot.ir.range_m);
-  if (!(robot.ir.aperture_rad >= 0.0) || !(robot.ir.aperture_rad < std::numbers::pi))
-    fail("robot.ir.aperture_rad", "in [0, pi)", robot.ir.aperture_rad);
-  if (robot.ir.rays < 1 || robot.ir.rays > 64)
-    fail("robot.ir.rays", "between 1 and 64", robot.ir.rays);
-  non_negative("robot.ir.noise_sd", robot.ir.noise_sd);
-  positive("robot.control_step_s", robot.control_step_s);
-  if (robot.physics_substeps < 1 || robot.physics_substeps > 1000)
-    fail("robot.physics_substeps", "between 1 and 1000", robot.physics_substeps);
-  positive("robot.light.half_distance_m", robot.light.half_distance_m);
-  non_negative("robot.light.noise_sd", robot.light.noise_sd);
-  if (robot.energy.discharge_steps < 1 || robot.energy.discharge_steps > kMaxEnergySteps)
-    fail("robot.energy.discharge_steps", "between 1 and 10000000", robot.energy.discharge_steps);
-  if (robot.energy.recharge_steps < 1 || robot.energy.recharge_steps > kMaxEnergySteps)
-    fail("robot.energy.recharge_steps", "between 1 and 10000000", robot.energy.recharge_steps);
-  // Fastest point of the body: centre speed plus rim speed, at most
-  // max_speed * max(1, 2 R / wheel_base) for commands in [-1, 1].
-  const double dt_sub = robot.control_step_s / robot.physics_substeps;
-  const double travel = robot.motor.max_speed_mps *
-                        std::max(1.0, 2.0 * robot.body_radius_m / robot.wheel_base_m) * dt_sub;
-  if (travel > kMaxTravelPerSubstep_m) {
-    std::ostringstream msg;
-    msg << "robot.physics_substeps must be larger: the body moves up to " << travel
-        << " m per substep, more than the " << kMaxTravelPerSubstep_m
-        << " m the contact solver looks ahead (raise physics_substeps, or lower "
-           "motor.max_speed_mps or control_step_s)";
-    throw std::invalid_argument(msg.str());
-  }
+  if (const auto problems = robot_problems(robot); !problems.empty()) throw_first(problems);
 }
 
 }  // namespace esc::sim

@@ -165,7 +165,7 @@ TEST(GpSyntax, SetOverridesGpSettingsAndGenerationsOfBoth) {
   m = apply_setting(x, "gp.elitism", "51");
   EXPECT_NE(m.find("elitism"), std::string::npos) << m;
   m = apply_setting(x, "gp.population", "ten");
-  EXPECT_NE(m.find("takes a plain number"), std::string::npos) << m;
+  EXPECT_NE(m.find("`population` takes a whole number, found `ten`"), std::string::npos) << m;
   EXPECT_EQ(x.gp->population, before.gp->population);
   EXPECT_EQ(x.gp->max_depth, before.gp->max_depth);
   EXPECT_EQ(x.resolved_settings, before.resolved_settings);

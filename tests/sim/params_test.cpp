@@ -23,7 +23,7 @@ TEST(SimParams, InvalidValuesThrowNamingTheField) {
       {"arena.width_m", [](ArenaSpec& a, KheperaParams&) { a.width_m = 0.0; }},
       {"arena.height_m", [](ArenaSpec& a, KheperaParams&) { a.height_m = -1.0; }},
       {"arena.height_m", [nan](ArenaSpec& a, KheperaParams&) { a.height_m = nan; }},
-      {"arena.boxes[0].size_m.y",
+      {"arena.boxes[0].size_m",
        [](ArenaSpec& a, KheperaParams&) { a.boxes.push_back({{0.1, 0.1}, {0.1, 0.0}, 0.0}); }},
       {"arena.cylinders[1].radius_m",
        [](ArenaSpec& a, KheperaParams&) {

@@ -411,7 +411,7 @@ TEST(SimZones, InvalidParametersNameTheField) {
   a.zones[0] = circle(0.3, 0.3, -0.05);
   expect_invalid(a, ok, "arena.zones[0].radius_m");
   a.zones[0] = rectangle(0.3, 0.3, 0.1, 0.0);
-  expect_invalid(a, ok, "arena.zones[0].size_m.y");
+  expect_invalid(a, ok, "arena.zones[0].size_m");
   a.zones[0] = circle(0.3, 0.3, 0.4);
   a.zones[0].random_position = true;  // too big to fit anywhere
   expect_invalid(a, ok, "arena.zones[0]");

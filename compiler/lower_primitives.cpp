@@ -1,15 +1,14 @@
-// Genetic programming in scripts: `primitives` declarations, the primitive set of a
-// `tree(...)` controller, `evolve gp(...)`, and which algorithm evolves which controller.
+// Primitive sets: `primitives NAME { functions ... terminals ... }` -> GP primitives, and the
+// primitive set of each `tree(...)` controller.
+#include "compiler/lower_primitives.hpp"
+
 #include <algorithm>
 #include <iterator>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "compiler/gp_settings.hpp"
-#include "compiler/model.hpp"
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
 #include "compiler/units.hpp"
@@ -62,9 +61,9 @@ std::string_view use_of(gp::Type root) {
 
 }  // namespace
 
-const std::optional<Model::PrimitiveList>& Model::primitives(const ast::PrimitivesDecl& d) {
-  if (auto it = primitive_lists_.find(&d); it != primitive_lists_.end()) return it->second;
-  auto& slot = primitive_lists_[&d];
+const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::PrimitivesDecl& d) {
+  if (auto it = lists_.find(&d); it != lists_.end()) return it->second;
+  auto& slot = lists_[&d];
   if (d.poisoned) return slot;
   const int errors = sink_.errors();
   PrimitiveList list;
@@ -87,10 +86,8 @@ const std::optional<Model::PrimitiveList>& Model::primitives(const ast::Primitiv
     const auto* fn = std::find_if(std::begin(kFunctions), std::end(kFunctions),
                                   [&](const FunctionName& k) { return k.name == f.text; });
     if (fn == std::end(kFunctions)) {
-      std::string msg = fmt::format("unknown function `{}`", f.text);
-      const auto best = closest(f.text, function_words());
-      if (best) msg += fmt::format("; did you mean `{}`?", *best);
-      sink_.error(f.where, msg).help.push_back(function_help());
+      suggest(sink_.error(f.where, fmt::format("unknown function `{}`", f.text)), f.text, function_words(),
+              {.otherwise = function_help(), .always = true});
       continue;
     }
     list.items.push_back(gp::prim::function(fn->op));
@@ -139,7 +136,7 @@ const std::optional<Model::PrimitiveList>& Model::primitives(const ast::Primitiv
     if (name.empty()) continue;
     const auto o = expr::find_observable(name);
     if (!o) {
-      if (const auto s = symbols_.find(name); s != symbols_.end() && s->second.kind == DeclKind::Behavior) {
+      if (names_.find<ast::BehaviorDecl>(name) != nullptr) {
         sink_.error(t.name.where, fmt::format("`{}` is a behavior, not a terminal", name))
             .help.push_back("a tree controller lists its actions or behaviors itself: "
                             "`tree(actions [forward, left, right], primitives P)`");
@@ -149,12 +146,9 @@ const std::optional<Model::PrimitiveList>& Model::primitives(const ast::Primitiv
         sink_.error(t.where, "`erc` needs its range").help.push_back("write `erc(-1, 1)`");
         continue;
       }
-      std::string msg = fmt::format("unknown observable `{}`", name);
-      const auto best = closest(name, observables);
-      if (best) msg += fmt::format("; did you mean `{}`?", *best);
-      Diagnostic& diag = sink_.error(t.name.where, msg);
-      if (!best) diag.help.push_back("terminals are observables (`ir[0..7]`, `speed`, ...), numbers, `true`, "
-                                     "`false` and `erc(LO, HI)`");
+      suggest(sink_.error(t.name.where, fmt::format("unknown observable `{}`", name)), name, observables,
+              {.otherwise = "terminals are observables (`ir[0..7]`, `speed`, ...), numbers, `true`, `false` and "
+                            "`erc(LO, HI)`"});
       continue;
     }
     if (t.lo && !o->indexed) {
@@ -185,19 +179,18 @@ const std::optional<Model::PrimitiveList>& Model::primitives(const ast::Primitiv
   return slot;
 }
 
-bool Model::lower_tree(const ast::ControllerDecl& d, control::ControllerSpec& c) {
+bool PrimitivesLowering::tree(const ast::ControllerDecl& d, control::ControllerSpec& c) {
   if (!d.symbolic && !d.supervisor && d.tree_result.text != "wheels") {
     if (d.tree_result.text.empty()) return false;   // a syntax error, reported
-    std::string msg = fmt::format("unknown tree result `{}`", d.tree_result.text);
-    if (closest(d.tree_result.text, {"wheels", "actions", "behaviors"})) msg += "; did you mean `wheels`?";
-    sink_.error(d.tree_result.where, msg)
-        .help.push_back("a tree returns `wheels`, one of `actions [A, B, ...]` or one of `behaviors [A, B(0.5), ...]`");
+    suggest(sink_.error(d.tree_result.where, fmt::format("unknown tree result `{}`", d.tree_result.text)),
+            d.tree_result.text, {"wheels"},
+            {.otherwise = "a tree returns `wheels`, one of `actions [A, B, ...]` or one of `behaviors [A, B(0.5), ...]`",
+             .always = true});
     return false;
   }
-  const Symbol* s = lookup(d.primitives, DeclKind::Primitives);
-  if (s == nullptr) return false;
-  const auto* pd = static_cast<const ast::PrimitivesDecl*>(s->decl);
-  const auto& list = primitives(*pd);
+  const auto* pd = names_.lookup<ast::PrimitivesDecl>(d.primitives);
+  if (pd == nullptr) return false;
+  const auto& list = lower(*pd);
   if (!list) return false;
   const gp::Type root = root_of(c.head);
   std::vector<gp::Primitive> items = list->items;
@@ -223,67 +216,6 @@ bool Model::lower_tree(const ast::ControllerDecl& d, control::ControllerSpec& c)
   }
   c.primitives_name = pd->name.text;
   return true;
-}
-
-void Model::lower_gp(const ast::ExpItem& item, eval::ExperimentSpec& x) {
-  gp::GpSettings s = x.gp.value_or(gp::GpSettings{});
-  std::map<std::string, const ast::EsOption*> seen;
-  for (const ast::EsOption& o : item.options) {
-    const std::string& n = o.name.text;
-    if (n.empty()) continue;
-    const GpOption* opt = find_gp_option(n);
-    if (opt == nullptr) {
-      std::string msg = fmt::format("unknown GP option `{}`", n);
-      const auto best = closest(n, gp_option_names());
-      if (best) msg += fmt::format("; did you mean `{}`?", *best);
-      Diagnostic& diag = sink_.error(o.name.where, msg);
-      if (!best) diag.help.push_back(fmt::format("GP options: {}", fmt::join(gp_option_names(), ", ")));
-      continue;
-    }
-    if (auto [it, fresh] = seen.try_emplace(n, &o); !fresh) {
-      sink_.error(o.where, fmt::format("`{}` is already given", n))
-          .notes.emplace_back(it->second->where, "first given here");
-      continue;
-    }
-    const bool range = opt->kind == GpOption::Kind::Depths;
-    if (range != o.lo.has_value() || (!range && !o.value)) {
-      if (range)
-        sink_.error(o.where, "`init_depth` takes a range of depths").help.push_back("write `init_depth [2, 6]`");
-      else
-        sink_.error(o.where, fmt::format("`{}` needs a value", n)).help.push_back(fmt::format("write `{} 7`", n));
-      continue;
-    }
-    const auto v = to_si(range ? *o.lo : *o.value, Dim::None, sink_);
-    const auto hi = range ? to_si(*o.hi, Dim::None, sink_) : std::optional<double>(0.0);
-    if (!v || !hi) continue;
-    if (std::string m = set_gp_option(s, *opt, *v, *hi); !m.empty()) sink_.error(o.where, m);
-  }
-  if (item.generations) {
-    if (seen.count("generations") != 0)
-      sink_.error(item.generations->where, "the number of generations is already given in `gp(...)`");
-    else if (auto v = to_whole(*item.generations, "`generations`", 1, std::numeric_limits<int>::max(), sink_))
-      s.generations = static_cast<int>(*v);
-  }
-  x.gp = s;
-}
-
-void Model::check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,
-                             const std::vector<const ast::Name*>& compared, const ast::ExpItem* es_item,
-                             const ast::ExpItem* gp_item) {
-  for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i) {
-    const control::ControllerSpec& c = x.controllers[i];
-    if (c.is_tree() && gp_item == nullptr) {
-      sink_.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
-                                                  "`evolve gp(...)` to evolve it", c.name, d.name.text))
-          .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
-    } else if (!c.is_tree() && gp_item != nullptr && es_item == nullptr) {
-      sink_.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
-                                                  "(`evolve gp`)", c.name, d.name.text))
-          .help.push_back("networks are evolved by the ES: add `evolve es(mu 30, lambda 150) for 250 generations`");
-    }
-  }
-  if (gp_item != nullptr)
-    if (std::string m = check_gp(x); !m.empty()) sink_.error(gp_item->where, m);
 }
 
 }  // namespace esc::compiler

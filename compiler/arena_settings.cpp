@@ -1,0 +1,49 @@
+#include "compiler/arena_settings.hpp"
+
+#include <fmt/format.h>
+
+#include "compiler/quantities.hpp"
+
+namespace esc::compiler {
+
+const std::vector<ArenaSetting>& arena_settings() {
+  static const std::vector<ArenaSetting> table = {
+      {"sweep_cell", &ast::ArenaDecl::sweep_cells, &sim::ArenaSpec::sweep_cell_m,
+       "side of the area-sweeping grid's square cells (`new_cell`, `cells_visited`)"},
+      {"reach_radius", &ast::ArenaDecl::reach_radii, &sim::ArenaSpec::reach_radius_m,
+       "`reached(light)`: the robot's centre within this distance of the light"},
+  };
+  return table;
+}
+
+const ArenaSetting* find_arena_setting(std::string_view name) {
+  for (const ArenaSetting& s : arena_settings())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+std::vector<std::string> arena_setting_names() {
+  std::vector<std::string> v;
+  for (const ArenaSetting& s : arena_settings()) v.emplace_back(s.name);
+  return v;
+}
+
+void resolve_arena_settings(eval::ExperimentSpec& spec) {
+  auto& r = spec.resolved_settings;
+  const sim::ArenaSpec& a = spec.arena;
+  r["arena"] = spec.arena_name;
+  r["arena.size"] = fmt::format("{} m x {} m", number_text(a.width_m), number_text(a.height_m));
+  r["arena.cylinders"] = std::to_string(a.cylinders.size());
+  r["arena.blocks"] = std::to_string(a.boxes.size());
+  r["arena.lights"] = std::to_string(a.lights.size());
+  r["arena.zones"] = std::to_string(a.zones.size());
+  for (const ArenaSetting& s : arena_settings())
+    r["arena." + std::string(s.name)] = fmt::format("{} m", number_text(a.*s.value));
+  if (a.fixed_start)
+    r["arena.start"] = fmt::format("({} m, {} m) heading {} rad", number_text(a.fixed_start->x_m),
+                                   number_text(a.fixed_start->y_m), number_text(a.fixed_start->heading_rad));
+  else
+    r["arena.start"] = "random";
+}
+
+}  // namespace esc::compiler

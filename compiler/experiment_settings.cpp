@@ -1,0 +1,62 @@
+#include "compiler/experiment_settings.hpp"
+
+#include <limits>
+
+#include "compiler/setting_values.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+using X = eval::ExperimentSpec;
+using Row = ExperimentSetting;
+constexpr long long kIntMax = std::numeric_limits<int>::max();
+
+// A count of at least 1 into `field`.
+bool read_positive(int X::*field, const Row& r, X& x, const ast::Value& v, Sink& sink) {
+  const auto n = read_count(v, r.key, 1, kIntMax, sink);
+  if (n) x.*field = static_cast<int>(*n);
+  return n.has_value();
+}
+
+}  // namespace
+
+const std::vector<ExperimentSetting>& experiment_settings() {
+  static const std::vector<ExperimentSetting> table = {
+      {"epochs", "evaluations of a controller per generation, each from a new start",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) { return read_positive(&X::epochs, r, x, v, k); },
+       [](const X& x) { return std::to_string(x.epochs); }},
+      {"steps", "control steps per epoch, at most",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) { return read_positive(&X::steps, r, x, v, k); },
+       [](const X& x) { return std::to_string(x.steps); }},
+      {"runs", "independent runs of each compared controller",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) { return read_positive(&X::runs, r, x, v, k); },
+       [](const X& x) { return std::to_string(x.runs); }},
+      {"seed", "the master seed every run's streams derive from (0 .. 2^53)",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         // Read through a double, so at most 2^53, where every whole number is exact.
+         const auto n = read_count(v, r.key, 0, 1LL << 53, k);
+         if (n) x.seed = static_cast<std::uint64_t>(*n);
+         return n.has_value();
+       },
+       [](const X& x) { return std::to_string(x.seed); }},
+      {"generations", "generations of the ES and of the GP",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         const auto n = read_count(v, r.key, 1, kIntMax, k);
+         if (!n) return false;
+         x.es.generations = static_cast<int>(*n);
+         if (x.gp) x.gp->generations = static_cast<int>(*n);
+         return true;
+       },
+       [](const X& x) { return std::to_string(x.es_generations()); }},
+  };
+  return table;
+}
+
+const ExperimentSetting* find_experiment_setting(std::string_view key) {
+  for (const ExperimentSetting& s : experiment_settings())
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
+}  // namespace esc::compiler

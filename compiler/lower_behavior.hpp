@@ -1,0 +1,42 @@
+#pragma once
+// Lowers `behavior` declarations: a hand-written behavior to control::Behavior (its wheel
+// expressions, resolved in an experiment's arena when given), an evolved one
+// (`= evolved from experiment E controller C`) to the declarations it names.
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "compiler/ast.hpp"
+#include "compiler/lower_arena.hpp"
+#include "compiler/resolver.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/control/controller_spec.hpp"
+
+namespace esc::compiler {
+
+// `behavior b = evolved from experiment E controller C`, resolved.
+struct EvolvedRef {
+  const ast::ExperimentDecl* experiment = nullptr;
+  const ast::ControllerDecl* controller = nullptr;
+};
+
+class BehaviorLowering {
+ public:
+  BehaviorLowering(Sink& sink, Resolver& names, ArenaLowering& arenas) : sink_(sink), names_(names), arenas_(arenas) {}
+
+  // With an arena, `in(zone)` / `reached(light)` resolve in it (memoised per pair; reported
+  // once, without the arena, for what does not depend on it). Null for an evolved behavior.
+  const std::optional<control::Behavior>& lower(const ast::BehaviorDecl& d, const ast::ArenaDecl* arena = nullptr);
+  // An evolved behavior's experiment and controller (reported once); null when wrong or
+  // when `d` is hand-written.
+  const std::optional<EvolvedRef>& evolved(const ast::BehaviorDecl& d);
+
+ private:
+  Sink& sink_;
+  Resolver& names_;
+  ArenaLowering& arenas_;
+  std::map<std::pair<const ast::BehaviorDecl*, const ast::ArenaDecl*>, std::optional<control::Behavior>> behaviors_;
+  std::map<const ast::BehaviorDecl*, std::optional<EvolvedRef>> evolved_;
+};
+
+}  // namespace esc::compiler

@@ -1,0 +1,259 @@
+// Controllers: `controller NAME = mlp(...) | elman(...) | symbolic(...) | supervisor(...) |
+// tree(...)` -> control::ControllerSpec.
+#include "compiler/lower_controller.hpp"
+
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "compiler/names.hpp"
+#include "compiler/quantities.hpp"
+#include "runtime/expr/observables.hpp"
+
+namespace esc::compiler {
+
+const std::vector<Supervised>& ControllerLowering::supervised(const ast::ControllerDecl& d) {
+  if (auto it = supervised_.find(&d); it != supervised_.end()) return it->second;
+  auto& out = supervised_[&d];
+  for (const ast::SupervisedRef& r : d.behaviors) {
+    if (const auto* lib = names_.find<ast::LibraryDecl>(r.name.text)) {
+      if (!r.args.empty()) {
+        sink_.error(r.where, fmt::format("`{}` is a library and takes no arguments", r.name.text))
+            .notes.emplace_back(lib->name.where, fmt::format("`{}` is declared here", r.name.text));
+        supervised_failed_.insert(&d);
+        continue;
+      }
+      if (lib->poisoned) {
+        supervised_failed_.insert(&d);
+        continue;
+      }
+      if (lib->members.empty())
+        sink_.error(r.where, fmt::format("library `{}` has no behaviors", r.name.text))
+            .notes.emplace_back(lib->name.where, fmt::format("`{}` is declared here", r.name.text));
+      for (const std::string& m : lib->members) {
+        const auto* member = names_.find<ast::BehaviorDecl>(m);
+        if (member == nullptr || member->poisoned) {
+          supervised_failed_.insert(&d);
+          continue;
+        }
+        out.push_back({&r, member});
+      }
+      continue;
+    }
+    const auto* bd = names_.lookup<ast::BehaviorDecl>(r.name);
+    if (bd == nullptr) {
+      supervised_failed_.insert(&d);
+      continue;
+    }
+    out.push_back({&r, bd});
+  }
+  return out;
+}
+
+const std::optional<control::ControllerSpec>& ControllerLowering::lower(const ast::ControllerDecl& d) {
+  if (auto it = controllers_.find(&d); it != controllers_.end()) return it->second;
+  auto& slot = controllers_[&d];
+  if (d.poisoned) return slot;
+  const int errors = sink_.errors();
+  control::ControllerSpec c;
+  c.name = d.name.text;
+  c.head = d.supervisor ? control::Head::Supervisor : d.symbolic ? control::Head::Symbolic : control::Head::Classical;
+  c.mlp.kind = d.elman ? control::NetworkKind::Elman : control::NetworkKind::Mlp;
+  const bool chooses = d.symbolic || d.supervisor;   // no `wheels` output
+  auto& used = used_[&d];
+  used.clear();
+
+  const std::vector<std::string> observables = expr::observable_names();
+  for (const ast::Input& in : d.inputs) {
+    const auto o = expr::find_observable(in.name.text);
+    if (!o) {
+      suggest(sink_.error(in.name.where, fmt::format("unknown input `{}`", in.name.text)), in.name.text, observables,
+              {.otherwise = "inputs are observables, such as `ir[0..7]`, `speed` or `wheels[0]`"});
+      continue;
+    }
+    if (!in.lo) {
+      for (expr::Slot i = 0; i < o->count; ++i) c.mlp.inputs.push_back(o->first + i);
+      continue;
+    }
+    if (!o->indexed) {
+      sink_.error(in.where, fmt::format("`{}` is a single value and cannot be indexed", in.name.text));
+      continue;
+    }
+    const auto lo = to_whole(*in.lo, "an index", 0, o->count - 1, sink_);
+    std::optional<long long> hi = lo;
+    if (in.hi) hi = to_whole(*in.hi, "an index", 0, o->count - 1, sink_);
+    if (!lo || !hi) continue;
+    if (*hi < *lo) {
+      sink_.error(in.where, fmt::format("empty range `{}[{}..{}]`: the first index must not exceed the last",
+                                        in.name.text, *lo, *hi));
+      continue;
+    }
+    for (long long i = *lo; i <= *hi; ++i) c.mlp.inputs.push_back(o->first + static_cast<expr::Slot>(i));
+  }
+
+  bool has_wheels = false;
+  const std::vector<std::string> layer_words = {"hidden", "wheels"};
+  for (std::size_t i = 0; i < d.layers.size(); ++i) {
+    const ast::Layer& l = d.layers[i];
+    if (l.word.text == "hidden") {
+      if (!l.size) {
+        sink_.error(l.where, "a hidden layer needs a size").help.push_back("write `hidden 20`");
+        continue;
+      }
+      if (const auto n = to_whole(*l.size, "a hidden layer's size", 1, 100000, sink_)) c.mlp.hidden.push_back(static_cast<int>(*n));
+    } else if (l.word.text == "wheels") {
+      if (l.size) sink_.error(l.size->where, "the `wheels` output takes no size: it is always 2 wheel commands");
+      if (d.symbolic) {
+        sink_.error(l.where, "a symbolic controller's network has no `wheels` output: its outputs choose among the actions")
+            .help.push_back("write `symbolic(mlp(ir[0..7] -> hidden 14), actions [forward, left, right])`");
+      } else if (d.supervisor) {
+        sink_.error(l.where, "a supervisor's network has no `wheels` output: its outputs choose among the behaviors")
+            .help.push_back("write `supervisor(elman(ir[0..7] -> hidden 5), behaviors [forward(0.5), left(0.3)])`");
+      } else if (i + 1 != d.layers.size()) {
+        sink_.error(l.where, "`wheels` must be the last layer");
+      }
+      has_wheels = true;
+    } else if (!l.word.text.empty()) {
+      suggest(sink_.error(l.word.where, fmt::format("unknown layer `{}`", l.word.text)), l.word.text, layer_words,
+              {.otherwise = "layers are `hidden N` and, last, `wheels`"});
+    }
+  }
+  if (d.elman && sink_.errors() == errors) {
+    std::vector<const ast::Layer*> hidden;
+    for (const ast::Layer& l : d.layers)
+      if (l.word.text == "hidden") hidden.push_back(&l);
+    if (hidden.empty())
+      sink_.error(d.kind_where, "an Elman network needs exactly one hidden layer, found none")
+          .help.push_back("write `elman(ir[0..7] -> hidden 5 -> wheels)`");
+    else if (hidden.size() > 1)
+      sink_.error(hidden[1]->where,
+                  fmt::format("an Elman network has exactly one hidden layer, found {}", hidden.size()))
+          .help.push_back("use `mlp(...)` for several hidden layers");
+  }
+  if (!d.tree && !chooses && !has_wheels && sink_.errors() == errors)
+    sink_.error(d.kind_where, "a classical controller must end with `-> wheels`")
+        .help.push_back("write `mlp(ir[0..7] -> hidden 20 -> wheels)`");
+
+  std::set<std::string> listed;
+  for (const ast::Name& a : d.actions) {
+    if (!listed.insert(a.text).second) {
+      sink_.error(a.where, fmt::format("action `{}` is listed twice", a.text));
+      continue;
+    }
+    const auto* bd = names_.lookup<ast::BehaviorDecl>(a);
+    if (bd == nullptr) continue;
+    if (bd->evolved) {
+      sink_.error(a.where, fmt::format("`{}` is an evolved controller: it can be a supervisor's behavior, not a "
+                                       "symbolic controller's action", a.text))
+          .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", a.text));
+      continue;
+    }
+    const auto& b = behaviors_.lower(*bd);
+    if (b) {
+      c.actions.push_back(*b);
+      used.push_back(bd);
+    }
+  }
+  bool behaviors_ok = supervised_failed_.count(&d) == 0;
+  std::map<std::string, int> labels;   // a behavior listed twice (a library repeated) gets `_2`, `_3`, ...
+  for (const Supervised& sv : supervised(d)) {
+    const ast::SupervisedRef& r = *sv.ref;
+    const ast::BehaviorDecl* bd = sv.decl;
+    std::string name = bd->library.empty() ? bd->name.text : bd->member;
+    if (const int n = ++labels[name]; n > 1) name += fmt::format("_{}", n);
+    if (bd->evolved) {
+      if (!r.args.empty()) {
+        sink_.error(r.where, fmt::format("`{}` is an evolved controller and takes no arguments", bd->name.text))
+            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
+        behaviors_ok = false;
+        continue;
+      }
+      const auto& e = behaviors_.evolved(*bd);
+      if (!e) {
+        behaviors_ok = false;
+        continue;
+      }
+      const auto& sub = lower(*e->controller);   // null while in a cycle (reported)
+      if (!sub) {
+        behaviors_ok = false;
+        continue;
+      }
+      if (sub->is_tree()) {
+        sink_.error(r.where, fmt::format("`{}` is evolved by tree controller `{}`: evolved trees cannot be "
+                                              "supervised yet, only evolved networks", bd->name.text, sub->name))
+            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
+        behaviors_ok = false;
+        continue;
+      }
+      c.behaviors.push_back({name, control::FixedController{
+                                              std::make_shared<const control::ControllerSpec>(*sub), {}}});
+      continue;
+    }
+    const auto& b = behaviors_.lower(*bd);
+    if (!b) {
+      behaviors_ok = false;
+      continue;
+    }
+    if (r.args.size() != b->params.size()) {
+      Diagnostic& diag = sink_.error(
+          r.where, fmt::format("behavior `{}` takes {} argument{}, found {}", bd->name.text, b->params.size(),
+                               b->params.size() == 1 ? "" : "s", r.args.size()));
+      diag.notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
+      if (!b->params.empty())
+        diag.help.push_back(fmt::format("give a constant for each parameter: `{}({})`", bd->name.text,
+                                        fmt::join(b->params, ", ")));
+      behaviors_ok = false;
+      continue;
+    }
+    control::BehaviorCall call{*b, {}};
+    std::string label = name;
+    std::vector<std::string> shown;
+    bool args_ok = true;
+    for (const ast::Quantity& q : r.args) {
+      if (!q.finite) {
+        args_ok = false;
+        continue;
+      }
+      const auto v = to_si(q, Dim::None, sink_);
+      if (!v) {
+        args_ok = false;
+        continue;
+      }
+      call.args.push_back(*v);
+      shown.push_back(number_text(*v));
+    }
+    if (!args_ok) {
+      behaviors_ok = false;
+      continue;
+    }
+    if (!r.args.empty()) label += fmt::format("({})", fmt::join(shown, ", "));
+    c.behaviors.push_back({label, std::move(call)});
+    used.push_back(bd);
+  }
+  if (!d.tree && c.mlp.inputs.empty() && sink_.errors() == errors)
+    sink_.error(d.kind_where, "a controller needs at least one input");
+  if (d.tree && sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok && !primitives_.tree(d, c))
+    behaviors_ok = false;
+  if (sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok) slot = std::move(c);
+  return slot;
+}
+
+bool ControllerLowering::bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena) {
+  const auto it = used_.find(&d);
+  if (it == used_.end()) return true;
+  const auto& decls = it->second;
+  bool ok = true;
+  std::size_t k = 0;
+  auto rebind = [&](control::Behavior& b) {
+    if (k >= decls.size()) return;
+    const auto& bound = behaviors_.lower(*decls[k++], &arena);
+    if (bound) b = *bound;
+    else ok = false;
+  };
+  for (control::Behavior& b : c.actions) rebind(b);
+  for (control::SupervisedBehavior& s : c.behaviors)
+    if (auto* call = std::get_if<control::BehaviorCall>(&s.what)) rebind(call->behavior);
+  return ok;
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,51 @@
+#pragma once
+// Lowers `controller` declarations to control::ControllerSpec: the network (inputs, layers,
+// head) or the tree, the actions and supervised behaviors (libraries expanded), and, per
+// experiment, the behaviors again in that experiment's arena.
+#include <map>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "compiler/ast.hpp"
+#include "compiler/lower_behavior.hpp"
+#include "compiler/lower_primitives.hpp"
+#include "compiler/resolver.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/control/controller_spec.hpp"
+
+namespace esc::compiler {
+
+// One entry of a supervisor's behavior list, a library expanded into its members.
+struct Supervised {
+  const ast::SupervisedRef* ref;
+  const ast::BehaviorDecl* decl;
+};
+
+class ControllerLowering {
+ public:
+  ControllerLowering(Sink& sink, Resolver& names, BehaviorLowering& behaviors, PrimitivesLowering& primitives)
+      : sink_(sink), names_(names), behaviors_(behaviors), primitives_(primitives) {}
+
+  // Memoised; null when the controller (or a controller it supervises) is wrong (reported).
+  const std::optional<control::ControllerSpec>& lower(const ast::ControllerDecl& d);
+  // A supervisor's behavior list with libraries expanded into their members, in order;
+  // entries that fail to resolve are reported (once) and left out.
+  const std::vector<Supervised>& supervised(const ast::ControllerDecl& d);
+  // Lowers the controller's behaviors (actions, supervised behaviors) again in `arena`;
+  // false when one fails (reported).
+  bool bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena);
+
+ private:
+  Sink& sink_;
+  Resolver& names_;
+  BehaviorLowering& behaviors_;
+  PrimitivesLowering& primitives_;
+  std::map<const ast::ControllerDecl*, std::optional<control::ControllerSpec>> controllers_;
+  // The behavior declarations a controller uses, in the order of its actions / behaviors.
+  std::map<const ast::ControllerDecl*, std::vector<const ast::BehaviorDecl*>> used_;
+  std::map<const ast::ControllerDecl*, std::vector<Supervised>> supervised_;
+  std::set<const ast::ControllerDecl*> supervised_failed_;
+};
+
+}  // namespace esc::compiler

@@ -1,0 +1,62 @@
+#pragma once
+// Lowers `experiment` declarations to eval::ExperimentSpec: every item (arena, robot and its
+// inline settings, fitness, epochs, steps, runs, seed, `evolve es/gp`, `compare`,
+// `start/evaluate from`), the checks that involve several declarations (the robot in the
+// arena, which algorithm evolves which controller, stored controllers to start from), the
+// dependencies on other experiments' evolved controllers and their cycles.
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "compiler/ast.hpp"
+#include "compiler/lower_arena.hpp"
+#include "compiler/lower_behavior.hpp"
+#include "compiler/lower_controller.hpp"
+#include "compiler/lower_fitness.hpp"
+#include "compiler/lower_robot.hpp"
+#include "compiler/resolver.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/eval/experiment.hpp"
+
+namespace esc::compiler {
+
+// The lowering of every other kind of declaration, which an experiment puts together.
+struct Lowerings {
+  ArenaLowering& arenas;
+  RobotLowering& robots;
+  BehaviorLowering& behaviors;
+  FitnessLowering& fitnesses;
+  ControllerLowering& controllers;
+};
+
+class ExperimentLowering {
+ public:
+  ExperimentLowering(Sink& sink, Resolver& names, const Lowerings& parts) : sink_(sink), names_(names), parts_(parts) {}
+
+  // Memoised; nullopt when the experiment is wrong (reported).
+  const std::optional<eval::ExperimentSpec>& lower(const ast::ExperimentDecl& d);
+  // Reports every cycle of experiments that use each other's evolved controllers or start
+  // from each other.
+  void check_cycles();
+
+ private:
+  using Items = std::map<ast::ExpItem::Kind, const ast::ExpItem*>;
+  // `start from` / `evaluate from experiment E`: E compares every controller compared
+  // here, and an evaluation evolves nothing (reported).
+  void check_start_from(const ast::ExperimentDecl& from, const Items& first);
+  // Every compared controller has its algorithm (`es` for networks, `gp` for trees), and
+  // the GP settings suit every tree's primitives (reported at `compared` / `gp_item`).
+  void check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,
+                        const std::vector<const ast::Name*>& compared, const ast::ExpItem* es_item,
+                        const ast::ExpItem* gp_item);
+  // The evolved controllers the compared controllers supervise: which experiment's
+  // controller fills which supervised behavior.
+  void add_dependencies(eval::ExperimentSpec& x, const std::vector<const ast::ControllerDecl*>& compared);
+
+  Sink& sink_;
+  Resolver& names_;
+  Lowerings parts_;
+  std::map<const ast::ExperimentDecl*, std::optional<eval::ExperimentSpec>> experiments_;
+};
+
+}  // namespace esc::compiler

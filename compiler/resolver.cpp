@@ -1,0 +1,89 @@
+#include "compiler/resolver.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "compiler/names.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+// In the order of Decl's alternatives.
+constexpr std::string_view kKindNames[] = {"arena",      "robot",      "behavior", "fitness",
+                                           "controller", "experiment", "library",  "primitive set"};
+static_assert(std::size(kKindNames) == std::variant_size_v<Decl>);
+
+std::string article(std::string_view kind) {
+  const bool vowel = !kind.empty() && std::string_view("aeiou").find(kind[0]) != std::string_view::npos;
+  return std::string(vowel ? "an " : "a ") + std::string(kind);
+}
+
+}  // namespace
+
+std::string_view kind_name(const Decl& d) noexcept { return kKindNames[d.index()]; }
+
+const ast::DeclHead& head(const Decl& d) noexcept {
+  return *std::visit([](const auto* p) -> const ast::DeclHead* { return p; }, d);
+}
+
+void Resolver::add(const Decl& d) {
+  const ast::DeclHead& h = head(d);
+  if (h.name.text.empty()) return;
+  auto [it, inserted] = symbols_.try_emplace(h.name.text, d);
+  if (inserted) return;
+  const Decl& first = it->second;
+  Diagnostic& diag = sink_.error(h.name.where, fmt::format("`{}` is already declared", h.name.text));
+  diag.notes.emplace_back(head(first).name.where, fmt::format("first declared here, as {}", article(kind_name(first))));
+  diag.help.push_back(
+      "every arena, robot, behavior, fitness, controller, experiment, library and primitive set needs its own name");
+}
+
+void Resolver::declare(const ast::Module& m) {
+  modules_.push_back(&m);
+  // In source order, so that "first declared here" points at the earlier one.
+  std::vector<Decl> all;
+  const auto collect = [&](const auto& v) {
+    for (const auto& d : v) all.emplace_back(&d);
+  };
+  collect(m.arenas);
+  collect(m.robots);
+  collect(m.behaviors);
+  collect(m.fitnesses);
+  collect(m.controllers);
+  collect(m.experiments);
+  collect(m.libraries);
+  collect(m.primitives);
+  std::stable_sort(all.begin(), all.end(), [](const Decl& a, const Decl& b) { return head(a).order < head(b).order; });
+  for (const Decl& d : all) add(d);
+}
+
+const Decl* Resolver::lookup(const ast::Name& ref, const Decl& want) {
+  if (ref.text.empty()) return nullptr;
+  const std::string_view want_kind = kind_name(want);
+  const auto it = symbols_.find(ref.text);
+  if (it == symbols_.end()) {
+    std::vector<std::string> same_kind;
+    for (const auto& [name, d] : symbols_)
+      if (d.index() == want.index()) same_kind.push_back(name);
+    Suggestion how;
+    if (same_kind.empty())
+      how.otherwise = fmt::format("no {} is declared; declare one, or import a file that does", want_kind);
+    else if (same_kind.size() <= 8)
+      how.otherwise = fmt::format("declared {}s: {}", want_kind, quoted_list(same_kind, ", "));
+    suggest(sink_.error(ref.where, fmt::format("unknown {} `{}`", want_kind, ref.text)), ref.text, same_kind, how);
+    return nullptr;
+  }
+  const Decl& d = it->second;
+  if (d.index() != want.index()) {
+    Diagnostic& diag = sink_.error(ref.where, fmt::format("`{}` is {}, not {}", ref.text, article(kind_name(d)),
+                                                          article(want_kind)));
+    diag.notes.emplace_back(head(d).name.where, fmt::format("`{}` is declared here", ref.text));
+    return nullptr;
+  }
+  if (head(d).poisoned) return nullptr;
+  return &d;
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,184 @@
+#include "compiler/rule_messages.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+namespace esc::compiler {
+
+namespace {
+
+using sim::Dimension;
+using sim::Rule;
+
+std::string number(double v) {
+  if (v == 0.0) return "0";
+  return fmt::format("{:.6g}", v);
+}
+
+std::string arena_text(const RuleContext& c) {
+  if (c.arena == nullptr) return "";
+  return fmt::format(" ({} x {})", shown(c.arena->width_m, Dimension::Length),
+                     shown(c.arena->height_m, Dimension::Length));
+}
+
+std::string at_point(const sim::Vec2& p) {
+  return fmt::format("({}, {})", shown(p.x, Dimension::Length), shown(p.y, Dimension::Length));
+}
+
+// "it reaches 1.5cm beyond a wall".
+std::string beyond(const sim::Problem& p) {
+  if (!std::isfinite(p.found)) return "";
+  return fmt::format(": it reaches {} beyond a wall", shown(p.found, Dimension::Length));
+}
+
+// The smallest sweep cell (shown to the centimetre's hundredth) whose grid fits.
+std::string smallest_sweep_cell(const sim::ArenaSpec& a) {
+  const auto cells = [&](double c) { return std::ceil(a.width_m / c) * std::ceil(a.height_m / c); };
+  double cm = std::ceil(std::sqrt(a.width_m * a.height_m / sim::kMaxSweepCells) * 1e4) / 100;
+  while (cells(cm / 100) > sim::kMaxSweepCells) cm += 0.01;
+  return fmt::format("{}cm", number(std::round(cm * 100) / 100));
+}
+
+// Generic: "`ir_aperture` must be below 180deg, found 200deg", with the reason for an upper limit.
+RuleMessage bound(const sim::Problem& p, std::string_view subject) {
+  const sim::RuleInfo& r = p.info();
+  const std::string_view rel = r.relation == sim::Relation::Above ? "greater than" : sim::relation_words(r.relation);
+  RuleMessage m{fmt::format("{} must be {} {}, found {}", subject, rel, shown(p.limit, r.dimension),
+                            shown(p.found, r.dimension)),
+                {}};
+  if (r.relation == sim::Relation::AtMost || r.relation == sim::Relation::Below) m.help.emplace_back(r.why);
+  return m;
+}
+
+RuleMessage arena_message(const sim::Problem& p, const RuleContext& c) {
+  constexpr std::string_view kPositions = "positions are measured from the arena's lower-left inner corner";
+  switch (p.rule) {
+    case Rule::ArenaWidth: return bound(p, "the arena's width");
+    case Rule::ArenaHeight: return bound(p, "the arena's height");
+    case Rule::ObstacleCount:
+      return {fmt::format("an arena holds at most {} blocks and cylinders together", sim::kMaxObstacles),
+              {std::string(p.info().why)}};
+    case Rule::BlockSize: return {"a block's width and height must be greater than 0", {}};
+    case Rule::BlockInside:
+      return {fmt::format("this block is not inside the arena{}{}", arena_text(c), beyond(p)),
+              {std::string(kPositions) + " to the block's centre"}};
+    case Rule::CylinderRadius: return {"a cylinder's radius must be greater than 0", {}};
+    case Rule::CylinderInside:
+      return {fmt::format("this cylinder is not inside the arena{}{}", arena_text(c), beyond(p)),
+              {std::string(kPositions)}};
+    case Rule::StartInside:
+      return {fmt::format("the start position is outside the arena{}{}", arena_text(c), beyond(p)),
+              {std::string(kPositions)}};
+    case Rule::ZoneCount: return {fmt::format("an arena holds at most {} zones", sim::kMaxZones), {std::string(p.info().why)}};
+    case Rule::ZoneRadius: return {"a zone's radius must be greater than 0", {}};
+    case Rule::ZoneSize: return {"a zone's width and height must be greater than 0", {}};
+    case Rule::ZoneInside:
+      return {fmt::format("this zone is not inside the arena{}{}", arena_text(c), beyond(p)),
+              {std::string(kPositions) + " to the zone's centre"}};
+    case Rule::ZoneFits: return {fmt::format("this zone is larger than the arena{}", arena_text(c)), {}};
+    case Rule::LightCount:
+      return {fmt::format("an arena holds at most {} lights", sim::kMaxLights), {std::string(p.info().why)}};
+    case Rule::LightHeight:
+      return {fmt::format("a light's height must not be negative, found {}", shown(p.found, Dimension::Length)), {}};
+    case Rule::LightIntensity:
+      return {fmt::format("a light's intensity must not be negative, found {}", number(p.found)), {}};
+    case Rule::LightZone: return {"this light stands above a zone its arena does not have", {}};
+    case Rule::LightInside: return {fmt::format("this light is not inside the arena{}{}", arena_text(c), beyond(p)), {}};
+    case Rule::SweepCell: return bound(p, "`sweep_cell`");
+    case Rule::SweepGrid: {
+      RuleMessage m{fmt::format("the area-sweeping grid of this arena{} would have {} cells, more than the {} the "
+                                "simulator holds",
+                                arena_text(c), number(p.found), number(p.limit)),
+                    {}};
+      if (c.arena != nullptr)
+        m.help.push_back(fmt::format("write `sweep_cell {}` or larger in the arena, or make it smaller",
+                                     smallest_sweep_cell(*c.arena)));
+      return m;
+    }
+    case Rule::ReachRadius: return bound(p, "`reach_radius`");
+    default: return bound(p, fmt::format("`{}`", p.info().setting));
+  }
+}
+
+RuleMessage placement_message(const sim::Problem& p, const RuleContext& c) {
+  const double r = c.robot != nullptr ? c.robot->body_radius_m : p.limit;
+  switch (p.rule) {
+    case Rule::RobotFits:
+      return {fmt::format("the robot ({} across) does not fit in arena `{}`{}", shown(2 * r, Dimension::Length),
+                          c.arena_name, arena_text(c)),
+              {}};
+    case Rule::StartClearOfWalls:
+      return {fmt::format("the robot starting here would overlap a wall: its body radius is {}",
+                          shown(r, Dimension::Length)),
+              {}};
+    case Rule::StartClearOfCylinder:
+      return {fmt::format("the robot starting here would overlap the cylinder at {}",
+                          c.arena != nullptr ? at_point(c.arena->cylinders.at(static_cast<std::size_t>(p.index)).center_m)
+                                             : std::string("?")),
+              {}};
+    case Rule::StartClearOfBlock:
+      return {fmt::format("the robot starting here would overlap the block at {}",
+                          c.arena != nullptr ? at_point(c.arena->boxes.at(static_cast<std::size_t>(p.index)).center_m)
+                                             : std::string("?")),
+              {}};
+    default: return bound(p, fmt::format("`{}`", p.info().setting));
+  }
+}
+
+RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
+  switch (p.rule) {
+    case Rule::WheelBaseWithinBody:
+      return {fmt::format("the wheel base ({}) is wider than the body ({} across)", shown(p.found, Dimension::Length),
+                          shown(p.limit, Dimension::Length)),
+              {std::string(p.info().why)}};
+    case Rule::ContactLookAhead: {
+      // In millimetres, the scale of a substep's travel.
+      RuleMessage m{fmt::format("at full speed the rim of the robot moves {}mm per physics substep, more than the "
+                                "{}mm the contact solver looks ahead",
+                                number(p.found * 1000), number(p.limit * 1000)),
+                    {}};
+      if (c.robot != nullptr) {
+        const auto needed = static_cast<long long>(std::ceil(p.found * c.robot->physics_substeps / p.limit));
+        m.help.push_back(fmt::format("use `substeps {}` or more, or a lower `max_speed`", needed));
+      }
+      return m;
+    }
+    default: return bound(p, fmt::format("`{}`", p.info().setting));
+  }
+}
+
+}  // namespace
+
+std::string shown(double si, Dimension d) {
+  if (si == 0.0) return "0";
+  const double a = std::abs(si);
+  switch (d) {
+    case Dimension::Count:
+      if (std::floor(si) == si && a < 1e15) return fmt::format("{}", static_cast<long long>(si));
+      return number(si);
+    case Dimension::Number: return number(si);
+    case Dimension::Length:
+      if (a < 0.01) return number(si * 1000) + "mm";
+      if (a < 10) return number(si * 100) + "cm";
+      return number(si) + "m";
+    case Dimension::Angle: return number(si * 180 / std::numbers::pi) + "deg";
+    case Dimension::Time: return a < 1 ? number(si * 1000) + "ms" : number(si) + "s";
+    case Dimension::Speed: return number(si * 100) + "cm/s";
+    case Dimension::Acceleration: return number(si) + "m/s^2";
+    case Dimension::Mass: return a < 1 ? number(si * 1000) + "g" : number(si) + "kg";
+  }
+  return number(si);
+}
+
+RuleMessage rule_message(const sim::Problem& p, const RuleContext& context) {
+  switch (p.info().object) {
+    case sim::Object::Arena: return arena_message(p, context);
+    case sim::Object::Placement: return placement_message(p, context);
+    case sim::Object::Robot: return robot_message(p, context);
+  }
+  return {p.message(), {}};
+}
+
+}  // namespace esc::compiler

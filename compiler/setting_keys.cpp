@@ -1,0 +1,164 @@
+#include "compiler/setting_keys.hpp"
+
+#include <fmt/format.h>
+
+#include "compiler/arena_settings.hpp"
+#include "compiler/compiler.hpp"
+#include "compiler/es_options.hpp"
+#include "compiler/experiment_settings.hpp"
+#include "compiler/gp_settings.hpp"
+#include "compiler/names.hpp"
+#include "compiler/robot_settings.hpp"
+#include "compiler/rule_messages.hpp"
+#include "compiler/setting_values.hpp"
+#include "runtime/sim/validate.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+std::vector<std::string> prefixed(std::string_view prefix, const std::vector<std::string>& names) {
+  std::vector<std::string> v;
+  for (const std::string& n : names) v.push_back(std::string(prefix) + n);
+  return v;
+}
+
+// "unknown robot setting `robot.x`; did you mean `robot.y`?", listing the group's keys;
+// `word` is the key without the group's prefix.
+void unknown(Sink& sink, const ast::Name& key, std::string_view what, std::string_view word, std::string_view prefix,
+             const std::vector<std::string>& names) {
+  suggest(sink.error(key.where, fmt::format("unknown {} `{}`", what, key.text)), word, names,
+          {.prefix = prefix, .otherwise = fmt::format("{}s: {}", what, fmt::join(prefixed(prefix, names), ", ")),
+           .always = true});
+}
+
+void report(Sink& sink, const std::vector<sim::Problem>& problems, const RuleContext& context,
+            const SourceRange& where) {
+  for (const sim::Problem& p : problems) {
+    RuleMessage m = rule_message(p, context);
+    sink.error(where, std::move(m.message)).help = std::move(m.help);
+  }
+}
+
+// "message (help; help)" for each error, joined: the one line `esc run` prints.
+std::string flattened(const std::vector<Diagnostic>& ds) {
+  std::string out;
+  for (const Diagnostic& d : ds) {
+    if (d.severity != Severity::Error) continue;
+    if (!out.empty()) out += "; ";
+    out += d.message;
+    if (!d.help.empty()) out += fmt::format(" ({})", fmt::join(d.help, "; "));
+  }
+  return out;
+}
+
+std::string trimmed(std::string_view t) {
+  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+  while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
+  return std::string(t);
+}
+
+}  // namespace
+
+std::vector<std::string> setting_keys() {
+  std::vector<std::string> k;
+  for (const ExperimentSetting& s : experiment_settings()) k.emplace_back(s.key);
+  for (const EsOption& o : es_options())
+    if (o.own_key) k.emplace_back(o.key);
+  for (const std::string& n : prefixed("arena.", arena_setting_names())) k.push_back(n);
+  for (const std::string& n : prefixed("robot.", robot_setting_names())) k.push_back(n);
+  for (const std::string& n : prefixed("gp.", gp_option_names())) k.push_back(n);
+  return k;
+}
+
+bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink) {
+  const std::string& k = key.text;
+  if (const ExperimentSetting* s = find_experiment_setting(k)) return s->read(*s, spec, value, sink);
+  if (const EsOption* o = find_es_option_key(k)) return o->read(*o, spec.es, value, sink);
+  if (k.rfind("gp.", 0) == 0) {
+    const GpOption* o = find_gp_option(k.substr(3));
+    if (o == nullptr) {
+      unknown(sink, key, "GP setting", k.substr(3), "gp.", gp_option_names());
+      return false;
+    }
+    // An experiment without GP settings checks the value and ignores it: the experiments
+    // its evolved behaviors come from get the same `--set`.
+    evo::gp::GpSettings scratch = spec.gp.value_or(evo::gp::GpSettings{});
+    if (!read_gp_option(scratch, *o, value, sink)) return false;
+    if (spec.gp) spec.gp = scratch;
+    return true;
+  }
+  if (k.rfind("robot.", 0) == 0) {
+    const RobotSetting* s = find_robot_setting(k.substr(6));
+    if (s == nullptr) {
+      unknown(sink, key, "robot setting", k.substr(6), "robot.", robot_setting_names());
+      return false;
+    }
+    const auto v = read_robot_value(*s, value, sink);
+    if (v) s->set(spec.robot, *v);
+    return v.has_value();
+  }
+  if (k.rfind("arena.", 0) == 0) {
+    const ArenaSetting* s = find_arena_setting(k.substr(6));
+    if (s == nullptr) {
+      unknown(sink, key, "arena setting", k.substr(6), "arena.", arena_setting_names());
+      return false;
+    }
+    const auto v = read_quantity(value, s->name, Dim::Length, sink);
+    if (v) spec.arena.*s->value = *v;
+    return v.has_value();
+  }
+  unknown(sink, key, "setting", k, "", setting_keys());
+  return false;
+}
+
+bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
+  const int errors = sink.errors();
+  if (const auto p = es_problem(spec.es)) sink.error(where, p->message).help.push_back(p->help);
+  if (std::string m = check_gp(spec); !m.empty()) sink.error(where, m);
+  const RuleContext context{&spec.arena, spec.arena_name, &spec.robot};
+  const auto robot = sim::robot_problems(spec.robot);
+  const auto arena = sim::arena_problems(spec.arena);
+  report(sink, robot, context, where);
+  report(sink, arena, context, where);
+  if (robot.empty() && arena.empty()) report(sink, sim::placement_problems(spec.arena, spec.robot), context, where);
+  return sink.errors() == errors;
+}
+
+void resolve_settings(eval::ExperimentSpec& spec) {
+  auto& r = spec.resolved_settings;
+  r["experiment"] = spec.name;
+  for (const ExperimentSetting& s : experiment_settings()) r[std::string(s.key)] = s.text(spec);
+  if (spec.start_from)
+    r["start_from"] = fmt::format("{} from experiment {}", spec.start_from->evaluate_only ? "evaluate" : "start",
+                                  spec.start_from->experiment);
+  for (const EsOption& o : es_options())
+    if (o.own_key) r[std::string(o.key)] = o.text(o, spec.es);
+  resolve_arena_settings(spec);
+  for (const RobotSetting& s : robot_settings()) r["robot." + std::string(s.name)] = robot_value_text(s, spec.robot);
+  r["fitness"] = spec.fitness.name;
+  std::string names;
+  for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;
+  r["compare"] = names;
+  resolve_gp_settings(spec);
+}
+
+std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key, std::string_view value) {
+  Sink sink;
+  const SourceRange where{"--set", 0, 0, 0};
+  const ast::Name name{trimmed(key), where};
+  eval::ExperimentSpec spec = experiment;   // commit only when everything checks
+  if (const auto v = value_from_text(value, where)) {
+    if (set_setting(spec, name, *v, sink)) (void)check_settings(spec, where, sink);
+  } else {
+    sink.error(where, fmt::format("`{}` cannot take `{}`: a value is a number with its unit (`50ms`), `on` or "
+                                  "`off`, a word, or a range `[-1, 1]`",
+                                  name.text, trimmed(value)));
+  }
+  if (sink.errors() != 0) return flattened(sink.items());
+  resolve_settings(spec);
+  experiment = std::move(spec);
+  return {};
+}
+
+}  // namespace esc::compiler

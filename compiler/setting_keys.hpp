@@ -1,0 +1,34 @@
+#pragma once
+// Every key of `esc run --set KEY=VALUE`, each read by the table of its group (the
+// experiment's own settings, the ES options, `gp.*`, `robot.*`, `arena.*`) with the script's
+// spellings, units and checks; the checks of a whole experiment's settings (options that
+// relate, the GP engine's, the runtime's rules for the robot and the arena); and the
+// resolved settings. `apply_setting` (compiler.hpp) is set_setting + check_settings on
+// text; a script construct that varies a key over values written in the script can call
+// the same two functions with its own values and locations.
+#include <string>
+#include <vector>
+
+#include "compiler/ast.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/eval/experiment.hpp"
+
+namespace esc::compiler {
+
+// Every `--set` key, for "did you mean" and the documentation.
+[[nodiscard]] std::vector<std::string> setting_keys();
+
+// Sets `key` of `spec` to `value` (written as in a script: `50ms`, `on`, `comma`,
+// `[-1, 1]`); reports an unknown key at `key`, a wrong value at `value`. False when refused.
+bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink);
+
+// The checks of the settings together, reported at `where`: ES options that relate (comma
+// needs lambda >= mu), the GP settings against the trees' primitives, and the runtime's
+// rules for the robot, the arena and the robot in it. False when one fails.
+bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
+
+// Rewrites the keys of resolved_settings that the spec's fields determine; keeps the others
+// (robot name, fitness sources).
+void resolve_settings(eval::ExperimentSpec& spec);
+
+}  // namespace esc::compiler

@@ -1,0 +1,166 @@
+#include "compiler/setting_values.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "compiler/names.hpp"
+#include "compiler/quantities.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+std::string_view trimmed(std::string_view t) {
+  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+  while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
+  return t;
+}
+
+bool is_word(std::string_view t) {
+  if (t.empty() || !(std::isalpha(static_cast<unsigned char>(t[0])) != 0 || t[0] == '_')) return false;
+  for (const char c : t)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_')) return false;
+  return true;
+}
+
+std::optional<ast::Quantity> quantity_from_text(std::string_view text, const SourceRange& where) {
+  ast::Quantity q;
+  if (!split_value(text, q.value, q.unit)) return std::nullopt;
+  // The number as written: the text without its unit (split_value drops the spaces inside it).
+  std::string_view number = trimmed(text);
+  std::size_t kept = number.size();
+  for (std::size_t left = q.unit.size(); left > 0 && kept > 0; --kept)
+    if (number[kept - 1] != ' ' && number[kept - 1] != '\t') --left;
+  q.text = std::string(trimmed(number.substr(0, kept)));
+  if (!q.text.empty() && q.text.front() == '+') q.text.erase(0, 1);
+  q.where = q.unit_where = where;
+  return q;
+}
+
+// "`on`", "`[1, 2]`": a value as the user wrote it, for messages.
+std::string shown(const ast::Value& v) { return fmt::format("`{}`", v.text); }
+
+}  // namespace
+
+std::optional<ast::Value> value_from_text(std::string_view text_in, const SourceRange& where) {
+  const std::string_view text = trimmed(text_in);
+  ast::Value v;
+  v.text = std::string(text);
+  v.where = where;
+  if (text == "on" || text == "off" || text == "true" || text == "false") {
+    v.kind = ast::Value::Kind::Bool;
+    v.flag = text == "on" || text == "true";
+    return v;
+  }
+  if (is_word(text)) {
+    v.kind = ast::Value::Kind::Word;
+    return v;
+  }
+  if (text.size() >= 2 && text.front() == '[' && text.back() == ']') {
+    const std::string_view inner = text.substr(1, text.size() - 2);
+    const std::size_t comma = inner.find(',');
+    if (comma == std::string_view::npos) return std::nullopt;
+    auto lo = quantity_from_text(inner.substr(0, comma), where);
+    auto hi = quantity_from_text(inner.substr(comma + 1), where);
+    if (!lo || !hi) return std::nullopt;
+    v.kind = ast::Value::Kind::Range;
+    v.q = std::move(*lo);
+    v.hi = std::move(*hi);
+    return v;
+  }
+  auto q = quantity_from_text(text, where);
+  if (!q) return std::nullopt;
+  v.kind = ast::Value::Kind::Quantity;
+  v.q = std::move(*q);
+  return v;
+}
+
+ast::Value as_value(const ast::Quantity& q) {
+  ast::Value v;
+  v.kind = ast::Value::Kind::Quantity;
+  v.q = q;
+  v.text = q.text + q.unit;
+  v.where = q.where;
+  return v;
+}
+
+std::optional<long long> read_count(const ast::Value& v, std::string_view name, long long min, long long max,
+                                    Sink& sink) {
+  if (v.kind != ast::Value::Kind::Quantity) {
+    sink.error(v.where, fmt::format("`{}` takes a whole number, found {}", name, shown(v)));
+    return std::nullopt;
+  }
+  return to_whole(v.q, fmt::format("`{}`", name), min, max, sink);
+}
+
+std::optional<double> read_quantity(const ast::Value& v, std::string_view name, Dim dim, Sink& sink) {
+  if (v.kind != ast::Value::Kind::Quantity) {
+    sink.error(v.where, fmt::format("`{}` takes {}, found {}", name, dim_phrase(dim), shown(v)));
+    return std::nullopt;
+  }
+  return to_si(v.q, dim, sink);
+}
+
+std::optional<bool> read_flag(const ast::Value& v, std::string_view name, Sink& sink) {
+  if (v.kind == ast::Value::Kind::Bool) return v.flag;
+  sink.error(v.where, fmt::format("`{}` is `on` or `off`, found {}", name, shown(v)))
+      .help.push_back(fmt::format("write `{} on` or `{} off`", name, name));
+  return std::nullopt;
+}
+
+std::optional<std::size_t> read_word(const ast::Value& v, std::string_view name, const std::vector<std::string>& words,
+                                     Sink& sink) {
+  if (v.kind == ast::Value::Kind::Word)
+    for (std::size_t i = 0; i < words.size(); ++i)
+      if (words[i] == v.text) return i;
+  Diagnostic& d = sink.error(v.where, fmt::format("`{}` is {}, found {}", name, quoted_list(words), shown(v)));
+  if (v.kind == ast::Value::Kind::Word) suggest(d, v.text, words);
+  return std::nullopt;
+}
+
+std::optional<std::pair<double, double>> read_range(const ast::Value& v, std::string_view name,
+                                                    std::string_view example, Sink& sink) {
+  if (v.kind != ast::Value::Kind::Range) {
+    sink.error(v.where, fmt::format("`{}` takes a range, as in `{}`, found {}", name, example, shown(v)))
+        .help.push_back(fmt::format("write `{} {}`", name, example));
+    return std::nullopt;
+  }
+  const auto lo = to_si(v.q, Dim::None, sink);
+  const auto hi = to_si(v.hi, Dim::None, sink);
+  if (!lo || !hi) return std::nullopt;
+  return std::pair{*lo, *hi};
+}
+
+std::optional<ast::Value> option_value(const ast::EsOption& o, OptionShape shape, std::string_view example,
+                                       Sink& sink) {
+  const std::string& n = o.name.text;
+  const OptionShape written = o.lo ? OptionShape::Range : o.value ? OptionShape::Value : OptionShape::Word;
+  if (written != shape) {
+    if (shape == OptionShape::Word)
+      sink.error(o.where, fmt::format("`{}` takes no value", n)).help.push_back(fmt::format("write `{}`", n));
+    else
+      sink.error(o.where, fmt::format("`{}` {}", n, shape == OptionShape::Range ? "takes a range" : "needs a value"))
+          .help.push_back(fmt::format("write `{} {}`", n, example));
+    return std::nullopt;
+  }
+  ast::Value v;
+  switch (shape) {
+    case OptionShape::Word:
+      v.kind = ast::Value::Kind::Word;
+      v.text = n;
+      v.where = o.name.where;
+      break;
+    case OptionShape::Value: v = as_value(*o.value); break;
+    case OptionShape::Range:
+      v.kind = ast::Value::Kind::Range;
+      v.q = *o.lo;
+      v.hi = *o.hi;
+      v.text = fmt::format("[{}, {}]", o.lo->text, o.hi->text);
+      v.where = o.where;
+      break;
+  }
+  return v;
+}
+
+}  // namespace esc::compiler
