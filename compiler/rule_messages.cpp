@@ -90,7 +90,7 @@ RuleMessage arena_message(const sim::Problem& p, const RuleContext& c) {
     case Rule::SweepGrid: {
       RuleMessage m{fmt::format("the area-sweeping grid of this arena{} would have {} cells, more than the {} the "
                                 "simulator holds",
-                                arena_text(c), number(p.found), number(p.limit)),
+                                arena_text(c), shown(p.found, Dimension::Count), shown(p.limit, Dimension::Count)),
                     {}};
       if (c.arena != nullptr)
         m.help.push_back(fmt::format("write `sweep_cell {}` or larger in the arena, or make it smaller",

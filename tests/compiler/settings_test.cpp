@@ -80,5 +80,57 @@ TEST(ApplySetting, BadKeysAndValuesAreRefusedWithoutChange) {
   EXPECT_EQ(x.resolved_settings, before.resolved_settings);
 }
 
+// Every ES option is settable under the spelling scripts use, and resolved under it.
+TEST(ApplySetting, EveryEsOptionUnderTheScriptsSpelling) {
+  eval::ExperimentSpec x = paper();
+  EXPECT_EQ(apply_setting(x, "min_sigma", "1e-5"), "");
+  EXPECT_DOUBLE_EQ(x.es.min_sigma, 1e-5);
+  EXPECT_EQ(x.resolved_settings.at("min_sigma"), "1e-05");
+  EXPECT_EQ(apply_setting(x, "recombination", "no_recombination"), "");
+  EXPECT_EQ(x.es.recombination, evo::Recombination::None);
+  EXPECT_EQ(x.resolved_settings.at("recombination"), "no_recombination");
+  EXPECT_EQ(apply_setting(x, "step_sizes", "one_sigma"), "");
+  EXPECT_EQ(x.es.step_sizes, evo::StepSizes::One);
+  EXPECT_EQ(x.resolved_settings.at("step_sizes"), "one_sigma");
+  EXPECT_EQ(apply_setting(x, "arena.sweep_cell", "5cm"), "");
+  EXPECT_DOUBLE_EQ(x.arena.sweep_cell_m, 0.05);
+  EXPECT_EQ(x.resolved_settings.at("arena.sweep_cell"), "0.05 m");
+  // Other spellings of the same values are refused, with the one spelling.
+  const eval::ExperimentSpec before = x;
+  std::string m = apply_setting(x, "recombination", "none");
+  EXPECT_NE(m.find("`recombination` is `intermediate`, `discrete` or `no_recombination`, found `none`"),
+            std::string::npos)
+      << m;
+  m = apply_setting(x, "step_sizes", "per_gene");
+  EXPECT_NE(m.find("`one_sigma` or `self_adaptive`"), std::string::npos) << m;
+  m = apply_setting(x, "selection", "coma");
+  EXPECT_NE(m.find("did you mean `comma`?"), std::string::npos) << m;
+  m = apply_setting(x, "min_sigma", "-1");
+  EXPECT_NE(m.find("`min_sigma` must be at least 0, found -1"), std::string::npos) << m;
+  m = apply_setting(x, "arena.sweep_cel", "1cm");
+  EXPECT_NE(m.find("did you mean `arena.sweep_cell`?"), std::string::npos) << m;
+  EXPECT_EQ(x.resolved_settings, before.resolved_settings);
+}
+
+// Each key's value is read as a script reads it: the same messages for the same mistakes.
+TEST(ApplySetting, ValuesReadLikeScripts) {
+  const char* kScript = "arena a { size 1m x 1m }\nfitness f { step: speed }\ncontroller c = mlp(ir[0..7] -> wheels)\n"
+                        "experiment e { arena a  fitness f  compare c  evolve es(sigma 0) }\n";
+  const auto r = compile_source(kScript, "same.esc", options());
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(rendered(r).find("same.esc:4:63: error: `sigma` must be greater than 0, found 0"), std::string::npos)
+      << rendered(r);
+  eval::ExperimentSpec x = paper();
+  EXPECT_EQ(apply_setting(x, "sigma", "0"), "`sigma` must be greater than 0, found 0");
+  EXPECT_EQ(apply_setting(x, "robot.inertia", "3"), "`inertia` is `on` or `off`, found `3` (write `inertia on` or "
+                                                     "`inertia off`)");
+  EXPECT_EQ(apply_setting(x, "bounds", "[-1, 1"), "`bounds` cannot take `[-1, 1`: a value is a number with its unit "
+                                                  "(`50ms`), `on` or `off`, a word, or a range `[-1, 1]`");
+  EXPECT_EQ(apply_setting(x, "bounds", "1"), "`bounds` takes a range, as in `[-1, 1]`, found `1` (write `bounds "
+                                             "[-1, 1]`)");
+  EXPECT_EQ(apply_setting(x, "robot.max_accel", "0.5 m/s^2"), "");
+  EXPECT_DOUBLE_EQ(x.robot.motor.max_accel_mps2, 0.5);
+}
+
 }  // namespace
 }  // namespace esc::compiler
