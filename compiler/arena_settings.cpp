@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "compiler/quantities.hpp"
+#include "compiler/table_lookup.hpp"
 
 namespace esc::compiler {
 
@@ -17,16 +18,10 @@ const std::vector<ArenaSetting>& arena_settings() {
 }
 
 const ArenaSetting* find_arena_setting(std::string_view name) {
-  for (const ArenaSetting& s : arena_settings())
-    if (s.name == name) return &s;
-  return nullptr;
+  return find_row(arena_settings(), &ArenaSetting::name, name);
 }
 
-std::vector<std::string> arena_setting_names() {
-  std::vector<std::string> v;
-  for (const ArenaSetting& s : arena_settings()) v.emplace_back(s.name);
-  return v;
-}
+std::vector<std::string> arena_setting_names() { return row_names(arena_settings(), &ArenaSetting::name); }
 
 void resolve_arena_settings(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;

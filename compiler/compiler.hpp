@@ -33,11 +33,14 @@ struct CompileResult {
 [[nodiscard]] CompileResult compile_source(std::string_view text, const std::filesystem::path& name,
                                            const CompileOptions& options);
 
-// Overrides one setting of a compiled experiment, as `esc run --set KEY=VALUE` does:
-// the same names, types and units as in an experiment block (`epochs=2`, `steps=50`,
-// `generations=3`, `mu=10`, `robot.inertia=off`, `robot.time_constant=50ms`, ...), and
-// keeps resolved_settings in step. Returns an error message (with a "did you mean" hint
-// for a misspelled key) or an empty string on success.
+// Overrides one setting of a compiled experiment, as `esc run --set KEY=VALUE` does: the
+// same spellings, units and checks as in a script (`epochs=2`, `mu=10`, `selection=plus`,
+// `min_sigma=1e-5`, `robot.inertia=off`, `robot.time_constant=50ms`, `arena.sweep_cell=5cm`,
+// `gp.population=50`; every key in setting_keys.hpp), then the checks of the settings
+// together, the runtime's rules for the robot and the arena included, so a spec it accepts
+// never fails the World's validation. Keeps resolved_settings in step. Returns an error
+// message (with a "did you mean" for a misspelled key) or an empty string on success; the
+// experiment is unchanged on error.
 [[nodiscard]] std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key,
                                         std::string_view value);
 

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "compiler/setting_values.hpp"
+#include "compiler/table_lookup.hpp"
 
 namespace esc::compiler {
 
@@ -12,11 +13,16 @@ using X = eval::ExperimentSpec;
 using Row = ExperimentSetting;
 constexpr long long kIntMax = std::numeric_limits<int>::max();
 
-// A count of at least 1 into `field`.
-bool read_positive(int X::*field, const Row& r, X& x, const ast::Value& v, Sink& sink) {
+// A count of at least 1; its text.
+template <int X::*Field>
+bool read_positive(const Row& r, X& x, const ast::Value& v, Sink& sink) {
   const auto n = read_count(v, r.key, 1, kIntMax, sink);
-  if (n) x.*field = static_cast<int>(*n);
+  if (n) x.*Field = static_cast<int>(*n);
   return n.has_value();
+}
+template <int X::*Field>
+std::string count_text(const X& x) {
+  return std::to_string(x.*Field);
 }
 
 }  // namespace
@@ -24,14 +30,11 @@ bool read_positive(int X::*field, const Row& r, X& x, const ast::Value& v, Sink&
 const std::vector<ExperimentSetting>& experiment_settings() {
   static const std::vector<ExperimentSetting> table = {
       {"epochs", "evaluations of a controller per generation, each from a new start",
-       [](const Row& r, X& x, const ast::Value& v, Sink& k) { return read_positive(&X::epochs, r, x, v, k); },
-       [](const X& x) { return std::to_string(x.epochs); }},
+       &read_positive<&X::epochs>, &count_text<&X::epochs>},
       {"steps", "control steps per epoch, at most",
-       [](const Row& r, X& x, const ast::Value& v, Sink& k) { return read_positive(&X::steps, r, x, v, k); },
-       [](const X& x) { return std::to_string(x.steps); }},
+       &read_positive<&X::steps>, &count_text<&X::steps>},
       {"runs", "independent runs of each compared controller",
-       [](const Row& r, X& x, const ast::Value& v, Sink& k) { return read_positive(&X::runs, r, x, v, k); },
-       [](const X& x) { return std::to_string(x.runs); }},
+       &read_positive<&X::runs>, &count_text<&X::runs>},
       {"seed", "the master seed every run's streams derive from (0 .. 2^53)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
          // Read through a double, so at most 2^53, where every whole number is exact.
@@ -54,9 +57,7 @@ const std::vector<ExperimentSetting>& experiment_settings() {
 }
 
 const ExperimentSetting* find_experiment_setting(std::string_view key) {
-  for (const ExperimentSetting& s : experiment_settings())
-    if (s.key == key) return &s;
-  return nullptr;
+  return find_row(experiment_settings(), &ExperimentSetting::key, key);
 }
 
 }  // namespace esc::compiler

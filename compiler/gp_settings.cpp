@@ -1,7 +1,6 @@
 #include "compiler/gp_settings.hpp"
 
 #include <limits>
-#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -14,9 +13,8 @@ namespace esc::compiler {
 
 namespace {
 
-using K = GpOption::Kind;
 using S = evo::gp::GpSettings;
-constexpr long long kIntMax = std::numeric_limits<int>::max();
+using Shape = OptionShape;
 
 // A single tree controller's set (a Number terminal) for settings no tree is compared with.
 const evo::gp::PrimitiveSet& neutral_set() {
@@ -31,120 +29,67 @@ std::string without_prefix(std::string message) {
   return message;
 }
 
-// The text of an option's value in `s`: resolved settings, and the example of help lines.
-std::string option_text(const GpOption& o, const S& s) {
-  switch (o.kind) {
-    case K::Whole: return std::to_string(s.*o.whole);
-    case K::Fraction:
-    case K::Plain: return number_text(s.*o.real);
-    case K::Depths: return fmt::format("[{}, {}]", s.init_min_depth, s.init_max_depth);
+template <double S::*Field>
+constexpr auto probability = &read_real<S, Field, RealRange::Probability>;
+
+// `init_depth [LO, HI]`: whole numbers of at least 1, LO <= HI.
+bool read_depths(const GpOption& o, S& s, const ast::Value& v, Sink& sink) {
+  if (!read_range(v, o.key, "[2, 6]", sink)) return false;
+  ast::Value lo = v, hi = v;
+  lo.kind = hi.kind = ast::Value::Kind::Quantity;
+  hi.q = v.hi;
+  constexpr long long kIntMax = std::numeric_limits<int>::max();
+  const auto first = read_count(lo, o.key, 1, kIntMax, sink), last = read_count(hi, o.key, 1, kIntMax, sink);
+  if (!first || !last) return false;
+  if (*last < *first) {
+    sink.error(v.where, fmt::format("`init_depth [{}, {}]` is empty: the first depth must not exceed the second",
+                                    *first, *last));
+    return false;
   }
-  return {};
+  s.init_min_depth = static_cast<int>(*first);
+  s.init_max_depth = static_cast<int>(*last);
+  return true;
 }
+
+std::string depths(const GpOption&, const S& s) { return fmt::format("[{}, {}]", s.init_min_depth, s.init_max_depth); }
 
 }  // namespace
 
 const std::vector<GpOption>& gp_options() {
   static const std::vector<GpOption> table = {
-      {"population", K::Whole, 1, &S::population, nullptr},
-      {"generations", K::Whole, 1, &S::generations, nullptr},
-      {"tournament", K::Whole, 1, &S::tournament, nullptr},
-      {"elitism", K::Whole, 0, &S::elitism, nullptr},
-      {"crossover", K::Fraction, 0, nullptr, &S::crossover},
-      {"subtree_mutation", K::Fraction, 0, nullptr, &S::subtree_mutation},
-      {"point_mutation", K::Fraction, 0, nullptr, &S::point_mutation},
-      {"hoist_mutation", K::Fraction, 0, nullptr, &S::hoist_mutation},
-      {"max_depth", K::Whole, 1, &S::max_depth, nullptr},
-      {"max_size", K::Whole, 1, &S::max_size, nullptr},
-      {"init_depth", K::Depths, 1, nullptr, nullptr},
-      {"mutation_depth", K::Whole, 1, &S::mutation_depth, nullptr},
-      {"internal_bias", K::Fraction, 0, nullptr, &S::internal_bias},
-      {"erc_sigma", K::Plain, 0, nullptr, &S::erc_sigma},
+      {"population", Shape::Value, "trees per generation, all evaluated every generation",
+       &read_whole<S, &S::population, 1>, &whole_text<S, &S::population>},
+      {"generations", Shape::Value, "generations; also `for N generations`", &read_whole<S, &S::generations, 1>,
+       &whole_text<S, &S::generations>},
+      {"tournament", Shape::Value, "tournament size; of equally fit contestants the smaller tree wins",
+       &read_whole<S, &S::tournament, 1>, &whole_text<S, &S::tournament>},
+      {"elitism", Shape::Value, "best trees copied unchanged into the next generation (0 .. population)",
+       &read_whole<S, &S::elitism, 0>, &whole_text<S, &S::elitism>},
+      {"crossover", Shape::Value, "probability of subtree crossover, per offspring", probability<&S::crossover>,
+       &real_text<S, &S::crossover>},
+      {"subtree_mutation", Shape::Value, "probability of subtree mutation", probability<&S::subtree_mutation>,
+       &real_text<S, &S::subtree_mutation>},
+      {"point_mutation", Shape::Value, "probability of point mutation", probability<&S::point_mutation>,
+       &real_text<S, &S::point_mutation>},
+      {"hoist_mutation", Shape::Value, "probability of hoist mutation; what is left is reproduction (a copy)",
+       probability<&S::hoist_mutation>, &real_text<S, &S::hoist_mutation>},
+      {"max_depth", Shape::Value, "levels from the root to the deepest leaf (a terminal is 1; at most 40)",
+       &read_whole<S, &S::max_depth, 1>, &whole_text<S, &S::max_depth>},
+      {"max_size", Shape::Value, "nodes", &read_whole<S, &S::max_size, 1>, &whole_text<S, &S::max_size>},
+      {"init_depth", Shape::Range, "depths of the ramped half-and-half initial population", &read_depths, &depths},
+      {"mutation_depth", Shape::Value, "depth of the subtrees grown by subtree mutation",
+       &read_whole<S, &S::mutation_depth, 1>, &whole_text<S, &S::mutation_depth>},
+      {"internal_bias", Shape::Value, "crossover picks an internal node this often", probability<&S::internal_bias>,
+       &real_text<S, &S::internal_bias>},
+      {"erc_sigma", Shape::Value, "point mutation moves an ERC by N(0, X (HI - LO))",
+       &read_real<S, &S::erc_sigma, RealRange::NonNegative>, &real_text<S, &S::erc_sigma>},
   };
   return table;
 }
 
-const GpOption* find_gp_option(std::string_view name) {
-  for (const GpOption& o : gp_options())
-    if (o.name == name) return &o;
-  return nullptr;
-}
-
-std::vector<std::string> gp_option_names() {
-  std::vector<std::string> names;
-  for (const GpOption& o : gp_options()) names.emplace_back(o.name);
-  return names;
-}
-
-bool read_gp_option(S& s, const GpOption& o, const ast::Value& v, Sink& sink) {
-  switch (o.kind) {
-    case K::Whole: {
-      const auto n = read_count(v, o.name, o.min, kIntMax, sink);
-      if (n) s.*o.whole = static_cast<int>(*n);
-      return n.has_value();
-    }
-    case K::Fraction:
-    case K::Plain: {
-      const auto x = read_quantity(v, o.name, Dim::None, sink);
-      if (!x) return false;
-      if (o.kind == K::Fraction && !(*x >= 0.0 && *x <= 1.0)) {
-        sink.error(v.where, fmt::format("`{}` is a probability in [0, 1], found {}", o.name, number_text(*x)));
-        return false;
-      }
-      if (o.kind == K::Plain && !(*x >= 0.0)) {
-        sink.error(v.where, fmt::format("`{}` must be at least 0, found {}", o.name, number_text(*x)));
-        return false;
-      }
-      s.*o.real = *x;
-      return true;
-    }
-    case K::Depths: {
-      const auto r = read_range(v, o.name, "[2, 6]", sink);
-      if (!r) return false;
-      ast::Value lo = v, hi = v;
-      lo.kind = hi.kind = ast::Value::Kind::Quantity;
-      hi.q = v.hi;
-      const auto first = read_count(lo, o.name, 1, kIntMax, sink), last = read_count(hi, o.name, 1, kIntMax, sink);
-      if (!first || !last) return false;
-      if (*last < *first) {
-        sink.error(v.where, fmt::format("`init_depth [{}, {}]` is empty: the first depth must not exceed the second",
-                                        *first, *last));
-        return false;
-      }
-      s.init_min_depth = static_cast<int>(*first);
-      s.init_max_depth = static_cast<int>(*last);
-      return true;
-    }
-  }
-  return false;
-}
-
 void lower_gp_item(const ast::ExpItem& item, eval::ExperimentSpec& x, Sink& sink) {
   S s = x.gp.value_or(S{});
-  const S defaults;
-  std::map<std::string, const ast::EsOption*> seen;
-  for (const ast::EsOption& o : item.options) {
-    const std::string& n = o.name.text;
-    if (n.empty()) continue;
-    const GpOption* opt = find_gp_option(n);
-    if (opt == nullptr) {
-      suggest(sink.error(o.name.where, fmt::format("unknown GP option `{}`", n)), n, gp_option_names(),
-              {.otherwise = fmt::format("GP options: {}", fmt::join(gp_option_names(), ", "))});
-      continue;
-    }
-    if (auto [it, fresh] = seen.try_emplace(n, &o); !fresh) {
-      sink.error(o.where, fmt::format("`{}` is already given", n)).notes.emplace_back(it->second->where, "first given here");
-      continue;
-    }
-    const OptionShape shape = opt->kind == K::Depths ? OptionShape::Range : OptionShape::Value;
-    if (const auto v = option_value(o, shape, option_text(*opt, defaults), sink)) (void)read_gp_option(s, *opt, *v, sink);
-  }
-  if (item.generations) {
-    if (seen.count("generations") != 0)
-      sink.error(item.generations->where, "the number of generations is already given in `gp(...)`");
-    else if (auto v = to_whole(*item.generations, "`generations`", 1, kIntMax, sink))
-      s.generations = static_cast<int>(*v);
-  }
+  read_options(item, "gp", "GP", gp_options(), s, sink);
   x.gp = s;
 }
 
@@ -174,7 +119,7 @@ void resolve_gp_settings(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;
   for (auto it = r.begin(); it != r.end();) it = it->first.rfind("gp.", 0) == 0 ? r.erase(it) : std::next(it);
   if (!spec.gp) return;
-  for (const GpOption& o : gp_options()) r["gp." + std::string(o.name)] = option_text(o, *spec.gp);
+  for (const GpOption& o : gp_options()) r["gp." + std::string(o.key)] = o.text(o, *spec.gp);
 }
 
 }  // namespace esc::compiler

@@ -103,11 +103,13 @@ void ArenaLowering::read_lights(const ast::ArenaDecl& d, LoweredArena& a,
     if (l.above) {
       const auto it = zone_index.find(l.above->text);
       if (it == zone_index.end()) {
-        if (std::none_of(d.zones.begin(), d.zones.end(), [&](const ast::Zone& z) { return z.name.text == l.above->text; })) {
+        if (std::none_of(d.zones.begin(), d.zones.end(),
+                         [&](const ast::Zone& z) { return z.name.text == l.above->text; })) {
           std::vector<std::string> zones;
           for (const ast::Zone& z : d.zones) zones.push_back(z.name.text);
-          suggest(sink_.error(l.above->where, fmt::format("unknown zone `{}` in arena `{}`", l.above->text, d.name.text)),
-                  l.above->text, zones);
+          suggest(
+              sink_.error(l.above->where, fmt::format("unknown zone `{}` in arena `{}`", l.above->text, d.name.text)),
+              l.above->text, zones);
         }
         continue;   // or the zone is wrong itself (reported)
       }

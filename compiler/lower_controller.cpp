@@ -100,11 +100,14 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
         sink_.error(l.where, "a hidden layer needs a size").help.push_back("write `hidden 20`");
         continue;
       }
-      if (const auto n = to_whole(*l.size, "a hidden layer's size", 1, 100000, sink_)) c.mlp.hidden.push_back(static_cast<int>(*n));
+      if (const auto n = to_whole(*l.size, "a hidden layer's size", 1, 100000, sink_))
+        c.mlp.hidden.push_back(static_cast<int>(*n));
     } else if (l.word.text == "wheels") {
       if (l.size) sink_.error(l.size->where, "the `wheels` output takes no size: it is always 2 wheel commands");
       if (d.symbolic) {
-        sink_.error(l.where, "a symbolic controller's network has no `wheels` output: its outputs choose among the actions")
+        sink_
+            .error(l.where,
+                   "a symbolic controller's network has no `wheels` output: its outputs choose among the actions")
             .help.push_back("write `symbolic(mlp(ir[0..7] -> hidden 14), actions [forward, left, right])`");
       } else if (d.supervisor) {
         sink_.error(l.where, "a supervisor's network has no `wheels` output: its outputs choose among the behaviors")
@@ -232,7 +235,8 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   }
   if (!d.tree && c.mlp.inputs.empty() && sink_.errors() == errors)
     sink_.error(d.kind_where, "a controller needs at least one input");
-  if (d.tree && sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok && !primitives_.tree(d, c))
+  if (d.tree && sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok &&
+      !primitives_.tree(d, c))
     behaviors_ok = false;
   if (sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok) slot = std::move(c);
   return slot;

@@ -36,6 +36,14 @@ std::string_view item_word(const ast::ExpItem& item) {
   return "";
 }
 
+// The declaration `ref` names and its lowering; null when either fails (reported).
+template <class D, class Lowering>
+auto lowered(Resolver& names, Lowering& lowering, const ast::Name& ref, const D*& decl) {
+  decl = names.lookup<D>(ref);
+  const auto* l = decl != nullptr ? &lowering.lower(*decl) : nullptr;
+  return l != nullptr && *l ? &**l : nullptr;
+}
+
 bool is_gp(const ast::ExpItem& item) {
   return item.kind == K::Evolve && !item.refs.empty() && item.refs[0].text == "gp";
 }
@@ -91,27 +99,26 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     }
     switch (item.kind) {
       case K::Arena:
-        arena_decl = names_.lookup<ast::ArenaDecl>(item.refs[0]);
-        if (arena_decl != nullptr && parts_.arenas.lower(*arena_decl)) {
-          arena = &*parts_.arenas.lower(*arena_decl);
-          x.arena = arena->spec;
-        } else {
-          ok = false;
-        }
+        arena = lowered(names_, parts_.arenas, item.refs[0], arena_decl);
+        if (arena != nullptr) x.arena = arena->spec;
+        else ok = false;
         x.arena_name = item.refs[0].text;
         break;
-      case K::Robot:
+      case K::Robot: {
         robot_item = &item;
-        if (const auto* rd = names_.lookup<ast::RobotDecl>(item.refs[0]); rd != nullptr && parts_.robots.lower(*rd)) {
-          robot = parts_.robots.lower(*rd);
+        const ast::RobotDecl* rd = nullptr;
+        if (const LoweredRobot* declared = lowered(names_, parts_.robots, item.refs[0], rd)) {
+          robot = *declared;
           robot_name = item.refs[0].text;
           // The inline settings and the runtime's rules for the robot they make.
-          if (!parts_.robots.apply(*robot, item.settings) || !parts_.robots.check(*robot, item.refs[0].where)) ok = false;
+          if (!parts_.robots.apply(*robot, item.settings) || !parts_.robots.check(*robot, item.refs[0].where))
+            ok = false;
           x.robot = robot->params;
         } else {
           ok = false;
         }
         break;
+      }
       case K::Epochs:
         if (!item.numbers.empty()) setting("epochs", item.numbers[0]);
         if (item.numbers.size() > 1) {
@@ -129,13 +136,9 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
         if (!item.numbers.empty()) setting("seed", item.numbers[0]);
         break;
       case K::Fitness:
-        fitness_decl = names_.lookup<ast::FitnessDecl>(item.refs[0]);
-        if (fitness_decl != nullptr && parts_.fitnesses.lower(*fitness_decl)) {
-          fitness = &*parts_.fitnesses.lower(*fitness_decl);
-          x.fitness = fitness->spec;
-        } else {
-          ok = false;
-        }
+        fitness = lowered(names_, parts_.fitnesses, item.refs[0], fitness_decl);
+        if (fitness != nullptr) x.fitness = fitness->spec;
+        else ok = false;
         break;
       case K::Evolve: {
         const ast::Name& method = item.refs[0];
@@ -168,13 +171,13 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
             sink_.error(ref.where, fmt::format("controller `{}` is listed twice", ref.text));
             continue;
           }
-          const auto* cd = names_.lookup<ast::ControllerDecl>(ref);
-          const auto* c = cd != nullptr ? &parts_.controllers.lower(*cd) : nullptr;
-          if (c == nullptr || !*c) {
+          const ast::ControllerDecl* cd = nullptr;
+          const control::ControllerSpec* c = lowered(names_, parts_.controllers, ref, cd);
+          if (c == nullptr) {
             ok = false;
             continue;
           }
-          x.controllers.push_back(**c);
+          x.controllers.push_back(*c);
           controller_decls.push_back(cd);
           compared.push_back(&ref);
         }
@@ -288,7 +291,8 @@ void ExperimentLowering::check_start_from(const ast::ExperimentDecl& from, const
         n.where, fmt::format("experiment `{}` does not compare `{}`: there is no stored `{}` to start from",
                              from.name.text, n.text, n.text));
     diag.notes.emplace_back(item.refs[0].where, fmt::format("`{}` is named here", from.name.text));
-    if (!theirs.empty()) diag.help.push_back(fmt::format("`{}` compares {}", from.name.text, quoted_list(theirs, ", ")));
+    if (!theirs.empty())
+      diag.help.push_back(fmt::format("`{}` compares {}", from.name.text, quoted_list(theirs, ", ")));
   }
 }
 
@@ -314,19 +318,21 @@ void ExperimentLowering::check_cycles() {
           if (cd == nullptr) continue;
           for (const Supervised& sv : parts_.controllers.supervised(*cd)) {
             if (!sv.decl->evolved) continue;
-            if (const auto& e = parts_.behaviors.evolved(*sv.decl)) out.push_back({e->experiment, &sv.decl->from_experiment});
+            if (const auto& e = parts_.behaviors.evolved(*sv.decl))
+              out.push_back({e->experiment, &sv.decl->from_experiment});
           }
         }
       }
     }
-  for_each_cycle<ast::ExperimentDecl>(all, edges, [&](const std::vector<const ast::ExperimentDecl*>& path, const Edge& closing) {
+  const auto report = [&](const std::vector<const ast::ExperimentDecl*>& path, const Edge& closing) {
     std::string text;
     for (const ast::ExperimentDecl* x : path) text += fmt::format("`{}` -> ", x->name.text);
     text += fmt::format("`{}`", closing.to->name.text);
     sink_.error(closing.via->where,
                 fmt::format("experiments depend on each other's evolved controllers in a cycle: {}", text))
         .help.push_back("an experiment can use the evolved controllers only of experiments that do not use its own");
-  });
+  };
+  for_each_cycle<ast::ExperimentDecl>(all, edges, report);
 }
 
 }  // namespace esc::compiler

@@ -193,9 +193,10 @@ class Lowerer {
     for (std::size_t i = 0; i < names.size(); ++i)
       if (names[i] == arg.text) return load(o.first + static_cast<expr::Slot>(i));
     const std::string otherwise =
-        names.empty() ? fmt::format("arena `{}` declares no {}; add one, as in `{}`", scope_.arena->arena, o.argument,
-                                    zone ? "zone base circle radius 10cm at (30cm, 30cm)" : "light lamp at (30cm, 30cm)")
-                      : fmt::format("{}s of arena `{}`: {}", o.argument, scope_.arena->arena, quoted_list(names, ", "));
+        names.empty()
+            ? fmt::format("arena `{}` declares no {}; add one, as in `{}`", scope_.arena->arena, o.argument,
+                          zone ? "zone base circle radius 10cm at (30cm, 30cm)" : "light lamp at (30cm, 30cm)")
+            : fmt::format("{}s of arena `{}`: {}", o.argument, scope_.arena->arena, quoted_list(names, ", "));
     suggest(sink_.error(arg.where, fmt::format("unknown {} `{}` in arena `{}`", o.argument, arg.text,
                                                scope_.arena->arena)),
             arg.text, names, {.otherwise = otherwise});

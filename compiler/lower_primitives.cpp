@@ -182,10 +182,11 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
 bool PrimitivesLowering::tree(const ast::ControllerDecl& d, control::ControllerSpec& c) {
   if (!d.symbolic && !d.supervisor && d.tree_result.text != "wheels") {
     if (d.tree_result.text.empty()) return false;   // a syntax error, reported
-    suggest(sink_.error(d.tree_result.where, fmt::format("unknown tree result `{}`", d.tree_result.text)),
-            d.tree_result.text, {"wheels"},
-            {.otherwise = "a tree returns `wheels`, one of `actions [A, B, ...]` or one of `behaviors [A, B(0.5), ...]`",
-             .always = true});
+    suggest(
+        sink_.error(d.tree_result.where, fmt::format("unknown tree result `{}`", d.tree_result.text)),
+        d.tree_result.text, {"wheels"},
+        {.otherwise = "a tree returns `wheels`, one of `actions [A, B, ...]` or one of `behaviors [A, B(0.5), ...]`",
+         .always = true});
     return false;
   }
   const auto* pd = names_.lookup<ast::PrimitivesDecl>(d.primitives);

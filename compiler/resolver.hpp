@@ -71,8 +71,9 @@ struct Dependency {
 // (once per set of members): the cycle's path from its first member back to it, and the edge
 // that closes it.
 template <class D>
-void for_each_cycle(const std::vector<const D*>& nodes, std::map<const D*, std::vector<Dependency<D>>>& edges,
-                    const std::function<void(const std::vector<const D*>& path, const Dependency<D>& closing)>& report) {
+void for_each_cycle(
+    const std::vector<const D*>& nodes, std::map<const D*, std::vector<Dependency<D>>>& edges,
+    const std::function<void(const std::vector<const D*>& path, const Dependency<D>& closing)>& report) {
   std::map<const D*, int> state;   // 0 new, 1 on the stack, 2 done
   std::vector<const D*> stack;
   std::vector<std::vector<const D*>> reported;   // sorted member lists

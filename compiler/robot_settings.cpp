@@ -6,6 +6,7 @@
 
 #include "compiler/quantities.hpp"
 #include "compiler/setting_values.hpp"
+#include "compiler/table_lookup.hpp"
 
 namespace esc::compiler {
 
@@ -79,16 +80,10 @@ const std::vector<RobotSetting>& robot_settings() {
 }
 
 const RobotSetting* find_robot_setting(std::string_view name) {
-  for (const RobotSetting& s : robot_settings())
-    if (s.name == name) return &s;
-  return nullptr;
+  return find_row(robot_settings(), &RobotSetting::name, name);
 }
 
-std::vector<std::string> robot_setting_names() {
-  std::vector<std::string> v;
-  for (const RobotSetting& s : robot_settings()) v.emplace_back(s.name);
-  return v;
-}
+std::vector<std::string> robot_setting_names() { return row_names(robot_settings(), &RobotSetting::name); }
 
 std::optional<double> read_robot_value(const RobotSetting& s, const ast::Value& v, Sink& sink) {
   switch (s.kind) {

@@ -71,7 +71,8 @@ RuleMessage arena_message(const sim::Problem& p, const RuleContext& c) {
     case Rule::StartInside:
       return {fmt::format("the start position is outside the arena{}{}", arena_text(c), beyond(p)),
               {std::string(kPositions)}};
-    case Rule::ZoneCount: return {fmt::format("an arena holds at most {} zones", sim::kMaxZones), {std::string(p.info().why)}};
+    case Rule::ZoneCount:
+      return {fmt::format("an arena holds at most {} zones", sim::kMaxZones), {std::string(p.info().why)}};
     case Rule::ZoneRadius: return {"a zone's radius must be greater than 0", {}};
     case Rule::ZoneSize: return {"a zone's width and height must be greater than 0", {}};
     case Rule::ZoneInside:
@@ -85,7 +86,8 @@ RuleMessage arena_message(const sim::Problem& p, const RuleContext& c) {
     case Rule::LightIntensity:
       return {fmt::format("a light's intensity must not be negative, found {}", number(p.found)), {}};
     case Rule::LightZone: return {"this light stands above a zone its arena does not have", {}};
-    case Rule::LightInside: return {fmt::format("this light is not inside the arena{}{}", arena_text(c), beyond(p)), {}};
+    case Rule::LightInside:
+      return {fmt::format("this light is not inside the arena{}{}", arena_text(c), beyond(p)), {}};
     case Rule::SweepCell: return bound(p, "`sweep_cell`");
     case Rule::SweepGrid: {
       RuleMessage m{fmt::format("the area-sweeping grid of this arena{} would have {} cells, more than the {} the "
@@ -114,10 +116,11 @@ RuleMessage placement_message(const sim::Problem& p, const RuleContext& c) {
                           shown(r, Dimension::Length)),
               {}};
     case Rule::StartClearOfCylinder:
-      return {fmt::format("the robot starting here would overlap the cylinder at {}",
-                          c.arena != nullptr ? at_point(c.arena->cylinders.at(static_cast<std::size_t>(p.index)).center_m)
-                                             : std::string("?")),
-              {}};
+      return {
+          fmt::format("the robot starting here would overlap the cylinder at {}",
+                      c.arena != nullptr ? at_point(c.arena->cylinders.at(static_cast<std::size_t>(p.index)).center_m)
+                                         : std::string("?")),
+          {}};
     case Rule::StartClearOfBlock:
       return {fmt::format("the robot starting here would overlap the block at {}",
                           c.arena != nullptr ? at_point(c.arena->boxes.at(static_cast<std::size_t>(p.index)).center_m)

@@ -63,28 +63,26 @@ std::string trimmed(std::string_view t) {
 std::vector<std::string> setting_keys() {
   std::vector<std::string> k;
   for (const ExperimentSetting& s : experiment_settings()) k.emplace_back(s.key);
-  for (const EsOption& o : es_options())
-    if (o.own_key) k.emplace_back(o.key);
-  for (const std::string& n : prefixed("arena.", arena_setting_names())) k.push_back(n);
-  for (const std::string& n : prefixed("robot.", robot_setting_names())) k.push_back(n);
-  for (const std::string& n : prefixed("gp.", gp_option_names())) k.push_back(n);
+  for (const auto& group : {option_keys(es_options()), prefixed("arena.", arena_setting_names()),
+                            prefixed("robot.", robot_setting_names()), option_keys(gp_options(), "gp.")})
+    k.insert(k.end(), group.begin(), group.end());
   return k;
 }
 
 bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink) {
   const std::string& k = key.text;
   if (const ExperimentSetting* s = find_experiment_setting(k)) return s->read(*s, spec, value, sink);
-  if (const EsOption* o = find_es_option_key(k)) return o->read(*o, spec.es, value, sink);
+  if (const EsOption* o = find_option_key(es_options(), k)) return o->read(*o, spec.es, value, sink);
   if (k.rfind("gp.", 0) == 0) {
-    const GpOption* o = find_gp_option(k.substr(3));
+    const GpOption* o = find_option_key(gp_options(), k.substr(3));
     if (o == nullptr) {
-      unknown(sink, key, "GP setting", k.substr(3), "gp.", gp_option_names());
+      unknown(sink, key, "GP setting", k.substr(3), "gp.", option_keys(gp_options()));
       return false;
     }
     // An experiment without GP settings checks the value and ignores it: the experiments
     // its evolved behaviors come from get the same `--set`.
     evo::gp::GpSettings scratch = spec.gp.value_or(evo::gp::GpSettings{});
-    if (!read_gp_option(scratch, *o, value, sink)) return false;
+    if (!o->read(*o, scratch, value, sink)) return false;
     if (spec.gp) spec.gp = scratch;
     return true;
   }

@@ -148,6 +148,10 @@ class Checker {
     return false;
   }
   void fail(Rule rule, double found, double limit, int index) { out_.push_back(Problem{rule, index, found, limit}); }
+  // At most `max` parts: the problem is about the first one too many.
+  void at_most(Rule rule, std::size_t count, std::size_t max) {
+    require(rule, static_cast<double>(count), static_cast<double>(max), static_cast<int>(max));
+  }
   // "Lies inside": `beyond` is how far a part reaches past the walls (NaN fails too).
   bool inside(Rule rule, double beyond, int index) {
     if (beyond <= kInsideTolerance_m) return true;
@@ -184,8 +188,7 @@ double distance_to_box(const BoxObstacle& b, double px, double py) {
 
 void check_obstacles(const ArenaSpec& a, bool sized, Checker& c) {
   const std::size_t obstacles = a.boxes.size() + a.cylinders.size();
-  c.require(Rule::ObstacleCount, static_cast<double>(obstacles), static_cast<double>(kMaxObstacles),
-            static_cast<int>(kMaxObstacles));
+  c.at_most(Rule::ObstacleCount, obstacles, kMaxObstacles);
   for (std::size_t i = 0; i < a.boxes.size(); ++i) {
     const BoxObstacle& b = a.boxes[i];
     const int at = static_cast<int>(i);
@@ -207,8 +210,7 @@ void check_obstacles(const ArenaSpec& a, bool sized, Checker& c) {
 }
 
 void check_zones(const ArenaSpec& a, bool sized, Checker& c) {
-  c.require(Rule::ZoneCount, static_cast<double>(a.zones.size()), static_cast<double>(kMaxZones),
-            static_cast<int>(kMaxZones));
+  c.at_most(Rule::ZoneCount, a.zones.size(), kMaxZones);
   for (std::size_t i = 0; i < a.zones.size(); ++i) {
     const Zone& z = a.zones[i];
     const int at = static_cast<int>(i);
@@ -227,8 +229,7 @@ void check_zones(const ArenaSpec& a, bool sized, Checker& c) {
 }
 
 void check_lights(const ArenaSpec& a, bool sized, Checker& c) {
-  c.require(Rule::LightCount, static_cast<double>(a.lights.size()), static_cast<double>(kMaxLights),
-            static_cast<int>(kMaxLights));
+  c.at_most(Rule::LightCount, a.lights.size(), kMaxLights);
   for (std::size_t i = 0; i < a.lights.size(); ++i) {
     const LightSource& l = a.lights[i];
     const int at = static_cast<int>(i);

@@ -61,9 +61,8 @@ const std::vector<Row>& rows() {
        "this cylinder is not inside the arena (60cm x 60cm): it reaches 1.5cm beyond a wall"},
       {Rule::StartInside, "arena a { size 60cm x 60cm  start at (70cm, 30cm) }", "1:29",
        "the start position is outside the arena (60cm x 60cm): it reaches 10cm beyond a wall"},
-      {Rule::ZoneCount,
-       "arena a { size 1m x 1m\n" + numbered("zone z", " circle radius 1cm at (50cm, 50cm)", 9) + "}", "10:1",
-       "an arena holds at most 8 zones"},
+      {Rule::ZoneCount, "arena a { size 1m x 1m\n" + numbered("zone z", " circle radius 1cm at (50cm, 50cm)", 9) + "}",
+       "10:1", "an arena holds at most 8 zones"},
       {Rule::ZoneRadius, "arena a { size 1m x 1m  zone z circle radius 0cm at (50cm, 50cm) }", "1:46",
        "a zone's radius must be greater than 0"},
       {Rule::ZoneSize, "arena a { size 1m x 1m  zone z rect 0cm x 10cm at (50cm, 50cm) }", "1:25",
@@ -83,7 +82,8 @@ const std::vector<Row>& rows() {
        "unknown zone `y` in arena `a`"},
       {Rule::LightInside, "arena a { size 60cm x 60cm  light l at (70cm, 10cm) }", "1:29",
        "this light is not inside the arena (60cm x 60cm): it reaches 10cm beyond a wall"},
-      {Rule::SweepCell, "arena a { size 1m x 1m  sweep_cell 0cm }", "1:36", "`sweep_cell` must be greater than 0, found 0"},
+      {Rule::SweepCell, "arena a { size 1m x 1m  sweep_cell 0cm }", "1:36",
+       "`sweep_cell` must be greater than 0, found 0"},
       {Rule::SweepGrid, "arena a { size 500m x 500m }", "1:11",
        "the area-sweeping grid of this arena (500m x 500m) would have 156250000 cells, more than the 100000000"},
       {Rule::ReachRadius, "arena a { size 1m x 1m  reach_radius -1cm }", "1:38",
@@ -111,7 +111,8 @@ const std::vector<Row>& rows() {
       {Rule::MaxAccel, "robot r { max_accel 0 m/s^2 }", "1:21", "`max_accel` must be greater than 0, found 0"},
       {Rule::IrRange, "robot r { ir_range -1cm }", "1:20", "`ir_range` must be greater than 0, found -1cm"},
       {Rule::IrApertureMin, "robot r { ir_aperture -1deg }", "1:23", "`ir_aperture` must be at least 0, found -1deg"},
-      {Rule::IrApertureMax, "robot r { ir_aperture 200deg }", "1:23", "`ir_aperture` must be below 180deg, found 200deg"},
+      {Rule::IrApertureMax, "robot r { ir_aperture 200deg }", "1:23",
+       "`ir_aperture` must be below 180deg, found 200deg"},
       {Rule::IrRaysMin, "robot r { ir_rays 0 }", "1:19", "`ir_rays` must be at least 1, found 0"},
       {Rule::IrRaysMax, "robot r { ir_rays 65 }", "1:19", "`ir_rays` must be at most 64, found 65"},
       {Rule::IrNoise, "robot r { ir_noise -0.1 }", "1:20", "`ir_noise` must be at least 0, found -0.1"},
@@ -121,10 +122,12 @@ const std::vector<Row>& rows() {
       {Rule::LightHalfDistance, "robot r { light_half_distance 0cm }", "1:31",
        "`light_half_distance` must be greater than 0, found 0"},
       {Rule::LightNoise, "robot r { light_noise -1 }", "1:23", "`light_noise` must be at least 0, found -1"},
-      {Rule::EnergyDischargeMin, "robot r { energy_discharge 0 }", "1:28", "`energy_discharge` must be at least 1, found 0"},
+      {Rule::EnergyDischargeMin, "robot r { energy_discharge 0 }", "1:28",
+       "`energy_discharge` must be at least 1, found 0"},
       {Rule::EnergyDischargeMax, "robot r { energy_discharge 20000000 }", "1:28",
        "`energy_discharge` must be at most 10000000, found 20000000"},
-      {Rule::EnergyRechargeMin, "robot r { energy_recharge -3 }", "1:27", "`energy_recharge` must be at least 1, found -3"},
+      {Rule::EnergyRechargeMin, "robot r { energy_recharge -3 }", "1:27",
+       "`energy_recharge` must be at least 1, found -3"},
       {Rule::EnergyRechargeMax, "robot r { energy_recharge 10000001 }", "1:27",
        "`energy_recharge` must be at most 10000000, found 10000001"},
       // Inline in an experiment, on top of a declared robot: at the setting that broke it.
@@ -139,7 +142,8 @@ const std::vector<Row>& rows() {
 
 TEST(RuntimeRules, EveryRuleHasARow) {
   std::set<Rule> covered;
-  for (const Row& r : rows()) EXPECT_TRUE(covered.insert(r.rule).second) << "two rows for rule " << static_cast<int>(r.rule);
+  for (const Row& r : rows())
+    EXPECT_TRUE(covered.insert(r.rule).second) << "two rows for rule " << static_cast<int>(r.rule);
   for (const sim::RuleInfo& info : sim::rules())
     EXPECT_EQ(covered.count(info.rule), 1u) << "no row for rule " << static_cast<int>(info.rule) << " ("
                                             << info.field << ")";
