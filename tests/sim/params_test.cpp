@@ -1,12 +1,15 @@
-// Invalid arenas and robots are rejected at construction, naming the field.
+// Invalid arenas and robots are rejected at construction, naming the field; the same rules
+// as data (sim::arena_problems, robot_problems, placement_problems).
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "runtime/sim/validate.hpp"
 #include "sim_test_util.hpp"
 
 namespace esc::sim {
@@ -68,6 +71,79 @@ TEST(SimParams, DefaultsAndEdgeValuesAreAccepted) {
   robot.physics_substeps = 1;
   EXPECT_NO_THROW(World(test::empty_arena(0.6, 0.6), robot));
   EXPECT_NO_THROW(World(test::empty_arena(0.6, 0.6), KheperaParams{}));
+}
+
+}  // namespace
+}  // namespace esc::sim
+
+namespace esc::sim {
+namespace {
+
+// The rules as data: every broken rule at once, with what it is about, the value found and
+// the limit, without throwing.
+TEST(SimRules, ProblemsListEveryBrokenRuleWithItsValueAndLimit) {
+  EXPECT_TRUE(arena_problems(test::empty_arena(0.6, 0.6)).empty());
+  EXPECT_TRUE(robot_problems(KheperaParams{}).empty());
+  EXPECT_TRUE(placement_problems(test::empty_arena(0.6, 0.6), KheperaParams{}).empty());
+
+  ArenaSpec a = test::empty_arena(0.6, 0.6);
+  a.cylinders.push_back({{0.59, 0.3}, 0.025});   // reaches 1.5 cm beyond the right wall
+  a.lights.push_back({{0.3, 0.3}, 0.0, -1.0, -1});
+  const auto arena = arena_problems(a);
+  ASSERT_EQ(arena.size(), 2u);
+  EXPECT_EQ(arena[0].rule, Rule::CylinderInside);
+  EXPECT_EQ(arena[0].index, 0);
+  EXPECT_NEAR(arena[0].found, 0.015, 1e-12);
+  EXPECT_EQ(arena[1].rule, Rule::LightIntensity);
+  EXPECT_EQ(arena[1].info().setting, "light");
+  EXPECT_DOUBLE_EQ(arena[1].found, -1.0);
+
+  KheperaParams r;
+  r.ir.aperture_rad = 4.0;
+  r.energy.discharge_steps = 20'000'000;
+  const auto robot = robot_problems(r);
+  ASSERT_EQ(robot.size(), 2u);
+  EXPECT_EQ(robot[0].rule, Rule::IrApertureMax);
+  EXPECT_EQ(robot[0].info().setting, "ir_aperture");
+  EXPECT_EQ(robot[0].info().dimension, Dimension::Angle);
+  EXPECT_DOUBLE_EQ(robot[0].limit, std::numbers::pi);
+  EXPECT_EQ(robot[1].rule, Rule::EnergyDischargeMax);
+  EXPECT_DOUBLE_EQ(robot[1].limit, kMaxEnergySteps);
+}
+
+// The World's guard throws the first problem's message; the rim, not the centre, counts.
+TEST(SimRules, TheGuardThrowsTheFirstProblemAndTheRimCounts) {
+  KheperaParams r;
+  r.motor.max_speed_mps = 0.19;   // centre 9.5 mm per substep, rim 9.86 mm: fine
+  EXPECT_TRUE(robot_problems(r).empty());
+  r.motor.max_speed_mps = 0.195;  // centre 9.75 mm, rim 10.12 mm: too far
+  const auto problems = robot_problems(r);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].rule, Rule::ContactLookAhead);
+  EXPECT_NEAR(problems[0].found, 0.195 * (0.055 / 0.053) * 0.05, 1e-12);
+  try {
+    validate_robot(r);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), problems[0].message());
+  }
+  r = KheperaParams{};
+  r.wheel_base_m = 0.06;   // wider than the 55 mm body
+  ASSERT_EQ(robot_problems(r).size(), 1u);
+  EXPECT_EQ(robot_problems(r)[0].rule, Rule::WheelBaseWithinBody);
+}
+
+TEST(SimRules, TheRobotInTheArena) {
+  ArenaSpec a = test::empty_arena(0.05, 0.6);
+  EXPECT_EQ(placement_problems(a, KheperaParams{}).at(0).rule, Rule::RobotFits);
+  a = test::empty_arena(0.6, 0.6);
+  a.cylinders.push_back({{0.3, 0.3}, 0.05});
+  a.fixed_start = Pose{0.32, 0.3, 0.0};
+  const auto p = placement_problems(a, KheperaParams{});
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0].rule, Rule::StartClearOfCylinder);
+  EXPECT_NEAR(p[0].found, -0.03, 1e-12);   // the centre is 3 cm inside the cylinder
+  EXPECT_DOUBLE_EQ(p[0].limit, KheperaParams{}.body_radius_m);
 }
 
 }  // namespace
