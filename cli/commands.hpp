@@ -46,6 +46,20 @@ struct ReportOptions {
 
 int report_command(const ReportOptions& options);
 
+struct ReplayOptions {
+  std::filesystem::path source;              // a run directory or a run-NN.best.json file
+  std::string controller;                    // empty: every controller
+  std::optional<int> run;                    // from 1; none: each controller's best run
+  std::string epochs;                        // "1,3-5", from 1; empty: all
+  std::filesystem::path out;                 // empty: the run directory
+  std::filesystem::path script;              // evaluate in this script's experiment instead
+  std::string experiment;                    // of `script`; empty: its first
+  std::optional<std::uint64_t> seed;         // none: the stored best evaluation's seed
+  bool animate = false;                      // also an MP4 or GIF, where a tool for it is present
+};
+
+int replay_command(const ReplayOptions& options);
+
 struct BenchOptions {
   int max_threads = 0;                       // 0: all cores
   double min_time_s = 0.5;

@@ -1,24 +1,17 @@
 #include "cli/load.hpp"
 
-#include <cstdlib>
 #include <iostream>
-#include <sstream>
-#include <string>
 
 #include <unistd.h>
 
+#include "cli/library_path.hpp"
 #include "runtime/dist/mpi_session.hpp"
 
 namespace esc::cli {
 
 compiler::CompileOptions default_compile_options() {
   compiler::CompileOptions o;
-  if (const char* path = std::getenv("ESC_PATH")) {
-    std::stringstream entries(path);
-    for (std::string e; std::getline(entries, e, ':');)
-      if (!e.empty()) o.import_paths.emplace_back(e);
-  }
-  o.import_paths.emplace_back(ESC_STDLIB_DIR);
+  o.import_paths = import_search_path();
   return o;
 }
 
@@ -28,7 +21,11 @@ bool follower_rank() {
 }
 
 compiler::CompileResult load_script(const std::filesystem::path& file) {
-  compiler::CompileResult r = compiler::compile_file(file, default_compile_options());
+  return load_script(file, default_compile_options());
+}
+
+compiler::CompileResult load_script(const std::filesystem::path& file, const compiler::CompileOptions& options) {
+  compiler::CompileResult r = compiler::compile_file(file, options);
   if (!r.diagnostics.empty() && !follower_rank())
     std::cerr << compiler::render_all(r.diagnostics, r.sources, isatty(STDERR_FILENO) != 0);
   return r;

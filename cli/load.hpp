@@ -1,6 +1,7 @@
 #pragma once
 // Compiling a script the way every command does: imports searched beside the file, then
-// in $ESC_PATH, then in the shipped experiments/ directory; diagnostics rendered to stderr.
+// in $ESC_PATH, then in esc's standard library (cli/library_path.hpp); diagnostics
+// rendered to stderr.
 #include <filesystem>
 #include <optional>
 #include <utility>
@@ -31,5 +32,7 @@ void complain(fmt::format_string<Args...> format, Args&&... args) {
 // Compiles `file`, prints its diagnostics (colored on a terminal) to stderr (rank 0 only),
 // returns the result whether or not it succeeded.
 compiler::CompileResult load_script(const std::filesystem::path& file);
+// The same with other import paths.
+compiler::CompileResult load_script(const std::filesystem::path& file, const compiler::CompileOptions& options);
 
 }  // namespace esc::cli

@@ -1,4 +1,5 @@
-// The `esc` command: check, run and benchmark experiment scripts; export and report results.
+// The `esc` command: check, run and benchmark experiment scripts; export, report and replay
+// results.
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -7,18 +8,29 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/unknown_arguments.hpp"
+#include "cli/version.hpp"
 #include "runtime/dist/mpi_session.hpp"
 
 int main(int argc, char** argv) {
   using namespace esc::cli;
   // Under mpirun every rank runs this same command; a plain process never starts MPI.
   const esc::dist::MpiSession mpi(argc, argv);
+  if (esc::dist::launched_by_mpi() && !esc::dist::built_with_mpi()) {
+    // Every rank would run the whole campaign alone, into the same directory.
+    fmt::print(stderr, "esc: error: started by an MPI launcher, but this esc was built without MPI\n"
+                       "help: run it without mpirun, or build esc with MPI (Debian: libopenmpi-dev, "
+                       "-DESC_WITH_MPI=ON)\n");
+    return kExitBadInput;
+  }
   // Ranges with bounds a person can read in the error message.
   const CLI::Range kAtLeastOne(1, 1'000'000'000, "at least 1");
   const CLI::Range kThreads(0, 4096, "0 (all cores) to 4096");
   CLI::App app{"esc: evolutionary robotics experiments written as scripts"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", ESC_VERSION);
+  app.set_version_flag("--version", version_text());
+  // Unknown options and surplus arguments are reported with a suggestion (unknown_arguments.hpp).
+  app.allow_extras();
 
   std::vector<std::filesystem::path> check_files;
   auto* check = app.add_subcommand("check", "compile scripts and report every error, without running");
@@ -40,7 +52,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
   run_cmd->add_option("--cache", run.cache,
                       "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");
-  run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off)");
+  // One KEY=VALUE per --set, so that `--set epochs=2 FILE` leaves FILE to the command.
+  run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off); "
+                                             "once per setting")
+      ->allow_extra_args(false);
 
   ExportOptions exp;
   auto* export_cmd = app.add_subcommand("export", "write a run directory's results as CSV or JSON");
@@ -54,6 +69,24 @@ int main(int argc, char** argv) {
   report_cmd->add_option("DIR", rep.dir, "run directory")->required();
   report_cmd->add_option("--out", rep.out, "output file (default: DIR/report.html)");
 
+  ReplayOptions replay;
+  auto* replay_cmd = app.add_subcommand(
+      "replay", "re-simulate a stored controller: an SVG of its trajectories and a CSV of every step");
+  replay_cmd->add_option("SOURCE", replay.source, "run directory, or a stored genome (CONTROLLER/run-NN.best.json)")
+      ->required();
+  replay_cmd->add_option("--controller", replay.controller, "controller to replay (default: every one)");
+  replay_cmd->add_option("--run", replay.run, "run to replay, from 1 (default: each controller's best run)")
+      ->check(kAtLeastOne);
+  replay_cmd->add_option("--epochs", replay.epochs, "epochs to draw and write, from 1: 1,3,5-7 (default: all)");
+  replay_cmd->add_option("--out", replay.out, "output directory (default: SOURCE's directory)");
+  replay_cmd->add_option("--script", replay.script,
+                         "evaluate in an experiment of this script instead of the stored one (another arena, robot "
+                         "or fitness)");
+  replay_cmd->add_option("--experiment", replay.experiment, "experiment of --script (default: its first)");
+  replay_cmd->add_option("--seed", replay.seed, "evaluation seed (default: that of the stored best evaluation)");
+  replay_cmd->add_flag("--animate", replay.animate,
+                       "also write an animation: MP4 with ffmpeg, else GIF with ImageMagick's convert");
+
   BenchOptions bench;
   auto* bench_cmd = app.add_subcommand("bench", "measure control steps per second and thread scaling");
   bench_cmd->add_option("--threads", bench.max_threads, "largest thread count (default: all cores)")
@@ -63,17 +96,21 @@ int main(int argc, char** argv) {
                         "estimate the cost of every experiment of a script from measured rates");
   bench_cmd->add_option("--benchmark", bench.benchmark_args, "arguments for Google Benchmark (--benchmark_filter=...)");
 
+  if (unknown_command(app, argc, argv)) return kExitUsage;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
+  for (const CLI::App* command : app.get_subcommands())
+    if (unexpected_arguments(*command)) return kExitUsage;
   try {
     if (*check) return check_command(check_files);
     if (*run_cmd) return run_command(run);
     if (*export_cmd) return export_command(exp);
     if (*report_cmd) return report_command(rep);
+    if (*replay_cmd) return replay_command(replay);
     if (*bench_cmd) return bench_command(bench);
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "esc: error: out of memory\n");

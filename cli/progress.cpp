@@ -3,8 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
+
+#include "cli/terminal.hpp"
 
 namespace esc::cli {
 
@@ -13,6 +18,34 @@ std::string format_duration(double seconds) {
   if (s >= 3600) return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
   if (s >= 60) return fmt::format("{}m{:02}s", s / 60, s % 60);
   return fmt::format("{}s", s);
+}
+
+namespace {
+
+// The last column is left free: some terminals wrap as soon as it is written.
+std::size_t usable_columns() {
+  return static_cast<std::size_t>(std::max(1, terminal_columns(STDOUT_FILENO) - 1));
+}
+
+}  // namespace
+
+void ProgressPrinter::redraw_status(const std::vector<std::string>& statuses) {
+  constexpr std::size_t kWidest = 24;
+  constexpr std::size_t kNarrowest = 5;   // below this a bar says nothing
+  const std::size_t columns = usable_columns();
+  for (const std::string& status : statuses) {
+    const std::size_t width = display_width(status);
+    if (width + kNarrowest > columns) continue;
+    redraw(progress_bar(generations_done_, generations_total_, static_cast<int>(std::min(kWidest, columns - width))) +
+           status);
+    return;
+  }
+  redraw(statuses.back());
+}
+
+void ProgressPrinter::redraw(const std::string& line) {
+  fmt::print("\r\033[K{}", fit_width(line, usable_columns()));
+  line_open_ = true;
 }
 
 std::string progress_bar(std::int64_t done, std::int64_t total, int width) {
@@ -47,18 +80,21 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
   next_->generation_done(controller, run, g);
   ++generations_done_;
   ++done_here_;
+  // Generations are numbered from 0 (generation 0 is the initial population), runs from 1.
+  const int last_generation = spec_->generations_for(controller) - 1;
   if (live_) {
     const double percent = 100.0 * static_cast<double>(generations_done_) / static_cast<double>(generations_total_);
-    fmt::print("\r\033[K{} {:>3.0f}%  {} run {}/{} gen {}/{}  best {:.2f}  mean {:.2f}  {:.0f} eval/s  ETA {}",
-               progress_bar(generations_done_, generations_total_, 24), percent, controller.name, run + 1,
-               spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best, g.mean,
-               evaluations_per_second_, format_duration(eta_seconds_));
-    line_open_ = true;
+    const std::string where = fmt::format(" {:>3.0f}%  {} run {}/{} gen {}/{}  best {:.2f}", percent, controller.name,
+                                          run + 1, spec_->runs, g.generation, last_generation, g.best);
+    const std::string eta = fmt::format("ETA {}", format_duration(eta_seconds_));
+    // What a narrow terminal leaves out first: the rate, then the mean.
+    redraw_status({fmt::format("{}  mean {:.2f}  {:.0f} eval/s  {}", where, g.mean, evaluations_per_second_, eta),
+                   fmt::format("{}  mean {:.2f}  {}", where, g.mean, eta), fmt::format("{}  {}", where, eta)});
   } else {
     fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}/{:<4} best {:>9.2f}  mean {:>9.2f}  {:>6.0f} eval/s  "
                "{:>5.0f}k steps/s  ETA {}\n",
-               controller.name, run + 1, spec_->runs, g.generation + 1, spec_->generations_for(controller), g.best,
-               g.mean, evaluations_per_second_, steps_per_second_ / 1000.0, format_duration(eta_seconds_));
+               controller.name, run + 1, spec_->runs, g.generation, last_generation, g.best, g.mean,
+               evaluations_per_second_, steps_per_second_ / 1000.0, format_duration(eta_seconds_));
   }
   std::fflush(stdout);
 }
@@ -75,8 +111,9 @@ void ProgressPrinter::best_traced(const control::ControllerSpec& controller, con
 void ProgressPrinter::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {
   next_->run_done(controller, run);
   if (live_) {
-    fmt::print("\r\033[K{:<8} run {:>2}/{:<2} done: best fitness {:.2f}\n", controller.name, run.run + 1,
-               spec_->runs, run.best_fitness);
+    redraw(fmt::format("{:<8} run {:>2}/{:<2} done: best fitness {:.2f}", controller.name, run.run + 1, spec_->runs,
+                       run.best_fitness));
+    fmt::print("\n");
     line_open_ = false;
     std::fflush(stdout);
   }

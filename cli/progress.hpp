@@ -1,7 +1,9 @@
 #pragma once
 // Progress of a campaign. On a terminal: one live line redrawn in place (a bar, the
 // controller, run and generation, best and mean fitness of the generation, evaluations
-// per second and the estimated time left) and one permanent line per finished run.
+// per second and the estimated time left), cut to the terminal's width so that it never
+// wraps, and one permanent line per finished run. Runs are numbered from 1, generations
+// from 0, as in every other output.
 // Rates and time left are those of the last round: every run advancing together.
 // Otherwise (a pipe, a log file): one plain line per generation.
 // Forwards every event to the next listener (the run directory).
@@ -9,6 +11,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "runtime/eval/campaign.hpp"
 
@@ -32,6 +35,12 @@ class ProgressPrinter final : public eval::CampaignListener {
   void close();
 
  private:
+  // The bar and the first of `statuses` (longest first) that leaves room for one on the
+  // terminal's line; the last one cut to the line when none does.
+  void redraw_status(const std::vector<std::string>& statuses);
+  // Replaces the live line with `line`, cut to the terminal's width.
+  void redraw(const std::string& line);
+
   const eval::ExperimentSpec* spec_;
   eval::CampaignListener* next_;
   bool live_;

@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/dependencies.hpp"
 #include "cli/load.hpp"
+#include "cli/experiment_setup.hpp"
 #include "cli/progress.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/campaign.hpp"
@@ -145,55 +146,6 @@ nlohmann::ordered_json overrides_json(const RunOptions& o) {
   return j;
 }
 
-// Applies the command-line overrides; prints each problem, returns false if any.
-bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
-  std::vector<std::pair<std::string, std::string>> settings;
-  if (o.runs) settings.emplace_back("runs", std::to_string(*o.runs));
-  if (o.generations) settings.emplace_back("generations", std::to_string(*o.generations));
-  if (o.seed) settings.emplace_back("seed", std::to_string(*o.seed));
-  for (const std::string& kv : o.settings) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      complain("esc: error: --set expects KEY=VALUE, got `{}`\n", kv);
-      return false;
-    }
-    settings.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-  }
-  bool ok = true;
-  for (const auto& [key, value] : settings) {
-    const std::string error = compiler::apply_setting(spec, key, value);
-    if (!error.empty()) {
-      complain("esc: error: {}={}: {}\n", key, value, error);
-      ok = false;
-    }
-  }
-  return ok;
-}
-
-// The experiment `name` of a compiled script (the first one if `name` is empty), or null
-// after printing an error.
-eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
-                                      const std::string& name) {
-  if (compiled.experiments.empty()) {
-    complain("esc: error: {} declares no experiment to run\n", file.string());
-    return nullptr;
-  }
-  if (name.empty()) return &compiled.experiments.front();
-  std::string names;
-  for (auto& e : compiled.experiments) {
-    if (e.name == name) return &e;
-    names += (names.empty() ? "`" : ", `") + e.name + "`";
-  }
-  complain("esc: error: {} has no experiment `{}`; it declares {}\n", file.string(), name, names);
-  return nullptr;
-}
-
-std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compiled) {
-  std::vector<store::SourceFile> sources;
-  for (const auto& [name, text] : compiled.sources) sources.push_back({name, text});
-  return sources;
-}
-
 bool live_progress() { return isatty(STDOUT_FILENO) != 0; }
 
 // Runs the campaign on every rank of an MPI job, or alone. Rank 0 (or the lone process)
@@ -310,17 +262,7 @@ int resume_command(const RunOptions& o) {
   if (!compiled.ok()) return kExitBadInput;
   eval::ExperimentSpec* spec = pick_experiment(compiled, script, stored.name);
   if (spec == nullptr) return kExitBadInput;
-  RunOptions replay;
-  try {
-    const auto& ov = stored.overrides;
-    if (ov.contains("runs")) replay.runs = ov["runs"].get<int>();
-    if (ov.contains("generations")) replay.generations = ov["generations"].get<int>();
-    if (ov.contains("seed")) replay.seed = ov["seed"].get<std::uint64_t>();
-    if (ov.contains("set")) replay.settings = ov["set"].get<std::vector<std::string>>();
-    if (ov.contains("cache")) replay.cache = ov["cache"].get<std::string>();
-  } catch (const nlohmann::json::exception& e) {
-    throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", o.resume.string(), e.what()));
-  }
+  RunOptions replay = stored_overrides(stored, o.resume);
   if (!apply_overrides(replay, *spec)) return kExitBadInput;
   replay.threads = o.threads;
   replay.runs_at_once = o.runs_at_once;

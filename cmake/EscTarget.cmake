@@ -1,9 +1,11 @@
 # Warnings and include root shared by every esc target, set per target (no global flags).
+# Headers are included from the project root ("runtime/eval/evaluator.hpp"); installed, from
+# include/esc. Source paths are mapped to `.` so that no binary holds the build machine's.
 function(esc_target_defaults target)
   target_compile_features(${target} PUBLIC cxx_std_20)
-  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
-    -Wno-sign-conversion)
+    -Wno-sign-conversion -ffile-prefix-map=${PROJECT_SOURCE_DIR}/=)
 endfunction()
 
 # A GoogleTest suite named after the module it tests, registered with ctest.

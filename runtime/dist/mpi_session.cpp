@@ -7,18 +7,10 @@
 
 namespace esc::dist {
 
-namespace {
-const MpiSession* g_session = nullptr;
-}
-
-bool launched_by_mpi() noexcept {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
-    if (std::getenv(v) != nullptr) return true;
-  return false;
-}
+bool built_with_mpi() noexcept { return true; }
 
 MpiSession::MpiSession(int& argc, char**& argv) {
-  g_session = this;
+  set_current(this);
   if (!launched_by_mpi()) return;
   // Worker threads fetch evaluations from the shared counter themselves (Distribution).
   MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &thread_support_);
@@ -29,7 +21,7 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 
 MpiSession::~MpiSession() {
   if (active_) MPI_Finalize();
-  g_session = nullptr;
+  set_current(nullptr);
 }
 
 bool MpiSession::all_ok(bool ok) const {
@@ -55,7 +47,5 @@ void MpiSession::abort(int status) const {
   if (active_) MPI_Abort(MPI_COMM_WORLD, status);
   std::exit(status);
 }
-
-const MpiSession* MpiSession::current() noexcept { return g_session; }
 
 }  // namespace esc::dist

@@ -1,7 +1,8 @@
 #pragma once
 // The process's place in an MPI job. esc runs as a plain process unless it was started by
 // an MPI launcher (mpirun sets OMPI_COMM_WORLD_SIZE / PMI_SIZE / PMIX_RANK), so a normal
-// `esc run` never pays MPI's start-up or needs a launcher.
+// `esc run` never pays MPI's start-up or needs a launcher. MPI is optional (ESC_WITH_MPI):
+// mpi_session.cpp and distribution.cpp use it, single_process.cpp stands in for both without.
 //
 // Under MPI every rank runs the same campaign logic (compiling the same script, breeding
 // the same populations from the same streams); only evaluations are shared out, and their
@@ -44,6 +45,7 @@ class MpiSession {
   [[nodiscard]] static const MpiSession* current() noexcept;
 
  private:
+  static void set_current(const MpiSession* session) noexcept;
   bool active_ = false;
   int rank_ = 0;
   int size_ = 1;
@@ -52,5 +54,9 @@ class MpiSession {
 
 // True when the environment says an MPI launcher started this process.
 [[nodiscard]] bool launched_by_mpi() noexcept;
+
+// Whether this esc shares evaluations among MPI ranks (built with ESC_WITH_MPI). Without
+// it, a process started by mpirun stays alone (MpiSession::active() is false).
+[[nodiscard]] bool built_with_mpi() noexcept;
 
 }  // namespace esc::dist

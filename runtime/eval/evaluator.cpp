@@ -20,8 +20,8 @@ bool any_stop(const FitnessSpec& f, const expr::Frame& frame) noexcept {
 }
 
 void report_step(TraceSink& trace, int epoch, int step, const sim::World& world,
-                 const std::array<double, sim::kIrSensors>& ir, const control::WheelCommand& cmd,
-                 int action, double fitness) {
+                 const std::array<double, sim::kIrSensors>& ir, const std::array<double, sim::kLightSensors>& light,
+                 const control::WheelCommand& cmd, int action, double fitness) {
   const sim::RobotState& state = world.state();
   TraceStep t;
   t.energy = state.energy;
@@ -32,6 +32,7 @@ void report_step(TraceSink& trace, int epoch, int step, const sim::World& world,
   t.step = step;
   t.pose = state.pose;
   t.ir = ir;
+  t.light = light;
   t.left_command = cmd.left;
   t.right_command = cmd.right;
   t.left_speed_mps = state.wheel_speed_mps[0];
@@ -90,7 +91,7 @@ Evaluation Evaluator::run(Driver& ctl, std::uint64_t seed, TraceSink* trace) {
       ++result.steps;
       result.fitness += s.fitness.step.eval(frame);
       if (trace != nullptr) [[unlikely]]
-        report_step(*trace, epoch, step, world_, ir, cmd, ctl.last_action(), result.fitness);
+        report_step(*trace, epoch, step, world_, ir, light, cmd, ctl.last_action(), result.fitness);
       if (any_stop(s.fitness, frame) || world_.state().energy_empty) break;
     }
   }

@@ -26,6 +26,7 @@ struct TraceStep {
   int step = 0;                               // from 0 within the epoch
   sim::Pose pose;                             // after the step
   std::array<double, sim::kIrSensors> ir{};   // read after the step (the next step's input)
+  std::array<double, sim::kLightSensors> light{};   // ambient light, read with the IR
   double left_command = 0.0;                  // commands in [-1, 1] chosen by the controller
   double right_command = 0.0;
   double left_speed_mps = 0.0;                // measured wheel speeds after the step

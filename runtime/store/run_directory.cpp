@@ -161,9 +161,15 @@ void RunDirectory::write_best(const std::string& controller, const std::string& 
                               const eval::RunResult& run) {
   nlohmann::ordered_json best = {{"controller", controller},
                                  {"architecture", architecture},
-                                 {"run", run.run},
+                                 {"run", run.run + 1},
                                  {"seed", run.seed},
                                  {"fitness", run.best_fitness},
+                                 // Where the best evaluation happened, which fixes its seed: `esc replay`
+                                 // re-simulates it from this file alone.
+                                 {"generation", run.best_generation},
+                                 {"individual", run.best_index},
+                                 {"evaluation_seed", eval::evaluation_seed(run.seed, run.best_generation,
+                                                                           static_cast<std::size_t>(run.best_index))},
                                  {"genome", run.best_genome}};
   if (!run.best_tree.empty()) best["tree"] = run.best_tree;
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");

@@ -15,7 +15,7 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
         mean.push_back(g.mean);
         sd.push_back(g.sd);
       }
-      nlohmann::ordered_json run = {{"run", r.run}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
+      nlohmann::ordered_json run = {{"run", r.run + 1}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
                                     {"best", best}, {"mean", mean}, {"sd", sd}};
       if (!r.best_tree.empty()) run["best_tree"] = r.best_tree;   // tree controllers, as script code
       // Steps per action or behavior in the run's best evaluation (symbolic heads, supervisors).

@@ -78,7 +78,7 @@
       datasets.push({label: c.name, data: cv.mean, borderColor: col, backgroundColor: col, borderWidth: 2,
                      pointRadius: 0, fill: false});
     });
-    const labels = Array.from({length}, (_, g) => g + 1);
+    const labels = Array.from({length}, (_, g) => g);   // generation 0: the initial population
     return new Chart(chartCard(parent, title, 'Line: mean over runs; band: ± one standard deviation across runs.'), {
       type: 'line',
       data: {labels, datasets},

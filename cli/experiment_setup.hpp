@@ -1,0 +1,30 @@
+#pragma once
+// Setting up an experiment the way `esc run`, `esc run --resume` and `esc replay` all do:
+// picking it from a compiled script, applying command-line settings (given now, or stored
+// in a run directory when it started), and naming its source files for the store.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "compiler/compiler.hpp"
+#include "runtime/store/results_db.hpp"
+
+namespace esc::cli {
+
+// The experiment `name` of a compiled script (the first one if `name` is empty), or null
+// after printing an error (with the closest name declared).
+eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
+                                      const std::string& name);
+
+// Applies the command-line overrides (--runs, --generations, --seed, --set); prints each
+// problem, returns false if any.
+bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec);
+
+// The overrides a stored run started with (and its dependency cache), to apply again.
+// Throws store::StoreError when `dir`'s database holds them damaged.
+[[nodiscard]] RunOptions stored_overrides(const store::StoredExperiment& stored, const std::filesystem::path& dir);
+
+[[nodiscard]] std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compiled);
+
+}  // namespace esc::cli

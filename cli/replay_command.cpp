@@ -1,0 +1,332 @@
+// `esc replay`: re-simulates stored controllers through the evaluator (the same code path,
+// seed and settings as the run, so a replay of the stored best evaluation is bit-identical
+// to the one in esc.db) and writes what a paper or a slide can use: an SVG of the
+// trajectories and a CSV of every step (runtime/report/trajectory_*.hpp), and on request an
+// animation (cli/replay_animation.hpp).
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/dependencies.hpp"
+#include "cli/experiment_setup.hpp"
+#include "cli/load.hpp"
+#include "cli/replay_animation.hpp"
+#include "cli/replay_sources.hpp"
+#include "compiler/names.hpp"
+#include "runtime/eval/campaign.hpp"
+#include "runtime/report/trajectory_csv.hpp"
+#include "runtime/report/trajectory_svg.hpp"
+#include "runtime/store/run_directory.hpp"
+
+namespace esc::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// One stored evaluation to replay: a controller's genome and the seed of its evaluation.
+struct Subject {
+  std::string controller;
+  int run = 0;                                // from 0
+  std::vector<double> genome;
+  std::uint64_t seed = 0;
+  std::optional<double> fitness;              // as stored, to check against
+  const store::StoredReplay* stored = nullptr;   // the same evaluation stored in esc.db, if it is
+};
+
+struct Collect final : eval::TraceSink {
+  std::vector<eval::TraceStep> steps;
+  void on_step(const eval::TraceStep& t) override { steps.push_back(t); }
+};
+
+// "1,3-5" (epochs from 1) as indices from 0, in order; nullopt after printing an error.
+std::optional<std::vector<int>> parse_epochs(const std::string& list, int epochs) {
+  std::vector<int> chosen;
+  if (list.empty()) {
+    for (int e = 0; e < epochs; ++e) chosen.push_back(e);
+    return chosen;
+  }
+  std::size_t at = 0;
+  while (at <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', at), list.size());
+    const std::string item = list.substr(at, comma - at);
+    const std::size_t dash = item.find('-');
+    int first = 0;
+    int last = 0;
+    char* end = nullptr;
+    first = static_cast<int>(std::strtol(item.c_str(), &end, 10));
+    bool ok = end != item.c_str() && (dash == std::string::npos ? *end == '\0' : end == item.c_str() + dash);
+    last = first;
+    if (ok && dash != std::string::npos) {
+      const char* from = item.c_str() + dash + 1;
+      last = static_cast<int>(std::strtol(from, &end, 10));
+      ok = end != from && *end == '\0';
+    }
+    if (!ok || first < 1 || last < first || last > epochs) {
+      complain("esc: error: --epochs {}: `{}` is not an epoch or a range of epochs between 1 and {} (e.g. 1,3-5)\n",
+               list, item, epochs);
+      return std::nullopt;
+    }
+    for (int e = first; e <= last; ++e)
+      if (std::find(chosen.begin(), chosen.end(), e - 1) == chosen.end()) chosen.push_back(e - 1);
+    at = comma + 1;
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
+// The run to replay of a stored controller: --run, else the run whose best evaluation is
+// stored as the controller's replay, else its best run. Null after printing an error.
+const eval::RunResult* pick_run(const store::StoredController& c, const std::optional<int>& run) {
+  const auto& runs = c.finished;
+  if (run) {
+    const auto it = std::find_if(runs.begin(), runs.end(), [&](const eval::RunResult& r) { return r.run + 1 == *run; });
+    if (it != runs.end()) return &*it;
+    complain("esc: error: controller {} has no finished run {} ({} finished)\n", c.name, *run, runs.size());
+    return nullptr;
+  }
+  if (runs.empty()) {
+    complain("esc: error: controller {} has no finished run to replay\n", c.name);
+    return nullptr;
+  }
+  if (c.replay)
+    for (const eval::RunResult& r : runs)
+      if (r.run == c.replay->run) return &r;
+  return &*std::max_element(runs.begin(), runs.end(), [](const eval::RunResult& a, const eval::RunResult& b) {
+    return a.best_fitness < b.best_fitness;
+  });
+}
+
+std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, const ReplayOptions& o) {
+  std::vector<Subject> subjects;
+  std::vector<std::string> names;
+  for (const store::StoredController& c : stored.controllers) {
+    names.push_back(c.name);
+    if (!o.controller.empty() && c.name != o.controller) continue;
+    const eval::RunResult* r = pick_run(c, o.run);
+    if (r == nullptr) return {};
+    Subject s{c.name, r->run, r->best_genome,
+              eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index)),
+              r->best_fitness, nullptr};
+    if (c.replay && c.replay->run == r->run && c.replay->seed == s.seed) s.stored = &*c.replay;
+    subjects.push_back(std::move(s));
+  }
+  if (subjects.empty()) {
+    complain("esc: error: the run has no controller `{}`; it compares {}\n", o.controller,
+             compiler::quoted_list(names, " and "));
+    if (const auto hint = compiler::did_you_mean(o.controller, names)) complain("help: {}\n", *hint);
+  }
+  return subjects;
+}
+
+// A genome file written by `esc run` (CONTROLLER/run-NN.best.json). Nullopt after printing.
+std::optional<Subject> genome_subject(const fs::path& file, const ReplayOptions& o) {
+  std::ifstream in(file);
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+    Subject s;
+    s.controller = j.at("controller").get<std::string>();
+    s.run = j.at("run").get<int>() - 1;
+    s.genome = j.at("genome").get<std::vector<double>>();
+    s.fitness = j.at("fitness").get<double>();
+    if (o.seed) s.seed = *o.seed;
+    else if (j.contains("evaluation_seed")) s.seed = j["evaluation_seed"].get<std::uint64_t>();
+    else {
+      complain("esc: error: {} does not say its evaluation's seed (written by an older esc): give --seed\n",
+               file.string());
+      return std::nullopt;
+    }
+    return s;
+  } catch (const nlohmann::json::exception& e) {
+    complain("esc: error: {} is not a genome file of esc run ({})\n", file.string(), e.what());
+    return std::nullopt;
+  }
+}
+
+// The first difference between a replay and the stored one, or empty when bit-identical.
+std::string first_difference(std::span<const eval::TraceStep> now, const store::StoredReplay& stored) {
+  if (now.size() != stored.steps.size())
+    return fmt::format("{} steps instead of the stored {}", now.size(), stored.steps.size());
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    const eval::TraceStep& a = now[i];
+    const eval::TraceStep& b = stored.steps[i];
+    const bool same = a.epoch == b.epoch && a.step == b.step && a.pose.x_m == b.pose.x_m && a.pose.y_m == b.pose.y_m &&
+                      a.pose.heading_rad == b.pose.heading_rad && a.ir == b.ir && a.left_command == b.left_command &&
+                      a.right_command == b.right_command && a.left_speed_mps == b.left_speed_mps &&
+                      a.right_speed_mps == b.right_speed_mps && a.action == b.action && a.fitness == b.fitness &&
+                      a.collided == b.collided && a.energy == b.energy;
+    if (!same) return fmt::format("it differs from the stored replay at epoch {}, step {}", a.epoch + 1, a.step + 1);
+  }
+  return {};
+}
+
+// What the run's experiment needs from other experiments' stored results (evolved
+// behaviors); replaying never runs them.
+DependencyContext reuse_only(const compiler::CompileResult& compiled, const RunOptions& settings,
+                             const fs::path& cache) {
+  const auto refuse = [cache](const eval::ExperimentSpec& d, const fs::path&) {
+    complain("esc: error: replaying needs the results of experiment `{}`, which are not in {}; run it first (esc run)\n",
+             d.name, cache.string());
+    return kExitBadInput;
+  };
+  return DependencyContext{compiled, [&settings](eval::ExperimentSpec& d) { return apply_overrides(settings, d); },
+                           refuse, refuse, cache, ESC_VERSION_STRING};
+}
+
+std::string epochs_text(const std::vector<int>& epochs, int total) {
+  if (total == 1) return "its one epoch";
+  if (static_cast<int>(epochs.size()) == total) return fmt::format("all {} epochs", total);
+  std::string s;
+  for (const int e : epochs) s += fmt::format("{}{}", s.empty() ? "" : ",", e + 1);
+  return fmt::format("epoch{} {} of {}", epochs.size() == 1 ? "" : "s", s, total);
+}
+
+// Replays one subject in `spec` and writes its files. Returns the exit status.
+int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayOptions& o, const std::vector<int>& epochs,
+               const fs::path& out) {
+  const bool faithful = o.script.empty() && !o.seed;
+  const auto controller = std::find_if(spec.controllers.begin(), spec.controllers.end(),
+                                       [&](const control::ControllerSpec& c) { return c.name == s.controller; });
+  if (controller == spec.controllers.end()) {
+    std::vector<std::string> names;
+    for (const auto& c : spec.controllers) names.push_back(c.name);
+    complain("esc: error: experiment `{}` compares no controller `{}` (it compares {})\n", spec.name, s.controller,
+             compiler::quoted_list(names, " and "));
+    return kExitBadInput;
+  }
+  if (!controller->is_tree() && s.genome.size() != controller->genome_size()) {
+    complain("esc: error: the stored genome of {} has {} genes, but {} in experiment `{}` has {} ({})\n", s.controller,
+             s.genome.size(), s.controller, spec.name, controller->genome_size(), controller->architecture());
+    return kExitBadInput;
+  }
+  eval::Evaluator evaluator(spec);
+  Collect trace;
+  const eval::Evaluation result = evaluator.evaluate(*controller, s.genome, s.seed, &trace);
+  int status = kExitOk;
+  if (faithful && s.fitness && result.fitness != *s.fitness) {
+    complain("esc: error: {} run {} scores {:.17g} now, but {:.17g} when it ran: the simulation has changed\n",
+             s.controller, s.run + 1, result.fitness, *s.fitness);
+    status = kExitBadInput;
+  }
+  if (faithful && s.stored != nullptr) {
+    const std::string difference = first_difference(trace.steps, *s.stored);
+    if (!difference.empty()) {
+      complain("esc: error: {} run {}: {}\n", s.controller, s.run + 1, difference);
+      status = kExitBadInput;
+    }
+  }
+  std::vector<eval::TraceStep> drawn;
+  for (const eval::TraceStep& t : trace.steps)
+    if (std::binary_search(epochs.begin(), epochs.end(), t.epoch)) drawn.push_back(t);
+
+  // Named for what was replayed: another experiment's or another seed's files stand beside
+  // the faithful replay's, never over them.
+  std::string stem = fmt::format("replay-{}-run-{:02}", s.controller, s.run + 1);
+  if (!o.script.empty()) stem += "-in-" + spec.name;
+  if (o.seed) stem += fmt::format("-seed-{}", *o.seed);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  report::TrajectoryFigure figure;
+  figure.title = fmt::format("{} ({}), run {}, in experiment {}", s.controller, controller->architecture(), s.run + 1,
+                             spec.name);
+  figure.subtitle = fmt::format("fitness {:.2f} over {} epoch{} of {} steps; {} drawn; arena {}; evaluation seed {}",
+                                result.fitness, spec.epochs, spec.epochs == 1 ? "" : "s", spec.steps, epochs_text(epochs, spec.epochs),
+                                spec.arena_name, s.seed);
+  figure.arena = spec.arena;
+  figure.robot_radius_m = spec.robot.body_radius_m;
+  figure.choices = controller->choice_names();
+  figure.steps = drawn;
+  store::write_atomically(out / (stem + ".svg"), report::trajectory_svg(figure));
+  store::write_atomically(out / (stem + ".csv"), report::trajectory_csv(drawn, figure.choices, spec.robot.control_step_s));
+  say("esc: replayed {} run {} in {} (fitness {:.2f}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1, spec.name,
+      result.fitness, faithful && s.stored != nullptr && status == kExitOk ? ", identical to the stored replay" : "",
+      out.string(), stem);
+  if (o.animate) {
+    const std::optional<fs::path> movie = write_animation(figure, out / stem);
+    if (!movie) return kExitBadInput;
+    say("esc: animation: {}\n", movie->string());
+  }
+  return status;
+}
+
+}  // namespace
+
+int replay_command(const ReplayOptions& o) {
+  std::error_code ec;
+  const bool genome_file = fs::is_regular_file(o.source, ec);
+  // The run directory: SOURCE itself, or the one a genome file was written into.
+  const fs::path dir = genome_file ? o.source.parent_path().parent_path() : o.source;
+  const bool has_run = fs::exists(dir / store::kDatabaseFile, ec);
+  if (genome_file && !has_run && o.script.empty()) {
+    complain("esc: error: {} is not inside a run directory: give the experiment to replay it in with --script FILE "
+             "[--experiment NAME]\n", o.source.string());
+    return kExitUsage;
+  }
+  if (!o.experiment.empty() && o.script.empty()) {
+    complain("esc: error: --experiment names an experiment of --script FILE; give the script too\n");
+    return kExitUsage;
+  }
+  std::optional<store::StoredExperiment> stored;
+  if (has_run || !genome_file) stored = store::ResultsDb::open(dir, true).load_single();
+
+  std::vector<Subject> subjects;
+  if (genome_file) {
+    auto s = genome_subject(o.source, o);
+    if (!s) return kExitBadInput;
+    subjects.push_back(std::move(*s));
+  } else {
+    subjects = stored_subjects(*stored, o);
+    if (subjects.empty()) return kExitBadInput;
+    if (o.seed)
+      for (Subject& s : subjects) s.seed = *o.seed;
+  }
+
+  // The experiment: the stored one, compiled from the sources the run stored (whatever has
+  // happened to the script since), with its settings; or one of another script.
+  RunOptions settings = stored ? stored_overrides(*stored, dir) : RunOptions{};
+  compiler::CompileResult compiled;
+  eval::ExperimentSpec* spec = nullptr;
+  if (o.script.empty()) {
+    const ReplaySources sources(*stored);
+    compiled = sources.compile();
+    if (!compiled.ok()) return kExitBadInput;
+    if (store::campaign_hash(stored->name, sources_of(compiled)) != stored->content_hash) {
+      complain("esc: error: the sources stored in {} do not compile back to the run's script\n", dir.string());
+      return kExitBadInput;
+    }
+    spec = pick_experiment(compiled, sources.main_file(), stored->name);
+  } else {
+    settings.runs.reset();
+    settings.generations.reset();
+    settings.seed.reset();
+    settings.settings.clear();
+    compiled = load_script(o.script);
+    if (!compiled.ok()) return kExitBadInput;
+    spec = pick_experiment(compiled, o.script, o.experiment);
+  }
+  if (spec == nullptr || !apply_overrides(settings, *spec)) return kExitBadInput;
+  if (o.script.empty() && spec->resolved_settings != stored->settings) {
+    complain("esc: error: the stored sources of {} no longer compile to the settings the run used\n", dir.string());
+    return kExitBadInput;
+  }
+  spec->start_from.reset();   // where evolution started does not change an evaluation
+  const fs::path cache = !settings.cache.empty() ? settings.cache : dir / "deps";
+  if (!prepare_dependencies(*spec, reuse_only(compiled, settings, cache))) return kExitBadInput;
+
+  const auto epochs = parse_epochs(o.epochs, spec->epochs);
+  if (!epochs) return kExitUsage;
+  const fs::path out = !o.out.empty() ? o.out : genome_file ? o.source.parent_path() : dir;
+  int status = kExitOk;
+  for (const Subject& s : subjects) status = std::max(status, replay_one(*spec, s, o, *epochs, out));
+  return status;
+}
+
+}  // namespace esc::cli

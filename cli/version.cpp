@@ -1,0 +1,24 @@
+#include "cli/version.hpp"
+
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "cli/library_path.hpp"
+#include "runtime/dist/mpi_session.hpp"
+
+namespace esc::cli {
+
+std::string version_text() {
+  const char* esc_path = std::getenv("ESC_PATH");
+  const std::filesystem::path library = standard_library_dir();
+  return fmt::format("esc {} (commit {})\n"
+                     "optional parts: MPI {}, Google Benchmark (esc bench) {}\n"
+                     "standard library: {}\n"
+                     "ESC_PATH: {}",
+                     ESC_VERSION_STRING, kCommit, dist::built_with_mpi() ? "yes" : "no",
+                     ESC_WITH_BENCHMARK ? "yes" : "no", library.empty() ? "not found" : library.string(),
+                     esc_path != nullptr ? esc_path : "(not set)");
+}
+
+}  // namespace esc::cli

@@ -1,0 +1,45 @@
+# Debian packages of esc (`cpack -G DEB` in the build directory, or `cmake --build build
+# --target package`): esc (the command, its standard library and scripts, docs, man page,
+# bash completion) with its shared-library dependencies found by dpkg-shlibdeps, and esc-dev
+# (headers, static libraries, the CMake package) depending on the -dev packages its
+# exported targets need. Built for and tested on Debian bookworm.
+set(CPACK_PACKAGE_NAME esc)
+set(CPACK_PACKAGE_VENDOR "esc")
+set(ESC_PACKAGE_MAINTAINER "esc maintainers <maintainers@esc.invalid>" CACHE STRING
+    "Maintainer field of the Debian packages")
+set(CPACK_PACKAGE_CONTACT "${ESC_PACKAGE_MAINTAINER}")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_GENERATOR DEB)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_ALL runtime dev)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME esc)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
+    "${PROJECT_DESCRIPTION}\n esc evolves neural and genetic-programming controllers for a simulated Khepera robot\n"
+    " from experiments written in a small declarative language, compares them over many\n"
+    " independent runs and reports the results (SQLite store, HTML report, SVG replays).")
+set(esc_suggests "ffmpeg | imagemagick")
+if(ESC_WITH_MPI_FOUND)
+  string(PREPEND esc_suggests "openmpi-bin, ")
+endif()
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "${esc_suggests}")
+
+set(CPACK_DEBIAN_DEV_PACKAGE_NAME esc-dev)
+set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
+set(CPACK_DEBIAN_DEV_DESCRIPTION
+    "${PROJECT_DESCRIPTION} (libraries and headers)\n find_package(esc) gives esc::compiler (scripts to experiments) and\n"
+    " esc::runtime (evaluating genomes, running campaigns, storing and reporting results).")
+set(esc_dev_depends "esc (= ${PROJECT_VERSION}), cmake, libeigen3-dev, libbullet-dev, libfmt-dev, libtbb-dev, "
+                    "nlohmann-json3-dev, libantlr4-runtime-dev, libsqlite3-dev, pkg-config, libboost-dev")
+if(ESC_WITH_MPI_FOUND)
+  string(APPEND esc_dev_depends ", libopenmpi-dev")
+endif()
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "${esc_dev_depends}")
+
+include(CPack)

@@ -1,0 +1,30 @@
+#include "runtime/report/trajectory_csv.hpp"
+
+#include <fmt/format.h>
+
+namespace esc::report {
+
+std::string trajectory_csv_header() {
+  std::string h = "epoch,step,time_s,x_m,y_m,heading_rad,left_command,right_command,left_speed_mps,right_speed_mps";
+  for (int i = 0; i < sim::kIrSensors; ++i) h += fmt::format(",ir{}", i);
+  for (int i = 0; i < sim::kLightSensors; ++i) h += fmt::format(",light{}", i);
+  return h + ",energy,behavior,fitness,collided";
+}
+
+std::string trajectory_csv(std::span<const eval::TraceStep> steps, const std::vector<std::string>& choices,
+                           double control_step_s) {
+  std::string out = trajectory_csv_header() + "\n";
+  for (const eval::TraceStep& t : steps) {
+    const bool named = t.action >= 0 && static_cast<std::size_t>(t.action) < choices.size();
+    out += fmt::format("{},{},{:.10g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", t.epoch + 1, t.step + 1,
+                       (t.step + 1) * control_step_s, t.pose.x_m, t.pose.y_m, t.pose.heading_rad, t.left_command,
+                       t.right_command, t.left_speed_mps, t.right_speed_mps);
+    for (const double v : t.ir) out += fmt::format(",{:.17g}", v);
+    for (const double v : t.light) out += fmt::format(",{:.17g}", v);
+    out += fmt::format(",{:.17g},{},{:.17g},{}\n", t.energy, named ? choices[static_cast<std::size_t>(t.action)] : "",
+                       t.fitness, t.collided ? 1 : 0);
+  }
+  return out;
+}
+
+}  // namespace esc::report

@@ -1,0 +1,171 @@
+// `esc replay`: a stored controller re-simulated from its stored seed writes an SVG (arena,
+// paths, legend) and a CSV whose rows are the replay stored in esc.db, value for value; a
+// genome file replays in another script's experiment; bad choices are errors, not crashes.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "runtime/store/results_db.hpp"
+#include "tests/cli/esc_process.hpp"
+
+namespace {
+
+using cli_test::Outcome;
+using cli_test::read_json;
+using cli_test::scratch;
+using cli_test::shell;
+using cli_test::slurp;
+using cli_test::tiny;
+namespace fs = std::filesystem;
+namespace store = ::esc::store;
+namespace eval = ::esc::eval;
+
+Outcome esc_command(const std::string& args) { return cli_test::esc(args); }
+
+// One finished run of tiny.esc, made once for every test here.
+const fs::path& tiny_run() {
+  static const fs::path dir = [] {
+    const fs::path d = scratch("replay-run");
+    const Outcome o = esc_command("run " + tiny() + " --generations 3 --threads 2 --out " + d.string());
+    EXPECT_EQ(o.status, 0) << o.output;
+    return d;
+  }();
+  return dir;
+}
+
+std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream cut(line);
+    for (std::string cell; std::getline(cut, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(std::move(cells));
+  }
+  return rows;
+}
+
+double number(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
+
+// Whether the file is well-formed XML (Python's parser: python3 is one of the packages
+// scripts/esc-setup.sh installs).
+bool well_formed_xml(const fs::path& file) {
+  return shell("python3 -c 'import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])' " + file.string()).status == 0;
+}
+
+TEST(Replay, RewritesTheStoredReplayBitForBitAsCsvAndSvg) {
+  const fs::path dir = tiny_run();
+  const fs::path out = scratch("replay-out");
+  const Outcome o = esc_command("replay " + dir.string() + " --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+
+  const store::StoredExperiment stored = store::ResultsDb::open(dir, true).load_single();
+  for (const store::StoredController& c : stored.controllers) {
+    ASSERT_TRUE(c.replay.has_value()) << c.name;
+    const std::string stem = "replay-" + c.name + "-run-0" + std::to_string(c.replay->run + 1);
+    const auto rows = read_csv(out / (stem + ".csv"));
+    ASSERT_EQ(rows.size(), c.replay->steps.size() + 1) << c.name;
+    const std::vector<std::string>& header = rows.front();
+    const auto column = [&](const std::string& name) {
+      const auto it = std::find(header.begin(), header.end(), name);
+      EXPECT_NE(it, header.end()) << name;
+      return static_cast<std::size_t>(it - header.begin());
+    };
+    for (std::size_t i = 0; i < c.replay->steps.size(); ++i) {
+      const eval::TraceStep& t = c.replay->steps[i];
+      const std::vector<std::string>& r = rows[i + 1];
+      ASSERT_EQ(r.size(), header.size()) << "row " << i;
+      EXPECT_EQ(std::stoi(r[column("epoch")]), t.epoch + 1);
+      EXPECT_EQ(std::stoi(r[column("step")]), t.step + 1);
+      EXPECT_EQ(number(r[column("x_m")]), t.pose.x_m) << "row " << i;
+      EXPECT_EQ(number(r[column("y_m")]), t.pose.y_m) << "row " << i;
+      EXPECT_EQ(number(r[column("heading_rad")]), t.pose.heading_rad) << "row " << i;
+      EXPECT_EQ(number(r[column("left_command")]), t.left_command) << "row " << i;
+      EXPECT_EQ(number(r[column("right_speed_mps")]), t.right_speed_mps) << "row " << i;
+      for (std::size_t k = 0; k < t.ir.size(); ++k)
+        EXPECT_EQ(number(r[column("ir" + std::to_string(k))]), t.ir[k]) << "row " << i;
+      EXPECT_EQ(number(r[column("energy")]), t.energy) << "row " << i;
+      EXPECT_EQ(number(r[column("fitness")]), t.fitness) << "row " << i;
+      EXPECT_EQ(r[column("collided")], t.collided ? "1" : "0");
+      EXPECT_EQ(r[column("behavior")], t.action >= 0 ? c.actions.at(static_cast<std::size_t>(t.action)) : "");
+    }
+    EXPECT_EQ(number(rows.back()[column("fitness")]), c.replay->fitness) << c.name;
+
+    const fs::path svg = out / (stem + ".svg");
+    EXPECT_TRUE(well_formed_xml(svg)) << svg;
+    const std::string text = slurp(svg);
+    EXPECT_NE(text.find("<svg"), std::string::npos);
+    EXPECT_NE(text.find("<path stroke="), std::string::npos) << "no trajectory";
+    EXPECT_NE(text.find("class=\"legend\""), std::string::npos);
+    EXPECT_NE(text.find("wall or obstacle"), std::string::npos);
+    EXPECT_NE(text.find("<circle"), std::string::npos) << "no cylinder";
+  }
+}
+
+TEST(Replay, ChosenRunAndEpochs) {
+  const fs::path dir = tiny_run();
+  const fs::path out = scratch("replay-chosen");
+  const Outcome o =
+      esc_command("replay " + dir.string() + " --controller SC --run 2 --epochs 2-3 --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto rows = read_csv(out / "replay-SC-run-02.csv");
+  ASSERT_GT(rows.size(), 1U);
+  for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_TRUE(rows[i][0] == "2" || rows[i][0] == "3") << rows[i][0];
+  // The whole evaluation was simulated: its last fitness is the run's best fitness.
+  const auto summary = read_json(dir / "summary.json");
+  EXPECT_EQ(number(rows.back()[rows.front().size() - 2]),
+            summary["controllers"]["SC"]["runs"][1]["best_fitness"].get<double>());
+  EXPECT_FALSE(fs::exists(out / "replay-CC-run-02.csv"));
+  const std::string svg = slurp(out / "replay-SC-run-02.svg");
+  EXPECT_NE(svg.find("path, by acting behavior"), std::string::npos);
+  EXPECT_NE(svg.find("forward ("), std::string::npos);
+  EXPECT_NE(svg.find("epochs 2,3 of 3 drawn"), std::string::npos);
+}
+
+TEST(Replay, AGenomeFileInAnotherArena) {
+  const fs::path dir = tiny_run();
+  const fs::path out = scratch("replay-elsewhere");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/elsewhere.esc";
+  const Outcome o = esc_command("replay " + (dir / "CC" / "run-01.best.json").string() + " --script " + script +
+                        " --experiment elsewhere --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const fs::path svg = out / "replay-CC-run-01-in-elsewhere.svg";
+  EXPECT_TRUE(well_formed_xml(svg));
+  const std::string text = slurp(svg);
+  EXPECT_NE(text.find("floor zone"), std::string::npos);   // the recharge zone and its light
+  EXPECT_NE(text.find("light"), std::string::npos);
+  EXPECT_NE(text.find("rotate("), std::string::npos);      // the turned block
+  EXPECT_NE(text.find("path, by epoch"), std::string::npos);
+  const auto rows = read_csv(out / "replay-CC-run-01-in-elsewhere.csv");
+  ASSERT_GT(rows.size(), 2U);
+  EXPECT_LE(rows.size(), 1U + 2U * 60U) << "2 epochs of at most 60 steps";
+  EXPECT_EQ(rows[1][0], "1");
+  EXPECT_EQ(rows.back()[0], "2");
+}
+
+TEST(Replay, BadChoicesAreErrors) {
+  const fs::path dir = tiny_run();
+  Outcome o = esc_command("replay " + dir.string() + " --epochs 0");
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("between 1 and 3"), std::string::npos) << o.output;
+  o = esc_command("replay " + dir.string() + " --epochs 3-2");
+  EXPECT_EQ(o.status, 2) << o.output;
+  o = esc_command("replay " + dir.string() + " --controller SX");
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("did you mean `SC`?"), std::string::npos) << o.output;
+  o = esc_command("replay " + dir.string() + " --run 9");
+  EXPECT_EQ(o.status, 1) << o.output;
+  o = esc_command("replay " + scratch("not-a-run").string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  o = esc_command("replay " + (dir / "CC" / "run-01.best.json").string() + " --script " + tiny() + " --experiment nope");
+  EXPECT_EQ(o.status, 1) << o.output;
+}
+
+}  // namespace
