@@ -20,10 +20,10 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME esc)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
-    "${PROJECT_DESCRIPTION}\n esc evolves neural and genetic-programming controllers for a simulated Khepera robot\n"
-    " from experiments written in a small declarative language, compares them over many\n"
-    " independent runs and reports the results (SQLite store, HTML report, SVG replays).")
+string(CONCAT CPACK_DEBIAN_RUNTIME_DESCRIPTION
+    "esc evolves neural and genetic-programming controllers for a simulated Khepera robot\n"
+    "from experiments written in a small declarative language, compares them over many\n"
+    "independent runs and reports the results (SQLite store, HTML report, SVG replays).")
 set(esc_suggests "ffmpeg | imagemagick")
 if(ESC_WITH_MPI_FOUND)
   string(PREPEND esc_suggests "openmpi-bin, ")
@@ -32,11 +32,11 @@ set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "${esc_suggests}")
 
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME esc-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
-set(CPACK_DEBIAN_DEV_DESCRIPTION
-    "${PROJECT_DESCRIPTION} (libraries and headers)\n find_package(esc) gives esc::compiler (scripts to experiments) and\n"
-    " esc::runtime (evaluating genomes, running campaigns, storing and reporting results).")
-set(esc_dev_depends "esc (= ${PROJECT_VERSION}), cmake, libeigen3-dev, libbullet-dev, libfmt-dev, libtbb-dev, "
-                    "nlohmann-json3-dev, libantlr4-runtime-dev, libsqlite3-dev, pkg-config, libboost-dev")
+string(CONCAT CPACK_DEBIAN_DEV_DESCRIPTION
+    "The libraries and headers of esc: find_package(esc) gives esc::compiler (scripts to\n"
+    "experiments) and esc::runtime (evaluating genomes, running campaigns, storing and reporting results).")
+string(CONCAT esc_dev_depends "esc (= ${PROJECT_VERSION}), cmake, libeigen3-dev, libbullet-dev, libfmt-dev, "
+       "libtbb-dev, nlohmann-json3-dev, libantlr4-runtime-dev, libsqlite3-dev, pkg-config, libboost-dev")
 if(ESC_WITH_MPI_FOUND)
   string(APPEND esc_dev_depends ", libopenmpi-dev")
 endif()

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# ctest of what `cmake --install` and CPack produce (tests/install/CMakeLists.txt):
+#   install_test.sh prefix    SOURCE BUILD WORK   install into WORK/staged, then move it to
+#                                                 WORK/prefix (the tree must not care where it is)
+#   install_test.sh installed SOURCE BUILD WORK   the installed esc, run from / with ESC_PATH
+#                                                 unset: no build path inside it, its own library,
+#                                                 ESC_PATH, check, a short run and a replay
+#   install_test.sh embed     SOURCE BUILD WORK   examples/embed built against the installed package
+#   install_test.sh package   SOURCE BUILD WORK   the .deb files and what they declare
+# Exit 0: passed; 77: skipped (a tool it needs is missing); anything else: failed.
+set -euo pipefail
+mode=$1 source_dir=$2 build_dir=$3 work=$4
+prefix=$work/prefix
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+case $mode in
+prefix)
+  rm -rf "$work"
+  mkdir -p "$work"
+  cmake --install "$build_dir" --prefix "$work/staged" >"$work/install.log"
+  mv "$work/staged" "$prefix"
+  ;;
+
+installed)
+  esc=$prefix/bin/esc
+  library=$prefix/share/esc/experiments
+  [ -x "$esc" ] || fail "no $esc"
+  for f in lib/khepera.esc paper/obstacle_avoidance.esc paper/energy.esc gp/nn_vs_gp.esc examples/quick_start.esc; do
+    [ -f "$library/$f" ] || fail "$library/$f not installed"
+  done
+  [ -f "$prefix/share/man/man1/esc.1" ] || fail "no man page"
+  [ -f "$prefix/share/doc/esc/language.md" ] || fail "no docs"
+  bash -n "$prefix/share/bash-completion/completions/esc" || fail "bash completion does not parse"
+  # No path of the machine that built it.
+  if strings "$esc" | grep -F -e "$source_dir" -e "$build_dir"; then fail "esc holds a build path"; fi
+  cd /
+  unset ESC_PATH
+  "$esc" --version | tee "$work/version.txt"
+  grep -qxF "standard library: $library" "$work/version.txt" || fail "esc does not use its installed library"
+  "$esc" check "$library"/paper/*.esc "$library"/gp/*.esc "$library"/examples/*.esc >/dev/null
+  # A user's script importing from the standard library, and from $ESC_PATH.
+  mkdir -p "$work/user/mylib"
+  printf 'import "lib/khepera.esc"\nimport "extra.esc"\n' >"$work/user/uses_libs.esc"
+  printf 'behavior spin_left() { wheels(-0.5, 0.5) }\n' >"$work/user/mylib/extra.esc"
+  if "$esc" check "$work/user/uses_libs.esc" >"$work/no_path.log" 2>&1; then fail "extra.esc found without ESC_PATH"; fi
+  grep -q "cannot find \`extra.esc\`" "$work/no_path.log" || fail "no clear error without ESC_PATH: $(cat "$work/no_path.log")"
+  ESC_PATH=$work/user/mylib "$esc" check "$work/user/uses_libs.esc"
+  # A short run of a shipped paper script, and its replay.
+  rm -rf "$work/run"
+  "$esc" run "$library/paper/obstacle_avoidance.esc" --runs 1 --generations 1 --set epochs=1 --set steps=20 \
+      --threads 2 --out "$work/run" >"$work/run.log"
+  [ -f "$work/run/summary.json" ] || fail "no summary.json"
+  "$esc" replay "$work/run" --controller SC_8_14_6
+  grep -q "<svg" "$work/run/replay-SC_8_14_6-run-01.svg" || fail "no replay SVG"
+  ;;
+
+embed)
+  generator=()
+  command -v ninja >/dev/null && generator=(-G Ninja)
+  rm -rf "$work/embed"
+  cmake -S "$source_dir/examples/embed" -B "$work/embed" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_PREFIX_PATH="$prefix" ${ESC_TEST_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$ESC_TEST_LAUNCHER} >"$work/embed.log"
+  cmake --build "$work/embed" >>"$work/embed.log"
+  cd /
+  "$work/embed/embed" | tee "$work/embed.out"
+  grep -q "^genome of 66 weights: fitness" "$work/embed.out" || fail "no evaluation"
+  grep -q "^run 2: best fitness" "$work/embed.out" || fail "no campaign"
+  ;;
+
+package)
+  command -v dpkg-deb >/dev/null && command -v dpkg-shlibdeps >/dev/null || exit 77
+  rm -rf "$work/package"
+  (cd "$build_dir" && cpack -G DEB -B "$work/package" >"$work/cpack.log")
+  deb=$(ls "$work"/package/esc_*.deb)
+  dev=$(ls "$work"/package/esc-dev_*.deb)
+  depends=$(dpkg-deb -f "$deb" Depends)
+  echo "esc Depends: $depends"
+  for lib in libbullet libtbb libsqlite3 libantlr4-runtime libfmt libstdc++6; do
+    grep -q "$lib" <<<"$depends" || fail "esc does not declare $lib"
+  done
+  files=$(dpkg-deb -c "$deb")
+  dev_files=$(dpkg-deb -c "$dev")
+  grep -q "\./usr/bin/esc$" <<<"$files" || fail "no /usr/bin/esc"
+  grep -q "\./usr/share/esc/experiments/lib/khepera.esc$" <<<"$files" || fail "no standard library"
+  grep -q "\./usr/share/man/man1/esc.1" <<<"$files" || fail "no man page"
+  grep -q "esc (= " <<<"$(dpkg-deb -f "$dev" Depends)" || fail "esc-dev does not depend on esc"
+  grep -q "\./usr/lib/.*cmake/esc/escConfig.cmake$" <<<"$dev_files" || fail "no CMake package"
+  grep -q "\./usr/include/esc/compiler/compiler.hpp$" <<<"$dev_files" || fail "no headers"
+  ;;
+
+*) fail "unknown mode $mode" ;;
+esac
+echo "ok: $mode"
