@@ -12,10 +12,13 @@ case "$mode" in demo|test) ;; *) echo "usage: $0 demo|test" >&2; exit 2;; esac
 
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
-PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev
+# The full variant, every optional part built in (docs/install.md says what each needs).
+PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev   # required
           libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev libopenmpi-dev openmpi-bin python3
-          libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js chromium)
+          libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js
+          libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
+          libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
+          libgtest-dev python3 chromium)                                                       # tests
 
 install_missing() {
   local missing=()

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "runtime/report/comparisons.hpp"
+#include "runtime/report/markup.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 
@@ -134,20 +135,6 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
           {"stats", {{"summary", summary}, {"pairs", pairs}}}};
 }
 
-std::string html_escape(std::string_view s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += ch;
-    }
-  }
-  return out;
-}
-
 // JSON inside <script>: "</" would end the element early.
 std::string script_safe(std::string s) {
   for (std::size_t i = 0; (i = s.find("</", i)) != std::string::npos; i += 3) s.replace(i, 2, "<\\/");
@@ -168,7 +155,7 @@ std::string html_report(const std::vector<store::StoredExperiment>& experiments,
   std::string page;
   page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  page += fmt::format("<title>{}</title>\n<style>\n", html_escape(title));
+  page += fmt::format("<title>{}</title>\n<style>\n", escape_markup(title));
   page += embedded(esc_embed_report_css, esc_embed_report_css_size);
   page += "</style>\n</head>\n<body>\n";
   // Installed first, so that an error anywhere below, Chart.js included, shows on the page.

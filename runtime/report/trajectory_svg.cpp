@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/report/markup.hpp"
+
 namespace esc::report {
 
 namespace {
@@ -24,20 +26,6 @@ constexpr double kLegendWidth = 240.0;
 constexpr double kLegendLine = 20.0;
 constexpr const char* kObstacle = "#8d96a8";
 constexpr const char* kCollision = "#d62728";
-
-std::string escaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Arena metres to SVG units: x to the right, y up (SVG's y runs down).
 struct Frame {
@@ -184,7 +172,7 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
     y += kLegendLine;
     svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="3"/>)~"
                        R"~(<text x="{:.1f}" y="{:.1f}">{}</text>)~" "\n",
-                       left, y - 4.0, left + 24.0, y - 4.0, colour, left + 32.0, y, escaped(label));
+                       left, y - 4.0, left + 24.0, y - 4.0, colour, left + 32.0, y, escape_markup(label));
   }
   y += kLegendLine * 1.5;
   const auto mark = [&](const std::string& symbol, std::string_view label) {
@@ -228,7 +216,7 @@ std::string trajectory_svg(const TrajectoryFigure& f) {
                      R"~(<text x="{2:.1f}" y="{3:.1f}" font-size="16" font-weight="bold" fill="#1d2330">{4}</text>)~" "\n"
                      R"~(<text x="{2:.1f}" y="{5:.1f}" font-size="12" fill="#555">{6}</text>)~" "\n"
                      "{7}</svg>\n",
-                     width, height, kMargin, kMargin + 14.0, escaped(f.title), kMargin + 32.0, escaped(f.subtitle), body);
+                     width, height, kMargin, kMargin + 14.0, escape_markup(f.title), kMargin + 32.0, escape_markup(f.subtitle), body);
 }
 
 }  // namespace esc::report

@@ -150,6 +150,31 @@ TEST(Replay, AGenomeFileInAnotherArena) {
   EXPECT_EQ(rows.back()[0], "2");
 }
 
+TEST(Replay, AnimationWithoutAToolSaysSoAndKeepsThePicture) {
+  const fs::path out = scratch("replay-no-tool");
+  const Outcome o = shell("PATH=/nonexistent " + std::string(ESC_BINARY) + " replay " + tiny_run().string() +
+                          " --controller CC --epochs 1 --animate --out " + out.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("--animate needs ffmpeg"), std::string::npos) << o.output;
+  EXPECT_TRUE(fs::exists(out / "replay-CC-run-01.svg"));
+  EXPECT_TRUE(fs::exists(out / "replay-CC-run-01.csv"));
+}
+
+TEST(Replay, AnimationWithFfmpeg) {
+  if (shell("command -v ffmpeg").status != 0) GTEST_SKIP() << "ffmpeg is not installed (optional: Debian package ffmpeg)";
+  const fs::path out = scratch("replay-movie");
+  const Outcome o = esc_command("replay " + tiny_run().string() + " --controller SC --epochs 1 --animate --out " +
+                                out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const fs::path movie = out / "replay-SC-run-01.mp4";
+  ASSERT_TRUE(fs::exists(movie)) << o.output;
+  if (shell("command -v ffprobe").status == 0) {
+    const Outcome probe = shell("ffprobe -v error -select_streams v -show_entries stream=codec_type -of csv=p=0 " +
+                                movie.string());
+    EXPECT_NE(probe.output.find("video"), std::string::npos) << probe.output;
+  }
+}
+
 TEST(Replay, BadChoicesAreErrors) {
   const fs::path dir = tiny_run();
   Outcome o = esc_command("replay " + dir.string() + " --epochs 0");

@@ -1,0 +1,92 @@
+// The replay picture and table, in process: what they draw and write for given steps.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "runtime/report/trajectory_csv.hpp"
+#include "runtime/report/trajectory_svg.hpp"
+
+namespace esc::report {
+namespace {
+
+std::vector<eval::TraceStep> two_epochs() {
+  std::vector<eval::TraceStep> steps;
+  for (int epoch = 0; epoch < 2; ++epoch)
+    for (int step = 0; step < 4; ++step) {
+      eval::TraceStep t;
+      t.epoch = epoch;
+      t.step = step;
+      t.pose = {0.1 + 0.05 * step, 0.2 + 0.1 * epoch, 0.0};
+      t.action = step < 2 ? 0 : 2;
+      t.collided = epoch == 1 && step == 3;
+      t.zone_count = 1;
+      t.zones[0] = {0.3, 0.1 + 0.2 * epoch};   // a random zone, elsewhere each epoch
+      steps.push_back(t);
+    }
+  return steps;
+}
+
+TrajectoryFigure figure(const std::vector<eval::TraceStep>& steps, std::vector<std::string> choices) {
+  TrajectoryFigure f;
+  f.title = "A & <B>";
+  f.arena.width_m = 0.6;
+  f.arena.height_m = 0.4;
+  f.arena.cylinders.push_back({{0.3, 0.2}, 0.03});
+  sim::Zone zone;
+  zone.radius_m = 0.05;
+  zone.random_position = true;
+  zone.recharge = true;
+  f.arena.zones.push_back(zone);
+  f.robot_radius_m = 0.0275;
+  f.choices = std::move(choices);
+  f.steps = steps;
+  return f;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += what.size()) ++n;
+  return n;
+}
+
+TEST(TrajectorySvg, ColoursByActionMarksEpochsZonesAndCollisions) {
+  const auto steps = two_epochs();
+  const std::string svg = trajectory_svg(figure(steps, {"forward", "left", "right"}));
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0U);
+  EXPECT_NE(svg.find("A &amp; &lt;B&gt;"), std::string::npos) << "title not escaped";
+  // Per epoch: one stretch of `forward` (#4e79a7), one of `right` (#59a14f).
+  EXPECT_EQ(count(svg, R"(<path stroke="#4e79a7")"), 2U);
+  EXPECT_EQ(count(svg, R"(<path stroke="#59a14f")"), 2U);
+  EXPECT_NE(svg.find("forward (50% of steps)"), std::string::npos);
+  EXPECT_NE(svg.find("left (0% of steps)"), std::string::npos);
+  // The random zone where it was in each epoch, labelled; one collision.
+  EXPECT_NE(svg.find(">epoch 1</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">epoch 2</text>"), std::string::npos);
+  EXPECT_EQ(count(svg, R"(r="3" fill="#d62728")"), 1U + 1U) << "one collision, one legend mark";
+}
+
+TEST(TrajectorySvg, ClassicalHeadsAreColouredByEpoch) {
+  const auto steps = two_epochs();
+  std::vector<eval::TraceStep> classical = steps;
+  for (auto& t : classical) t.action = -1;
+  const std::string svg = trajectory_svg(figure(classical, {}));
+  EXPECT_NE(svg.find("path, by epoch"), std::string::npos);
+  EXPECT_NE(svg.find("epoch 1 (4 steps)"), std::string::npos);
+  EXPECT_EQ(count(svg, "<path stroke="), 2U);
+}
+
+TEST(TrajectoryCsv, OneRowPerStepCountedFromOne) {
+  const auto steps = two_epochs();
+  const std::string csv = trajectory_csv(steps, {"forward", "left", "right"}, 0.1);
+  EXPECT_EQ(count(csv, "\n"), 1U + steps.size());
+  const std::size_t columns = count(trajectory_csv_header(), ",") + 1;
+  EXPECT_EQ(columns, 30U);
+  const std::string second = csv.substr(csv.find('\n') + 1);
+  EXPECT_EQ(second.rfind("1,1,0.1,0.10000000000000001,", 0), 0U) << second.substr(0, 60);
+  EXPECT_NE(csv.find(",right,"), std::string::npos);
+  EXPECT_NE(csv.find("\n2,4,0.4,"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace esc::report
