@@ -58,12 +58,10 @@ std::optional<std::vector<int>> parse_epochs(const std::string& list, int epochs
     const std::size_t comma = std::min(list.find(',', at), list.size());
     const std::string item = list.substr(at, comma - at);
     const std::size_t dash = item.find('-');
-    int first = 0;
-    int last = 0;
     char* end = nullptr;
-    first = static_cast<int>(std::strtol(item.c_str(), &end, 10));
+    const long first = std::strtol(item.c_str(), &end, 10);
     bool ok = end != item.c_str() && (dash == std::string::npos ? *end == '\0' : end == item.c_str() + dash);
-    last = first;
+    long last = first;
     if (ok && dash != std::string::npos) {
       const char* from = item.c_str() + dash + 1;
       last = static_cast<int>(std::strtol(from, &end, 10));
@@ -74,7 +72,7 @@ std::optional<std::vector<int>> parse_epochs(const std::string& list, int epochs
                list, item, epochs);
       return std::nullopt;
     }
-    for (int e = first; e <= last; ++e)
+    for (auto e = static_cast<int>(first); e <= last; ++e)
       if (std::find(chosen.begin(), chosen.end(), e - 1) == chosen.end()) chosen.push_back(e - 1);
     at = comma + 1;
   }
