@@ -23,7 +23,7 @@ eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const s
   }
   complain("esc: error: {} has no experiment `{}`; it declares {}\n", file.string(), name,
            compiler::quoted_list(names, " and "));
-  if (const auto hint = compiler::did_you_mean(name, names)) complain("help: {}\n", *hint);
+  if (const auto near = compiler::closest(name, names)) complain("help: did you mean `{}`?\n", *near);
   return nullptr;
 }
 

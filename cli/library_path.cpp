@@ -5,12 +5,29 @@
 #include <string>
 #include <system_error>
 
+#include <sys/auxv.h>
+
 namespace esc::cli {
 
-std::filesystem::path standard_library_dir() {
+namespace {
+
+// This process's executable: /proc/self/exe, else (no /proc: a chroot, a container without
+// it) the path it was started by, from the auxiliary vector, with its links resolved.
+std::filesystem::path own_binary() {
   std::error_code ec;
-  const std::filesystem::path binary = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
+  std::filesystem::path binary = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) return binary;
+  const auto* started_as = reinterpret_cast<const char*>(getauxval(AT_EXECFN));
+  if (started_as == nullptr) return {};
+  binary = std::filesystem::weakly_canonical(std::filesystem::absolute(started_as, ec), ec);
+  return ec ? std::filesystem::path() : binary;
+}
+
+}  // namespace
+
+std::filesystem::path standard_library_dir() {
+  const std::filesystem::path binary = own_binary();
+  if (binary.empty()) return {};
   return (binary.parent_path() / ESC_STDLIB_FROM_BINARY).lexically_normal();
 }
 

@@ -119,7 +119,7 @@ std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, cons
   if (subjects.empty()) {
     complain("esc: error: the run has no controller `{}`; it compares {}\n", o.controller,
              compiler::quoted_list(names, " and "));
-    if (const auto hint = compiler::did_you_mean(o.controller, names)) complain("help: {}\n", *hint);
+    if (const auto near = compiler::closest(o.controller, names)) complain("help: did you mean `{}`?\n", *near);
   }
   return subjects;
 }

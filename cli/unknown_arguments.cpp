@@ -23,7 +23,7 @@ std::vector<std::string> option_names(const CLI::App& app) {
 
 void complain_unknown(const std::string& what, const std::string& word, const std::vector<std::string>& known) {
   fmt::print(stderr, "esc: error: {} `{}`\n", what, word);
-  if (const auto hint = compiler::did_you_mean(word, known)) fmt::print(stderr, "help: {}\n", *hint);
+  if (const auto near = compiler::closest(word, known)) fmt::print(stderr, "help: did you mean `{}`?\n", *near);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `esc replay`: a stored controller re-simulated from its stored seed writes an SVG (arena,
 // paths, legend) and a CSV whose rows are the replay stored in esc.db, value for value; a
 // genome file replays in another script's experiment; bad choices are errors, not crashes.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -148,6 +149,13 @@ TEST(Replay, AGenomeFileInAnotherArena) {
   EXPECT_LE(rows.size(), 1U + 2U * 60U) << "2 epochs of at most 60 steps";
   EXPECT_EQ(rows[1][0], "1");
   EXPECT_EQ(rows.back()[0], "2");
+  // The light sensors see the lamp (the stored replay has no light column: this is the
+  // re-simulation's own reading).
+  const auto light0 = static_cast<std::size_t>(std::find(rows[0].begin(), rows[0].end(), "light0") - rows[0].begin());
+  double brightest = 0.0;
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    for (std::size_t k = 0; k < 8; ++k) brightest = std::max(brightest, number(rows[i][light0 + k]));
+  EXPECT_GT(brightest, 0.0);
 }
 
 TEST(Replay, AnimationWithoutAToolSaysSoAndKeepsThePicture) {
