@@ -35,8 +35,10 @@ set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 string(CONCAT CPACK_DEBIAN_DEV_DESCRIPTION
     "The libraries and headers of esc: find_package(esc) gives esc::compiler (scripts to\n"
     "experiments) and esc::runtime (evaluating genomes, running campaigns, storing and reporting results).")
+# uuid-dev: the ANTLR runtime's CMake target links -luuid, which Debian's
+# libantlr4-runtime-dev does not pull in (found installing esc-dev on a clean bookworm).
 string(CONCAT esc_dev_depends "esc (= ${PROJECT_VERSION}), cmake, libeigen3-dev, libbullet-dev, libfmt-dev, "
-       "libtbb-dev, nlohmann-json3-dev, libantlr4-runtime-dev, libsqlite3-dev, pkg-config, libboost-dev")
+       "libtbb-dev, nlohmann-json3-dev, libantlr4-runtime-dev, uuid-dev, libsqlite3-dev, pkg-config, libboost-dev")
 if(ESC_WITH_MPI_FOUND)
   string(APPEND esc_dev_depends ", libopenmpi-dev")
 endif()
