@@ -169,6 +169,11 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
     say("esc: dependency {}: reused {}\n", name, p.dir.string());
     return load_into(p);
   }
+  if (cx.reuse_only) {
+    complain("esc: error: experiment `{}` (needed by `{}`) has no finished run in {}; run it first (esc run)\n", name,
+             user, cx.cache.string());
+    return std::nullopt;
+  }
   // Rank 0 names the run's directory and holds its lock; the other ranks only follow.
   std::optional<PartialRun> mine;
   if (!follower_rank()) {

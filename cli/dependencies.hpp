@@ -28,6 +28,9 @@ struct DependencyContext {
   std::function<int(const eval::ExperimentSpec&, const std::filesystem::path&)> resume_into;
   std::filesystem::path cache;
   std::string version;   // part of every cache key
+  // Only finished runs in the cache are used; a missing one is an error (`esc replay`
+  // reads what a run used and never runs anything; run_into and resume_into are not called).
+  bool reuse_only = false;
 };
 
 // Fills `spec`'s frozen behaviors and start genomes, running what it needs first

@@ -167,16 +167,13 @@ std::string first_difference(std::span<const eval::TraceStep> now, const store::
 }
 
 // What the run's experiment needs from other experiments' stored results (evolved
-// behaviors); replaying never runs them.
+// behaviors), read from the cache; replaying never runs them.
 DependencyContext reuse_only(const compiler::CompileResult& compiled, const RunOptions& settings,
                              const fs::path& cache) {
-  const auto refuse = [cache](const eval::ExperimentSpec& d, const fs::path&) {
-    complain("esc: error: replaying needs the results of experiment `{}`, which are not in {}; run it first (esc run)\n",
-             d.name, cache.string());
-    return kExitBadInput;
-  };
-  return DependencyContext{compiled, [&settings](eval::ExperimentSpec& d) { return apply_overrides(settings, d); },
-                           refuse, refuse, cache, ESC_VERSION_STRING};
+  DependencyContext context{compiled, [&settings](eval::ExperimentSpec& d) { return apply_overrides(settings, d); },
+                            {}, {}, cache, ESC_VERSION_STRING};
+  context.reuse_only = true;
+  return context;
 }
 
 std::string epochs_text(const std::vector<int>& epochs, int total) {

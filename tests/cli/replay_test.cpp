@@ -183,6 +183,25 @@ TEST(Replay, AnimationWithFfmpeg) {
   }
 }
 
+TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
+  const fs::path dir = scratch("replay-supervisor");
+  Outcome o = esc_command("run " + script + " --experiment supervised --runs 1 --threads 2 --out " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  o = esc_command("replay " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("dependency basic: reused"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  // Without the cache the evolved behavior is unknown: an error, and nothing is run.
+  fs::rename(dir / "deps", dir / "deps-elsewhere");
+  o = esc_command("replay " + dir.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("experiment `basic` (needed by `supervised`) has no finished run"), std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("running into"), std::string::npos) << o.output;
+  EXPECT_FALSE(fs::exists(dir / "deps"));
+}
+
 TEST(Replay, BadChoicesAreErrors) {
   const fs::path dir = tiny_run();
   Outcome o = esc_command("replay " + dir.string() + " --epochs 0");
