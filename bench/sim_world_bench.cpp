@@ -153,7 +153,7 @@ void BM_SimStepHoming(benchmark::State& state) {
     benchmark::DoNotOptimize(ir.data());
     benchmark::DoNotOptimize(light.data());
     ++step;
-    if (world.state().energy_empty || world.state().collided || step % 1000 == 0) {
+    if (world.state().floor.energy_empty || world.state().collided || step % 1000 == 0) {
       world.begin_epoch(rng);
       ++epochs;
     }

@@ -24,7 +24,7 @@ void report_step(TraceSink& trace, int epoch, int step, const sim::World& world,
                  const control::WheelCommand& cmd, int action, double fitness) {
   const sim::RobotState& state = world.state();
   TraceStep t;
-  t.energy = state.energy;
+  t.energy = state.floor.energy;
   const auto zones = world.zone_centers();
   t.zone_count = std::min(zones.size(), t.zones.size());
   std::copy_n(zones.begin(), t.zone_count, t.zones.begin());
@@ -92,7 +92,7 @@ Evaluation Evaluator::run(Driver& ctl, std::uint64_t seed, TraceSink* trace) {
       result.fitness += s.fitness.step.eval(frame);
       if (trace != nullptr) [[unlikely]]
         report_step(*trace, epoch, step, world_, ir, light, cmd, ctl.last_action(), result.fitness);
-      if (any_stop(s.fitness, frame) || world_.state().energy_empty) break;
+      if (any_stop(s.fitness, frame) || world_.state().floor.energy_empty) break;
     }
   }
   return result;

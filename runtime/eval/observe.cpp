@@ -30,14 +30,15 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   frame[expr::slot::wheels + 1] = right;
   frame[expr::slot::collision] = s.collided ? 1.0 : 0.0;
   for (std::size_t i = 0; i < ir.size(); ++i) frame[expr::slot::ir + i] = ir[i];
-  frame[expr::slot::energy] = s.energy;
-  frame[expr::slot::ground] = s.ground ? 1.0 : 0.0;
-  frame[expr::slot::new_cell] = s.new_cell ? 1.0 : 0.0;
-  frame[expr::slot::cells_visited] = s.cells_visited;
+  const sim::FloorState& floor = s.floor;
+  frame[expr::slot::energy] = floor.energy;
+  frame[expr::slot::ground] = floor.ground ? 1.0 : 0.0;
+  frame[expr::slot::new_cell] = floor.new_cell ? 1.0 : 0.0;
+  frame[expr::slot::cells_visited] = floor.cells_visited;
   for (expr::Slot z = 0; z < expr::kMaxZones; ++z)
-    frame[expr::slot::in_zone + z] = (s.in_zone >> z) & 1U;
+    frame[expr::slot::in_zone + z] = (floor.in_zone >> z) & 1U;
   for (expr::Slot l = 0; l < expr::kMaxLights; ++l)
-    frame[expr::slot::reached + l] = (s.reached >> l) & 1U;
+    frame[expr::slot::reached + l] = (floor.reached >> l) & 1U;
 }
 
 void observe_light(const std::array<double, sim::kLightSensors>& light,

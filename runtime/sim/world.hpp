@@ -1,17 +1,19 @@
 #pragma once
-// One Bullet world holding an arena and one Khepera. A worker builds a World once and
-// reuses it for every evaluation: reset() returns it to a state indistinguishable from a
+// The simulated Khepera in its arena, as the evaluation loop sees it: the façade over the
+// body in Bullet (body.hpp), the floor (floor.hpp: zones, lights, energy, sweep grid), the
+// motors and the drive (motor.hpp, drive.hpp) and the sensors. A worker builds a World once
+// and reuses it for every evaluation: reset() returns it to a state indistinguishable from a
 // freshly built world (body state, contact manifolds, broadphase pairs, solver seed), so a
 // trajectory depends only on its start pose, its commands and its noise stream, never on
 // what the world simulated before.
 #include <array>
 #include <cstddef>
-#include <cstdint>
 #include <memory>
 #include <span>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
+#include "runtime/sim/floor.hpp"
 #include "runtime/sim/khepera_params.hpp"
 #include "runtime/sim/light_sensor.hpp"
 
@@ -26,18 +28,7 @@ struct RobotState {
   double displacement_m = 0.0;             // |position change| over the last control step
   double forward_displacement_m = 0.0;     // position change projected on the heading
   bool collided = false;                   // contact with a wall or obstacle during the step
-
-  // Energy accumulator, [0, 1]; exactly 1 when the energy model is off. Exact multiples of
-  // 1 / (discharge_steps * recharge_steps * physics_substeps).
-  double energy = 1.0;
-  bool energy_empty = false;               // model on and accumulator empty: the epoch ends
-  std::uint32_t in_zone = 0;               // bit i: centre inside zone i (end of the step)
-  bool ground = false;                     // centre over a visible zone (the ground sensor)
-  std::uint32_t reached = 0;               // bit i: centre came within reach of light i
-                                           // during this step (rising edge only)
-  std::array<int, kMaxLights> reach_count{};  // entries into each light's reach this epoch
-  bool new_cell = false;                   // centre entered a grid cell not visited this epoch
-  int cells_visited = 0;                   // grid cells visited this epoch, the start cell included
+  FloorState floor;                        // zones, lights' reach, sweep grid, energy
 };
 
 class World {

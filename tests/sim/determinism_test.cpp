@@ -151,13 +151,13 @@ Trace run_homing(World& world, std::uint64_t seed, int epochs, int steps) {
       t.values.insert(t.values.end(), ir.begin(), ir.end());
       t.values.insert(t.values.end(), light.begin(), light.end());
       t.values.insert(t.values.end(),
-                      {s.pose.x_m, s.pose.y_m, s.pose.heading_rad, s.energy,
-                       static_cast<double>(s.in_zone), static_cast<double>(s.reached),
-                       static_cast<double>(s.reach_count[0] + 10 * s.reach_count[1]),
-                       s.ground ? 1.0 : 0.0, s.new_cell ? 1.0 : 0.0,
-                       static_cast<double>(s.cells_visited)});
+                      {s.pose.x_m, s.pose.y_m, s.pose.heading_rad, s.floor.energy,
+                       static_cast<double>(s.floor.in_zone), static_cast<double>(s.floor.reached),
+                       static_cast<double>(s.floor.reach_count[0] + 10 * s.floor.reach_count[1]),
+                       s.floor.ground ? 1.0 : 0.0, s.floor.new_cell ? 1.0 : 0.0,
+                       static_cast<double>(s.floor.cells_visited)});
       t.collisions += s.collided ? 1 : 0;
-      if (s.energy_empty) break;
+      if (s.floor.energy_empty) break;
     }
   }
   return t;

@@ -87,16 +87,16 @@ TEST(SimObserve, WorldStateReachesTheFrame) {
     observe_robot(w, ir, f);
     EXPECT_EQ(f[slot::com_speed], f[slot::speed]);
     EXPECT_NEAR(f[slot::speed], 1.0, 1e-6);
-    EXPECT_EQ(f[slot::energy], w.state().energy);
-    EXPECT_EQ(f[slot::in_zone + 1], (w.state().in_zone & 2U) != 0 ? 1.0 : 0.0);
-    EXPECT_EQ(f[slot::ground], w.state().ground ? 1.0 : 0.0);
+    EXPECT_EQ(f[slot::energy], w.state().floor.energy);
+    EXPECT_EQ(f[slot::in_zone + 1], (w.state().floor.in_zone & 2U) != 0 ? 1.0 : 0.0);
+    EXPECT_EQ(f[slot::ground], w.state().floor.ground ? 1.0 : 0.0);
     reached_1 += static_cast<int>(f[slot::reached + 1]);
     EXPECT_EQ(f[slot::reached], 0.0);
     new_cells += static_cast<int>(f[slot::new_cell]);
-    EXPECT_EQ(f[slot::cells_visited], w.state().cells_visited);
+    EXPECT_EQ(f[slot::cells_visited], w.state().floor.cells_visited);
   }
   EXPECT_EQ(reached_1, 1);
-  EXPECT_EQ(new_cells + 1, w.state().cells_visited);
+  EXPECT_EQ(new_cells + 1, w.state().floor.cells_visited);
   EXPECT_EQ(f[slot::in_zone + 1], 1.0);
   EXPECT_EQ(f[slot::ground], 0.0);  // zone 1 is invisible
   EXPECT_LT(f[slot::energy], 1.0);

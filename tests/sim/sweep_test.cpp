@@ -32,33 +32,33 @@ TEST(SimSweep, StraightAcrossTheArena) {
   const ArenaSpec a = test::empty_arena(0.6, 0.6);
   World w(a, no_inertia());
   w.reset({0.05, 0.3, 0.0});
-  EXPECT_EQ(w.state().cells_visited, 1);  // the start cell
-  EXPECT_FALSE(w.state().new_cell);
+  EXPECT_EQ(w.state().floor.cells_visited, 1);  // the start cell
+  EXPECT_FALSE(w.state().floor.new_cell);
   int prev_col = static_cast<int>(std::floor(0.05 / 0.04));
   int entries = 0;
   for (int i = 0; i < 60; ++i) {  // 8 mm per step: to x = 0.53
     w.step(1.0, 1.0);
     const int col = static_cast<int>(std::floor(w.state().pose.x_m / 0.04));
-    EXPECT_EQ(w.state().new_cell, col != prev_col) << "step " << i;
-    entries += w.state().new_cell ? 1 : 0;
+    EXPECT_EQ(w.state().floor.new_cell, col != prev_col) << "step " << i;
+    entries += w.state().floor.new_cell ? 1 : 0;
     prev_col = col;
   }
   EXPECT_NEAR(w.state().pose.x_m, 0.53, 1e-6);
-  EXPECT_EQ(w.state().cells_visited, 13);  // columns 1 .. 13 of row 7
+  EXPECT_EQ(w.state().floor.cells_visited, 13);  // columns 1 .. 13 of row 7
   EXPECT_EQ(entries, 12);
   // Back over the same cells: nothing new.
   for (int i = 0; i < 40; ++i) {
     w.step(-1.0, -1.0);
-    EXPECT_FALSE(w.state().new_cell);
+    EXPECT_FALSE(w.state().floor.new_cell);
   }
-  EXPECT_EQ(w.state().cells_visited, 13);
+  EXPECT_EQ(w.state().floor.cells_visited, 13);
   // A new epoch forgets them.
   w.reset({0.3, 0.3, 0.0});
-  EXPECT_EQ(w.state().cells_visited, 1);
+  EXPECT_EQ(w.state().floor.cells_visited, 1);
   w.step(1.0, 1.0);
-  EXPECT_EQ(w.state().cells_visited, 1);  // 0.308 is still column 7
+  EXPECT_EQ(w.state().floor.cells_visited, 1);  // 0.308 is still column 7
   for (int i = 0; i < 5; ++i) w.step(1.0, 1.0);
-  EXPECT_EQ(w.state().cells_visited, 2);
+  EXPECT_EQ(w.state().floor.cells_visited, 2);
 }
 
 TEST(SimSweep, CountsDistinctCellsOfAWanderingPath) {
@@ -83,8 +83,8 @@ TEST(SimSweep, CountsDistinctCellsOfAWanderingPath) {
     }
     w.step(l, r);
     const bool fresh = cells.insert(cell()).second;
-    EXPECT_EQ(w.state().new_cell, fresh) << i;
-    EXPECT_EQ(w.state().cells_visited, static_cast<int>(cells.size()));
+    EXPECT_EQ(w.state().floor.new_cell, fresh) << i;
+    EXPECT_EQ(w.state().floor.cells_visited, static_cast<int>(cells.size()));
   }
   EXPECT_GT(cells.size(), 20U);
 }

@@ -53,8 +53,8 @@ TEST(SimEnergy, FullUntilEnabled) {
   World world(test::empty_arena(0.6, 0.6), KheperaParams{});
   world.reset({0.3, 0.3, 0.0});
   for (int i = 0; i < 1000; ++i) world.step(0.0, 0.0);
-  EXPECT_EQ(world.state().energy, 1.0);
-  EXPECT_FALSE(world.state().energy_empty);
+  EXPECT_EQ(world.state().floor.energy, 1.0);
+  EXPECT_FALSE(world.state().floor.energy_empty);
 }
 
 TEST(SimEnergy, EmptyExactlyAfterDischargeSteps) {
@@ -62,24 +62,24 @@ TEST(SimEnergy, EmptyExactlyAfterDischargeSteps) {
                                   std::tuple{10, 3, 5}, std::tuple{1, 1, 2}}) {
     World world(test::empty_arena(0.6, 0.6), energy_robot(d, r, sub));
     world.reset({0.3, 0.3, 0.0});
-    EXPECT_EQ(world.state().energy, 1.0);
+    EXPECT_EQ(world.state().floor.energy, 1.0);
     for (int i = 1; i < d; ++i) {
       world.step(0.0, 0.0);
-      EXPECT_FALSE(world.state().energy_empty) << i;
+      EXPECT_FALSE(world.state().floor.energy_empty) << i;
       // After i steps: (d - i) / d of the charge, as integer units.
       const double full = static_cast<double>(d) * r * sub;
-      EXPECT_EQ(world.state().energy, static_cast<double>((d - i) * r * sub) / full) << i;
+      EXPECT_EQ(world.state().floor.energy, static_cast<double>((d - i) * r * sub) / full) << i;
     }
-    EXPECT_GT(world.state().energy, 0.0);
+    EXPECT_GT(world.state().floor.energy, 0.0);
     world.step(0.0, 0.0);
-    EXPECT_EQ(world.state().energy, 0.0) << d;
-    EXPECT_TRUE(world.state().energy_empty);
+    EXPECT_EQ(world.state().floor.energy, 0.0) << d;
+    EXPECT_TRUE(world.state().floor.energy_empty);
     world.step(0.3, 0.3);  // stays empty, clamped at 0
-    EXPECT_EQ(world.state().energy, 0.0);
-    EXPECT_TRUE(world.state().energy_empty);
+    EXPECT_EQ(world.state().floor.energy, 0.0);
+    EXPECT_TRUE(world.state().floor.energy_empty);
     world.reset({0.3, 0.3, 0.0});  // a new epoch starts full
-    EXPECT_EQ(world.state().energy, 1.0);
-    EXPECT_FALSE(world.state().energy_empty);
+    EXPECT_EQ(world.state().floor.energy, 1.0);
+    EXPECT_FALSE(world.state().floor.energy_empty);
   }
 }
 
@@ -89,14 +89,14 @@ TEST(SimEnergy, NoDischargeInsideARechargeZone) {
   World world(a, energy_robot());
   world.reset({0.3, 0.3, 1.0});
   for (int i = 0; i < 1000; ++i) world.step(-1.0, 1.0);  // turning on the spot inside
-  EXPECT_EQ(world.state().energy, 1.0);
+  EXPECT_EQ(world.state().floor.energy, 1.0);
   // A zone that does not recharge does nothing for the accumulator.
   ArenaSpec b = test::empty_arena(0.6, 0.6);
   b.zones.push_back(circle(0.3, 0.3, 0.1, false));
   World other(b, energy_robot());
   other.reset({0.3, 0.3, 1.0});
   for (int i = 0; i < 285; ++i) other.step(-1.0, 1.0);
-  EXPECT_TRUE(other.state().energy_empty);
+  EXPECT_TRUE(other.state().floor.energy_empty);
 }
 
 // Drive straight along +x with inertia off: after substep k of driving the centre is at
@@ -111,21 +111,21 @@ TEST(SimEnergy, RechargesFromEmptyToFullInExactlyRechargeSteps) {
   World world(a, energy_robot());
   world.reset({x0, 0.3, 0.0});
   for (int i = 0; i < 285; ++i) world.step(0.0, 0.0);
-  ASSERT_TRUE(world.state().energy_empty);
+  ASSERT_TRUE(world.state().floor.energy_empty);
   for (int i = 0; i < approach_steps; ++i) world.step(1.0, 1.0);  // to just before the edge
-  EXPECT_EQ(world.state().in_zone, 0U);
-  EXPECT_EQ(world.state().energy, 0.0);
+  EXPECT_EQ(world.state().floor.in_zone, 0U);
+  EXPECT_EQ(world.state().floor.energy, 0.0);
   for (int i = 1; i < 100; ++i) {
     world.step(1.0, 1.0);
-    EXPECT_EQ(world.state().in_zone, 1U);
-    EXPECT_FALSE(world.state().energy_empty);
-    EXPECT_EQ(world.state().energy, static_cast<double>(i * 2 * 285) / 57000.0) << i;
+    EXPECT_EQ(world.state().floor.in_zone, 1U);
+    EXPECT_FALSE(world.state().floor.energy_empty);
+    EXPECT_EQ(world.state().floor.energy, static_cast<double>(i * 2 * 285) / 57000.0) << i;
   }
-  EXPECT_LT(world.state().energy, 1.0);
+  EXPECT_LT(world.state().floor.energy, 1.0);
   world.step(1.0, 1.0);
-  EXPECT_EQ(world.state().energy, 1.0);
+  EXPECT_EQ(world.state().floor.energy, 1.0);
   world.step(0.0, 0.0);  // and stays full
-  EXPECT_EQ(world.state().energy, 1.0);
+  EXPECT_EQ(world.state().floor.energy, 1.0);
 }
 
 // A scripted trajectory in and out of a recharge zone, with settable numbers (7 steps to
@@ -159,9 +159,9 @@ TEST(SimEnergy, MixedTrajectoryExact) {
       }
       world.step(cmd, cmd);
       EXPECT_NEAR(world.state().pose.x_m, x0 + k * sub_m, 1e-6);
-      EXPECT_EQ(world.state().energy, static_cast<double>(units) / static_cast<double>(full))
+      EXPECT_EQ(world.state().floor.energy, static_cast<double>(units) / static_cast<double>(full))
           << "after command " << cmd << ", x = " << world.state().pose.x_m;
-      EXPECT_EQ(world.state().energy_empty, units == 0);
+      EXPECT_EQ(world.state().floor.energy_empty, units == 0);
     }
   }
   EXPECT_EQ(units, full);  // the script ends back inside, recharged
@@ -177,7 +177,7 @@ TEST(SimZones, CentreInsideCircleAndRectangle) {
   World w(a, KheperaParams{});
   const auto at = [&](double x, double y) {
     w.reset({x, y, 0.3});
-    return std::pair{w.state().in_zone, w.state().ground};
+    return std::pair{w.state().floor.in_zone, w.state().floor.ground};
   };
   EXPECT_EQ(at(0.2, 0.2), std::pair(1U, true));
   EXPECT_EQ(at(0.2 + 0.049, 0.2), std::pair(1U, true));
@@ -259,7 +259,7 @@ TEST(SimZones, RandomPlacementInsideClearAndDeterministic) {
     EXPECT_EQ(w.light_positions()[1].x, 0.55);
     // Membership follows the placed zone.
     w.reset({c0.x, c0.y, 0.0});
-    EXPECT_TRUE(w.state().in_zone & 1U);
+    EXPECT_TRUE(w.state().floor.in_zone & 1U);
     // Deterministic per seed, whatever the world did before.
     Rng again(seed);
     other.place_zones(again);
@@ -366,30 +366,30 @@ TEST(SimReached, RisingEdgeCountedOncePerEntry) {
       w.step(cmd, cmd);
       const bool inside = std::abs(w.state().pose.x_m - 0.5) <= reach;
       const bool edge = inside && !was_inside;
-      EXPECT_EQ(w.state().reached, edge ? 1U : 0U) << "x = " << w.state().pose.x_m;
+      EXPECT_EQ(w.state().floor.reached, edge ? 1U : 0U) << "x = " << w.state().pose.x_m;
       events += edge ? 1 : 0;
       was_inside = inside;
     }
   };
   drive(1.0, 50);   // through the light's reach and out: one event
   EXPECT_EQ(events, 1);
-  EXPECT_EQ(w.state().reach_count[0], 1);
+  EXPECT_EQ(w.state().floor.reach_count[0], 1);
   drive(-1.0, 30);  // back in: a second one
   EXPECT_EQ(events, 2);
-  EXPECT_EQ(w.state().reach_count[0], 2);
+  EXPECT_EQ(w.state().floor.reach_count[0], 2);
   drive(0.0, 10);   // staying: none
-  EXPECT_EQ(w.state().reach_count[1], 0);
+  EXPECT_EQ(w.state().floor.reach_count[1], 0);
   // Starting within reach is not an event; leaving and returning is.
   w.reset({0.5, 0.3, 0.0});
-  EXPECT_EQ(w.state().reached, 0U);
-  EXPECT_EQ(w.state().reach_count[0], 0);
+  EXPECT_EQ(w.state().floor.reached, 0U);
+  EXPECT_EQ(w.state().floor.reach_count[0], 0);
   was_inside = true;
   events = 0;
   drive(1.0, 10);
   EXPECT_EQ(events, 0);
   drive(-1.0, 12);
   EXPECT_EQ(events, 1);
-  EXPECT_EQ(w.state().reach_count[0], 1);
+  EXPECT_EQ(w.state().floor.reach_count[0], 1);
 }
 
 // ---- validation -------------------------------------------------------------------------

@@ -1,0 +1,229 @@
+#include "runtime/sim/body.hpp"
+
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <utility>
+
+namespace esc::sim {
+
+namespace {
+
+// Contact: the body is "in collision" when its 2D clearance to a wall or obstacle is at
+// most this (the contact solver stops it at clearance ~0).
+constexpr double kContactTolerance_m = 1e-4;
+// Collision margin of every Bullet shape (inside the shape's outer surface, so the
+// surfaces are exact); small against the 27.5 mm body, large enough for robust GJK.
+constexpr btScalar kCollisionMargin_m = 0.0005F;
+// Beyond the body's radius plus a substep's travel plus this, no contact can act on the
+// body during the substep: Body::move integrates it without a Bullet step.
+constexpr double kFreeSpaceMargin_m = 0.001;
+// Walls are boxes this thick outside the inner rectangle; static shapes are this tall
+// (centred on the plane) so every contact normal is horizontal.
+constexpr double kWallThickness_m = 0.1;
+constexpr double kStaticHeight_m = 0.4;
+// Coulomb friction between body and walls (Bullet's default), no restitution.
+constexpr btScalar kContactFriction = 0.5F;
+constexpr btScalar kRestitution = 0.0F;
+
+void no_profile_enter(const char*) {}
+void no_profile_leave() {}
+
+// Bullet's BT_PROFILE scopes read the clock about twenty times per step; switch them off.
+void disable_bullet_profiling() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    btSetCustomEnterProfileZoneFunc(&no_profile_enter);
+    btSetCustomLeaveProfileZoneFunc(&no_profile_leave);
+  });
+}
+
+btScalar bt(double v) { return static_cast<btScalar>(v); }
+
+}  // namespace
+
+Body::Body(const ArenaSpec& a, const KheperaParams& r, double substep_s, const StaticGeometry2D& geometry)
+    : radius_m_(r.body_radius_m), substep_s_(substep_s), geometry_(geometry) {
+  disable_bullet_profiling();
+  config_ = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
+  // Bullet's default configuration sends sphere-box pairs to GJK; its closed-form
+  // sphere-box algorithm is opt-in.
+  sphere_box_ = std::make_unique<btSphereBoxCollisionAlgorithm::CreateFunc>();
+  box_sphere_ = std::make_unique<btSphereBoxCollisionAlgorithm::CreateFunc>();
+  box_sphere_->m_swapped = true;
+  dispatcher_->registerCollisionCreateFunc(SPHERE_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, sphere_box_.get());
+  dispatcher_->registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, SPHERE_SHAPE_PROXYTYPE, box_sphere_.get());
+  // Manifolds keep points up to gContactBreakingThreshold (0.02 m) apart, not a
+  // fraction of the body size, so the solver sees a wall before the body reaches it.
+  dispatcher_->setDispatcherFlags(dispatcher_->getDispatcherFlags() &
+                                  ~btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
+  const double pad = kWallThickness_m + 1.0;
+  const auto handles = static_cast<unsigned short>(a.boxes.size() + a.cylinders.size() + 8);
+  // Sweep and prune: its state after removing and re-adding the body depends only on
+  // where the objects are, which place() relies on. No ray accelerator (no Bullet rays).
+  broadphase_ = std::make_unique<btAxisSweep3>(btVector3(bt(-pad), bt(-pad), bt(-kStaticHeight_m)),
+                                               btVector3(bt(a.width_m + pad), bt(a.height_m + pad),
+                                                         bt(kStaticHeight_m)),
+                                               handles, nullptr, true);
+  solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+  world_ = std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                     config_.get());
+  world_->setGravity(btVector3(0, 0, 0));
+  world_->setForceUpdateAllAabbs(false);  // static AABBs never change
+
+  const double w = a.width_m;
+  const double h = a.height_m;
+  const double t = kWallThickness_m;
+  add_static_box(-t / 2, h / 2, t / 2, h / 2 + t, 0.0);       // left
+  add_static_box(w + t / 2, h / 2, t / 2, h / 2 + t, 0.0);    // right
+  add_static_box(w / 2, -t / 2, w / 2 + t, t / 2, 0.0);       // bottom
+  add_static_box(w / 2, h + t / 2, w / 2 + t, t / 2, 0.0);    // top
+  for (const BoxObstacle& b : a.boxes)
+    add_static_box(b.center_m.x, b.center_m.y, b.size_m.x / 2, b.size_m.y / 2, b.angle_rad);
+  for (const CylinderObstacle& c : a.cylinders) {
+    auto shape = std::make_unique<btCylinderShapeZ>(btVector3(bt(c.radius_m), bt(c.radius_m), bt(kStaticHeight_m / 2)));
+    shape->setMargin(kCollisionMargin_m);
+    add_static(std::move(shape), c.center_m.x, c.center_m.y, 0.0);
+  }
+
+  // The body, added last so its broadphase handle and unique id are the same after
+  // every remove-and-add in place().
+  // The body only moves in the plane z = 0, where every static shape is centred, so a
+  // sphere meets a wall exactly where the vertical cylinder of the same radius would, and
+  // Bullet's sphere-box contact is closed-form (with speculative contacts): no GJK at
+  // every substep the robot spends against a wall. (Sphere-sphere contacts are not
+  // speculative, so obstacle cylinders stay cylinders, met by GJK.)
+  body_shape_ = std::make_unique<btSphereShape>(bt(r.body_radius_m));
+  // The inertia of the body, a solid cylinder, not of the sphere standing in for it.
+  btVector3 inertia(0, 0, 0);
+  btCylinderShapeZ(btVector3(bt(r.body_radius_m), bt(r.body_radius_m), bt(r.body_height_m / 2)))
+      .calculateLocalInertia(bt(r.mass_kg), inertia);
+  btRigidBody::btRigidBodyConstructionInfo info(bt(r.mass_kg), nullptr, body_shape_.get(), inertia);
+  info.m_friction = kContactFriction;
+  info.m_restitution = kRestitution;
+  body_ = std::make_unique<btRigidBody>(info);
+  body_->setLinearFactor(btVector3(1, 1, 0));   // planar: no z motion,
+  body_->setAngularFactor(btVector3(0, 0, 1));  // rotation about z only
+  // It turns about z only: no gyroscopic torque to integrate.
+  body_->setFlags(body_->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
+  body_->setActivationState(DISABLE_DEACTIVATION);
+  body_->setSleepingThresholds(0, 0);
+  world_->addRigidBody(body_.get());
+
+  warm_up(a);
+}
+
+Body::~Body() = default;
+
+// Grows Bullet's internal arrays (pair cache, manifolds, islands, solver pools) to the
+// size of the robot touching every static object at once, so a step never allocates:
+// a body as large as the arena steps a few times in contact with everything, then the
+// real body takes its place (place() removes every trace but the capacities).
+void Body::warm_up(const ArenaSpec& arena) {
+  const double half_diagonal = 0.5 * std::hypot(arena.width_m, arena.height_m) + kWallThickness_m;
+  btSphereShape big(bt(half_diagonal));
+  world_->removeRigidBody(body_.get());
+  body_->setCollisionShape(&big);
+  btTransform tr;
+  tr.setIdentity();
+  tr.setOrigin(btVector3(bt(arena.width_m / 2), bt(arena.height_m / 2), 0));
+  body_->setCenterOfMassTransform(tr);
+  world_->addRigidBody(body_.get());
+  constexpr int kWarmUpSteps = 8;
+  for (int i = 0; i < kWarmUpSteps; ++i) {
+    const double angle = 2 * std::numbers::pi * i / kWarmUpSteps;
+    body_->setLinearVelocity(btVector3(bt(0.01 * std::cos(angle)), bt(0.01 * std::sin(angle)), 0));
+    body_->setAngularVelocity(btVector3(0, 0, 1));
+    world_->stepSimulation(bt(substep_s_), 0, bt(substep_s_));
+  }
+  world_->removeRigidBody(body_.get());
+  body_->setCollisionShape(body_shape_.get());
+  world_->addRigidBody(body_.get());
+}
+
+void Body::add_static_box(double cx, double cy, double hx, double hy, double angle_rad) {
+  auto shape = std::make_unique<btBoxShape>(btVector3(bt(hx), bt(hy), bt(kStaticHeight_m / 2)));
+  shape->setMargin(kCollisionMargin_m);
+  add_static(std::move(shape), cx, cy, angle_rad);
+}
+
+void Body::add_static(std::unique_ptr<btCollisionShape> shape, double x, double y, double angle_rad) {
+  btTransform tr;
+  tr.setIdentity();
+  tr.setOrigin(btVector3(bt(x), bt(y), 0));
+  tr.setRotation(btQuaternion(btVector3(0, 0, 1), bt(angle_rad)));
+  btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, shape.get());
+  info.m_startWorldTransform = tr;
+  info.m_friction = kContactFriction;
+  info.m_restitution = kRestitution;
+  auto rb = std::make_unique<btRigidBody>(info);
+  world_->addRigidBody(rb.get());
+  shapes_.push_back(std::move(shape));
+  statics_.push_back(std::move(rb));
+}
+
+void Body::place(const Pose& pose) {
+  // Removing the body drops its broadphase pairs, contact manifolds and cached contact
+  // algorithms; adding it back rebuilds its sweep-and-prune handle in the same slot.
+  world_->removeRigidBody(body_.get());
+  btTransform tr;
+  tr.setIdentity();
+  tr.setOrigin(btVector3(bt(pose.x_m), bt(pose.y_m), 0));
+  tr.setRotation(btQuaternion(btVector3(0, 0, 1), bt(pose.heading_rad)));
+  body_->setLinearVelocity(btVector3(0, 0, 0));
+  body_->setAngularVelocity(btVector3(0, 0, 0));
+  body_->clearForces();
+  body_->setCenterOfMassTransform(tr);  // also the interpolation transform and velocities
+  body_->setHitFraction(1);
+  body_->setDeactivationTime(0);
+  world_->addRigidBody(body_.get());
+  solver_->reset();
+  solver_->setRandSeed(0);
+}
+
+Pose Body::pose() const noexcept {
+  const btTransform& tr = body_->getWorldTransform();
+  const btMatrix3x3& m = tr.getBasis();
+  return {static_cast<double>(tr.getOrigin().x()), static_cast<double>(tr.getOrigin().y()),
+          std::atan2(static_cast<double>(m[1][0]), static_cast<double>(m[0][0]))};
+}
+
+// One substep of Bullet at the imposed velocities. Far from every surface no contact can
+// push the body (a speculative contact acts only on a body that would reach the surface
+// within the step), and a Bullet step of a lone body without gravity or damping is exactly
+// its transform integrated at the given velocities: that is done here, with Bullet's own
+// integrator, without the collision detection, islands and solver of a full step (2.5-3x
+// the control steps/s of the paper's workloads). While any contact point is still cached
+// (up to 2 cm from a surface) Bullet steps, so that its solver's warm start sees every
+// step it would have seen. Results stay deterministic; against stepping Bullet every
+// substep they differ in the last digits only (about 1e-8 relative on a short run's
+// fitness: the broadphase, updated less often, may list the contact pairs in another order).
+void Body::move(const PlanarVelocity& v) {
+  body_->setLinearVelocity(btVector3(bt(v.x_mps), bt(v.y_mps), 0));
+  body_->setAngularVelocity(btVector3(0, 0, bt(v.turn_radps)));
+  const btVector3& p = body_->getWorldTransform().getOrigin();
+  const double keep = radius_m_ + v.travel_m + kFreeSpaceMargin_m;
+  if (has_contact_points() || geometry_.clearance({p.x(), p.y()}, keep) <= keep) {
+    world_->stepSimulation(bt(substep_s_), 0, bt(substep_s_));
+    return;
+  }
+  btTransform next;
+  btTransformUtil::integrateTransform(body_->getWorldTransform(), body_->getLinearVelocity(),
+                                      body_->getAngularVelocity(), bt(substep_s_), next);
+  body_->proceedToTransform(next);
+}
+
+bool Body::has_contact_points() const noexcept {
+  const int n = dispatcher_->getNumManifolds();
+  for (int i = 0; i < n; ++i)
+    if (dispatcher_->getManifoldByIndexInternal(i)->getNumContacts() > 0) return true;
+  return false;
+}
+
+bool Body::touching() const noexcept {
+  const double reach_m = radius_m_ + kContactTolerance_m;
+  return geometry_.clearance(position(), reach_m) <= reach_m;
+}
+
+}  // namespace esc::sim
