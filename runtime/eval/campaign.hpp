@@ -12,20 +12,9 @@
 
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/eval/experiment.hpp"
+#include "runtime/eval/run_state.hpp"
 
 namespace esc::eval {
-
-struct GenerationStats {
-  int generation = 0;          // from 0
-  double best = 0.0;           // best fitness among this generation's evaluated offspring
-  double mean = 0.0;
-  double sd = 0.0;
-  std::int64_t evaluations = 0;
-  std::int64_t steps = 0;      // control steps simulated in this generation
-  // Wall time of the round that evaluated this generation, shared with the runs that
-  // advanced with it (not part of the result proper).
-  double seconds = 0.0;
-};
 
 // One round of the campaign: a generation of every run advancing together, evaluated as
 // one pool.
@@ -53,23 +42,6 @@ struct RunResult {
   // The best Wheels or Action tree as a behavior's body, `wheels(LEFT, RIGHT)`, computing the
   // same commands (an Action tree with its actions inlined); empty for a Behavior tree.
   std::string best_behavior{};
-};
-
-// Everything needed to continue a run after its last finished generation: restarting
-// generation `generations.size()` from `parents` reproduces the uninterrupted run bit for
-// bit, because every random stream is derived from (run seed, generation, individual).
-struct RunState {
-  int run = 0;
-  std::uint64_t seed = 0;
-  std::vector<GenerationStats> generations;   // finished so far
-  std::vector<evo::Individual> parents;       // ES: selected for the next generation
-  bool has_best = false;
-  double best_fitness = 0.0;
-  std::vector<double> best_genome;            // as RunResult::best_genome
-  int best_generation = 0;
-  int best_index = 0;
-  // GP: the last generation evaluated, with its fitness; the next one is bred from it.
-  std::vector<evo::gp::Individual> population{};
 };
 
 // Seed of the evaluation of offspring `index` of generation `generation` of a run.

@@ -72,11 +72,13 @@ class RunJob {
   std::size_t evaluations_;
 };
 
-// A run of a network controller by the ES, fresh or continued from `from`.
+// A run of a network controller by the ES, fresh or continued from `from`. Throws
+// std::invalid_argument when `from` is not an ES state.
 [[nodiscard]] std::unique_ptr<RunJob> es_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
                                              int run, const RunState* from);
 // A run of a tree controller by genetic programming. Throws std::invalid_argument when
-// the experiment has no GP settings or `from` holds trees this controller cannot have.
+// the experiment has no GP settings, `from` is not a GP state or it holds trees this
+// controller cannot have.
 [[nodiscard]] std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
                                              int run, const RunState* from);
 

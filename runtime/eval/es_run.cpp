@@ -2,6 +2,9 @@
 // bred with Rng(run seed, Breed, g) from the parents selected after generation g - 1 (the
 // initial population, Rng(run seed, Init), for g = 0), so a run continued from any
 // checkpoint is the run that was not interrupted.
+#include <stdexcept>
+#include <variant>
+
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign_parts.hpp"
 #include "runtime/evo/es.hpp"
@@ -25,11 +28,11 @@ RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& e
   st.run = run;
   st.seed = run_seed(spec.seed, run);
   if (start != nullptr) {
-    st.parents = es.seeded(*start);
+    st.algorithm = EsState{es.seeded(*start)};
     return st;
   }
   Rng init(st.seed, {static_cast<std::uint64_t>(Stream::Init)});
-  st.parents = es.initial(init);
+  st.algorithm = EsState{es.initial(init)};
   return st;
 }
 
@@ -45,12 +48,12 @@ class EsRun final : public RunJob {
   std::size_t breed() override {
     const int g = generation();
     if (evaluate_only()) {
-      offspring_ = {state_.parents.front()};
+      offspring_ = {parents().front()};
       return offspring_.size();
     }
     Rng rng(state_.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
-    offspring_ = es_.breed(state_.parents, rng);
-    if (start_ != nullptr && g == 0) offspring_.front() = state_.parents.front();
+    offspring_ = es_.breed(parents(), rng);
+    if (start_ != nullptr && g == 0) offspring_.front() = parents().front();
     return offspring_.size();
   }
 
@@ -61,7 +64,7 @@ class EsRun final : public RunJob {
   void evaluated(std::span<const double> fitness, const GenerationStats& stats) override {
     for (std::size_t i = 0; i < offspring_.size(); ++i) offspring_[i].fitness = fitness[i];
     if (const auto best = record(fitness, stats)) state_.best_genome = offspring_[*best].genes;
-    if (!evaluate_only()) state_.parents = es_.select(state_.parents, offspring_);
+    if (!evaluate_only()) parents() = es_.select(parents(), offspring_);
   }
 
   RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
@@ -85,6 +88,7 @@ class EsRun final : public RunJob {
         evaluate_only_(start != nullptr && spec.start_from->evaluate_only) {}
 
   [[nodiscard]] bool evaluate_only() const noexcept { return evaluate_only_; }
+  [[nodiscard]] std::vector<evo::Individual>& parents() { return std::get<EsState>(state_.algorithm).parents; }
 
   evo::EvolutionStrategy es_;
   const std::vector<double>* start_;   // the stored genome the run starts from, or null
@@ -96,6 +100,9 @@ class EsRun final : public RunJob {
 
 std::unique_ptr<RunJob> es_run(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
                                const RunState* from) {
+  if (from != nullptr && !std::holds_alternative<EsState>(from->algorithm))
+    throw std::invalid_argument("network controller '" + controller.name +
+                                "': the state to resume from is a GP population, not ES parents");
   return std::make_unique<EsRun>(spec, controller, run, from);
 }
 

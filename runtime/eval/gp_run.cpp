@@ -7,6 +7,7 @@
 // poses, so an elite is judged on this generation's streams like everyone else.
 #include <memory>
 #include <stdexcept>
+#include <variant>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign_parts.hpp"
@@ -39,11 +40,11 @@ class GpRun final : public RunJob {
         gp_(*spec.gp, *controller.primitives) {
     // A stored population must be one this script could have bred (the store keeps trees
     // without their primitive set).
-    if (!state_.generations.empty() && state_.population.size() != evaluations_per_generation())
+    if (!state_.generations.empty() && population().size() != evaluations_per_generation())
       throw std::invalid_argument("tree controller '" + controller.name + "': the state to resume from holds " +
-                                  std::to_string(state_.population.size()) + " trees, the population is " +
+                                  std::to_string(population().size()) + " trees, the population is " +
                                   std::to_string(evaluations_per_generation()));
-    for (const evo::gp::Individual& ind : state_.population)
+    for (const evo::gp::Individual& ind : population())
       if (const std::string why = evo::gp::check(ind.tree, *controller.primitives, controller.primitives->root());
           !why.empty())
         throw std::invalid_argument("tree controller '" + controller.name +
@@ -57,7 +58,7 @@ class GpRun final : public RunJob {
       bred_ = gp_.initial(init);
     } else {
       Rng rng(state_.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
-      bred_ = gp_.breed(state_.population, rng);
+      bred_ = gp_.breed(population(), rng);
     }
     return bred_.size();
   }
@@ -69,7 +70,7 @@ class GpRun final : public RunJob {
   void evaluated(std::span<const double> fitness, const GenerationStats& stats) override {
     for (std::size_t i = 0; i < bred_.size(); ++i) bred_[i].fitness = fitness[i];
     if (const auto best = record(fitness, stats)) state_.best_genome = evo::gp::encode(bred_[*best].tree);
-    state_.population = std::move(bred_);
+    population() = std::move(bred_);
     bred_.clear();
   }
 
@@ -94,7 +95,12 @@ class GpRun final : public RunJob {
     RunState st;
     st.run = run;
     st.seed = run_seed(spec.seed, run);
+    st.algorithm = GpState{};
     return st;
+  }
+
+  [[nodiscard]] std::vector<evo::gp::Individual>& population() {
+    return std::get<GpState>(state_.algorithm).population;
   }
 
   evo::gp::GeneticProgramming gp_;
@@ -108,6 +114,9 @@ std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::Contro
   if (!spec.gp)
     throw std::invalid_argument("tree controller '" + controller.name + "' is compared, but experiment '" +
                                 spec.name + "' has no GP settings");
+  if (from != nullptr && !std::holds_alternative<GpState>(from->algorithm))
+    throw std::invalid_argument("tree controller '" + controller.name +
+                                "': the state to resume from is ES parents, not a GP population");
   return std::make_unique<GpRun>(spec, controller, run, from);
 }
 

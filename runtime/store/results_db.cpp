@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <variant>
 
 #include <fmt/format.h>
 
+#include "runtime/store/es_state.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/tree_state.hpp"
 
@@ -170,18 +172,6 @@ nlohmann::ordered_json arena_json(const sim::ArenaSpec& a) {
                      {"visible", z.visible}, {"random_position", z.random_position}, {"recharge", z.recharge}});
   return {{"width", a.width_m}, {"height", a.height_m}, {"boxes", boxes}, {"cylinders", cylinders},
           {"lights", lights}, {"zones", zones}};
-}
-
-std::vector<double> pack_population(const std::vector<evo::Individual>& pop, std::size_t genome_size,
-                                    std::size_t sigma_count) {
-  std::vector<double> v;
-  v.reserve(pop.size() * (1 + genome_size + sigma_count));
-  for (const auto& ind : pop) {
-    v.push_back(ind.fitness);
-    v.insert(v.end(), ind.genes.begin(), ind.genes.end());
-    v.insert(v.end(), ind.sigmas.begin(), ind.sigmas.end());
-  }
-  return v;
 }
 
 // A replay row: the kTraceColumns fixed columns, then the accumulator level and the
@@ -405,23 +395,7 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   if (st.has_best)
     run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
   run.run();
-  if (!st.population.empty()) {   // a GP run
-    db_.prepare("INSERT OR REPLACE INTO tree_state(controller_id, run, individuals, population) VALUES (?, ?, ?, ?)")
-        .bind(1, cid).bind(2, st.run).bind(3, static_cast<std::int64_t>(st.population.size()))
-        .bind_blob(4, pack_trees(st.population))
-        .run();
-    tx.commit();
-    return;
-  }
-  const std::size_t genome_size = st.parents.empty() ? 0 : st.parents.front().genes.size();
-  const std::size_t sigma_count = st.parents.empty() ? 0 : st.parents.front().sigmas.size();
-  db_.prepare(
-         "INSERT OR REPLACE INTO run_state(controller_id, run, parents, genome_size, sigma_count, population) "
-         "VALUES (?, ?, ?, ?, ?, ?)")
-      .bind(1, cid).bind(2, st.run).bind(3, static_cast<std::int64_t>(st.parents.size()))
-      .bind(4, static_cast<std::int64_t>(genome_size)).bind(5, static_cast<std::int64_t>(sigma_count))
-      .bind_blob(6, pack_population(st.parents, genome_size, sigma_count))
-      .run();
+  std::visit([&](const auto& algorithm) { save_state(db_, cid, st.run, algorithm); }, st.algorithm);
   tx.commit();
 }
 
@@ -574,32 +548,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
               s.best_index = runs.integer(6);
               s.best_genome = runs.doubles(7);
             }
-            if (c.head == "tree") {
-              load_tree_state(c, s);
-              c.in_progress.push_back(std::move(s));
-              continue;
-            }
-            auto st = db_.prepare(
-                "SELECT parents, genome_size, sigma_count, population FROM run_state WHERE controller_id = ? AND run = ?");
-            st.bind(1, c.id).bind(2, run);
-            if (!st.step())
-              throw StoreError(fmt::format("{} is damaged: run {} of {} is unfinished but has no state to resume from",
-                                           file_.string(), run + 1, c.name));
-            const auto parents = static_cast<std::size_t>(st.int64(0));
-            const auto genes = static_cast<std::size_t>(st.int64(1));
-            const auto sigmas = static_cast<std::size_t>(st.int64(2));
-            const std::vector<double> pop = st.doubles(3);
-            if (genes != c.genome_size || pop.size() != parents * (1 + genes + sigmas))
-              throw StoreError(fmt::format("{} is damaged: the stored population of run {} of {} has the wrong size",
-                                           file_.string(), run + 1, c.name));
-            for (std::size_t p = 0; p < parents; ++p) {
-              const double* row = pop.data() + p * (1 + genes + sigmas);
-              evo::Individual ind;
-              ind.fitness = row[0];
-              ind.genes.assign(row + 1, row + 1 + genes);
-              ind.sigmas.assign(row + 1 + genes, row + 1 + genes + sigmas);
-              s.parents.push_back(std::move(ind));
-            }
+            s.algorithm = load_state(c, run);
             c.in_progress.push_back(std::move(s));
           }
         }
@@ -618,17 +567,12 @@ std::vector<StoredExperiment> ResultsDb::load() {
   }
 }
 
-void ResultsDb::load_tree_state(const StoredController& c, eval::RunState& s) {
-  auto st = db_.prepare("SELECT individuals, population FROM tree_state WHERE controller_id = ? AND run = ?");
-  st.bind(1, c.id).bind(2, s.run);
-  if (!st.step())
-    throw StoreError(fmt::format("{} is damaged: run {} of {} is unfinished but has no state to resume from",
-                                 file_.string(), s.run + 1, c.name));
-  auto trees = unpack_trees(st.doubles(1), static_cast<std::size_t>(st.int64(0)));
-  if (!trees)
-    throw StoreError(fmt::format("{} is damaged: the stored population of run {} of {} is unreadable", file_.string(),
-                                 s.run + 1, c.name));
-  s.population = std::move(*trees);
+std::variant<eval::EsState, eval::GpState> ResultsDb::load_state(const StoredController& c, int run) {
+  const std::string damaged = fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name);
+  if (auto es = load_es_state(db_, c.id, run, c.genome_size, damaged)) return std::move(*es);
+  if (schema_version_ >= 2)   // a schema-1 database holds no trees
+    if (auto gp = load_tree_state(db_, c.id, run, damaged)) return std::move(*gp);
+  throw StoreError(damaged + " is unfinished but has no state to resume from");
 }
 
 StoredExperiment ResultsDb::load_single() {

@@ -11,6 +11,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -132,8 +133,9 @@ class ResultsDb {
  private:
   ResultsDb(sql::Database db, std::filesystem::path file);
   std::int64_t controller_id(const std::string& name);
-  // The GP population run `s.run` of tree controller `c` resumes from.
-  void load_tree_state(const StoredController& c, eval::RunState& s);
+  // What run `run` of `c` continues from: the ES parents or the GP population, whichever
+  // table holds it. Throws StoreError when neither does or the stored state is damaged.
+  std::variant<eval::EsState, eval::GpState> load_state(const StoredController& c, int run);
   void upgrade();   // to kSchemaVersion
 
   int schema_version_ = kSchemaVersion;

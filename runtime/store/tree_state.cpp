@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "runtime/store/results_db.hpp"
+
 namespace esc::store {
 
 namespace {
@@ -15,6 +19,23 @@ std::optional<std::uint32_t> whole(double v, double max) {
 }
 
 }  // namespace
+
+void save_state(sql::Database& db, std::int64_t controller_id, int run, const eval::GpState& state) {
+  db.prepare("INSERT OR REPLACE INTO tree_state(controller_id, run, individuals, population) VALUES (?, ?, ?, ?)")
+      .bind(1, controller_id).bind(2, run).bind(3, static_cast<std::int64_t>(state.population.size()))
+      .bind_blob(4, pack_trees(state.population))
+      .run();
+}
+
+std::optional<eval::GpState> load_tree_state(sql::Database& db, std::int64_t controller_id, int run,
+                                             std::string_view damaged) {
+  auto st = db.prepare("SELECT individuals, population FROM tree_state WHERE controller_id = ? AND run = ?");
+  st.bind(1, controller_id).bind(2, run);
+  if (!st.step()) return std::nullopt;
+  auto trees = unpack_trees(st.doubles(1), static_cast<std::size_t>(st.int64(0)));
+  if (!trees) throw StoreError(fmt::format("{}: the stored population is unreadable", damaged));
+  return eval::GpState{std::move(*trees)};
+}
 
 std::vector<double> pack_trees(const std::vector<evo::gp::Individual>& population) {
   std::vector<double> v;

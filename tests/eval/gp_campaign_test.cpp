@@ -1,8 +1,11 @@
 // Genetic programming in the campaign: a GP run is the same for any thread count, it
 // improves on its initial population, it continues bit for bit from the state after any
-// generation, its best tree replays to its best fitness, and adding tree controllers to
-// an experiment leaves its networks' ES runs untouched.
+// generation (and from nothing but a GP population), its best tree replays to its best
+// fitness, and adding tree controllers to an experiment leaves its networks' ES runs
+// untouched.
 #include <gtest/gtest.h>
+
+#include <variant>
 
 #include "runtime/eval/campaign.hpp"
 #include "runtime/evo/gp/codec.hpp"
@@ -63,7 +66,8 @@ TEST(GpCampaign, ContinuingFromAnyGenerationIsBitIdentical) {
     point.finished.push_back({spec.controllers[0].name, whole.controllers[0].runs[0]});
     for (const auto& s : snap.states)
       if (!(s.controller == spec.controllers[0].name && s.state.run == 0)) point.in_progress.push_back(s);
-    for (const auto& s : point.in_progress) EXPECT_EQ(s.state.population.size(), 24u);
+    for (const auto& s : point.in_progress)
+      EXPECT_EQ(std::get<GpState>(s.state.algorithm).population.size(), 24u);
     CampaignListener none;
     expect_same(whole, run_campaign(spec, {2, &point}, none));
   }
@@ -114,6 +118,33 @@ TEST(GpCampaign, TreesBesideNetworksLeaveTheEsRunsUntouched) {
   EXPECT_EQ(b.controllers[0].runs[0].generations.size(), 6u);   // the ES's generations
   EXPECT_EQ(b.controllers[1].runs[0].generations.size(), 2u);   // the GP's
   EXPECT_EQ(mixed.total_generations(), 2 * (6 + 2 + 2));
+}
+
+// What a run continues from is its algorithm's state: ES parents for a network, a GP
+// population for a tree; the other kind is refused, not misread.
+TEST(GpCampaign, AStateOfTheOtherAlgorithmIsRefused) {
+  ExperimentSpec mixed = testing::gp_experiment();
+  mixed.controllers.insert(mixed.controllers.begin(), testing::small_experiment().controllers.front());
+  CampaignListener quiet;
+  for (std::size_t k : {0u, 1u}) {   // the network given trees, the Wheels tree given parents
+    RunState st;
+    st.generations.push_back({0, 1.0, 0.5, 0.1, 24, 100, 0.0});
+    if (k == 0)
+      st.algorithm = GpState{};
+    else
+      st.algorithm = EsState{};
+    ResumePoint point;
+    point.in_progress.push_back({mixed.controllers[k].name, st});
+    try {
+      (void)run_campaign(mixed, {1, &point}, quiet);
+      ADD_FAILURE() << "resumed " << mixed.controllers[k].name << " from the other algorithm's state";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(k == 0 ? "is a GP population, not ES parents"
+                                                  : "is ES parents, not a GP population"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 TEST(GpCampaign, ATreeWithoutGpSettingsIsRefused) {

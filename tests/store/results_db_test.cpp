@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <variant>
 
 #include <gtest/gtest.h>
 
+#include "runtime/store/es_state.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/sqlite.hpp"
@@ -56,7 +58,7 @@ eval::RunState state(int generations) {
     a[i] = static_cast<double>(i) / 7.0 - 0.5;
     b[i] = -1.0 / (1.0 + static_cast<double>(i));
   }
-  s.parents = {{a, {0.05}, 3.25}, {b, {0.01}, -2.5}};
+  s.algorithm = eval::EsState{{{a, {0.05}, 3.25}, {b, {0.01}, -2.5}}};
   s.has_best = true;
   s.best_fitness = 9.875;
   s.best_genome = {0.5, 0.25, -0.125};
@@ -92,11 +94,15 @@ TEST(ResultsDb, GenerationStateRoundTripsBitForBit) {
   ASSERT_EQ(got.generations.size(), 2U);
   EXPECT_EQ(got.generations[1].best, want.generations[1].best);
   EXPECT_EQ(got.generations[1].sd, want.generations[1].sd);
-  ASSERT_EQ(got.parents.size(), 2U);
+  const auto* es = std::get_if<eval::EsState>(&got.algorithm);
+  ASSERT_NE(es, nullptr) << "a network run resumes from ES parents";
+  const auto& parents = es->parents;
+  const auto& want_parents = std::get<eval::EsState>(want.algorithm).parents;
+  ASSERT_EQ(parents.size(), 2U);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(got.parents[i].genes, want.parents[i].genes);
-    EXPECT_EQ(got.parents[i].sigmas, want.parents[i].sigmas);
-    EXPECT_EQ(got.parents[i].fitness, want.parents[i].fitness);
+    EXPECT_EQ(parents[i].genes, want_parents[i].genes);
+    EXPECT_EQ(parents[i].sigmas, want_parents[i].sigmas);
+    EXPECT_EQ(parents[i].fitness, want_parents[i].fitness);
   }
   EXPECT_EQ(got.best_genome, want.best_genome);
   EXPECT_EQ(got.best_index, 17);
@@ -110,7 +116,7 @@ TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
   const eval::ExperimentSpec e = spec();
   ResultsDb db = ResultsDb::create(dir, e, {}, {});
   eval::RunResult r{0, 5, {{0, 2.0, 1.0, 0.5, 10, 100, 0.1}}, 2.0, {0.1}, 0, 3, {7, 3}};
-  db.commit_generation("SC", {0, 5, r.generations, {{{0.1}, {0.1}, 2.0}}, true, 2.0, {0.1}, 0, 3});
+  db.commit_generation("SC", {0, 5, r.generations, true, 2.0, {0.1}, 0, 3, eval::EsState{{{{0.1}, {0.1}, 2.0}}}});
   eval::TraceStep t;
   t.epoch = 0;
   t.step = 4;
@@ -194,6 +200,47 @@ TEST(ResultsDb, ClearErrorsForForeignDamagedAndNewerDatabases) {
     EXPECT_NE(std::string(e.what()).find("newer esc"), std::string::npos) << e.what();
   }
   EXPECT_THROW((void)ResultsDb::create(newer, spec(), {}, {}), StoreError);   // never overwritten
+}
+
+// A resume state is found in its algorithm's table; a run with none, or with parents of
+// the wrong size, is a damaged database, and the message names the run.
+TEST(ResultsDb, AMissingOrDamagedEsStateNamesTheRun) {
+  const fs::path dir = fresh_dir("damaged-state");
+  { ResultsDb::create(dir, spec(), {}, {}).commit_generation("SC", state(1)); }
+  const auto error = [&] {
+    try {
+      (void)ResultsDb::open(dir).load_single();
+    } catch (const StoreError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error(), "no error");
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("UPDATE run_state SET population = substr(population, 9)");   // one double short
+  }
+  EXPECT_NE(error().find("run 2 of SC: the stored population has the wrong size"), std::string::npos) << error();
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("DELETE FROM run_state");
+  }
+  EXPECT_NE(error().find("run 2 of SC is unfinished but has no state to resume from"), std::string::npos) << error();
+}
+
+TEST(EsState, DamagedBlobsAreRefused) {
+  const std::vector<evo::Individual> parents = std::get<eval::EsState>(state(1).algorithm).parents;
+  const std::size_t genes = parents[0].genes.size();
+  const std::vector<double> blob = pack_parents(parents);
+  const auto back = unpack_parents(blob, 2, genes, 1);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ((*back)[1].genes, parents[1].genes);
+  EXPECT_EQ((*back)[1].sigmas, parents[1].sigmas);
+  EXPECT_EQ((*back)[1].fitness, parents[1].fitness);
+  EXPECT_FALSE(unpack_parents(blob, 3, genes, 1).has_value());
+  EXPECT_FALSE(unpack_parents(blob, 1, genes, 1).has_value());       // left-over values
+  EXPECT_FALSE(unpack_parents(blob, 2, genes + 1, 1).has_value());
+  EXPECT_FALSE(unpack_parents({1.0, 2.0}, 1, 0, 0).has_value());
 }
 
 TEST(ResultsDb, CampaignHashIgnoresDirectoriesAndOrder) {

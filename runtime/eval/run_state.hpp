@@ -1,0 +1,55 @@
+#pragma once
+// A run while it goes: the statistics of each finished generation, and everything needed to
+// continue it after the last one. What an algorithm continues from is its own: the ES its
+// parents with their step sizes, GP its last evaluated population, one alternative each of
+// RunState::algorithm, so that nothing tells them apart by emptiness (the store keeps each
+// in a table of its own: runtime/store/es_state.*, tree_state.*).
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+#include "runtime/evo/es.hpp"
+#include "runtime/evo/gp/selection.hpp"
+
+namespace esc::eval {
+
+struct GenerationStats {
+  int generation = 0;          // from 0
+  double best = 0.0;           // best fitness among this generation's evaluated offspring
+  double mean = 0.0;
+  double sd = 0.0;
+  std::int64_t evaluations = 0;
+  std::int64_t steps = 0;      // control steps simulated in this generation
+  // Wall time of the round that evaluated this generation, shared with the runs that
+  // advanced with it (not part of the result proper).
+  double seconds = 0.0;
+};
+
+// What the ES breeds the next generation from: the mu parents selected after the last
+// generation (genes, step sizes and fitness).
+struct EsState {
+  std::vector<evo::Individual> parents;
+};
+
+// What GP breeds the next generation from: the last generation evaluated, each tree with its
+// fitness; empty before generation 0.
+struct GpState {
+  std::vector<evo::gp::Individual> population;
+};
+
+// Everything needed to continue a run after its last finished generation: restarting
+// generation `generations.size()` from `algorithm` reproduces the uninterrupted run bit for
+// bit, because every random stream is derived from (run seed, generation, individual).
+struct RunState {
+  int run = 0;
+  std::uint64_t seed = 0;
+  std::vector<GenerationStats> generations;   // finished so far
+  bool has_best = false;
+  double best_fitness = 0.0;
+  std::vector<double> best_genome;            // as RunResult::best_genome
+  int best_generation = 0;
+  int best_index = 0;
+  std::variant<EsState, GpState> algorithm;   // networks by the ES, trees by GP
+};
+
+}  // namespace esc::eval
