@@ -48,7 +48,7 @@ const ControllerSpec& checked(const ControllerSpec& spec, std::span<const double
                                 std::to_string(Controller::kMaxNesting) +
                                 " deep (does a supervisor contain itself?)");
   if (spec.is_tree())
-    throw std::invalid_argument(where(spec) + ": a tree controller is run by control::TreeDriver");
+    throw std::invalid_argument(where(spec) + ": a tree controller is run by tree_control::TreeDriver");
   if (spec.mlp.kind == NetworkKind::Elman && spec.mlp.hidden.size() != 1)
     throw std::invalid_argument(where(spec) + ": an Elman network needs exactly one hidden "
                                 "layer, got " + std::to_string(spec.mlp.hidden.size()));

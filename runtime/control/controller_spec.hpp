@@ -2,7 +2,7 @@
 // What the compiler produces for a `controller` declaration: the network's shape and its
 // head. The genome is the flat vector of the network's weights; genome_size() says how long.
 // A GP tree controller (`tree(...)`) has primitives instead of a network: its genome is a
-// tree (runtime/evo/gp), run by control::TreeDriver.
+// tree (runtime/evo/gp), run by tree_control::TreeDriver.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -12,7 +12,8 @@
 #include "runtime/control/behavior.hpp"
 #include "runtime/expr/observables.hpp"
 
-// Only a pointer is held here: the GP engine (esc_gp) builds on esc_control, not the reverse.
+// Only a pointer is held here: the GP engine (esc_gp) needs nothing of esc_control, and the
+// controllers that run trees (esc_tree_control) build on both.
 namespace esc::evo::gp {
 class PrimitiveSet;
 }

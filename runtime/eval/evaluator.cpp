@@ -1,13 +1,13 @@
-#include <algorithm>
 #include "runtime/eval/evaluator.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "runtime/control/controller.hpp"
-#include "runtime/control/tree_driver.hpp"
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/observe.hpp"
 #include "runtime/evo/gp/codec.hpp"
+#include "runtime/tree_control/tree_driver.hpp"
 
 namespace esc::eval {
 
@@ -57,7 +57,7 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
                                std::uint64_t seed, TraceSink* trace) {
-  control::TreeDriver ctl(controller, tree);
+  tree_control::TreeDriver ctl(controller, tree);
   return run(ctl, seed, trace);
 }
 

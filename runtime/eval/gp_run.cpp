@@ -12,8 +12,8 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign_parts.hpp"
 #include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/inline_actions.hpp"
 #include "runtime/evo/gp/print.hpp"
+#include "runtime/tree_control/inline_actions.hpp"
 
 namespace esc::eval::detail {
 
@@ -26,7 +26,7 @@ std::string behavior_body(const control::ControllerSpec& controller, const evo::
   if (set.root() == evo::gp::Type::Wheels) return evo::gp::to_script(tree, set);
   if (set.root() != evo::gp::Type::Action) return {};
   try {
-    const evo::gp::InlinedTree inlined = evo::gp::inline_actions(tree, set, controller.actions);
+    const tree_control::InlinedTree inlined = tree_control::inline_actions(tree, set, controller.actions);
     return evo::gp::to_script(inlined.tree, inlined.set);
   } catch (const std::invalid_argument&) {
     return {};

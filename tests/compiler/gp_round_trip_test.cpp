@@ -2,18 +2,18 @@
 // pasted into another script as a hand-written behavior, scores exactly the fitness the
 // tree scored, on the same evaluation stream. For a Wheels tree the printed behavior is
 // the tree itself; for an Action tree (the GP twin of a symbolic controller) it is the
-// tree with its actions' wheel commands inlined (runtime/evo/gp/inline_actions.hpp).
+// tree with its actions' wheel commands inlined (runtime/tree_control/inline_actions.hpp).
 // The pasted behavior is run by a supervisor with that one behavior (it always acts).
 #include <gtest/gtest.h>
 
 #include "helpers.hpp"
 #include "runtime/control/controller.hpp"
-#include "runtime/control/tree_driver.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/gp/init.hpp"
-#include "runtime/evo/gp/inline_actions.hpp"
 #include "runtime/evo/gp/print.hpp"
+#include "runtime/tree_control/inline_actions.hpp"
+#include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
 
 namespace esc::compiler {
@@ -37,7 +37,7 @@ eval::ExperimentSpec shortened(const std::filesystem::path& script) {
 // The script text a user gets for the tree: a behavior declaration.
 std::string printed_behavior(const control::ControllerSpec& c, const gp::Tree& tree) {
   if (c.head == control::Head::Classical) return gp::behavior_script(tree, *c.primitives, "pasted");
-  const gp::InlinedTree inlined = gp::inline_actions(tree, *c.primitives, c.actions);
+  const tree_control::InlinedTree inlined = tree_control::inline_actions(tree, *c.primitives, c.actions);
   return gp::behavior_script(inlined.tree, inlined.set, "pasted");
 }
 
@@ -93,7 +93,7 @@ TEST(GpRoundTrip, RandomTreesOfBothRootsGiveTheSameCommandsAndFitness) {
       ASSERT_FALSE(p.behaviors.empty()) << behavior;
       const std::vector<double> zeros(p.genome_size(), 0.0);
       control::Controller hand_written(p, zeros);
-      control::TreeDriver evolved(spec, tree);
+      tree_control::TreeDriver evolved(spec, tree);
       for (int f = 0; f < 200; ++f) {
         expr::Frame a = gp::test::random_frame(rng);
         expr::Frame b = a;

@@ -50,17 +50,12 @@ expr::Program to_expr_program(const Tree& tree, const PrimitiveSet& set, std::si
   return finished(std::move(p));
 }
 
-control::Behavior to_behavior(const Tree& tree, const PrimitiveSet& set, std::string name) {
+expr::Program to_wheel_program(const Tree& tree, const PrimitiveSet& set, std::size_t wheel) {
   if (tree.empty() || tree.nodes.back().type != Type::Wheels)
-    throw std::invalid_argument("to_behavior: the tree's root is not Wheels");
-  control::Behavior b;
-  b.name = std::move(name);
-  expr::Program l, r;
-  emit_wheel(tree, set, tree.root(), 0, l);
-  emit_wheel(tree, set, tree.root(), 1, r);
-  b.left = finished(std::move(l));
-  b.right = finished(std::move(r));
-  return b;
+    throw std::invalid_argument("to_wheel_program: the tree's root is not Wheels");
+  expr::Program p;
+  emit_wheel(tree, set, tree.root(), wheel, p);
+  return finished(std::move(p));
 }
 
 }  // namespace esc::evo::gp

@@ -1,12 +1,12 @@
 #pragma once
-// Trees as the runtime objects a hand-written script produces: a Number/Bool subtree as an
-// expr::Program, a Wheels tree as a control::Behavior. These are the programs the compiler
+// Trees as the expression programs a hand-written script produces: a Number/Bool subtree as
+// an expr::Program, and each wheel of a Wheels tree as one (the two programs of the behavior
+// the printed tree is; tree_control/tree_behavior.hpp). These are the programs the compiler
 // builds from the printed text (print.hpp) up to constant folding, which the compiler does
 // with expr::Program's own arithmetic; so they evaluate bit for bit like the tree, and a
 // test can show the round trip without a parser.
-#include <string>
+#include <cstddef>
 
-#include "runtime/control/behavior.hpp"
 #include "runtime/evo/gp/tree.hpp"
 #include "runtime/expr/program.hpp"
 
@@ -16,9 +16,9 @@ namespace esc::evo::gp {
 // would not fit expr::Program's stack (expr::Program::kMaxStack).
 [[nodiscard]] expr::Program to_expr_program(const Tree& tree, const PrimitiveSet& set, std::size_t i);
 
-// A Wheels tree as a behavior with no parameters (if-then-else over Wheels pushed into
-// both wheels, as print.hpp prints it).
-[[nodiscard]] control::Behavior to_behavior(const Tree& tree, const PrimitiveSet& set,
-                                            std::string name);
+// Wheel `wheel` (0: left, 1: right) of a Wheels tree, if-then-else over Wheels pushed into
+// the wheel as print.hpp prints it. Throws std::invalid_argument if the root is not Wheels
+// or the program would not fit expr::Program's stack.
+[[nodiscard]] expr::Program to_wheel_program(const Tree& tree, const PrimitiveSet& set, std::size_t wheel);
 
 }  // namespace esc::evo::gp

@@ -19,7 +19,7 @@
 //   Action:   `if c then left(0.3) else forward(ir[2])`, an action with its parameters;
 //   Behavior: `if ir[0] > 0.5 then avoid else explore`.
 // behavior_script() wraps a Wheels tree as `behavior NAME() { wheels(LEFT, RIGHT) }`; the
-// compiler turns it into the same expr programs as to_behavior() (convert.hpp), so the
+// compiler turns it into the same expr programs as to_wheel_program() (convert.hpp), so the
 // pasted behavior scores exactly the fitness of the tree.
 #include <cstddef>
 #include <string>

@@ -6,15 +6,22 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/control/tree_controller.hpp"
-#include "runtime/control/tree_driver.hpp"
 #include "runtime/evo/gp/init.hpp"
+#include "runtime/tree_control/tree_controller.hpp"
+#include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
 #include "tests/support/allocation_counter.hpp"
 
 
-namespace esc::control {
+namespace esc::tree_control {
 namespace {
+
+using control::BehaviorCall;
+using control::ControllerSpec;
+using control::FixedController;
+using control::Head;
+using control::NetworkKind;
+using control::WheelCommand;
 
 namespace gp = evo::gp;
 
@@ -80,4 +87,4 @@ TEST(NoAlloc, TreeDriverOverAnEvolvedNetworkDoesNotAllocate) {
 }
 
 }  // namespace
-}  // namespace esc::control
+}  // namespace esc::tree_control

@@ -11,16 +11,16 @@
 
 #include "runtime/control/controller.hpp"
 #include "runtime/control/controller_spec.hpp"
-#include "runtime/control/tree_controller.hpp"
+#include "runtime/tree_control/tree_controller.hpp"
 
-namespace esc::control {
+namespace esc::tree_control {
 
 class TreeDriver {
  public:
   // Throws std::invalid_argument when `spec` is not a tree controller, its head does not
   // match its primitives' root type, a supervised evolved controller cannot be built, or
   // `tree` is not a well-typed tree of the root type. `spec` must outlive the driver.
-  TreeDriver(const ControllerSpec& spec, const evo::gp::Tree& tree);
+  TreeDriver(const control::ControllerSpec& spec, const evo::gp::Tree& tree);
   // The delegates point into this object.
   TreeDriver(const TreeDriver&) = delete;
   TreeDriver& operator=(const TreeDriver&) = delete;
@@ -28,15 +28,15 @@ class TreeDriver {
   // Compiles another tree (allocates) and resets.
   void rebind(const evo::gp::Tree& tree) { ctl_.rebind(tree); }
   void reset() noexcept { ctl_.reset(); }
-  WheelCommand step(expr::Frame& frame) noexcept { return ctl_.step(frame); }
+  control::WheelCommand step(expr::Frame& frame) noexcept { return ctl_.step(frame); }
   [[nodiscard]] int last_action() const noexcept { return ctl_.last_action(); }
 
   [[nodiscard]] const TreeControllerSpec& tree_spec() const noexcept { return tree_spec_; }
 
  private:
-  std::vector<Controller> subs_;   // one per evolved behavior, in order; never reallocated
+  std::vector<control::Controller> subs_;   // one per evolved behavior, in order; never reallocated
   TreeControllerSpec tree_spec_;
   TreeController ctl_;
 };
 
-}  // namespace esc::control
+}  // namespace esc::tree_control

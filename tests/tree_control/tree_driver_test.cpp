@@ -1,4 +1,4 @@
-// control::TreeDriver: a compared tree controller (a ControllerSpec with primitives) bound
+// tree_control::TreeDriver: a compared tree controller (a ControllerSpec with primitives) bound
 // to a tree. A Behavior tree's delegates are hand-written behaviors with constant
 // arguments and evolved networks, each network run by the driver's own Controller, reset
 // with it; the head and the primitives' root must agree.
@@ -6,11 +6,19 @@
 
 #include <memory>
 
-#include "runtime/control/tree_driver.hpp"
+#include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::control {
+namespace esc::tree_control {
 namespace {
+
+using control::BehaviorCall;
+using control::Controller;
+using control::ControllerSpec;
+using control::FixedController;
+using control::Head;
+using control::NetworkKind;
+using control::WheelCommand;
 
 namespace gp = evo::gp;
 
@@ -100,4 +108,4 @@ TEST(TreeDriver, TheHeadMustMatchThePrimitives) {
 }
 
 }  // namespace
-}  // namespace esc::control
+}  // namespace esc::tree_control

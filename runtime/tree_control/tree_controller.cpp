@@ -1,4 +1,4 @@
-#include "runtime/control/tree_controller.hpp"
+#include "runtime/tree_control/tree_controller.hpp"
 
 #include <stdexcept>
 
@@ -6,9 +6,12 @@
 
 #include "runtime/evo/gp/semantics.hpp"
 
-namespace esc::control {
+namespace esc::tree_control {
 
 namespace {
+
+using control::Behavior;
+using control::WheelCommand;
 
 using evo::gp::Kind;
 using evo::gp::Type;
@@ -102,4 +105,4 @@ WheelCommand TreeController::step(expr::Frame& frame) noexcept {
   }
 }
 
-}  // namespace esc::control
+}  // namespace esc::tree_control

@@ -1,4 +1,4 @@
-#include "runtime/evo/gp/inline_actions.hpp"
+#include "runtime/tree_control/inline_actions.hpp"
 
 #include <limits>
 #include <map>
@@ -7,11 +7,19 @@
 
 #include <fmt/format.h>
 
-namespace esc::evo::gp {
+namespace esc::tree_control {
 
 namespace {
 
+using evo::gp::Kind;
+using evo::gp::Node;
+using evo::gp::Primitive;
+using evo::gp::PrimitiveId;
+using evo::gp::PrimitiveSet;
+using evo::gp::Tree;
+using evo::gp::Type;
 using expr::Op;
+namespace prim = evo::gp::prim;
 
 [[noreturn]] void fail(const std::string& why) { throw std::invalid_argument("inline_actions: " + why); }
 
@@ -163,4 +171,4 @@ InlinedTree inline_actions(const Tree& tree, const PrimitiveSet& set, std::span<
   return Inliner(tree, set, actions).run();
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::tree_control

@@ -1,6 +1,6 @@
 #pragma once
 // An Action tree as the Wheels tree that computes the same wheel commands, so that it
-// prints as a behavior (print.hpp's behavior_script) that can be pasted into a script and
+// prints as a behavior (evo/gp/print.hpp's behavior_script) that can be pasted into a script and
 // scores exactly what the tree scores. Each action node becomes its behavior's
 // wheels(LEFT, RIGHT) with the action's parameter subtrees in place of the parameters,
 // and if-then-else over actions becomes if-then-else over wheels. The arithmetic is the
@@ -17,18 +17,18 @@
 #include "runtime/control/behavior.hpp"
 #include "runtime/evo/gp/tree.hpp"
 
-namespace esc::evo::gp {
+namespace esc::tree_control {
 
 struct InlinedTree {
-  PrimitiveSet set;
-  Tree tree;
+  evo::gp::PrimitiveSet set;
+  evo::gp::Tree tree;
 };
 
 // `actions[k]` is the behavior of the Action primitives with index k. Throws
 // std::invalid_argument if the tree is not a well-typed Action tree of `set`, an index or a
 // parameter count does not match `actions`, or a behavior reads a slot that has no name
 // in scripts on its own (`in(zone)`, `reached(light)`: their names belong to an arena).
-[[nodiscard]] InlinedTree inline_actions(const Tree& tree, const PrimitiveSet& set,
+[[nodiscard]] InlinedTree inline_actions(const evo::gp::Tree& tree, const evo::gp::PrimitiveSet& set,
                                          std::span<const control::Behavior> actions);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::tree_control

@@ -1,13 +1,20 @@
-#include "runtime/control/tree_driver.hpp"
+#include "runtime/tree_control/tree_driver.hpp"
 
 #include <stdexcept>
 #include <variant>
 
 #include "runtime/evo/gp/primitive_set.hpp"
 
-namespace esc::control {
+namespace esc::tree_control {
 
 namespace {
+
+using control::BehaviorCall;
+using control::Controller;
+using control::ControllerSpec;
+using control::FixedController;
+using control::Head;
+using control::SupervisedBehavior;
 
 using evo::gp::Type;
 
@@ -65,7 +72,7 @@ TreeControllerSpec tree_controller_spec(const ControllerSpec& spec, std::vector<
 
 }  // namespace
 
-TreeDriver::TreeDriver(const ControllerSpec& spec, const evo::gp::Tree& tree)
+TreeDriver::TreeDriver(const control::ControllerSpec& spec, const evo::gp::Tree& tree)
     : subs_(sub_controllers(checked(spec))), tree_spec_(tree_controller_spec(spec, subs_)), ctl_(tree_spec_, tree) {}
 
-}  // namespace esc::control
+}  // namespace esc::tree_control

@@ -4,14 +4,16 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/control/tree_controller.hpp"
-#include "runtime/evo/gp/convert.hpp"
 #include "runtime/evo/gp/init.hpp"
+#include "runtime/tree_control/tree_behavior.hpp"
+#include "runtime/tree_control/tree_controller.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::control {
+namespace esc::tree_control {
 namespace {
 
+using control::Behavior;
+using control::WheelCommand;
 using evo::gp::PrimitiveSet;
 using evo::gp::Tree;
 using evo::gp::Type;
@@ -135,7 +137,7 @@ TEST(TreeController, WheelsTreeAndItsPrintedBehaviorAgreeBitForBit) {
     Rng rng(seed, {41});
     const Tree t = gp::grow(spec.primitives, Type::Wheels, 2 + static_cast<int>(seed % 7), rng);
     TreeController c(spec, t);
-    const Behavior b = gp::to_behavior(t, spec.primitives, "evolved");
+    const Behavior b = to_behavior(t, spec.primitives, "evolved");
     for (int k = 0; k < 8; ++k) {
       expr::Frame f = gp::test::random_frame(rng);
       const WheelCommand want = run_behavior(b, f);
@@ -147,4 +149,4 @@ TEST(TreeController, WheelsTreeAndItsPrintedBehaviorAgreeBitForBit) {
 }
 
 }  // namespace
-}  // namespace esc::control
+}  // namespace esc::tree_control

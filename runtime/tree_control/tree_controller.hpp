@@ -19,7 +19,7 @@
 #include "runtime/control/behavior.hpp"
 #include "runtime/evo/gp/program.hpp"
 
-namespace esc::control {
+namespace esc::tree_control {
 
 // What a supervisor's tree can choose: a behavior run with fixed parameters, or (the hook
 // for supervising arbitrary controllers) a callable. `step` is called instead of the
@@ -27,16 +27,16 @@ namespace esc::control {
 // allocate in step.
 struct Delegate {
   std::string name;
-  Behavior behavior;
+  control::Behavior behavior;
   std::array<double, expr::kMaxParams> params{};  // behavior.params.size() of them are used
-  std::function<WheelCommand(expr::Frame&)> step;
+  std::function<control::WheelCommand(expr::Frame&)> step;
   std::function<void()> reset;
 };
 
 struct TreeControllerSpec {
   std::string name;
   evo::gp::PrimitiveSet primitives;   // root(): Wheels, Action or Behavior
-  std::vector<Behavior> actions;      // Action root: Action primitive with index k runs actions[k]
+  std::vector<control::Behavior> actions;      // Action root: Action primitive with index k runs actions[k]
   std::vector<Delegate> behaviors;    // Behavior root: Behavior primitive index k runs behaviors[k]
 };
 
@@ -53,7 +53,7 @@ class TreeController {
 
   void reset() noexcept;
 
-  WheelCommand step(expr::Frame& frame) noexcept;
+  control::WheelCommand step(expr::Frame& frame) noexcept;
 
   // Index of the action or delegate chosen by the last step; -1 for a Wheels tree or before
   // the first step.
@@ -69,4 +69,4 @@ class TreeController {
   int last_action_ = -1;
 };
 
-}  // namespace esc::control
+}  // namespace esc::tree_control

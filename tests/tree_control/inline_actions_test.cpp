@@ -1,0 +1,60 @@
+// Action trees inlined into Wheels trees (inline_actions.hpp): the inlined tree gives the
+// Action tree's wheel commands bit for bit, and what is not an Action tree with its
+// behaviors is refused.
+#include <gtest/gtest.h>
+
+#include "runtime/evo/gp/init.hpp"
+#include "runtime/tree_control/inline_actions.hpp"
+#include "runtime/tree_control/tree_controller.hpp"
+#include "tests/gp/helpers.hpp"
+
+namespace esc::tree_control {
+namespace {
+
+using evo::gp::PrimitiveSet;
+using evo::gp::Tree;
+using evo::gp::Type;
+namespace gp = evo::gp;
+
+TEST(InlineActions, TheInlinedTreeGivesTheActionTreesCommands) {
+  const PrimitiveSet set = gp::test::action_set();
+  const std::vector<control::Behavior> actions = gp::test::standard_actions();
+  const TreeControllerSpec spec{"a", set, actions, {}};
+  Rng rng(23);
+  for (int i = 0; i < 40; ++i) {
+    const Tree t = i % 2 == 0 ? gp::full(set, Type::Action, 2 + i % 5, rng) : gp::grow(set, Type::Action, 8, rng);
+    const InlinedTree in = inline_actions(t, set, actions);
+    EXPECT_EQ(in.set.root(), Type::Wheels);
+    const TreeControllerSpec wheels{"w", in.set, actions, {}};   // the old actions stay in the set
+    TreeController a(spec, t);
+    TreeController w(wheels, in.tree);
+    for (int f = 0; f < 50; ++f) {
+      expr::Frame x = gp::test::random_frame(rng);
+      expr::Frame y = x;
+      const control::WheelCommand ca = a.step(x);
+      const control::WheelCommand cw = w.step(y);
+      ASSERT_EQ(ca.left, cw.left) << i;
+      ASSERT_EQ(ca.right, cw.right) << i;
+    }
+  }
+}
+
+TEST(InlineActions, OnlyActionTreesWithTheirBehaviors) {
+  Rng rng(2);
+  const PrimitiveSet set = gp::test::action_set();
+  const Tree t = gp::full(set, Type::Action, 3, rng);
+  std::vector<control::Behavior> actions = gp::test::standard_actions();
+  EXPECT_THROW((void)inline_actions(t, gp::test::wheels_set(), actions), std::invalid_argument);
+  actions.pop_back();   // `stop` has no behavior
+  EXPECT_THROW((void)inline_actions(gp::test::postfix(set, {"stop"}), set, actions), std::invalid_argument);
+  // A behavior reading `in(zone)`: no name of its own in scripts.
+  control::Behavior zone = gp::test::standard_actions().back();
+  zone.left = expr::Program();
+  zone.left.push_load(expr::slot::in_zone);
+  actions = gp::test::standard_actions();
+  actions.back() = zone;
+  EXPECT_THROW((void)inline_actions(gp::test::postfix(set, {"stop"}), set, actions), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace esc::tree_control
