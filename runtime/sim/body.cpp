@@ -9,15 +9,9 @@ namespace esc::sim {
 
 namespace {
 
-// Contact: the body is "in collision" when its 2D clearance to a wall or obstacle is at
-// most this (the contact solver stops it at clearance ~0).
-constexpr double kContactTolerance_m = 1e-4;
 // Collision margin of every Bullet shape (inside the shape's outer surface, so the
 // surfaces are exact); small against the 27.5 mm body, large enough for robust GJK.
 constexpr btScalar kCollisionMargin_m = 0.0005F;
-// Beyond the body's radius plus a substep's travel plus this, no contact can act on the
-// body during the substep: Body::move integrates it without a Bullet step.
-constexpr double kFreeSpaceMargin_m = 0.001;
 // Walls are boxes this thick outside the inner rectangle; static shapes are this tall
 // (centred on the plane) so every contact normal is horizontal.
 constexpr double kWallThickness_m = 0.1;
@@ -180,50 +174,6 @@ void Body::place(const Pose& pose) {
   world_->addRigidBody(body_.get());
   solver_->reset();
   solver_->setRandSeed(0);
-}
-
-Pose Body::pose() const noexcept {
-  const btTransform& tr = body_->getWorldTransform();
-  const btMatrix3x3& m = tr.getBasis();
-  return {static_cast<double>(tr.getOrigin().x()), static_cast<double>(tr.getOrigin().y()),
-          std::atan2(static_cast<double>(m[1][0]), static_cast<double>(m[0][0]))};
-}
-
-// One substep of Bullet at the imposed velocities. Far from every surface no contact can
-// push the body (a speculative contact acts only on a body that would reach the surface
-// within the step), and a Bullet step of a lone body without gravity or damping is exactly
-// its transform integrated at the given velocities: that is done here, with Bullet's own
-// integrator, without the collision detection, islands and solver of a full step (2.5-3x
-// the control steps/s of the paper's workloads). While any contact point is still cached
-// (up to 2 cm from a surface) Bullet steps, so that its solver's warm start sees every
-// step it would have seen. Results stay deterministic; against stepping Bullet every
-// substep they differ in the last digits only (about 1e-8 relative on a short run's
-// fitness: the broadphase, updated less often, may list the contact pairs in another order).
-void Body::move(const PlanarVelocity& v) {
-  body_->setLinearVelocity(btVector3(bt(v.x_mps), bt(v.y_mps), 0));
-  body_->setAngularVelocity(btVector3(0, 0, bt(v.turn_radps)));
-  const btVector3& p = body_->getWorldTransform().getOrigin();
-  const double keep = radius_m_ + v.travel_m + kFreeSpaceMargin_m;
-  if (has_contact_points() || geometry_.clearance({p.x(), p.y()}, keep) <= keep) {
-    world_->stepSimulation(bt(substep_s_), 0, bt(substep_s_));
-    return;
-  }
-  btTransform next;
-  btTransformUtil::integrateTransform(body_->getWorldTransform(), body_->getLinearVelocity(),
-                                      body_->getAngularVelocity(), bt(substep_s_), next);
-  body_->proceedToTransform(next);
-}
-
-bool Body::has_contact_points() const noexcept {
-  const int n = dispatcher_->getNumManifolds();
-  for (int i = 0; i < n; ++i)
-    if (dispatcher_->getManifoldByIndexInternal(i)->getNumContacts() > 0) return true;
-  return false;
-}
-
-bool Body::touching() const noexcept {
-  const double reach_m = radius_m_ + kContactTolerance_m;
-  return geometry_.clearance(position(), reach_m) <= reach_m;
 }
 
 }  // namespace esc::sim

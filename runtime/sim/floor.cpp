@@ -114,8 +114,7 @@ void Floor::reset(Vec2 centre, FloorState& state) {
   read(centre, true, state);
 }
 
-void Floor::substep(Vec2 centre) noexcept {
-  if (!energy_on_) return;
+void Floor::drain_or_recharge(Vec2 centre) noexcept {
   energy_units_ = in_recharge(centre.x, centre.y) ? std::min(energy_full_, energy_units_ + energy_gain_)
                                                   : std::max(std::int64_t{0}, energy_units_ - energy_drain_);
 }

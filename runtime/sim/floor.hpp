@@ -54,8 +54,11 @@ class Floor {
   void reset(Vec2 centre, FloorState& state);
 
   // One physics substep ending with the centre at `centre`: the accumulator drains, or
-  // refills inside a recharge zone. No allocation.
-  void substep(Vec2 centre) noexcept;
+  // refills inside a recharge zone. No allocation. Inline: the step loop calls it every
+  // substep, mostly with the energy model off.
+  void substep(Vec2 centre) noexcept {
+    if (energy_on_) drain_or_recharge(centre);
+  }
 
   // The end of a control step with the centre at `centre`. No allocation.
   void observe(Vec2 centre, FloorState& state) noexcept;
@@ -85,6 +88,7 @@ class Floor {
   };
 
   void place_lights();
+  void drain_or_recharge(Vec2 centre) noexcept;
   [[nodiscard]] bool in_recharge(double x, double y) const noexcept;
   // The state at `centre`; `fresh`: just placed (no rising edge, no new cell).
   void read(Vec2 centre, bool fresh, FloorState& state) noexcept;
