@@ -15,9 +15,15 @@ int check_command(const std::vector<std::filesystem::path>& files) {
     }
     std::string names;
     for (const auto& e : r.experiments) names += (names.empty() ? "" : ", ") + e.name;
+    std::string studies;
+    for (const auto& s : r.studies)
+      studies += fmt::format("{}{} ({} condition{})", studies.empty() ? "" : ", ", s.name, s.conditions.size(),
+                             s.conditions.size() == 1 ? "" : "s");
     if (!follower_rank())
-      fmt::print("{}: ok ({} experiment{}{}{})\n", f.string(), r.experiments.size(),
-               r.experiments.size() == 1 ? "" : "s", names.empty() ? "" : ": ", names);
+      fmt::print("{}: ok ({} experiment{}{}{}{}{})\n", f.string(), r.experiments.size(),
+                 r.experiments.size() == 1 ? "" : "s", names.empty() ? "" : ": ", names,
+                 studies.empty() ? "" : fmt::format("; {} stud{}: ", r.studies.size(), r.studies.size() == 1 ? "y" : "ies"),
+                 studies);
   }
   return status;
 }

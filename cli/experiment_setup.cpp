@@ -9,6 +9,24 @@
 
 namespace esc::cli {
 
+namespace {
+
+// "FILE has no WHAT `name`; it declares ...", with the closest name declared.
+void no_such(const std::filesystem::path& file, std::string_view what, const std::string& name,
+             const std::string& declared, const std::vector<std::string>& names) {
+  complain("esc: error: {} has no {} `{}`; it declares {}\n", file.string(), what, name, declared);
+  if (const auto near = compiler::closest(name, names)) complain("help: did you mean `{}`?\n", *near);
+}
+
+template <class T>
+std::vector<std::string> names_of(const std::vector<T>& declared) {
+  std::vector<std::string> names;
+  for (const T& x : declared) names.push_back(x.name);
+  return names;
+}
+
+}  // namespace
+
 eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
                                       const std::string& name) {
   if (compiled.experiments.empty()) {
@@ -16,18 +34,34 @@ eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const s
     return nullptr;
   }
   if (name.empty()) return &compiled.experiments.front();
-  std::vector<std::string> names;
-  for (auto& e : compiled.experiments) {
+  for (auto& e : compiled.experiments)
     if (e.name == name) return &e;
-    names.push_back(e.name);
-  }
-  complain("esc: error: {} has no experiment `{}`; it declares {}\n", file.string(), name,
-           compiler::quoted_list(names, " and "));
-  if (const auto near = compiler::closest(name, names)) complain("help: did you mean `{}`?\n", *near);
+  const std::vector<std::string> names = names_of(compiled.experiments);
+  no_such(file, "experiment", name, compiler::quoted_list(names, " and "), names);
   return nullptr;
 }
 
-bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
+Target pick_target(compiler::CompileResult& compiled, const std::filesystem::path& file, const std::string& name) {
+  const std::string wanted = name.empty() ? compiled.first_declared : name;
+  if (wanted.empty()) {
+    complain("esc: error: {} declares no experiment or study to run\n", file.string());
+    return {};
+  }
+  for (auto& e : compiled.experiments)
+    if (e.name == wanted) return &e;
+  for (auto& s : compiled.studies)
+    if (s.name == wanted) return &s;
+  const std::vector<std::string> experiments = names_of(compiled.experiments), studies = names_of(compiled.studies);
+  std::string declared = experiments.empty() ? "" : "experiments " + compiler::quoted_list(experiments, ", ");
+  if (!studies.empty())
+    declared += (declared.empty() ? "studies " : " and studies ") + compiler::quoted_list(studies, ", ");
+  std::vector<std::string> all = experiments;
+  all.insert(all.end(), studies.begin(), studies.end());
+  no_such(file, "experiment or study", wanted, declared.empty() ? "none" : declared, all);
+  return {};
+}
+
+std::optional<std::vector<std::pair<std::string, std::string>>> override_settings(const RunOptions& o) {
   std::vector<std::pair<std::string, std::string>> settings;
   if (o.runs) settings.emplace_back("runs", std::to_string(*o.runs));
   if (o.generations) settings.emplace_back("generations", std::to_string(*o.generations));
@@ -36,15 +70,21 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {
       complain("esc: error: --set expects KEY=VALUE, got `{}`\n", kv);
-      return false;
+      return std::nullopt;
     }
     settings.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
   }
+  return settings;
+}
+
+bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec, std::string_view where) {
+  const auto settings = override_settings(o);
+  if (!settings) return false;
   bool ok = true;
-  for (const auto& [key, value] : settings) {
+  for (const auto& [key, value] : *settings) {
     const std::string error = compiler::apply_setting(spec, key, value);
     if (!error.empty()) {
-      complain("esc: error: {}={}: {}\n", key, value, error);
+      complain("esc: error: {}{}={}: {}\n", where, key, value, error);
       ok = false;
     }
   }

@@ -1,9 +1,13 @@
 #pragma once
 // Setting up an experiment the way `esc run`, `esc run --resume` and `esc replay` all do:
-// picking it from a compiled script, applying command-line settings (given now, or stored
-// in a run directory when it started), and naming its source files for the store.
+// picking it (or a study) from a compiled script, applying command-line settings (given now,
+// or stored in a run directory when it started), and naming its source files for the store.
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -17,9 +21,21 @@ namespace esc::cli {
 eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
                                       const std::string& name);
 
+// What `esc run --experiment NAME` picked: an experiment or a study; monostate after an error.
+using Target = std::variant<std::monostate, eval::ExperimentSpec*, eval::StudySpec*>;
+
+// The experiment or study `name` of a compiled script (when `name` is empty, whichever the
+// main file declares first), or monostate after printing an error (with the closest name).
+[[nodiscard]] Target pick_target(compiler::CompileResult& compiled, const std::filesystem::path& file,
+                                 const std::string& name);
+
+// --runs, --generations, --seed and each --set as (key, value); nullopt after printing an
+// error (a --set without `=`).
+[[nodiscard]] std::optional<std::vector<std::pair<std::string, std::string>>> override_settings(const RunOptions& o);
+
 // Applies the command-line overrides (--runs, --generations, --seed, --set); prints each
-// problem, returns false if any.
-bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec);
+// problem (after `where`: `condition `x`: `), returns false if any.
+bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec, std::string_view where = {});
 
 // The overrides a stored run started with (and its dependency cache), to apply again.
 // Throws store::StoreError when `dir`'s database holds them damaged.

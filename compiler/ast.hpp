@@ -217,15 +217,67 @@ struct ExpItem {
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword
   std::vector<Name> refs;           // arena/robot/fitness/evolve method/compare list
+  // Compare: the name each controller of `refs` is compared under (`CS8 as CS`: `CS`);
+  // empty text when it keeps its own.
+  std::vector<Name> aliases;
   std::vector<Setting> settings;    // robot { ... } overrides
   std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed
   std::vector<EsOption> options;    // evolve es(...)
   std::optional<Quantity> generations;
   bool evaluate_only = false;       // StartFrom: `evaluate from ...` rather than `start from ...`
+
+  // Compare: the name controller `refs[i]` is compared under, its alias or its own.
+  [[nodiscard]] const Name& compared_as(std::size_t i) const {
+    return i < aliases.size() && !aliases[i].text.empty() ? aliases[i] : refs[i];
+  }
 };
 
 struct ExperimentDecl : DeclHead {
   std::vector<ExpItem> items;
+};
+
+// The controllers an experiment compares: the declaration each names and the name it is
+// compared (stored, reported, depended on) under.
+struct Compared {
+  const Name* controller;           // the controller declaration's name, as written
+  const Name* name;                 // the alias when given, else `controller`
+};
+[[nodiscard]] inline std::vector<Compared> compared(const ExperimentDecl& d) {
+  std::vector<Compared> out;
+  for (const ExpItem& item : d.items)
+    if (item.kind == ExpItem::Kind::Compare)
+      for (std::size_t i = 0; i < item.refs.size(); ++i) out.push_back({&item.refs[i], &item.compared_as(i)});
+  return out;
+}
+
+// ---- studies: `study NAME { conditions ... condition ... sweep ... runs N seed N }` -----
+// A setting's value in a study: one value, or a list `[a, b, ...]` (a sweep's values; a
+// range is a list of two numbers).
+struct StudyValue {
+  Value value;                      // when !list: a Quantity, Bool or Word
+  bool list = false;
+  std::vector<StudyValue> items;
+  SourceRange where;
+  std::string text;                 // as written
+};
+
+struct StudySetting {
+  Name key;                         // a `--set` key: `robot.time_constant`, `mu`
+  StudyValue value;
+};
+
+struct StudyItem {
+  enum class Kind { Conditions, Condition, Sweep, Runs, Seed };
+  Kind kind = Kind::Conditions;
+  SourceRange where;                // the keyword
+  Name name;                        // Condition: the condition's name
+  std::vector<Name> experiments;    // Conditions: each; Condition and Sweep: the one
+  std::vector<StudySetting> settings;   // Condition, Sweep
+  std::optional<Quantity> number;   // Runs, Seed
+};
+
+struct StudyDecl : DeclHead {
+  std::vector<StudyItem> items;
 };
 
 struct Module {
@@ -239,6 +291,7 @@ struct Module {
   std::vector<ExperimentDecl> experiments;
   std::vector<LibraryDecl> libraries;
   std::vector<PrimitivesDecl> primitives;
+  std::vector<StudyDecl> studies;
   bool syntax_ok = true;
 };
 

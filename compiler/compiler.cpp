@@ -19,6 +19,7 @@
 #include "compiler/lower_fitness.hpp"
 #include "compiler/lower_primitives.hpp"
 #include "compiler/lower_robot.hpp"
+#include "compiler/lower_study.hpp"
 #include "compiler/parse.hpp"
 #include "compiler/resolver.hpp"
 #include "compiler/text.hpp"
@@ -97,19 +98,35 @@ class Driver {
     for (std::size_t i = 0; i < modules_.size(); ++i)
       if (done.count(i) == 0) names.declare(modules_[i]);
     std::vector<eval::ExperimentSpec> all;
-    auto experiments = lower_all(names, modules_[main], all);
+    std::vector<eval::StudySpec> studies;
+    auto experiments = lower_all(names, modules_[main], all, studies);
     result_.diagnostics = std::move(sink_.items());
     if (result_.ok()) {
       result_.experiments = std::move(experiments);
       result_.all_experiments = std::move(all);
+      result_.studies = std::move(studies);
+      result_.first_declared = first_declared(modules_[main]);
     }
   }
 
  private:
+  static std::string first_declared(const ast::Module& m) {
+    const ast::DeclHead* first = nullptr;
+    const auto earliest = [&](const auto& decls) {
+      for (const auto& d : decls)
+        if (first == nullptr || d.order < first->order) first = &d;
+    };
+    earliest(m.experiments);
+    earliest(m.studies);
+    return first == nullptr ? std::string() : first->name.text;
+  }
+
   // Lowers every declaration of every file once (each reported once); returns the main
-  // file's experiments, and every file's in `all`.
+  // file's experiments, every file's in `all`, and the main file's studies (every file's are
+  // checked).
   std::vector<eval::ExperimentSpec> lower_all(Resolver& names, const ast::Module& main,
-                                              std::vector<eval::ExperimentSpec>& all) {
+                                              std::vector<eval::ExperimentSpec>& all,
+                                              std::vector<eval::StudySpec>& studies) {
     ArenaLowering arenas(sink_);
     RobotLowering robots(sink_, names);
     BehaviorLowering behaviors(sink_, names, arenas);
@@ -134,6 +151,10 @@ class Driver {
         all.push_back(*x);
         if (m == &main) out.push_back(*x);
       }
+    StudyLowering study_lowering(sink_, names, experiments);
+    for (const ast::Module* m : names.modules())
+      for (const auto& d : m->studies)
+        if (auto s = study_lowering.lower(d); s && m == &main) studies.push_back(std::move(*s));
     return out;
   }
 
@@ -199,6 +220,7 @@ CompileResult compile_source(std::string_view text, const fs::path& name, const 
   } catch (const std::exception& e) {
     result.experiments.clear();
     result.all_experiments.clear();
+    result.studies.clear();
     result.diagnostics.push_back(Diagnostic{Severity::Error, SourceRange{name, 0, 0, 1},
                                             fmt::format("internal compiler error: {}", e.what()), {}, {}});
   } catch (...) {

@@ -8,6 +8,7 @@
 
 #include "compiler/diagnostic.hpp"
 #include "runtime/eval/experiment.hpp"
+#include "runtime/eval/study.hpp"
 
 namespace esc::compiler {
 
@@ -23,6 +24,10 @@ struct CompileResult {
   // Every experiment of every file read (imported ones included), for the dependencies of
   // evolved behaviors; empty on error.
   std::vector<eval::ExperimentSpec> all_experiments;
+  std::vector<eval::StudySpec> studies;          // the main file's, in declaration order; empty on error
+  // The main file's first experiment or study, whichever is declared first: what `esc run`
+  // runs without `--experiment`.
+  std::string first_declared;
   SourceMap sources;                             // text of every file read, for rendering
   [[nodiscard]] bool ok() const noexcept;        // no diagnostic of severity Error
 };

@@ -17,26 +17,25 @@ const std::optional<EvolvedRef>& BehaviorLowering::evolved(const ast::BehaviorDe
   if (d.poisoned || !d.evolved) return slot;
   const auto* xd = names_.lookup<ast::ExperimentDecl>(d.from_experiment);
   if (xd == nullptr) return slot;
-  std::vector<std::string> compared;
-  bool found = false;
-  for (const ast::ExpItem& item : xd->items)
-    if (item.kind == ast::ExpItem::Kind::Compare)
-      for (const ast::Name& n : item.refs) {
-        compared.push_back(n.text);
-        found = found || n.text == d.from_controller.text;
-      }
+  // Found by the name it is compared under (`compare CS8 as CS`: `CS`).
+  std::vector<std::string> names;
+  const ast::Name* declared = nullptr;
+  for (const ast::Compared& c : ast::compared(*xd)) {
+    names.push_back(c.name->text);
+    if (c.name->text == d.from_controller.text) declared = c.controller;
+  }
   if (d.from_controller.text.empty()) return slot;
-  if (!found) {
+  if (declared == nullptr) {
     Diagnostic& diag = sink_.error(d.from_controller.where,
                                    fmt::format("experiment `{}` does not compare a controller `{}`",
                                                d.from_experiment.text, d.from_controller.text));
     diag.notes.emplace_back(xd->name.where, fmt::format("`{}` is declared here", d.from_experiment.text));
-    if (!compared.empty())
-      suggest(diag, d.from_controller.text, compared,
-              {.otherwise = fmt::format("`{}` compares {}", d.from_experiment.text, quoted_list(compared, ", "))});
+    if (!names.empty())
+      suggest(diag, d.from_controller.text, names,
+              {.otherwise = fmt::format("`{}` compares {}", d.from_experiment.text, quoted_list(names, ", "))});
     return slot;
   }
-  if (const auto* cd = names_.lookup<ast::ControllerDecl>(d.from_controller)) slot = EvolvedRef{xd, cd};
+  if (const auto* cd = names_.lookup<ast::ControllerDecl>(*declared)) slot = EvolvedRef{xd, cd, d.from_controller.text};
   return slot;
 }
 

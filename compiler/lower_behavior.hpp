@@ -4,6 +4,7 @@
 // (`= evolved from experiment E controller C`) to the declarations it names.
 #include <map>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "compiler/ast.hpp"
@@ -18,6 +19,7 @@ namespace esc::compiler {
 struct EvolvedRef {
   const ast::ExperimentDecl* experiment = nullptr;
   const ast::ControllerDecl* controller = nullptr;
+  std::string compared_as;          // the name the experiment compares it under
 };
 
 class BehaviorLowering {

@@ -165,10 +165,12 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
         break;
       case K::Compare: {
         std::set<std::string> listed;
-        for (const ast::Name& ref : item.refs) {
-          if (ref.text.empty()) continue;
-          if (!listed.insert(ref.text).second) {
-            sink_.error(ref.where, fmt::format("controller `{}` is listed twice", ref.text));
+        for (std::size_t i = 0; i < item.refs.size(); ++i) {
+          const ast::Name& ref = item.refs[i];
+          const ast::Name& as = item.compared_as(i);
+          if (ref.text.empty() || as.text.empty()) continue;
+          if (!listed.insert(as.text).second) {
+            sink_.error(as.where, fmt::format("controller `{}` is listed twice", as.text));
             continue;
           }
           const ast::ControllerDecl* cd = nullptr;
@@ -178,8 +180,9 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
             continue;
           }
           x.controllers.push_back(*c);
+          x.controllers.back().name = as.text;   // `CS8 as CS`: stored and reported as CS
           controller_decls.push_back(cd);
-          compared.push_back(&ref);
+          compared.push_back(&as);
         }
         break;
       }
@@ -243,7 +246,7 @@ void ExperimentLowering::add_dependencies(eval::ExperimentSpec& x,
       if (!std::holds_alternative<control::FixedController>(behaviors[j].what)) continue;
       const auto& e = parts_.behaviors.evolved(*listed[j].decl);
       if (!e) continue;
-      const std::string xn = e->experiment->name.text, cn = e->controller->name.text;
+      const std::string xn = e->experiment->name.text, cn = e->compared_as;
       auto dep = std::find_if(x.dependencies.begin(), x.dependencies.end(),
                               [&](const eval::Dependency& k) { return k.experiment == xn && k.controller == cn; });
       if (dep == x.dependencies.end()) dep = x.dependencies.insert(x.dependencies.end(), eval::Dependency{xn, cn, {}});
@@ -280,12 +283,11 @@ void ExperimentLowering::check_start_from(const ast::ExperimentDecl& from, const
     diag.help.push_back(fmt::format("write `start from experiment {}` to evolve on from them", from.name.text));
   }
   std::vector<std::string> theirs;
-  for (const ast::ExpItem& i : from.items)
-    if (i.kind == K::Compare)
-      for (const ast::Name& n : i.refs) theirs.push_back(n.text);
+  for (const ast::Compared& c : ast::compared(from)) theirs.push_back(c.name->text);
   const auto c = first.find(K::Compare);
   if (c == first.end()) return;
-  for (const ast::Name& n : c->second->refs) {
+  for (std::size_t i = 0; i < c->second->refs.size(); ++i) {
+    const ast::Name& n = c->second->compared_as(i);
     if (n.text.empty() || std::find(theirs.begin(), theirs.end(), n.text) != theirs.end()) continue;
     Diagnostic& diag = sink_.error(
         n.where, fmt::format("experiment `{}` does not compare `{}`: there is no stored `{}` to start from",

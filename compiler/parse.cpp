@@ -102,6 +102,7 @@ class Builder {
       else if (auto* ex = d->experimentDecl()) m.experiments.push_back(experiment(ex, order));
       else if (auto* li = d->libraryDecl()) library(li, m, order);
       else if (auto* pr = d->primitivesDecl()) m.primitives.push_back(primitives(pr, order));
+      else if (auto* st = d->studyDecl()) m.studies.push_back(study(st, order));
     }
   }
 
@@ -573,13 +574,98 @@ class Builder {
         item.refs.push_back(name(sf->ident()));
       } else if (auto* co = dynamic_cast<P::ExpCompareContext*>(it)) {
         item.kind = K::Compare;
-        for (P::IdentContext* i : co->ident()) item.refs.push_back(name(i));
+        for (P::ComparedContext* cc : co->compared()) {
+          if (cc == nullptr) continue;
+          item.refs.push_back(name(cc->ctl));
+          item.aliases.push_back(cc->alias != nullptr ? name(cc->alias) : ast::Name{});
+        }
       } else {
         continue;
       }
       x.items.push_back(std::move(item));
     }
     return x;
+  }
+
+  // `robot.time_constant`, `mu`: one name spanning the key.
+  ast::Name setting_key(P::SettingKeyContext* c) const {
+    ast::Name n;
+    if (c == nullptr) return n;
+    n.where = span(c);
+    for (antlr4::tree::ParseTree* ch : c->children) {
+      if (auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(ch)) {
+        if (missing(t)) return ast::Name{{}, n.where};
+        n.text += t->getText();
+      } else if (auto* i = dynamic_cast<P::IdentContext*>(ch)) {
+        const ast::Name part = name(i);
+        if (part.text.empty()) return ast::Name{{}, n.where};
+        n.text += part.text;
+      }
+    }
+    return n;
+  }
+
+  ast::StudyValue study_value(P::StudyValueContext* c) {
+    ast::StudyValue v;
+    if (c == nullptr) return v;
+    v.where = span(c);
+    v.text = source(c);
+    if (c->LBRACK() != nullptr) {
+      v.list = true;
+      for (P::StudyValueContext* item : c->studyValue()) v.items.push_back(study_value(item));
+      return v;
+    }
+    v.value.where = v.where;
+    v.value.text = v.text;
+    if (c->quantity() != nullptr) {
+      v.value.kind = ast::Value::Kind::Quantity;
+      v.value.q = quantity(c->quantity());
+    } else if (c->ident() != nullptr) {
+      v.value.kind = ast::Value::Kind::Word;
+      v.value.text = name(c->ident()).text;
+    } else {
+      v.value.kind = ast::Value::Kind::Bool;
+      v.value.flag = c->ON() != nullptr || c->TRUE() != nullptr;
+    }
+    return v;
+  }
+
+  ast::StudyDecl study(P::StudyDeclContext* c, int order) {
+    ast::StudyDecl s;
+    head(s, c, c->name, order);
+    using K = ast::StudyItem::Kind;
+    const auto settings_of = [&](const std::vector<P::StudySettingContext*>& list, ast::StudyItem& item) {
+      for (P::StudySettingContext* st : list)
+        if (st != nullptr) item.settings.push_back({setting_key(st->key), study_value(st->studyValue())});
+    };
+    for (P::StudyItemContext* it : c->studyItem()) {
+      if (it == nullptr) continue;
+      ast::StudyItem item;
+      item.where = at(it->getStart());
+      if (auto* cs = dynamic_cast<P::StudyConditionsContext*>(it)) {
+        item.kind = K::Conditions;
+        for (P::IdentContext* i : cs->ident()) item.experiments.push_back(name(i));
+      } else if (auto* cd = dynamic_cast<P::StudyConditionContext*>(it)) {
+        item.kind = K::Condition;
+        item.name = name(cd->name);
+        item.experiments.push_back(name(cd->exp));
+        settings_of(cd->studySetting(), item);
+      } else if (auto* sw = dynamic_cast<P::StudySweepContext*>(it)) {
+        item.kind = K::Sweep;
+        item.experiments.push_back(name(sw->exp));
+        settings_of(sw->studySetting(), item);
+      } else if (auto* ru = dynamic_cast<P::StudyRunsContext*>(it)) {
+        item.kind = K::Runs;
+        item.number = number(ru->NUMBER());
+      } else if (auto* se = dynamic_cast<P::StudySeedContext*>(it)) {
+        item.kind = K::Seed;
+        item.number = number(se->NUMBER());
+      } else {
+        continue;
+      }
+      s.items.push_back(std::move(item));
+    }
+    return s;
   }
 
   ast::ExprPtr error_expr(const SourceRange& where) const {

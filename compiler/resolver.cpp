@@ -11,8 +11,8 @@ namespace esc::compiler {
 namespace {
 
 // In the order of Decl's alternatives.
-constexpr std::string_view kKindNames[] = {"arena",      "robot",      "behavior", "fitness",
-                                           "controller", "experiment", "library",  "primitive set"};
+constexpr std::string_view kKindNames[] = {"arena",      "robot",      "behavior", "fitness",      "controller",
+                                           "experiment", "library",    "primitive set", "study"};
 static_assert(std::size(kKindNames) == std::variant_size_v<Decl>);
 
 std::string article(std::string_view kind) {
@@ -37,7 +37,8 @@ void Resolver::add(const Decl& d) {
   Diagnostic& diag = sink_.error(h.name.where, fmt::format("`{}` is already declared", h.name.text));
   diag.notes.emplace_back(head(first).name.where, fmt::format("first declared here, as {}", article(kind_name(first))));
   diag.help.push_back(
-      "every arena, robot, behavior, fitness, controller, experiment, library and primitive set needs its own name");
+      "every arena, robot, behavior, fitness, controller, experiment, library, primitive set and study needs its "
+      "own name");
 }
 
 void Resolver::declare(const ast::Module& m) {
@@ -55,6 +56,7 @@ void Resolver::declare(const ast::Module& m) {
   collect(m.experiments);
   collect(m.libraries);
   collect(m.primitives);
+  collect(m.studies);
   std::stable_sort(all.begin(), all.end(), [](const Decl& a, const Decl& b) { return head(a).order < head(b).order; });
   for (const Decl& d : all) add(d);
 }

@@ -18,7 +18,7 @@ namespace esc::compiler {
 
 using Decl = std::variant<const ast::ArenaDecl*, const ast::RobotDecl*, const ast::BehaviorDecl*,
                           const ast::FitnessDecl*, const ast::ControllerDecl*, const ast::ExperimentDecl*,
-                          const ast::LibraryDecl*, const ast::PrimitivesDecl*>;
+                          const ast::LibraryDecl*, const ast::PrimitivesDecl*, const ast::StudyDecl*>;
 
 // "arena", "robot", ..., "primitive set": the kind of the declaration `d` holds.
 [[nodiscard]] std::string_view kind_name(const Decl& d) noexcept;

@@ -69,6 +69,13 @@ std::vector<std::string> setting_keys() {
   return k;
 }
 
+bool setting_takes_range(std::string_view key) {
+  if (const EsOption* o = find_option_key(es_options(), key)) return o->shape == OptionShape::Range;
+  if (key.rfind("gp.", 0) != 0) return false;
+  const GpOption* o = find_option_key(gp_options(), key.substr(3));
+  return o != nullptr && o->shape == OptionShape::Range;
+}
+
 bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink) {
   const std::string& k = key.text;
   if (const ExperimentSetting* s = find_experiment_setting(k)) return s->read(*s, spec, value, sink);

@@ -7,6 +7,7 @@
 // text; a script construct that varies a key over values written in the script can call
 // the same two functions with its own values and locations.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/ast.hpp"
@@ -17,6 +18,9 @@ namespace esc::compiler {
 
 // Every `--set` key, for "did you mean" and the documentation.
 [[nodiscard]] std::vector<std::string> setting_keys();
+
+// Whether `key`'s value is a range (`bounds`, `gp.init_depth`).
+[[nodiscard]] bool setting_takes_range(std::string_view key);
 
 // Sets `key` of `spec` to `value` (written as in a script: `50ms`, `on`, `comma`,
 // `[-1, 1]`); reports an unknown key at `key`, a wrong value at `value`. False when refused.

@@ -33,7 +33,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::RECHARGE: case EscParser::SWEEP_CELL: case EscParser::REACH_RADIUS:
     case EscParser::ELMAN: case EscParser::SUPERVISOR: case EscParser::BEHAVIORS: case EscParser::ON:
     case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM: case EscParser::TREE:
-    case EscParser::FUNCTIONS: case EscParser::TERMINALS: case EscParser::EVALUATE: return true;
+    case EscParser::FUNCTIONS: case EscParser::TERMINALS: case EscParser::EVALUATE:
+    case EscParser::CONDITIONS: case EscParser::CONDITION: case EscParser::SWEEP: case EscParser::AS: return true;
     default: return false;
   }
 }
@@ -88,7 +89,11 @@ Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocab
   }
   if (has(EscParser::ARENA) && has(EscParser::EXPERIMENT) && has(EscParser::BEHAVIOR)) {
     e.phrase = "a declaration (`import`, `arena`, `robot`, `behavior`, `fitness`, `controller`, "
-               "`experiment` or `primitives`)";
+               "`experiment`, `primitives` or `study`)";
+    return e;
+  }
+  if (!name && has(EscParser::CONDITIONS) && has(EscParser::SWEEP)) {
+    e.phrase = "a study item (`conditions`, `condition`, `sweep`, `runs` or `seed`) or `}`";
     return e;
   }
   if (!name && has(EscParser::EPOCHS) && has(EscParser::COMPARE)) {
@@ -149,6 +154,7 @@ std::string decl_name_kind(antlr4::TokenStream* ts, const antlr4::Token* prev) {
     case EscParser::CONTROLLER: return "controller";
     case EscParser::EXPERIMENT: return "experiment";
     case EscParser::PRIMITIVES: return "primitives";
+    case EscParser::STUDY: return "study";
     default: return {};
   }
 }
@@ -293,7 +299,7 @@ void SyntaxErrorListener::parser_error(antlr4::Parser* parser, antlr4::Token* of
   const std::size_t ot = offending->getType();
   const bool decl_keyword = ot == EscParser::IMPORT || ot == EscParser::ARENA || ot == EscParser::ROBOT ||
                             ot == EscParser::BEHAVIOR || ot == EscParser::FITNESS || ot == EscParser::CONTROLLER ||
-                            ot == EscParser::EXPERIMENT || ot == EscParser::PRIMITIVES;
+                            ot == EscParser::EXPERIMENT || ot == EscParser::PRIMITIVES || ot == EscParser::STUDY;
   if (decl_keyword && ex.closer && ex.closer_text == "}" && set.contains(static_cast<std::size_t>(EscParser::RBRACE)) &&
       !set.contains(ot)) {
     // A declaration starts inside an unclosed block: the `}` is missing.

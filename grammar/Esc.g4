@@ -21,6 +21,7 @@ decl
   | experimentDecl
   | libraryDecl
   | primitivesDecl
+  | studyDecl
   ;
 
 importDecl : IMPORT STRING ';'? ;
@@ -122,12 +123,33 @@ expItem
   | EVOLVE ident ('(' (esOption (',' esOption)*)? ')')? (FOR NUMBER GENERATIONS)? ';'?   # expEvolve
   | RUNS NUMBER ';'?                                                              # expRuns
   | SEED NUMBER ';'?                                                              # expSeed
-  | COMPARE ident (',' ident)* ';'?                                               # expCompare
+  // `CS8 as CS`: compared under another name, so that a study pairs it with the CS of
+  // other conditions.
+  | COMPARE compared (',' compared)* ';'?                                         # expCompare
   // Each run takes the best genome of the same run of another experiment (which runs
   // first): `evaluate` only evaluates it here; `start` evolves on from it.
   | kw=(START | EVALUATE) FROM EXPERIMENT ident ';'?                              # expStartFrom
   ;
 esOption : ident ('[' lo=quantity ',' hi=quantity ']' | quantity)? ;
+compared : ctl=ident (AS alias=ident)? ;
+
+// ---- studies: conditions compared together ------------------------------------------
+studyDecl : STUDY name=ident '{' studyItem* '}' ;
+studyItem
+  : CONDITIONS ident (',' ident)* ';'?                                           # studyConditions
+  | CONDITION name=ident '=' exp=ident ('{' studySetting* '}')? ';'?              # studyCondition
+  | SWEEP exp=ident '{' studySetting* '}' ';'?                                    # studySweep
+  | RUNS NUMBER ';'?                                                              # studyRuns
+  | SEED NUMBER ';'?                                                              # studySeed
+  ;
+// A `--set` key and its value in script syntax; in a sweep, a list of values `[a, b, ...]`
+// (a range is itself a list of two numbers: `bounds [[-1, 1], [-2, 2]]`).
+studySetting : key=settingKey studyValue ';'? ;
+settingKey : (ROBOT | ARENA | ident) ('.' ident)? ;
+studyValue
+  : quantity | ON | OFF | TRUE | FALSE | ident
+  | '[' (studyValue (',' studyValue)*)? ']'
+  ;
 
 // ---- expressions (earlier alternatives bind tighter) ---------------------------------
 expr
@@ -155,6 +177,7 @@ ident
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | TREE | FUNCTIONS | TERMINALS
+  | CONDITIONS | CONDITION | SWEEP | AS
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -167,6 +190,7 @@ CONTROLLER : 'controller' ;
 EXPERIMENT : 'experiment' ;
 LIBRARY : 'library' ;
 PRIMITIVES : 'primitives' ;
+STUDY : 'study' ;
 IF : 'if' ;
 THEN : 'then' ;
 ELSE : 'else' ;
@@ -225,6 +249,10 @@ EVALUATE : 'evaluate' ;
 TREE : 'tree' ;
 FUNCTIONS : 'functions' ;
 TERMINALS : 'terminals' ;
+CONDITIONS : 'conditions' ;
+CONDITION : 'condition' ;
+SWEEP : 'sweep' ;
+AS : 'as' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;

@@ -122,6 +122,31 @@ CREATE TABLE replays (
   columns       TEXT NOT NULL,
   trace         BLOB NOT NULL
 );
+-- Schema 3 (studies); also what opening an older database for writing adds to it.
+CREATE TABLE studies (
+  id            INTEGER PRIMARY KEY,
+  name          TEXT NOT NULL,
+  seed          TEXT NOT NULL
+);
+CREATE TABLE conditions (
+  experiment_id INTEGER PRIMARY KEY REFERENCES experiments(id),
+  study_id      INTEGER NOT NULL REFERENCES studies(id),
+  idx           INTEGER NOT NULL,
+  name          TEXT NOT NULL,
+  directory     TEXT NOT NULL,
+  sweep         INTEGER,
+  UNIQUE (study_id, name)
+);
+CREATE TABLE condition_settings (
+  experiment_id INTEGER NOT NULL REFERENCES conditions(experiment_id),
+  idx           INTEGER NOT NULL,
+  key           TEXT NOT NULL,
+  value         TEXT NOT NULL,
+  swept         INTEGER NOT NULL,
+  x             REAL,
+  x_unit        TEXT NOT NULL,
+  PRIMARY KEY (experiment_id, idx)
+);
 )sql";
 
 std::string now_utc() {
@@ -264,8 +289,7 @@ std::string campaign_hash(std::string_view experiment, const std::vector<SourceF
 
 ResultsDb::ResultsDb(sql::Database db, fs::path file) : db_(std::move(db)), file_(std::move(file)) {}
 
-ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spec,
-                            const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
+ResultsDb ResultsDb::create_empty(const fs::path& dir, const LaunchInfo& launch) {
   const fs::path file = dir / kDatabaseFile;
   if (fs::exists(file)) throw StoreError(fmt::format("{} already exists; results are never overwritten", file.string()));
   ResultsDb r(sql::Database(file, sql::Database::Mode::Create), file);
@@ -280,7 +304,13 @@ ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spe
   meta.bind(1, "format").bind(2, "esc results").run();
   meta.bind(1, "schema_version").bind(2, std::to_string(kSchemaVersion)).run();
   meta.bind(1, "software_version").bind(2, launch.software_version).run();
+  tx.commit();
+  return r;
+}
 
+std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, const std::vector<SourceFile>& sources,
+                                          const LaunchInfo& launch) {
+  sql::Database& db = db_;
   auto ins = db.prepare(
       "INSERT INTO experiments(name, seed, content_hash, status, created, software_version, script_path, "
       "overrides, arena, robot_radius_m, runs, generations, epochs, steps) "
@@ -299,29 +329,78 @@ ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spe
       .bind(12, spec.epochs)
       .bind(13, spec.steps)
       .run();
-  r.experiment_id_ = db.last_insert_rowid();
+  experiment_id_ = db.last_insert_rowid();
+  controller_ids_.clear();
 
   auto src = db.prepare("INSERT INTO sources(experiment_id, idx, name, text) VALUES (?, ?, ?, ?)");
   for (std::size_t i = 0; i < sources.size(); ++i)
-    src.bind(1, r.experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, sources[i].name.generic_string())
+    src.bind(1, experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, sources[i].name.generic_string())
         .bind(4, sources[i].text).run();
   auto set = db.prepare("INSERT INTO settings(experiment_id, key, value) VALUES (?, ?, ?)");
-  for (const auto& [k, v] : spec.resolved_settings) set.bind(1, r.experiment_id_).bind(2, k).bind(3, v).run();
+  for (const auto& [k, v] : spec.resolved_settings) set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
   auto ctl = db.prepare(
       "INSERT INTO controllers(experiment_id, idx, name, architecture, genome_size, head, actions) "
       "VALUES (?, ?, ?, ?, ?, ?, ?)");
   for (std::size_t i = 0; i < spec.controllers.size(); ++i) {
     const control::ControllerSpec& c = spec.controllers[i];
     const nlohmann::json actions = c.choice_names();
-    ctl.bind(1, r.experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, c.name).bind(4, c.architecture())
+    ctl.bind(1, experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, c.name).bind(4, c.architecture())
         .bind(5, static_cast<std::int64_t>(spec.genome_size_of(c)))
         .bind(6, head_name(c))
         .bind(7, actions.dump())
         .run();
-    r.controller_ids_[c.name] = db.last_insert_rowid();
+    controller_ids_[c.name] = db.last_insert_rowid();
+  }
+  return experiment_id_;
+}
+
+ResultsDb ResultsDb::create(const fs::path& dir, const eval::ExperimentSpec& spec,
+                            const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
+  ResultsDb r = create_empty(dir, launch);
+  sql::Transaction tx(r.db_);
+  (void)r.insert_experiment(spec, sources, launch);
+  tx.commit();
+  return r;
+}
+
+ResultsDb ResultsDb::create_study(const fs::path& dir, const eval::StudySpec& study,
+                                  const std::vector<SourceFile>& sources, const std::vector<LaunchInfo>& launches) {
+  if (launches.size() != study.conditions.size())
+    throw std::invalid_argument("create_study: one launch per condition");
+  ResultsDb r = create_empty(dir, launches.empty() ? LaunchInfo{} : launches.front());
+  sql::Database& db = r.db_;
+  sql::Transaction tx(db);
+  db.prepare("INSERT INTO studies(name, seed) VALUES (?, ?)").bind(1, study.name).bind(2, std::to_string(study.seed)).run();
+  const std::int64_t study_id = db.last_insert_rowid();
+  auto cond = db.prepare(
+      "INSERT INTO conditions(experiment_id, study_id, idx, name, directory, sweep) VALUES (?, ?, ?, ?, ?, ?)");
+  auto set = db.prepare(
+      "INSERT INTO condition_settings(experiment_id, idx, key, value, swept, x, x_unit) VALUES (?, ?, ?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < study.conditions.size(); ++i) {
+    const eval::ConditionSpec& c = study.conditions[i];
+    const std::int64_t id = r.insert_experiment(c.experiment, sources, launches[i]);
+    cond.bind(1, id).bind(2, study_id).bind(3, static_cast<std::int64_t>(i)).bind(4, c.name).bind(5, c.directory);
+    if (c.sweep) cond.bind(6, *c.sweep);
+    cond.run();
+    for (std::size_t k = 0; k < c.settings.size(); ++k) {
+      const eval::ConditionSetting& st = c.settings[k];
+      set.bind(1, id).bind(2, static_cast<std::int64_t>(k)).bind(3, st.key).bind(4, st.value).bind(5, st.swept ? 1 : 0)
+          .bind(7, st.x_unit);
+      if (st.x) set.bind(6, *st.x);
+      set.run();
+    }
   }
   tx.commit();
   return r;
+}
+
+void ResultsDb::select_experiment(std::int64_t id) {
+  experiment_id_ = id;
+  controller_ids_.clear();
+  auto ctl = db_.prepare("SELECT id, name FROM controllers WHERE experiment_id = ?");
+  ctl.bind(1, id);
+  while (ctl.step()) controller_ids_[ctl.text(1)] = ctl.int64(0);
+  if (controller_ids_.empty()) throw StoreError(fmt::format("{} has no experiment {}", file_.string(), id));
 }
 
 ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
@@ -361,12 +440,18 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
 }
 
 void ResultsDb::upgrade() {
-  // 1 -> 2: what GP needs (runs of networks are untouched).
+  // Each step adds what its version needs; what is stored is untouched.
   sql::Transaction tx(db_);
   const std::string schema = kSchema;
-  db_.exec("ALTER TABLE runs ADD COLUMN best_behavior TEXT;");
-  db_.exec(schema.substr(schema.find("CREATE TABLE tree_state"),
-                         schema.find("CREATE TABLE behavior_usage") - schema.find("CREATE TABLE tree_state")));
+  const auto tables = [&](const char* first, const char* end) {
+    const std::size_t a = schema.find(first);
+    db_.exec(schema.substr(a, end == nullptr ? std::string::npos : schema.find(end) - a));
+  };
+  if (schema_version_ < 2) {   // GP
+    db_.exec("ALTER TABLE runs ADD COLUMN best_behavior TEXT;");
+    tables("CREATE TABLE tree_state", "CREATE TABLE behavior_usage");
+  }
+  if (schema_version_ < 3) tables("CREATE TABLE studies", nullptr);   // studies
   db_.exec(fmt::format("PRAGMA user_version={};", kSchemaVersion));
   tx.commit();
   schema_version_ = kSchemaVersion;
@@ -485,6 +570,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
       auto set = db_.prepare("SELECT key, value FROM settings WHERE experiment_id = ?");
       set.bind(1, e.id);
       while (set.step()) e.settings[set.text(0)] = set.text(1);
+      if (schema_version_ >= 3) load_condition(e);
       auto ctl = db_.prepare(
           "SELECT id, name, architecture, genome_size, head, actions FROM controllers WHERE experiment_id = ? "
           "ORDER BY idx");
@@ -575,8 +661,34 @@ std::variant<eval::EsState, eval::GpState> ResultsDb::load_state(const StoredCon
   throw StoreError(damaged + " is unfinished but has no state to resume from");
 }
 
+void ResultsDb::load_condition(StoredExperiment& e) {
+  auto c = db_.prepare(
+      "SELECT s.name, s.seed, c.idx, c.name, c.directory, c.sweep FROM conditions c JOIN studies s ON s.id = c.study_id "
+      "WHERE c.experiment_id = ?");
+  c.bind(1, e.id);
+  if (!c.step()) return;
+  StoredCondition sc;
+  sc.study = c.text(0);
+  sc.study_seed = parse_u64(c.text(1), "study seed");
+  sc.index = c.integer(2);
+  sc.name = c.text(3);
+  sc.directory = c.text(4);
+  if (!c.is_null(5)) sc.sweep = c.integer(5);
+  auto set = db_.prepare(
+      "SELECT key, value, swept, x, x_unit FROM condition_settings WHERE experiment_id = ? ORDER BY idx");
+  set.bind(1, e.id);
+  while (set.step()) {
+    eval::ConditionSetting st{set.text(0), set.text(1), set.integer(2) != 0, std::nullopt, set.text(4)};
+    if (!set.is_null(3)) st.x = set.real(3);
+    sc.settings.push_back(std::move(st));
+  }
+  e.condition = std::move(sc);
+}
+
 StoredExperiment ResultsDb::load_single() {
   std::vector<StoredExperiment> all = load();
+  if (!all.empty() && all.front().condition)
+    throw StoreError(fmt::format("{} holds study `{}`, not one experiment", file_.string(), all.front().condition->study));
   if (all.size() != 1)
     throw StoreError(fmt::format("{} holds {} experiments; a run directory holds one", file_.string(), all.size()));
   return std::move(all.front());

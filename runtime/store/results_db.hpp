@@ -17,14 +17,17 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/eval/campaign.hpp"
+#include "runtime/eval/study.hpp"
 #include "runtime/store/sqlite.hpp"
 
 namespace esc::store {
 
 inline constexpr const char* kDatabaseFile = "esc.db";
 // 2: GP (table tree_state; runs.best_tree and runs.best_behavior hold a tree controller's
-// best tree as script code). A schema-1 database opened for writing is upgraded to 2.
-inline constexpr int kSchemaVersion = 2;
+// best tree as script code). 3: studies (tables studies, conditions, condition_settings: a
+// study's database holds one experiment row per condition). An older database opened for
+// writing is upgraded.
+inline constexpr int kSchemaVersion = 3;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -72,6 +75,18 @@ struct StoredController {
   std::optional<StoredReplay> replay;     // the best run's best evaluation, if traced
 };
 
+// The condition of a study an experiment row is (a study's database holds one per
+// condition).
+struct StoredCondition {
+  std::string study;
+  std::uint64_t study_seed = 0;
+  int index = 0;                          // in the study's order
+  std::string name;
+  std::string directory;                  // its files, under the run directory
+  std::optional<int> sweep;
+  std::vector<eval::ConditionSetting> settings;
+};
+
 struct StoredExperiment {
   std::int64_t id = 0;
   std::string name;
@@ -91,6 +106,7 @@ struct StoredExperiment {
   int steps = 0;
   std::vector<SourceFile> sources;
   std::vector<StoredController> controllers;
+  std::optional<StoredCondition> condition;   // a study's condition (schema 3)
 
   [[nodiscard]] bool finished() const noexcept { return status == "finished"; }
   // The finished runs as a campaign result (what summary.json shows).
@@ -109,9 +125,17 @@ class ResultsDb {
   // transaction. Throws StoreError if the database exists.
   static ResultsDb create(const std::filesystem::path& dir, const eval::ExperimentSpec& spec,
                           const std::vector<SourceFile>& sources, const LaunchInfo& launch);
+  // Creates DIR/esc.db for a study: the study, and for each condition its experiment (as
+  // `create` stores one, launched as `launches[i]` says) and what makes it a condition
+  // (name, directory, settings), in one transaction. Writes to the first condition.
+  static ResultsDb create_study(const std::filesystem::path& dir, const eval::StudySpec& study,
+                                const std::vector<SourceFile>& sources, const std::vector<LaunchInfo>& launches);
   // Opens an existing database and checks it is an esc database this version can read,
   // undamaged. Throws StoreError with a clear message otherwise.
   static ResultsDb open(const std::filesystem::path& dir, bool read_only = false);
+
+  // Writes to experiment `id` (a study's condition) from now on.
+  void select_experiment(std::int64_t id);
 
   // One generation of one run, in one transaction: its statistics, the run's best so far
   // and the state to continue from.
@@ -125,13 +149,21 @@ class ResultsDb {
 
   // Everything stored, experiment by experiment. Throws StoreError on inconsistent content.
   [[nodiscard]] std::vector<StoredExperiment> load();
-  // The experiment this database was created for (the only one `esc run` writes).
+  // The experiment this database was created for by `esc run EXPERIMENT` (not a study).
   [[nodiscard]] StoredExperiment load_single();
 
   [[nodiscard]] std::int64_t experiment_id() const noexcept { return experiment_id_; }
 
  private:
   ResultsDb(sql::Database db, std::filesystem::path file);
+  // The schema and its facts, no experiment yet.
+  static ResultsDb create_empty(const std::filesystem::path& dir, const LaunchInfo& launch);
+  // The experiment, its sources, settings and controllers (inside the caller's transaction);
+  // selects it and returns its id.
+  std::int64_t insert_experiment(const eval::ExperimentSpec& spec, const std::vector<SourceFile>& sources,
+                                 const LaunchInfo& launch);
+  // The study condition `e` is, if any.
+  void load_condition(StoredExperiment& e);
   std::int64_t controller_id(const std::string& name);
   // What run `run` of `c` continues from: the ES parents or the GP population, whichever
   // table holds it. Throws StoreError when neither does or the stored state is damaged.

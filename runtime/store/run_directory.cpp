@@ -23,6 +23,14 @@ std::string csv_line(const eval::GenerationStats& g) {
 
 std::pair<fs::path, ResultsDb> create_new(fs::path dir, const eval::ExperimentSpec& spec,
                                           const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
+  create_output_directory(dir);
+  ResultsDb db = ResultsDb::create(dir, spec, sources, launch);
+  return {std::move(dir), std::move(db)};
+}
+
+}  // namespace
+
+void create_output_directory(const fs::path& dir) {
   std::error_code ec;
   // Empty, or holding only `deps/` (the runs of the experiments whose evolved controllers
   // this one uses, written first by `esc run`).
@@ -38,11 +46,26 @@ std::pair<fs::path, ResultsDb> create_new(fs::path dir, const eval::ExperimentSp
         "choose another --out or remove it", dir.string()));
   fs::create_directories(dir / "sources", ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir.string(), ec.message()));
-  ResultsDb db = ResultsDb::create(dir, spec, sources, launch);
-  return {std::move(dir), std::move(db)};
 }
 
-}  // namespace
+nlohmann::ordered_json write_sources(const fs::path& dir, const std::vector<SourceFile>& sources) {
+  nlohmann::ordered_json files = nlohmann::ordered_json::array();
+  for (const SourceFile& s : sources) {
+    const std::string flat = fmt::format("{:02}-{}", files.size(), s.name.filename().string());
+    write_atomically(dir / "sources" / flat, s.text);
+    files.push_back({{"name", s.name.generic_string()}, {"stored_as", "sources/" + flat}});
+  }
+  return files;
+}
+
+nlohmann::ordered_json settings_json(const eval::ExperimentSpec& spec, const std::vector<SourceFile>& sources,
+                                     const nlohmann::ordered_json& files) {
+  return {{"experiment", spec.name},
+          {"seed", spec.seed},
+          {"content_hash", campaign_hash(spec.name, sources)},
+          {"sources", files},
+          {"settings", nlohmann::ordered_json(spec.resolved_settings)}};
+}
 
 std::uint64_t content_hash(std::string_view text, std::uint64_t h) noexcept {
   for (unsigned char ch : text) {
@@ -90,27 +113,16 @@ RunDirectory::RunDirectory(std::pair<fs::path, ResultsDb> created)
 RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const std::vector<SourceFile>& sources,
                            const LaunchInfo& launch)
     : RunDirectory(create_new(std::move(dir), spec, sources, launch)) {
-  nlohmann::ordered_json files = nlohmann::ordered_json::array();
-  for (const SourceFile& s : sources) {
-    const std::string flat = fmt::format("{:02}-{}", files.size(), s.name.filename().string());
-    write_atomically(dir_ / "sources" / flat, s.text);
-    files.push_back({{"name", s.name.generic_string()}, {"stored_as", "sources/" + flat}});
-  }
-  nlohmann::ordered_json settings(spec.resolved_settings);
-  nlohmann::ordered_json doc = {{"experiment", spec.name},
-                                {"seed", spec.seed},
-                                {"content_hash", campaign_hash(spec.name, sources)},
-                                {"sources", files},
-                                {"settings", settings}};
-  write_atomically(dir_ / "settings.json", doc.dump(2) + "\n");
+  write_atomically(dir_ / "settings.json", settings_json(spec, sources, write_sources(dir_, sources)).dump(2) + "\n");
   partial_.experiment = spec.name;
   partial_.seed = spec.seed;
   for (const control::ControllerSpec& c : spec.controllers) controllers_.emplace_back(c.name, spec.genome_size_of(c));
   write_summary();
 }
 
-RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored) {
+RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored, SummarySink summary) {
   RunDirectory rd(std::move(dir), std::move(db));
+  rd.summary_ = std::move(summary);
   rd.partial_ = stored.result();
   for (const StoredController& c : stored.controllers) rd.controllers_.emplace_back(c.name, c.genome_size);
   for (const StoredController& c : stored.controllers) {
@@ -206,7 +218,8 @@ void RunDirectory::finish(const eval::CampaignResult& result) {
 }
 
 void RunDirectory::write_summary() {
-  write_atomically(dir_ / "summary.json", summary_json(partial_).dump(2) + "\n");
+  if (summary_) summary_(partial_);
+  else write_atomically(dir_ / "summary.json", summary_json(partial_).dump(2) + "\n");
 }
 
 }  // namespace esc::store

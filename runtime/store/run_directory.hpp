@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,14 +26,21 @@ namespace esc::store {
 
 class RunDirectory final : public eval::CampaignListener {
  public:
+  // Receives the runs finished so far after each one, instead of DIR/summary.json (a
+  // study's condition: the study writes one summary of all its conditions).
+  using SummarySink = std::function<void(const eval::CampaignResult&)>;
+
   // Creates `dir` and its database. Throws std::runtime_error if it exists and holds
   // anything but a `deps/` directory (results are never overwritten) or cannot be created.
   RunDirectory(std::filesystem::path dir, const eval::ExperimentSpec& spec,
                const std::vector<SourceFile>& sources, const LaunchInfo& launch = {});
 
   // Continues a directory whose database was opened and loaded (`stored`): rewrites the
-  // CSV, genome and summary files from the database, which is what survived a crash.
-  static RunDirectory resume(std::filesystem::path dir, ResultsDb db, const StoredExperiment& stored);
+  // CSV, genome and summary files from the database, which is what survived a crash. A
+  // study's condition is opened so too (its results under `dir`, its database the study's,
+  // with its experiment selected), with `summary` receiving what summary.json would hold.
+  static RunDirectory resume(std::filesystem::path dir, ResultsDb db, const StoredExperiment& stored,
+                             SummarySink summary = {});
 
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
@@ -61,7 +69,22 @@ class RunDirectory final : public eval::CampaignListener {
   std::vector<std::pair<std::string, std::size_t>> controllers_;
   std::ofstream csv_;                 // the run being written
   std::string csv_key_;
+  SummarySink summary_;               // empty: DIR/summary.json
 };
+
+// Makes `dir` with its `sources/` for a new run: it must not exist, or hold only `deps/`
+// (results are never overwritten). Throws std::runtime_error otherwise.
+void create_output_directory(const std::filesystem::path& dir);
+
+// Writes every source file to DIR/sources/NN-<file>; returns the list settings.json shows.
+[[nodiscard]] nlohmann::ordered_json write_sources(const std::filesystem::path& dir,
+                                                   const std::vector<SourceFile>& sources);
+
+// settings.json of an experiment: its name, master seed, content hash, sources (`files`, as
+// write_sources listed them) and resolved settings.
+[[nodiscard]] nlohmann::ordered_json settings_json(const eval::ExperimentSpec& spec,
+                                                   const std::vector<SourceFile>& sources,
+                                                   const nlohmann::ordered_json& files);
 
 // The text of a tree controller's run-NN.best.esc: comments saying where the tree comes
 // from, then the tree as `behavior CONTROLLER_runNN() { wheels(...) }` to paste (a Wheels

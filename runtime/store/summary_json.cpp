@@ -32,4 +32,18 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
   return {{"experiment", result.experiment}, {"seed", result.seed}, {"controllers", controllers}};
 }
 
+nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_t seed,
+                                          const std::vector<ConditionSummary>& conditions) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const ConditionSummary& c : conditions) {
+    nlohmann::ordered_json settings = nlohmann::ordered_json::object();
+    for (const eval::ConditionSetting& s : c.settings) settings[s.key] = s.value;
+    list.push_back({{"name", c.name},
+                    {"experiment", c.result.experiment},
+                    {"settings", settings},
+                    {"controllers", summary_json(c.result)["controllers"]}});
+  }
+  return {{"study", study}, {"seed", seed}, {"conditions", list}};
+}
+
 }  // namespace esc::store

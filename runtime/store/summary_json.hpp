@@ -6,12 +6,29 @@
 //   "best_tree": script code (tree controllers only)}]}}}
 // Runs are numbered from 1 (as in file names, the console and the report); the per-generation
 // arrays start at generation 0, the initial population.
+// A study's: {"study": name, "seed": master seed, "conditions": [{"name": ..., "experiment":
+//   ..., "settings": {KEY: VALUE as written}, "controllers": {as above}}]}.
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "runtime/eval/campaign.hpp"
+#include "runtime/eval/study.hpp"
 
 namespace esc::store {
 
 [[nodiscard]] nlohmann::ordered_json summary_json(const eval::CampaignResult& result);
+
+// One condition of a study's summary: its results so far (`result.experiment` is its
+// experiment's name).
+struct ConditionSummary {
+  std::string name;
+  std::vector<eval::ConditionSetting> settings;
+  eval::CampaignResult result;
+};
+
+[[nodiscard]] nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_t seed,
+                                                        const std::vector<ConditionSummary>& conditions);
 
 }  // namespace esc::store

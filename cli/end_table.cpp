@@ -1,0 +1,218 @@
+#include "cli/end_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "runtime/report/comparisons.hpp"
+#include "runtime/report/statistics.hpp"
+
+namespace esc::cli {
+
+namespace {
+
+// Lines are wrapped at this width (sensitivity.esc's supervisors choose among 24 behaviors;
+// a sweep may have many conditions).
+constexpr std::size_t kWidth = 100;
+
+std::string number_or_na(double x, int decimals) {
+  return std::isnan(x) ? "n/a" : fmt::format("{:.{}f}", x, decimals);
+}
+
+std::string p_text(double p) {
+  if (std::isnan(p)) return "n/a";
+  return p < 1e-4 ? fmt::format("{:.1e}", p) : fmt::format("{:.4f}", p);
+}
+
+std::vector<double> best_fitness(const eval::ControllerResult& c) {
+  std::vector<double> best;
+  for (const auto& r : c.runs) best.push_back(r.best_fitness);
+  return best;
+}
+
+// Share of control steps each action or behavior acted, over the best evaluations of all
+// runs (symbolic heads and supervisors); each line starts with `label(controller)`.
+template <class Label>
+void print_usage(const eval::CampaignResult& result, bool& header, const Label& label) {
+  for (const auto& c : result.controllers) {
+    std::vector<std::int64_t> steps(c.choices.size(), 0);
+    for (const auto& r : c.runs)
+      for (std::size_t i = 0; i < r.action_usage.size() && i < steps.size(); ++i) steps[i] += r.action_usage[i];
+    std::int64_t total = 0;
+    for (std::int64_t n : steps) total += n;
+    if (total == 0) continue;
+    if (!header) fmt::print("\nbehavior usage (share of steps in each run's best evaluation)\n");
+    header = true;
+    std::string line = fmt::format("{:<12} ", label(c));
+    const std::size_t indent = line.size();
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const std::string entry = fmt::format("{} {:.0f}%{}", c.choices[i],
+                                            100.0 * static_cast<double>(steps[i]) / static_cast<double>(total),
+                                            i + 1 < steps.size() ? "," : "");
+      if (line.size() > indent && line.size() + 1 + entry.size() > kWidth) {
+        fmt::print("{}\n", line);
+        line = std::string(indent, ' ');
+      }
+      line += (line.size() > indent ? " " : "") + entry;
+    }
+    fmt::print("{}\n", line);
+  }
+}
+
+// The best tree of each run of the tree controllers, as script code.
+template <class Label>
+void print_trees(const eval::CampaignResult& result, const Label& label) {
+  for (const auto& c : result.controllers)
+    for (const auto& r : c.runs)
+      if (!r.best_tree.empty())
+        fmt::print("{:<12} run {} best tree (fitness {:.1f}): {}\n", label(c), r.run + 1, r.best_fitness, r.best_tree);
+}
+
+bool has_trees(const eval::ExperimentSpec& spec) {
+  return std::any_of(spec.controllers.begin(), spec.controllers.end(), [](const auto& c) { return c.is_tree(); });
+}
+
+// The comparisons of `samples` over `pairs` (one Holm family), each row labelled "A vs B"
+// by `label`, then `family`: what the family holds.
+template <class Label>
+void print_comparisons(const std::vector<std::vector<double>>& samples,
+                       const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const Label& label,
+                       const std::string& family) {
+  if (pairs.empty()) return;
+  const std::vector<report::Comparison> rows = report::compare(samples, pairs);
+  std::size_t width = 26;
+  for (const report::Comparison& c : rows) width = std::max(width, label(c.a, c.b).size());
+  fmt::print("\n{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}\n", "pairwise (two-sided)", width,
+             "Welch t", "df", "p", "p Holm", "M-W U", "p", "p Holm", "A12");
+  for (const report::Comparison& c : rows)
+    fmt::print("{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}\n", label(c.a, c.b), width,
+               number_or_na(c.welch.statistic, 3), number_or_na(c.welch.df, 1), p_text(c.welch.p_value),
+               p_text(c.welch_p_holm), number_or_na(c.mann_whitney.statistic, 1), p_text(c.mann_whitney.p_value),
+               p_text(c.mann_whitney_p_holm), number_or_na(c.a12, 2));
+  fmt::print("Holm: p adjusted over the {} comparison{} shown{}, for each test. Mann-Whitney p exact when a sample has "
+             "at most 8 runs and no ties. A12: chance the first beats the second.\n",
+             rows.size(), rows.size() == 1 ? "" : "s", family);
+}
+
+}  // namespace
+
+std::string generations_text(const eval::ExperimentSpec& spec) {
+  int es = -1, gp = -1;
+  for (const auto& c : spec.controllers) (c.is_tree() ? gp : es) = spec.generations_for(c);
+  if (es >= 0 && gp >= 0 && es != gp) return fmt::format("{} (ES) / {} (GP) generations", es, gp);
+  return fmt::format("{} generations", spec.max_generations());
+}
+
+void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
+  fmt::print("\n{}: {} run{} x {}, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
+             spec.runs == 1 ? "" : "s", generations_text(spec), spec.epochs, spec.steps, spec.seed);
+  fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
+             "best fitness mean ± sd", "median", "best run");
+  std::vector<std::vector<double>> finals;
+  for (const auto& c : result.controllers) {
+    std::vector<double> best = best_fitness(c);
+    const report::Summary s = report::summarise(best);
+    fmt::print("{:<12} {:<14} {:>6}  {:>12.1f} ± {:<7.1f}  {:>10.1f}  {:>10.1f}\n", c.name, c.architecture,
+               c.genome_size, s.mean, s.sd, s.median, s.max);
+    finals.push_back(std::move(best));
+  }
+  const auto name = [](const eval::ControllerResult& c) { return c.name; };
+  bool header = false;
+  print_usage(result, header, name);
+  if (has_trees(spec)) {
+    fmt::print("\n");
+    print_trees(result, name);
+  }
+  const auto& cs = result.controllers;
+  print_comparisons(finals, report::all_pairs(finals.size()),
+                    [&](std::size_t a, std::size_t b) { return fmt::format("{} vs {}", cs[a].name, cs[b].name); }, "");
+}
+
+void print_study_table(const std::string& study, const std::vector<ConditionResult>& conditions) {
+  // Controllers in the order they first appear; a cell per (condition, controller).
+  std::vector<std::string> controllers;
+  for (const ConditionResult& c : conditions)
+    for (const auto& r : c.result.controllers)
+      if (std::find(controllers.begin(), controllers.end(), r.name) == controllers.end()) controllers.push_back(r.name);
+  std::vector<std::vector<double>> samples;
+  std::vector<std::pair<std::size_t, std::size_t>> cell_of;   // sample -> (condition, controller)
+  const auto sample = [&](std::size_t condition, std::size_t controller) -> const std::vector<double>* {
+    for (std::size_t s = 0; s < cell_of.size(); ++s)
+      if (cell_of[s] == std::pair{condition, controller}) return &samples[s];
+    return nullptr;
+  };
+  for (std::size_t i = 0; i < conditions.size(); ++i)
+    for (const auto& r : conditions[i].result.controllers) {
+      samples.push_back(best_fitness(r));
+      cell_of.emplace_back(i, static_cast<std::size_t>(
+                                  std::find(controllers.begin(), controllers.end(), r.name) - controllers.begin()));
+    }
+
+  const eval::ExperimentSpec& first = *conditions.front().spec;
+  fmt::print("\nstudy {}: {} condition{}, seed {}; best fitness of each run, mean ± sd (median)\n", study,
+             conditions.size(), conditions.size() == 1 ? "" : "s", first.seed);
+  std::size_t name_width = 12;
+  for (const ConditionResult& c : conditions) name_width = std::max(name_width, c.name.size());
+  constexpr std::size_t kCell = 24;
+  const std::size_t per_block = std::max<std::size_t>(1, (kWidth - name_width) / (kCell + 2));
+  for (std::size_t from = 0; from < controllers.size(); from += per_block) {
+    const std::size_t to = std::min(controllers.size(), from + per_block);
+    std::string head = fmt::format("{:<{}}", "condition", name_width);
+    for (std::size_t j = from; j < to; ++j) head += fmt::format("  {:>{}}", controllers[j], kCell);
+    fmt::print("{}{}\n", from == 0 ? "" : "\n", head);
+    for (std::size_t i = 0; i < conditions.size(); ++i) {
+      std::string line = fmt::format("{:<{}}", conditions[i].name, name_width);
+      for (std::size_t j = from; j < to; ++j) {
+        const std::vector<double>* s = sample(i, j);
+        const report::Summary m = s != nullptr ? report::summarise(*s) : report::Summary{};
+        line += fmt::format("  {:>{}}", s == nullptr || s->empty() ? "-"
+                                            : fmt::format("{:.1f} ± {:.1f} ({:.1f})", m.mean, m.sd, m.median),
+                            kCell);
+      }
+      fmt::print("{}\n", line);
+    }
+  }
+  for (const ConditionResult& c : conditions)
+    if (c.spec->runs != first.runs || c.spec->max_generations() != first.max_generations() ||
+        c.spec->epochs != first.epochs || c.spec->steps != first.steps) {
+      fmt::print("(conditions differ in runs, generations, epochs or steps: see each one's settings.json)\n");
+      break;
+    }
+  fmt::print("{} run{} x {}, {} epochs x {} steps{}\n", first.runs, first.runs == 1 ? "" : "s",
+             generations_text(first), first.epochs, first.steps, conditions.size() > 1 ? " (the first condition)" : "");
+
+  bool header = false;
+  for (const ConditionResult& c : conditions)
+    print_usage(c.result, header, [&](const eval::ControllerResult& r) { return fmt::format("{} {}", r.name, c.name); });
+  bool trees = false;
+  for (const ConditionResult& c : conditions) {
+    if (!has_trees(*c.spec)) continue;
+    if (!trees) fmt::print("\n");
+    trees = true;
+    print_trees(c.result, [&](const eval::ControllerResult& r) { return fmt::format("{} {}", r.name, c.name); });
+  }
+
+  // One family: within each condition every pair of controllers, then for each controller
+  // every pair of conditions.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < cell_of.size(); ++a)
+    for (std::size_t b = a + 1; b < cell_of.size(); ++b)
+      if (cell_of[a].first == cell_of[b].first) pairs.emplace_back(a, b);
+  for (std::size_t j = 0; j < controllers.size(); ++j)
+    for (std::size_t a = 0; a < cell_of.size(); ++a)
+      for (std::size_t b = a + 1; b < cell_of.size(); ++b)
+        if (cell_of[a].second == j && cell_of[b].second == j) pairs.emplace_back(a, b);
+  print_comparisons(
+      samples, pairs,
+      [&](std::size_t a, std::size_t b) {
+        const auto [ca, ka] = cell_of[a];
+        const auto [cb, kb] = cell_of[b];
+        return ca == cb ? fmt::format("{}: {} vs {}", conditions[ca].name, controllers[ka], controllers[kb])
+                        : fmt::format("{}: {} vs {}", controllers[ka], conditions[ca].name, conditions[cb].name);
+      },
+      " (within each condition every pair of controllers, and for each controller every pair of conditions)");
+}
+
+}  // namespace esc::cli

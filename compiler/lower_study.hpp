@@ -1,0 +1,49 @@
+#pragma once
+// Lowers `study` declarations to eval::StudySpec: the conditions (whole experiments,
+// experiments with settings changed, the points of a sweep: the grid of several settings'
+// listed values), the study's `runs` and `seed`, every condition's settings read and
+// checked by the `--set` tables (setting_keys.hpp) at the values written, and the names
+// and directories of the conditions (unique, usable as file names).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/ast.hpp"
+#include "compiler/lower_experiment.hpp"
+#include "compiler/resolver.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/eval/study.hpp"
+
+namespace esc::compiler {
+
+class StudyLowering {
+ public:
+  StudyLowering(Sink& sink, Resolver& names, ExperimentLowering& experiments)
+      : sink_(sink), names_(names), experiments_(experiments) {}
+
+  // Nullopt when the study is wrong (reported).
+  [[nodiscard]] std::optional<eval::StudySpec> lower(const ast::StudyDecl& d);
+
+ private:
+  // What every condition starts from: the study's `runs` (when given) and `seed`.
+  struct Common {
+    std::optional<int> runs;
+    std::uint64_t seed = 1;
+  };
+  // The experiment `ref` names, lowered, with the study's runs and seed; null when wrong.
+  std::optional<eval::ExperimentSpec> base(const ast::Name& ref, const Common& common);
+  // `condition NAME = EXP { KEY VALUE ... }`.
+  std::optional<eval::ConditionSpec> condition(const ast::StudyItem& item, const Common& common);
+  // `sweep EXP { KEY [V1, V2, ...] ... }`: one condition per point of the grid.
+  std::vector<eval::ConditionSpec> sweep(const ast::StudyItem& item, const Common& common, int index);
+  // Sets `setting`'s key to `value` in `spec` (a study may not set `seed`). False when refused.
+  bool apply(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value);
+  // Reports a key given twice in one condition or sweep.
+  bool unique_keys(const std::vector<ast::StudySetting>& settings);
+
+  Sink& sink_;
+  Resolver& names_;
+  ExperimentLowering& experiments_;
+};
+
+}  // namespace esc::compiler

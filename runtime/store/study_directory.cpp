@@ -1,0 +1,91 @@
+#include "runtime/store/study_directory.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace esc::store {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::ordered_json settings_object(const std::vector<eval::ConditionSetting>& settings) {
+  nlohmann::ordered_json o = nlohmann::ordered_json::object();
+  for (const eval::ConditionSetting& s : settings) o[s.key] = s.value;
+  return o;
+}
+
+// The database just created, loaded.
+std::vector<StoredExperiment> created(const fs::path& dir, const eval::StudySpec& study,
+                                      const std::vector<SourceFile>& sources, const std::vector<LaunchInfo>& launches) {
+  create_output_directory(dir);
+  (void)ResultsDb::create_study(dir, study, sources, launches);
+  return study_conditions(ResultsDb::open(dir).load());
+}
+
+}  // namespace
+
+std::vector<StoredExperiment> study_conditions(std::vector<StoredExperiment> all) {
+  if (all.empty() || !std::all_of(all.begin(), all.end(), [](const StoredExperiment& e) { return e.condition.has_value(); }))
+    throw StoreError("the database does not hold a study");
+  std::stable_sort(all.begin(), all.end(),
+                   [](const StoredExperiment& a, const StoredExperiment& b) { return a.condition->index < b.condition->index; });
+  return all;
+}
+
+StudyDirectory::StudyDirectory(fs::path dir, const eval::StudySpec& study, const std::vector<SourceFile>& sources,
+                               const std::vector<LaunchInfo>& launches)
+    : StudyDirectory(dir, created(dir, study, sources, launches)) {
+  const nlohmann::ordered_json files = write_sources(dir_, sources);
+  nlohmann::ordered_json conditions = nlohmann::ordered_json::array();
+  for (const eval::ConditionSpec& c : study.conditions) {
+    // The condition's own settings.json, with the study's sources one level up.
+    nlohmann::ordered_json up = files;
+    for (auto& f : up) f["stored_as"] = "../" + f["stored_as"].get<std::string>();
+    nlohmann::ordered_json doc = settings_json(c.experiment, sources, up);
+    doc["study"] = study.name;
+    doc["condition"] = c.name;
+    doc["condition_settings"] = settings_object(c.settings);
+    fs::create_directories(dir_ / c.directory);
+    write_atomically(dir_ / c.directory / "settings.json", doc.dump(2) + "\n");
+    conditions.push_back({{"name", c.name},
+                          {"experiment", c.experiment.name},
+                          {"directory", c.directory},
+                          {"settings", settings_object(c.settings)}});
+  }
+  const nlohmann::ordered_json doc = {
+      {"study", study.name}, {"seed", study.seed}, {"sources", files}, {"conditions", conditions}};
+  write_atomically(dir_ / "settings.json", doc.dump(2) + "\n");
+}
+
+StudyDirectory::StudyDirectory(fs::path dir, std::vector<StoredExperiment> stored)
+    : dir_(std::move(dir)), stored_(study_conditions(std::move(stored))) {
+  name_ = stored_.front().condition->study;
+  seed_ = stored_.front().condition->study_seed;
+  for (const StoredExperiment& e : stored_) {
+    eval::CampaignResult partial = e.result();
+    partial.experiment = e.name;
+    partial.seed = e.seed;
+    summaries_.push_back({e.condition->name, e.condition->settings, std::move(partial)});
+  }
+  write_summary();
+}
+
+RunDirectory StudyDirectory::open_condition(std::size_t i) {
+  const StoredExperiment& e = stored_.at(i);
+  ResultsDb db = ResultsDb::open(dir_);
+  db.select_experiment(e.id);
+  return RunDirectory::resume(dir_ / e.condition->directory, std::move(db), e,
+                              [this, i](const eval::CampaignResult& partial) {
+                                summaries_.at(i).result = partial;
+                                write_summary();
+                              });
+}
+
+void StudyDirectory::write_summary() const {
+  write_atomically(dir_ / "summary.json", study_summary_json(name_, seed_, summaries_).dump(2) + "\n");
+}
+
+}  // namespace esc::store
