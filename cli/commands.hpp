@@ -18,13 +18,13 @@ int check_command(const std::vector<std::filesystem::path>& files);
 struct RunOptions {
   std::filesystem::path file;                // with --resume: optional, else the stored script path
   std::filesystem::path resume;              // non-empty: continue this run directory
-  std::string experiment;                    // empty: the first one in the file
+  std::string experiment;                    // an experiment or a study; empty: the first declared
   std::optional<int> runs;
   std::optional<int> generations;
   std::optional<std::uint64_t> seed;
   int threads = 0;                           // 0: all cores
   int runs_at_once = 0;                      // 0: as many as keep every worker busy
-  std::filesystem::path out;                 // empty: runs/<experiment>-<timestamp>
+  std::filesystem::path out;                 // empty: runs/<experiment or study>-<timestamp>
   std::vector<std::string> settings;         // KEY=VALUE
   std::filesystem::path cache;               // empty: <out>/deps (dependency experiments' runs)
 };
@@ -32,7 +32,7 @@ struct RunOptions {
 int run_command(const RunOptions& options);
 
 struct ExportOptions {
-  std::filesystem::path dir;
+  std::vector<std::filesystem::path> dirs;   // run directories, experiments or studies
   std::string format;                        // "csv" or "json"
   std::filesystem::path out;                 // empty: standard output
 };
@@ -40,8 +40,8 @@ struct ExportOptions {
 int export_command(const ExportOptions& options);
 
 struct ReportOptions {
-  std::filesystem::path dir;
-  std::filesystem::path out;                 // empty: DIR/report.html
+  std::vector<std::filesystem::path> dirs;   // run directories, experiments or studies: one report
+  std::filesystem::path out;                 // empty: DIR/report.html (one directory only)
 };
 
 int report_command(const ReportOptions& options);

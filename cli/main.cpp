@@ -37,10 +37,11 @@ int main(int argc, char** argv) {
   check->add_option("FILE", check_files, "script files")->required();
 
   RunOptions run;
-  auto* run_cmd = app.add_subcommand("run", "evolve the controllers of an experiment and compare them");
+  auto* run_cmd = app.add_subcommand("run", "evolve the controllers of an experiment or a study and compare them");
   run_cmd->add_option("FILE", run.file, "script file (with --resume: default the stored script path)");
   run_cmd->add_option("--resume", run.resume, "continue the interrupted run in this directory");
-  run_cmd->add_option("--experiment", run.experiment, "experiment to run (default: the first in the file)");
+  run_cmd->add_option("--experiment", run.experiment,
+                      "experiment or study to run (default: the first declared in the file)");
   run_cmd->add_option("--runs", run.runs, "independent runs per controller")->check(kAtLeastOne);
   run_cmd->add_option("--generations", run.generations, "generations per run")->check(kAtLeastOne);
   run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)");
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
                       "runs advancing together, their evaluations pooled (default: enough to keep every worker "
                       "busy; results never depend on it)")
       ->check(kAtLeastOne);
-  run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment>-<time>)");
+  run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment or study>-<time>)");
   run_cmd->add_option("--cache", run.cache,
                       "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");
   // One KEY=VALUE per --set, so that `--set epochs=2 FILE` leaves FILE to the command.
@@ -58,16 +59,19 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
 
   ExportOptions exp;
-  auto* export_cmd = app.add_subcommand("export", "write a run directory's results as CSV or JSON");
-  export_cmd->add_option("DIR", exp.dir, "run directory")->required();
+  auto* export_cmd = app.add_subcommand("export", "write run directories' results as one CSV or JSON table");
+  export_cmd->add_option("DIR", exp.dirs, "run directories (experiments or studies)")->required();
   export_cmd->add_option("--format", exp.format, "csv (per-generation statistics) or json (everything)")
       ->required()->check(CLI::IsMember({"csv", "json"}));
   export_cmd->add_option("--out", exp.out, "output file (default: standard output)");
 
   ReportOptions rep;
-  auto* report_cmd = app.add_subcommand("report", "write a self-contained HTML report of a run directory");
-  report_cmd->add_option("DIR", rep.dir, "run directory")->required();
-  report_cmd->add_option("--out", rep.out, "output file (default: DIR/report.html)");
+  auto* report_cmd = app.add_subcommand("report", "write one self-contained HTML report of run directories, and "
+                                                  "their figures as SVG files");
+  report_cmd->add_option("DIR", rep.dirs, "run directories (experiments or studies)")->required();
+  report_cmd->add_option("--out", rep.out,
+                         "output file (default: DIR/report.html; required for several directories); figures go "
+                         "beside it in figures/");
 
   ReplayOptions replay;
   auto* replay_cmd = app.add_subcommand(

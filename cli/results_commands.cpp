@@ -1,4 +1,4 @@
-// `esc export` and `esc report`: read a run directory's database, never change it.
+// `esc export` and `esc report`: read run directories' databases, never change them.
 #include <fstream>
 #include <iostream>
 
@@ -11,15 +11,23 @@
 
 namespace esc::cli {
 
+namespace {
+
+std::vector<store::StoredDirectory> load_all(const std::vector<std::filesystem::path>& dirs) {
+  std::vector<store::StoredDirectory> all;
+  for (const std::filesystem::path& d : dirs) all.push_back({d, store::ResultsDb::open(d, true).load()});
+  return all;
+}
+
+}  // namespace
+
 int export_command(const ExportOptions& o) {
   if (o.format != "csv" && o.format != "json") {
     fmt::print(stderr, "esc: error: --format must be csv or json, not `{}`\n", o.format);
     return kExitUsage;
   }
-  store::ResultsDb db = store::ResultsDb::open(o.dir);
-  const std::vector<store::StoredExperiment> experiments = db.load();
-  const std::string text = o.format == "csv" ? store::export_csv(experiments)
-                                             : store::export_json(experiments).dump(2) + "\n";
+  const std::vector<store::StoredDirectory> all = load_all(o.dirs);
+  const std::string text = o.format == "csv" ? store::export_csv(all) : store::export_json(all).dump(2) + "\n";
   if (o.out.empty()) {
     std::cout << text << std::flush;
   } else {
@@ -30,11 +38,19 @@ int export_command(const ExportOptions& o) {
 }
 
 int report_command(const ReportOptions& o) {
-  store::ResultsDb db = store::ResultsDb::open(o.dir);
-  const std::vector<store::StoredExperiment> experiments = db.load();
-  const std::filesystem::path out = o.out.empty() ? o.dir / "report.html" : o.out;
-  store::write_atomically(out, report::html_report(experiments));
-  fmt::print("esc: wrote {}\n", out.string());
+  if (o.dirs.size() > 1 && o.out.empty()) {
+    fmt::print(stderr, "esc: error: a report over {} directories needs --out FILE (where to write it; its figures go "
+                       "beside it, in figures/)\n", o.dirs.size());
+    return kExitUsage;
+  }
+  const report::Report r = report::make_report(load_all(o.dirs));
+  const std::filesystem::path out = o.out.empty() ? o.dirs.front() / "report.html" : o.out;
+  const std::filesystem::path figures = out.parent_path() / "figures";
+  std::filesystem::create_directories(figures);
+  for (const report::NamedFigure& f : r.figures) store::write_atomically(figures / f.file, f.svg);
+  store::write_atomically(out, r.html);
+  fmt::print("esc: wrote {} and {} figure{} in {}\n", out.string(), r.figures.size(), r.figures.size() == 1 ? "" : "s",
+             figures.string());
   return kExitOk;
 }
 

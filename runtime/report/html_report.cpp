@@ -1,6 +1,7 @@
 #include "runtime/report/html_report.hpp"
 
 #include <cmath>
+#include <set>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "runtime/report/comparisons.hpp"
 #include "runtime/report/markup.hpp"
 #include "runtime/report/statistics.hpp"
+#include "runtime/report/study_table.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 
 extern const unsigned char esc_embed_chartjs[];
@@ -78,6 +80,26 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
           {"rows", rows}};
 }
 
+json summary_json(const Summary& s) {
+  return {{"n", s.n}, {"mean", number(s.mean)}, {"sd", number(s.sd)}, {"median", number(s.median)},
+          {"best", number(s.max)}, {"worst", number(s.min)}};
+}
+
+json pair_json(const std::string& a, const std::string& b, const Comparison& c) {
+  return {{"a", a}, {"b", b},
+          {"welch_t", number(c.welch.statistic)}, {"welch_df", number(c.welch.df)},
+          {"welch_p", number(c.welch.p_value)}, {"welch_p_holm", number(c.welch_p_holm)},
+          {"mwu_u", number(c.mann_whitney.statistic)}, {"mwu_p", number(c.mann_whitney.p_value)},
+          {"mwu_p_holm", number(c.mann_whitney_p_holm)}, {"mwu_exact", c.mann_whitney.exact},
+          {"a12", number(c.a12)}};
+}
+
+json figures_json(const std::vector<NamedFigure>& figures) {
+  json list = json::array();
+  for (const NamedFigure& f : figures) list.push_back({{"file", f.file}, {"title", f.title}, {"svg", f.svg}});
+  return list;
+}
+
 json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
   json controllers = json::array();
   std::vector<std::vector<double>> finals;
@@ -98,9 +120,9 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
       final_best.push_back(r.best_fitness);
       if (!r.action_usage.empty()) usage.push_back(r.action_usage);
     }
-    const Summary s = summarise(final_best);
-    summary.push_back({{"controller", c.name}, {"n", s.n}, {"mean", number(s.mean)}, {"sd", number(s.sd)},
-                       {"median", number(s.median)}, {"best", number(s.max)}, {"worst", number(s.min)}});
+    json row = {{"controller", c.name}};
+    row.update(summary_json(summarise(final_best)));
+    summary.push_back(std::move(row));
     finals.push_back(std::move(final_best));
     controllers.push_back({{"name", c.name}, {"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"head", c.head}, {"actions", c.actions}, {"runs", runs},
@@ -109,30 +131,82 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
   }
   json pairs = json::array();
   for (const Comparison& c : compare(finals, all_pairs(finals.size())))
-    pairs.push_back({{"a", e.controllers[c.a].name}, {"b", e.controllers[c.b].name},
-                     {"welch_t", number(c.welch.statistic)}, {"welch_df", number(c.welch.df)},
-                     {"welch_p", number(c.welch.p_value)}, {"welch_p_holm", number(c.welch_p_holm)},
-                     {"mwu_u", number(c.mann_whitney.statistic)}, {"mwu_p", number(c.mann_whitney.p_value)},
-                     {"mwu_p_holm", number(c.mann_whitney_p_holm)}, {"mwu_exact", c.mann_whitney.exact},
-                     {"a12", number(c.a12)}});
-  return {{"name", e.name},
-          {"seed", std::to_string(e.seed)},
-          {"status", e.status},
-          {"created", e.created},
-          {"software_version", e.software_version},
-          {"content_hash", e.content_hash},
-          {"script", e.script.generic_string()},
-          {"settings", json(e.settings)},
-          {"runs", e.runs},
-          {"generations", e.generations},
-          {"epochs", e.epochs},
-          {"steps", e.steps},
-          {"arena", e.arena},
-          {"robot_radius_mm", e.robot_radius_m * 1000.0},
-          {"ir_mount_deg", sim::kIrMountDeg},
-          {"ir_facing_deg", sim::kIrFacingDeg},
-          {"controllers", controllers},
-          {"stats", {{"summary", summary}, {"pairs", pairs}}}};
+    pairs.push_back(pair_json(e.controllers[c.a].name, e.controllers[c.b].name, c));
+  json j = {{"name", e.name},
+            {"seed", std::to_string(e.seed)},
+            {"status", e.status},
+            {"created", e.created},
+            {"software_version", e.software_version},
+            {"content_hash", e.content_hash},
+            {"script", e.script.generic_string()},
+            {"settings", json(e.settings)},
+            {"runs", e.runs},
+            {"generations", e.generations},
+            {"epochs", e.epochs},
+            {"steps", e.steps},
+            {"arena", e.arena},
+            {"robot_radius_mm", e.robot_radius_m * 1000.0},
+            {"ir_mount_deg", sim::kIrMountDeg},
+            {"ir_facing_deg", sim::kIrFacingDeg},
+            {"controllers", controllers},
+            {"stats", {{"summary", summary}, {"pairs", pairs}}}};
+  if (e.condition) {
+    json settings = json::object();
+    for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;
+    j["study"] = e.condition->study;
+    j["condition"] = e.condition->name;
+    j["condition_settings"] = settings;
+  }
+  return j;
+}
+
+// A study's table and comparisons; `conditions` in the study's order.
+json study_json(const std::vector<const store::StoredExperiment*>& conditions) {
+  std::vector<ConditionSamples> samples;
+  for (const auto* e : conditions) {
+    ConditionSamples s{e->condition->name, {}};
+    for (const store::StoredController& c : e->controllers) {
+      std::vector<double> best;
+      for (const auto& r : c.finished) best.push_back(r.best_fitness);
+      s.controllers.emplace_back(c.name, std::move(best));
+    }
+    samples.push_back(std::move(s));
+  }
+  const StudyTable t = study_table(samples);
+  json cells = json::array();
+  for (const StudyCell& c : t.cells) {
+    json cell = {{"condition", t.conditions[c.condition]}, {"controller", t.controllers[c.controller]}};
+    cell.update(summary_json(summarise(c.best)));
+    cells.push_back(std::move(cell));
+  }
+  json pairs = json::array();
+  for (const Comparison& c : t.comparisons) {
+    json p = pair_json(t.controllers[t.cells[c.a].controller], t.controllers[t.cells[c.b].controller], c);
+    p["label"] = t.label(c);
+    pairs.push_back(std::move(p));
+  }
+  json list = json::array();
+  for (const auto* e : conditions) {
+    json settings = json::object();
+    for (const eval::ConditionSetting& st : e->condition->settings) settings[st.key] = st.value;
+    list.push_back({{"name", e->condition->name}, {"experiment", e->name}, {"status", e->status},
+                    {"settings", settings}});
+  }
+  const store::StoredCondition& first = *conditions.front()->condition;
+  return {{"name", first.study},
+          {"seed", std::to_string(first.study_seed)},
+          {"conditions", list},
+          {"controllers", t.controllers},
+          {"cells", cells},
+          {"pairs", pairs},
+          {"family", kStudyFamily}};
+}
+
+// `stem`, or `stem-2`, `stem-3`, ... when taken (reports over several directories).
+std::string unique(std::set<std::string>& taken, const std::string& stem) {
+  std::string s = stem;
+  for (int i = 2; !taken.insert(s).second; ++i) s = fmt::format("{}-{}", stem, i);
+  return s;
 }
 
 // JSON inside <script>: "</" would end the element early.
@@ -143,16 +217,43 @@ std::string script_safe(std::string s) {
 
 }  // namespace
 
-json report_data(const std::vector<store::StoredExperiment>& experiments, const ReportOptions& options) {
-  json exps = json::array();
-  for (const auto& e : experiments) exps.push_back(experiment_json(e, options));
-  return {{"experiments", exps}};
-}
-
-std::string html_report(const std::vector<store::StoredExperiment>& experiments, const ReportOptions& options) {
+Report make_report(const std::vector<store::StoredDirectory>& directories, const ReportOptions& options) {
+  Report r;
+  json experiments = json::array();
+  json studies = json::array();
+  std::set<std::string> stems;
   std::string title = "esc report";
-  if (!experiments.empty()) title += ": " + experiments.front().name;
-  std::string page;
+  for (const store::StoredDirectory& d : directories) {
+    // The study of this directory, if it is one: its conditions in order.
+    std::vector<const store::StoredExperiment*> conditions;
+    for (const store::StoredExperiment& e : d.experiments)
+      if (e.condition) conditions.push_back(&e);
+    std::stable_sort(conditions.begin(), conditions.end(),
+                     [](const auto* a, const auto* b) { return a->condition->index < b->condition->index; });
+    if (!conditions.empty()) {
+      const std::string& study = conditions.front()->condition->study;
+      std::vector<NamedFigure> figures = study_figures(conditions, unique(stems, study));
+      json j = study_json(conditions);
+      j["directory"] = d.path.generic_string();
+      j["figures"] = figures_json(figures);
+      studies.push_back(std::move(j));
+      r.figures.insert(r.figures.end(), figures.begin(), figures.end());
+    }
+    for (const store::StoredExperiment& e : d.experiments) {
+      const std::string stem = e.condition ? e.condition->study + "-" + e.condition->directory : e.name;
+      std::vector<NamedFigure> figures = experiment_figures(e, unique(stems, stem));
+      json j = experiment_json(e, options);
+      j["directory"] = d.path.generic_string();
+      j["figures"] = figures_json(figures);
+      experiments.push_back(std::move(j));
+      r.figures.insert(r.figures.end(), figures.begin(), figures.end());
+    }
+    if (title == "esc report" && !d.experiments.empty())
+      title += ": " + (conditions.empty() ? d.experiments.front().name : conditions.front()->condition->study);
+  }
+  r.data = {{"studies", studies}, {"experiments", experiments}};
+
+  std::string& page = r.html;
   page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   page += fmt::format("<title>{}</title>\n<style>\n", escape_markup(title));
@@ -165,13 +266,21 @@ std::string html_report(const std::vector<store::StoredExperiment>& experiments,
           "d.appendChild(p);}document.title=document.title.replace(' (ready)','')+' (script error)';});</script>\n";
   page += "<div id=\"esc-errors\"></div>\n<main id=\"esc-report\"><p>Loading the report&hellip;</p></main>\n";
   page += "<script id=\"esc-data\" type=\"application/json\">";
-  page += script_safe(report_data(experiments, options).dump());
+  page += script_safe(r.data.dump());
   page += "</script>\n<script>\n";
   page += embedded(esc_embed_chartjs, esc_embed_chartjs_size);
   page += "\n</script>\n<script>\n";
   page += embedded(esc_embed_report_js, esc_embed_report_js_size);
   page += "\n</script>\n</body>\n</html>\n";
-  return page;
+  return r;
+}
+
+json report_data(const std::vector<store::StoredExperiment>& experiments, const ReportOptions& options) {
+  return make_report({{{}, experiments}}, options).data;
+}
+
+std::string html_report(const std::vector<store::StoredExperiment>& experiments, const ReportOptions& options) {
+  return make_report({{{}, experiments}}, options).html;
 }
 
 }  // namespace esc::report

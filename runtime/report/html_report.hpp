@@ -5,13 +5,17 @@
 // best fitness, the statistics table (summary per controller, pairwise Welch and
 // Mann-Whitney p-values), behavior-usage bars for symbolic controllers, and an animated
 // replay of each controller's best evaluation (trajectory, IR readings, acting behavior).
-// Chart.js and the page's script are embedded; the data is one JSON block in the page.
+// Per study: the table of conditions by controllers, its family of comparisons
+// (study_table.hpp), and its figures. The SVG figures (figures.hpp) are shown in the page
+// and returned to be written as files. Chart.js and the page's script are embedded; the
+// data is one JSON block in the page. Several run directories make one report.
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/report/figures.hpp"
 #include "runtime/store/results_db.hpp"
 
 namespace esc::report {
@@ -22,10 +26,18 @@ struct ReportOptions {
   std::size_t max_replay_steps = 3000;
 };
 
-// The data block the page's script renders (exposed for tests).
+struct Report {
+  nlohmann::ordered_json data;       // the data block the page's script renders
+  std::string html;
+  std::vector<NamedFigure> figures;  // every figure the page shows, file names unique
+};
+
+[[nodiscard]] Report make_report(const std::vector<store::StoredDirectory>& directories,
+                                 const ReportOptions& options = {});
+
+// The report of one directory's experiments (its path unknown).
 [[nodiscard]] nlohmann::ordered_json report_data(const std::vector<store::StoredExperiment>& experiments,
                                                  const ReportOptions& options = {});
-
 [[nodiscard]] std::string html_report(const std::vector<store::StoredExperiment>& experiments,
                                       const ReportOptions& options = {});
 

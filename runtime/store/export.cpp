@@ -28,6 +28,14 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
   return j;
 }
 
+// A CSV field: quoted when it holds a comma, a quote or a line break (a directory's path may).
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 json run_json(const eval::RunState& s) {
   json j = {{"run", s.run + 1}, {"seed", s.seed}, {"status", "running"}};
   if (s.has_best) {
@@ -40,40 +48,56 @@ json run_json(const eval::RunState& s) {
 
 }  // namespace
 
-json export_json(const std::vector<StoredExperiment>& experiments) {
+json export_json(const std::vector<StoredDirectory>& directories) {
   json exps = json::array();
-  for (const StoredExperiment& e : experiments) {
-    json sources = json::array();
-    for (const auto& s : e.sources) sources.push_back({{"name", s.name.generic_string()}, {"text", s.text}});
-    json controllers = json::object();
-    for (const StoredController& c : e.controllers) {
-      json runs = json::array();
-      for (const auto& r : c.finished) runs.push_back(run_json(c, r));
-      for (const auto& s : c.in_progress) runs.push_back(run_json(s));
-      controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size}, {"head", c.head},
-                             {"actions", c.actions}, {"runs", runs}};
+  for (const StoredDirectory& d : directories)
+    for (const StoredExperiment& e : d.experiments) {
+      json sources = json::array();
+      for (const auto& s : e.sources) sources.push_back({{"name", s.name.generic_string()}, {"text", s.text}});
+      json controllers = json::object();
+      for (const StoredController& c : e.controllers) {
+        json runs = json::array();
+        for (const auto& r : c.finished) runs.push_back(run_json(c, r));
+        for (const auto& s : c.in_progress) runs.push_back(run_json(s));
+        controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size}, {"head", c.head},
+                               {"actions", c.actions}, {"runs", runs}};
+      }
+      json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
+      if (e.condition) {
+        json settings = json::object();
+        for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;
+        x.update({{"study", e.condition->study}, {"condition", e.condition->name}, {"condition_settings", settings}});
+      }
+      x.update({{"seed", e.seed}, {"content_hash", e.content_hash}, {"status", e.status}, {"created", e.created},
+                {"software_version", e.software_version}, {"script", e.script.generic_string()},
+                {"overrides", e.overrides}, {"settings", json(e.settings)}, {"arena", e.arena}, {"runs", e.runs},
+                {"generations", e.generations}, {"epochs", e.epochs}, {"steps", e.steps}, {"sources", sources},
+                {"controllers", controllers}});
+      exps.push_back(std::move(x));
     }
-    exps.push_back({{"name", e.name}, {"seed", e.seed}, {"content_hash", e.content_hash}, {"status", e.status},
-                    {"created", e.created}, {"software_version", e.software_version},
-                    {"script", e.script.generic_string()}, {"overrides", e.overrides}, {"settings", json(e.settings)},
-                    {"arena", e.arena}, {"runs", e.runs}, {"generations", e.generations}, {"epochs", e.epochs},
-                    {"steps", e.steps}, {"sources", sources}, {"controllers", controllers}});
-  }
   return {{"format", "esc results"}, {"schema_version", kSchemaVersion}, {"experiments", exps}};
 }
 
-std::string export_csv(const std::vector<StoredExperiment>& experiments) {
-  std::string out = "experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,seconds\n";
-  auto rows = [&](const std::string& exp, const std::string& ctl, int run, std::uint64_t seed, const char* status,
-                  const std::vector<eval::GenerationStats>& gens) {
-    for (const auto& g : gens)
-      out += fmt::format("{},{},{},{},{},{},{:.17g},{:.17g},{:.17g},{},{},{:.3f}\n", exp, ctl, run + 1, seed, status,
-                         g.generation, g.best, g.mean, g.sd, g.evaluations, g.steps, g.seconds);
-  };
-  for (const StoredExperiment& e : experiments)
-    for (const StoredController& c : e.controllers) {
-      for (const auto& r : c.finished) rows(e.name, c.name, r.run, r.seed, "finished", r.generations);
-      for (const auto& s : c.in_progress) rows(e.name, c.name, s.run, s.seed, "running", s.generations);
+std::string export_csv(const std::vector<StoredDirectory>& directories) {
+  std::string out =
+      "experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,seconds,condition,study,"
+      "directory\n";
+  for (const StoredDirectory& d : directories)
+    for (const StoredExperiment& e : d.experiments) {
+      // A grid sweep's point is named with commas (`time_constant=50ms,mu=10`).
+      const std::string condition = csv_field(e.condition ? e.condition->name : e.name);
+      const std::string study = e.condition ? e.condition->study : "";
+      const auto rows = [&](const std::string& ctl, int run, std::uint64_t seed, const char* status,
+                            const std::vector<eval::GenerationStats>& gens) {
+        for (const auto& g : gens)
+          out += fmt::format("{},{},{},{},{},{},{:.17g},{:.17g},{:.17g},{},{},{:.3f},{},{},{}\n", e.name, ctl, run + 1,
+                             seed, status, g.generation, g.best, g.mean, g.sd, g.evaluations, g.steps, g.seconds,
+                             condition, study, csv_field(d.path.generic_string()));
+      };
+      for (const StoredController& c : e.controllers) {
+        for (const auto& r : c.finished) rows(c.name, r.run, r.seed, "finished", r.generations);
+        for (const auto& s : c.in_progress) rows(c.name, s.run, s.seed, "running", s.generations);
+      }
     }
   return out;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// `esc export`: the results database as JSON (everything) or CSV (the per-generation
-// statistics of every run, one row per generation, ready for R or pandas).
+// `esc export`: the results databases of one or more run directories (experiments or
+// studies, made at different times) as JSON (everything) or CSV (the per-generation
+// statistics of every run, one row per generation: one long table, ready for R or pandas).
 #include <string>
 #include <vector>
 
@@ -10,10 +11,13 @@
 
 namespace esc::store {
 
-[[nodiscard]] nlohmann::ordered_json export_json(const std::vector<StoredExperiment>& experiments);
+// {"format", "schema_version", "experiments": [every experiment of every directory, with its
+// "directory" and, for a study's condition, "study", "condition", "condition_settings"]}.
+[[nodiscard]] nlohmann::ordered_json export_json(const std::vector<StoredDirectory>& directories);
 
-// Columns: experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,seconds
-// (run counts from 1, generation from 0; numbers with 17 significant digits).
-[[nodiscard]] std::string export_csv(const std::vector<StoredExperiment>& experiments);
+// Columns: experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,
+// seconds,condition,study,directory (run counts from 1, generation from 0; numbers with 17
+// significant digits; a plain experiment's condition is its own name and its study empty).
+[[nodiscard]] std::string export_csv(const std::vector<StoredDirectory>& directories);
 
 }  // namespace esc::store

@@ -115,6 +115,13 @@ struct StoredExperiment {
   [[nodiscard]] eval::ResumePoint resume_point() const;
 };
 
+// The experiments of one run directory (a study's: every condition), as `esc export` and
+// `esc report` read them.
+struct StoredDirectory {
+  std::filesystem::path path;   // as the user named it
+  std::vector<StoredExperiment> experiments;
+};
+
 // Content key of a campaign: the experiment name and every source file (file name without
 // its directory, and text), as 16 hex digits of FNV-1a.
 [[nodiscard]] std::string campaign_hash(std::string_view experiment, const std::vector<SourceFile>& sources);

@@ -155,9 +155,9 @@ TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
   EXPECT_EQ(c.replay->steps[0].zones[1].x, 0.05);
   EXPECT_EQ(c.replay->steps[0].zones[1].y, 0.5);
 
-  const std::string csv = export_csv({s});
+  const std::string csv = export_csv({{"dir", {s}}});
   EXPECT_NE(csv.find("demo,SC,1,5,finished,0,2,1,0.5,10,100,0.100"), std::string::npos) << csv;
-  const auto j = export_json({s});
+  const auto j = export_json({{"dir", {s}}});
   EXPECT_EQ(j["experiments"][0]["controllers"]["SC"]["runs"][0]["behavior_usage"]["forward"], 7);
 }
 

@@ -122,7 +122,9 @@
       },
       options: {
         plugins: {legend: {display: false}},
-        scales: {x: {type: 'category', labels}, y: {title: {display: true, text: 'best fitness'}}},
+        // On the data's own scale: fitness need not start at 0.
+        scales: {x: {type: 'category', labels},
+                 y: {beginAtZero: false, grace: '5%', title: {display: true, text: 'best fitness'}}},
       },
     });
   }
@@ -137,28 +139,76 @@
       t.appendChild(el('tr', {}, [s.controller, String(s.n), fmt(s.mean, 2), fmt(s.sd, 2), fmt(s.median, 2),
                                   fmt(s.best, 2), fmt(s.worst, 2)].map(v => el('td', {text: v}))));
     card.appendChild(t);
-    if (exp.stats.pairs.length > 0) {
-      card.appendChild(el('h3', {text: 'Pairwise comparisons (two-sided)'}));
-      const p = el('table');
-      p.appendChild(el('tr', {}, ['pair', 'Welch t', 'df', 'Welch p', 'p Holm', 'Mann-Whitney U', 'Mann-Whitney p',
-                                  'p Holm', 'A12'].map(h => el('th', {text: h}))));
-      for (const r of exp.stats.pairs) {
-        const row = el('tr', {}, [`${r.a} vs ${r.b}`, fmt(r.welch_t, 3), fmt(r.welch_df, 1), fmtP(r.welch_p),
-                                  fmtP(r.welch_p_holm), fmt(r.mwu_u, 1), fmtP(r.mwu_p) + (r.mwu_exact ? ' (exact)' : ''),
-                                  fmtP(r.mwu_p_holm), fmt(r.a12, 2)].map(v => el('td', {text: v})));
-        if (r.welch_p_holm !== null && r.welch_p_holm < 0.05) row.children[4].className = 'significant';
-        if (r.mwu_p_holm !== null && r.mwu_p_holm < 0.05) row.children[7].className = 'significant';
-        p.appendChild(row);
-      }
-      card.appendChild(p);
-      card.appendChild(el('p', {class: 'note', text:
-        'Welch: t-test with unequal variances. Mann-Whitney: exact when a sample has at most 8 runs and there are ' +
-        'no ties, else the normal approximation with tie and continuity corrections (as SciPy\'s method "auto"). ' +
-        'Holm: p adjusted over the pairs of this table, for each test; bold: adjusted p < 0.05. A12: Vargha-Delaney ' +
-        'effect size, the chance that a run of the first beats a run of the second (0.5: no effect). n/a: the test ' +
-        'is undefined for these samples.'}));
-    }
+    pairsTable(card, exp.stats.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
     parent.appendChild(card);
+  }
+
+  // Pairwise comparisons, one Holm family: `label` names each row, `family` what it holds.
+  function pairsTable(card, pairs, label, family) {
+    if (pairs.length === 0) return;
+    card.appendChild(el('h3', {text: 'Pairwise comparisons (two-sided)'}));
+    const p = el('table');
+    p.appendChild(el('tr', {}, ['pair', 'Welch t', 'df', 'Welch p', 'p Holm', 'Mann-Whitney U', 'Mann-Whitney p',
+                                'p Holm', 'A12'].map(h => el('th', {text: h}))));
+    for (const r of pairs) {
+      const row = el('tr', {}, [label(r), fmt(r.welch_t, 3), fmt(r.welch_df, 1), fmtP(r.welch_p),
+                                fmtP(r.welch_p_holm), fmt(r.mwu_u, 1), fmtP(r.mwu_p) + (r.mwu_exact ? ' (exact)' : ''),
+                                fmtP(r.mwu_p_holm), fmt(r.a12, 2)].map(v => el('td', {text: v})));
+      if (r.welch_p_holm !== null && r.welch_p_holm < 0.05) row.children[4].className = 'significant';
+      if (r.mwu_p_holm !== null && r.mwu_p_holm < 0.05) row.children[7].className = 'significant';
+      p.appendChild(row);
+    }
+    card.appendChild(p);
+    card.appendChild(el('p', {class: 'note', text:
+      'Welch: t-test with unequal variances. Mann-Whitney: exact when a sample has at most 8 runs and there are ' +
+      'no ties, else the normal approximation with tie and continuity corrections (as SciPy\'s method "auto"). ' +
+      `Holm: p adjusted over ${family}, for each test; bold: adjusted p < 0.05. A12: Vargha-Delaney ` +
+      'effect size, the chance that a run of the first beats a run of the second (0.5: no effect). n/a: the test ' +
+      'is undefined for these samples.'}));
+  }
+
+  // The SVG figures (the same as the files in figures/), one card each.
+  function figures(parent, list) {
+    for (const f of list || []) {
+      const card = el('div', {class: 'card figure'}, [el('div', {class: 'svg', html: f.svg})]);
+      card.appendChild(el('p', {class: 'note', text: `figures/${f.file}`}));
+      parent.appendChild(card);
+    }
+  }
+
+  // A study: its conditions, the table of conditions by controllers, one family of
+  // comparisons, and its figures.
+  function studySection(study) {
+    const section = el('section');
+    section.appendChild(el('h1', {text: `Study ${study.name}`}));
+    section.appendChild(el('p', {class: 'meta', text:
+      `${study.conditions.length} conditions, master seed ${study.seed} (every condition's)` +
+      (study.directory ? `; directory ${study.directory}` : '')}));
+    const conditions = el('table');
+    conditions.appendChild(el('tr', {}, ['condition', 'experiment', 'settings', 'status'].map(h => el('th', {text: h}))));
+    for (const c of study.conditions)
+      conditions.appendChild(el('tr', {}, [c.name, c.experiment,
+        Object.entries(c.settings).map(([k, v]) => `${k} ${v}`).join(', ') || '(as declared)', c.status]
+        .map(v => el('td', {text: v}))));
+    section.appendChild(el('div', {class: 'card'}, [conditions]));
+    section.appendChild(el('h2', {text: 'Final results and statistics'}));
+    const card = el('div', {class: 'card'});
+    card.appendChild(el('h3', {text: 'Best fitness of each run: mean ± sd (median)'}));
+    const t = el('table');
+    t.appendChild(el('tr', {}, ['condition'].concat(study.controllers).map(h => el('th', {text: h}))));
+    for (const c of study.conditions)
+      t.appendChild(el('tr', {}, [c.name].concat(study.controllers.map(k => {
+        const cell = study.cells.find(x => x.condition === c.name && x.controller === k);
+        return cell && cell.n > 0 ? `${fmt(cell.mean, 1)} ± ${fmt(cell.sd, 1)} (${fmt(cell.median, 1)})` : '–';
+      })).map(v => el('td', {text: v}))));
+    card.appendChild(t);
+    pairsTable(card, study.pairs, r => r.label, `the ${study.pairs.length} comparisons of this table (${study.family})`);
+    section.appendChild(card);
+    section.appendChild(el('h2', {text: 'Figures'}));
+    const grid = el('div', {class: 'figures'});
+    section.appendChild(grid);
+    figures(grid, study.figures);
+    return section;
   }
 
   function usageChart(parent, c, color) {
@@ -339,17 +389,23 @@
 
   function render() {
     root.innerHTML = '';
+    for (const study of data.studies || []) root.appendChild(studySection(study));
     for (const exp of data.experiments) {
       const section = el('section');
-      section.appendChild(el('h1', {text: `Experiment ${exp.name}`}));
+      section.appendChild(el('h1', {text: exp.condition ?
+        `Condition ${exp.condition} of study ${exp.study} (experiment ${exp.name})` : `Experiment ${exp.name}`}));
       const finished = exp.controllers.reduce((n, c) => n + c.runs.length, 0);
       const unfinished = exp.controllers.reduce((n, c) => n + c.unfinished_runs, 0);
       section.appendChild(el('p', {class: 'meta', text:
         `${exp.controllers.length} controllers × ${exp.runs} runs × ${exp.generations} generations, ` +
         `${exp.epochs} epochs × ${exp.steps} steps; seed ${exp.seed}; ${exp.status}` +
         (exp.status !== 'finished' ? ` (${finished} runs finished, ${unfinished} in progress)` : '') +
-        `; script ${exp.script} (hash ${exp.content_hash}); esc ${exp.software_version}; started ${exp.created}`}));
+        `; script ${exp.script} (hash ${exp.content_hash}); esc ${exp.software_version}; started ${exp.created}` +
+        (exp.directory ? `; directory ${exp.directory}` : '')}));
       section.appendChild(el('h2', {text: 'Fitness over generations'}));
+      const figureGrid = el('div', {class: 'figures'});
+      section.appendChild(figureGrid);
+      figures(figureGrid, exp.figures);
       const curvesGrid = el('div', {class: 'grid'});
       section.appendChild(curvesGrid);
       fitnessChart(curvesGrid, exp, 'best', 'Best fitness of the generation');
