@@ -5,8 +5,10 @@
 // recorded by running this test with ESC_UPDATE_GOLDEN=1 (which rewrites the files), a bump
 // of eval::kResultsRevision and a paragraph in docs/decisions.md.
 //
-// Each file names its script, experiment and command-line arguments; to cover a new
-// experiment, add a file with those three and an empty "controllers" object, then update.
+// Each file names its script, experiment (or study) and command-line arguments; to cover a
+// new experiment, add a file with those three and an empty "controllers" object (a study:
+// an empty "conditions" object), then update. A study's file holds, per condition, what an
+// experiment's holds.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -33,10 +35,11 @@ std::vector<std::string> golden_files() {
   return names;
 }
 
-// The results proper of a summary.json: per controller, per run, the fitness figures.
-json results_of(const json& summary) {
+// The results proper of a summary.json's controllers: per controller, per run, the fitness
+// figures.
+json results_of(const json& controllers) {
   json out = json::object();
-  for (const auto& [name, c] : summary.at("controllers").items()) {
+  for (const auto& [name, c] : controllers.items()) {
     json runs = json::array();
     for (const json& r : c.at("runs"))
       runs.push_back({{"best_fitness", r.at("best_fitness")}, {"best", r.at("best")}, {"mean", r.at("mean")},
@@ -44,6 +47,29 @@ json results_of(const json& summary) {
     out[name] = runs;
   }
   return out;
+}
+
+// An experiment's results, or a study's: its conditions' by name.
+json summary_results(const json& summary) {
+  if (!summary.contains("conditions")) return results_of(summary.at("controllers"));
+  json out = json::object();
+  for (const json& c : summary.at("conditions")) out[c.at("name").get<std::string>()] = results_of(c.at("controllers"));
+  return out;
+}
+
+// Controller by controller, element by element, so that a failure names the first
+// generation that moved.
+void expect_same(const json& want, const json& got, const std::string& where) {
+  ASSERT_EQ(want.size(), got.size()) << where << "controllers differ: " << got.dump();
+  for (const auto& [name, runs] : want.items()) {
+    ASSERT_TRUE(got.contains(name)) << where << "no controller " << name;
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      for (const char* key : {"best", "mean", "sd"})
+        for (std::size_t g = 0; g < runs[r][key].size(); ++g)
+          ASSERT_EQ(runs[r][key][g].get<double>(), got[name][r][key][g].get<double>())
+              << where << name << " run " << r << " generation " << g << " " << key;
+    EXPECT_EQ(runs, got[name]) << where << name;
+  }
 }
 
 class Golden : public ::testing::TestWithParam<std::string> {};
@@ -56,23 +82,22 @@ TEST_P(Golden, ShortRunGivesTheRecordedResults) {
   const Outcome o = esc("run " + script + " --experiment " + golden.at("experiment").get<std::string>() + " " +
                         golden.at("args").get<std::string>() + " --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json got = results_of(read_json(out / "summary.json"));
+  const json got = summary_results(read_json(out / "summary.json"));
+  const char* key = golden.contains("conditions") ? "conditions" : "controllers";
   if (const char* update = std::getenv("ESC_UPDATE_GOLDEN"); update != nullptr && std::string(update) == "1") {
-    golden["controllers"] = got;
+    golden[key] = got;
     std::ofstream(file) << golden.dump(1) << "\n";
     GTEST_SKIP() << "rewrote " << file;
   }
-  const json& want = golden.at("controllers");
-  ASSERT_EQ(want.size(), got.size()) << "controllers differ: " << got.dump();
-  for (const auto& [name, runs] : want.items()) {
-    ASSERT_TRUE(got.contains(name)) << "no controller " << name;
-    // Element by element, so a failure names the first generation that moved.
-    for (std::size_t r = 0; r < runs.size(); ++r)
-      for (const char* key : {"best", "mean", "sd"})
-        for (std::size_t g = 0; g < runs[r][key].size(); ++g)
-          ASSERT_EQ(runs[r][key][g].get<double>(), got[name][r][key][g].get<double>())
-              << name << " run " << r << " generation " << g << " " << key;
-    EXPECT_EQ(runs, got[name]) << name;
+  if (std::string(key) == "controllers") {
+    expect_same(golden.at(key), got, "");
+    return;
+  }
+  const json& want = golden.at(key);
+  ASSERT_EQ(want.size(), got.size()) << "conditions differ: " << got.dump();
+  for (const auto& [condition, controllers] : want.items()) {
+    ASSERT_TRUE(got.contains(condition)) << "no condition " << condition;
+    expect_same(controllers, got[condition], "condition " + condition + ": ");
   }
 }
 
