@@ -1,0 +1,250 @@
+// Studies in scripts: `conditions`, `condition NAME = EXP { KEY VALUE }`, `sweep EXP { KEY
+// [VALUES] }` and their grids, the study's `runs` and `seed`, the precedence of settings,
+// `compare C as NAME`, and which declaration `esc run` runs by default. Each diagnostic has
+// a file in tests/bad/ (study_*.esc, compare_as_twice.esc).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "helpers.hpp"
+
+namespace esc::compiler {
+namespace {
+
+using test::options;
+using test::rendered;
+
+const std::string kBase = R"(
+import "lib/khepera.esc"
+arena a { size 1m x 1m }
+fitness f { step: speed }
+controller c = mlp(ir[0..7] -> wheels)
+controller sym = symbolic(mlp(ir[0..7] -> hidden 3), actions [forward, backward])
+experiment e {
+  arena a
+  fitness f
+  robot khepera { time_constant 80ms }
+  evolve es(mu 10, lambda 20)
+  runs 4
+  seed 9
+  compare c, sym
+}
+)";
+
+CompileResult compile(const std::string& text) { return compile_source(kBase + text, "study.esc", options()); }
+
+const eval::StudySpec& study(const CompileResult& r, const std::string& name) {
+  const auto it = std::find_if(r.studies.begin(), r.studies.end(), [&](const auto& s) { return s.name == name; });
+  if (it == r.studies.end()) throw std::runtime_error("no study " + name);
+  return *it;
+}
+
+std::vector<std::string> names(const eval::StudySpec& s) {
+  std::vector<std::string> v;
+  for (const auto& c : s.conditions) v.push_back(c.name);
+  return v;
+}
+
+TEST(Study, ConditionsConditionAndSweepInTheirOrder) {
+  const CompileResult r = compile(R"(
+study s {
+  conditions e
+  condition no_inertia = e { robot.inertia off  mu 5 }
+  sweep e { robot.time_constant [25ms, 50ms] }
+}
+)");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const eval::StudySpec& s = study(r, "s");
+  EXPECT_EQ(names(s), (std::vector<std::string>{"e", "no_inertia", "time_constant=25ms", "time_constant=50ms"}));
+  EXPECT_TRUE(s.conditions[0].settings.empty());
+  EXPECT_DOUBLE_EQ(s.conditions[0].experiment.robot.motor.time_constant_s, 0.08);
+  // A condition's settings over the experiment's own.
+  const eval::ExperimentSpec& off = s.conditions[1].experiment;
+  EXPECT_FALSE(off.robot.motor.inertia);
+  EXPECT_EQ(off.es.mu, 5);
+  EXPECT_EQ(off.resolved_settings.at("mu"), "5");
+  EXPECT_EQ(off.resolved_settings.at("robot.inertia"), "off");
+  ASSERT_EQ(s.conditions[1].settings.size(), 2u);
+  EXPECT_EQ(s.conditions[1].settings[0].key, "robot.inertia");
+  EXPECT_EQ(s.conditions[1].settings[0].value, "off");
+  EXPECT_FALSE(s.conditions[1].settings[0].swept);
+  EXPECT_FALSE(s.conditions[1].sweep.has_value());
+  // Sweep points: their value in SI, as written in the settings, and on the plot's axis.
+  const eval::ConditionSpec& p = s.conditions[3];
+  EXPECT_DOUBLE_EQ(p.experiment.robot.motor.time_constant_s, 0.05);
+  EXPECT_NE(p.experiment.resolved_settings.at("robot.time_constant"),
+            s.conditions[2].experiment.resolved_settings.at("robot.time_constant"));
+  EXPECT_EQ(p.sweep, 0);
+  ASSERT_EQ(p.settings.size(), 1u);
+  EXPECT_EQ(p.settings[0].value, "50ms");
+  EXPECT_TRUE(p.settings[0].swept);
+  EXPECT_EQ(p.settings[0].x, 50.0);
+  EXPECT_EQ(p.settings[0].x_unit, "ms");
+  EXPECT_EQ(p.directory, "time_constant=50ms");
+  EXPECT_EQ(s.varied_keys(), (std::vector<std::string>{"robot.inertia", "mu", "robot.time_constant"}));
+}
+
+TEST(Study, SeveralSettingsSweepTheirGridFirstSlowest) {
+  const CompileResult r = compile(R"(
+study grid {
+  sweep e { mu [2, 4]  selection [comma, plus]  robot.max_speed [40mm/s, 6cm/s] }
+}
+)");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const eval::StudySpec& s = study(r, "grid");
+  ASSERT_EQ(s.conditions.size(), 8u);
+  EXPECT_EQ(s.conditions[0].name, "mu=2,selection=comma,max_speed=40mm/s");
+  EXPECT_EQ(s.conditions[1].name, "mu=2,selection=comma,max_speed=6cm/s");
+  EXPECT_EQ(s.conditions[7].name, "mu=4,selection=plus,max_speed=6cm/s");
+  EXPECT_EQ(s.conditions[7].experiment.es.mu, 4);
+  EXPECT_EQ(s.conditions[7].experiment.es.selection, evo::Selection::Plus);
+  EXPECT_DOUBLE_EQ(s.conditions[7].experiment.robot.motor.max_speed_mps, 0.06);
+  // A file name: no `/`.
+  EXPECT_EQ(s.conditions[0].directory, "mu=2,selection=comma,max_speed=40mm_per_s");
+  // Words are no numbers: no place on a numeric axis; values in two units neither.
+  EXPECT_FALSE(s.conditions[0].settings[1].x.has_value());
+  EXPECT_FALSE(s.conditions[0].settings[2].x.has_value());
+  EXPECT_EQ(s.conditions[0].settings[0].x, 2.0);
+}
+
+TEST(Study, KeysThatShareTheirLastPartAreNamedInFull) {
+  const CompileResult r = compile(R"(
+study g { sweep e { generations [3, 4]  gp.generations [5, 6] } }
+)");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  EXPECT_EQ(study(r, "g").conditions[0].name, "generations=3,gp.generations=5");
+}
+
+TEST(Study, RangesAreSweptAsListsOfRanges) {
+  const CompileResult r = compile(R"(
+study b {
+  sweep e { bounds [[-1, 1], [-2, 2]] }
+  condition wide = e { bounds [-5, 5] }
+}
+)");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const eval::StudySpec& s = study(r, "b");
+  EXPECT_EQ(names(s), (std::vector<std::string>{"bounds=[-1,1]", "bounds=[-2,2]", "wide"}));
+  EXPECT_EQ(s.conditions[1].experiment.es.lower, -2.0);
+  EXPECT_EQ(s.conditions[2].experiment.es.upper, 5.0);
+}
+
+TEST(Study, RunsAndSeedOfTheStudyOverTheExperimentsAConditionsRunsOverBoth) {
+  const CompileResult r = compile(R"(
+study plain { conditions e }
+study given {
+  condition more = e { runs 7 }
+  conditions e
+  runs 3
+  seed 12
+}
+)");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  // The study's seed (default 1) is every condition's master seed, whatever the experiment says.
+  const eval::StudySpec& plain = study(r, "plain");
+  EXPECT_EQ(plain.seed, 1u);
+  EXPECT_EQ(plain.conditions[0].experiment.seed, 1u);
+  EXPECT_EQ(plain.conditions[0].experiment.runs, 4);
+  const eval::StudySpec& given = study(r, "given");
+  EXPECT_EQ(given.seed, 12u);
+  EXPECT_EQ(given.conditions[0].experiment.runs, 7);
+  EXPECT_EQ(given.conditions[1].experiment.runs, 3);
+  EXPECT_EQ(given.conditions[1].experiment.seed, 12u);
+  EXPECT_EQ(given.conditions[1].experiment.resolved_settings.at("seed"), "12");
+  EXPECT_EQ(given.conditions[1].experiment.resolved_settings.at("runs"), "3");
+}
+
+TEST(Study, TheFirstDeclaredExperimentOrStudyIsTheDefault) {
+  const auto first = [](const std::string& text) {
+    const CompileResult r = compile_source(kBase + text, "d.esc", options());
+    EXPECT_TRUE(r.ok()) << rendered(r);
+    return r.first_declared;
+  };
+  EXPECT_EQ(first(""), "e");
+  EXPECT_EQ(first("study s { conditions e }"), "e");
+  const CompileResult r = compile_source("study s { conditions e }\n" + kBase, "d.esc", options());
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  EXPECT_EQ(r.first_declared, "s");
+}
+
+TEST(Study, ImportedStudiesAreCheckedButNotReturned) {
+  const CompileResult r =
+      compile_source("import \"paper/loophole.esc\"\n", "imports.esc", options());
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  EXPECT_TRUE(r.studies.empty());
+  EXPECT_TRUE(r.first_declared.empty());
+}
+
+TEST(Study, ShippedStudies) {
+  const auto shipped = [](const char* file) {
+    const CompileResult r = compile_file(test::source_dir() / file, options());
+    EXPECT_TRUE(r.ok()) << rendered(r);
+    return r;
+  };
+  const CompileResult loophole = shipped("experiments/paper/loophole.esc");
+  EXPECT_EQ(loophole.first_declared, "loophole");
+  EXPECT_EQ(names(study(loophole, "loophole")), (std::vector<std::string>{"loophole_no_inertia", "loophole_inertia"}));
+  const CompileResult sweep = shipped("experiments/studies/inertia_sweep.esc");
+  const eval::StudySpec& s = study(sweep, "inertia_sweep");
+  ASSERT_GE(s.conditions.size(), 6u);
+  EXPECT_FALSE(s.conditions.front().experiment.robot.motor.inertia);
+  EXPECT_EQ(s.conditions.back().name, "time_constant=200ms");
+  const CompileResult sensitivity = shipped("experiments/paper/sensitivity.esc");
+  for (const eval::ConditionSpec& c : study(sensitivity, "sensitivity").conditions) {
+    ASSERT_EQ(c.experiment.controllers.size(), 2u) << c.name;
+    EXPECT_EQ(c.experiment.controllers[0].name, "CS") << c.name;
+    EXPECT_EQ(c.experiment.controllers[1].name, "SS") << c.name;
+  }
+  EXPECT_EQ(study(sensitivity, "sensitivity").conditions[2].experiment.controllers[0].behaviors.size(), 24u);
+}
+
+TEST(CompareAs, TheControllerIsComparedStoredAndDependedOnUnderItsNewName) {
+  const CompileResult r = compile_source(kBase + R"(
+experiment renamed { arena a  fitness f  compare c as plain, sym as SC }
+behavior evolved_sc = evolved from experiment renamed controller SC
+controller sup = supervisor(mlp(ir[0..7]), behaviors [evolved_sc, forward(0.5)])
+experiment uses { arena a  fitness f  compare sup }
+experiment goes_on { arena a  fitness f  start from experiment renamed  compare c as plain }
+)", "as.esc", options());
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const auto& x = r.experiments.at(1);
+  ASSERT_EQ(x.name, "renamed");
+  EXPECT_EQ(x.controllers[0].name, "plain");
+  EXPECT_EQ(x.controllers[1].name, "SC");
+  EXPECT_EQ(x.controllers[1].genome_size(), r.experiments.at(0).controllers[1].genome_size());
+  EXPECT_EQ(x.resolved_settings.at("compare"), "plain, SC");
+  const auto& uses = r.experiments.at(2);
+  ASSERT_EQ(uses.dependencies.size(), 1u);
+  EXPECT_EQ(uses.dependencies[0].experiment, "renamed");
+  EXPECT_EQ(uses.dependencies[0].controller, "SC");
+
+  // A name the experiment does not compare any more is refused, with the names it does.
+  const CompileResult wrong = compile_source(kBase + R"(
+experiment renamed { arena a  fitness f  compare sym as SC }
+behavior b = evolved from experiment renamed controller sym
+controller sup = supervisor(mlp(ir[0..7]), behaviors [b])
+experiment uses { arena a  fitness f  compare sup }
+)", "as.esc", options());
+  EXPECT_FALSE(wrong.ok());
+  EXPECT_NE(rendered(wrong).find("experiment `renamed` does not compare a controller `sym`"), std::string::npos)
+      << rendered(wrong);
+  EXPECT_NE(rendered(wrong).find("help: `renamed` compares `SC`"), std::string::npos) << rendered(wrong);
+}
+
+TEST(Study, SetSettingValuesAreReadLikeTheScriptsOwn) {
+  // The same value read in a study and by --set gives the same experiment.
+  const CompileResult r = compile(R"(study s { condition x = e { robot.max_accel 0.5 m/s^2  sigma 0.2 } })");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  eval::ExperimentSpec by_set = r.experiments.at(0);
+  by_set.seed = 1;
+  ASSERT_EQ(apply_setting(by_set, "robot.max_accel", "0.5 m/s^2"), "");
+  ASSERT_EQ(apply_setting(by_set, "sigma", "0.2"), "");
+  ASSERT_EQ(apply_setting(by_set, "seed", "1"), "");
+  EXPECT_EQ(study(r, "s").conditions[0].experiment.resolved_settings, by_set.resolved_settings);
+  EXPECT_EQ(study(r, "s").conditions[0].name, "x");
+  EXPECT_EQ(study(r, "s").conditions[0].settings[0].value, "0.5m/s^2");
+  EXPECT_EQ(study(r, "s").conditions[0].directory, "x");
+}
+
+}  // namespace
+}  // namespace esc::compiler
