@@ -45,6 +45,18 @@ TEST(Mpi, ThreeRanksGiveTheSameSummaryAsOneProcess) {
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
 }
 
+TEST(Mpi, AStudyUnderThreeRanksGivesOneProcesssResults) {
+  const fs::path one = scratch("mpi-study-1");
+  const fs::path three = scratch("mpi-study-3");
+  const std::string args = "run " + std::string(ESC_SOURCE_DIR) +
+                           "/tests/cli/data/tiny_study.esc --experiment tiny_study_fewer --generations 3 --out ";
+  const Outcome a = esc(args + one.string() + " --threads 1");
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + three.string() + " --threads 1");
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_EQ(slurp(one / "summary.json"), slurp(three / "summary.json"));
+}
+
 TEST(Mpi, RanksWithDifferentThreadCountsPoolTheSameRuns) {
   // 1 + 3 + 3 threads: every rank must count 7 workers, so that all pool the same runs
   // (counting its own threads times 3 ranks, rank 0 would pool 3 runs, the others 4).

@@ -1,0 +1,193 @@
+// Studies end to end: one `esc run` runs every condition into one directory (one database,
+// one summary.json, one table); a condition's results are those of its experiment run alone
+// with its settings and the study's seed, and do not move when another condition is removed
+// or with the thread count and runs advancing together; a study stopped by SIGKILL resumes
+// bit-identical; `esc export` and `esc report` take several directories.
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
+
+namespace {
+
+using namespace cli_test;
+using nlohmann::json;
+
+std::string studies() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc"; }
+
+// The condition `name` of a study's summary.json.
+json condition(const json& summary, const std::string& name) {
+  for (const json& c : summary.at("conditions"))
+    if (c.at("name") == name) return c;
+  ADD_FAILURE() << "no condition " << name << " in " << summary.dump();
+  return json::object();
+}
+
+TEST(Study, OneRunRunsEveryConditionIntoOneDirectory) {
+  const fs::path out = scratch("study");
+  const Outcome o = esc("run " + studies() + " --generations 2 --threads 2 --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const json s = read_json(out / "summary.json");
+  EXPECT_EQ(s["study"], "tiny_study");   // the file's first declaration
+  EXPECT_EQ(s["seed"], 1);
+  ASSERT_EQ(s["conditions"].size(), 4u);
+  const json& off = s["conditions"][0];
+  EXPECT_EQ(off["name"], "no_inertia");
+  EXPECT_EQ(off["experiment"], "tiny");
+  EXPECT_EQ(off["settings"], json({{"robot.inertia", "off"}}));
+  EXPECT_EQ(s["conditions"][3]["name"], "time_constant=200ms");
+  EXPECT_EQ(s["conditions"][3]["settings"], json({{"robot.time_constant", "200ms"}}));
+  for (const json& c : s["conditions"]) {
+    ASSERT_EQ(c["controllers"].size(), 2u) << c["name"];
+    EXPECT_EQ(c["controllers"]["SC"]["runs"].size(), 2u) << c["name"];
+    EXPECT_EQ(c["controllers"]["SC"]["runs"][0]["best"].size(), 2u) << c["name"];
+  }
+  EXPECT_NE(condition(s, "time_constant=50ms")["controllers"], condition(s, "time_constant=200ms")["controllers"]);
+  // One database and one summary; each condition's files in its own directory.
+  EXPECT_TRUE(fs::exists(out / "esc.db"));
+  EXPECT_TRUE(fs::exists(out / "sources"));
+  EXPECT_FALSE(fs::exists(out / "no_inertia" / "summary.json"));
+  EXPECT_TRUE(fs::exists(out / "no_inertia" / "CC" / "run-01.csv"));
+  EXPECT_TRUE(fs::exists(out / "time_constant=150ms" / "SC" / "run-02.best.json"));
+  const json settings = read_json(out / "time_constant=150ms" / "settings.json");
+  EXPECT_EQ(settings["study"], "tiny_study");
+  EXPECT_EQ(settings["condition"], "time_constant=150ms");
+  EXPECT_EQ(settings["settings"]["robot.time_constant"], "0.15 s");
+  EXPECT_EQ(read_json(out / "settings.json")["conditions"].size(), 4u);
+  // The table: controllers by conditions, then one family of comparisons.
+  EXPECT_NE(o.output.find("study tiny_study: 4 conditions, seed 1"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("no_inertia: CC vs SC"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("SC: time_constant=150ms vs time_constant=200ms"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("Holm: p adjusted over the 16 comparisons shown"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("SC time_constant=50ms forward"), std::string::npos) << o.output;   // usage per condition
+  // Finished: nothing to resume.
+  const Outcome again = esc("run --resume " + out.string());
+  EXPECT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("is complete"), std::string::npos) << again.output;
+}
+
+TEST(Study, AConditionGivesItsExperimentsResultsWhateverElseTheStudyHolds) {
+  const std::string common = " --generations 2 --threads 2 --out ";
+  const fs::path all = scratch("seed-all"), fewer = scratch("seed-fewer"), alone = scratch("seed-alone"),
+                 off = scratch("seed-off");
+  ASSERT_EQ(esc("run " + studies() + common + all.string()).status, 0);
+  ASSERT_EQ(esc("run " + studies() + " --experiment tiny_study_fewer" + common + fewer.string()).status, 0);
+  // The experiment alone with the point's setting and the study's seed.
+  const Outcome a = esc("run " + tiny() + " --set robot.time_constant=200ms --seed 1" + common + alone.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  ASSERT_EQ(esc("run " + tiny() + " --set robot.inertia=off --seed 1" + common + off.string()).status, 0);
+  const json s_all = read_json(all / "summary.json"), s_fewer = read_json(fewer / "summary.json");
+  const json point = condition(s_all, "time_constant=200ms")["controllers"];
+  EXPECT_EQ(point, read_json(alone / "summary.json")["controllers"]);
+  // Removing the 150ms point changes no other point.
+  EXPECT_EQ(condition(s_fewer, "time_constant=200ms")["controllers"], point);
+  EXPECT_EQ(condition(s_fewer, "time_constant=50ms")["controllers"], condition(s_all, "time_constant=50ms")["controllers"]);
+  EXPECT_EQ(condition(s_all, "no_inertia")["controllers"], read_json(off / "summary.json")["controllers"]);
+}
+
+TEST(Study, ThreadsAndRunsAtOnceChangeNothing) {
+  const fs::path a = scratch("study-threads-1"), b = scratch("study-threads-2");
+  const std::string args = "run " + studies() + " --experiment tiny_study_fewer --generations 3 --out ";
+  ASSERT_EQ(esc(args + a.string() + " --threads 1 --runs-at-once 1").status, 0);
+  ASSERT_EQ(esc(args + b.string() + " --threads 2 --runs-at-once 3").status, 0);
+  EXPECT_EQ(slurp(a / "summary.json"), slurp(b / "summary.json"));
+}
+
+TEST(Study, SettingAVariedKeyIsRefusedOtherSettingsApplyToEveryCondition) {
+  const fs::path out = scratch("study-set");
+  const Outcome varied = esc("run " + studies() + " --set robot.time_constant=50ms --out " + out.string());
+  EXPECT_EQ(varied.status, 1);
+  EXPECT_NE(varied.output.find("study `tiny_study` varies `robot.time_constant` across its conditions"),
+            std::string::npos) << varied.output;
+  EXPECT_FALSE(fs::exists(out));
+  const Outcome ok = esc("run " + studies() + " --experiment tiny_study_fewer --runs 1 --generations 1 --set epochs=1 "
+                         "--seed 4 --out " + out.string());
+  ASSERT_EQ(ok.status, 0) << ok.output;
+  const json s = read_json(out / "summary.json");
+  EXPECT_EQ(s["seed"], 4);
+  for (const json& c : s["conditions"]) EXPECT_EQ(c["controllers"]["CC"]["runs"].size(), 1u);
+  EXPECT_EQ(read_json(out / "no_inertia" / "settings.json")["settings"]["epochs"], "1");
+  // A bad value for one condition names it.
+  const Outcome bad = esc("run " + studies() + " --set robot.max_speed=1m/s --out " + scratch("study-bad").string());
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.output.find("condition `no_inertia`: robot.max_speed=1m/s"), std::string::npos) << bad.output;
+}
+
+TEST(Study, AnUnknownNameListsExperimentsAndStudies) {
+  const Outcome o = esc("run " + studies() + " --experiment tiny_studdy --out " + scratch("unknown").string());
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.output.find("has no experiment or study `tiny_studdy`; it declares studies `tiny_study`, "
+                          "`tiny_study_fewer`"),
+            std::string::npos) << o.output;
+}
+
+TEST(Study, KilledHalfwayResumesBitIdentical) {
+  const fs::path whole = scratch("study-whole"), killed = scratch("study-killed");
+  const std::vector<std::string> args = {"run", studies(), "--experiment", "tiny_study_fewer", "--generations", "30",
+                                         "--threads", "1"};
+  std::vector<std::string> w = args;
+  w.insert(w.end(), {"--out", whole.string()});
+  std::string line;
+  for (const auto& a : w) line += " " + a;
+  ASSERT_EQ(esc(line.substr(1)).status, 0);
+  // 3 conditions x 2 controllers x 2 runs x 30 generations: stopped in the second condition.
+  std::vector<std::string> k = args;
+  k.insert(k.end(), {"--out", killed.string()});
+  const pid_t child = spawn_esc(k);
+  ASSERT_GE(child, 0);
+  const Killed stop = kill_when_committed(child, killed, 150);
+  ASSERT_TRUE(stop.still_running) << "the study finished before it could be killed";
+  ASSERT_LT(committed_generations(killed), 360) << "nothing left to resume";
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resuming study tiny_study_fewer"), std::string::npos) << resumed.output;
+  EXPECT_EQ(slurp(whole / "summary.json"), slurp(killed / "summary.json"));
+  EXPECT_EQ(slurp(whole / "time_constant=200ms" / "SC" / "run-02.best.json"),
+            slurp(killed / "time_constant=200ms" / "SC" / "run-02.best.json"));
+}
+
+TEST(Study, ExportAndReportTakeSeveralDirectories) {
+  const fs::path study = scratch("many-study"), plain = scratch("many-plain");
+  ASSERT_EQ(esc("run " + studies() + " --experiment tiny_study_fewer --generations 2 --out " + study.string()).status, 0);
+  ASSERT_EQ(esc("run " + tiny() + " --generations 2 --out " + plain.string()).status, 0);
+  const Outcome csv = esc("export " + study.string() + " " + plain.string() + " --format csv");
+  ASSERT_EQ(csv.status, 0) << csv.output;
+  EXPECT_EQ(csv.output.rfind("experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,"
+                             "seconds,condition,study,directory\n", 0), 0U);
+  EXPECT_NE(csv.output.find(",time_constant=200ms,tiny_study_fewer," + study.string() + "\n"), std::string::npos);
+  EXPECT_NE(csv.output.find(",tiny,," + plain.string() + "\n"), std::string::npos);
+  // 3 conditions and one experiment, 2 controllers x 2 runs x 2 generations each.
+  EXPECT_EQ(std::count(csv.output.begin(), csv.output.end(), '\n'), 1 + 4 * 8);
+  const json j = json::parse(esc("export " + study.string() + " " + plain.string() + " --format json").output);
+  ASSERT_EQ(j["experiments"].size(), 4u);
+  EXPECT_EQ(j["experiments"][0]["study"], "tiny_study_fewer");
+  EXPECT_EQ(j["experiments"][0]["condition_settings"], json({{"robot.inertia", "off"}}));
+  EXPECT_FALSE(j["experiments"][3].contains("study"));
+
+  EXPECT_EQ(esc("report " + study.string() + " " + plain.string()).status, 2);   // where to?
+  const fs::path page = scratch("many-report") / "report.html";
+  fs::create_directories(page.parent_path());
+  const Outcome r = esc("report " + study.string() + " " + plain.string() + " --out " + page.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string html = slurp(page);
+  EXPECT_NE(html.find("\"studies\":[{"), std::string::npos);
+  EXPECT_NE(html.find("tiny_study_fewer-sweep.svg"), std::string::npos);
+  for (const char* f : {"tiny_study_fewer-sweep.svg", "tiny_study_fewer-best-by-condition.svg",
+                        "tiny_study_fewer-no_inertia-fitness.svg", "tiny-fitness.svg", "tiny-best.svg"}) {
+    const std::string svg = slurp(page.parent_path() / "figures" / f);
+    EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0U) << f;
+  }
+  // One directory: its report and figures go into it.
+  ASSERT_EQ(esc("report " + study.string()).status, 0);
+  EXPECT_TRUE(fs::exists(study / "report.html"));
+  EXPECT_TRUE(fs::exists(study / "figures" / "tiny_study_fewer-sweep.svg"));
+}
+
+}  // namespace

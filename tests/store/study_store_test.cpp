@@ -1,0 +1,108 @@
+// A study's database (schema 3): every condition an experiment row, with its study, name,
+// directory and settings; each condition written through its own RunDirectory; the study's
+// summary.json; and a schema-2 database upgraded when opened for writing.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "runtime/store/sqlite.hpp"
+#include "runtime/store/study_directory.hpp"
+#include "tests/eval/test_experiment.hpp"
+#include "tests/store/scratch.hpp"
+
+namespace esc::store {
+namespace {
+
+namespace fs = std::filesystem;
+
+eval::StudySpec two_conditions() {
+  eval::StudySpec s;
+  s.name = "st";
+  s.seed = 3;
+  eval::ExperimentSpec x = testing::small_experiment();
+  x.seed = 3;
+  s.conditions.push_back({"base", "base", std::nullopt, {}, x});
+  x.robot.motor.time_constant_s = 0.05;
+  s.conditions.push_back(
+      {"time_constant=50ms", "time_constant=50ms", 0, {{"robot.time_constant", "50ms", true, 50.0, "ms"}}, x});
+  return s;
+}
+
+eval::RunResult finished_run(double fitness) {
+  eval::RunResult r;
+  r.generations.push_back({0, fitness, 1.0, 0.5, 24, 999, 0.1});
+  r.best_fitness = fitness;
+  r.best_genome = {0.25};
+  return r;
+}
+
+TEST(StudyStore, EveryConditionIsAnExperimentWithItsStudyNameDirectoryAndSettings) {
+  const fs::path dir = test::fresh_dir("study");
+  const eval::StudySpec study = two_conditions();
+  {
+    StudyDirectory sd(dir, study, {{"s.esc", "study st { conditions small }"}}, {LaunchInfo{}, LaunchInfo{}});
+    ASSERT_EQ(sd.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+      RunDirectory run = sd.open_condition(i);
+      const control::ControllerSpec& c = study.conditions[i].experiment.controllers.front();
+      eval::RunState st;
+      st.generations = finished_run(1.5 + static_cast<double>(i)).generations;
+      run.generation_done(c, 0, st.generations.front());
+      run.checkpoint(c, st);
+      run.run_done(c, finished_run(1.5 + static_cast<double>(i)));
+      eval::CampaignResult result;
+      result.experiment = "small";
+      result.seed = 3;
+      result.controllers.push_back({c.name, c.architecture(), c.genome_size(), {finished_run(1.5 + static_cast<double>(i))},
+                                    c.choice_names()});
+      run.finish(result);
+    }
+  }
+  const std::vector<StoredExperiment> all = study_conditions(ResultsDb::open(dir, true).load());
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[1].name, "small");
+  ASSERT_TRUE(all[1].condition.has_value());
+  EXPECT_EQ(all[1].condition->study, "st");
+  EXPECT_EQ(all[1].condition->study_seed, 3u);
+  EXPECT_EQ(all[1].condition->name, "time_constant=50ms");
+  EXPECT_EQ(all[1].condition->sweep, 0);
+  ASSERT_EQ(all[1].condition->settings.size(), 1u);
+  EXPECT_EQ(all[1].condition->settings[0].value, "50ms");
+  EXPECT_EQ(all[1].condition->settings[0].x, 50.0);
+  EXPECT_FALSE(all[0].condition->sweep.has_value());
+  EXPECT_TRUE(all[0].finished() && all[1].finished());
+  EXPECT_EQ(all[1].controllers.front().finished.front().best_fitness, 2.5);
+  EXPECT_THROW((void)ResultsDb::open(dir, true).load_single(), StoreError);   // a study is not one experiment
+
+  const auto summary = nlohmann::json::parse(test::slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["study"], "st");
+  ASSERT_EQ(summary["conditions"].size(), 2u);
+  EXPECT_EQ(summary["conditions"][1]["settings"]["robot.time_constant"], "50ms");
+  EXPECT_EQ(summary["conditions"][1]["controllers"]["CC"]["runs"][0]["best_fitness"], 2.5);
+  EXPECT_TRUE(fs::exists(dir / "time_constant=50ms" / "settings.json"));
+  EXPECT_TRUE(fs::exists(dir / "time_constant=50ms" / "CC" / "run-01.csv"));
+}
+
+TEST(StudyStore, ASchemaTwoDatabaseIsReadAndUpgradedWhenWritten) {
+  const fs::path dir = test::fresh_dir("upgrade-2");
+  const eval::ExperimentSpec e = testing::small_experiment();
+  fs::create_directories(dir);
+  { (void)ResultsDb::create(dir, e, {}, {}); }
+  {  // What esc wrote before studies.
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; PRAGMA user_version=2;");
+  }
+  EXPECT_FALSE(ResultsDb::open(dir, true).load_single().condition.has_value());
+  { ResultsDb db = ResultsDb::open(dir); }
+  sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
+  auto version = raw.prepare("PRAGMA user_version");
+  ASSERT_TRUE(version.step());
+  EXPECT_EQ(version.int64(0), 3);
+  auto tables = raw.prepare("SELECT count(*) FROM sqlite_master WHERE name IN ('studies', 'conditions', "
+                            "'condition_settings')");
+  ASSERT_TRUE(tables.step());
+  EXPECT_EQ(tables.int64(0), 3);
+}
+
+}  // namespace
+}  // namespace esc::store
