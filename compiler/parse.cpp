@@ -615,17 +615,12 @@ class Builder {
       for (P::StudyValueContext* item : c->studyValue()) v.items.push_back(study_value(item));
       return v;
     }
-    v.value.where = v.where;
-    v.value.text = v.text;
-    if (c->quantity() != nullptr) {
-      v.value.kind = ast::Value::Kind::Quantity;
-      v.value.q = quantity(c->quantity());
-    } else if (c->ident() != nullptr) {
+    if (c->value() != nullptr) {
+      v.value = value(c->value());
+    } else {
       v.value.kind = ast::Value::Kind::Word;
       v.value.text = name(c->ident()).text;
-    } else {
-      v.value.kind = ast::Value::Kind::Bool;
-      v.value.flag = c->ON() != nullptr || c->TRUE() != nullptr;
+      v.value.where = v.where;
     }
     return v;
   }

@@ -147,7 +147,7 @@ studyItem
 studySetting : key=settingKey studyValue ';'? ;
 settingKey : (ROBOT | ARENA | ident) ('.' ident)? ;
 studyValue
-  : quantity | ON | OFF | TRUE | FALSE | ident
+  : value | ident
   | '[' (studyValue (',' studyValue)*)? ']'
   ;
 
