@@ -31,8 +31,10 @@ void zero_evolved_genomes(control::ControllerSpec& c) {
     }
 }
 
-// The script's experiments and every experiment they need first (evolved behaviors, start
-// genomes), each once, those needed first before those that need them.
+// The script's experiments, its studies' conditions (`STUDY/CONDITION`; a condition that is
+// one of the script's experiments unchanged counts once), and every experiment they need
+// first (evolved behaviors, start genomes), each once, those needed first before those that
+// need them.
 std::vector<eval::ExperimentSpec> whole_campaign(const compiler::CompileResult& compiled) {
   std::vector<eval::ExperimentSpec> out;
   std::set<std::string> seen;
@@ -44,6 +46,13 @@ std::vector<eval::ExperimentSpec> whole_campaign(const compiler::CompileResult& 
     out.push_back(e);
   };
   for (const eval::ExperimentSpec& e : compiled.experiments) add(e);
+  for (const eval::StudySpec& s : compiled.studies)
+    for (const eval::ConditionSpec& c : s.conditions) {
+      if (c.settings.empty() && seen.count(c.experiment.name) != 0) continue;
+      eval::ExperimentSpec x = c.experiment;
+      x.name = s.name + "/" + c.name;
+      add(x);
+    }
   return out;
 }
 
