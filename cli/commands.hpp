@@ -26,6 +26,7 @@ struct RunOptions {
   int runs_at_once = 0;                      // 0: as many as keep every worker busy
   std::filesystem::path out;                 // empty: runs/<experiment or study>-<timestamp>
   std::vector<std::string> settings;         // KEY=VALUE
+  std::vector<std::string> controllers;      // empty: every compared controller
   std::filesystem::path cache;               // empty: <out>/deps (dependency experiments' runs)
 };
 

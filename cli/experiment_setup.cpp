@@ -99,6 +99,7 @@ RunOptions stored_overrides(const store::StoredExperiment& stored, const std::fi
     if (ov.contains("generations")) o.generations = ov["generations"].get<int>();
     if (ov.contains("seed")) o.seed = ov["seed"].get<std::uint64_t>();
     if (ov.contains("set")) o.settings = ov["set"].get<std::vector<std::string>>();
+    if (ov.contains("controllers")) o.controllers = ov["controllers"].get<std::vector<std::string>>();
     if (ov.contains("cache")) o.cache = ov["cache"].get<std::string>();
   } catch (const nlohmann::json::exception& e) {
     throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", dir.string(), e.what()));

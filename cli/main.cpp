@@ -54,6 +54,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--cache", run.cache,
                       "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");
   // One KEY=VALUE per --set, so that `--set epochs=2 FILE` leaves FILE to the command.
+  run_cmd->add_option("--controllers", run.controllers,
+                      "run only these compared controllers, C1,C2 (each one's results do not change)")
+      ->delimiter(',');
   run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off); "
                                              "once per setting")
       ->allow_extra_args(false);

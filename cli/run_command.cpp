@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/controller_selection.hpp"
 #include "cli/dependencies.hpp"
 #include "cli/end_table.hpp"
 #include "cli/load.hpp"
@@ -28,9 +29,10 @@ int run_experiment(const eval::ExperimentSpec& spec, const eval::CampaignOptions
 }
 
 int resume_command(const RunOptions& o) {
-  if (o.runs || o.generations || o.seed || !o.settings.empty() || !o.experiment.empty() || !o.out.empty()) {
+  if (o.runs || o.generations || o.seed || !o.settings.empty() || !o.controllers.empty() || !o.experiment.empty() ||
+      !o.out.empty()) {
     complain("esc: error: --resume continues a run with its own settings: --runs, --generations, --seed, "
-             "--set, --experiment and --out cannot be given with it\n");
+             "--set, --controllers, --experiment and --out cannot be given with it\n");
     return kExitUsage;
   }
   store::ResultsDb db = store::ResultsDb::open(o.resume);
@@ -50,7 +52,7 @@ int resume_command(const RunOptions& o) {
   if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
   eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
   RunOptions replay = stored_overrides(stored, o.resume);
-  if (!apply_overrides(replay, spec)) return kExitBadInput;
+  if (!apply_overrides(replay, spec) || !select_controllers(replay.controllers, spec)) return kExitBadInput;
   replay.threads = o.threads;
   replay.runs_at_once = o.runs_at_once;
   if (!resumable(spec, sources_of(compiled), stored, *script, o.resume)) return kExitBadInput;
@@ -82,7 +84,7 @@ int run_command(const RunOptions& o) {
   if (std::holds_alternative<eval::StudySpec*>(target)) return run_study(o, compiled, *std::get<eval::StudySpec*>(target));
   if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
   eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
-  if (!apply_overrides(o, spec)) return kExitBadInput;
+  if (!apply_overrides(o, spec) || !select_controllers(o.controllers, spec)) return kExitBadInput;
 
   const std::filesystem::path out = o.out.empty() ? default_out(spec.name) : o.out;
   if (!prepare_dependencies(spec, dependency_context(compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file)))

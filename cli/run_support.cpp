@@ -33,6 +33,7 @@ nlohmann::ordered_json overrides_json(const RunOptions& o) {
   if (o.generations) j["generations"] = *o.generations;
   if (o.seed) j["seed"] = *o.seed;
   j["set"] = o.settings;
+  if (!o.controllers.empty()) j["controllers"] = o.controllers;
   // Where dependencies were run or reused, so that a resume finds them again.
   if (!o.cache.empty()) j["cache"] = std::filesystem::absolute(o.cache).lexically_normal().string();
   return j;

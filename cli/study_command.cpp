@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/controller_selection.hpp"
 #include "cli/end_table.hpp"
 #include "cli/load.hpp"
 #include "cli/run_support.hpp"
@@ -41,8 +42,11 @@ bool vary_nothing_given(const RunOptions& o, const eval::StudySpec& study) {
 
 // The command line's overrides on every condition; false after printing an error.
 bool apply_to_conditions(const RunOptions& o, eval::StudySpec& study) {
-  for (eval::ConditionSpec& c : study.conditions)
-    if (!apply_overrides(o, c.experiment, fmt::format("condition `{}`: ", c.name))) return false;
+  for (eval::ConditionSpec& c : study.conditions) {
+    const std::string where = fmt::format("condition `{}`: ", c.name);
+    if (!apply_overrides(o, c.experiment, where) || !select_controllers(o.controllers, c.experiment, where))
+      return false;
+  }
   if (o.seed) study.seed = *o.seed;
   return true;
 }

@@ -31,14 +31,14 @@ _esc() {
       for w in "${words[@]}"; do [[ $w == *.esc && -f $w ]] && script=$w; done
       [[ -n $script ]] && COMPREPLY=($(compgen -W "$(sed -n 's/^[[:space:]]*experiment[[:space:]]\+\([A-Za-z_][A-Za-z0-9_]*\).*/\1/p' "$script")" -- "$cur"))
       return ;;
-    --runs | --generations | --seed | --threads | --runs-at-once | --run | --epochs | --min-time | --set | --controller | --benchmark)
+    --runs | --generations | --seed | --threads | --runs-at-once | --run | --epochs | --min-time | --set | --controller | --controllers | --benchmark)
       return ;;
   esac
 
   local options
   case $command in
     check) options="--help" ;;
-    run) options="--resume --experiment --runs --generations --seed --threads --runs-at-once --out --cache --set --help" ;;
+    run) options="--resume --experiment --runs --generations --seed --threads --runs-at-once --out --cache --set --controllers --help" ;;
     export) options="--format --out --help" ;;
     report) options="--out --help" ;;
     replay) options="--controller --run --epochs --out --script --experiment --seed --animate --help" ;;

@@ -58,12 +58,14 @@ inline Killed kill_when_committed(pid_t child, const fs::path& dir, int at_least
   return k;
 }
 
-// `esc run SCRIPT --generations 100 --seed 5 --threads 1 --out DIR`, killed once `at_least`
-// generations are committed and before all `total` are; wrap in ASSERT_NO_FATAL_FAILURE.
+// `esc run SCRIPT --generations 100 --seed 5 --threads 1 --out DIR EXTRA...`, killed once
+// `at_least` generations are committed and before all `total` are; wrap in ASSERT_NO_FATAL_FAILURE.
 inline void run_killed_halfway(const std::string& script, const fs::path& dir, int at_least, int total,
-                               const std::string& threads = "1") {
-  const pid_t child =
-      spawn_esc({"run", script, "--generations", "100", "--seed", "5", "--threads", threads, "--out", dir.string()});
+                               const std::string& threads = "1", const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{"run", script, "--generations", "100", "--seed", "5", "--threads", threads, "--out",
+                                dir.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const pid_t child = spawn_esc(args);
   ASSERT_GE(child, 0);
   const Killed k = kill_when_committed(child, dir, at_least);
   ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
