@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# Re-runs the paper's campaigns committed under results/paper/<campaign>/, each from its
+# `command` file (one esc command line, run from the repository root, writing into $OUT).
+#
+#   scripts/reproduce-paper.sh [--full] [CAMPAIGN...]   run each as committed; its summary.json
+#                                                        must equal the committed one byte for byte
+#   scripts/reproduce-paper.sh --quick [CAMPAIGN...]    each command shortened (2 runs x 3
+#                                                        generations x 2 epochs): minutes for all,
+#                                                        checks that every campaign still runs
+#   scripts/reproduce-paper.sh --full --write CAMPAIGN  run it and store what it gives in its
+#                                                        directory (summary.json, export.csv,
+#                                                        usage.csv, figures/, version, machine, cost.md)
+#
+# With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
+# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>.
+# Exit status: 0 every campaign ran (and, in full, reproduced), 1 otherwise, 2 bad usage.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=full
+write=0
+campaigns=()
+for arg in "$@"; do
+  case "$arg" in
+    --quick) mode=quick ;;
+    --full) mode=full ;;
+    --write) write=1 ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "reproduce-paper: unknown option $arg (try --help)" >&2; exit 2 ;;
+    *) campaigns+=("${arg%/}") ;;
+  esac
+done
+if [ "$write" = 1 ] && [ "$mode" != full ]; then
+  echo "reproduce-paper: --write stores full-length results only; drop --quick" >&2
+  exit 2
+fi
+
+export ESC=${ESC:-build/cli/esc}
+[ -x "$ESC" ] || { echo "reproduce-paper: no esc binary at $ESC (build first, or set ESC)" >&2; exit 2; }
+root=results/paper
+if [ ${#campaigns[@]} -eq 0 ]; then
+  for d in "$root"/*/; do [ -f "$d/command" ] && campaigns+=("$(basename "$d")"); done
+fi
+[ ${#campaigns[@]} -gt 0 ] || { echo "reproduce-paper: no campaign under $root" >&2; exit 2; }
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+quick_args=(--runs 2 --generations 3 --set epochs=2)
+
+# Wall time, control steps and steps/s per core of a finished run, beside the estimate of
+# `esc bench --campaign` for the same experiments and controllers (an upper bound: it counts
+# every epoch at full length).
+cost_report() {
+  local name=$1 out=$2 seconds=$3 script=$4 dest=$5
+  "$ESC" export "$out" --format csv --out "$scratch/cost.csv" >/dev/null 2>&1
+  "$ESC" bench --campaign "$script" --min-time 0.5 >"$scratch/bench.txt" 2>&1 || true
+  python3 - "$name" "$scratch/cost.csv" "$seconds" "$(nproc)" "$scratch/bench.txt" >"$dest" <<'EOF'
+import csv, sys
+name, table, seconds, cores, bench = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
+rows = list(csv.DictReader(open(table)))
+steps = sum(int(r["steps"]) for r in rows)
+pairs = {(r["experiment"], r["controller"]) for r in rows}
+estimate = 0.0
+lines = []
+for line in open(bench):
+    f = line.split()
+    if len(f) >= 7 and (f[0], f[1]) in pairs:
+        estimate += float(f[-1])
+        lines.append(line.rstrip())
+print(f"# Cost of campaign {name}\n")
+print("| wall time | control steps | cores | steps/s per core | core-hours | `esc bench --campaign` estimate |")
+print("|---|---|---|---|---|---|")
+core_hours = seconds * cores / 3600
+ratio = f" ({estimate / core_hours:.1f}x the cost measured)" if core_hours > 0 and estimate > 0 else ""
+print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {steps / (seconds * cores):,.0f} | {core_hours:.2f} "
+      f"| {estimate:.2f} core-hours at most{ratio} |")
+print("\nThe estimate counts every epoch at full length at the rate of random genomes; its lines:\n")
+print("```")
+print("\n".join(lines) if lines else "(none matched)")
+print("```")
+EOF
+}
+
+# Stores what a full run of a campaign gave, beside its command.
+store_results() {
+  local name=$1 out=$2 seconds=$3
+  local dir=$root/$name
+  cp "$out/summary.json" "$dir/summary.json"
+  "$ESC" export "$out" --format csv --out "$dir/export.csv" >/dev/null 2>&1
+  if "$ESC" export "$out" --table usage --format csv --out "$scratch/usage.csv" >/dev/null 2>&1; then
+    cp "$scratch/usage.csv" "$dir/usage.csv"
+  fi
+  rm -rf "$dir/figures"
+  "$ESC" report "$out" --out "$scratch/report/report.html" >/dev/null 2>&1
+  [ -d "$scratch/report/figures" ] && cp -r "$scratch/report/figures" "$dir/figures"
+  rm -rf "$scratch/report"
+  "$ESC" --version >"$dir/version"
+  {
+    echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //')"
+    echo "cores: $(nproc)"
+    echo "memory: $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo)"
+    echo "system: $(uname -sr), $(. /etc/os-release && echo "$PRETTY_NAME")"
+    echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  } >"$dir/machine"
+  local script
+  script=$(awk '{for (i = 1; i <= NF; ++i) if ($i ~ /\.esc$/) {print $i; exit}}' "$dir/command")
+  cost_report "$name" "$out" "$seconds" "$script" "$dir/cost.md"
+}
+
+failed=0
+for name in "${campaigns[@]}"; do
+  dir=$root/$name
+  if [ ! -f "$dir/command" ]; then
+    echo "reproduce-paper: $name: no $dir/command" >&2
+    failed=1
+    continue
+  fi
+  OUT=$scratch/runs/$name
+  [ -n "${KEEP:-}" ] && OUT=$KEEP/$name
+  rm -rf "$OUT"
+  mkdir -p "$(dirname "$OUT")"
+  export OUT
+  args=()
+  [ "$mode" = quick ] && args=("${quick_args[@]}")
+  echo "== $name ($mode): $(grep -v '^#' "$dir/command" | tr -s ' \\\n' ' ')"
+  start=$(date +%s%N)
+  if ! bash "$dir/command" "${args[@]}" >"$scratch/$name.log" 2>&1; then
+    echo "FAILED $name: the command did not finish; last lines:"
+    tail -5 "$scratch/$name.log"
+    failed=1
+    continue
+  fi
+  seconds=$(awk -v a="$start" -v b="$(date +%s%N)" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')
+  if [ "$mode" = quick ]; then
+    echo "ok     $name ran in ${seconds} s"
+  elif [ "$write" = 1 ]; then
+    store_results "$name" "$OUT" "$seconds"
+    echo "stored $name in $dir (${seconds} s)"
+  elif [ ! -f "$dir/summary.json" ]; then
+    echo "FAILED $name: nothing committed to compare with (run it with --write first)"
+    failed=1
+  elif cmp -s "$OUT/summary.json" "$dir/summary.json"; then
+    echo "ok     $name reproduces its committed summary.json byte for byte (${seconds} s)"
+  else
+    echo "FAILED $name: summary.json differs from the committed one"
+    diff <(tr ',' '\n' <"$dir/summary.json") <(tr ',' '\n' <"$OUT/summary.json") | head -10 || true
+    failed=1
+  fi
+done
+exit $failed
