@@ -84,15 +84,18 @@ void print_comparisons(const std::vector<std::vector<double>>& samples,
   const std::vector<report::Comparison> rows = report::compare(samples, pairs);
   std::size_t width = 26;
   for (const report::Comparison& c : rows) width = std::max(width, label(c.a, c.b).size());
-  fmt::print("\n{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}\n", "pairwise (two-sided)", width,
-             "Welch t", "df", "p", "p Holm", "M-W U", "p", "p Holm", "A12");
+  fmt::print("\n{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}  {:>7} {:>10} {:>10}\n",
+             "pairwise (two-sided)", width, "Welch t", "df", "p", "p Holm", "M-W U", "p", "p Holm", "A12", "sd a/b",
+             "B-F p", "p Holm");
   for (const report::Comparison& c : rows)
-    fmt::print("{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}\n", label(c.a, c.b), width,
-               number_or_na(c.welch.statistic, 3), number_or_na(c.welch.df, 1), p_text(c.welch.p_value),
+    fmt::print("{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}  {:>7} {:>10} {:>10}\n", label(c.a, c.b),
+               width, number_or_na(c.welch.statistic, 3), number_or_na(c.welch.df, 1), p_text(c.welch.p_value),
                p_text(c.welch_p_holm), number_or_na(c.mann_whitney.statistic, 1), p_text(c.mann_whitney.p_value),
-               p_text(c.mann_whitney_p_holm), number_or_na(c.a12, 2));
+               p_text(c.mann_whitney_p_holm), number_or_na(c.a12, 2), number_or_na(c.sd_ratio, 2),
+               p_text(c.spread.p_value), p_text(c.spread_p_holm));
   fmt::print("Holm: p adjusted over the {} comparison{} shown{}, for each test. Mann-Whitney p exact when a sample has "
-             "at most 8 runs and no ties. A12: chance the first beats the second.\n",
+             "at most 8 runs and no ties. A12: chance the first beats the second. B-F: Brown-Forsythe test of equal "
+             "spread (Levene's about the medians).\n",
              rows.size(), rows.size() == 1 ? "" : "s", family);
 }
 

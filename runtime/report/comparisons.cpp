@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace esc::report {
 
@@ -23,7 +24,7 @@ std::vector<double> holm(std::span<const double> p) {
 std::vector<Comparison> compare(std::span<const std::vector<double>> samples,
                                 std::span<const std::pair<std::size_t, std::size_t>> pairs) {
   std::vector<Comparison> out;
-  std::vector<double> welch_p, mw_p;
+  std::vector<double> welch_p, mw_p, spread_p;
   for (const auto& [i, j] : pairs) {
     Comparison c;
     c.a = i;
@@ -31,14 +32,19 @@ std::vector<Comparison> compare(std::span<const std::vector<double>> samples,
     c.welch = welch_t_test(samples[i], samples[j]);
     c.mann_whitney = mann_whitney_u(samples[i], samples[j]);
     c.a12 = vargha_delaney_a12(samples[i], samples[j]);
+    c.spread = brown_forsythe(samples[i], samples[j]);
+    const double sd_a = summarise(samples[i]).sd, sd_b = summarise(samples[j]).sd;
+    c.sd_ratio = sd_b > 0.0 && samples[i].size() > 1 ? sd_a / sd_b : std::numeric_limits<double>::quiet_NaN();
     welch_p.push_back(c.welch.p_value);
     mw_p.push_back(c.mann_whitney.p_value);
+    spread_p.push_back(c.spread.p_value);
     out.push_back(c);
   }
-  const std::vector<double> wh = holm(welch_p), mh = holm(mw_p);
+  const std::vector<double> wh = holm(welch_p), mh = holm(mw_p), sh = holm(spread_p);
   for (std::size_t k = 0; k < out.size(); ++k) {
     out[k].welch_p_holm = wh[k];
     out[k].mann_whitney_p_holm = mh[k];
+    out[k].spread_p_holm = sh[k];
   }
   return out;
 }

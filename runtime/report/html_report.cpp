@@ -91,7 +91,8 @@ json pair_json(const std::string& a, const std::string& b, const Comparison& c) 
           {"welch_p", number(c.welch.p_value)}, {"welch_p_holm", number(c.welch_p_holm)},
           {"mwu_u", number(c.mann_whitney.statistic)}, {"mwu_p", number(c.mann_whitney.p_value)},
           {"mwu_p_holm", number(c.mann_whitney_p_holm)}, {"mwu_exact", c.mann_whitney.exact},
-          {"a12", number(c.a12)}};
+          {"a12", number(c.a12)}, {"sd_ratio", number(c.sd_ratio)}, {"bf_w", number(c.spread.statistic)},
+          {"bf_p", number(c.spread.p_value)}, {"bf_p_holm", number(c.spread_p_holm)}};
 }
 
 json figures_json(const std::vector<NamedFigure>& figures) {

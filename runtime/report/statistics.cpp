@@ -161,7 +161,9 @@ TestResult brown_forsythe(std::span<const double> a, std::span<const double> b) 
   const double grand = (sa.mean * na + sb.mean * nb) / (na + nb);
   const double between = na * (sa.mean - grand) * (sa.mean - grand) + nb * (sb.mean - grand) * (sb.mean - grand);
   const double within = (na - 1.0) * sa.sd * sa.sd + (nb - 1.0) * sb.sd * sb.sd;
-  if (!(within > 0.0) || !std::isfinite(within)) return undefined();
+  // Deviations equal within each sample (always so for two values) leave only rounding in
+  // `within`: the statistic would be rounding noise divided into the between term.
+  if (!(within > 1e-12 * (between + within)) || !std::isfinite(within)) return undefined();
   TestResult r;
   r.df = na + nb - 2.0;
   r.statistic = r.df * between / within;

@@ -52,8 +52,8 @@ inline constexpr double kMaxExactCells = 2e8;
 // NaN when either sample is empty; 0.5 means no effect, 1 that every a beats every b.
 [[nodiscard]] double vargha_delaney_a12(std::span<const double> a, std::span<const double> b);
 
-// Undefined when either sample has fewer than 2 values, or no value differs from its
-// sample's median.
+// Undefined when either sample has fewer than 2 values, or the absolute deviations from the
+// medians are equal within each sample (none differs from its median; two values per sample).
 [[nodiscard]] TestResult brown_forsythe(std::span<const double> a, std::span<const double> b);
 
 }  // namespace esc::report

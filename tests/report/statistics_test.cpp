@@ -171,17 +171,21 @@ TEST(Statistics, ComparisonsAdjustEachTestOverTheFamily) {
   const auto pairs = all_pairs(samples.size());
   ASSERT_EQ(pairs.size(), 3U);
   const std::vector<Comparison> cs = compare(samples, pairs);
-  std::vector<double> welch_p, mw_p;
+  std::vector<double> welch_p, mw_p, bf_p;
   for (const Comparison& c : cs) {
     EXPECT_EQ(c.welch.p_value, welch_t_test(samples[c.a], samples[c.b]).p_value);
     EXPECT_EQ(c.a12, vargha_delaney_a12(samples[c.a], samples[c.b]));
+    EXPECT_EQ(c.spread.p_value, brown_forsythe(samples[c.a], samples[c.b]).p_value);
+    EXPECT_DOUBLE_EQ(c.sd_ratio, summarise(samples[c.a]).sd / summarise(samples[c.b]).sd);
     welch_p.push_back(c.welch.p_value);
     mw_p.push_back(c.mann_whitney.p_value);
+    bf_p.push_back(c.spread.p_value);
   }
-  const std::vector<double> wh = holm(welch_p), mh = holm(mw_p);
+  const std::vector<double> wh = holm(welch_p), mh = holm(mw_p), bh = holm(bf_p);
   for (std::size_t k = 0; k < cs.size(); ++k) {
     EXPECT_EQ(cs[k].welch_p_holm, wh[k]);
     EXPECT_EQ(cs[k].mann_whitney_p_holm, mh[k]);
+    EXPECT_EQ(cs[k].spread_p_holm, bh[k]);
     EXPECT_GE(cs[k].welch_p_holm, cs[k].welch.p_value);
   }
 }
@@ -196,6 +200,8 @@ TEST(Statistics, UndefinedTestsGiveNaN) {
   EXPECT_TRUE(std::isnan(welch_t_test(one, flat).statistic));   // never a number for an undefined test
   EXPECT_TRUE(std::isnan(brown_forsythe(one, flat).p_value));
   EXPECT_TRUE(std::isnan(brown_forsythe(flat, flat).p_value));
+  // Two values per sample: each sample's two deviations from its median are equal.
+  EXPECT_TRUE(std::isnan(brown_forsythe(std::vector<double>{1.1, 1.7}, std::vector<double>{3.3, 9.1}).p_value));
   EXPECT_TRUE(std::isnan(vargha_delaney_a12({}, flat)));
   // Identical samples with spread: no difference at all.
   const std::vector<double> x = {1, 2, 3, 4};

@@ -149,13 +149,15 @@
     card.appendChild(el('h3', {text: 'Pairwise comparisons (two-sided)'}));
     const p = el('table');
     p.appendChild(el('tr', {}, ['pair', 'Welch t', 'df', 'Welch p', 'p Holm', 'Mann-Whitney U', 'Mann-Whitney p',
-                                'p Holm', 'A12'].map(h => el('th', {text: h}))));
+                                'p Holm', 'A12', 'sd ratio', 'Brown-Forsythe p', 'p Holm'].map(h => el('th', {text: h}))));
     for (const r of pairs) {
       const row = el('tr', {}, [label(r), fmt(r.welch_t, 3), fmt(r.welch_df, 1), fmtP(r.welch_p),
                                 fmtP(r.welch_p_holm), fmt(r.mwu_u, 1), fmtP(r.mwu_p) + (r.mwu_exact ? ' (exact)' : ''),
-                                fmtP(r.mwu_p_holm), fmt(r.a12, 2)].map(v => el('td', {text: v})));
+                                fmtP(r.mwu_p_holm), fmt(r.a12, 2), fmt(r.sd_ratio, 2), fmtP(r.bf_p),
+                                fmtP(r.bf_p_holm)].map(v => el('td', {text: v})));
       if (r.welch_p_holm !== null && r.welch_p_holm < 0.05) row.children[4].className = 'significant';
       if (r.mwu_p_holm !== null && r.mwu_p_holm < 0.05) row.children[7].className = 'significant';
+      if (r.bf_p_holm !== null && r.bf_p_holm < 0.05) row.children[11].className = 'significant';
       p.appendChild(row);
     }
     card.appendChild(p);
@@ -163,7 +165,9 @@
       'Welch: t-test with unequal variances. Mann-Whitney: exact when a sample has at most 8 runs and there are ' +
       'no ties, else the normal approximation with tie and continuity corrections (as SciPy\'s method "auto"). ' +
       `Holm: p adjusted over ${family}, for each test; bold: adjusted p < 0.05. A12: Vargha-Delaney ` +
-      'effect size, the chance that a run of the first beats a run of the second (0.5: no effect). n/a: the test ' +
+      'effect size, the chance that a run of the first beats a run of the second (0.5: no effect). sd ratio: sd of ' +
+      'the first over sd of the second. Brown-Forsythe: test of equal spread (Levene\'s test about the medians). ' +
+      'n/a: the test ' +
       'is undefined for these samples.'}));
   }
 
