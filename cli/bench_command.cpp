@@ -99,6 +99,13 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
-int bench_command(const BenchOptions& o) { return o.campaign.empty() ? bench_workloads(o) : campaign_command(o); }
+int bench_command(const BenchOptions& o) {
+  if (!o.campaign.empty()) return campaign_command(o);
+  if (!o.profile.empty()) return bench_profile(o);
+  // Google Benchmark's own arguments select its items: the fractions are then left out.
+  if (o.benchmark_args.empty())
+    if (const int status = bench_reference(o); status != kExitOk) return status;
+  return bench_workloads(o);
+}
 
 }  // namespace esc::cli

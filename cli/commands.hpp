@@ -66,6 +66,8 @@ struct BenchOptions {
   double min_time_s = 0.5;
   std::vector<std::string> benchmark_args;   // passed to Google Benchmark
   std::filesystem::path campaign;            // estimate this script's campaign instead
+  std::string profile;                       // run this one loop only (for a profiler)
+  int evaluations = 200;                     // items of --profile's loop
 };
 
 int bench_command(const BenchOptions& options);

@@ -101,7 +101,13 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--min-time", bench.min_time_s, "seconds per benchmark")->check(CLI::PositiveNumber);
   bench_cmd->add_option("--campaign", bench.campaign,
                         "estimate the cost of every experiment of a script from measured rates");
-  bench_cmd->add_option("--benchmark", bench.benchmark_args, "arguments for Google Benchmark (--benchmark_filter=...)");
+  bench_cmd->add_option("--benchmark", bench.benchmark_args,
+                        "arguments for Google Benchmark (--benchmark_filter=...); its items only, no fractions");
+  bench_cmd->add_option("--profile", bench.profile,
+                        "run one loop of the fractions alone, for a profiler: obstacle, energy, supervisor (each also "
+                        "with -plain), pressed, free");
+  bench_cmd->add_option("--evaluations", bench.evaluations, "items of the --profile loop (default 200)")
+      ->check(CLI::PositiveNumber);
 
   if (unknown_command(app, argc, argv)) return kExitUsage;
   try {

@@ -150,23 +150,30 @@ const Controller* Controller::sub_controller(std::size_t i) const noexcept {
 }
 
 WheelCommand Controller::step(expr::Frame& frame) noexcept {
-  const std::span<const double> out = net_.forward(frame);
+  net_.forward(frame);
   if (spec_->head == Head::Classical) {
     last_action_ = -1;
-    return {out[0], out[1]};
+    return {net_.output(0), net_.output(1)};
   }
+  // Argmax over the activated outputs, not the sums: two sums that saturate the logistic
+  // give equal outputs, and then the first wins.
   std::size_t best = 0;
+  double best_out = net_.output(0);
   const std::size_t n = usage_.size();  // actions or behaviors
   for (std::size_t i = 1; i < n; ++i)
-    if (out[i] > out[best]) best = i;  // strict: the first of equal outputs wins
+    if (const double o = net_.output(i); o > best_out) {  // strict: the first of equal outputs wins
+      best = i;
+      best_out = o;
+    }
   last_action_ = static_cast<int>(best);
   ++usage_[best];
 
   if (spec_->head == Head::Symbolic) {
+    // Only the chosen action's parameters are read, so only they are activated.
     const Behavior& action = spec_->actions[best];
     const std::size_t first = param_offset_[best];
     for (std::size_t k = 0; k < action.params.size(); ++k)
-      frame[expr::slot::param + k] = out[first + k];
+      frame[expr::slot::param + k] = net_.output(first + k);
     return run_behavior(action, frame);
   }
 
