@@ -1,6 +1,9 @@
 #include "runtime/control/mlp.hpp"
 
 #include <algorithm>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -8,23 +11,56 @@ namespace esc::control {
 
 namespace {
 
-// One neuron's weighted sum w . [1; x] over `cols` columns, summed in a fixed order: even
-// and odd columns in two running sums, added, then an odd last column. This is the order of
-// Eigen 3.4's row-major matrix-vector product with two-double packets (SSE2), which computed
-// every result before this loop replaced it (docs/decisions.md, "Networks"): the same
-// doubles, without Eigen's blocking and zeroing around a 9- or 15-column product. Fixed here,
-// it no longer depends on the packet width Eigen picks for the build's target.
-inline double neuron_sum(const double* w, const double* x, std::size_t cols) noexcept {
-  double even = 0.0;
-  double odd = 0.0;
+// The weighted sums w . [1; x] of `Rows` neighbouring neurons (rows of `cols` columns from
+// `w`), each summed in a fixed order: even and odd columns in two running sums, added, then
+// an odd last column. This is the order of Eigen 3.4's row-major matrix-vector product with
+// two-double packets (SSE2), which computed every result before this loop replaced it
+// (docs/decisions.md, "Networks"): the same doubles, without Eigen's blocking and zeroing
+// around a 9- or 15-column product. Several rows at once share the loads of x; SSE2 where the
+// target has it (every x86-64), the same sums in scalar code elsewhere. Fixed here, the order
+// no longer depends on the packet width Eigen picks for the build's target.
+template <std::size_t Rows>
+inline void neuron_sums(const double* w, const double* x, std::size_t cols, double* out) noexcept {
+#if defined(__SSE2__)
+  // Lane 0 holds the even columns' sum, lane 1 the odd columns'.
+  __m128d acc[Rows];
+  for (std::size_t r = 0; r < Rows; ++r) acc[r] = _mm_setzero_pd();
   std::size_t j = 0;
   for (; j + 2 <= cols; j += 2) {
-    even += w[j] * x[j];
-    odd += w[j + 1] * x[j + 1];
+    const __m128d xj = _mm_loadu_pd(x + j);
+    for (std::size_t r = 0; r < Rows; ++r) acc[r] = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(w + r * cols + j), xj), acc[r]);
   }
-  double sum = even + odd;
-  if (j < cols) sum += w[j] * x[j];
-  return sum;
+  for (std::size_t r = 0; r < Rows; ++r) {
+    double sum = _mm_cvtsd_f64(_mm_add_sd(acc[r], _mm_unpackhi_pd(acc[r], acc[r])));
+    if (j < cols) sum += w[r * cols + j] * x[j];
+    out[r] = sum;
+  }
+#else
+  for (std::size_t r = 0; r < Rows; ++r) {
+    const double* row = w + r * cols;
+    double even = 0.0;
+    double odd = 0.0;
+    std::size_t j = 0;
+    for (; j + 2 <= cols; j += 2) {
+      even += row[j] * x[j];
+      odd += row[j + 1] * x[j + 1];
+    }
+    double sum = even + odd;
+    if (j < cols) sum += row[j] * x[j];
+    out[r] = sum;
+  }
+#endif
+}
+
+// One layer's sums into out[0 .. rows), four neurons at a time.
+inline void layer_sums(const double* w, const double* x, std::size_t rows, std::size_t cols, double* out) noexcept {
+  std::size_t r = 0;
+  for (; r + 4 <= rows; r += 4) neuron_sums<4>(w + r * cols, x, cols, out + r);
+  if (r + 2 <= rows) {
+    neuron_sums<2>(w + r * cols, x, cols, out + r);
+    r += 2;
+  }
+  if (r < rows) neuron_sums<1>(w + r * cols, x, cols, out + r);
 }
 
 }  // namespace
@@ -92,7 +128,9 @@ void Mlp::forward(const expr::Frame& frame) noexcept {
     const double* w = weights_ + L.weights;
     const double* x = v + L.in;
     double* out = v + L.out;
-    for (std::size_t r = 0; r < L.rows; ++r, w += L.cols) out[r] = activate(neuron_sum(w, x, L.cols), L.activation);
+    layer_sums(w, x, L.rows, L.cols, out);
+    if (L.activation != Activation::Linear)
+      for (std::size_t r = 0; r < L.rows; ++r) out[r] = activate(out[r], L.activation);
   }
   // Elman: this step's hidden activations are the next step's context (layer 0 has run,
   // so overwriting its input block is safe).

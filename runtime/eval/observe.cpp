@@ -35,10 +35,10 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   frame[expr::slot::ground] = floor.ground ? 1.0 : 0.0;
   frame[expr::slot::new_cell] = floor.new_cell ? 1.0 : 0.0;
   frame[expr::slot::cells_visited] = floor.cells_visited;
-  for (expr::Slot z = 0; z < expr::kMaxZones; ++z)
-    frame[expr::slot::in_zone + z] = (floor.in_zone >> z) & 1U;
-  for (expr::Slot l = 0; l < expr::kMaxLights; ++l)
-    frame[expr::slot::reached + l] = (floor.reached >> l) & 1U;
+  // The slots of zones and lights the arena does not have stay 0: their bits are never set.
+  const sim::ArenaSpec& arena = world.arena();
+  for (expr::Slot z = 0; z < arena.zones.size(); ++z) frame[expr::slot::in_zone + z] = (floor.in_zone >> z) & 1U;
+  for (expr::Slot l = 0; l < arena.lights.size(); ++l) frame[expr::slot::reached + l] = (floor.reached >> l) & 1U;
 }
 
 void observe_light(const std::array<double, sim::kLightSensors>& light,

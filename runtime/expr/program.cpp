@@ -64,6 +64,8 @@ void Program::push_op(Op op) {
 }
 
 double Program::eval(std::span<const double> frame) const noexcept {
+  // A lone observable or constant (a stop condition, an action's `p`): no stack to fill.
+  if (code_.size() == 1) return code_[0].op == Op::Load ? frame[code_[0].slot] : code_[0].value;
   std::array<double, kMaxStack> s;  // NOLINT: filled before read
   std::size_t top = 0;              // number of values on the stack
   for (const Instr& in : code_) {

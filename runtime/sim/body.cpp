@@ -37,7 +37,8 @@ btScalar bt(double v) { return static_cast<btScalar>(v); }
 }  // namespace
 
 Body::Body(const ArenaSpec& a, const KheperaParams& r, double substep_s, const StaticGeometry2D& geometry)
-    : radius_m_(r.body_radius_m), substep_s_(substep_s), geometry_(geometry) {
+    : radius_m_(r.body_radius_m), substep_s_(substep_s), max_travel_m_(r.motor.max_speed_mps * substep_s),
+      geometry_(geometry) {
   disable_bullet_profiling();
   config_ = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher_ = std::make_unique<btCollisionDispatcher>(config_.get());
@@ -174,6 +175,8 @@ void Body::place(const Pose& pose) {
   world_->addRigidBody(body_.get());
   solver_->reset();
   solver_->setRandSeed(0);
+  inertia_stale_ = false;
+  update_clearance();
 }
 
 }  // namespace esc::sim

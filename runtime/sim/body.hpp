@@ -57,22 +57,29 @@ class Body {
     body_->setLinearVelocity(btVector3(static_cast<btScalar>(v.x_mps), static_cast<btScalar>(v.y_mps), 0));
     body_->setAngularVelocity(btVector3(0, 0, static_cast<btScalar>(v.turn_radps)));
     const double keep = radius_m_ + v.travel_m + kFreeSpaceMargin_m;
-    if (has_contact_points() || geometry_.clearance(position(), keep) <= keep) {
+    if (has_contact_points() || clearance_m_ <= keep) {
+      // The solver reads the world inertia tensor, which the free-space path leaves behind.
+      if (inertia_stale_) body_->updateInertiaTensor();
+      inertia_stale_ = false;
       world_->stepSimulation(static_cast<btScalar>(substep_s_), 0, static_cast<btScalar>(substep_s_));
-      return;
+    } else {
+      btTransform next;
+      btTransformUtil::integrateTransform(body_->getWorldTransform(), body_->getLinearVelocity(),
+                                          body_->getAngularVelocity(), static_cast<btScalar>(substep_s_), next);
+      // btRigidBody::proceedToTransform(next) but for the world inertia tensor, a function of the
+      // orientation alone that only the solver reads: it is brought up to date before a step.
+      body_->setInterpolationWorldTransform(next);
+      body_->setInterpolationLinearVelocity(body_->getLinearVelocity());
+      body_->setInterpolationAngularVelocity(body_->getAngularVelocity());
+      body_->setWorldTransform(next);
+      inertia_stale_ = true;
     }
-    btTransform next;
-    btTransformUtil::integrateTransform(body_->getWorldTransform(), body_->getLinearVelocity(),
-                                        body_->getAngularVelocity(), static_cast<btScalar>(substep_s_), next);
-    body_->proceedToTransform(next);
+    update_clearance();
   }
 
   // Whether the body touches a wall or an obstacle (its clearance is at most
   // kContactTolerance_m; the contact solver stops it at about 0).
-  [[nodiscard]] bool touching() const noexcept {
-    const double reach_m = radius_m_ + kContactTolerance_m;
-    return geometry_.clearance(position(), reach_m) <= reach_m;
-  }
+  [[nodiscard]] bool touching() const noexcept { return clearance_m_ <= radius_m_ + kContactTolerance_m; }
 
   [[nodiscard]] Pose pose() const noexcept {
     const btTransform& tr = body_->getWorldTransform();
@@ -94,6 +101,13 @@ class Body {
   void warm_up(const ArenaSpec& arena);
   void add_static_box(double cx, double cy, double hx, double hy, double angle_rad);
   void add_static(std::unique_ptr<btCollisionShape> shape, double x, double y, double angle_rad);
+  // The clearance at the body's position, exact up to the farthest any substep's test looks
+  // (radius, a substep's longest travel, the margin): each substep computes it once, for its
+  // own contact test and the next substep's free-space test.
+  void update_clearance() noexcept {
+    const double cutoff_m = radius_m_ + max_travel_m_ + 2 * kFreeSpaceMargin_m;
+    clearance_m_ = geometry_.clearance(position(), cutoff_m);
+  }
   [[nodiscard]] bool has_contact_points() const noexcept {
     const int n = dispatcher_->getNumManifolds();
     for (int i = 0; i < n; ++i)
@@ -103,7 +117,10 @@ class Body {
 
   double radius_m_;
   double substep_s_;
+  double max_travel_m_;          // the top wheel speed over a substep
   const StaticGeometry2D& geometry_;
+  double clearance_m_ = 0.0;     // at the current position (update_clearance)
+  bool inertia_stale_ = false;   // the world inertia tensor is of an earlier orientation
 
   // The dynamics world is declared last so it is destroyed first.
   std::unique_ptr<btDefaultCollisionConfiguration> config_;

@@ -36,9 +36,9 @@ class DifferentialDrive {
     const double v_mps = 0.5 * (left_mps + right_mps);
     const double turn_radps = (right_mps - left_mps) * inv_wheel_base_per_m_;
     const double half_turn_rad = 0.5 * turn_radps * substep_s_;
-    const double chord_mps = half_turn_rad == 0.0 ? v_mps : v_mps * std::sin(half_turn_rad) / half_turn_rad;
     const double c = std::cos(half_turn_rad);
     const double s = std::sin(half_turn_rad);
+    const double chord_mps = half_turn_rad == 0.0 ? v_mps : v_mps * s / half_turn_rad;
     return {chord_mps * (c * heading.x - s * heading.y), chord_mps * (s * heading.x + c * heading.y), turn_radps,
             std::abs(chord_mps) * substep_s_};
   }

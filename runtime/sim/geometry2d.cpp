@@ -51,76 +51,125 @@ double StaticGeometry2D::clearance_from(double best, Vec2 p, double cutoff_m) co
   return best;
 }
 
+namespace {
+
+// What one ray meets, as a distance that may lower its t: each kernel gives kNoHit where it
+// meets nothing.
+
+// Where a ray from (ox, oy) along (dx, dy) leaves the walled rectangle [0, w] x [0, h] through
+// one of `walls`, not before its origin (0 from an origin beyond a wall).
+inline double wall_exit(double w, double h, StaticGeometry2D::Walls walls, double ox, double oy, double dx,
+                        double dy) noexcept {
+  double exit = StaticGeometry2D::kNoHit;
+  if (walls.right && dx > 0.0) exit = std::min(exit, (w - ox) / dx);
+  if (walls.left && dx < 0.0) exit = std::min(exit, -ox / dx);
+  if (walls.top && dy > 0.0) exit = std::min(exit, (h - oy) / dy);
+  if (walls.bottom && dy < 0.0) exit = std::min(exit, -oy / dy);
+  return std::max(exit, 0.0);
+}
+
+// The first point of a circle of radius^2 r2 about (cx, cy); 0 from an origin inside it.
+inline double circle_hit(double cx, double cy, double r2, double ox, double oy, double dx, double dy) noexcept {
+  const double px = ox - cx;
+  const double py = oy - cy;
+  const double cc = px * px + py * py - r2;
+  if (cc <= 0.0) return 0.0;  // origin inside the cylinder
+  const double b = px * dx + py * dy;
+  if (b >= 0.0) return StaticGeometry2D::kNoHit;  // pointing away from the centre and outside
+  const double disc = b * b - cc;
+  if (disc < 0.0) return StaticGeometry2D::kNoHit;
+  return -b - std::sqrt(disc);
+}
+
+}  // namespace
+
+double StaticGeometry2D::box_hit(const Box& bx, double ox, double oy, double dx, double dy) noexcept {
+  // Origin and direction in the box frame, then the slab test.
+  const double wx = ox - bx.cx;
+  const double wy = oy - bx.cy;
+  const double px = bx.c * wx + bx.s * wy;
+  const double py = -bx.s * wx + bx.c * wy;
+  const double ux = bx.c * dx + bx.s * dy;
+  const double uy = -bx.s * dx + bx.c * dy;
+  double lo = -kNoHit;
+  double hi = kNoHit;
+  if (ux != 0.0) {
+    const double a = (-bx.hx - px) / ux;
+    const double b = (bx.hx - px) / ux;
+    lo = std::max(lo, std::min(a, b));
+    hi = std::min(hi, std::max(a, b));
+  } else if (std::abs(px) > bx.hx) {
+    return kNoHit;
+  }
+  if (uy != 0.0) {
+    const double a = (-bx.hy - py) / uy;
+    const double b = (bx.hy - py) / uy;
+    lo = std::max(lo, std::min(a, b));
+    hi = std::min(hi, std::max(a, b));
+  } else if (std::abs(py) > bx.hy) {
+    return kNoHit;
+  }
+  if (hi < 0.0 || lo > hi) return kNoHit;
+  return std::max(lo, 0.0);
+}
+
+bool StaticGeometry2D::near_walls(Vec2 centre, double reach_m) const noexcept {
+  return centre.x < reach_m || width_ - centre.x < reach_m || centre.y < reach_m || height_ - centre.y < reach_m;
+}
+
 void StaticGeometry2D::cast_rays(Vec2 centre, double reach_m, int n, const double* ox,
                                  const double* oy, const double* dx, const double* dy,
                                  double* t) const noexcept {
-  // Walls: the ray leaves the rectangle [0, w] x [0, h] at the smallest exit distance.
-  if (centre.x < reach_m || width_ - centre.x < reach_m || centre.y < reach_m ||
-      height_ - centre.y < reach_m) {
-    for (int i = 0; i < n; ++i) {
-      double exit = kNoHit;
-      if (dx[i] > 0.0) exit = std::min(exit, (width_ - ox[i]) / dx[i]);
-      if (dx[i] < 0.0) exit = std::min(exit, -ox[i] / dx[i]);
-      if (dy[i] > 0.0) exit = std::min(exit, (height_ - oy[i]) / dy[i]);
-      if (dy[i] < 0.0) exit = std::min(exit, -oy[i] / dy[i]);
-      t[i] = std::min(t[i], std::max(exit, 0.0));
-    }
+  if (near_walls(centre, reach_m)) {
+    const Walls all{true, true, true, true};
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], wall_exit(width_, height_, all, ox[i], oy[i], dx[i], dy[i]));
   }
   for (const Circle& c : circles_) {
-    const double ex = centre.x - c.cx;
-    const double ey = centre.y - c.cy;
-    const double reach = reach_m + c.r;
-    if (ex * ex + ey * ey > reach * reach) continue;
+    if (!within(centre.x - c.cx, centre.y - c.cy, reach_m + c.r)) continue;
     const double r2 = c.r * c.r;
-    for (int i = 0; i < n; ++i) {
-      const double px = ox[i] - c.cx;
-      const double py = oy[i] - c.cy;
-      const double cc = px * px + py * py - r2;
-      if (cc <= 0.0) {  // origin inside the cylinder
-        t[i] = 0.0;
-        continue;
-      }
-      const double b = px * dx[i] + py * dy[i];
-      if (b >= 0.0) continue;  // pointing away from the centre and outside
-      const double disc = b * b - cc;
-      if (disc < 0.0) continue;
-      t[i] = std::min(t[i], -b - std::sqrt(disc));
-    }
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], circle_hit(c.cx, c.cy, r2, ox[i], oy[i], dx[i], dy[i]));
   }
   for (const Box& bx : boxes_) {
-    const double ex = centre.x - bx.cx;
-    const double ey = centre.y - bx.cy;
-    const double reach = reach_m + bx.bound;
-    if (ex * ex + ey * ey > reach * reach) continue;
-    for (int i = 0; i < n; ++i) {
-      // Origin and direction in the box frame, then the slab test.
-      const double wx = ox[i] - bx.cx;
-      const double wy = oy[i] - bx.cy;
-      const double px = bx.c * wx + bx.s * wy;
-      const double py = -bx.s * wx + bx.c * wy;
-      const double ux = bx.c * dx[i] + bx.s * dy[i];
-      const double uy = -bx.s * dx[i] + bx.c * dy[i];
-      double lo = -kNoHit;
-      double hi = kNoHit;
-      if (ux != 0.0) {
-        const double a = (-bx.hx - px) / ux;
-        const double b = (bx.hx - px) / ux;
-        lo = std::max(lo, std::min(a, b));
-        hi = std::min(hi, std::max(a, b));
-      } else if (std::abs(px) > bx.hx) {
-        continue;
-      }
-      if (uy != 0.0) {
-        const double a = (-bx.hy - py) / uy;
-        const double b = (bx.hy - py) / uy;
-        lo = std::max(lo, std::min(a, b));
-        hi = std::min(hi, std::max(a, b));
-      } else if (std::abs(py) > bx.hy) {
-        continue;
-      }
-      if (hi < 0.0 || lo > hi) continue;
-      t[i] = std::min(t[i], std::max(lo, 0.0));
-    }
+    if (!within(centre.x - bx.cx, centre.y - bx.cy, reach_m + bx.bound)) continue;
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], box_hit(bx, ox[i], oy[i], dx[i], dy[i]));
+  }
+}
+
+StaticGeometry2D::Nearby StaticGeometry2D::nearby() const {
+  Nearby n;
+  n.circles.reserve(circles_.size());
+  n.boxes.reserve(boxes_.size());
+  return n;
+}
+
+void StaticGeometry2D::gather(Vec2 centre, double reach_m, Nearby& out) const noexcept {
+  const bool walls = near_walls(centre, reach_m);
+  out.walls = {walls, walls, walls, walls};
+  out.circles.clear();
+  out.boxes.clear();
+  for (std::size_t i = 0; i < circles_.size(); ++i)
+    if (within(centre.x - circles_[i].cx, centre.y - circles_[i].cy, reach_m + circles_[i].r))
+      out.circles.push_back(static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < boxes_.size(); ++i)
+    if (within(centre.x - boxes_[i].cx, centre.y - boxes_[i].cy, reach_m + boxes_[i].bound))
+      out.boxes.push_back(static_cast<std::uint32_t>(i));
+}
+
+void StaticGeometry2D::cast_fan(const Nearby& near, Vec2 origin, double range_m, int n, const double* dx,
+                                const double* dy, double* t) const noexcept {
+  const Walls walls = fan_walls(near, origin, range_m);
+  if (walls.any())
+    for (int i = 0; i < n; ++i)
+      t[i] = std::min(t[i], wall_exit(width_, height_, walls, origin.x, origin.y, dx[i], dy[i]));
+  for (const std::uint32_t k : near.circles) {
+    if (!fan_meets_circle(k, origin, range_m)) continue;
+    const Circle& c = circles_[k];
+    const double r2 = c.r * c.r;
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], circle_hit(c.cx, c.cy, r2, origin.x, origin.y, dx[i], dy[i]));
+  }
+  for (const std::uint32_t k : near.boxes) {
+    if (!fan_meets_box(k, origin, range_m)) continue;
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], box_hit(boxes_[k], origin.x, origin.y, dx[i], dy[i]));
   }
 }
 

@@ -3,6 +3,7 @@
 // (for the IR sensors) and signed clearances (for collisions and free start poses) against
 // the walled rectangle, rotated boxes and cylinders. The arena never moves, so these 2D
 // answers are exact and much cheaper than Bullet's ray tests.
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -31,12 +32,67 @@ class StaticGeometry2D {
   void cast_rays(Vec2 centre, double reach_m, int n, const double* ox, const double* oy,
                  const double* dx, const double* dy, double* t) const noexcept;
 
+  // The walls and obstacles within some reach of a point, found once for several fans of
+  // rays (the IR sensors); sized for every obstacle by nearby(), so gathering never allocates.
+  struct Walls {
+    bool left = false, right = false, bottom = false, top = false;
+    [[nodiscard]] bool any() const noexcept { return left || right || bottom || top; }
+  };
+  struct Nearby {
+    Walls walls;
+    std::vector<std::uint32_t> circles, boxes;   // obstacle indices
+    [[nodiscard]] bool empty() const noexcept { return !walls.any() && circles.empty() && boxes.empty(); }
+  };
+  [[nodiscard]] Nearby nearby() const;
+  // The shapes cast_rays(centre, reach_m, ...) tests.
+  void gather(Vec2 centre, double reach_m, Nearby& out) const noexcept;
+
+  // Lowers t[i] for `n` rays from one origin exactly as cast_rays does, against the shapes
+  // of `near` (gathered for a reach that holds every ray), skipping those farther than
+  // `range_m` from the origin: when every t[i] <= range_m they cannot lower it.
+  void cast_fan(const Nearby& near, Vec2 origin, double range_m, int n, const double* dx, const double* dy,
+                double* t) const noexcept;
+  // Whether cast_fan from `origin` tests any shape at all (when not, it changes no t).
+  [[nodiscard]] bool fan_meets_any(const Nearby& near, Vec2 origin, double range_m) const noexcept {
+    if (fan_walls(near, origin, range_m).any()) return true;
+    for (const std::uint32_t k : near.circles)
+      if (fan_meets_circle(k, origin, range_m)) return true;
+    for (const std::uint32_t k : near.boxes)
+      if (fan_meets_box(k, origin, range_m)) return true;
+    return false;
+  }
+
  private:
   [[nodiscard]] double clearance_from(double best, Vec2 p, double cutoff_m) const noexcept;
 
   struct Box {    // centre, half extents, rotation as cos/sin, bounding radius
     double cx, cy, hx, hy, c, s, bound;
   };
+  // Where a ray first meets the box (0 from inside it), kNoHit if it does not.
+  [[nodiscard]] static double box_hit(const Box& b, double ox, double oy, double dx, double dy) noexcept;
+  [[nodiscard]] bool near_walls(Vec2 centre, double reach_m) const noexcept;
+  // Whether the offset (ex, ey) is no longer than reach_m.
+  [[nodiscard]] static bool within(double ex, double ey, double reach_m) noexcept {
+    return ex * ex + ey * ey <= reach_m * reach_m;
+  }
+  // cast_fan's tests: which of `near`'s walls and obstacles a fan of rays of length at most
+  // range_m from `origin` may meet. A shape farther than range_m from the origin, by a margin
+  // far above rounding, is met beyond every t if at all; for a wall, the distance along a
+  // unit direction to its line, (w - x) / dx with 0 < dx <= 1, is never below w - x.
+  static constexpr double kFanMargin_m = 1e-9;
+  [[nodiscard]] Walls fan_walls(const Nearby& near, Vec2 origin, double range_m) const noexcept {
+    const double limit_m = range_m + kFanMargin_m;
+    return {near.walls.left && origin.x < limit_m, near.walls.right && width_ - origin.x < limit_m,
+            near.walls.bottom && origin.y < limit_m, near.walls.top && height_ - origin.y < limit_m};
+  }
+  [[nodiscard]] bool fan_meets_circle(std::uint32_t k, Vec2 origin, double range_m) const noexcept {
+    const Circle& c = circles_[k];
+    return within(origin.x - c.cx, origin.y - c.cy, range_m + kFanMargin_m + c.r);
+  }
+  [[nodiscard]] bool fan_meets_box(std::uint32_t k, Vec2 origin, double range_m) const noexcept {
+    const Box& b = boxes_[k];
+    return within(origin.x - b.cx, origin.y - b.cy, range_m + kFanMargin_m + b.bound);
+  }
   struct Circle {
     double cx, cy, r;
   };

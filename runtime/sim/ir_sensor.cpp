@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <numbers>
 
+#include "runtime/sim/validate.hpp"
+
 namespace esc::sim {
 
 namespace {
@@ -18,16 +20,17 @@ double enki_ir_curve(double distance_m) noexcept {
          (x * x - 2.0 * kEnkiIrX0_cm * x + kEnkiIrC_cm2);
 }
 
-IrModel::IrModel(const KheperaParams& robot)
+IrModel::IrModel(const KheperaParams& robot, const StaticGeometry2D& geometry)
     : body_radius_m_(robot.body_radius_m),
       range_m_(robot.ir.range_m),
       noise_sd_(robot.ir.noise_sd),
       rays_(robot.ir.rays),
       curve_at_range_(enki_ir_curve(robot.ir.range_m)),
-      curve_scale_(1.0 / (enki_ir_curve(0.0) - enki_ir_curve(robot.ir.range_m))) {
+      curve_scale_(1.0 / (enki_ir_curve(0.0) - enki_ir_curve(robot.ir.range_m))),
+      geometry_(geometry),
+      near_(geometry.nearby()) {
   const auto n = static_cast<std::size_t>(8 * rays_);
   for (auto* v : {&mount_x_, &mount_y_, &dir_x_, &dir_y_}) v->resize(n);
-  for (auto* v : {&ox_, &oy_, &dx_, &dy_, &t_}) v->resize(n);
   for (int s = 0; s < 8; ++s) {
     const double mount = kIrMountDeg[static_cast<std::size_t>(s)] * kRadPerDeg;
     const double facing = kIrFacingDeg[static_cast<std::size_t>(s)] * kRadPerDeg;
@@ -49,24 +52,34 @@ double IrModel::response(double distance_m) const noexcept {
   return std::clamp(v, 0.0, 1.0);
 }
 
-void IrModel::read(const Pose& pose, const StaticGeometry2D& geometry,
-                   std::array<double, 8>& out, Rng& rng) const noexcept {
+void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const noexcept {
+  geometry_.gather({pose.x_m, pose.y_m}, body_radius_m_ + range_m_, near_);
+  if (near_.empty()) {
+    for (double& v : out) {
+      v = response(range_m_);
+      if (noise_sd_ > 0.0) v = std::clamp(v + noise_sd_ * rng.normal(), 0.0, 1.0);
+    }
+    return;
+  }
   const double c = std::cos(pose.heading_rad);
   const double s = std::sin(pose.heading_rad);
-  const int n = 8 * rays_;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
-    ox_[i] = pose.x_m + c * mount_x_[i] - s * mount_y_[i];
-    oy_[i] = pose.y_m + s * mount_x_[i] + c * mount_y_[i];
-    dx_[i] = c * dir_x_[i] - s * dir_y_[i];
-    dy_[i] = s * dir_x_[i] + c * dir_y_[i];
-    t_[i] = range_m_;
-  }
-  geometry.cast_rays({pose.x_m, pose.y_m}, body_radius_m_ + range_m_, n, ox_.data(), oy_.data(),
-                     dx_.data(), dy_.data(), t_.data());
+  const auto rays = static_cast<std::size_t>(rays_);
+  std::array<double, kMaxIrRays> dx, dy, t;
   for (std::size_t sensor = 0; sensor < 8; ++sensor) {
     double nearest = range_m_;
-    for (int r = 0; r < rays_; ++r)
-      nearest = std::min(nearest, t_[sensor * static_cast<std::size_t>(rays_) + static_cast<std::size_t>(r)]);
+    // The rays of a sensor share its mount point.
+    const std::size_t first = sensor * rays;
+    const Vec2 origin{pose.x_m + c * mount_x_[first] - s * mount_y_[first],
+                      pose.y_m + s * mount_x_[first] + c * mount_y_[first]};
+    if (geometry_.fan_meets_any(near_, origin, range_m_)) {
+      for (std::size_t r = 0; r < rays; ++r) {
+        dx[r] = c * dir_x_[first + r] - s * dir_y_[first + r];
+        dy[r] = s * dir_x_[first + r] + c * dir_y_[first + r];
+        t[r] = range_m_;
+      }
+      geometry_.cast_fan(near_, origin, range_m_, rays_, dx.data(), dy.data(), t.data());
+      for (std::size_t r = 0; r < rays; ++r) nearest = std::min(nearest, t[r]);
+    }
     double v = response(nearest);
     if (noise_sd_ > 0.0) v = std::clamp(v + noise_sd_ * rng.normal(), 0.0, 1.0);
     out[sensor] = v;

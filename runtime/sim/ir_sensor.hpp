@@ -27,16 +27,18 @@ inline constexpr double kEnkiIrC_cm2 = 7.0;
 
 class IrModel {
  public:
-  IrModel(const KheperaParams& robot);
+  // `geometry` is the arena's and must outlive the model.
+  IrModel(const KheperaParams& robot, const StaticGeometry2D& geometry);
 
   // Normalised response to an obstacle at `distance_m` along a ray: 1 at 0, falling with
   // Enki's curve, shifted and rescaled to reach 0 at range; clamped to [0, 1].
   [[nodiscard]] double response(double distance_m) const noexcept;
 
   // Readings of the robot at `pose` (noise from `rng` only when noise_sd > 0).
-  // Uses scratch owned by the model: one reader at a time.
-  void read(const Pose& pose, const StaticGeometry2D& geometry, std::array<double, 8>& out,
-            Rng& rng) const noexcept;
+  // Uses scratch owned by the model: one reader at a time. Only the walls and obstacles
+  // within reach are tested, and each sensor's fan only against those within range of its
+  // mount point; a robot with nothing in reach reads 0 without casting a ray.
+  void read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const noexcept;
 
   [[nodiscard]] int rays_per_sensor() const noexcept { return rays_; }
 
@@ -47,8 +49,9 @@ class IrModel {
   int rays_;
   double curve_at_range_;
   double curve_scale_;          // 1 / (F(0) - F(range))
+  const StaticGeometry2D& geometry_;
   std::vector<double> mount_x_, mount_y_, dir_x_, dir_y_;  // body frame, per ray
-  mutable std::vector<double> ox_, oy_, dx_, dy_, t_;        // world frame scratch
+  mutable StaticGeometry2D::Nearby near_;                  // scratch: what the robot may see
 };
 
 }  // namespace esc::sim

@@ -36,6 +36,7 @@ void LightModel::read(const Pose& pose, const StaticGeometry2D& geometry,
                       const PlacedLight* lights, std::size_t n,
                       std::array<double, kLightSensors>& out, Rng& rng) const noexcept {
   out.fill(0.0);
+  if (n == 0 && !(noise_sd_ > 0.0)) return;   // dark, and no noise to draw
   if (n > 0) {
     const double c = std::cos(pose.heading_rad);
     const double s = std::sin(pose.heading_rad);

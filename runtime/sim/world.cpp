@@ -43,7 +43,7 @@ struct World::Impl {
         robot((validate_robot(r), r)),
         substep_s(r.control_step_s / r.physics_substeps),
         geometry(a),
-        ir(r),
+        ir(r, geometry),
         light(r),
         motor(r.motor, substep_s),
         drive(r.wheel_base_m, substep_s),
@@ -123,7 +123,7 @@ Pose World::begin_epoch(Rng& rng) {
 }
 void World::step(double left_command, double right_command) { impl_->step(left_command, right_command); }
 void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng) const {
-  impl_->ir.read(impl_->state.pose, impl_->geometry, out, rng);
+  impl_->ir.read(impl_->state.pose, out, rng);
 }
 void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
   const std::span<const PlacedLight> lights = impl_->floor.lights();
