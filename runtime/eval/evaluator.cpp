@@ -52,17 +52,17 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
                                TraceSink* trace) {
   if (controller.is_tree()) return evaluate(controller, evo::gp::decode(genome, *controller.primitives), seed, trace);
   control::Controller ctl(controller, genome);
-  return run(ctl, seed, trace);
+  return run(ctl, reads_slot(spec_->fitness, controller, expr::slot::noise), seed, trace);
 }
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
                                std::uint64_t seed, TraceSink* trace) {
   tree_control::TreeDriver ctl(controller, tree);
-  return run(ctl, seed, trace);
+  return run(ctl, reads_slot(spec_->fitness, controller, expr::slot::noise), seed, trace);
 }
 
 template <class Driver>
-Evaluation Evaluator::run(Driver& ctl, std::uint64_t seed, TraceSink* trace) {
+Evaluation Evaluator::run(Driver& ctl, bool noise, std::uint64_t seed, TraceSink* trace) {
   const ExperimentSpec& s = *spec_;
   std::array<double, sim::kIrSensors> ir{};
   std::array<double, sim::kLightSensors> light{};
@@ -84,7 +84,7 @@ Evaluation Evaluator::run(Driver& ctl, std::uint64_t seed, TraceSink* trace) {
     sense(rng);
     for (int step = 0; step < s.steps; ++step) {
       observe_clock(epoch, step, s.robot.control_step_s, frame);
-      observe_noise(seed, epoch, step, frame);
+      if (noise) observe_noise(seed, epoch, step, frame);
       const control::WheelCommand cmd = ctl.step(frame);
       world_.step(cmd.left, cmd.right);
       sense(rng);

@@ -66,8 +66,9 @@ class Evaluator {
 
  private:
   // The epochs, with any controller that has reset(), step(frame) and last_action().
+  // `noise`: whether anything reads the `noise` observable (it is written only then).
   template <class Driver>
-  Evaluation run(Driver& ctl, std::uint64_t seed, TraceSink* trace);
+  Evaluation run(Driver& ctl, bool noise, std::uint64_t seed, TraceSink* trace);
 
   const ExperimentSpec* spec_;
   sim::World world_;

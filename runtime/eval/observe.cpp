@@ -2,8 +2,10 @@
 
 #include "runtime/core/rng.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <variant>
 
 namespace esc::eval {
 
@@ -55,6 +57,44 @@ void observe_clock(int epoch, int step, double control_step_s, expr::Frame& fram
 void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) noexcept {
   const std::uint64_t h = derive_seed(seed, {static_cast<std::uint64_t>(epoch), static_cast<std::uint64_t>(step)});
   frame[expr::slot::noise] = static_cast<double>(h >> 11) * 0x1.0p-53;
+}
+
+namespace {
+
+bool program_reads(const expr::Program& p, expr::Slot slot) noexcept {
+  const auto code = p.code();
+  return std::any_of(code.begin(), code.end(),
+                     [slot](const expr::Instr& in) { return in.op == expr::Op::Load && in.slot == slot; });
+}
+
+bool behavior_reads(const control::Behavior& b, expr::Slot slot) noexcept {
+  return program_reads(b.left, slot) || program_reads(b.right, slot);
+}
+
+bool controller_reads(const control::ControllerSpec& c, expr::Slot slot) noexcept {
+  if (c.is_tree()) return true;
+  const auto& inputs = c.mlp.inputs;
+  if (std::find(inputs.begin(), inputs.end(), slot) != inputs.end()) return true;
+  for (const control::Behavior& a : c.actions)
+    if (behavior_reads(a, slot)) return true;
+  for (const control::SupervisedBehavior& b : c.behaviors) {
+    if (const auto* call = std::get_if<control::BehaviorCall>(&b.what)) {
+      if (behavior_reads(call->behavior, slot)) return true;
+    } else if (const auto& fixed = std::get<control::FixedController>(b.what);
+               fixed.spec == nullptr || controller_reads(*fixed.spec, slot)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& controller, expr::Slot slot) noexcept {
+  if (program_reads(fitness.step, slot)) return true;
+  for (const expr::Program& p : fitness.stop_when)
+    if (program_reads(p, slot)) return true;
+  return controller_reads(controller, slot);
 }
 
 }  // namespace esc::eval

@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 
+#include "runtime/control/controller_spec.hpp"
+#include "runtime/eval/experiment.hpp"
 #include "runtime/expr/observables.hpp"
 #include "runtime/sim/world.hpp"
 
@@ -25,7 +27,13 @@ void observe_light(const std::array<double, sim::kLightSensors>& light,
 // Writes the clock observables: step (from 0), time in seconds, epoch.
 void observe_clock(int epoch, int step, double control_step_s, expr::Frame& frame) noexcept;
 // `noise`: a hash of (evaluation seed, epoch, step), so it draws nothing from the
-// evaluation's streams and costs the same whether a script reads it or not.
+// evaluation's streams: whether a script reads it or not changes no other value.
 void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) noexcept;
+
+// Whether evaluating `controller` under `fitness` may read frame slot `slot`: a fitness or
+// stop program, a network input, an action's or behavior's program, a sub-controller's; a
+// tree controller is taken to read every slot. The step loop skips observables nobody reads.
+[[nodiscard]] bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& controller,
+                              expr::Slot slot) noexcept;
 
 }  // namespace esc::eval
