@@ -16,6 +16,7 @@
 #include "runtime/sim/drive.hpp"
 #include "runtime/sim/geometry2d.hpp"
 #include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/planar_integrate.hpp"
 
 namespace esc::sim {
 
@@ -64,8 +65,8 @@ class Body {
       world_->stepSimulation(static_cast<btScalar>(substep_s_), 0, static_cast<btScalar>(substep_s_));
     } else {
       btTransform next;
-      btTransformUtil::integrateTransform(body_->getWorldTransform(), body_->getLinearVelocity(),
-                                          body_->getAngularVelocity(), static_cast<btScalar>(substep_s_), next);
+      integrate_planar(body_->getWorldTransform(), body_->getLinearVelocity(), body_->getAngularVelocity(),
+                       static_cast<btScalar>(substep_s_), v, next);
       // btRigidBody::proceedToTransform(next) but for the world inertia tensor, a function of the
       // orientation alone that only the solver reads: it is brought up to date before a step.
       body_->setInterpolationWorldTransform(next);

@@ -24,6 +24,10 @@ struct PlanarVelocity {
   double y_mps = 0.0;
   double turn_radps = 0.0;   // w, counter-clockwise
   double travel_m = 0.0;     // |chord| dt: how far the centre moves in the substep
+  // cos and sin of the half turn w dt / 2, which the body's rotation over the substep needs
+  // too (Body::move): computed once.
+  double cos_half_turn = 1.0;
+  double sin_half_turn = 0.0;
 };
 
 class DifferentialDrive {
@@ -40,7 +44,7 @@ class DifferentialDrive {
     const double s = std::sin(half_turn_rad);
     const double chord_mps = half_turn_rad == 0.0 ? v_mps : v_mps * s / half_turn_rad;
     return {chord_mps * (c * heading.x - s * heading.y), chord_mps * (s * heading.x + c * heading.y), turn_radps,
-            std::abs(chord_mps) * substep_s_};
+            std::abs(chord_mps) * substep_s_, c, s};
   }
 
  private:
