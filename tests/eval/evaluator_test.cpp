@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "runtime/core/rng.hpp"
+#include "runtime/eval/observe.hpp"
 #include "tests/eval/test_experiment.hpp"
 
 namespace esc::eval {
@@ -44,6 +45,23 @@ TEST(Evaluator, DifferentSeedsGiveDifferentStartPoses) {
   const double f2 = ev.evaluate(c, a, 2).fitness;
   EXPECT_GT(f1, 0.0);
   EXPECT_NE(f1, f2);
+}
+
+TEST(Evaluator, TheNoiseObservableIsWrittenWhereAProgramOrANetworkReadsIt) {
+  ExperimentSpec spec = testing::small_experiment();
+  const control::ControllerSpec plain = spec.controllers.front();
+  EXPECT_FALSE(reads_slot(spec.fitness, plain, expr::slot::noise));
+  control::ControllerSpec hearing = plain;
+  hearing.mlp.inputs.push_back(expr::slot::noise);
+  EXPECT_TRUE(reads_slot(spec.fitness, hearing, expr::slot::noise));
+  // A fitness of `noise` alone: uniform in [0, 1) at every step, so its sum is near half
+  // the steps (it would be 0 if the step loop left the slot unwritten).
+  spec.fitness.step = testing::load(expr::slot::noise);
+  EXPECT_TRUE(reads_slot(spec.fitness, plain, expr::slot::noise));
+  Evaluator ev(spec);
+  const auto e = ev.evaluate(plain, random_genome(plain.genome_size(), 3), 3);
+  EXPECT_GT(e.fitness, 0.25 * static_cast<double>(e.steps));
+  EXPECT_LT(e.fitness, 0.75 * static_cast<double>(e.steps));
 }
 
 TEST(Evaluator, StepsAreBoundedByEpochsTimesSteps) {
