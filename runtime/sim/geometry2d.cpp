@@ -81,6 +81,18 @@ inline double circle_hit(double cx, double cy, double r2, double ox, double oy, 
   return -b - std::sqrt(disc);
 }
 
+// One slab of the box test, along one box axis: narrows [lo, hi] to the ray parameters
+// within `half` of the centre (origin p, direction u along that axis); false when the ray
+// runs parallel to the slab outside it.
+bool clip_slab(double p, double u, double half, double& lo, double& hi) noexcept {
+  if (u == 0.0) return std::abs(p) <= half;
+  const double a = (-half - p) / u;
+  const double b = (half - p) / u;
+  lo = std::max(lo, std::min(a, b));
+  hi = std::min(hi, std::max(a, b));
+  return true;
+}
+
 }  // namespace
 
 double StaticGeometry2D::box_hit(const Box& bx, double ox, double oy, double dx, double dy) noexcept {
@@ -93,22 +105,7 @@ double StaticGeometry2D::box_hit(const Box& bx, double ox, double oy, double dx,
   const double uy = -bx.s * dx + bx.c * dy;
   double lo = -kNoHit;
   double hi = kNoHit;
-  if (ux != 0.0) {
-    const double a = (-bx.hx - px) / ux;
-    const double b = (bx.hx - px) / ux;
-    lo = std::max(lo, std::min(a, b));
-    hi = std::min(hi, std::max(a, b));
-  } else if (std::abs(px) > bx.hx) {
-    return kNoHit;
-  }
-  if (uy != 0.0) {
-    const double a = (-bx.hy - py) / uy;
-    const double b = (bx.hy - py) / uy;
-    lo = std::max(lo, std::min(a, b));
-    hi = std::min(hi, std::max(a, b));
-  } else if (std::abs(py) > bx.hy) {
-    return kNoHit;
-  }
+  if (!clip_slab(px, ux, bx.hx, lo, hi) || !clip_slab(py, uy, bx.hy, lo, hi)) return kNoHit;
   if (hi < 0.0 || lo > hi) return kNoHit;
   return std::max(lo, 0.0);
 }
