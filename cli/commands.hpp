@@ -34,7 +34,8 @@ int run_command(const RunOptions& options);
 
 struct ExportOptions {
   std::vector<std::filesystem::path> dirs;   // run directories, experiments or studies
-  std::string format;                        // "csv" or "json"
+  std::string format = "csv";                // "csv" or "json"
+  std::string table;                         // "" (csv: generations, json: everything) or "usage"
   std::filesystem::path out;                 // empty: standard output
 };
 

@@ -15,6 +15,7 @@
 #include "cli/partial_run.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
+#include "runtime/evo/gp/codec.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/run_directory.hpp"
 
@@ -200,6 +201,21 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   return finish_dependency(name, key, partial, p);
 }
 
+// Why `genome` cannot be controller `c`'s here ("" when it can): a network's weights must be
+// as many as its network has, a tree must be a well-typed tree of its primitive set.
+std::string genome_problem(const control::ControllerSpec& c, const std::vector<double>& genome) {
+  if (!c.is_tree())
+    return genome.size() == c.genome_size()
+               ? std::string()
+               : fmt::format("it has {} genes, `{}` has {} here", genome.size(), c.name, c.genome_size());
+  try {
+    (void)evo::gp::decode(genome, *c.primitives);
+    return {};
+  } catch (const std::invalid_argument& e) {
+    return fmt::format("it is not a tree of `{}`'s primitives here: {}", c.name, e.what());
+  }
+}
+
 const store::StoredController* stored_controller(const Prepared& p, const std::string& name) {
   const auto& cs = p.stored.controllers;
   const auto it = std::find_if(cs.begin(), cs.end(), [&](const store::StoredController& c) { return c.name == name; });
@@ -219,9 +235,8 @@ bool freeze_behaviors(eval::ExperimentSpec& spec, const eval::Dependency& dep, c
   for (const eval::RunResult& r : sc->finished)
     if (r.best_fitness > best->best_fitness) best = &r;
   auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
-  if (best->best_genome.size() != frozen->genome_size()) {
-    complain("esc: error: {}: the best genome of `{}` has {} genes, expected {}\n", p.dir.string(),
-               dep.controller, best->best_genome.size(), frozen->genome_size());
+  if (const std::string why = genome_problem(*frozen, best->best_genome); !why.empty()) {
+    complain("esc: error: {}: the best genome of `{}` cannot be frozen: {}\n", p.dir.string(), dep.controller, why);
     return false;
   }
   say("esc: dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})\n",
@@ -245,12 +260,12 @@ bool fill_start_genomes(eval::ExperimentSpec& spec, const Prepared& p) {
     if (sc == nullptr) return false;
     auto& runs = start.genomes.emplace_back();
     for (const eval::RunResult& r : sc->finished) {
-      if (r.best_genome.size() != c.genome_size()) {
-        complain("esc: error: {}: run {} of `{}` stored {} genes, but `{}` has {} here\n", p.dir.string(),
-                   r.run + 1, c.name, r.best_genome.size(), c.name, c.genome_size());
+      if (const std::string why = genome_problem(c, r.best_genome); !why.empty()) {
+        complain("esc: error: {}: the best genome of run {} of `{}` cannot start a run here: {}\n", p.dir.string(),
+                 r.run + 1, c.name, why);
         return false;
       }
-      runs.push_back(r.best_genome);
+      runs.push_back({r.run, r.best_fitness, r.best_genome});
     }
   }
   say("esc: {} {} from the best genomes of {} ({} run{} each)\n", spec.name,

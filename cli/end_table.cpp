@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/transfer_table.hpp"
 #include "runtime/report/comparisons.hpp"
 #include "runtime/report/statistics.hpp"
 
@@ -121,6 +122,7 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
                c.genome_size, s.mean, s.sd, s.median, s.max);
     finals.push_back(std::move(best));
   }
+  print_transfers(result);
   const auto name = [](const eval::ControllerResult& c) { return c.name; };
   bool header = false;
   print_usage(result, header, name);

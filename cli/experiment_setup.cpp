@@ -107,6 +107,15 @@ RunOptions stored_overrides(const store::StoredExperiment& stored, const std::fi
   return o;
 }
 
+std::optional<int> stored_carry_on(const store::StoredExperiment& stored, const std::filesystem::path& dir) {
+  try {
+    if (!stored.overrides.contains("carry_on")) return std::nullopt;
+    return stored.overrides["carry_on"].get<int>();
+  } catch (const nlohmann::json::exception& e) {
+    throw store::StoreError(fmt::format("{} is damaged: unreadable generations carried on to ({})", dir.string(), e.what()));
+  }
+}
+
 std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compiled) {
   std::vector<store::SourceFile> sources;
   for (const auto& [name, text] : compiled.sources) sources.push_back({name, text});

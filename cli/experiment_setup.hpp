@@ -40,6 +40,10 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec, std::strin
 // The overrides a stored run started with (and its dependency cache), to apply again.
 // Throws store::StoreError when `dir`'s database holds them damaged.
 [[nodiscard]] RunOptions stored_overrides(const store::StoredExperiment& stored, const std::filesystem::path& dir);
+// The generations `esc run --resume DIR --generations G` carried the stored run on to (the
+// experiment alone, not what it depends on); nullopt when it never was. Throws
+// store::StoreError when the database holds it damaged.
+[[nodiscard]] std::optional<int> stored_carry_on(const store::StoredExperiment& stored, const std::filesystem::path& dir);
 
 [[nodiscard]] std::vector<store::SourceFile> sources_of(const compiler::CompileResult& compiled);
 

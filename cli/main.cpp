@@ -64,8 +64,11 @@ int main(int argc, char** argv) {
   ExportOptions exp;
   auto* export_cmd = app.add_subcommand("export", "write run directories' results as one CSV or JSON table");
   export_cmd->add_option("DIR", exp.dirs, "run directories (experiments or studies)")->required();
-  export_cmd->add_option("--format", exp.format, "csv (per-generation statistics) or json (everything)")
-      ->required()->check(CLI::IsMember({"csv", "json"}));
+  export_cmd->add_option("--format", exp.format, "csv (default: per-generation statistics) or json (everything)")
+      ->check(CLI::IsMember({"csv", "json"}));
+  export_cmd->add_option("--table", exp.table,
+                         "usage: the steps each behavior acted, per run, generation and behavior (a tidy table)")
+      ->check(CLI::IsMember({"usage"}));
   export_cmd->add_option("--out", exp.out, "output file (default: standard output)");
 
   ReportOptions rep;

@@ -8,6 +8,7 @@
 #include "runtime/report/html_report.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/run_directory.hpp"
+#include "runtime/store/usage_export.hpp"
 
 namespace esc::cli {
 
@@ -27,7 +28,10 @@ int export_command(const ExportOptions& o) {
     return kExitUsage;
   }
   const std::vector<store::StoredDirectory> all = load_all(o.dirs);
-  const std::string text = o.format == "csv" ? store::export_csv(all) : store::export_json(all).dump(2) + "\n";
+  const bool csv = o.format == "csv";
+  const std::string text = o.table == "usage" ? (csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n")
+                           : csv              ? store::export_csv(all)
+                                              : store::export_json(all).dump(2) + "\n";
   if (o.out.empty()) {
     std::cout << text << std::flush;
   } else {

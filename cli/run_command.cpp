@@ -1,4 +1,5 @@
 // `esc run`: an experiment or a study of a script, or the continuation of a stopped run.
+#include <optional>
 #include <variant>
 
 #include <fmt/format.h>
@@ -28,22 +29,53 @@ int run_experiment(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   return kExitOk;
 }
 
+// `--resume DIR --generations G`: the generations the run is carried on to, after checking
+// that G carries every controller on (never cuts it) and that the experiment evolves; nullopt
+// when G is what it already has (a plain resume), -1 after printing an error.
+std::optional<int> carry_on_to(const RunOptions& o, const eval::ExperimentSpec& spec) {
+  if (!o.generations) return std::nullopt;
+  bool more = false;
+  for (const control::ControllerSpec& c : spec.controllers) {
+    if (*o.generations < spec.generations_for(c)) {
+      complain("esc: error: the runs of {} in {} have {} generations; --generations {} would cut them: a run is "
+               "carried on to more generations, never shortened (nothing was changed)\n",
+               c.name, o.resume.string(), spec.generations_for(c), *o.generations);
+      return -1;
+    }
+    more = more || *o.generations > spec.generations_for(c);
+  }
+  if (more && spec.evaluates_only()) {
+    complain("esc: error: experiment {} only evaluates stored controllers (`evaluate from`): it has no generations "
+             "to carry on\n", spec.name);
+    return -1;
+  }
+  if (!more) return std::nullopt;
+  return *o.generations;
+}
+
 int resume_command(const RunOptions& o) {
-  if (o.runs || o.generations || o.seed || !o.settings.empty() || !o.controllers.empty() || !o.experiment.empty() ||
-      !o.out.empty()) {
-    complain("esc: error: --resume continues a run with its own settings: --runs, --generations, --seed, "
-             "--set, --controllers, --experiment and --out cannot be given with it\n");
+  if (o.runs || o.seed || !o.settings.empty() || !o.controllers.empty() || !o.experiment.empty() || !o.out.empty()) {
+    complain("esc: error: --resume continues a run with its own settings: --runs, --seed, --set, --controllers, "
+             "--experiment and --out cannot be given with it (--generations G carries it on to G generations)\n");
     return kExitUsage;
   }
   store::ResultsDb db = store::ResultsDb::open(o.resume);
   std::vector<store::StoredExperiment> all = db.load();
-  if (!all.empty() && all.front().condition) return resume_study(o, std::move(all));
+  if (!all.empty() && all.front().condition) {
+    if (o.generations) {
+      complain("esc: error: {} holds study `{}`: --generations carries an experiment's directory on, not yet a "
+               "study's\n", o.resume.string(), all.front().condition->study);
+      return kExitUsage;
+    }
+    return resume_study(o, db, std::move(all));
+  }
   const store::StoredExperiment stored = db.load_single();
-  if (stored.finished()) {
+  const auto complete = [&] {
     say("esc: {} is complete ({} x {} runs x {} generations); nothing to resume\n", o.resume.string(),
         stored.controllers.size(), stored.runs, stored.generations);
     return kExitOk;
-  }
+  };
+  if (stored.finished() && !o.generations) return complete();
   const auto script = resume_script(o, stored.script);
   if (!script) return kExitBadInput;
   compiler::CompileResult compiled = load_script(*script);
@@ -51,23 +83,47 @@ int resume_command(const RunOptions& o) {
   const Target target = pick_target(compiled, *script, stored.name);
   if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
   eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
+  // The settings it was launched with, for it and its dependencies; then the generations a
+  // previous --generations carried it on to, for it alone.
   RunOptions replay = stored_overrides(stored, o.resume);
   if (!apply_overrides(replay, spec) || !select_controllers(replay.controllers, spec)) return kExitBadInput;
+  const std::optional<int> carried = stored_carry_on(stored, o.resume);
+  if (carried && !compiler::apply_setting(spec, "generations", std::to_string(*carried)).empty()) {
+    complain("esc: error: {} is damaged: it was carried on to {} generations\n", o.resume.string(), *carried);
+    return kExitBadInput;
+  }
   replay.threads = o.threads;
   replay.runs_at_once = o.runs_at_once;
   if (!resumable(spec, sources_of(compiled), stored, *script, o.resume)) return kExitBadInput;
-  // Dependencies last: a script that cannot resume should not first run them.
+  const std::optional<int> extend = carry_on_to(o, spec);
+  if (extend && *extend < 0) return kExitBadInput;
+  if (!extend && stored.finished()) return complete();
+  if (extend) (void)compiler::apply_setting(spec, "generations", std::to_string(*extend));
+  // Dependencies last: a script that cannot resume should not first run them. They keep the
+  // generations they were launched with: carrying a run on extends it alone.
   const std::filesystem::path cache = resume_cache(o, replay);
   if (!prepare_dependencies(spec, dependency_context(compiled, replay, cache, *script))) return kExitBadInput;
   if (!same_inputs(spec, stored, cache, o.resume)) return kExitBadInput;
 
-  const eval::ResumePoint point = stored.resume_point();
+  const eval::ResumePoint point = db.resume_point(stored, spec);
   const std::int64_t done = generations_done(point);
-  say("esc: resuming {} in {}: {} of {} generations done\n", spec.name, o.resume.string(), done,
-      spec.total_generations());
+  if (extend)
+    say("esc: carrying {} in {} on to {} generations: {} of {} generations done\n", spec.name, o.resume.string(),
+        *extend, done, spec.total_generations());
+  else
+    say("esc: resuming {} in {}: {} of {} generations done\n", spec.name, o.resume.string(), done,
+        spec.total_generations());
   return run_experiment(
       spec, campaign_options(o, &point),
-      [&] { return store::RunDirectory::resume(o.resume, std::move(db), stored); }, done, o.resume);
+      [&] {
+        if (extend) {
+          nlohmann::ordered_json overrides = stored.overrides;
+          overrides["carry_on"] = *extend;
+          store::RunDirectory::carry_on(o.resume, db, spec, overrides);
+        }
+        return store::RunDirectory::resume(o.resume, std::move(db), stored, point);
+      },
+      done, o.resume);
 }
 
 }  // namespace

@@ -167,9 +167,10 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
         try {
           store::ResultsDb db = store::ResultsDb::open(dir);
           const store::StoredExperiment stored = db.load_single();
-          const eval::ResumePoint point = stored.resume_point();
+          const eval::ResumePoint point = db.resume_point(stored, d);
           return run(d, campaign_options(o, &point),
-                     [&] { return store::RunDirectory::resume(dir, std::move(db), stored); }, generations_done(point));
+                     [&] { return store::RunDirectory::resume(dir, std::move(db), stored, point); },
+                     generations_done(point));
         } catch (const std::exception& e) {
           // Whatever stops it (a damaged database, a full disk), the caller runs it afresh.
           complain("esc: {}: cannot continue: {}\n", dir.string(), e.what());

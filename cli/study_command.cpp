@@ -51,24 +51,31 @@ bool apply_to_conditions(const RunOptions& o, eval::StudySpec& study) {
   return true;
 }
 
-// Runs every condition not finished yet (`stored`: what a stopped run left, one per
-// condition, or null for a new study) and prints the study's table.
+// What a stopped study left: its database and one stored experiment per condition; none
+// for a new study.
+struct Stored {
+  store::ResultsDb* db = nullptr;
+  const std::vector<store::StoredExperiment>* conditions = nullptr;
+};
+
+// Runs every condition not finished yet and prints the study's table.
 int run_conditions(const eval::StudySpec& study, const RunOptions& o, std::optional<store::StudyDirectory>& dir,
-                   const std::vector<store::StoredExperiment>* stored, const std::filesystem::path& out) {
+                   const Stored& stored, const std::filesystem::path& out) {
   std::vector<ConditionResult> results;
   for (std::size_t i = 0; i < study.conditions.size(); ++i) {
     const eval::ConditionSpec& c = study.conditions[i];
-    const store::StoredExperiment* before = stored != nullptr ? &(*stored)[i] : nullptr;
+    const store::StoredExperiment* before = stored.conditions != nullptr ? &(*stored.conditions)[i] : nullptr;
     if (before != nullptr && before->finished()) {
       results.push_back({c.name, &c.experiment, before->result()});
       continue;
     }
-    const eval::ResumePoint point = before != nullptr ? before->resume_point() : eval::ResumePoint{};
+    const eval::ResumePoint point =
+        before != nullptr ? stored.db->resume_point(*before, c.experiment) : eval::ResumePoint{};
     say("esc: condition {}/{} {}: {} ({} controller{}, {} run{}, {})\n", i + 1, study.conditions.size(), c.name,
         c.experiment.name, c.experiment.controllers.size(), c.experiment.controllers.size() == 1 ? "" : "s",
         c.experiment.runs, c.experiment.runs == 1 ? "" : "s", generations_text(c.experiment));
     std::optional<store::RunDirectory> run;
-    if (dir) run.emplace(dir->open_condition(i));
+    if (dir) run.emplace(dir->open_condition(i, point));
     results.push_back({c.name, &c.experiment,
                        campaign_on_all_ranks(c.experiment, campaign_options(o, before != nullptr ? &point : nullptr),
                                              run ? &*run : nullptr, generations_done(point))});
@@ -106,10 +113,10 @@ int run_study(const RunOptions& o, compiler::CompileResult& compiled, eval::Stud
                names.size() == 1 ? "" : "s", names_of(names), out.string());
   };
   if (!open_on_rank0(open)) return kExitBadInput;
-  return run_conditions(study, o, dir, nullptr, out);
+  return run_conditions(study, o, dir, Stored{}, out);
 }
 
-int resume_study(const RunOptions& o, std::vector<store::StoredExperiment> all) {
+int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::StoredExperiment> all) {
   const std::vector<store::StoredExperiment> stored = store::study_conditions(std::move(all));
   const store::StoredExperiment& first = stored.front();
   const std::string& name = first.condition->study;
@@ -156,7 +163,7 @@ int resume_study(const RunOptions& o, std::vector<store::StoredExperiment> all) 
   say("esc: resuming study {} in {}: {} of {} conditions finished\n", name, o.resume.string(), finished, stored.size());
   std::optional<store::StudyDirectory> dir;
   if (!open_on_rank0([&] { dir.emplace(o.resume, stored); })) return kExitBadInput;
-  return run_conditions(study, replay, dir, &stored, o.resume);
+  return run_conditions(study, replay, dir, Stored{&db, &stored}, o.resume);
 }
 
 }  // namespace esc::cli

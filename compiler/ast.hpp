@@ -30,7 +30,7 @@ struct Quantity {
 struct Expr {
   enum class Kind { Number, Bool, Name, Index, Call, Unary, Binary, If, Error };
   Kind kind = Kind::Error;
-  std::string text;          // name, function, or operator ("+", "and", "neg", "not", ...)
+  std::string text;          // name (`library.member` too), function, or operator ("+", "and", "neg", ...)
   double number = 0.0;       // Number (unit not applied) and Bool
   std::string unit;          // Number
   SourceRange unit_where;
@@ -127,6 +127,7 @@ struct RobotDecl : DeclHead {
 struct BehaviorDecl : DeclHead {
   // A member of `library L { ... }`: name.text is `L.member`; `member` is the bare name.
   std::string library, member;
+  bool useless = false;             // its library is marked `useless`
   // `behavior avoid = evolved from experiment E controller C`: no parameters or body.
   bool evolved = false;
   Name from_experiment, from_controller;
@@ -139,6 +140,7 @@ struct BehaviorDecl : DeclHead {
 
 struct LibraryDecl : DeclHead {
   std::vector<std::string> members;   // qualified names (`L.member`), in order
+  std::optional<Name> mark;           // the word after the name: `useless` (checked by the lowering)
 };
 
 struct FitnessTerm {
@@ -150,6 +152,8 @@ struct FitnessTerm {
 struct FitnessDecl : DeclHead {
   std::vector<FitnessTerm> steps;   // more than one is an error
   std::vector<FitnessTerm> stops;
+  std::vector<FitnessTerm> epoch_ends;        // `epoch:`, at most one
+  std::vector<FitnessTerm> evaluation_ends;   // `evaluation:`, at most one
 };
 
 struct Input {

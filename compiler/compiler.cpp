@@ -138,6 +138,7 @@ class Driver {
       for (const auto& d : m->arenas) (void)arenas.lower(d);
       for (const auto& d : m->robots) (void)robots.lower(d);
       for (const auto& d : m->behaviors) (void)behaviors.lower(d);
+      for (const auto& d : m->libraries) check_library_mark(d, sink_);
       for (const auto& d : m->fitnesses) (void)fitnesses.lower(d);
       for (const auto& d : m->primitives) (void)primitives.lower(d);
       for (const auto& d : m->controllers) (void)controllers.lower(d);

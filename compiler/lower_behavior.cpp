@@ -11,6 +11,15 @@
 
 namespace esc::compiler {
 
+void check_library_mark(const ast::LibraryDecl& d, Sink& sink) {
+  if (d.poisoned || !d.mark || d.mark->text == "useless") return;
+  suggest(sink.error(d.mark->where, fmt::format("unknown mark `{}` for library `{}`", d.mark->text, d.name.text)),
+          d.mark->text, {"useless"},
+          {.otherwise = "a library may be marked `useless` (`library distractors useless { ... }`): reports draw its "
+                        "behaviors apart from the useful ones",
+           .always = true});
+}
+
 const std::optional<EvolvedRef>& BehaviorLowering::evolved(const ast::BehaviorDecl& d) {
   if (auto it = evolved_.find(&d); it != evolved_.end()) return it->second;
   auto& slot = evolved_[&d];

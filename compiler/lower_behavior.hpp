@@ -22,6 +22,9 @@ struct EvolvedRef {
   std::string compared_as;          // the name the experiment compares it under
 };
 
+// A library's mark, the word after its name: `useless` or none (reported otherwise).
+void check_library_mark(const ast::LibraryDecl& d, Sink& sink);
+
 class BehaviorLowering {
  public:
   BehaviorLowering(Sink& sink, Resolver& names, ArenaLowering& arenas) : sink_(sink), names_(names), arenas_(arenas) {}

@@ -154,6 +154,7 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
     const auto& b = behaviors_.lower(*bd);
     if (b) {
       c.actions.push_back(*b);
+      c.choices.push_back({a.text, bd->name.text, bd->library, bd->useless, -1});
       used.push_back(bd);
     }
   }
@@ -181,15 +182,9 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
         behaviors_ok = false;
         continue;
       }
-      if (sub->is_tree()) {
-        sink_.error(r.where, fmt::format("`{}` is evolved by tree controller `{}`: evolved trees cannot be "
-                                              "supervised yet, only evolved networks", bd->name.text, sub->name))
-            .notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
-        behaviors_ok = false;
-        continue;
-      }
       c.behaviors.push_back({name, control::FixedController{
                                               std::make_shared<const control::ControllerSpec>(*sub), {}}});
+      c.choices.push_back({name, bd->name.text, bd->library, bd->useless, -1});
       continue;
     }
     const auto& b = behaviors_.lower(*bd);
@@ -231,6 +226,7 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
     }
     if (!r.args.empty()) label += fmt::format("({})", fmt::join(shown, ", "));
     c.behaviors.push_back({label, std::move(call)});
+    c.choices.push_back({name, bd->name.text, bd->library, bd->useless, -1});
     used.push_back(bd);
   }
   if (!d.tree && c.mlp.inputs.empty() && sink_.errors() == errors)

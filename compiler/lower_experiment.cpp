@@ -202,12 +202,15 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     check_algorithms(d, x, compared, es_item == first.end() ? nullptr : es_item->second, gp_item);
   }
 
-  // `in(zone)` and `reached(light)` resolve in this experiment's arena.
+  // `in(zone)` and `reached(light)` resolve in this experiment's arena, `using(B)` & co.
+  // among its controllers' choices.
   if (ok && sink_.errors() == errors && arena_decl != nullptr) {
+    const ChoiceNames choices = number_choices(x);
     if (fitness_decl != nullptr) {
-      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl);
+      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices);
       if (f) x.fitness = f->spec;
       else ok = false;
+      if (f) fitness = &*f;
     }
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
       if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl)) ok = false;
@@ -216,14 +219,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);
   }
-  if (start_decl != nullptr) {
-    check_start_from(*start_decl, first);
-    for (const control::ControllerSpec& c : x.controllers)
-      if (c.is_tree())
-        sink_.error(first[K::StartFrom]->where,
-                    fmt::format("tree controller `{}` cannot start from stored trees yet; only networks can", c.name))
-            .help.push_back("compare the tree controllers in an experiment of their own");
-  }
+  if (start_decl != nullptr) check_start_from(*start_decl, first, gp_item);
   if (!ok || sink_.errors() != errors) return slot;
 
   add_dependencies(x, controller_decls);
@@ -232,9 +228,30 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   std::string stops;
   for (const std::string& s : fitness->stop_texts) stops += (stops.empty() ? "" : "; ") + s;
   x.resolved_settings["fitness.stop"] = stops;
+  // Only when given, so that experiments without end terms resolve as they always did.
+  if (!fitness->epoch_text.empty()) x.resolved_settings["fitness.epoch"] = fitness->epoch_text;
+  if (!fitness->evaluation_text.empty()) x.resolved_settings["fitness.evaluation"] = fitness->evaluation_text;
   resolve_settings(x);
   slot = std::move(x);
   return slot;
+}
+
+ChoiceNames ExperimentLowering::number_choices(eval::ExperimentSpec& x) {
+  ChoiceNames names{x.name, {}};
+  std::map<std::pair<std::string, std::string>, int> ids;   // (name, behavior) -> id
+  const auto add = [&](const std::string& name, int id) {
+    auto& v = names.ids[name];
+    if (std::find(v.begin(), v.end(), id) == v.end()) v.push_back(id);
+  };
+  for (control::ControllerSpec& c : x.controllers)
+    for (control::Choice& choice : c.choices) {
+      choice.id = ids.try_emplace({choice.name, choice.behavior}, static_cast<int>(ids.size())).first->second;
+      add(choice.name, choice.id);
+      // `library.member` names every listing of the member (`crash`, `crash_2`, ...).
+      if (!choice.library.empty()) add(choice.behavior, choice.id);
+    }
+  x.choice_ids = ids.size();
+  return names;
 }
 
 void ExperimentLowering::add_dependencies(eval::ExperimentSpec& x,
@@ -260,7 +277,7 @@ void ExperimentLowering::check_algorithms(const ast::ExperimentDecl& d, const ev
                                           const ast::ExpItem* gp_item) {
   for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i) {
     const control::ControllerSpec& c = x.controllers[i];
-    if (c.is_tree() && gp_item == nullptr) {
+    if (c.is_tree() && gp_item == nullptr && !x.evaluates_only()) {
       sink_.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
                                                   "`evolve gp(...)` to evolve it", c.name, d.name.text))
           .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
@@ -274,11 +291,13 @@ void ExperimentLowering::check_algorithms(const ast::ExperimentDecl& d, const ev
     if (std::string m = check_gp(x); !m.empty()) sink_.error(gp_item->where, m);
 }
 
-void ExperimentLowering::check_start_from(const ast::ExperimentDecl& from, const Items& first) {
+void ExperimentLowering::check_start_from(const ast::ExperimentDecl& from, const Items& first,
+                                          const ast::ExpItem* gp_item) {
   const ast::ExpItem& item = *first.at(K::StartFrom);
-  if (item.evaluate_only && first.count(K::Evolve) != 0) {
+  const ast::ExpItem* evolve = first.count(K::Evolve) != 0 ? first.at(K::Evolve) : gp_item;
+  if (item.evaluate_only && evolve != nullptr) {
     Diagnostic& diag =
-        sink_.error(first.at(K::Evolve)->where, "an experiment that evaluates stored controllers evolves nothing");
+        sink_.error(evolve->where, "an experiment that evaluates stored controllers evolves nothing");
     diag.notes.emplace_back(item.where, "it evaluates stored controllers here");
     diag.help.push_back(fmt::format("write `start from experiment {}` to evolve on from them", from.name.text));
   }

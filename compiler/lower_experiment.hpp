@@ -42,8 +42,11 @@ class ExperimentLowering {
  private:
   using Items = std::map<ast::ExpItem::Kind, const ast::ExpItem*>;
   // `start from` / `evaluate from experiment E`: E compares every controller compared
-  // here, and an evaluation evolves nothing (reported).
-  void check_start_from(const ast::ExperimentDecl& from, const Items& first);
+  // here, and an evaluation evolves nothing, by the ES or GP (reported).
+  void check_start_from(const ast::ExperimentDecl& from, const Items& first, const ast::ExpItem* gp_item);
+  // Gives each distinct action or behavior of the compared controllers an experiment-wide id
+  // (control::Choice::id; x.choice_ids of them) and returns the names that read them.
+  static ChoiceNames number_choices(eval::ExperimentSpec& x);
   // Every compared controller has its algorithm (`es` for networks, `gp` for trees), and
   // the GP settings suit every tree's primitives (reported at `compared` / `gp_item`).
   void check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,

@@ -52,6 +52,19 @@ struct Node {
   std::vector<expr::Instr> code;
 };
 
+// What reads the acting choice: `using(B)`, 1 on a step when B acts (step terms, stop
+// conditions, end terms), and the aggregates of an end term, `count(B)` (steps B acted),
+// `share(B)` (count(B) / steps) and `steps`.
+enum class ChoiceReader { Using, Count, Share };
+struct ChoiceFunction {
+  std::string_view name;
+  ChoiceReader reader;
+};
+constexpr std::array kChoiceFunctions = {ChoiceFunction{"using", ChoiceReader::Using},
+                                         ChoiceFunction{"count", ChoiceReader::Count},
+                                         ChoiceFunction{"share", ChoiceReader::Share}};
+constexpr std::string_view kStepsAggregate = "steps";
+
 Node constant(double v) {
   Node n;
   n.constant = v;
@@ -126,8 +139,14 @@ class Lowerer {
     std::vector<std::string> v = scope_.params;
     const std::vector<std::string> observables = expr::observable_names();
     v.insert(v.end(), observables.begin(), observables.end());
+    if (scope_.use == ExprScope::Use::End) v.emplace_back(kStepsAggregate);
     return v;
   }
+
+  // Where end terms are written, for the help lines of aggregates used elsewhere.
+  static constexpr const char* kEndTermHelp =
+      "aggregates are read once per epoch or evaluation: write them in the fitness's `epoch:` or `evaluation:` "
+      "term, e.g. `epoch: -100 * abs(share(follow) - 0.1)`";
 
   Node name(const ast::Expr& e) {
     for (std::size_t i = 0; i < scope_.params.size(); ++i)
@@ -141,8 +160,76 @@ class Lowerer {
       return load(o->first);
     }
     if (e.text == "true" || e.text == "false") return constant(e.text == "true" ? 1.0 : 0.0);
+    if (e.text == kStepsAggregate && scope_.use == ExprScope::Use::End) return load(expr::aggregate::steps);
+    if (e.text == kStepsAggregate) {
+      sink_.error(e.where, "`steps` counts the steps of an epoch or an evaluation; it is read at their end")
+          .help.push_back(kEndTermHelp);
+      return failed();
+    }
     unknown_name(e.text, e.where);
     return failed();
+  }
+
+  // `using(B)`, `count(B)`, `share(B)`: B names actions or behaviors of the compared
+  // controllers (ChoiceNames), each an experiment-wide id.
+  Node choice(const ast::Expr& e, const ChoiceFunction& f) {
+    if (f.reader == ChoiceReader::Using && scope_.use == ExprScope::Use::Behavior) {
+      sink_.error(e.unit_where, "`using(B)` can be read only by a fitness: a behavior does not see which behavior acts")
+          .help.push_back("write `using(B)` in the fitness's `step:`, `stop epoch when`, `epoch:` or `evaluation:`");
+      return failed();
+    }
+    if (f.reader != ChoiceReader::Using && scope_.use != ExprScope::Use::End) {
+      sink_.error(e.unit_where, fmt::format("`{}(B)` is an aggregate over an epoch or an evaluation", f.name))
+          .help.push_back(kEndTermHelp);
+      return failed();
+    }
+    if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
+      sink_.error(e.where, fmt::format("`{}` takes the name of an action or behavior of the compared controllers, "
+                                       "as in `{}(avoid)` or `{}(library.avoid)`",
+                                       f.name, f.name, f.name));
+      return failed();
+    }
+    const ast::Expr& arg = *e.args[0];
+    std::vector<int> ids;
+    if (scope_.choices != nullptr) {
+      const auto it = scope_.choices->ids.find(arg.text);
+      if (it == scope_.choices->ids.end()) {
+        std::vector<std::string> names;
+        for (const auto& [n, _] : scope_.choices->ids) names.push_back(n);
+        const std::string otherwise =
+            names.empty() ? fmt::format("no controller compared by experiment `{}` chooses among actions or "
+                                        "behaviors (symbolic controllers and supervisors do)",
+                                        scope_.choices->experiment)
+                          : fmt::format("the actions and behaviors of experiment `{}`: {}", scope_.choices->experiment,
+                                        quoted_list(names, ", "));
+        suggest(sink_.error(arg.where, fmt::format("`{}` is not an action or behavior of the controllers compared by "
+                                                   "experiment `{}`",
+                                                   arg.text, scope_.choices->experiment)),
+                arg.text, names, {.otherwise = otherwise, .always = names.size() <= 12});
+        return failed();
+      }
+      ids = it->second;
+    } else {
+      ids = {0};   // checked again in each experiment, with its controllers
+    }
+    Node out;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      const auto id = static_cast<std::uint32_t>(ids[k]);
+      if (f.reader == ChoiceReader::Using) {
+        out.code.push_back({Op::Load, expr::slot::acting, 0.0});
+        out.code.push_back({Op::Const, 0, static_cast<double>(ids[k])});
+        out.code.push_back({Op::Eq, 0, 0.0});
+        if (k > 0) out.code.push_back({Op::Or, 0, 0.0});
+      } else {
+        out.code.push_back({Op::Load, expr::aggregate::count + id, 0.0});
+        if (k > 0) out.code.push_back({Op::Add, 0, 0.0});
+      }
+    }
+    if (f.reader == ChoiceReader::Share) {
+      out.code.push_back({Op::Load, expr::aggregate::steps, 0.0});
+      out.code.push_back({Op::Div, 0, 0.0});
+    }
+    return out;
   }
 
   void unknown_name(const std::string& text, const SourceRange& where) {
@@ -205,6 +292,8 @@ class Lowerer {
 
   Node call(const ast::Expr& e) {
     if (const auto p = expr::find_parametrised(e.text)) return parametrised(e, *p);
+    for (const ChoiceFunction& f : kChoiceFunctions)
+      if (f.name == e.text) return choice(e, f);
     const Function* f = nullptr;
     for (const Function& k : kFunctions)
       if (k.name == e.text) f = &k;
@@ -214,8 +303,11 @@ class Lowerer {
             .help.push_back(fmt::format("index an array with brackets: `{}[0]`", e.text));
         return failed();
       }
-      suggest(sink_.error(e.unit_where, fmt::format("unknown function `{}`", e.text)), e.text, function_names(),
-              {.otherwise = "functions: min, max, abs, sqrt, exp, log, tanh, sigmoid, clamp, pow"});
+      std::vector<std::string> functions = function_names();
+      for (const ChoiceFunction& c : kChoiceFunctions) functions.emplace_back(c.name);
+      suggest(sink_.error(e.unit_where, fmt::format("unknown function `{}`", e.text)), e.text, functions,
+              {.otherwise = "functions: min, max, abs, sqrt, exp, log, tanh, sigmoid, clamp, pow; in a fitness "
+                            "also using(B), and in its end terms count(B) and share(B)"});
       // Still check the arguments.
       for (const auto& a : e.args) (void)lower(*a);
       return failed();

@@ -1,6 +1,7 @@
 #pragma once
 // Expressions -> expr::Program: names resolve to frame slots, units to SI, constant
 // subexpressions are folded, and a program deeper than the evaluator's stack is an error.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,12 +19,29 @@ struct ArenaNames {
   std::vector<std::string> zones, lights;
 };
 
+// The actions and behaviors of an experiment's compared controllers, as `using(B)`,
+// `share(B)` and `count(B)` name them: the usage table's name (`avoid`, `crash_2`) or the
+// behavior declared (`useless.crash`), each standing for the experiment-wide choice ids it
+// names (control::Choice::id): `avoid` is both the classical and the symbolic library's
+// `avoid` when two controllers hold one each, `useless.crash` every listing of it.
+struct ChoiceNames {
+  std::string experiment;            // for messages
+  std::map<std::string, std::vector<int>> ids;
+};
+
 struct ExprScope {
   std::vector<std::string> params;   // behavior parameters, read from slot::param + i
   // The arena `in(...)` / `reached(...)` resolve in. Null outside an experiment: then their
   // argument is only checked to be a name (each experiment lowers the expression again with
   // its arena).
   const ArenaNames* arena = nullptr;
+  // What the expression is: a behavior's wheel (no `using`), a fitness's step term or stop
+  // condition (`using(B)`), or an end term (`epoch:` / `evaluation:`: also the aggregates
+  // `share(B)`, `count(B)` and `steps`).
+  enum class Use { Behavior, Step, End } use = Use::Behavior;
+  // The choices `using(B)` & co. resolve among. Null outside an experiment: then their
+  // argument is only checked to be a name.
+  const ChoiceNames* choices = nullptr;
 };
 
 // Reports errors to `sink`; nullopt when the expression has one.

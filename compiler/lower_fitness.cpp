@@ -1,23 +1,42 @@
-// Fitness functions: `fitness NAME { step: EXPR  stop epoch when EXPR ... }` -> eval::FitnessSpec.
+// Fitness functions: `fitness NAME { step: EXPR  stop epoch when EXPR ...  epoch: EXPR
+// evaluation: EXPR }` -> eval::FitnessSpec.
 #include "compiler/lower_fitness.hpp"
 
 #include <fmt/format.h>
 
-#include "compiler/lower_expr.hpp"
-
 namespace esc::compiler {
 
-const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena) {
-  const auto key = std::pair{&d, arena};
+namespace {
+
+// An end term (`epoch:` or `evaluation:`), given at most once.
+void end_term(const std::vector<ast::FitnessTerm>& terms, std::string_view word, ExprScope scope, Sink& sink,
+              std::optional<expr::Program>& program, std::string& text) {
+  for (std::size_t i = 1; i < terms.size(); ++i)
+    sink.error(terms[i].where, fmt::format("the fitness already has an `{}:` term", word))
+        .notes.emplace_back(terms[0].where, "first given here");
+  if (terms.empty() || !terms[0].expr) return;
+  scope.use = ExprScope::Use::End;
+  program = lower_expr(*terms[0].expr, scope, sink);
+  text = terms[0].text;
+}
+
+}  // namespace
+
+const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena,
+                                                            const ast::ExperimentDecl* experiment,
+                                                            const ChoiceNames* choices) {
+  const Key key{&d, arena, experiment};
   if (auto it = fitnesses_.find(key); it != fitnesses_.end()) return it->second;
-  if (arena != nullptr && !lower(d)) return fitnesses_[key];   // reported without the arena
+  if ((arena != nullptr || experiment != nullptr) && !lower(d)) return fitnesses_[key];   // reported without them
   auto& slot = fitnesses_[key];
   if (d.poisoned) return slot;
   const int errors = sink_.errors();
   LoweredFitness f;
   f.spec.name = d.name.text;
   ExprScope scope;
+  scope.use = ExprScope::Use::Step;
   if (arena != nullptr) scope.arena = &arenas_.names(*arena);
+  scope.choices = choices;
   if (d.steps.empty())
     sink_.error(d.name.where, fmt::format("fitness `{}` has no `step:` term", d.name.text))
         .help.push_back("add `step: forward_speed`, the value added up at every control step");
@@ -33,6 +52,8 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
     if (auto p = lower_expr(*s.expr, scope, sink_)) f.spec.stop_when.push_back(std::move(*p));
     f.stop_texts.push_back(s.text);
   }
+  end_term(d.epoch_ends, "epoch", scope, sink_, f.spec.epoch_end, f.epoch_text);
+  end_term(d.evaluation_ends, "evaluation", scope, sink_, f.spec.evaluation_end, f.evaluation_text);
   if (sink_.errors() == errors) slot = std::move(f);
   return slot;
 }

@@ -1,14 +1,16 @@
 #pragma once
-// Lowers `fitness` declarations to eval::FitnessSpec: the `step:` term and the stop
-// conditions, resolved in an experiment's arena when given.
+// Lowers `fitness` declarations to eval::FitnessSpec: the `step:` term, the stop conditions
+// and the end terms (`epoch:`, `evaluation:`), resolved in an experiment's arena and among
+// its controllers' choices (`using(B)`, `share(B)`, `count(B)`) when given.
 #include <map>
 #include <optional>
 #include <string>
-#include <utility>
+#include <tuple>
 #include <vector>
 
 #include "compiler/ast.hpp"
 #include "compiler/lower_arena.hpp"
+#include "compiler/lower_expr.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/eval/experiment.hpp"
 
@@ -18,19 +20,24 @@ struct LoweredFitness {
   eval::FitnessSpec spec;
   std::string step_text;                  // source text, for resolved settings
   std::vector<std::string> stop_texts;
+  std::string epoch_text, evaluation_text;   // "" when there is no such term
 };
 
 class FitnessLowering {
  public:
   FitnessLowering(Sink& sink, ArenaLowering& arenas) : sink_(sink), arenas_(arenas) {}
 
-  // Memoised per (fitness, arena); what does not depend on the arena is reported once.
-  const std::optional<LoweredFitness>& lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena = nullptr);
+  // Memoised per (fitness, arena, experiment); what depends on neither is reported once.
+  // `experiment` names whose compared controllers `choices` are.
+  const std::optional<LoweredFitness>& lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena = nullptr,
+                                             const ast::ExperimentDecl* experiment = nullptr,
+                                             const ChoiceNames* choices = nullptr);
 
  private:
+  using Key = std::tuple<const ast::FitnessDecl*, const ast::ArenaDecl*, const ast::ExperimentDecl*>;
   Sink& sink_;
   ArenaLowering& arenas_;
-  std::map<std::pair<const ast::FitnessDecl*, const ast::ArenaDecl*>, std::optional<LoweredFitness>> fitnesses_;
+  std::map<Key, std::optional<LoweredFitness>> fitnesses_;
 };
 
 }  // namespace esc::compiler

@@ -376,11 +376,13 @@ class Builder {
   void library(P::LibraryDeclContext* c, ast::Module& m, int& order) {
     ast::LibraryDecl l;
     head(l, c, c->name, order);
+    if (c->mark != nullptr) l.mark = name(c->mark);
     for (P::BehaviorDeclContext* b : c->behaviorDecl()) {
       if (b == nullptr) continue;
       ast::BehaviorDecl d = behavior(b, ++order);
       d.member = d.name.text;
       d.library = l.name.text;
+      d.useless = l.mark && l.mark->text == "useless";
       if (!d.name.text.empty()) d.name.text = l.name.text + "." + d.member;
       l.members.push_back(d.name.text);
       m.behaviors.push_back(std::move(d));
@@ -396,6 +398,10 @@ class Builder {
         f.steps.push_back({expr(s->expr()), source(s->expr()), at(s->getStart())});
       else if (auto* s2 = dynamic_cast<P::FitnessStopContext*>(it))
         f.stops.push_back({expr(s2->expr()), source(s2->expr()), at(s2->getStart())});
+      else if (auto* s3 = dynamic_cast<P::FitnessEpochContext*>(it))
+        f.epoch_ends.push_back({expr(s3->expr()), source(s3->expr()), at(s3->getStart())});
+      else if (auto* s4 = dynamic_cast<P::FitnessEvaluationContext*>(it))
+        f.evaluation_ends.push_back({expr(s4->expr()), source(s4->expr()), at(s4->getStart())});
     }
     return f;
   }
@@ -730,6 +736,13 @@ class Builder {
       e->text = n.text;
       e->unit_where = n.where;
       e->args.push_back(expr(i->expr(), depth + 1));
+      return e;
+    }
+    if (auto* d = dynamic_cast<P::MemberExprContext*>(c)) {
+      const ast::Name library = name(d->ident(0)), member = name(d->member);
+      if (library.text.empty() || member.text.empty()) return error_expr(where);
+      e->kind = K::Name;
+      e->text = library.text + "." + member.text;
       return e;
     }
     if (auto* n = dynamic_cast<P::NameExprContext*>(c)) {

@@ -34,7 +34,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::ELMAN: case EscParser::SUPERVISOR: case EscParser::BEHAVIORS: case EscParser::ON:
     case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM: case EscParser::TREE:
     case EscParser::FUNCTIONS: case EscParser::TERMINALS: case EscParser::EVALUATE:
-    case EscParser::CONDITIONS: case EscParser::CONDITION: case EscParser::SWEEP: case EscParser::AS: return true;
+    case EscParser::CONDITIONS: case EscParser::CONDITION: case EscParser::SWEEP: case EscParser::AS:
+    case EscParser::EVALUATION: return true;
     default: return false;
   }
 }

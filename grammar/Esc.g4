@@ -62,8 +62,9 @@ behaviorDecl
   ;
 // A named group of behaviors; a member `avoid` of `library classical { ... }` is
 // `classical.avoid` elsewhere, and the library's name in a supervisor's list stands for
-// all its members in order.
-libraryDecl : LIBRARY name=ident '{' behaviorDecl* '}' ;
+// all its members in order. A word after the name marks the library: `useless` (reports
+// draw its members apart from the useful ones).
+libraryDecl : LIBRARY name=ident mark=ident? '{' behaviorDecl* '}' ;
 
 call : fn=ident '(' (expr (',' expr)*)? ')' ;
 
@@ -72,6 +73,9 @@ fitnessDecl : FITNESS name=ident '{' fitnessItem* '}' ;
 fitnessItem
   : STEP ':' expr ';'?            # fitnessStep
   | STOP EPOCH WHEN expr ';'?     # fitnessStop
+  // Terms added once at the end of each epoch, and of the evaluation, over its aggregates.
+  | EPOCH ':' expr ';'?           # fitnessEpoch
+  | EVALUATION ':' expr ';'?      # fitnessEvaluation
   ;
 
 // ---- controllers --------------------------------------------------------------------
@@ -158,6 +162,8 @@ expr
   | (TRUE | FALSE)                                         # boolExpr
   | ident '(' (expr (',' expr)*)? ')'                      # callExpr
   | ident '[' expr ']'                                     # indexExpr
+  // `library.member`: a library's behavior, as `using(...)`, `share(...)`, `count(...)` read it.
+  | ident '.' member=ident                                 # memberExpr
   | ident                                                  # nameExpr
   | <assoc=right> expr '^' expr                            # powExpr
   | op=('-' | '+') expr                                    # unaryExpr
@@ -176,7 +182,7 @@ ident
   | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
-  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | TREE | FUNCTIONS | TERMINALS
+  | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
   | CONDITIONS | CONDITION | SWEEP | AS
   ;
 
@@ -246,6 +252,7 @@ OFF : 'off' ;
 EVOLVED : 'evolved' ;
 FROM : 'from' ;
 EVALUATE : 'evaluate' ;
+EVALUATION : 'evaluation' ;
 TREE : 'tree' ;
 FUNCTIONS : 'functions' ;
 TERMINALS : 'terminals' ;

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 
 namespace esc::control {
@@ -37,6 +38,14 @@ void check_behavior(const std::string& what, const Behavior& b) {
 
 std::string behavior_where(const ControllerSpec& spec, std::size_t i) {
   return where(spec) + ": behavior " + std::to_string(i) + " '" + spec.behaviors[i].name + "'";
+}
+
+// The factory of a controller given none: networks, each again with no factory.
+std::unique_ptr<Actor> network(const ControllerSpec& spec, std::span<const double> genome, int depth) {
+  if (spec.is_tree())
+    throw std::invalid_argument(where(spec) + ": a frozen tree is built by tree_control::make_actor, which "
+                                "this controller was not given");
+  return std::make_unique<Controller>(spec, genome, nullptr, depth);
 }
 
 // Checks what Mlp and the sub-controllers do not, then returns the spec so it can run in
@@ -90,9 +99,9 @@ const ControllerSpec& checked(const ControllerSpec& spec, std::span<const double
 }  // namespace
 
 Controller::Controller(const ControllerSpec& spec, std::span<const double> genome)
-    : Controller(spec, genome, 0) {}
+    : Controller(spec, genome, nullptr, 0) {}
 
-Controller::Controller(const ControllerSpec& spec, std::span<const double> genome, int depth)
+Controller::Controller(const ControllerSpec& spec, std::span<const double> genome, ActorFactory subs, int depth)
     : spec_(&checked(spec, genome, depth)),
       net_(spec.mlp, spec.output_count(), output_activation(spec.head), genome) {
   if (spec.head == Head::Symbolic) {
@@ -109,7 +118,8 @@ Controller::Controller(const ControllerSpec& spec, std::span<const double> genom
     std::size_t n_subs = 0;
     for (const SupervisedBehavior& b : spec.behaviors)
       if (std::holds_alternative<FixedController>(b.what)) ++n_subs;
-    subs_.reserve(n_subs);  // no reallocation below: sub-controllers never move
+    subs_.reserve(n_subs);
+    const ActorFactory make = subs != nullptr ? subs : &network;
     for (std::size_t i = 0; i < spec.behaviors.size(); ++i) {
       const auto* fixed = std::get_if<FixedController>(&spec.behaviors[i].what);
       if (fixed == nullptr) {
@@ -117,7 +127,7 @@ Controller::Controller(const ControllerSpec& spec, std::span<const double> genom
         continue;
       }
       try {
-        subs_.push_back(Controller(*fixed->spec, fixed->genome, depth + 1));
+        subs_.push_back(make(*fixed->spec, fixed->genome, depth + 1));
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(behavior_where(spec, i) + ": " + e.what());
       }
@@ -135,18 +145,18 @@ void Controller::rebind(std::span<const double> genome) {
 
 void Controller::reset() noexcept {
   net_.reset();
-  for (Controller& s : subs_) s.reset();
+  for (const auto& s : subs_) s->reset();
   last_action_ = -1;
 }
 
 void Controller::clear_usage() noexcept {
   for (std::int64_t& u : usage_) u = 0;
-  for (Controller& s : subs_) s.clear_usage();
+  for (const auto& s : subs_) s->clear_usage();
 }
 
-const Controller* Controller::sub_controller(std::size_t i) const noexcept {
+const Actor* Controller::sub_controller(std::size_t i) const noexcept {
   if (i >= sub_index_.size() || sub_index_[i] < 0) return nullptr;
-  return &subs_[static_cast<std::size_t>(sub_index_[i])];
+  return subs_[static_cast<std::size_t>(sub_index_[i])].get();
 }
 
 WheelCommand Controller::step(expr::Frame& frame) noexcept {
@@ -183,7 +193,7 @@ WheelCommand Controller::step(expr::Frame& frame) noexcept {
   // recurrent state stays frozen where it was last chosen (or zero since the epoch began),
   // as if the behavior had been switched off; this also makes a step cost one network
   // per level rather than all of them. The paper does not say which it did.
-  if (const int s = sub_index_[best]; s >= 0) return subs_[static_cast<std::size_t>(s)].step(frame);
+  if (const int s = sub_index_[best]; s >= 0) return subs_[static_cast<std::size_t>(s)]->step(frame);
   const auto& call = *std::get_if<BehaviorCall>(&spec_->behaviors[best].what);
   for (std::size_t k = 0; k < call.args.size(); ++k) frame[expr::slot::param + k] = call.args[k];
   return run_behavior(call.behavior, frame);

@@ -3,19 +3,22 @@
 // working buffers, so step() does not allocate. Build one per evaluation, or build one
 // per worker and rebind() it to each genome in turn.
 //
-// A supervisor owns one Controller per supervised sub-controller (built with it, bound to
-// the fixed genome stored in the spec), each with its own buffers and recurrent state.
+// A supervisor owns one Actor per supervised sub-controller (built with it, bound to the
+// fixed genome stored in the spec), each with its own buffers and recurrent state: a
+// Controller for a network, or whatever the ActorFactory it was given builds (a tree).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "runtime/control/actor.hpp"
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/control/mlp.hpp"
 
 namespace esc::control {
 
-class Controller {
+class Controller final : public Actor {
  public:
   // Supervisors may supervise supervisors, down to this depth (a deeper chain is almost
   // certainly a spec that contains itself).
@@ -27,8 +30,11 @@ class Controller {
   // parameters or an incomplete program, an input slot outside the frame, an Elman
   // network without exactly one hidden layer, a supervisor without behaviors, a behavior
   // call with the wrong number of arguments, a sub-controller whose spec is missing or
-  // whose genome has the wrong size, ...).
+  // whose genome has the wrong size, a frozen tree without a factory to build it, ...).
   Controller(const ControllerSpec& spec, std::span<const double> genome);
+  // Frozen sub-controllers (a supervisor's evolved behaviors) are built by `subs`, `depth`
+  // levels below the top controller (ActorFactory); without one, only networks can be.
+  Controller(const ControllerSpec& spec, std::span<const double> genome, ActorFactory subs, int depth = 0);
 
   // Points the controller at another genome of the same size, keeping its buffers, then
   // resets it and clears its usage counts (a new genome is a new individual).
@@ -37,39 +43,37 @@ class Controller {
 
   // Clears all internal state, sub-controllers' included: Elman context units, last
   // action (called at the start of each epoch). Usage counts are kept.
-  void reset() noexcept;
+  void reset() noexcept override;
 
   // Reads the inputs from `frame`, runs the network and the head. A symbolic head writes
   // the chosen action's parameters into frame[slot::param + i] before running it; a
   // supervisor writes a behavior call's arguments there, or steps the chosen
   // sub-controller, which may write its own parameters there.
-  WheelCommand step(expr::Frame& frame) noexcept;
+  WheelCommand step(expr::Frame& frame) noexcept override;
 
   // Index of the action (symbolic head) or behavior (supervisor) chosen by the last step;
   // -1 for a classical head or before the first step after a reset.
-  [[nodiscard]] int last_action() const noexcept { return last_action_; }
+  [[nodiscard]] int last_action() const noexcept override { return last_action_; }
 
   // Steps spent in each action (symbolic) or behavior (supervisor), in spec order (see
   // ControllerSpec::choice_names()), since construction, rebind() or clear_usage();
   // empty for a classical head.
-  [[nodiscard]] std::span<const std::int64_t> usage() const noexcept { return usage_; }
+  [[nodiscard]] std::span<const std::int64_t> usage() const noexcept override { return usage_; }
   // Zeroes the usage counts, sub-controllers' included.
-  void clear_usage() noexcept;
+  void clear_usage() noexcept override;
 
   // Supervisor: the controller running behavior `i` if it is a sub-controller (its own
   // last_action() and usage() tell what it did); nullptr for a behavior call, an index out
   // of range, or another head.
-  [[nodiscard]] const Controller* sub_controller(std::size_t i) const noexcept;
+  [[nodiscard]] const Actor* sub_controller(std::size_t i) const noexcept;
 
   [[nodiscard]] const ControllerSpec& spec() const noexcept { return *spec_; }
 
  private:
-  Controller(const ControllerSpec& spec, std::span<const double> genome, int depth);
-
   const ControllerSpec* spec_;
   Mlp net_;
   std::vector<std::size_t> param_offset_;  // symbolic head: output index of action i's param 0
-  std::vector<Controller> subs_;           // supervisor: one per FixedController, in order
+  std::vector<std::unique_ptr<Actor>> subs_;   // supervisor: one per FixedController, in order
   std::vector<int> sub_index_;             // supervisor: behavior i's index in subs_, or -1
   std::vector<std::int64_t> usage_;
   int last_action_ = -1;

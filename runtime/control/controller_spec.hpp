@@ -72,6 +72,18 @@ struct SupervisedBehavior {
   std::variant<BehaviorCall, FixedController> what;
 };
 
+// One action (symbolic head) or behavior (supervisor) of a controller, as scripts, usage
+// tables and reports name it; the compiler fills them in ControllerSpec::choices.
+struct Choice {
+  std::string name;       // the usage table's name without arguments: `avoid`, `crash_2`, `forward`
+  std::string behavior;   // the behavior declared: `useless.crash`, `forward`
+  std::string library;    // the library it comes from, "" when none
+  bool useless = false;   // its library is marked `useless`: reports draw it apart
+  // Experiment-wide: written into the frame's `acting` slot on every step it acts, so that
+  // one fitness program reads `using(B)` for every compared controller. -1: none.
+  int id = -1;
+};
+
 struct ControllerSpec {
   std::string name;
   MlpSpec mlp;
@@ -84,6 +96,9 @@ struct ControllerSpec {
   // Shared and immutable: copies of the spec share one set.
   std::shared_ptr<const evo::gp::PrimitiveSet> primitives;
   std::string primitives_name;                 // the script's `primitives` declaration
+  // One per choice_names() entry, in order, when the compiler built the spec; may be empty
+  // (then no choice has an id: `using(B)` reads 0).
+  std::vector<Choice> choices;
 
   [[nodiscard]] bool is_tree() const noexcept { return primitives != nullptr; }
   // Classical: 2. Symbolic: actions + all their parameters. Supervisor: behaviors.
@@ -98,6 +113,10 @@ struct ControllerSpec {
   // What Controller::usage() counts, in index order: the action names (Symbolic), the
   // behavior names (Supervisor), nothing (Classical).
   [[nodiscard]] std::vector<std::string> choice_names() const;
+  // The experiment-wide id of choice `i` (Choice::id), -1 for none or an index out of range.
+  [[nodiscard]] int choice_id(int i) const noexcept {
+    return i >= 0 && static_cast<std::size_t>(i) < choices.size() ? choices[static_cast<std::size_t>(i)].id : -1;
+  }
 };
 
 }  // namespace esc::control

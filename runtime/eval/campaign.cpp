@@ -35,30 +35,42 @@ struct Pool {
 void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, CampaignListener& listener) {
   const auto start = Clock::now();
   Pool pool{{0}};
-  for (const auto& job : active) pool.first.push_back(pool.first.back() + job->breed());
-  constexpr std::size_t kWidth = 2;   // fitness, steps (exact as doubles below 2^53)
-  std::vector<double> results(pool.size() * kWidth, 0.0);
-  ev.distribution.run(pool.size(), kWidth, ev.threads, results, [&](std::size_t i) {
+  std::vector<std::size_t> choices;   // per job: its controller's actions or behaviors
+  for (const auto& job : active) {
+    pool.first.push_back(pool.first.back() + job->breed());
+    choices.push_back(job->controller().choice_names().size());
+  }
+  const std::size_t width = detail::kResultUsage + *std::max_element(choices.begin(), choices.end());
+  std::vector<double> results(pool.size() * width, 0.0);
+  ev.distribution.run(pool.size(), width, ev.threads, results, [&](std::size_t i) {
     const std::size_t j = pool.job_of(i);
     const RunJob& job = *active[j];
     const std::size_t k = i - pool.first[j];
     const Evaluation e = job.evaluate(ev.workers.local(), k, evaluation_seed(job.state().seed, job.generation(), k));
-    results[i * kWidth] = e.fitness;
-    results[i * kWidth + 1] = static_cast<double>(e.steps);
+    double* row = &results[i * width];
+    row[detail::kResultFitness] = e.fitness;
+    row[detail::kResultSteps] = static_cast<double>(e.steps);
+    for (std::size_t c = 0; c < e.usage.size() && detail::kResultUsage + c < width; ++c)
+      row[detail::kResultUsage + c] = static_cast<double>(e.usage[c]);
   });
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::vector<double> fitness;
   std::vector<std::int64_t> steps(active.size(), 0);
   for (std::size_t j = 0; j < active.size(); ++j)
     for (std::size_t i = pool.first[j]; i < pool.first[j + 1]; ++i)
-      steps[j] += static_cast<std::int64_t>(results[i * kWidth + 1]);
+      steps[j] += static_cast<std::int64_t>(results[i * width + detail::kResultSteps]);
   const std::int64_t all_steps = std::accumulate(steps.begin(), steps.end(), std::int64_t{0});
   listener.round_evaluated({active.size(), static_cast<std::int64_t>(pool.size()), all_steps, seconds});
   for (std::size_t j = 0; j < active.size(); ++j) {
     RunJob& job = *active[j];
     fitness.clear();
-    for (std::size_t i = pool.first[j]; i < pool.first[j + 1]; ++i) fitness.push_back(results[i * kWidth]);
-    job.evaluated(fitness, detail::summarise(job.generation(), fitness, steps[j], seconds));
+    for (std::size_t i = pool.first[j]; i < pool.first[j + 1]; ++i)
+      fitness.push_back(results[i * width + detail::kResultFitness]);
+    GenerationStats stats = detail::summarise(job.generation(), fitness, steps[j], seconds);
+    const std::span<const double> rows(results.data() + pool.first[j] * width,
+                                       (pool.first[j + 1] - pool.first[j]) * width);
+    stats.usage = detail::summarise_usage(rows, width, choices[j]);
+    job.evaluated(fitness, stats);
     listener.generation_done(job.controller(), job.state().run, job.state().generations.back());
     listener.checkpoint(job.controller(), job.state());
   }

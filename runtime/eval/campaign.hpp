@@ -6,6 +6,7 @@
 // evaluation's stream is derived from (run seed, generation, individual), so results are
 // bit-identical for any thread count.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,6 +43,7 @@ struct RunResult {
   // The best Wheels or Action tree as a behavior's body, `wheels(LEFT, RIGHT)`, computing the
   // same commands (an Action tree with its actions inlined); empty for a Behavior tree.
   std::string best_behavior{};
+  std::optional<Transfer> transfer{};   // a run that started from a stored genome
 };
 
 // Seed of the evaluation of offspring `index` of generation `generation` of a run.

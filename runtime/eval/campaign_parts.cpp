@@ -22,7 +22,24 @@ struct Recorder final : TraceSink {
 
 std::optional<std::size_t> RunJob::record(std::span<const double> fitness, const GenerationStats& stats) {
   state_.generations.push_back(stats);
+  // Individual 0 of generation 0 is the stored genome unchanged.
+  if (state_.transfer && stats.generation == 0 && !fitness.empty()) state_.transfer->fitness_here = fitness.front();
   return improve_best(state_, stats.generation, fitness);
+}
+
+const StartFrom::Origin* start_of(const ExperimentSpec& spec, const control::ControllerSpec& controller,
+                                  int run) noexcept {
+  if (!spec.start_from) return nullptr;
+  return spec.start_from->origin(static_cast<std::size_t>(&controller - spec.controllers.data()), run);
+}
+
+RunState fresh_run(const ExperimentSpec& spec, int run, const StartFrom::Origin* start) {
+  RunState st;
+  st.run = run;
+  st.seed = run_seed(spec.seed, run);
+  if (start != nullptr)
+    st.transfer = Transfer{spec.start_from->experiment, start->run, start->fitness, spec.evaluates_only(), std::nullopt};
+  return st;
 }
 
 GenerationStats summarise(int generation, std::span<const double> fitness, std::int64_t steps, double seconds) {
@@ -43,6 +60,26 @@ GenerationStats summarise(int generation, std::span<const double> fitness, std::
   for (const double f : fitness) sq += (f - g.mean) * (f - g.mean);
   g.sd = fitness.size() > 1 ? std::sqrt(sq / (n - 1.0)) : 0.0;
   return g;
+}
+
+GenerationUsage summarise_usage(std::span<const double> rows, std::size_t width, std::size_t choices) {
+  GenerationUsage u;
+  const std::size_t n = width == 0 ? 0 : rows.size() / width;
+  if (choices == 0 || n == 0 || kResultUsage + choices > width) return u;
+  // The generation's best evaluation: the first of the best fitness, as improve_best picks.
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (rows[i * width + kResultFitness] > rows[best * width + kResultFitness]) best = i;
+  u.steps_total = static_cast<std::int64_t>(rows[best * width + kResultSteps]);
+  u.best.resize(choices);
+  u.mean.assign(choices, 0.0);
+  for (std::size_t c = 0; c < choices; ++c) {
+    u.best[c] = static_cast<std::int64_t>(rows[best * width + kResultUsage + c]);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) sum += rows[i * width + kResultUsage + c];
+    u.mean[c] = sum / static_cast<double>(n);
+  }
+  return u;
 }
 
 std::optional<std::size_t> improve_best(RunState& st, int generation, std::span<const double> fitness) {
@@ -68,6 +105,7 @@ RunResult close_run(RunState&& st) {
   result.best_genome = std::move(st.best_genome);
   result.best_generation = st.best_generation;
   result.best_index = st.best_index;
+  result.transfer = std::move(st.transfer);
   return result;
 }
 

@@ -82,8 +82,25 @@ class RunJob {
 [[nodiscard]] std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
                                              int run, const RunState* from);
 
+// Where run `run` of `controller` starts from (`start from` / `evaluate from`), or null when
+// it starts from a random population.
+[[nodiscard]] const StartFrom::Origin* start_of(const ExperimentSpec& spec, const control::ControllerSpec& controller,
+                                                int run) noexcept;
+// A run before its first generation: its index, seed, and where it starts from if it does.
+[[nodiscard]] RunState fresh_run(const ExperimentSpec& spec, int run, const StartFrom::Origin* start);
+
 [[nodiscard]] GenerationStats summarise(int generation, std::span<const double> fitness, std::int64_t steps,
                                         double seconds);
+
+// What a round's pool holds per evaluation: its fitness, its steps, then the steps of each
+// choice of its controller (Evaluation::usage), `width` doubles in all (exact: counts stay
+// below 2^53), so that MPI ranks exchange them as doubles.
+inline constexpr std::size_t kResultFitness = 0;
+inline constexpr std::size_t kResultSteps = 1;
+inline constexpr std::size_t kResultUsage = 2;
+// A generation's usage from its evaluations' rows (`width` doubles each, as above), for a
+// controller of `choices` choices; empty when it has none.
+[[nodiscard]] GenerationUsage summarise_usage(std::span<const double> rows, std::size_t width, std::size_t choices);
 
 // Records the first individual of this generation that beats the run's best so far (its
 // fitness, generation and index: the caller stores its genome). Returns its index.

@@ -13,22 +13,11 @@ namespace esc::eval::detail {
 
 namespace {
 
-// The genome run `run` of controller `index` starts from (`start from` / `evaluate from`),
-// or null when it starts from a random population.
-const std::vector<double>* start_genome(const ExperimentSpec& spec, std::size_t index, int run) {
-  if (!spec.start_from || index >= spec.start_from->genomes.size()) return nullptr;
-  const auto& runs = spec.start_from->genomes[index];
-  if (runs.empty()) return nullptr;
-  return &runs[static_cast<std::size_t>(run) % runs.size()];
-}
-
 RunState fresh_state(const ExperimentSpec& spec, const evo::EvolutionStrategy& es, int run,
-                     const std::vector<double>* start) {
-  RunState st;
-  st.run = run;
-  st.seed = run_seed(spec.seed, run);
+                     const StartFrom::Origin* start) {
+  RunState st = fresh_run(spec, run, start);
   if (start != nullptr) {
-    st.algorithm = EsState{es.seeded(*start)};
+    st.algorithm = EsState{es.seeded(start->genome)};
     return st;
   }
   Rng init(st.seed, {static_cast<std::uint64_t>(Stream::Init)});
@@ -40,7 +29,7 @@ class EsRun final : public RunJob {
  public:
   EsRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
       : EsRun(spec, controller, run, from, evo::EvolutionStrategy(spec.es, controller.genome_size()),
-              start_genome(spec, static_cast<std::size_t>(&controller - spec.controllers.data()), run)) {}
+              start_of(spec, controller, run)) {}
 
   // A run that starts from a stored genome keeps it unchanged as offspring 0 of
   // generation 0, so that generation measures it in the new setting; a run that only
@@ -81,17 +70,17 @@ class EsRun final : public RunJob {
 
  private:
   EsRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from,
-        evo::EvolutionStrategy es, const std::vector<double>* start)
+        evo::EvolutionStrategy es, const StartFrom::Origin* start)
       : RunJob(spec, controller, from != nullptr ? *from : fresh_state(spec, es, run, start)),
         es_(std::move(es)),
         start_(start),
-        evaluate_only_(start != nullptr && spec.start_from->evaluate_only) {}
+        evaluate_only_(start != nullptr && spec.evaluates_only()) {}
 
   [[nodiscard]] bool evaluate_only() const noexcept { return evaluate_only_; }
   [[nodiscard]] std::vector<evo::Individual>& parents() { return std::get<EsState>(state_.algorithm).parents; }
 
   evo::EvolutionStrategy es_;
-  const std::vector<double>* start_;   // the stored genome the run starts from, or null
+  const StartFrom::Origin* start_;   // the stored genome the run starts from, or null
   bool evaluate_only_;
   std::vector<evo::Individual> offspring_;
 };

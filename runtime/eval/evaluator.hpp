@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "runtime/eval/experiment.hpp"
 #include "runtime/evo/gp/tree.hpp"
@@ -17,6 +18,9 @@ namespace esc::eval {
 struct Evaluation {
   double fitness = 0.0;
   std::int64_t steps = 0;   // control steps simulated (epochs may end early)
+  // Steps on which each action (symbolic head) or behavior (supervisor) acted, in
+  // ControllerSpec::choice_names() order; empty for a classical head. They add up to `steps`.
+  std::vector<std::int64_t> usage;
 };
 
 // One control step of a traced evaluation (the replay of a controller): the state after
@@ -50,7 +54,8 @@ class TraceSink {
 
 class Evaluator {
  public:
-  // `spec` must outlive the evaluator.
+  // `spec` must outlive the evaluator. Throws std::invalid_argument when an end term of its
+  // fitness reads a slot beyond the frame and the experiment's choice counts.
   explicit Evaluator(const ExperimentSpec& spec);
 
   // Deterministic in (controller, genome, seed) whatever this evaluator ran before.
@@ -65,13 +70,20 @@ class Evaluator {
                                     std::uint64_t seed, TraceSink* trace = nullptr);
 
  private:
-  // The epochs, with any controller that has reset(), step(frame) and last_action().
+  // The epochs, with any controller that has reset(), step(frame), last_action() and usage().
   // `noise`: whether anything reads the `noise` observable (it is written only then).
   template <class Driver>
-  Evaluation run(Driver& ctl, bool noise, std::uint64_t seed, TraceSink* trace);
+  Evaluation run(const control::ControllerSpec& controller, Driver& ctl, bool noise, std::uint64_t seed,
+                 TraceSink* trace);
+  // An end term's value: `term` on the last step's `frame` followed by the aggregates of the
+  // `steps` steps in which the choices acted `usage` - `before` times.
+  double end_term(const expr::Program& term, const control::ControllerSpec& controller, const expr::Frame& frame,
+                  std::int64_t steps, std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
 
   const ExperimentSpec* spec_;
   sim::World world_;
+  std::vector<double> end_frame_;           // an end term's frame: expr::Frame, then expr::aggregate
+  std::vector<std::int64_t> epoch_start_;   // usage when the epoch began
 };
 
 }  // namespace esc::eval

@@ -20,11 +20,16 @@ namespace esc::eval {
 
 // Fitness of one evaluation: the sum over epochs and steps of `step`, evaluated after the
 // physics of each control step. An epoch ends early after the first step at which any
-// `stop_when` program is non-zero (that step's term still counts).
+// `stop_when` program is non-zero (that step's term still counts). The end terms are added
+// once at the end of each epoch (`epoch_end`) and of the evaluation (`evaluation_end`): they
+// read the last step's frame followed by the aggregates of expr::aggregate over the epoch
+// (the evaluation), one count per experiment-wide choice id.
 struct FitnessSpec {
   std::string name;
   expr::Program step;
   std::vector<expr::Program> stop_when;
+  std::optional<expr::Program> epoch_end;
+  std::optional<expr::Program> evaluation_end;
 };
 
 // A supervised behavior that is another experiment's evolved controller
@@ -40,12 +45,25 @@ struct Dependency {
 // `start from experiment E` / `evaluate from experiment E`: every run r begins with the
 // best genome of run r (modulo E's run count) of E's controller of the same name, which
 // must run first. Evaluating only, a run is one generation holding that genome alone;
-// starting from it, generation 0's parents are copies of it and offspring 0 is it unchanged.
+// starting from it, generation 0's parents are copies of it and offspring 0 is it unchanged
+// (a tree: generation 0 is bred from copies of it, and individual 0 is it unchanged).
 struct StartFrom {
+  // One of E's finished runs: what a run here starts from.
+  struct Origin {
+    int run = 0;                    // E's run, from 0
+    double fitness = 0.0;           // its best fitness in E
+    std::vector<double> genome;     // its best genome (a tree: encoded, evo/gp/codec.hpp)
+  };
   std::string experiment;
   bool evaluate_only = false;
-  // Filled in before running: [controller index][E's run] -> best genome of that run.
-  std::vector<std::vector<std::vector<double>>> genomes;
+  // Filled in before running: [controller index][E's run] -> that run's best.
+  std::vector<std::vector<Origin>> genomes;
+
+  // Where run `run` of controller `index` starts from; null when nothing was filled in.
+  [[nodiscard]] const Origin* origin(std::size_t index, int run) const noexcept {
+    if (index >= genomes.size() || genomes[index].empty()) return nullptr;
+    return &genomes[index][static_cast<std::size_t>(run) % genomes[index].size()];
+  }
 };
 
 struct ExperimentSpec {
@@ -63,6 +81,9 @@ struct ExperimentSpec {
   // compared). Its primitive set is each tree controller's own.
   std::optional<evo::gp::GpSettings> gp;
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
+  // Distinct choice ids over the compared controllers (control::Choice::id is below it): the
+  // counts an end term can read.
+  std::size_t choice_ids = 0;
   // Every setting as resolved, for the run directory ("epochs" -> "10", ...).
   std::map<std::string, std::string> resolved_settings;
   // Evolved behaviors to fill in before running, one per (experiment, controller) used.
@@ -81,19 +102,19 @@ struct ExperimentSpec {
     return n;
   }
 
+  [[nodiscard]] bool evaluates_only() const noexcept { return start_from && start_from->evaluate_only; }
   // Generations the networks evolve for: 1 when only evaluating stored controllers.
-  [[nodiscard]] int es_generations() const noexcept {
-    return start_from && start_from->evaluate_only ? 1 : es.generations;
-  }
+  [[nodiscard]] int es_generations() const noexcept { return evaluates_only() ? 1 : es.generations; }
   // Generations a compared controller evolves for: the GP's for a tree, else es_generations().
   [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
-    return c.is_tree() && gp ? gp->generations : es_generations();
+    return c.is_tree() && gp && !evaluates_only() ? gp->generations : es_generations();
   }
   // Individuals a compared controller evaluates each generation: the GP population for a
   // tree, else the ES's lambda, or 1 when the experiment only evaluates stored genomes.
   [[nodiscard]] std::size_t evaluations_per_generation(const control::ControllerSpec& c) const noexcept {
+    if (evaluates_only()) return 1;
     if (c.is_tree() && gp) return static_cast<std::size_t>(gp->population);
-    return start_from && start_from->evaluate_only ? 1 : static_cast<std::size_t>(es.lambda);
+    return static_cast<std::size_t>(es.lambda);
   }
   // The most generations of any compared controller (the ES's when none is compared).
   [[nodiscard]] int max_generations() const noexcept {

@@ -81,12 +81,14 @@ std::string fingerprint(const ExperimentSpec& spec) {
                                                           z.random_position ? 1.0 : 0.0, z.recharge ? 1.0 : 0.0});
   w.program("fitness.step", spec.fitness.step);
   for (const auto& p : spec.fitness.stop_when) w.program("fitness.stop", p);
+  if (spec.fitness.epoch_end) w.program("fitness.epoch", *spec.fitness.epoch_end);
+  if (spec.fitness.evaluation_end) w.program("fitness.evaluation", *spec.fitness.evaluation_end);
   for (std::size_t i = 0; i < spec.controllers.size(); ++i)
     w.controller(fmt::format("controller{}", i), spec.controllers[i]);
   if (spec.start_from)
     for (std::size_t c = 0; c < spec.start_from->genomes.size(); ++c)
       for (std::size_t r = 0; r < spec.start_from->genomes[c].size(); ++r)
-        w.numbers(fmt::format("start.{}.{}", c, r), spec.start_from->genomes[c][r]);
+        w.numbers(fmt::format("start.{}.{}", c, r), spec.start_from->genomes[c][r].genome);
   return std::move(w).text();
 }
 

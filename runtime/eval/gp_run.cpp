@@ -5,7 +5,11 @@
 // generation g > 0 breeds from generation g - 1 with Rng(seed, Breed, g) and evaluates the
 // result. Every individual is evaluated, elites too: fitness is measured from random start
 // poses, so an elite is judged on this generation's streams like everyone else.
+// A run that starts from a stored tree (`start from`) breeds generation 0 from copies of it
+// with Rng(seed, Init), as the ES seeds its parents with copies, and keeps the tree itself
+// unchanged as individual 0; one that only evaluates it (`evaluate from`) has that one tree.
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <variant>
 
@@ -36,8 +40,10 @@ std::string behavior_body(const control::ControllerSpec& controller, const evo::
 class GpRun final : public RunJob {
  public:
   GpRun(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
-      : RunJob(spec, controller, from != nullptr ? *from : fresh_state(spec, run)),
-        gp_(*spec.gp, *controller.primitives) {
+      : RunJob(spec, controller, from != nullptr ? *from : fresh_state(spec, run, start_of(spec, controller, run))),
+        start_(start_of(spec, controller, run)),
+        evaluate_only_(start_ != nullptr && spec.evaluates_only()) {
+    if (!evaluate_only_) gp_.emplace(*spec.gp, *controller.primitives);
     // A stored population must be one this script could have bred (the store keeps trees
     // without their primitive set).
     if (!state_.generations.empty() && population().size() != evaluations_per_generation())
@@ -53,13 +59,24 @@ class GpRun final : public RunJob {
 
   std::size_t breed() override {
     const int g = generation();
-    if (g == 0) {
-      Rng init(state_.seed, {static_cast<std::uint64_t>(Stream::Init)});
-      bred_ = gp_.initial(init);
-    } else {
+    if (g > 0) {
       Rng rng(state_.seed, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(g)});
-      bred_ = gp_.breed(population(), rng);
+      bred_ = gp_->breed(population(), rng);
+      return bred_.size();
     }
+    Rng init(state_.seed, {static_cast<std::uint64_t>(Stream::Init)});
+    if (start_ == nullptr) {
+      bred_ = gp_->initial(init);
+      return bred_.size();
+    }
+    const evo::gp::Individual stored{evo::gp::decode(start_->genome, *controller_->primitives), 0.0};
+    if (evaluate_only_) {
+      bred_ = {stored};
+      return bred_.size();
+    }
+    const std::vector<evo::gp::Individual> copies(static_cast<std::size_t>(gp_->settings().population), stored);
+    bred_ = gp_->breed(copies, init);
+    bred_.front() = stored;
     return bred_.size();
   }
 
@@ -91,10 +108,8 @@ class GpRun final : public RunJob {
   }
 
  private:
-  static RunState fresh_state(const ExperimentSpec& spec, int run) {
-    RunState st;
-    st.run = run;
-    st.seed = run_seed(spec.seed, run);
+  static RunState fresh_state(const ExperimentSpec& spec, int run, const StartFrom::Origin* start) {
+    RunState st = fresh_run(spec, run, start);
     st.algorithm = GpState{};
     return st;
   }
@@ -103,7 +118,9 @@ class GpRun final : public RunJob {
     return std::get<GpState>(state_.algorithm).population;
   }
 
-  evo::gp::GeneticProgramming gp_;
+  const StartFrom::Origin* start_;         // the stored tree the run starts from, or null
+  bool evaluate_only_;
+  std::optional<evo::gp::GeneticProgramming> gp_;   // none when the run only evaluates
   std::vector<evo::gp::Individual> bred_;
 };
 
@@ -111,7 +128,7 @@ class GpRun final : public RunJob {
 
 std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run,
                                const RunState* from) {
-  if (!spec.gp)
+  if (!spec.gp && !spec.evaluates_only())
     throw std::invalid_argument("tree controller '" + controller.name + "' is compared, but experiment '" +
                                 spec.name + "' has no GP settings");
   if (from != nullptr && !std::holds_alternative<GpState>(from->algorithm))

@@ -94,6 +94,9 @@ bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& contr
   if (program_reads(fitness.step, slot)) return true;
   for (const expr::Program& p : fitness.stop_when)
     if (program_reads(p, slot)) return true;
+  // An end term reads the last step's frame.
+  for (const auto* end : {&fitness.epoch_end, &fitness.evaluation_end})
+    if (*end && program_reads(**end, slot)) return true;
   return controller_reads(controller, slot);
 }
 

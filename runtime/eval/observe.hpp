@@ -30,9 +30,10 @@ void observe_clock(int epoch, int step, double control_step_s, expr::Frame& fram
 // evaluation's streams: whether a script reads it or not changes no other value.
 void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) noexcept;
 
-// Whether evaluating `controller` under `fitness` may read frame slot `slot`: a fitness or
-// stop program, a network input, an action's or behavior's program, a sub-controller's; a
-// tree controller is taken to read every slot. The step loop skips observables nobody reads.
+// Whether evaluating `controller` under `fitness` may read frame slot `slot`: a fitness,
+// stop or end program, a network input, an action's or behavior's program, a
+// sub-controller's; a tree controller is taken to read every slot. The step loop skips
+// observables nobody reads.
 [[nodiscard]] bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& controller,
                               expr::Slot slot) noexcept;
 

@@ -5,13 +5,27 @@
 // RunState::algorithm, so that nothing tells them apart by emptiness (the store keeps each
 // in a table of its own: runtime/store/es_state.*, tree_state.*).
 #include <cstdint>
+#include <optional>
 #include <variant>
 #include <vector>
 
+#include "runtime/eval/transfer.hpp"
 #include "runtime/evo/es.hpp"
 #include "runtime/evo/gp/selection.hpp"
 
 namespace esc::eval {
+
+// The steps each action (symbolic head) or behavior (supervisor) acted in one generation:
+// in its best evaluation (the first of the generation's best fitness) and on average over
+// all its evaluations. Empty for a classical head.
+struct GenerationUsage {
+  std::int64_t steps_total = 0;     // control steps of the best evaluation
+  std::vector<std::int64_t> best;   // per choice, in ControllerSpec::choice_names() order
+  std::vector<double> mean;         // per choice
+
+  [[nodiscard]] bool empty() const noexcept { return best.empty(); }
+  friend bool operator==(const GenerationUsage&, const GenerationUsage&) = default;
+};
 
 struct GenerationStats {
   int generation = 0;          // from 0
@@ -23,6 +37,7 @@ struct GenerationStats {
   // Wall time of the round that evaluated this generation, shared with the runs that
   // advanced with it (not part of the result proper).
   double seconds = 0.0;
+  GenerationUsage usage{};
 };
 
 // What the ES breeds the next generation from: the mu parents selected after the last
@@ -50,6 +65,7 @@ struct RunState {
   int best_generation = 0;
   int best_index = 0;
   std::variant<EsState, GpState> algorithm;   // networks by the ES, trees by GP
+  std::optional<Transfer> transfer{};         // set when the run starts from a stored genome
 };
 
 }  // namespace esc::eval

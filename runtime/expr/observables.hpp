@@ -35,7 +35,10 @@ inline constexpr Slot cells_visited = 29; // grid cells visited this epoch (star
 inline constexpr Slot in_zone = 30;       // in_zone[z]: `in(zone)`, 1 when the centre is in zone z
 inline constexpr Slot reached = 38;       // reached[l]: `reached(light)`, 1 on entering light l's reach
 inline constexpr Slot noise = 42;         // uniform in [0, 1), fresh at every step of an evaluation
-inline constexpr Slot param = 43;         // param[0..3]: parameters of the running behavior (last)
+// The experiment-wide id of the action or behavior the compared controller chose at this
+// step (ControllerSpec::Choice::id), -1 when it chooses none: what `using(B)` compares.
+inline constexpr Slot acting = 43;
+inline constexpr Slot param = 44;         // param[0..3]: parameters of the running behavior (last)
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -49,8 +52,17 @@ inline constexpr Slot kFrameSize = slot::param + kMaxParams;
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
 static_assert(slot::reached + kMaxLights == slot::noise);
+static_assert(slot::noise + 1 == slot::acting && slot::acting + 1 == slot::param);
 
 using Frame = std::array<double, kFrameSize>;
+
+// The aggregates an end term (a fitness's `epoch:` or `evaluation:` term) reads, in slots
+// after the frame: it is evaluated once, on the last step's frame followed by these, over
+// the epoch (or the whole evaluation).
+namespace aggregate {
+inline constexpr Slot steps = kFrameSize;       // control steps the epoch (evaluation) ran
+inline constexpr Slot count = kFrameSize + 1;   // count[id]: steps in which choice `id` acted
+}  // namespace aggregate
 
 // One script-visible observable: a scalar (count 1, not indexable) or an array.
 struct Observable {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "runtime/report/comparisons.hpp"
+#include "runtime/report/generalization.hpp"
 #include "runtime/report/markup.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/study_table.hpp"
@@ -54,9 +55,11 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
     const eval::TraceStep& t = steps[i];
     json ir = json::array();
     for (double v : t.ir) ir.push_back(round_to(v, 3));
+    json light = json::array();
+    for (double v : t.light) light.push_back(round_to(v, 3));
     rows.push_back({t.epoch, t.step, round_to(t.pose.x_m * 1000.0, 1), round_to(t.pose.y_m * 1000.0, 1),
                     round_to(t.pose.heading_rad, 3), ir, round_to(t.left_command, 3), round_to(t.right_command, 3),
-                    t.action, round_to(t.fitness, 4), t.collided ? 1 : 0, round_to(t.energy, 3)});
+                    t.action, round_to(t.fitness, 4), t.collided ? 1 : 0, round_to(t.energy, 3), light});
   }
   int epochs = steps.empty() ? 0 : steps.back().epoch + 1;
   // Where the zones were in each epoch (random zones move at every epoch start), in mm.
@@ -75,7 +78,8 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
           {"total_steps", steps.size()},
           {"total_epochs", epochs},
           {"columns",
-           {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided", "energy"}},
+           {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided", "energy",
+            "light"}},
           {"epoch_zones", epoch_zones},
           {"rows", rows}};
 }
@@ -101,6 +105,57 @@ json figures_json(const std::vector<NamedFigure>& figures) {
   return list;
 }
 
+// The paper's Figure 2 for one run: per generation, the calls of each behavior per 10,000
+// steps, in the generation's best evaluation ("best") and on average over its evaluations
+// ("mean"); null for a generation stored without usage.
+json usage_curves(const eval::RunResult& r, std::size_t choices) {
+  json best = json::array(), mean = json::array();
+  for (const eval::GenerationStats& g : r.generations) {
+    const eval::GenerationUsage& u = g.usage;
+    const double steps_per_evaluation = g.evaluations > 0 ? static_cast<double>(g.steps) / static_cast<double>(g.evaluations) : 0.0;
+    if (u.best.size() != choices || u.steps_total <= 0 || steps_per_evaluation <= 0.0) {
+      best.push_back(nullptr);
+      mean.push_back(nullptr);
+      continue;
+    }
+    json b = json::array(), m = json::array();
+    for (std::size_t i = 0; i < choices; ++i) {
+      b.push_back(round_to(1e4 * static_cast<double>(u.best[i]) / static_cast<double>(u.steps_total), 2));
+      m.push_back(round_to(1e4 * u.mean[i] / steps_per_evaluation, 2));
+    }
+    best.push_back(std::move(b));
+    mean.push_back(std::move(m));
+  }
+  return {{"run", r.run + 1}, {"best", best}, {"mean", mean}};
+}
+
+// What each choice is, for grouping: its library and mark (from the store; a database
+// written before schema 4 has the names alone).
+json choices_json(const store::StoredController& c) {
+  json out = json::array();
+  for (std::size_t i = 0; i < c.actions.size(); ++i) {
+    const bool known = i < c.choices.size();
+    out.push_back({{"name", c.actions[i]},
+                   {"library", known ? c.choices[i].library : ""},
+                   {"useless", known && c.choices[i].useless}});
+  }
+  return out;
+}
+
+json transfers_json(const std::vector<eval::RunResult>& runs) {
+  const auto s = summarise_transfers(runs);
+  if (!s) return nullptr;
+  const auto opt = [](const auto& x) { return x ? json(*x) : json(nullptr); };
+  json per_run = json::array();
+  for (const RunTransfer& t : s->runs)
+    per_run.push_back({{"run", t.run + 1}, {"origin_run", t.origin_run + 1}, {"origin_fitness", t.origin_fitness},
+                       {"fitness_here", opt(t.fitness_here)}, {"change_percent", opt(t.change_percent)},
+                       {"regained_at", opt(t.regained_at)}});
+  return {{"origin", s->origin}, {"evaluate_only", s->evaluate_only}, {"origin_mean", number(s->origin_mean)},
+          {"here_mean", number(s->here_mean)}, {"change_mean", number(s->change_mean)}, {"regained", s->regained},
+          {"regained_median", number(s->regained_median)}, {"runs", per_run}};
+}
+
 json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
   json controllers = json::array();
   std::vector<std::vector<double>> finals;
@@ -109,7 +164,9 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
     json runs = json::array();
     std::vector<double> final_best;
     json usage = json::array();
+    json usage_generations = json::array();
     for (const auto& r : c.finished) {
+      if (!c.actions.empty()) usage_generations.push_back(usage_curves(r, c.actions.size()));
       json best = json::array();
       json mean = json::array();
       for (const auto& g : r.generations) {
@@ -128,7 +185,8 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
     controllers.push_back({{"name", c.name}, {"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"head", c.head}, {"actions", c.actions}, {"runs", runs},
                            {"unfinished_runs", c.in_progress.size()}, {"usage", usage},
-                           {"replay", replay_json(c, o)}});
+                           {"choices", choices_json(c)}, {"usage_generations", usage_generations},
+                           {"transfers", transfers_json(c.finished)}, {"replay", replay_json(c, o)}});
   }
   json pairs = json::array();
   for (const Comparison& c : compare(finals, all_pairs(finals.size())))

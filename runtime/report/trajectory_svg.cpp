@@ -25,7 +25,8 @@ constexpr double kTitleHeight = 46.0;
 constexpr double kLegendWidth = 240.0;
 constexpr double kLegendLine = 20.0;
 constexpr const char* kObstacle = "#8d96a8";
-constexpr const char* kCollision = "#d62728";
+// A colour no behavior and no epoch takes (as on the report page).
+constexpr const char* kCollision = "#111111";
 
 // Arena metres to SVG units: x to the right, y up (SVG's y runs down).
 struct Frame {
@@ -45,8 +46,21 @@ std::vector<std::pair<std::size_t, std::size_t>> epoch_ranges(std::span<const ev
   return ranges;
 }
 
-const char* colour_of(const TrajectoryFigure& f, const eval::TraceStep& t) {
-  if (!f.choices.empty() && t.action >= 0) return kActionColours[static_cast<std::size_t>(t.action) % kActionColours.size()];
+// The colour of choice i of n: the palette for up to 10, else hues spread evenly at
+// saturation 0.65 and lightness 0.45 (report.js's choiceColour), so 24 behaviors stay apart.
+std::string choice_colour(std::size_t i, std::size_t n) {
+  if (n <= kActionColours.size()) return kActionColours[i % kActionColours.size()];
+  const double h = 360.0 * static_cast<double>(i) / static_cast<double>(n), s = 0.65, l = 0.45;
+  const double a = s * std::min(l, 1.0 - l);
+  const auto channel = [&](double k) {
+    const double t = std::fmod(k + h / 30.0, 12.0);
+    return static_cast<int>(std::lround(255.0 * (l - a * std::max(-1.0, std::min({t - 3.0, 9.0 - t, 1.0})))));
+  };
+  return fmt::format("#{:02x}{:02x}{:02x}", channel(0), channel(8), channel(4));
+}
+
+std::string colour_of(const TrajectoryFigure& f, const eval::TraceStep& t) {
+  if (!f.choices.empty() && t.action >= 0) return choice_colour(static_cast<std::size_t>(t.action), f.choices.size());
   return kEpochColours[static_cast<std::size_t>(t.epoch) % kEpochColours.size()];
 }
 
@@ -113,17 +127,17 @@ void draw_paths(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
   svg += R"~(<g fill="none" stroke-width="2" stroke-linejoin="round" stroke-linecap="round">)~" "\n";
   for (const auto& [begin, end] : epoch_ranges(f.steps)) {
     std::string d;
-    const char* colour = nullptr;
+    std::string colour;
     for (std::size_t i = begin + 1; i < end; ++i) {
-      const char* c = colour_of(f, f.steps[i]);
+      const std::string c = colour_of(f, f.steps[i]);
       if (c != colour) {
-        if (colour != nullptr) svg += fmt::format(R"~(<path stroke="{}" d="{}"/>)~" "\n", colour, d);
+        if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}" d="{}"/>)~" "\n", colour, d);
         colour = c;
         d = fmt::format("M{:.1f} {:.1f}", at.x(f.steps[i - 1].pose.x_m), at.y(f.steps[i - 1].pose.y_m));
       }
       d += fmt::format(" L{:.1f} {:.1f}", at.x(f.steps[i].pose.x_m), at.y(f.steps[i].pose.y_m));
     }
-    if (colour != nullptr) svg += fmt::format(R"~(<path stroke="{}" d="{}"/>)~" "\n", colour, d);
+    if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}" d="{}"/>)~" "\n", colour, d);
   }
   svg += "</g>\n";
   for (const eval::TraceStep& t : f.steps)
@@ -155,7 +169,7 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
     for (const eval::TraceStep& t : f.steps)
       if (t.action >= 0 && static_cast<std::size_t>(t.action) < steps.size()) ++steps[static_cast<std::size_t>(t.action)];
     for (std::size_t i = 0; i < f.choices.size(); ++i)
-      colours.emplace_back(kActionColours[i % kActionColours.size()],
+      colours.emplace_back(choice_colour(i, f.choices.size()),
                            fmt::format("{} ({:.0f}% of steps)", f.choices[i],
                                        f.steps.empty() ? 0.0 : 100.0 * static_cast<double>(steps[i]) /
                                                                     static_cast<double>(f.steps.size())));

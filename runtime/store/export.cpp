@@ -10,9 +10,13 @@ using json = nlohmann::ordered_json;
 
 json generations_json(const std::vector<eval::GenerationStats>& gens) {
   json a = json::array();
-  for (const auto& g : gens)
+  for (const auto& g : gens) {
     a.push_back({{"generation", g.generation}, {"best", g.best}, {"mean", g.mean}, {"sd", g.sd},
                  {"evaluations", g.evaluations}, {"steps", g.steps}, {"seconds", g.seconds}});
+    if (!g.usage.empty())
+      a.back()["usage"] = {{"best_steps", g.usage.best}, {"mean_steps", g.usage.mean},
+                           {"steps_total", g.usage.steps_total}};
+  }
   return a;
 }
 
@@ -24,16 +28,12 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
             {"best_generation", r.best_generation}, {"best_index", r.best_index}, {"best_genome", r.best_genome}};
   if (!r.best_tree.empty()) j["best_tree"] = r.best_tree;
   j["behavior_usage"] = usage;
+  if (r.transfer)
+    j["transfer"] = {{"experiment", r.transfer->experiment}, {"origin_run", r.transfer->origin_run + 1},
+                     {"origin_fitness", r.transfer->origin_fitness}, {"evaluate_only", r.transfer->evaluate_only},
+                     {"fitness_here", r.transfer->fitness_here ? json(*r.transfer->fitness_here) : json(nullptr)}};
   j["generations"] = generations_json(r.generations);
   return j;
-}
-
-// A CSV field: quoted when it holds a comma, a quote or a line break (a directory's path may).
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 json run_json(const eval::RunState& s) {
@@ -47,6 +47,13 @@ json run_json(const eval::RunState& s) {
 }
 
 }  // namespace
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
 
 json export_json(const std::vector<StoredDirectory>& directories) {
   json exps = json::array();

@@ -20,4 +20,8 @@ namespace esc::store {
 // significant digits; a plain experiment's condition is its own name and its study empty).
 [[nodiscard]] std::string export_csv(const std::vector<StoredDirectory>& directories);
 
+// A CSV field: quoted when it holds a comma, a quote or a line break (a directory's path, a
+// sweep point's name, a behavior's arguments may).
+[[nodiscard]] std::string csv_field(const std::string& text);
+
 }  // namespace esc::store

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/tree_state.hpp"
@@ -199,15 +200,18 @@ nlohmann::ordered_json arena_json(const sim::ArenaSpec& a) {
           {"lights", lights}, {"zones", zones}};
 }
 
-// A replay row: the kTraceColumns fixed columns, then the accumulator level and the
-// position of each of the arena's zones in this epoch (x, y). Traces stored before these
-// columns existed have exactly kTraceColumns per row.
-std::size_t trace_width(std::size_t zones) { return kTraceColumns + 1 + 2 * zones; }
+// A replay row: the kTraceColumns fixed columns, then the accumulator level, the position
+// of each of the arena's zones in this epoch (x, y), and the light sensors. Traces stored
+// before these columns existed have exactly kTraceColumns per row, or no light columns; the
+// stored column names say which.
+std::size_t trace_width(std::size_t zones, bool lights) {
+  return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0);
+}
 
 std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
   const std::size_t zones = trace.empty() ? 0 : trace.front().zone_count;
   std::vector<double> v;
-  v.reserve(trace.size() * trace_width(zones));
+  v.reserve(trace.size() * trace_width(zones, true));
   for (const auto& t : trace) {
     v.push_back(t.epoch);
     v.push_back(t.step);
@@ -227,14 +231,20 @@ std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
       v.push_back(t.zones[z].x);
       v.push_back(t.zones[z].y);
     }
+    v.insert(v.end(), t.light.begin(), t.light.end());
   }
   return v;
 }
 
-std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, std::size_t width) {
+std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const std::vector<std::string>& columns) {
+  const std::size_t width = columns.size();
   const bool extended = width > kTraceColumns;
-  const std::size_t zones = extended ? (width - kTraceColumns - 1) / 2 : 0;
-  if (width < kTraceColumns || (extended && trace_width(zones) != width) || zones > sim::kMaxZones)
+  const bool lights = std::find(columns.begin(), columns.end(), "light0") != columns.end();
+  const std::size_t light_columns = lights ? static_cast<std::size_t>(sim::kLightSensors) : 0;
+  const std::size_t zones = extended && width >= kTraceColumns + 1 + light_columns
+                                ? (width - kTraceColumns - 1 - light_columns) / 2
+                                : 0;
+  if (width < kTraceColumns || (extended && trace_width(zones, lights) != width) || zones > sim::kMaxZones)
     throw StoreError(fmt::format("the database is damaged: a replay trace has {} columns", width));
   if (v.size() % width != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
   std::vector<eval::TraceStep> out(v.size() / width);
@@ -256,6 +266,8 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, std::siz
     t.energy = r[kTraceColumns];
     t.zone_count = zones;
     for (std::size_t z = 0; z < zones; ++z) t.zones[z] = {r[kTraceColumns + 1 + 2 * z], r[kTraceColumns + 2 + 2 * z]};
+    if (lights)
+      for (std::size_t k = 0; k < t.light.size(); ++k) t.light[k] = r[kTraceColumns + 1 + 2 * zones + k];
   }
   return out;
 }
@@ -272,6 +284,7 @@ std::vector<std::string> trace_column_names(std::size_t zones) {
     c.push_back(fmt::format("zone{}_x", z));
     c.push_back(fmt::format("zone{}_y", z));
   }
+  for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
   return c;
 }
 
@@ -300,6 +313,7 @@ ResultsDb ResultsDb::create_empty(const fs::path& dir, const LaunchInfo& launch)
   db.exec(fmt::format("PRAGMA application_id={}; PRAGMA user_version={};", kApplicationId, kSchemaVersion));
   sql::Transaction tx(db);
   db.exec(kSchema);
+  db.exec(analysis_schema());
   auto meta = db.prepare("INSERT INTO meta(key, value) VALUES (?, ?)");
   meta.bind(1, "format").bind(2, "esc results").run();
   meta.bind(1, "schema_version").bind(2, std::to_string(kSchemaVersion)).run();
@@ -350,6 +364,7 @@ std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, cons
         .bind(7, actions.dump())
         .run();
     controller_ids_[c.name] = db.last_insert_rowid();
+    save_choices(db, controller_ids_[c.name], c.choices);
   }
   return experiment_id_;
 }
@@ -452,6 +467,8 @@ void ResultsDb::upgrade() {
     tables("CREATE TABLE tree_state", "CREATE TABLE behavior_usage");
   }
   if (schema_version_ < 3) tables("CREATE TABLE studies", nullptr);   // studies
+  // The analyses' tables, empty: the generations stored before have no usage.
+  if (schema_version_ < kAnalysisSchemaVersion) db_.exec(analysis_schema());
   db_.exec(fmt::format("PRAGMA user_version={};", kSchemaVersion));
   tx.commit();
   schema_version_ = kSchemaVersion;
@@ -481,6 +498,8 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
     run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
   run.run();
   std::visit([&](const auto& algorithm) { save_state(db_, cid, st.run, algorithm); }, st.algorithm);
+  save_usage(db_, cid, st.run, g);
+  if (st.transfer) save_transfer(db_, cid, st.run, *st.transfer);
   tx.commit();
 }
 
@@ -490,13 +509,15 @@ void ResultsDb::commit_replay(const std::string& controller, const eval::RunResu
   const std::uint64_t seed = eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
   const nlohmann::json columns = trace_column_names(trace.empty() ? 0 : trace.front().zone_count);
   sql::Transaction tx(db_);
-  // One replay per controller: its best run's (the earliest run on a tie). Replaying the
-  // same run again (after a resume) rewrites the same row.
+  // One replay per controller: its best run's (the earliest run on a tie, whichever order
+  // the runs finish in). Replaying the same run again (after a resume, or when the run was
+  // carried on to more generations) rewrites the same row.
   db_.prepare(
          "INSERT INTO replays(controller_id, run, seed, fitness, columns, trace) VALUES (?, ?, ?, ?, ?, ?) "
          "ON CONFLICT(controller_id) DO UPDATE SET run = excluded.run, seed = excluded.seed, "
          "fitness = excluded.fitness, columns = excluded.columns, trace = excluded.trace "
-         "WHERE excluded.fitness > replays.fitness OR excluded.run = replays.run")
+         "WHERE excluded.fitness > replays.fitness OR excluded.run = replays.run "
+         "OR (excluded.fitness = replays.fitness AND excluded.run < replays.run)")
       .bind(1, cid).bind(2, run.run).bind(3, std::to_string(seed)).bind(4, run.best_fitness).bind(5, columns.dump())
       .bind_blob(6, pack_trace(trace))
       .run();
@@ -522,8 +543,8 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
   if (!run.best_tree.empty()) row.bind(9, run.best_tree);
   if (!run.best_behavior.empty()) row.bind(10, run.best_behavior);
   row.run();
-  db_.prepare("DELETE FROM run_state WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
-  db_.prepare("DELETE FROM tree_state WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
+  // The run's state (run_state or tree_state) stays: `esc run --resume DIR --generations G`
+  // carries a finished run on from it.
   db_.prepare("DELETE FROM behavior_usage WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
   auto use = db_.prepare(
       "INSERT INTO behavior_usage(controller_id, run, action_idx, action, steps) VALUES (?, ?, ?, ?, ?)");
@@ -583,6 +604,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
         c.genome_size = static_cast<std::size_t>(ctl.int64(3));
         c.head = ctl.text(4);
         c.actions = nlohmann::json::parse(ctl.text(5)).get<std::vector<std::string>>();
+        if (schema_version_ >= kAnalysisSchemaVersion) c.choices = load_choices(db_, c.id);
         e.controllers.push_back(std::move(c));
       }
       for (StoredController& c : e.controllers) {
@@ -599,13 +621,18 @@ std::vector<StoredExperiment> ResultsDb::load() {
               "WHERE controller_id = ? AND run = ? ORDER BY generation");
           g.bind(1, c.id).bind(2, run);
           while (g.step())
-            gens.push_back({g.integer(0), g.real(1), g.real(2), g.real(3), g.int64(4), g.int64(5), g.real(6)});
+            gens.push_back({g.integer(0), g.real(1), g.real(2), g.real(3), g.int64(4), g.int64(5), g.real(6), {}});
           const auto done = static_cast<std::size_t>(runs.int64(3));
           bool contiguous = gens.size() == done;
           for (std::size_t i = 0; contiguous && i < gens.size(); ++i) contiguous = gens[i].generation == static_cast<int>(i);
           if (!contiguous)
             throw StoreError(fmt::format("{} is damaged: run {} of {} has {} generations stored, {} expected",
                                          file_.string(), run + 1, c.name, gens.size(), done));
+          std::optional<eval::Transfer> transfer;
+          if (schema_version_ >= kAnalysisSchemaVersion) {
+            load_usage(db_, c.id, run, gens, fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name));
+            transfer = load_transfer(db_, c.id, run);
+          }
           const bool has_best = !runs.is_null(4);
           if (runs.text(2) == "finished") {
             eval::RunResult r;
@@ -618,6 +645,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
             r.best_genome = runs.doubles(7);
             if (!runs.is_null(8)) r.best_tree = runs.text(8);
             if (!runs.is_null(9)) r.best_behavior = runs.text(9);
+            r.transfer = std::move(transfer);
             auto u = db_.prepare("SELECT steps FROM behavior_usage WHERE controller_id = ? AND run = ? ORDER BY action_idx");
             u.bind(1, c.id).bind(2, run);
             while (u.step()) r.action_usage.push_back(u.int64(0));
@@ -635,6 +663,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
               s.best_genome = runs.doubles(7);
             }
             s.algorithm = load_state(c, run);
+            s.transfer = std::move(transfer);
             c.in_progress.push_back(std::move(s));
           }
         }
@@ -642,7 +671,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
         rp.bind(1, c.id);
         if (rp.step())
           c.replay = StoredReplay{rp.integer(0), parse_u64(rp.text(1), "replay seed"), rp.real(2),
-                                  unpack_trace(rp.doubles(3), nlohmann::json::parse(rp.text(4)).size())};
+                                  unpack_trace(rp.doubles(3), nlohmann::json::parse(rp.text(4)).get<std::vector<std::string>>())};
       }
     }
     return out;
@@ -705,13 +734,50 @@ eval::CampaignResult StoredExperiment::result() const {
   return r;
 }
 
-eval::ResumePoint StoredExperiment::resume_point() const {
+eval::ResumePoint ResultsDb::resume_point(const StoredExperiment& stored, const eval::ExperimentSpec& spec) {
   eval::ResumePoint p;
-  for (const StoredController& c : controllers) {
-    for (const auto& f : c.finished) p.finished.push_back({c.name, f});
+  for (const StoredController& c : stored.controllers) {
+    const auto compared = std::find_if(spec.controllers.begin(), spec.controllers.end(),
+                                       [&](const control::ControllerSpec& s) { return s.name == c.name; });
+    const std::size_t asked =
+        compared == spec.controllers.end() ? 0 : static_cast<std::size_t>(spec.generations_for(*compared));
+    for (const auto& f : c.finished) {
+      if (f.generations.size() >= asked) {
+        p.finished.push_back({c.name, f});
+        continue;
+      }
+      eval::RunState s;
+      s.run = f.run;
+      s.seed = f.seed;
+      s.generations = f.generations;
+      s.has_best = true;
+      s.best_fitness = f.best_fitness;
+      s.best_genome = f.best_genome;
+      s.best_generation = f.best_generation;
+      s.best_index = f.best_index;
+      s.transfer = f.transfer;
+      try {
+        s.algorithm = load_state(c, f.run);
+      } catch (const StoreError&) {
+        throw StoreError(fmt::format("run {} of {} in {} finished without keeping the state to carry it on from "
+                                     "(it was written by an esc older than schema 4)",
+                                     f.run + 1, c.name, file_.string()));
+      }
+      p.in_progress.push_back({c.name, std::move(s)});
+    }
     for (const auto& s : c.in_progress) p.in_progress.push_back({c.name, s});
   }
   return p;
+}
+
+void ResultsDb::extend(const eval::ExperimentSpec& spec, const nlohmann::ordered_json& overrides) {
+  sql::Transaction tx(db_);
+  db_.prepare("UPDATE experiments SET generations = ?, overrides = ?, status = 'running' WHERE id = ?")
+      .bind(1, spec.max_generations()).bind(2, overrides.dump()).bind(3, experiment_id_)
+      .run();
+  auto set = db_.prepare("INSERT OR REPLACE INTO settings(experiment_id, key, value) VALUES (?, ?, ?)");
+  for (const auto& [k, v] : spec.resolved_settings) set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
+  tx.commit();
 }
 
 }  // namespace esc::store

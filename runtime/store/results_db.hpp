@@ -25,9 +25,10 @@ namespace esc::store {
 inline constexpr const char* kDatabaseFile = "esc.db";
 // 2: GP (table tree_state; runs.best_tree and runs.best_behavior hold a tree controller's
 // best tree as script code). 3: studies (tables studies, conditions, condition_settings: a
-// study's database holds one experiment row per condition). An older database opened for
-// writing is upgraded.
-inline constexpr int kSchemaVersion = 3;
+// study's database holds one experiment row per condition). 4: the analyses' tables
+// (analysis_tables.hpp: behavior usage per generation, choices, transfers), and a finished
+// run keeps its state. An older database opened for writing is upgraded.
+inline constexpr int kSchemaVersion = 4;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -51,8 +52,8 @@ struct LaunchInfo {
 };
 
 // Columns of a stored replay trace, one row of doubles per control step: kTraceColumns
-// fixed ones, then (since replays record them) the accumulator and x, y of each of the
-// arena's `zones` in that epoch.
+// fixed ones, then (since replays record them) the accumulator, x, y of each of the arena's
+// `zones` in that epoch, and the light sensors light0..light7.
 inline constexpr std::size_t kTraceColumns = 20;
 [[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones);
 
@@ -70,6 +71,7 @@ struct StoredController {
   std::size_t genome_size = 0;
   std::string head;                       // "classical", "symbolic", "supervisor" or "tree"
   std::vector<std::string> actions;       // what usage counts: action or behavior names
+  std::vector<control::Choice> choices;   // the same, with library and mark (schema 3; else empty)
   std::vector<eval::RunResult> finished;  // in run order
   std::vector<eval::RunState> in_progress;
   std::optional<StoredReplay> replay;     // the best run's best evaluation, if traced
@@ -111,8 +113,6 @@ struct StoredExperiment {
   [[nodiscard]] bool finished() const noexcept { return status == "finished"; }
   // The finished runs as a campaign result (what summary.json shows).
   [[nodiscard]] eval::CampaignResult result() const;
-  // Where `esc run --resume` picks the campaign up.
-  [[nodiscard]] eval::ResumePoint resume_point() const;
 };
 
 // The experiments of one run directory (a study's: every condition), as `esc export` and
@@ -153,11 +153,20 @@ class ResultsDb {
   // The run is finished: its best genome, behavior usage; its resume state is dropped.
   void commit_run(const std::string& controller, const eval::RunResult& run);
   void mark_finished();
+  // The experiment now runs for `spec`'s generations (carried on), started with `overrides`
+  // on the command line: its generations, settings and overrides updated and its status
+  // `running`, in one transaction.
+  void extend(const eval::ExperimentSpec& spec, const nlohmann::ordered_json& overrides);
 
   // Everything stored, experiment by experiment. Throws StoreError on inconsistent content.
   [[nodiscard]] std::vector<StoredExperiment> load();
   // The experiment this database was created for by `esc run EXPERIMENT` (not a study).
   [[nodiscard]] StoredExperiment load_single();
+
+  // Where `esc run --resume` picks `stored` up, for the generations `spec` asks of each
+  // controller: its runs in progress, and the finished runs that have fewer generations,
+  // carried on from the state they kept. Throws StoreError when such a run kept none.
+  [[nodiscard]] eval::ResumePoint resume_point(const StoredExperiment& stored, const eval::ExperimentSpec& spec);
 
   [[nodiscard]] std::int64_t experiment_id() const noexcept { return experiment_id_; }
 

@@ -120,10 +120,18 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const
   write_summary();
 }
 
-RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored, SummarySink summary) {
+RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperiment& stored,
+                                  const eval::ResumePoint& point, SummarySink summary) {
   RunDirectory rd(std::move(dir), std::move(db));
   rd.summary_ = std::move(summary);
   rd.partial_ = stored.result();
+  // Runs carried on are not finished any more: summary.json shows them when they are again.
+  for (eval::ControllerResult& c : rd.partial_.controllers)
+    std::erase_if(c.runs, [&](const eval::RunResult& r) {
+      return std::any_of(point.in_progress.begin(), point.in_progress.end(),
+                         [&](const auto& p) { return p.controller == c.name && p.state.run == r.run; });
+    });
+  std::erase_if(rd.partial_.controllers, [](const eval::ControllerResult& c) { return c.runs.empty(); });
   for (const StoredController& c : stored.controllers) rd.controllers_.emplace_back(c.name, c.genome_size);
   for (const StoredController& c : stored.controllers) {
     if (c.finished.empty() && c.in_progress.empty()) continue;
@@ -137,6 +145,17 @@ RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperi
   }
   rd.write_summary();
   return rd;
+}
+
+void RunDirectory::carry_on(const fs::path& dir, ResultsDb& db, const eval::ExperimentSpec& spec,
+                            const nlohmann::ordered_json& overrides) {
+  db.extend(spec, overrides);
+  const fs::path file = dir / "settings.json";
+  std::ifstream in(file);
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (doc.is_discarded() || !doc.is_object()) return;   // a view of the database; it stays as it was
+  doc["settings"] = nlohmann::ordered_json(spec.resolved_settings);
+  write_atomically(file, doc.dump(2) + "\n");
 }
 
 fs::path RunDirectory::run_file(const std::string& controller, int run, std::string_view ext) const {

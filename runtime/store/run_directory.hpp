@@ -35,12 +35,20 @@ class RunDirectory final : public eval::CampaignListener {
   RunDirectory(std::filesystem::path dir, const eval::ExperimentSpec& spec,
                const std::vector<SourceFile>& sources, const LaunchInfo& launch = {});
 
-  // Continues a directory whose database was opened and loaded (`stored`): rewrites the
-  // CSV, genome and summary files from the database, which is what survived a crash. A
-  // study's condition is opened so too (its results under `dir`, its database the study's,
-  // with its experiment selected), with `summary` receiving what summary.json would hold.
+  // Continues a directory whose database was opened and loaded (`stored`), from `point`
+  // (ResultsDb::resume_point: finished runs carried on to more generations are in progress
+  // there): rewrites the CSV, genome and summary files from the database, which is what
+  // survived a crash. A study's condition is opened so too (its results under `dir`, its
+  // database the study's, with its experiment selected), with `summary` receiving what
+  // summary.json would hold.
   static RunDirectory resume(std::filesystem::path dir, ResultsDb db, const StoredExperiment& stored,
-                             SummarySink summary = {});
+                             const eval::ResumePoint& point, SummarySink summary = {});
+
+  // Before resume(), when the run is carried on to `spec`'s generations: records them in the
+  // database (ResultsDb::extend, with the command-line settings `overrides`) and in
+  // settings.json.
+  static void carry_on(const std::filesystem::path& dir, ResultsDb& db, const eval::ExperimentSpec& spec,
+                       const nlohmann::ordered_json& overrides);
 
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;

@@ -73,11 +73,11 @@ StudyDirectory::StudyDirectory(fs::path dir, std::vector<StoredExperiment> store
   write_summary();
 }
 
-RunDirectory StudyDirectory::open_condition(std::size_t i) {
+RunDirectory StudyDirectory::open_condition(std::size_t i, const eval::ResumePoint& point) {
   const StoredExperiment& e = stored_.at(i);
   ResultsDb db = ResultsDb::open(dir_);
   db.select_experiment(e.id);
-  return RunDirectory::resume(dir_ / e.condition->directory, std::move(db), e,
+  return RunDirectory::resume(dir_ / e.condition->directory, std::move(db), e, point,
                               [this, i](const eval::CampaignResult& partial) {
                                 summaries_.at(i).result = partial;
                                 write_summary();

@@ -35,8 +35,9 @@ class StudyDirectory {
 
   // The listener of condition `i`'s campaign: its files under DIR/<condition>/ (rewritten
   // from the database), its results in its experiment of the database; each finished run
-  // rewrites the study's summary.json. The StudyDirectory must outlive it.
-  [[nodiscard]] RunDirectory open_condition(std::size_t i);
+  // rewrites the study's summary.json. The StudyDirectory must outlive it. `point`: where
+  // the condition resumes (ResultsDb::resume_point; empty for a new one).
+  [[nodiscard]] RunDirectory open_condition(std::size_t i, const eval::ResumePoint& point);
   // What the database held of condition `i` when this directory was opened.
   [[nodiscard]] const StoredExperiment& stored(std::size_t i) const { return stored_.at(i); }
   [[nodiscard]] std::size_t size() const noexcept { return stored_.size(); }

@@ -2,6 +2,49 @@
 
 namespace esc::store {
 
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// Per generation of the run (null where a generation has none stored: written before esc
+// counted it): the steps each behavior acted in the best evaluation, their mean over the
+// generation's evaluations, and the best evaluation's steps. Null when no generation has any.
+json usage_over_generations(const std::vector<std::string>& behaviors, const eval::RunResult& r) {
+  bool any = false;
+  json best = json::array(), mean = json::array(), total = json::array();
+  for (const eval::GenerationStats& g : r.generations) {
+    if (g.usage.empty() || g.usage.best.size() != behaviors.size()) {
+      best.push_back(nullptr);
+      mean.push_back(nullptr);
+      total.push_back(nullptr);
+      continue;
+    }
+    any = true;
+    best.push_back(g.usage.best);
+    mean.push_back(g.usage.mean);
+    total.push_back(g.usage.steps_total);
+  }
+  if (!any) return nullptr;
+  return {{"behaviors", behaviors}, {"best_steps", best}, {"mean_steps", mean}, {"steps_total", total}};
+}
+
+json number_or_null(std::optional<double> x) { return x ? json(*x) : json(nullptr); }
+
+// Where the run's first genome came from and what became of it here.
+json transfer_json(const eval::Transfer& t, const eval::RunResult& r) {
+  std::vector<double> best;
+  for (const eval::GenerationStats& g : r.generations) best.push_back(g.best);
+  json j = {{"experiment", t.experiment}, {"origin_run", t.origin_run + 1}, {"origin_fitness", t.origin_fitness},
+            {"fitness_here", number_or_null(t.fitness_here)}, {"change_percent", number_or_null(eval::change_percent(t))}};
+  if (!t.evaluate_only) {
+    const auto g = eval::regained_at(t, best);
+    j["regained_at_generation"] = g ? json(*g) : json(nullptr);
+  }
+  return j;
+}
+
+}  // namespace
+
 nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
   nlohmann::ordered_json controllers = nlohmann::ordered_json::object();
   for (const auto& c : result.controllers) {
@@ -24,6 +67,8 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
         for (std::size_t i = 0; i < c.choices.size(); ++i) usage[c.choices[i]] = r.action_usage[i];
         run["behavior_usage"] = usage;
       }
+      if (json u = usage_over_generations(c.choices, r); !u.is_null()) run["usage"] = std::move(u);
+      if (r.transfer) run["transfer"] = transfer_json(*r.transfer, r);
       runs.push_back(run);
     }
     controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size},

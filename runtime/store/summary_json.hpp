@@ -3,7 +3,12 @@
 // {"experiment": name, "seed": master seed, "controllers": {NAME: {"architecture": "8-14-6",
 //   "genome_size": 216, "runs": [{"run": 1, "seed": ..., "best_fitness": ...,
 //   "best": [per generation], "mean": [per generation], "sd": [per generation],
-//   "best_tree": script code (tree controllers only)}]}}}
+//   "best_tree": script code (tree controllers only),
+//   "behavior_usage": {BEHAVIOR: steps in the run's best evaluation} (symbolic heads, supervisors),
+//   "usage": {"behaviors": [names], "best_steps": [[per behavior] per generation],
+//             "mean_steps": [[...] per generation], "steps_total": [per generation]},
+//   "transfer": {"experiment", "origin_run", "origin_fitness", "fitness_here", "change_percent",
+//                "regained_at_generation" (start from only)} (runs that start from a stored genome)}]}}}
 // Runs are numbered from 1 (as in file names, the console and the report); the per-generation
 // arrays start at generation 0, the initial population.
 // A study's: {"study": name, "seed": master seed, "conditions": [{"name": ..., "experiment":

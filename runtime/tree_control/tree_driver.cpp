@@ -1,8 +1,11 @@
 #include "runtime/tree_control/tree_driver.hpp"
 
 #include <stdexcept>
+#include <string>
 #include <variant>
 
+#include "runtime/control/controller.hpp"
+#include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/gp/primitive_set.hpp"
 
 namespace esc::tree_control {
@@ -27,7 +30,10 @@ Type root_of(Head h) noexcept {
   return Type::Wheels;
 }
 
-const ControllerSpec& checked(const ControllerSpec& spec) {
+const ControllerSpec& checked(const ControllerSpec& spec, int depth) {
+  if (depth > Controller::kMaxNesting)
+    throw std::invalid_argument("tree controller '" + spec.name + "': supervisors nested more than " +
+                                std::to_string(Controller::kMaxNesting) + " deep (does a supervisor contain itself?)");
   if (!spec.is_tree()) throw std::invalid_argument("controller '" + spec.name + "' is not a tree controller");
   if (spec.primitives->root() != root_of(spec.head))
     throw std::invalid_argument("tree controller '" + spec.name + "': its primitives build " +
@@ -36,22 +42,24 @@ const ControllerSpec& checked(const ControllerSpec& spec) {
   return spec;
 }
 
-std::vector<Controller> sub_controllers(const ControllerSpec& spec) {
-  std::vector<Controller> subs;
-  std::size_t n = 0;
-  for (const SupervisedBehavior& b : spec.behaviors) n += std::holds_alternative<FixedController>(b.what) ? 1 : 0;
-  subs.reserve(n);   // the delegates keep pointers to these
+std::vector<std::unique_ptr<control::Actor>> sub_controllers(const ControllerSpec& spec, int depth) {
+  std::vector<std::unique_ptr<control::Actor>> subs;
   for (const SupervisedBehavior& b : spec.behaviors) {
     const auto* fixed = std::get_if<FixedController>(&b.what);
     if (fixed == nullptr) continue;
     if (fixed->spec == nullptr)
       throw std::invalid_argument("tree controller '" + spec.name + "': behavior '" + b.name + "' has no controller");
-    subs.emplace_back(*fixed->spec, fixed->genome);
+    try {
+      subs.push_back(make_actor(*fixed->spec, fixed->genome, depth + 1));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("tree controller '" + spec.name + "': behavior '" + b.name + "': " + e.what());
+    }
   }
   return subs;
 }
 
-TreeControllerSpec tree_controller_spec(const ControllerSpec& spec, std::vector<Controller>& subs) {
+TreeControllerSpec tree_controller_spec(const ControllerSpec& spec,
+                                        const std::vector<std::unique_ptr<control::Actor>>& subs) {
   TreeControllerSpec t{spec.name, *spec.primitives, spec.actions, {}};
   std::size_t next_sub = 0;
   for (const SupervisedBehavior& b : spec.behaviors) {
@@ -61,7 +69,7 @@ TreeControllerSpec tree_controller_spec(const ControllerSpec& spec, std::vector<
       d.behavior = call->behavior;
       for (std::size_t k = 0; k < call->args.size() && k < d.params.size(); ++k) d.params[k] = call->args[k];
     } else {
-      Controller* sub = &subs[next_sub++];
+      control::Actor* sub = subs[next_sub++].get();
       d.step = [sub](expr::Frame& frame) { return sub->step(frame); };
       d.reset = [sub] { sub->reset(); };
     }
@@ -72,7 +80,32 @@ TreeControllerSpec tree_controller_spec(const ControllerSpec& spec, std::vector<
 
 }  // namespace
 
-TreeDriver::TreeDriver(const control::ControllerSpec& spec, const evo::gp::Tree& tree)
-    : subs_(sub_controllers(checked(spec))), tree_spec_(tree_controller_spec(spec, subs_)), ctl_(tree_spec_, tree) {}
+TreeDriver::TreeDriver(const control::ControllerSpec& spec, const evo::gp::Tree& tree, int depth)
+    : subs_(sub_controllers(checked(spec, depth), depth)),
+      tree_spec_(tree_controller_spec(spec, subs_)),
+      ctl_(tree_spec_, tree),
+      usage_(spec.choice_names().size(), 0) {}
+
+void TreeDriver::rebind(const evo::gp::Tree& tree) {
+  ctl_.rebind(tree);
+  clear_usage();
+}
+
+control::WheelCommand TreeDriver::step(expr::Frame& frame) noexcept {
+  const control::WheelCommand command = ctl_.step(frame);
+  if (const int a = ctl_.last_action(); a >= 0) ++usage_[static_cast<std::size_t>(a)];
+  return command;
+}
+
+void TreeDriver::clear_usage() noexcept {
+  for (std::int64_t& u : usage_) u = 0;
+  for (const auto& s : subs_) s->clear_usage();
+}
+
+std::unique_ptr<control::Actor> make_actor(const control::ControllerSpec& spec, std::span<const double> genome,
+                                           int depth) {
+  if (!spec.is_tree()) return std::make_unique<Controller>(spec, genome, &make_actor, depth);
+  return std::make_unique<TreeDriver>(spec, evo::gp::decode(genome, *spec.primitives), depth);
+}
 
 }  // namespace esc::tree_control

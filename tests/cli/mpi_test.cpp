@@ -137,6 +137,18 @@ TEST(Mpi, AnExistingOutputDirectoryStopsEveryRank) {
   EXPECT_EQ(slurp(out / "keep.txt"), "precious");
 }
 
+TEST(Mpi, ARunCarriedOnUnderThreeRanksIsTheLongerRun) {
+  const fs::path longer = scratch("mpi-carry-on-4");
+  const fs::path two = scratch("mpi-carry-on-2");
+  const Outcome a = esc("run " + tiny() + " --seed 5 --threads 1 --generations 4 --out " + longer.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = esc("run " + tiny() + " --seed 5 --threads 1 --generations 2 --out " + two.string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  const Outcome on = shell(mpirun(3) + "run --resume " + two.string() + " --generations 4 --threads 1");
+  ASSERT_EQ(on.status, 0) << on.output;
+  EXPECT_EQ(slurp(longer / "summary.json"), slurp(two / "summary.json"));
+}
+
 TEST(Mpi, ARunKilledHalfwayResumesUnderThreeRanksBitIdentical) {
   const fs::path reference = scratch("mpi-resume-reference");
   const fs::path killed = scratch("mpi-resume-killed");

@@ -126,7 +126,7 @@ TEST(Results, ResumeRefusesWhatItCannotContinue) {
   EXPECT_EQ(slurp(changed / "CC" / "run-01.csv"), csv);
 
   // Options that would change the run are refused with --resume.
-  EXPECT_EQ(esc("run --resume " + changed.string() + " --generations 3").status, 2);
+  EXPECT_EQ(esc("run --resume " + changed.string() + " --runs 3").status, 2);
 
   // A script moved away: resume says where it can be given, and continues when it is (a
   // campaign is known by its files' names and texts, not their directories).

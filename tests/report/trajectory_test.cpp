@@ -63,7 +63,7 @@ TEST(TrajectorySvg, ColoursByActionMarksEpochsZonesAndCollisions) {
   // The random zone where it was in each epoch, labelled; one collision.
   EXPECT_NE(svg.find(">epoch 1</text>"), std::string::npos);
   EXPECT_NE(svg.find(">epoch 2</text>"), std::string::npos);
-  EXPECT_EQ(count(svg, R"(r="3" fill="#d62728")"), 1U + 1U) << "one collision, one legend mark";
+  EXPECT_EQ(count(svg, R"(r="3" fill="#111111")"), 1U + 1U) << "one collision, one legend mark";
 }
 
 TEST(TrajectorySvg, ClassicalHeadsAreColouredByEpoch) {

@@ -28,6 +28,7 @@ TEST(SimObserve, FrameLayout) {
   for (const auto& o : expr::kParametrised) claim(o.first, o.count);
   claim(slot::param, expr::kMaxParams);
   claim(slot::com_speed, 1);
+  claim(slot::acting, 1);   // written by the evaluator, read by using(B)
   EXPECT_EQ(used.size(), expr::kFrameSize);
   EXPECT_EQ(*used.rbegin(), expr::kFrameSize - 1);
   // in/reached are not plain observables.

@@ -106,7 +106,7 @@ TEST(ResultsDb, GenerationStateRoundTripsBitForBit) {
   }
   EXPECT_EQ(got.best_genome, want.best_genome);
   EXPECT_EQ(got.best_index, 17);
-  const eval::ResumePoint p = s.resume_point();
+  const eval::ResumePoint p = db.resume_point(s, e);
   EXPECT_EQ(p.in_progress.size(), 1U);
   EXPECT_TRUE(p.finished.empty());
 }

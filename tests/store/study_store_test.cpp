@@ -43,7 +43,7 @@ TEST(StudyStore, EveryConditionIsAnExperimentWithItsStudyNameDirectoryAndSetting
     StudyDirectory sd(dir, study, {{"s.esc", "study st { conditions small }"}}, {LaunchInfo{}, LaunchInfo{}});
     ASSERT_EQ(sd.size(), 2u);
     for (std::size_t i = 0; i < 2; ++i) {
-      RunDirectory run = sd.open_condition(i);
+      RunDirectory run = sd.open_condition(i, {});
       const control::ControllerSpec& c = study.conditions[i].experiment.controllers.front();
       eval::RunState st;
       st.generations = finished_run(1.5 + static_cast<double>(i)).generations;
@@ -90,14 +90,15 @@ TEST(StudyStore, ASchemaTwoDatabaseIsReadAndUpgradedWhenWritten) {
   { (void)ResultsDb::create(dir, e, {}, {}); }
   {  // What esc wrote before studies.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; PRAGMA user_version=2;");
+    raw.exec("DROP TABLE generation_usage; DROP TABLE choices; DROP TABLE transfers; "
+             "DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; PRAGMA user_version=2;");
   }
   EXPECT_FALSE(ResultsDb::open(dir, true).load_single().condition.has_value());
   { ResultsDb db = ResultsDb::open(dir); }
   sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
   auto version = raw.prepare("PRAGMA user_version");
   ASSERT_TRUE(version.step());
-  EXPECT_EQ(version.int64(0), 3);
+  EXPECT_EQ(version.int64(0), kSchemaVersion);
   auto tables = raw.prepare("SELECT count(*) FROM sqlite_master WHERE name IN ('studies', 'conditions', "
                             "'condition_settings')");
   ASSERT_TRUE(tables.step());

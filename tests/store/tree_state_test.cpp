@@ -126,7 +126,8 @@ TEST(TreeState, ASchemaOneDatabaseIsReadAndUpgradedWhenWritten) {
   }
   {  // What esc wrote before GP.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; "
+    raw.exec("DROP TABLE generation_usage; DROP TABLE choices; DROP TABLE transfers; "
+             "DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; "
              "ALTER TABLE runs DROP COLUMN best_behavior; DROP TABLE tree_state; PRAGMA user_version=1;");
   }
   EXPECT_EQ(ResultsDb::open(dir, true).load_single().controllers.at(0).finished.at(0).best_fitness, 2.5);

@@ -1,11 +1,15 @@
 // tree_control::TreeDriver: a compared tree controller (a ControllerSpec with primitives) bound
 // to a tree. A Behavior tree's delegates are hand-written behaviors with constant
-// arguments and evolved networks, each network run by the driver's own Controller, reset
-// with it; the head and the primitives' root must agree.
+// arguments and evolved controllers (networks or trees), each run by the driver's own actor,
+// reset with it; the head and the primitives' root must agree. And an evolved tree as a
+// network supervisor's frozen behavior (make_actor).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 
+#include "runtime/control/controller.hpp"
+#include "runtime/evo/gp/codec.hpp"
 #include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
 
@@ -94,6 +98,61 @@ TEST(TreeDriver, AHandWrittenDelegateGetsItsArguments) {
   (void)driver.step(f);
   EXPECT_EQ(driver.last_action(), 1);
   EXPECT_EQ(driver.tree_spec().behaviors.size(), 2u);
+}
+
+// A Wheels tree over ir[0]: `wheels(ir[0], 0.25)`.
+std::shared_ptr<const ControllerSpec> wheels_tree() {
+  auto t = std::make_shared<ControllerSpec>();
+  t->name = "GW";
+  t->head = Head::Classical;
+  auto p = gp::test::numeric_primitives();
+  p.push_back(gp::prim::wheels());
+  t->primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), gp::Type::Wheels);
+  return t;
+}
+
+TEST(TreeDriver, AnEvolvedTreeIsAFrozenBehaviorOfANetworkSupervisor) {
+  const auto tree = wheels_tree();
+  const std::vector<double> genome =
+      gp::encode(gp::test::postfix(*tree->primitives, {"ir[0]", {"erc", 0.25}, "wheels"}));
+  ControllerSpec sv;
+  sv.name = "SV";
+  sv.head = Head::Supervisor;
+  for (expr::Slot i = 0; i < expr::kIrCount; ++i) sv.mlp.inputs.push_back(expr::slot::ir + i);
+  sv.behaviors.push_back({"GW", FixedController{tree, genome}});
+  sv.behaviors.push_back({"go(0.5)", BehaviorCall{gp::test::signed_behavior("go", 1, 1), {0.5}}});
+  // Output 0 (the tree) always wins: a large bias.
+  std::vector<double> w(sv.genome_size(), 0.0);
+  w[0] = 5.0;
+  // A network alone cannot build a tree; the factory of tree_control can.
+  EXPECT_THROW(Controller(sv, w), std::invalid_argument);
+  Controller c(sv, w, &make_actor);
+  for (expr::Frame f : frames(20)) {
+    const WheelCommand cmd = c.step(f);
+    EXPECT_EQ(cmd.left, std::clamp(f[expr::slot::ir], -1.0, 1.0));   // wheel commands are clamped
+    EXPECT_EQ(cmd.right, 0.25);
+    EXPECT_EQ(c.last_action(), 0);
+  }
+  EXPECT_EQ(c.usage()[0], 20);
+  ASSERT_NE(c.sub_controller(0), nullptr);
+  EXPECT_EQ(c.sub_controller(0)->last_action(), -1);   // a Wheels tree chooses nothing
+}
+
+TEST(TreeDriver, AnEvolvedTreeIsADelegateOfATreeSupervisor) {
+  ControllerSpec spec = supervisor();
+  const auto tree = wheels_tree();
+  spec.behaviors[1] = {"GW", FixedController{tree, gp::encode(gp::test::postfix(*tree->primitives,
+                                                                                {"ir[1]", {"erc", -0.5}, "wheels"}))}};
+  TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"net"}));   // behavior 1, now the tree
+  for (expr::Frame f : frames(10)) {
+    const WheelCommand cmd = driver.step(f);
+    EXPECT_EQ(cmd.left, f[expr::slot::ir + 1]);
+    EXPECT_EQ(cmd.right, -0.5);
+  }
+  EXPECT_EQ(driver.usage()[1], 10);
+  EXPECT_EQ(driver.usage()[0], 0);
+  driver.clear_usage();
+  EXPECT_EQ(driver.usage()[1], 0);
 }
 
 TEST(TreeDriver, TheHeadMustMatchThePrimitives) {

@@ -9,6 +9,20 @@
                    '#7f7f7f', '#bcbd22'];
   const actionPalette = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#76b7b2', '#edc948', '#b07aa1', '#ff9da7',
                          '#9c755f', '#bab0ac'];
+  // Collisions: a colour no behavior takes (the palette above, or the hues of choiceColour).
+  const collisionColour = '#111111';
+  // The colour of choice i of n: the palette for up to 10, else hues spread evenly (the
+  // sensitivity experiment's supervisors choose among 24), never black.
+  function choiceColour(i, n) {
+    if (n <= actionPalette.length) return actionPalette[i % actionPalette.length];
+    // HSL to RGB with saturation 0.65 and lightness 0.45 (CSS Color 4's conversion).
+    const h = 360 * i / n, s = 0.65, l = 0.45, a = s * Math.min(l, 1 - l);
+    const channel = k => {
+      const t = (k + h / 30) % 12;
+      return Math.round(255 * (l - a * Math.max(-1, Math.min(t - 3, 9 - t, 1)))).toString(16).padStart(2, '0');
+    };
+    return `#${channel(0)}${channel(8)}${channel(4)}`;
+  }
   Chart.defaults.animation = false;          // static plots: screenshots and printing show them whole
   Chart.defaults.maintainAspectRatio = false;
 
@@ -226,10 +240,135 @@
                                'of each run (mean over runs).'), {
       type: 'bar',
       data: {labels: c.actions, datasets: [{label: c.name, data: fractions.map(f => 100 * f),
-                                            backgroundColor: c.actions.map((_, i) => actionPalette[i % actionPalette.length])}]},
+                                            backgroundColor: c.actions.map((_, i) => choiceColour(i, c.actions.length))}]},
       options: {plugins: {legend: {display: false}},
                 scales: {y: {min: 0, max: 100, title: {display: true, text: '% of steps'}}}},
     });
+  }
+
+  // The lines of the paper's Figure 2 for a controller: one per behavior, the useless ones
+  // (their library marked `useless`) in a panel of their own, and one per library when a
+  // panel would hold more than 8 (the behaviors of a library summed).
+  function usagePanels(c) {
+    const choices = c.choices.length === c.actions.length
+      ? c.choices : c.actions.map(name => ({name, library: '', useless: false}));
+    const panels = [['useful', false], ['useless', true]].map(([title, useless]) => ({
+      title, items: choices.map((ch, i) => ({ch, i})).filter(({ch}) => ch.useless === useless)}));
+    const marked = panels[1].items.length > 0;
+    return panels.filter(p => p.items.length > 0).map(p => {
+      let lines = p.items.map(({ch, i}) => ({label: ch.name, indices: [i], colour: choiceColour(i, choices.length)}));
+      if (lines.length > 8) {
+        const groups = new Map();
+        p.items.forEach(({ch, i}) => {
+          const key = ch.library || ch.name;
+          if (!groups.has(key)) groups.set(key, []);
+          groups.get(key).push(i);
+        });
+        lines = [...groups].map(([key, indices], k) => ({
+          label: indices.length > 1 ? `${key} (${indices.length} behaviors)` : key, indices,
+          colour: choiceColour(k, groups.size)}));
+      }
+      return {title: marked ? `${p.title} behaviors` : 'behaviors', lines};
+    });
+  }
+
+  // Mean over runs, per generation, of a line's calls per 10,000 steps, with +-sd.
+  function usageCurve(c, line, key) {
+    const runs = c.usage_generations;
+    const length = Math.max(0, ...runs.map(r => r[key].length));
+    const mean = [], lo = [], hi = [];
+    for (let g = 0; g < length; ++g) {
+      const values = runs.filter(r => g < r[key].length && r[key][g] !== null)
+                         .map(r => line.indices.reduce((sum, i) => sum + r[key][g][i], 0));
+      const [m, sd] = meanSd(values);
+      mean.push(values.length ? m : null); lo.push(values.length ? m - sd : null); hi.push(values.length ? m + sd : null);
+    }
+    return {mean, lo, hi, length};
+  }
+
+  // Figure 2: how often each behavior is called (per 10,000 steps) as generations go by.
+  function usageOverGenerations(parent, c) {
+    const panels = usagePanels(c);
+    const which = el('select');
+    [['best', 'best evaluation of each generation'], ['mean', 'mean over each generation\'s evaluations']]
+      .forEach(([v, t]) => which.appendChild(el('option', {value: v, text: t})));
+    const charts = [];
+    const datasetsOf = (panel, key) => {
+      const datasets = [];
+      for (const line of panel.lines) {
+        const cv = usageCurve(c, line, key);
+        datasets.push({label: `${line.label} +sd`, data: cv.hi, borderWidth: 0, pointRadius: 0, fill: '+1',
+                       backgroundColor: alpha(line.colour, 0.15), escBand: true});
+        datasets.push({label: `${line.label} -sd`, data: cv.lo, borderWidth: 0, pointRadius: 0, fill: false, escBand: true});
+        datasets.push({label: line.label, data: cv.mean, borderColor: line.colour, backgroundColor: line.colour,
+                       borderWidth: 2, pointRadius: 0, fill: false});
+      }
+      return datasets;
+    };
+    panels.forEach((panel, k) => {
+      const datasets = datasetsOf(panel, 'best');
+      const length = Math.max(0, ...c.usage_generations.map(r => r.best.length));
+      const canvas = chartCard(parent, `Calls per 10,000 steps: ${c.name}, ${panel.title}`,
+                               'Line: mean over runs; band: ± one standard deviation across runs. ' +
+                               'Calls: steps on which the behavior acted, scaled to 10,000 steps.');
+      if (k === 0) canvas.parentElement.parentElement.insertBefore(
+        el('div', {class: 'controls'}, [el('span', {text: 'usage in the'}), which]), canvas.parentElement);
+      charts.push({panel, chart: new Chart(canvas, {
+        type: 'line',
+        data: {labels: Array.from({length}, (_, g) => g), datasets},
+        options: {
+          interaction: {mode: 'index', intersect: false},
+          plugins: {legend: {labels: {filter: item => !item.text.endsWith('sd')}},
+                    tooltip: {filter: item => !item.dataset.escBand}},
+          scales: {x: {title: {display: true, text: 'generation'}},
+                   y: {min: 0, title: {display: true, text: 'calls per 10,000 steps'}}},
+        },
+      })});
+    });
+    which.addEventListener('change', () => charts.forEach(({panel, chart}) => {
+      chart.data.datasets = datasetsOf(panel, which.value);
+      chart.update();
+    }));
+  }
+
+  // Controllers carried into a new setting: their fitness in the origin experiment, here,
+  // the change, and (start from) when each run regained the origin's level.
+  function transfersCard(parent, exp) {
+    const cs = exp.controllers.filter(c => c.transfers);
+    if (cs.length === 0) return;
+    const first = cs[0].transfers;
+    const card = el('div', {class: 'card'});
+    card.appendChild(el('h3', {text: `From experiment ${first.origin}`}));
+    const t = el('table');
+    const head = ['controller', 'fitness there', 'fitness here', 'change'];
+    if (!first.evaluate_only) head.push('regained', 'median generation');
+    t.appendChild(el('tr', {}, head.map(h => el('th', {text: h}))));
+    for (const c of cs) {
+      const s = c.transfers;
+      const cells = [c.name, fmt(s.origin_mean, 1), fmt(s.here_mean, 1),
+                     s.change_mean === null ? 'n/a' : `${s.change_mean > 0 ? '+' : ''}${fmt(s.change_mean, 1)}%`];
+      if (!s.evaluate_only) cells.push(`${s.regained} of ${s.runs.length} runs`, fmt(s.regained_median, 0));
+      t.appendChild(el('tr', {}, cells.map(v => el('td', {text: v}))));
+    }
+    card.appendChild(t);
+    const runs = el('table');
+    const runHead = ['controller', 'run', 'from run', 'fitness there', 'fitness here', 'change'];
+    if (!first.evaluate_only) runHead.push('regained at generation');
+    runs.appendChild(el('tr', {}, runHead.map(h => el('th', {text: h}))));
+    for (const c of cs)
+      for (const r of c.transfers.runs) {
+        const cells = [c.name, String(r.run), String(r.origin_run), fmt(r.origin_fitness, 1), fmt(r.fitness_here, 1),
+                       r.change_percent === null ? 'n/a' : `${r.change_percent > 0 ? '+' : ''}${fmt(r.change_percent, 1)}%`];
+        if (!c.transfers.evaluate_only) cells.push(r.regained_at === null ? 'never' : String(r.regained_at));
+        runs.appendChild(el('tr', {}, cells.map(v => el('td', {text: v}))));
+      }
+    card.appendChild(el('h3', {text: 'Per run'}));
+    card.appendChild(runs);
+    card.appendChild(el('p', {class: 'note', text:
+      'Fitness there: the best fitness of the origin run whose best genome this run took. Fitness here: that genome ' +
+      'evaluated here (individual 0 of generation 0). Change: (here - there) / |there|. Regained: the first ' +
+      'generation whose best fitness reaches the origin\'s.'}));
+    parent.appendChild(card);
   }
 
   // The replay: the arena drawn to scale, the trajectory so far, the robot with its
@@ -249,20 +388,29 @@
     const canvas = el('canvas', {class: 'arena', width: '560', height: '560'});
     const action = el('span', {class: 'action'});
     const readout = el('div', {class: 'readout'});
-    const irs = el('div', {class: 'irbars'});
-    const irFill = [], irText = [];
-    for (let i = 0; i < 8; ++i) {
-      const fill = el('div');
-      irFill.push(fill);
-      const text = el('span');
-      irText.push(text);
-      irs.appendChild(el('span', {text: `IR ${i}`}));
-      irs.appendChild(el('div', {class: 'irbar'}, [fill]));
-      irs.appendChild(text);
+    // Bars of one sensor array (or the accumulator): fill and value per sensor.
+    function bars(labels, kind) {
+      const box = el('div', {class: 'irbars'});
+      const fill = [], text = [];
+      labels.forEach(label => {
+        const f = el('div', {class: kind}), t = el('span');
+        fill.push(f); text.push(t);
+        box.appendChild(el('span', {text: label}));
+        box.appendChild(el('div', {class: 'irbar'}, [f]));
+        box.appendChild(t);
+      });
+      return {box, show(values) {
+        values.forEach((v, i) => { fill[i].style.width = `${Math.round(100 * v)}%`; text[i].textContent = v.toFixed(2); });
+      }};
     }
+    const irs = bars([0, 1, 2, 3, 4, 5, 6, 7].map(i => `IR ${i}`), 'ir');
+    const lights = bars([0, 1, 2, 3, 4, 5, 6, 7].map(i => `light ${i}`), 'light');
+    const accumulator = bars(['energy'], 'energy');
+    const legend = el('div', {class: 'legend'});
     card.appendChild(el('div', {class: 'controls'}, [select, play, el('span', {text: 'speed'}), speed, slider]));
-    card.appendChild(el('div', {class: 'replay'}, [canvas, el('div', {}, [
-      el('div', {}, [el('span', {text: 'acting: '}), action]), el('h3', {text: 'IR sensors'}), irs,
+    card.appendChild(el('div', {class: 'replay'}, [el('div', {}, [canvas, legend]), el('div', {}, [
+      el('div', {}, [el('span', {text: 'acting: '}), action]), el('h3', {text: 'IR sensors'}), irs.box,
+      el('h3', {text: 'Light sensors'}), lights.box, el('h3', {text: 'Accumulator'}), accumulator.box,
       el('h3', {text: 'State'}), readout])]));
     const note = el('p', {class: 'note'});
     card.appendChild(note);
@@ -284,12 +432,18 @@
       slider.max = String(rows.length - 1);
       const shown = rows.length < c.replay.total_steps ? `the first ${rows[rows.length - 1][0] + 1} of ${c.replay.total_epochs} epochs (${rows.length} of ${c.replay.total_steps} steps)` : `all ${c.replay.total_epochs} epochs (${rows.length} steps)`;
       note.textContent = `Run ${c.replay.run}, evaluation seed ${c.replay.seed}: ${shown}. ` +
-        'Trajectory colored by the acting action or behavior (symbolic heads, supervisors); red marks: collisions.';
+        'Trajectory coloured by the acting action or behavior (symbolic heads, supervisors); black dots: collisions.';
+      legend.innerHTML = '';
+      const swatch = (colour, label, dot) => legend.appendChild(el('span', {class: 'swatch'}, [
+        el('span', {class: dot ? 'dot' : 'line', style: `background:${colour}`}), el('span', {text: label})]));
+      if (c.actions.length === 0) swatch('#1f77b4', 'path (a classical head chooses no behavior)', false);
+      c.actions.forEach((name, i) => swatch(choiceColour(i, c.actions.length), name, false));
+      swatch(collisionColour, 'collision', true);
       draw();
     }
     function draw() {
       const r = rows[index];
-      const [epoch, step, x, y, heading, ir, left, right, act, fitness, collided, energy] = r;
+      const [epoch, step, x, y, heading, ir, left, right, act, fitness, collided, energy, light] = r;
       ctx.clearRect(0, 0, canvas.width, canvas.height);
       ctx.fillStyle = '#fbfbf8';
       ctx.fillRect(0, 0, canvas.width, canvas.height);
@@ -340,10 +494,10 @@
       ctx.lineWidth = 2;
       for (let i = start + 1; i <= index; ++i) {
         const a = rows[i - 1], b = rows[i];
-        ctx.strokeStyle = b[8] >= 0 ? actionPalette[b[8] % actionPalette.length] : '#1f77b4';
+        ctx.strokeStyle = b[8] >= 0 ? choiceColour(b[8], c.actions.length) : '#1f77b4';
         ctx.beginPath(); ctx.moveTo(X(a[2]), Y(a[3])); ctx.lineTo(X(b[2]), Y(b[3])); ctx.stroke();
       }
-      ctx.fillStyle = '#d62728';
+      ctx.fillStyle = collisionColour;
       for (let i = start; i <= index; ++i)
         if (rows[i][10]) { ctx.beginPath(); ctx.arc(X(rows[i][2]), Y(rows[i][3]), 3, 0, 2 * Math.PI); ctx.fill(); }
       // The robot, its heading and its 8 IR sensors (mount and facing angles from the simulator).
@@ -362,12 +516,12 @@
         ctx.beginPath(); ctx.moveTo(X(sx), Y(sy));
         ctx.lineTo(X(sx + len * Math.cos(f)), Y(sy + len * Math.sin(f))); ctx.stroke();
       }
-      for (let i = 0; i < 8; ++i) {
-        irFill[i].style.width = `${Math.round(100 * ir[i])}%`;
-        irText[i].textContent = ir[i].toFixed(2);
-      }
+      irs.show(ir);
+      // Replays stored before the light sensors were traced have none.
+      lights.show(light || [0, 0, 0, 0, 0, 0, 0, 0]);
+      accumulator.show([energy === undefined ? 1 : energy]);
       action.textContent = act >= 0 ? (c.actions[act] || `action ${act}`) : 'wheels (classical head)';
-      action.style.background = act >= 0 ? alpha(actionPalette[act % actionPalette.length], 0.3) : '#e9eef8';
+      action.style.background = act >= 0 ? alpha(choiceColour(act, c.actions.length), 0.3) : '#e9eef8';
       readout.textContent =
         `epoch ${epoch + 1}, step ${step + 1}\n` +
         `position  x ${x.toFixed(1)} mm  y ${y.toFixed(1)} mm  heading ${(heading * 180 / Math.PI).toFixed(0)} deg\n` +
@@ -425,6 +579,17 @@
         const usageGrid = el('div', {class: 'grid'});
         section.appendChild(usageGrid);
         symbolic.forEach(c => usageChart(usageGrid, c, palette[exp.controllers.indexOf(c) % palette.length]));
+      }
+      const overGenerations = exp.controllers.filter(c => c.usage_generations.some(r => r.best.some(g => g !== null)));
+      if (overGenerations.length > 0) {
+        section.appendChild(el('h2', {text: 'Behavior usage over generations'}));
+        const grid = el('div', {class: 'grid'});
+        section.appendChild(grid);
+        overGenerations.forEach(c => usageOverGenerations(grid, c));
+      }
+      if (exp.controllers.some(c => c.transfers)) {
+        section.appendChild(el('h2', {text: 'Generalization'}));
+        transfersCard(section, exp);
       }
       const trees = exp.controllers.filter(c => c.runs.some(r => r.best_tree));   // tree controllers
       if (trees.length > 0) {

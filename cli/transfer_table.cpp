@@ -1,0 +1,40 @@
+#include "cli/transfer_table.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "runtime/report/generalization.hpp"
+
+namespace esc::cli {
+
+namespace {
+
+std::string or_na(double x, std::string_view format) {
+  return std::isnan(x) ? "n/a" : fmt::format(fmt::runtime(format), x);
+}
+
+}  // namespace
+
+void print_transfers(const eval::CampaignResult& result) {
+  bool header = false;
+  for (const eval::ControllerResult& c : result.controllers) {
+    const auto s = report::summarise_transfers(c.runs);
+    if (!s) continue;
+    if (!header)
+      fmt::print("\nfrom experiment {} (mean over runs: each run's genome there, then here)\n{:<12} {:>14} {:>14} "
+                 "{:>9}  {}\n",
+                 s->origin, "controller", "fitness there", "fitness here", "change", s->evaluate_only ? "" : "regained");
+    header = true;
+    std::string regained;
+    if (!s->evaluate_only)
+      regained = s->regained == 0 ? fmt::format("0 of {} runs", s->runs.size())
+                                  : fmt::format("{} of {} runs, median generation {}", s->regained, s->runs.size(),
+                                                or_na(s->regained_median, "{:.0f}"));
+    fmt::print("{:<12} {:>14} {:>14} {:>9}  {}\n", c.name, or_na(s->origin_mean, "{:.1f}"),
+               or_na(s->here_mean, "{:.1f}"), or_na(s->change_mean, "{:+.1f}%"), regained);
+  }
+}
+
+}  // namespace esc::cli

@@ -1,0 +1,44 @@
+#include "runtime/report/generalization.hpp"
+
+#include <limits>
+
+#include "runtime/report/statistics.hpp"
+
+namespace esc::report {
+
+namespace {
+
+double mean_or_nan(const std::vector<double>& values) {
+  return values.empty() ? std::numeric_limits<double>::quiet_NaN() : summarise(values).mean;
+}
+
+}  // namespace
+
+std::optional<TransferSummary> summarise_transfers(const std::vector<eval::RunResult>& runs) {
+  TransferSummary s;
+  std::vector<double> origin, here, change, regained;
+  for (const eval::RunResult& r : runs) {
+    if (!r.transfer) continue;
+    const eval::Transfer& t = *r.transfer;
+    std::vector<double> best;
+    for (const eval::GenerationStats& g : r.generations) best.push_back(g.best);
+    const RunTransfer rt{r.run, t.origin_run, t.origin_fitness, t.fitness_here, eval::change_percent(t),
+                         eval::regained_at(t, best)};
+    s.origin = t.experiment;
+    s.evaluate_only = t.evaluate_only;
+    origin.push_back(rt.origin_fitness);
+    if (rt.fitness_here) here.push_back(*rt.fitness_here);
+    if (rt.change_percent) change.push_back(*rt.change_percent);
+    if (rt.regained_at) regained.push_back(*rt.regained_at);
+    s.runs.push_back(rt);
+  }
+  if (s.runs.empty()) return std::nullopt;
+  s.origin_mean = mean_or_nan(origin);
+  s.here_mean = mean_or_nan(here);
+  s.change_mean = mean_or_nan(change);
+  s.regained = regained.size();
+  s.regained_median = regained.empty() ? std::numeric_limits<double>::quiet_NaN() : summarise(regained).median;
+  return s;
+}
+
+}  // namespace esc::report

@@ -1,0 +1,142 @@
+// Carrying evolution on: `esc run --resume DIR --generations G` extends every run of a
+// finished (or interrupted) directory to G generations from its stored populations, step
+// sizes and streams, so the directory ends as a run asked for G generations from the start
+// with the same seed: the same per-generation statistics, best genomes and summary.json, for
+// the ES and GP, on another thread count, and after a kill -9 during the extension. Fewer
+// generations than stored is an error that changes nothing; so is carrying a study on (not
+// supported yet).
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
+
+namespace {
+
+using namespace cli_test;
+
+// The per-generation results of a directory: the export's CSV without the wall times
+// (`seconds`) and the directory's path (the last column); no field here holds a comma.
+std::string results_without_times(const fs::path& dir) {
+  const Outcome o = esc("export " + dir.string() + " --format csv");
+  EXPECT_EQ(o.status, 0) << o.output;
+  std::stringstream in(o.output);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    EXPECT_GE(cells.size(), 13u) << line;
+    if (cells.size() < 13) continue;
+    cells.erase(cells.begin() + 11);   // seconds
+    cells.pop_back();                  // directory
+    for (const std::string& c : cells) out += c + ",";
+    out += "\n";
+  }
+  return out;
+}
+
+// Everything a run directory holds as results: per-generation statistics, usage table,
+// summary.json and every best genome, equal between the two.
+void expect_same_results(const fs::path& a, const fs::path& b, const std::vector<std::string>& controllers, int runs) {
+  EXPECT_EQ(results_without_times(a), results_without_times(b));
+  EXPECT_EQ(esc("export " + a.string() + " --table usage").output, esc("export " + b.string() + " --table usage").output);
+  expect_same_summary(a, b);
+  for (const std::string& c : controllers)
+    for (int r = 1; r <= runs; ++r) {
+      const std::string file = c + "/run-0" + std::to_string(r) + ".best.json";
+      EXPECT_EQ(slurp(a / file), slurp(b / file)) << file;
+    }
+}
+
+TEST(CarryOn, AnEsRunCarriedOnIsTheLongerRun) {
+  const fs::path dir = scratch("carry-on-es");
+  const std::string args = "run " + tiny() + " --seed 5 ";
+  const Outcome longer = esc(args + "--generations 4 --threads 1 --out " + (dir / "four").string());
+  ASSERT_EQ(longer.status, 0) << longer.output;
+  const Outcome two = esc(args + "--generations 2 --threads 1 --out " + (dir / "two").string());
+  ASSERT_EQ(two.status, 0) << two.output;
+  const Outcome on = esc("run --resume " + (dir / "two").string() + " --generations 4 --threads 2");
+  ASSERT_EQ(on.status, 0) << on.output;
+  EXPECT_NE(on.output.find("carrying tiny"), std::string::npos) << on.output;
+  expect_same_results(dir / "two", dir / "four", {"CC", "SC"}, 2);
+  EXPECT_EQ(read_json(dir / "two" / "settings.json")["settings"], read_json(dir / "four" / "settings.json")["settings"]);
+  // The report's curves run on across the extension.
+  const Outcome report = esc("report " + (dir / "two").string());
+  ASSERT_EQ(report.status, 0) << report.output;
+  EXPECT_EQ(read_json(dir / "two" / "summary.json")["controllers"]["CC"]["runs"][0]["best"].size(), 4u);
+  // Asked again: nothing left to do.
+  const Outcome again = esc("run --resume " + (dir / "two").string() + " --generations 4");
+  EXPECT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("is complete"), std::string::npos) << again.output;
+}
+
+TEST(CarryOn, AGpRunCarriedOnIsTheLongerRun) {
+  const fs::path dir = scratch("carry-on-gp");
+  const std::string args = "run " + tiny_gp() + " --seed 5 ";
+  const Outcome longer = esc(args + "--generations 4 --threads 2 --out " + (dir / "four").string());
+  ASSERT_EQ(longer.status, 0) << longer.output;
+  const Outcome two = esc(args + "--generations 2 --threads 2 --out " + (dir / "two").string());
+  ASSERT_EQ(two.status, 0) << two.output;
+  const Outcome on = esc("run --resume " + (dir / "two").string() + " --generations 4 --threads 1");
+  ASSERT_EQ(on.status, 0) << on.output;
+  expect_same_results(dir / "two", dir / "four", {"SC", "GS", "GW"}, 2);
+  EXPECT_EQ(slurp(dir / "two" / "GS" / "run-01.best.esc"), slurp(dir / "four" / "GS" / "run-01.best.esc"));
+}
+
+TEST(CarryOn, FewerGenerationsThanStoredIsAnErrorThatChangesNothing) {
+  const fs::path dir = scratch("carry-on-shorter");
+  const Outcome run = esc("run " + tiny() + " --seed 5 --generations 3 --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string before = esc("export " + dir.string() + " --format json").output;
+  const std::string summary = slurp(dir / "summary.json");
+  const Outcome shorter = esc("run --resume " + dir.string() + " --generations 2");
+  EXPECT_EQ(shorter.status, 1) << shorter.output;
+  EXPECT_NE(shorter.output.find("esc: error: the runs of CC in " + dir.string() +
+                                " have 3 generations; --generations 2 would cut them"),
+            std::string::npos)
+      << shorter.output;
+  EXPECT_EQ(esc("export " + dir.string() + " --format json").output, before);
+  EXPECT_EQ(slurp(dir / "summary.json"), summary);
+}
+
+TEST(CarryOn, AStudysDirectoryIsNotCarriedOnAndStaysAsItWas) {
+  const fs::path dir = scratch("carry-on-study");
+  const Outcome run = esc("run " + std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc --experiment "
+                          "tiny_study_fewer --runs 1 --generations 1 --set epochs=1 --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string summary = slurp(dir / "summary.json");
+  const Outcome on = esc("run --resume " + dir.string() + " --generations 3");
+  EXPECT_EQ(on.status, 2) << on.output;
+  EXPECT_NE(on.output.find("holds study `tiny_study_fewer`: --generations carries an experiment's directory on, not "
+                           "yet a study's"),
+            std::string::npos)
+      << on.output;
+  EXPECT_EQ(slurp(dir / "summary.json"), summary);
+}
+
+TEST(CarryOn, AnExtensionKilledHalfwayResumesBitIdentical) {
+  const fs::path dir = scratch("carry-on-killed");
+  const Outcome reference = esc("run " + tiny() + " --generations 100 --seed 5 --threads 1 --out " + (dir / "ref").string());
+  ASSERT_EQ(reference.status, 0) << reference.output;
+  const fs::path killed = dir / "killed";
+  const Outcome two = esc("run " + tiny() + " --generations 2 --seed 5 --threads 1 --out " + killed.string());
+  ASSERT_EQ(two.status, 0) << two.output;
+  // 2 controllers x 2 runs x 100 generations in all; killed once 40 more are committed.
+  const pid_t child = spawn_esc({"run", "--resume", killed.string(), "--generations", "100", "--threads", "1"});
+  ASSERT_GE(child, 0);
+  const Killed k = kill_when_committed(child, killed, 8 + 40);
+  ASSERT_TRUE(k.still_running) << "the extension finished before it could be killed";
+  ASSERT_LT(committed_generations(killed), 400);
+  // Resumed without --generations: the directory remembers what it is carried on to.
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(committed_generations(killed), 400);
+  EXPECT_EQ(slurp(dir / "ref" / "summary.json"), slurp(killed / "summary.json"));
+  EXPECT_EQ(results_without_times(dir / "ref"), results_without_times(killed));
+}
+
+}  // namespace
