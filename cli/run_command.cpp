@@ -83,27 +83,32 @@ int resume_command(const RunOptions& o) {
   const Target target = pick_target(compiled, *script, stored.name);
   if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
   eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
-  // The settings it was launched with, for it and its dependencies; then the generations a
-  // previous --generations carried it on to, for it alone.
+  // The settings it was launched with, for it and its dependencies.
   RunOptions replay = stored_overrides(stored, o.resume);
   if (!apply_overrides(replay, spec) || !select_controllers(replay.controllers, spec)) return kExitBadInput;
+  replay.threads = o.threads;
+  replay.runs_at_once = o.runs_at_once;
+  // As stored: with the generations a previous --generations carried it on to, if any.
   const std::optional<int> carried = stored_carry_on(stored, o.resume);
-  if (carried && !compiler::apply_setting(spec, "generations", std::to_string(*carried)).empty()) {
+  const auto set_generations = [](eval::ExperimentSpec& s, std::optional<int> g) {
+    return !g || compiler::apply_setting(s, "generations", std::to_string(*g)).empty();
+  };
+  eval::ExperimentSpec as_stored = spec;
+  if (!set_generations(as_stored, carried)) {
     complain("esc: error: {} is damaged: it was carried on to {} generations\n", o.resume.string(), *carried);
     return kExitBadInput;
   }
-  replay.threads = o.threads;
-  replay.runs_at_once = o.runs_at_once;
-  if (!resumable(spec, sources_of(compiled), stored, *script, o.resume)) return kExitBadInput;
-  const std::optional<int> extend = carry_on_to(o, spec);
+  if (!resumable(as_stored, sources_of(compiled), stored, *script, o.resume)) return kExitBadInput;
+  const std::optional<int> extend = carry_on_to(o, as_stored);
   if (extend && *extend < 0) return kExitBadInput;
   if (!extend && stored.finished()) return complete();
-  if (extend) (void)compiler::apply_setting(spec, "generations", std::to_string(*extend));
-  // Dependencies last: a script that cannot resume should not first run them. They keep the
-  // generations they were launched with: carrying a run on extends it alone.
+  // Dependencies last: a script that cannot resume should not first run them. They, and what
+  // the run received from them, are checked with the generations it was launched with:
+  // carrying a run on extends it alone.
   const std::filesystem::path cache = resume_cache(o, replay);
   if (!prepare_dependencies(spec, dependency_context(compiled, replay, cache, *script))) return kExitBadInput;
   if (!same_inputs(spec, stored, cache, o.resume)) return kExitBadInput;
+  (void)set_generations(spec, extend ? extend : carried);
 
   const eval::ResumePoint point = db.resume_point(stored, spec);
   const std::int64_t done = generations_done(point);

@@ -87,6 +87,34 @@ TEST(CarryOn, AGpRunCarriedOnIsTheLongerRun) {
   EXPECT_EQ(slurp(dir / "two" / "GS" / "run-01.best.esc"), slurp(dir / "four" / "GS" / "run-01.best.esc"));
 }
 
+TEST(CarryOn, ARunWithDependenciesIsCarriedOnAloneTwice) {
+  // `supervised` uses `basic`'s evolved controller: carried on (twice), it keeps the
+  // behavior it started with, and its first generations stay as they were.
+  const fs::path dir = scratch("carry-on-deps");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
+  const Outcome run = esc("run " + script + " --experiment supervised --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string three = results_without_times(dir);
+  EXPECT_EQ(committed_generations(dir), 2 * 3);
+  for (const int g : {4, 5}) {
+    const Outcome on = esc("run --resume " + dir.string() + " --generations " + std::to_string(g) + " --threads 1");
+    ASSERT_EQ(on.status, 0) << on.output;
+    EXPECT_NE(on.output.find("dependency basic: reused"), std::string::npos) << on.output;
+    EXPECT_EQ(committed_generations(dir), 2 * g);
+  }
+  const std::string five = results_without_times(dir);
+  // Run 1's three generations are the first lines of its five (the header, then run 1).
+  std::stringstream a(three), b(five);
+  std::string line_a, line_b;
+  for (int k = 0; k < 1 + 3; ++k) {
+    ASSERT_TRUE(std::getline(a, line_a) && std::getline(b, line_b));
+    EXPECT_EQ(line_a, line_b);
+  }
+  const Outcome again = esc("run --resume " + dir.string());
+  EXPECT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("is complete"), std::string::npos) << again.output;
+}
+
 TEST(CarryOn, FewerGenerationsThanStoredIsAnErrorThatChangesNothing) {
   const fs::path dir = scratch("carry-on-shorter");
   const Outcome run = esc("run " + tiny() + " --seed 5 --generations 3 --threads 2 --out " + dir.string());
