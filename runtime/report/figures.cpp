@@ -9,6 +9,7 @@
 
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/svg_plot.hpp"
+#include "runtime/report/usage_figure.hpp"
 
 namespace esc::report {
 
@@ -206,7 +207,10 @@ svg::Figure sweep_figure(const std::vector<const store::StoredExperiment*>& poin
 std::vector<NamedFigure> experiment_figures(const store::StoredExperiment& e, const std::string& stem) {
   const svg::Figure fitness = fitness_figure(e);
   const svg::Figure box = box_figure(e);
-  return {{stem + "-fitness.svg", fitness.title, svg::render(fitness)}, {stem + "-best.svg", box.title, svg::render(box)}};
+  std::vector<NamedFigure> out = {{stem + "-fitness.svg", fitness.title, svg::render(fitness)},
+                                  {stem + "-best.svg", box.title, svg::render(box)}};
+  for (NamedFigure& f : usage_figures(e, stem)) out.push_back(std::move(f));
+  return out;
 }
 
 std::vector<NamedFigure> study_figures(const std::vector<const store::StoredExperiment*>& conditions,

@@ -2,8 +2,9 @@
 // The figures `esc report` writes as SVG files (DIR/figures/) and shows in the report:
 // - per experiment or study condition, the paper's Figure 1: for each controller the
 //   maximum and the mean over runs of the best fitness of each generation, and the best
-//   so far (mean over runs of each run's best up to that generation); and a box plot of
-//   the runs' best fitness;
+//   so far (mean over runs of each run's best up to that generation); a box plot of the
+//   runs' best fitness; and the paper's Figure 2 per controller that chooses behaviors
+//   (usage_figure.hpp);
 // - per study, box plots of each controller's runs across the conditions (one panel per
 //   controller), and for each sweep the final best fitness against the swept value (mean
 //   and sd over runs, one line per controller; a categorical axis when the values are not
