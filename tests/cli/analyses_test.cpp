@@ -68,6 +68,7 @@ TEST(Analyses, TheUsageTableHasARowPerRunGenerationAndBehavior) {
     sums[key] += std::stoll(r.at("best_steps"));
     totals[key] = std::stoll(r.at("steps_total"));
     EXPECT_EQ(r.at("experiment"), "energy");
+    EXPECT_EQ(r.at("condition"), "");   // a plain experiment
   }
   EXPECT_EQ(per_controller.count("CC"), 0u);
   EXPECT_EQ(per_controller["SC"], 2u * 2u * 3u);
@@ -92,6 +93,21 @@ TEST(Analyses, TheUsageTableHasARowPerRunGenerationAndBehavior) {
                   r["behavior_usage"][usage["behaviors"][b].get<std::string>()])
             << controller << " run " << r["run"] << " behavior " << usage["behaviors"][b];
     }
+}
+
+TEST(Analyses, AStudysUsageRowsNameTheirCondition) {
+  const fs::path dir = scratch("usage-study");
+  const Outcome run = esc("run " + data("tiny_study.esc") + " --experiment tiny_study_fewer --runs 1 --generations 1 "
+                          "--set epochs=1 --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::map<std::string, std::size_t> per_condition;
+  for (const auto& r : usage_rows(dir)) {
+    EXPECT_EQ(r.at("controller"), "SC");   // CC chooses nothing
+    ++per_condition[r.at("condition")];
+  }
+  const json summary = read_json(dir / "summary.json");
+  ASSERT_EQ(per_condition.size(), summary["conditions"].size());
+  for (const json& c : summary["conditions"]) EXPECT_EQ(per_condition[c["name"].get<std::string>()], 3u) << c["name"];
 }
 
 TEST(Analyses, AFitnessOfUsingIsTheUsageCount) {
