@@ -39,7 +39,7 @@ _esc() {
   case $command in
     check) options="--help" ;;
     run) options="--resume --experiment --runs --generations --seed --threads --runs-at-once --out --cache --set --controllers --help" ;;
-    export) options="--format --out --help" ;;
+    export) options="--format --table --out --help" ;;
     report) options="--out --help" ;;
     replay) options="--controller --run --epochs --out --script --experiment --seed --animate --help" ;;
     bench) options="--threads --min-time --campaign --benchmark --help" ;;
