@@ -29,30 +29,6 @@ int run_experiment(const eval::ExperimentSpec& spec, const eval::CampaignOptions
   return kExitOk;
 }
 
-// `--resume DIR --generations G`: the generations the run is carried on to, after checking
-// that G carries every controller on (never cuts it) and that the experiment evolves; nullopt
-// when G is what it already has (a plain resume), -1 after printing an error.
-std::optional<int> carry_on_to(const RunOptions& o, const eval::ExperimentSpec& spec) {
-  if (!o.generations) return std::nullopt;
-  bool more = false;
-  for (const control::ControllerSpec& c : spec.controllers) {
-    if (*o.generations < spec.generations_for(c)) {
-      complain("esc: error: the runs of {} in {} have {} generations; --generations {} would cut them: a run is "
-               "carried on to more generations, never shortened (nothing was changed)\n",
-               c.name, o.resume.string(), spec.generations_for(c), *o.generations);
-      return -1;
-    }
-    more = more || *o.generations > spec.generations_for(c);
-  }
-  if (more && spec.evaluates_only()) {
-    complain("esc: error: experiment {} only evaluates stored controllers (`evaluate from`): it has no generations "
-             "to carry on\n", spec.name);
-    return -1;
-  }
-  if (!more) return std::nullopt;
-  return *o.generations;
-}
-
 int resume_command(const RunOptions& o) {
   if (o.runs || o.seed || !o.settings.empty() || !o.controllers.empty() || !o.experiment.empty() || !o.out.empty()) {
     complain("esc: error: --resume continues a run with its own settings: --runs, --seed, --set, --controllers, "
@@ -61,14 +37,7 @@ int resume_command(const RunOptions& o) {
   }
   store::ResultsDb db = store::ResultsDb::open(o.resume);
   std::vector<store::StoredExperiment> all = db.load();
-  if (!all.empty() && all.front().condition) {
-    if (o.generations) {
-      complain("esc: error: {} holds study `{}`: --generations carries an experiment's directory on, not yet a "
-               "study's\n", o.resume.string(), all.front().condition->study);
-      return kExitUsage;
-    }
-    return resume_study(o, db, std::move(all));
-  }
+  if (!all.empty() && all.front().condition) return resume_study(o, db, std::move(all));
   const store::StoredExperiment stored = db.load_single();
   const auto complete = [&] {
     say("esc: {} is complete ({} x {} runs x {} generations); nothing to resume\n", o.resume.string(),
@@ -90,9 +59,6 @@ int resume_command(const RunOptions& o) {
   replay.runs_at_once = o.runs_at_once;
   // As stored: with the generations a previous --generations carried it on to, if any.
   const std::optional<int> carried = stored_carry_on(stored, o.resume);
-  const auto set_generations = [](eval::ExperimentSpec& s, std::optional<int> g) {
-    return !g || compiler::apply_setting(s, "generations", std::to_string(*g)).empty();
-  };
   eval::ExperimentSpec as_stored = spec;
   if (!set_generations(as_stored, carried)) {
     complain("esc: error: {} is damaged: it was carried on to {} generations\n", o.resume.string(), *carried);

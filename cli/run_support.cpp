@@ -180,4 +180,29 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
       cache, ESC_VERSION_STRING};
 }
 
+std::optional<int> carry_on_to(const RunOptions& o, const eval::ExperimentSpec& spec) {
+  if (!o.generations) return std::nullopt;
+  bool more = false;
+  for (const control::ControllerSpec& c : spec.controllers) {
+    if (*o.generations < spec.generations_for(c)) {
+      complain("esc: error: the runs of {} in {} have {} generations; --generations {} would cut them: a run is "
+               "carried on to more generations, never shortened (nothing was changed)\n",
+               c.name, o.resume.string(), spec.generations_for(c), *o.generations);
+      return -1;
+    }
+    more = more || *o.generations > spec.generations_for(c);
+  }
+  if (more && spec.evaluates_only()) {
+    complain("esc: error: experiment {} only evaluates stored controllers (`evaluate from`): it has no generations "
+             "to carry on\n", spec.name);
+    return -1;
+  }
+  if (!more) return std::nullopt;
+  return *o.generations;
+}
+
+bool set_generations(eval::ExperimentSpec& spec, std::optional<int> generations) {
+  return !generations || compiler::apply_setting(spec, "generations", std::to_string(*generations)).empty();
+}
+
 }  // namespace esc::cli

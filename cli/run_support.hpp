@@ -81,6 +81,14 @@ namespace esc::cli {
 eval::CampaignResult campaign_on_all_ranks(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
                                            store::RunDirectory* dir, std::int64_t already_done);
 
+// `--resume DIR --generations G`: the generations `spec` (as stored) is carried on to, after
+// checking that G carries every controller on (never cuts it) and that the experiment
+// evolves; nullopt when G is what it already has (a plain resume), -1 after printing an error.
+[[nodiscard]] std::optional<int> carry_on_to(const RunOptions& o, const eval::ExperimentSpec& spec);
+
+// `spec` run for `generations` (the ES's and the GP's) when given; false when refused.
+[[nodiscard]] bool set_generations(eval::ExperimentSpec& spec, std::optional<int> generations);
+
 // A study's run and resume (study_command.cpp).
 int run_study(const RunOptions& o, compiler::CompileResult& compiled, eval::StudySpec& study);
 int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::StoredExperiment> stored);

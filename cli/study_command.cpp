@@ -56,6 +56,8 @@ bool apply_to_conditions(const RunOptions& o, eval::StudySpec& study) {
 struct Stored {
   store::ResultsDb* db = nullptr;
   const std::vector<store::StoredExperiment>* conditions = nullptr;
+  // Per condition, the generations `--resume DIR --generations G` carries it on to, if any.
+  const std::vector<std::optional<int>>* carry_on = nullptr;
 };
 
 // Runs every condition not finished yet and prints the study's table.
@@ -65,7 +67,9 @@ int run_conditions(const eval::StudySpec& study, const RunOptions& o, std::optio
   for (std::size_t i = 0; i < study.conditions.size(); ++i) {
     const eval::ConditionSpec& c = study.conditions[i];
     const store::StoredExperiment* before = stored.conditions != nullptr ? &(*stored.conditions)[i] : nullptr;
-    if (before != nullptr && before->finished()) {
+    // The generations it is carried on to; 0 when it is not (a run has at least one).
+    const int carry_on = stored.carry_on != nullptr ? (*stored.carry_on)[i].value_or(0) : 0;
+    if (before != nullptr && before->finished() && carry_on == 0) {
       results.push_back({c.name, &c.experiment, before->result()});
       continue;
     }
@@ -75,7 +79,14 @@ int run_conditions(const eval::StudySpec& study, const RunOptions& o, std::optio
         c.experiment.name, c.experiment.controllers.size(), c.experiment.controllers.size() == 1 ? "" : "s",
         c.experiment.runs, c.experiment.runs == 1 ? "" : "s", generations_text(c.experiment));
     std::optional<store::RunDirectory> run;
-    if (dir) run.emplace(dir->open_condition(i, point));
+    if (dir) {
+      std::optional<store::StudyDirectory::CarryOn> recorded;
+      if (carry_on > 0) {
+        recorded = store::StudyDirectory::CarryOn{&c.experiment, before->overrides};
+        recorded->overrides["carry_on"] = carry_on;
+      }
+      run.emplace(dir->open_condition(i, point, recorded));
+    }
     results.push_back({c.name, &c.experiment,
                        campaign_on_all_ranks(c.experiment, campaign_options(o, before != nullptr ? &point : nullptr),
                                              run ? &*run : nullptr, generations_done(point))});
@@ -121,10 +132,11 @@ int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::S
   const store::StoredExperiment& first = stored.front();
   const std::string& name = first.condition->study;
   const auto finished = std::count_if(stored.begin(), stored.end(), [](const auto& e) { return e.finished(); });
-  if (static_cast<std::size_t>(finished) == stored.size()) {
+  const auto complete = [&] {
     say("esc: {} is complete (study {}, {} conditions); nothing to resume\n", o.resume.string(), name, stored.size());
     return kExitOk;
-  }
+  };
+  if (static_cast<std::size_t>(finished) == stored.size() && !o.generations) return complete();
   const auto script = resume_script(o, first.script);
   if (!script) return kExitBadInput;
   compiler::CompileResult compiled = load_script(*script);
@@ -149,21 +161,44 @@ int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::S
   if (!apply_to_conditions(replay, study)) return kExitBadInput;
   replay.threads = o.threads;
   replay.runs_at_once = o.runs_at_once;
+  // Each condition as stored (carried on by a previous --generations, if it was), and the
+  // generations a new --generations carries it on to.
   const std::vector<store::SourceFile> sources = sources_of(compiled);
-  for (std::size_t i = 0; i < stored.size(); ++i)
-    if (!resumable(study.conditions[i].experiment, sources, stored[i], *script, o.resume)) return kExitBadInput;
-  // Dependencies last: a script that cannot resume should not first run them.
+  std::vector<std::optional<int>> carried(stored.size()), extend(stored.size());
+  bool any = false;
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    carried[i] = stored_carry_on(stored[i], o.resume);
+    eval::ExperimentSpec as_stored = study.conditions[i].experiment;
+    if (!set_generations(as_stored, carried[i])) {
+      complain("esc: error: {} is damaged: condition {} was carried on to {} generations\n", o.resume.string(),
+               stored[i].condition->name, *carried[i]);
+      return kExitBadInput;
+    }
+    if (!resumable(as_stored, sources, stored[i], *script, o.resume)) return kExitBadInput;
+    extend[i] = carry_on_to(o, as_stored);
+    if (extend[i] && *extend[i] < 0) return kExitBadInput;
+    any = any || extend[i] || !stored[i].finished();
+  }
+  if (!any) return complete();
+  // Dependencies last: a script that cannot resume should not first run them. They, and what
+  // each condition received from them, are checked with the generations it was launched with.
   const std::filesystem::path cache = resume_cache(o, replay);
   const DependencyContext deps = dependency_context(compiled, replay, cache, *script);
   for (std::size_t i = 0; i < stored.size(); ++i) {
-    if (stored[i].finished()) continue;
     eval::ExperimentSpec& x = study.conditions[i].experiment;
-    if (!prepare_dependencies(x, deps) || !same_inputs(x, stored[i], cache, o.resume)) return kExitBadInput;
+    if (!stored[i].finished() || extend[i])
+      if (!prepare_dependencies(x, deps) || !same_inputs(x, stored[i], cache, o.resume)) return kExitBadInput;
+    (void)set_generations(x, extend[i] ? extend[i] : carried[i]);
   }
-  say("esc: resuming study {} in {}: {} of {} conditions finished\n", name, o.resume.string(), finished, stored.size());
+  if (o.generations)
+    say("esc: carrying study {} in {} on to {} generations: {} of {} conditions finished\n", name, o.resume.string(),
+        *o.generations, finished, stored.size());
+  else
+    say("esc: resuming study {} in {}: {} of {} conditions finished\n", name, o.resume.string(), finished,
+        stored.size());
   std::optional<store::StudyDirectory> dir;
   if (!open_on_rank0([&] { dir.emplace(o.resume, stored); })) return kExitBadInput;
-  return run_conditions(study, replay, dir, Stored{&db, &stored}, o.resume);
+  return run_conditions(study, replay, dir, Stored{&db, &stored, &extend}, o.resume);
 }
 
 }  // namespace esc::cli

@@ -73,10 +73,12 @@ StudyDirectory::StudyDirectory(fs::path dir, std::vector<StoredExperiment> store
   write_summary();
 }
 
-RunDirectory StudyDirectory::open_condition(std::size_t i, const eval::ResumePoint& point) {
+RunDirectory StudyDirectory::open_condition(std::size_t i, const eval::ResumePoint& point,
+                                            const std::optional<CarryOn>& carried_on) {
   const StoredExperiment& e = stored_.at(i);
   ResultsDb db = ResultsDb::open(dir_);
   db.select_experiment(e.id);
+  if (carried_on) RunDirectory::carry_on(dir_ / e.condition->directory, db, *carried_on->spec, carried_on->overrides);
   return RunDirectory::resume(dir_ / e.condition->directory, std::move(db), e, point,
                               [this, i](const eval::CampaignResult& partial) {
                                 summaries_.at(i).result = partial;

@@ -11,6 +11,7 @@
 // Conditions run one after another; each is a RunDirectory over the study's database.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,15 @@ class StudyDirectory {
   // The listener of condition `i`'s campaign: its files under DIR/<condition>/ (rewritten
   // from the database), its results in its experiment of the database; each finished run
   // rewrites the study's summary.json. The StudyDirectory must outlive it. `point`: where
-  // the condition resumes (ResultsDb::resume_point; empty for a new one).
-  [[nodiscard]] RunDirectory open_condition(std::size_t i, const eval::ResumePoint& point);
+  // the condition resumes (ResultsDb::resume_point; empty for a new one). `carried_on`: the
+  // condition is carried on to its generations with these command-line settings, recorded
+  // first (RunDirectory::carry_on).
+  struct CarryOn {
+    const eval::ExperimentSpec* spec;
+    nlohmann::ordered_json overrides;
+  };
+  [[nodiscard]] RunDirectory open_condition(std::size_t i, const eval::ResumePoint& point,
+                                            const std::optional<CarryOn>& carried_on = std::nullopt);
   // What the database held of condition `i` when this directory was opened.
   [[nodiscard]] const StoredExperiment& stored(std::size_t i) const { return stored_.at(i); }
   [[nodiscard]] std::size_t size() const noexcept { return stored_.size(); }

@@ -3,8 +3,8 @@
 // sizes and streams, so the directory ends as a run asked for G generations from the start
 // with the same seed: the same per-generation statistics, best genomes and summary.json, for
 // the ES and GP, on another thread count, and after a kill -9 during the extension. Fewer
-// generations than stored is an error that changes nothing; so is carrying a study on (not
-// supported yet).
+// generations than stored is an error that changes nothing. A study is carried on as an
+// experiment is, condition by condition.
 #include <sstream>
 #include <string>
 #include <vector>
@@ -131,19 +131,23 @@ TEST(CarryOn, FewerGenerationsThanStoredIsAnErrorThatChangesNothing) {
   EXPECT_EQ(slurp(dir / "summary.json"), summary);
 }
 
-TEST(CarryOn, AStudysDirectoryIsNotCarriedOnAndStaysAsItWas) {
+TEST(CarryOn, AStudyCarriedOnIsTheLongerStudy) {
   const fs::path dir = scratch("carry-on-study");
-  const Outcome run = esc("run " + std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc --experiment "
-                          "tiny_study_fewer --runs 1 --generations 1 --set epochs=1 --threads 2 --out " + dir.string());
-  ASSERT_EQ(run.status, 0) << run.output;
-  const std::string summary = slurp(dir / "summary.json");
-  const Outcome on = esc("run --resume " + dir.string() + " --generations 3");
-  EXPECT_EQ(on.status, 2) << on.output;
-  EXPECT_NE(on.output.find("holds study `tiny_study_fewer`: --generations carries an experiment's directory on, not "
-                           "yet a study's"),
-            std::string::npos)
-      << on.output;
-  EXPECT_EQ(slurp(dir / "summary.json"), summary);
+  const std::string args = "run " + std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc --experiment "
+                           "tiny_study_fewer --runs 2 --set epochs=1 ";
+  const Outcome longer = esc(args + "--generations 3 --threads 2 --out " + (dir / "three").string());
+  ASSERT_EQ(longer.status, 0) << longer.output;
+  const Outcome one = esc(args + "--generations 1 --threads 2 --out " + (dir / "one").string());
+  ASSERT_EQ(one.status, 0) << one.output;
+  const Outcome on = esc("run --resume " + (dir / "one").string() + " --generations 3 --threads 1");
+  ASSERT_EQ(on.status, 0) << on.output;
+  EXPECT_NE(on.output.find("carrying study tiny_study_fewer"), std::string::npos) << on.output;
+  EXPECT_EQ(slurp(dir / "one" / "summary.json"), slurp(dir / "three" / "summary.json"));
+  EXPECT_EQ(results_without_times(dir / "one"), results_without_times(dir / "three"));
+  const Outcome again = esc("run --resume " + (dir / "one").string());
+  EXPECT_NE(again.output.find("is complete"), std::string::npos) << again.output;
+  const Outcome shorter = esc("run --resume " + (dir / "one").string() + " --generations 2");
+  EXPECT_EQ(shorter.status, 1) << shorter.output;
 }
 
 TEST(CarryOn, AnExtensionKilledHalfwayResumesBitIdentical) {
