@@ -6,6 +6,7 @@
 
 #include "cli/load.hpp"
 #include "compiler/names.hpp"
+#include "runtime/store/seed_json.hpp"
 
 namespace esc::cli {
 
@@ -65,7 +66,7 @@ std::optional<std::vector<std::pair<std::string, std::string>>> override_setting
   std::vector<std::pair<std::string, std::string>> settings;
   if (o.runs) settings.emplace_back("runs", std::to_string(*o.runs));
   if (o.generations) settings.emplace_back("generations", std::to_string(*o.generations));
-  if (o.seed) settings.emplace_back("seed", std::to_string(*o.seed));
+  if (o.seed) settings.emplace_back("seed", seed_text(*o.seed));
   for (const std::string& kv : o.settings) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {
@@ -97,11 +98,11 @@ RunOptions stored_overrides(const store::StoredExperiment& stored, const std::fi
     const auto& ov = stored.overrides;
     if (ov.contains("runs")) o.runs = ov["runs"].get<int>();
     if (ov.contains("generations")) o.generations = ov["generations"].get<int>();
-    if (ov.contains("seed")) o.seed = ov["seed"].get<std::uint64_t>();
+    if (ov.contains("seed")) o.seed = store::seed_from_json(ov["seed"]);
     if (ov.contains("set")) o.settings = ov["set"].get<std::vector<std::string>>();
     if (ov.contains("controllers")) o.controllers = ov["controllers"].get<std::vector<std::string>>();
     if (ov.contains("cache")) o.cache = ov["cache"].get<std::string>();
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {   // JSON errors, a seed that is not one
     throw store::StoreError(fmt::format("{} is damaged: unreadable command-line settings ({})", dir.string(), e.what()));
   }
   return o;

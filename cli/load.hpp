@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "compiler/compiler.hpp"
+#include "compiler/text.hpp"
 
 namespace esc::cli {
 
@@ -26,7 +27,7 @@ void say(fmt::format_string<Args...> format, Args&&... args) {
 
 template <typename... Args>
 void complain(fmt::format_string<Args...> format, Args&&... args) {
-  if (!follower_rank()) fmt::print(stderr, format, std::forward<Args>(args)...);
+  if (!follower_rank()) fmt::print(stderr, "{}", compiler::shorten_names(fmt::format(format, std::forward<Args>(args)...)));
 }
 
 // Compiles `file`, prints its diagnostics (colored on a terminal) to stderr (rank 0 only),

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/unknown_arguments.hpp"
 #include "cli/version.hpp"
+#include "runtime/core/seed_text.hpp"
 #include "runtime/dist/mpi_session.hpp"
 
 int main(int argc, char** argv) {
@@ -26,6 +27,12 @@ int main(int argc, char** argv) {
   // Ranges with bounds a person can read in the error message.
   const CLI::Range kAtLeastOne(1, 1'000'000'000, "at least 1");
   const CLI::Range kThreads(0, 4096, "0 (all cores) to 4096");
+  // A seed is read digit by digit (seed_text.hpp): CLI11 alone wraps `-1` to 2^64 - 1.
+  const CLI::Validator kSeed(
+      [](const std::string& text) {
+        return esc::parse_seed(text) ? std::string() : fmt::format("a seed is {}, found `{}`", esc::kSeedRange, text);
+      },
+      "SEED");
   CLI::App app{"esc: evolutionary robotics experiments written as scripts"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text());
@@ -44,7 +51,7 @@ int main(int argc, char** argv) {
                       "experiment or study to run (default: the first declared in the file)");
   run_cmd->add_option("--runs", run.runs, "independent runs per controller")->check(kAtLeastOne);
   run_cmd->add_option("--generations", run.generations, "generations per run")->check(kAtLeastOne);
-  run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)");
+  run_cmd->add_option("--seed", run.seed, "master seed (every random stream derives from it)")->check(kSeed);
   run_cmd->add_option("--threads", run.threads, "worker threads (default: all cores)")->check(kThreads);
   run_cmd->add_option("--runs-at-once", run.runs_at_once,
                       "runs advancing together, their evaluations pooled (default: enough to keep every worker "
@@ -93,7 +100,8 @@ int main(int argc, char** argv) {
                          "evaluate in an experiment of this script instead of the stored one (another arena, robot "
                          "or fitness)");
   replay_cmd->add_option("--experiment", replay.experiment, "experiment of --script (default: its first)");
-  replay_cmd->add_option("--seed", replay.seed, "evaluation seed (default: that of the stored best evaluation)");
+  replay_cmd->add_option("--seed", replay.seed, "evaluation seed (default: that of the stored best evaluation)")
+      ->check(kSeed);
   replay_cmd->add_flag("--animate", replay.animate,
                        "also write an animation: MP4 with ffmpeg, else GIF with ImageMagick's convert");
 

@@ -24,6 +24,7 @@
 #include "runtime/report/trajectory_csv.hpp"
 #include "runtime/report/trajectory_svg.hpp"
 #include "runtime/store/run_directory.hpp"
+#include "runtime/store/seed_json.hpp"
 
 namespace esc::cli {
 
@@ -136,14 +137,14 @@ std::optional<Subject> genome_subject(const fs::path& file, const ReplayOptions&
     s.genome = j.at("genome").get<std::vector<double>>();
     s.fitness = j.at("fitness").get<double>();
     if (o.seed) s.seed = *o.seed;
-    else if (j.contains("evaluation_seed")) s.seed = j["evaluation_seed"].get<std::uint64_t>();
+    else if (j.contains("evaluation_seed")) s.seed = store::seed_from_json(j["evaluation_seed"]);
     else {
       complain("esc: error: {} does not say its evaluation's seed (written by an older esc): give --seed\n",
                file.string());
       return std::nullopt;
     }
     return s;
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {   // JSON errors, a seed that is not one
     complain("esc: error: {} is not a genome file of esc run ({})\n", file.string(), e.what());
     return std::nullopt;
   }

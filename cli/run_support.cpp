@@ -11,6 +11,7 @@
 #include "cli/progress.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
+#include "runtime/store/seed_json.hpp"
 
 namespace esc::cli {
 
@@ -31,7 +32,7 @@ nlohmann::ordered_json overrides_json(const RunOptions& o) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   if (o.runs) j["runs"] = *o.runs;
   if (o.generations) j["generations"] = *o.generations;
-  if (o.seed) j["seed"] = *o.seed;
+  if (o.seed) j["seed"] = store::seed_json(*o.seed);
   j["set"] = o.settings;
   if (!o.controllers.empty()) j["controllers"] = o.controllers;
   // Where dependencies were run or reused, so that a resume finds them again.

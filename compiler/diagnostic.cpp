@@ -95,11 +95,12 @@ std::string snippet(const SourceRange& r, const SourceMap& sources, const Style&
 std::string render(const Diagnostic& d, const SourceMap& sources, bool color) {
   const Style st{color};
   std::string out = st.bold(location(d.where) + ":") + " " + st.color(severity_color(d.severity), std::string(severity_name(d.severity)) + ":") +
-                    " " + st.bold(d.message) + "\n";
+                    " " + st.bold(shorten_names(d.message)) + "\n";
   out += snippet(d.where, sources, st, d.severity);
-  for (const std::string& h : d.help) out += st.color("32", "help:") + " " + h + "\n";
+  for (const std::string& h : d.help) out += st.color("32", "help:") + " " + shorten_names(h) + "\n";
   for (const auto& [where, text] : d.notes) {
-    out += st.bold(location(where) + ":") + " " + st.color(severity_color(Severity::Note), "note:") + " " + text + "\n";
+    out += st.bold(location(where) + ":") + " " + st.color(severity_color(Severity::Note), "note:") + " " +
+           shorten_names(text) + "\n";
     out += snippet(where, sources, st, Severity::Note);
   }
   return out;

@@ -1,5 +1,7 @@
 #include "compiler/es_options.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "compiler/quantities.hpp"
@@ -26,6 +28,13 @@ std::string choice(const EsOption& o, const S& s) {
 bool read_bounds(const EsOption& o, S& s, const ast::Value& v, Sink& sink) {
   const auto r = read_range(v, o.key, "[-1, 1]", sink);
   if (!r) return false;
+  if (std::abs(r->first) > evo::kMaxGeneBound || std::abs(r->second) > evo::kMaxGeneBound) {
+    sink.error(v.where, fmt::format("bounds must lie within [-{0}, {0}], found [{1}, {2}]", number_text(evo::kMaxGeneBound),
+                                    number_text(r->first), number_text(r->second)))
+        .help.push_back("beyond that the ES's steps and the networks' sums lose their precision and can overflow; "
+                        "scale the inputs instead");
+    return false;
+  }
   if (!(r->first < r->second)) {
     sink.error(v.where, fmt::format("empty bounds: the lower bound ({}) must be below the upper ({})",
                                     number_text(r->first), number_text(r->second)));
@@ -65,10 +74,10 @@ const std::vector<EsOption>& es_options() {
        &read_choice<StepSizes, &S::step_sizes>,
        &choice<StepSizes, &S::step_sizes>,
        {"one_sigma", "self_adaptive"}},
-      {"bounds", Shape::Range, "genes stay in [LO, HI] (LO < HI)", &read_bounds, &bounds},
-      {"sigma", Shape::Value, "initial step size, a fraction of HI - LO (> 0)",
-       &read_real<S, &S::initial_sigma, RealRange::Positive>, &real_text<S, &S::initial_sigma>},
-      {"min_sigma", Shape::Value, "floor of the step sizes (>= 0)",
+      {"bounds", Shape::Range, "genes stay in [LO, HI] (LO < HI, both within +-1e6)", &read_bounds, &bounds},
+      {"sigma", Shape::Value, "initial step size, a fraction of HI - LO (> 0, at most 1000)",
+       &read_real<S, &S::initial_sigma, RealRange::Positive, evo::kMaxStepSize>, &real_text<S, &S::initial_sigma>},
+      {"min_sigma", Shape::Value, "floor of the step sizes (>= 0, at most HI - LO)",
        &read_real<S, &S::min_sigma, RealRange::NonNegative>, &real_text<S, &S::min_sigma>},
       {"generations",
        Shape::Value,
@@ -85,6 +94,10 @@ std::optional<EsProblem> es_problem(const S& s) {
   if (s.selection == evo::Selection::Comma && s.lambda < s.mu)
     return EsProblem{fmt::format("comma selection needs `lambda` >= `mu`, found mu {} and lambda {}", s.mu, s.lambda),
                      "raise `lambda`, or use `plus` selection"};
+  if (s.min_sigma > s.upper - s.lower)
+    return EsProblem{fmt::format("`min_sigma` ({}) is wider than the bounds (HI - LO = {})", number_text(s.min_sigma),
+                                 number_text(s.upper - s.lower)),
+                     "every step would cross the whole interval: lower `min_sigma`"};
   return std::nullopt;
 }
 

@@ -35,11 +35,10 @@ const std::vector<ExperimentSetting>& experiment_settings() {
        &read_positive<&X::steps>, &count_text<&X::steps>},
       {"runs", "independent runs of each compared controller",
        &read_positive<&X::runs>, &count_text<&X::runs>},
-      {"seed", "the master seed every run's streams derive from (0 .. 2^53)",
+      {"seed", "the master seed every run's streams derive from (0 .. 2^64 - 1)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
-         // Read through a double, so at most 2^53, where every whole number is exact.
-         const auto n = read_count(v, r.key, 0, 1LL << 53, k);
-         if (n) x.seed = static_cast<std::uint64_t>(*n);
+         const auto n = read_seed(v, r.key, k);
+         if (n) x.seed = *n;
          return n.has_value();
        },
        [](const X& x) { return std::to_string(x.seed); }},

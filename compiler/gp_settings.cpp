@@ -81,8 +81,8 @@ const std::vector<GpOption>& gp_options() {
        &read_whole<S, &S::mutation_depth, 1>, &whole_text<S, &S::mutation_depth>},
       {"internal_bias", Shape::Value, "crossover picks an internal node this often", probability<&S::internal_bias>,
        &real_text<S, &S::internal_bias>},
-      {"erc_sigma", Shape::Value, "point mutation moves an ERC by N(0, X (HI - LO))",
-       &read_real<S, &S::erc_sigma, RealRange::NonNegative>, &real_text<S, &S::erc_sigma>},
+      {"erc_sigma", Shape::Value, "point mutation moves an ERC by N(0, X (HI - LO)) (at most 1000)",
+       &read_real<S, &S::erc_sigma, RealRange::NonNegative, S::kMaxErcSigma>, &real_text<S, &S::erc_sigma>},
   };
   return table;
 }

@@ -3,6 +3,7 @@
 #include "compiler/lower_primitives.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <memory>
 #include <stdexcept>
@@ -126,6 +127,12 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
       if (!(*lo < *hi)) {
         sink_.error(t.where, fmt::format("empty range: `erc({}, {})` needs its first bound below the second",
                                          number_text(*lo), number_text(*hi)));
+        continue;
+      }
+      if (std::abs(*lo) > gp::prim::kMaxErcBound || std::abs(*hi) > gp::prim::kMaxErcBound) {
+        sink_.error(t.where, fmt::format("`erc({0}, {1})` must lie within [-{2}, {2}]", number_text(*lo), number_text(*hi),
+                                         number_text(gp::prim::kMaxErcBound)))
+            .help.push_back("beyond that the random constants' steps lose their precision and can overflow");
         continue;
       }
       list.items.push_back(gp::prim::erc(*lo, *hi));

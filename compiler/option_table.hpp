@@ -50,8 +50,9 @@ std::string whole_text(const OptionRow<Settings>&, const Settings& s) {
 // What a plain number must be.
 enum class RealRange { Probability, Positive, NonNegative };
 
-// A plain number in its range into a double field; its text.
-template <class Settings, double Settings::*Field, RealRange R>
+// A plain number in its range, and at most Max (the algorithm's limit that keeps its
+// arithmetic finite), into a double field; its text.
+template <class Settings, double Settings::*Field, RealRange R, double Max = std::numeric_limits<double>::max()>
 bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
   const auto x = read_quantity(v, o.key, Dim::None, sink);
   if (!x) return false;
@@ -64,6 +65,10 @@ bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, S
                                     : R == RealRange::Positive  ? "must be greater than 0"
                                                                 : "must be at least 0",
                                     number_text(*x)));
+    return false;
+  }
+  if (*x > Max) {
+    sink.error(v.where, fmt::format("`{}` must be at most {}, found {}", o.key, number_text(Max), number_text(*x)));
     return false;
   }
   s.*Field = *x;

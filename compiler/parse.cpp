@@ -812,6 +812,16 @@ ast::Module parse_module(const CleanText& text, const std::filesystem::path& fil
     tokens.seek(0);
     listener.set_tokens(&tokens);
 
+    for (antlr4::Token* t : tokens.getTokens())
+      if (t->getType() == P::UNTERMINATED_COMMENT) {
+        SourceRange opening = token_range(file, t);
+        opening.length = 2;
+        sink.error(opening, "unterminated comment: `/*` has no closing `*/`")
+            .help.push_back("close the comment with `*/`; everything after `/*` was read as a comment");
+        m.syntax_ok = false;
+        return m;
+      }
+
     if (const antlr4::Token* deep = too_deep(tokens)) {
       sink.error(token_range(file, deep),
                  "too deeply nested: more than " + std::to_string(kMaxNesting) +

@@ -143,8 +143,13 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
                                 number(p.found * 1000), number(p.limit * 1000)),
                     {}};
       if (c.robot != nullptr) {
-        const auto needed = static_cast<long long>(std::ceil(p.found * c.robot->physics_substeps / p.limit));
-        m.help.push_back(fmt::format("use `substeps {}` or more, or a lower `max_speed`", needed));
+        // In double: at an absurd speed the count overflows any integer.
+        const double needed = std::ceil(p.found * c.robot->physics_substeps / p.limit);
+        if (needed <= sim::kMaxPhysicsSubsteps)
+          m.help.push_back(fmt::format("use `substeps {}` or more, or a lower `max_speed`", needed));
+        else
+          m.help.push_back(fmt::format("no `substeps` up to {} is enough: lower `max_speed` or `control_step`",
+                                       sim::kMaxPhysicsSubsteps));
       }
       return m;
     }

@@ -11,6 +11,7 @@
 #include "compiler/robot_settings.hpp"
 #include "compiler/rule_messages.hpp"
 #include "compiler/setting_values.hpp"
+#include "compiler/text.hpp"
 #include "runtime/sim/validate.hpp"
 
 namespace esc::compiler {
@@ -160,7 +161,7 @@ std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key
                                   "`off`, a word, or a range `[-1, 1]`",
                                   name.text, trimmed(value)));
   }
-  if (sink.errors() != 0) return flattened(sink.items());
+  if (sink.errors() != 0) return shorten_names(flattened(sink.items()));
   resolve_settings(spec);
   experiment = std::move(spec);
   return {};

@@ -1,11 +1,13 @@
 #include "compiler/setting_values.hpp"
 
 #include <cctype>
+#include <cmath>
 
 #include <fmt/format.h>
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
+#include "runtime/core/seed_text.hpp"
 
 namespace esc::compiler {
 
@@ -92,6 +94,17 @@ std::optional<long long> read_count(const ast::Value& v, std::string_view name, 
     return std::nullopt;
   }
   return to_whole(v.q, fmt::format("`{}`", name), min, max, sink);
+}
+
+std::optional<std::uint64_t> read_seed(const ast::Value& v, std::string_view name, Sink& sink) {
+  if (v.kind == ast::Value::Kind::Quantity && v.q.unit.empty())
+    if (const auto s = parse_seed(v.q.text)) return s;
+  const bool digits = v.kind == ast::Value::Kind::Quantity && v.q.text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits && v.kind == ast::Value::Kind::Quantity && v.q.unit.empty() && v.q.finite && v.q.value >= 0.0 &&
+      v.q.value <= 0x1p53 && v.q.value == std::floor(v.q.value))
+    return static_cast<std::uint64_t>(v.q.value);
+  sink.error(v.where, fmt::format("`{}` is {}, found {}", name, kSeedRange, shown(v)));
+  return std::nullopt;
 }
 
 std::optional<double> read_quantity(const ast::Value& v, std::string_view name, Dim dim, Sink& sink) {

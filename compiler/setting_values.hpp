@@ -3,6 +3,7 @@
 // a count, a quantity of a dimension, a flag, a word among choices, a range. Scripts and
 // `esc run --set KEY=VALUE` read values through these functions, so both accept the same
 // spellings and give the same messages, located at the value.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,9 @@ namespace esc::compiler {
 // A whole number without a unit in [min, max]; `name` is the setting (`epochs`).
 [[nodiscard]] std::optional<long long> read_count(const ast::Value& v, std::string_view name, long long min,
                                                   long long max, Sink& sink);
+// A seed: a whole number from 0 to 2^64 - 1 read from its digits (a double would round it
+// above 2^53). A whole number written otherwise (`1e3`) is read as before, up to 2^53.
+[[nodiscard]] std::optional<std::uint64_t> read_seed(const ast::Value& v, std::string_view name, Sink& sink);
 // A quantity of dimension `dim` (Dim::None: a plain number), in SI.
 [[nodiscard]] std::optional<double> read_quantity(const ast::Value& v, std::string_view name, Dim dim, Sink& sink);
 // `on`/`true` or `off`/`false`.

@@ -5,6 +5,8 @@
 #include <set>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "compiler/names.hpp"
 #include "compiler/text.hpp"
 #include "grammar/EscLexer.h"
@@ -73,10 +75,46 @@ struct Expected {
   std::string closer_text;
 };
 
-Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocabulary& v) {
+// "a, b or c".
+std::string listed(const std::vector<std::string>& items) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) s += (i + 1 == items.size()) ? " or " : ", ";
+    s += items[i];
+  }
+  return s;
+}
+
+// What the loop of rule `rule` reads, item by item, each starting with a keyword; empty for
+// the other rules. The keywords themselves come from the parser's expected set, so a
+// keyword added to the grammar appears in every message without an edit here.
+std::string_view items_of(std::size_t rule) {
+  switch (rule) {
+    case EscParser::RuleScript: return "a declaration";
+    case EscParser::RuleArenaDecl: return "an arena item";
+    case EscParser::RuleFitnessDecl: return "a fitness item";
+    case EscParser::RuleExperimentDecl: return "an experiment item";
+    case EscParser::RuleLibraryDecl: return "a library member";
+    case EscParser::RulePrimitivesDecl: return "a primitives item";
+    case EscParser::RuleStudyDecl: return "a study item";
+    default: return {};
+  }
+}
+
+bool is_binary_operator(std::size_t t) {
+  switch (t) {
+    case EscParser::CARET: case EscParser::STAR: case EscParser::SLASH: case EscParser::PLUS: case EscParser::MINUS:
+    case EscParser::LT: case EscParser::LE: case EscParser::GT: case EscParser::GE: case EscParser::EQ:
+    case EscParser::NE: case EscParser::AND: case EscParser::OR: return true;
+    default: return false;
+  }
+}
+
+// `set`, the tokens the parser could take at an error in rule `rule`, in words: every
+// keyword of it, nothing cut.
+Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocabulary& v, std::size_t rule) {
   Expected e;
   auto has = [&](std::size_t t) { return set.contains(t); };
-  std::vector<std::string> items;
   const bool name = has(EscParser::ID);
   for (ssize_t raw : set.toList()) {
     if (raw < 0) continue;
@@ -88,36 +126,27 @@ Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocab
       e.closer = true;
     }
   }
-  if (has(EscParser::ARENA) && has(EscParser::EXPERIMENT) && has(EscParser::BEHAVIOR)) {
-    e.phrase = "a declaration (`import`, `arena`, `robot`, `behavior`, `fitness`, `controller`, "
-               "`experiment`, `primitives` or `study`)";
-    return e;
-  }
-  if (!name && has(EscParser::CONDITIONS) && has(EscParser::SWEEP)) {
-    e.phrase = "a study item (`conditions`, `condition`, `sweep`, `runs` or `seed`) or `}`";
-    return e;
-  }
-  if (!name && has(EscParser::EPOCHS) && has(EscParser::COMPARE)) {
-    e.phrase = "an experiment item (`arena`, `robot`, `fitness`, `epochs`, `steps`, `evolve`, "
-               "`runs`, `seed` or `compare`) or `}`";
-    return e;
-  }
-  if (!name && has(EscParser::CYLINDER) && has(EscParser::BLOCK)) {
-    e.phrase = "an arena item (`size`, `cylinder`, `block`, `start`, `light`, `zone`, `sweep_cell` or "
-               "`reach_radius`) or `}`";
-    return e;
-  }
   if (has(EscParser::NUMBER) && has(EscParser::LPAREN) && has(EscParser::NOT) && name) {
     e.phrase = "an expression";
     return e;
   }
+  if (const std::string_view kind = items_of(rule); !kind.empty() && !name && !e.words.empty()) {
+    std::vector<std::string> quoted;
+    for (const std::string& w : e.words) quoted.push_back("`" + w + "`");
+    e.phrase = fmt::format("{} ({})", kind, listed(quoted));
+    if (e.closer) e.phrase += " or `" + e.closer_text + "`";
+    return e;
+  }
+  std::vector<std::string> items;
+  const bool operators = has(EscParser::STAR) && has(EscParser::PLUS) && has(EscParser::AND);
+  if (operators) items.emplace_back("an operator");
   for (ssize_t raw : set.toList()) {
     if (raw < 0) {
       items.emplace_back("end of file");
       continue;
     }
     const auto t = static_cast<std::size_t>(raw);
-    if (name && is_soft_keyword(t)) continue;
+    if ((name && is_soft_keyword(t)) || (operators && is_binary_operator(t))) continue;
     switch (t) {
       case EscParser::ID: items.emplace_back("a name"); break;
       case EscParser::NUMBER: items.emplace_back("a number"); break;
@@ -130,14 +159,7 @@ Expected describe(const antlr4::misc::IntervalSet& set, const antlr4::dfa::Vocab
     }
   }
   if (items.empty()) items.emplace_back("something else");
-  if (items.size() > 8) {
-    items.resize(8);
-    items.emplace_back("...");
-  }
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) e.phrase += (i + 1 == items.size()) ? " or " : ", ";
-    e.phrase += items[i];
-  }
+  e.phrase = listed(items);
   return e;
 }
 
@@ -254,7 +276,8 @@ void SyntaxErrorListener::parser_error(antlr4::Parser* parser, antlr4::Token* of
     set = parser->getExpectedTokens();
   } catch (...) {
   }
-  const Expected ex = describe(set, parser->getVocabulary());
+  const std::size_t rule = parser->getContext() != nullptr ? parser->getContext()->getRuleIndex() : 0;
+  const Expected ex = describe(set, parser->getVocabulary(), rule);
 
   SourceRange where = token_range(file_, offending);
   const bool at_eof = offending->getType() == antlr4::Token::EOF;

@@ -1,5 +1,7 @@
 #include "compiler/text.hpp"
 
+#include <algorithm>
+
 namespace esc::compiler {
 
 namespace {
@@ -81,6 +83,49 @@ std::string_view line_of(std::string_view text, int line) noexcept {
   std::string_view s = text.substr(pos, end - pos);
   if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
   return s;
+}
+
+namespace {
+
+// The first `n` characters of valid UTF-8 `s`, as bytes.
+std::size_t bytes_of_first(std::string_view s, int n) noexcept {
+  std::size_t i = 0;
+  for (int k = 0; k < n && i < s.size(); ++k) {
+    ++i;
+    while (i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80) ++i;
+  }
+  return i;
+}
+
+}  // namespace
+
+std::string shorten_names(std::string_view text) {
+  constexpr int kHead = 40, kTail = 16;
+  std::string out;
+  out.reserve(std::min<std::size_t>(text.size(), 4096));
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t open = text.find('`', i);
+    const std::size_t close = open == std::string_view::npos ? open : text.find('`', open + 1);
+    if (close == std::string_view::npos) {
+      out += text.substr(i);
+      break;
+    }
+    const std::string_view name = text.substr(open + 1, close - open - 1);
+    out += text.substr(i, open + 1 - i);
+    const int length = utf8_length(name);
+    if (length <= kLongName) {
+      out += name;
+      out += '`';
+    } else {
+      out += name.substr(0, bytes_of_first(name, kHead));
+      out += "\xE2\x80\xA6";   // …
+      out += name.substr(bytes_of_first(name, length - kTail));
+      out += "` (" + std::to_string(length) + " characters)";
+    }
+    i = close + 1;
+  }
+  return out;
 }
 
 }  // namespace esc::compiler

@@ -23,6 +23,12 @@ struct CleanText {
 // Number of characters (code points) in valid UTF-8.
 [[nodiscard]] int utf8_length(std::string_view s) noexcept;
 
+// `text` with every backquoted name longer than kLongName characters shortened to its
+// start and end around `…`, followed by its length: "`abcdefgh…uvwxyz` (3000000
+// characters)". A message never echoes a pasted megabyte whole.
+inline constexpr int kLongName = 64;
+[[nodiscard]] std::string shorten_names(std::string_view text);
+
 // Line `line` (1-based) of `text`, without its line break; empty when out of range.
 [[nodiscard]] std::string_view line_of(std::string_view text, int line) noexcept;
 

@@ -292,4 +292,8 @@ STRING : '"' (~["\\\r\n] | '\\' ~[\r\n])* '"' ;
 
 LINE_COMMENT : '//' ~[\r\n]* -> skip ;
 BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
+// A `/*` with no `*/` after it: everything to the end of the file, no `*/` inside. Where a
+// `*/` follows, BLOCK_COMMENT is the longer match. The compiler reports it at the `/*`
+// (without it, the lexer read `/` and `*` and the parser said "found `/`").
+UNTERMINATED_COMMENT : '/*' ( ~'*' | '*'+ ~[*/] )* '*'* ;
 WS : [ \t\r\n\f]+ -> skip ;

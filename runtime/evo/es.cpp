@@ -44,13 +44,13 @@ EvolutionStrategy::EvolutionStrategy(const EsSettings& settings, std::size_t gen
   require(s_.selection != Selection::Comma || s_.lambda >= s_.mu,
           "lambda (" + std::to_string(s_.lambda) + ") must be at least mu (" +
               std::to_string(s_.mu) + ") for comma selection");
-  require(std::isfinite(s_.lower) && std::isfinite(s_.upper) && s_.lower < s_.upper,
-          "lower (" + std::to_string(s_.lower) + ") must be below upper (" +
-              std::to_string(s_.upper) + "), both finite");
-  require(std::isfinite(s_.initial_sigma) && s_.initial_sigma > 0.0,
-          "initial_sigma must be positive, got " + std::to_string(s_.initial_sigma));
-  require(std::isfinite(s_.min_sigma) && s_.min_sigma >= 0.0,
-          "min_sigma must be non-negative, got " + std::to_string(s_.min_sigma));
+  require(std::abs(s_.lower) <= kMaxGeneBound && std::abs(s_.upper) <= kMaxGeneBound && s_.lower < s_.upper,
+          "lower (" + std::to_string(s_.lower) + ") must be below upper (" + std::to_string(s_.upper) +
+              "), both within +-1e6");
+  require(s_.initial_sigma > 0.0 && s_.initial_sigma <= kMaxStepSize,
+          "initial_sigma must be in (0, 1000], got " + std::to_string(s_.initial_sigma));
+  require(s_.min_sigma >= 0.0 && s_.min_sigma <= s_.upper - s_.lower,
+          "min_sigma must be in [0, upper - lower], got " + std::to_string(s_.min_sigma));
   require(n_ >= 1, "genome_size must be at least 1, got 0");
   require(s_.generations >= 0,
           "generations must be non-negative, got " + std::to_string(s_.generations));
@@ -95,6 +95,7 @@ std::vector<Individual> EvolutionStrategy::breed(std::span<const Individual> par
   const double tau_global = 1.0 / std::sqrt(2.0 * n);         // tau'
   const double tau_local = 1.0 / std::sqrt(2.0 * std::sqrt(n));  // tau
   const double tau_one = 1.0 / std::sqrt(n);                  // tau0, one step size
+  const double max_sigma = kMaxStepSize * (s_.upper - s_.lower);
 
   const std::size_t mu = parents.size();
   std::vector<Individual> kids(static_cast<std::size_t>(s_.lambda));
@@ -140,12 +141,12 @@ std::vector<Individual> EvolutionStrategy::breed(std::span<const Individual> par
       const double global = tau_global * rng.normal();
       for (std::size_t i = 0; i < n_; ++i) {
         double& sigma = c.sigmas[i];
-        sigma = std::max(sigma * std::exp(global + tau_local * rng.normal()), s_.min_sigma);
+        sigma = std::clamp(sigma * std::exp(global + tau_local * rng.normal()), s_.min_sigma, max_sigma);
         c.genes[i] = reflect(c.genes[i] + sigma * rng.normal(), s_.lower, s_.upper);
       }
     } else {
       double& sigma = c.sigmas[0];
-      sigma = std::max(sigma * std::exp(tau_one * rng.normal()), s_.min_sigma);
+      sigma = std::clamp(sigma * std::exp(tau_one * rng.normal()), s_.min_sigma, max_sigma);
       for (double& g : c.genes) g = reflect(g + sigma * rng.normal(), s_.lower, s_.upper);
     }
   }

@@ -14,6 +14,15 @@
 
 namespace esc::evo {
 
+// Limits that keep every operation of the ES finite: genes within +-kMaxGeneBound, so
+// HI - LO <= 2e6, intermediate recombination, reflection (fmod over 2 (HI - LO)) and the
+// networks' weighted sums stay far from overflow; step sizes at most kMaxStepSize (HI - LO)
+// (a step of a few times HI - LO already folds back to about uniform, so more means
+// nothing), so a mutation moves a gene by at most about 1e11 and the geometric mean of two
+// step sizes cannot overflow.
+inline constexpr double kMaxGeneBound = 1e6;
+inline constexpr double kMaxStepSize = 1e3;
+
 enum class Selection { Comma, Plus };
 enum class Recombination { Intermediate, Discrete, None };
 enum class StepSizes { One, PerGene };
@@ -26,8 +35,9 @@ struct EsSettings {
   StepSizes step_sizes = StepSizes::PerGene;
   double lower = -1.0;
   double upper = 1.0;
-  double initial_sigma = 0.1;   // as a fraction of (upper - lower)
-  double min_sigma = 1e-6;      // absolute floor, keeps self-adaptation from collapsing
+  double initial_sigma = 0.1;   // as a fraction of (upper - lower), at most kMaxStepSize
+  double min_sigma = 1e-6;      // absolute floor, keeps self-adaptation from collapsing;
+                                // at most upper - lower
   int generations = 250;
 };
 

@@ -12,6 +12,7 @@
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/study_table.hpp"
 #include "runtime/sim/ir_sensor.hpp"
+#include "runtime/store/seed_json.hpp"
 
 extern const unsigned char esc_embed_chartjs[];
 extern const std::size_t esc_embed_chartjs_size;
@@ -73,7 +74,7 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
     epoch_zones.push_back(std::move(zones));
   }
   return {{"run", c.replay->run + 1},
-          {"seed", std::to_string(c.replay->seed)},
+          {"seed", store::seed_json(c.replay->seed)},
           {"fitness", c.replay->fitness},
           {"total_steps", steps.size()},
           {"total_epochs", epochs},
@@ -192,7 +193,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
   for (const Comparison& c : compare(finals, all_pairs(finals.size())))
     pairs.push_back(pair_json(e.controllers[c.a].name, e.controllers[c.b].name, c));
   json j = {{"name", e.name},
-            {"seed", std::to_string(e.seed)},
+            {"seed", store::seed_json(e.seed)},
             {"status", e.status},
             {"created", e.created},
             {"software_version", e.software_version},
@@ -253,7 +254,7 @@ json study_json(const std::vector<const store::StoredExperiment*>& conditions) {
   }
   const store::StoredCondition& first = *conditions.front()->condition;
   return {{"name", first.study},
-          {"seed", std::to_string(first.study_seed)},
+          {"seed", store::seed_json(first.study_seed)},
           {"conditions", list},
           {"controllers", t.controllers},
           {"cells", cells},

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/store/seed_json.hpp"
+
 namespace esc::store {
 
 namespace {
@@ -24,7 +26,7 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
   json usage = json::object();
   for (std::size_t i = 0; i < r.action_usage.size(); ++i)
     usage[i < c.actions.size() ? c.actions[i] : fmt::format("action{}", i)] = r.action_usage[i];
-  json j = {{"run", r.run + 1}, {"seed", r.seed}, {"status", "finished"}, {"best_fitness", r.best_fitness},
+  json j = {{"run", r.run + 1}, {"seed", seed_json(r.seed)}, {"status", "finished"}, {"best_fitness", r.best_fitness},
             {"best_generation", r.best_generation}, {"best_index", r.best_index}, {"best_genome", r.best_genome}};
   if (!r.best_tree.empty()) j["best_tree"] = r.best_tree;
   j["behavior_usage"] = usage;
@@ -37,7 +39,7 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
 }
 
 json run_json(const eval::RunState& s) {
-  json j = {{"run", s.run + 1}, {"seed", s.seed}, {"status", "running"}};
+  json j = {{"run", s.run + 1}, {"seed", seed_json(s.seed)}, {"status", "running"}};
   if (s.has_best) {
     j["best_fitness"] = s.best_fitness;
     j["best_genome"] = s.best_genome;
@@ -75,7 +77,7 @@ json export_json(const std::vector<StoredDirectory>& directories) {
         for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;
         x.update({{"study", e.condition->study}, {"condition", e.condition->name}, {"condition_settings", settings}});
       }
-      x.update({{"seed", e.seed}, {"content_hash", e.content_hash}, {"status", e.status}, {"created", e.created},
+      x.update({{"seed", seed_json(e.seed)}, {"content_hash", e.content_hash}, {"status", e.status}, {"created", e.created},
                 {"software_version", e.software_version}, {"script", e.script.generic_string()},
                 {"overrides", e.overrides}, {"settings", json(e.settings)}, {"arena", e.arena}, {"runs", e.runs},
                 {"generations", e.generations}, {"epochs", e.epochs}, {"steps", e.steps}, {"sources", sources},

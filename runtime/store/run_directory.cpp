@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "runtime/store/seed_json.hpp"
 #include "runtime/store/summary_json.hpp"
 
 namespace esc::store {
@@ -61,7 +62,7 @@ nlohmann::ordered_json write_sources(const fs::path& dir, const std::vector<Sour
 nlohmann::ordered_json settings_json(const eval::ExperimentSpec& spec, const std::vector<SourceFile>& sources,
                                      const nlohmann::ordered_json& files) {
   return {{"experiment", spec.name},
-          {"seed", spec.seed},
+          {"seed", seed_json(spec.seed)},
           {"content_hash", campaign_hash(spec.name, sources)},
           {"sources", files},
           {"settings", nlohmann::ordered_json(spec.resolved_settings)}};
@@ -193,14 +194,14 @@ void RunDirectory::write_best(const std::string& controller, const std::string& 
   nlohmann::ordered_json best = {{"controller", controller},
                                  {"architecture", architecture},
                                  {"run", run.run + 1},
-                                 {"seed", run.seed},
+                                 {"seed", seed_json(run.seed)},
                                  {"fitness", run.best_fitness},
                                  // Where the best evaluation happened, which fixes its seed: `esc replay`
                                  // re-simulates it from this file alone.
                                  {"generation", run.best_generation},
                                  {"individual", run.best_index},
-                                 {"evaluation_seed", eval::evaluation_seed(run.seed, run.best_generation,
-                                                                           static_cast<std::size_t>(run.best_index))},
+                                 {"evaluation_seed", seed_json(eval::evaluation_seed(run.seed, run.best_generation,
+                                                                                     static_cast<std::size_t>(run.best_index)))},
                                  {"genome", run.best_genome}};
   if (!run.best_tree.empty()) best["tree"] = run.best_tree;
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "runtime/store/seed_json.hpp"
+
 namespace esc::store {
 
 namespace fs = std::filesystem;
@@ -56,7 +58,7 @@ StudyDirectory::StudyDirectory(fs::path dir, const eval::StudySpec& study, const
                           {"settings", settings_object(c.settings)}});
   }
   const nlohmann::ordered_json doc = {
-      {"study", study.name}, {"seed", study.seed}, {"sources", files}, {"conditions", conditions}};
+      {"study", study.name}, {"seed", seed_json(study.seed)}, {"sources", files}, {"conditions", conditions}};
   write_atomically(dir_ / "settings.json", doc.dump(2) + "\n");
 }
 

@@ -1,5 +1,7 @@
 #include "runtime/store/summary_json.hpp"
 
+#include "runtime/store/seed_json.hpp"
+
 namespace esc::store {
 
 namespace {
@@ -58,7 +60,7 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
         mean.push_back(g.mean);
         sd.push_back(g.sd);
       }
-      nlohmann::ordered_json run = {{"run", r.run + 1}, {"seed", r.seed}, {"best_fitness", r.best_fitness},
+      nlohmann::ordered_json run = {{"run", r.run + 1}, {"seed", seed_json(r.seed)}, {"best_fitness", r.best_fitness},
                                     {"best", best}, {"mean", mean}, {"sd", sd}};
       if (!r.best_tree.empty()) run["best_tree"] = r.best_tree;   // tree controllers, as script code
       // Steps per action or behavior in the run's best evaluation (symbolic heads, supervisors).
@@ -74,7 +76,7 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
     controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"runs", runs}};
   }
-  return {{"experiment", result.experiment}, {"seed", result.seed}, {"controllers", controllers}};
+  return {{"experiment", result.experiment}, {"seed", seed_json(result.seed)}, {"controllers", controllers}};
 }
 
 nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_t seed,
@@ -88,7 +90,7 @@ nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_
                     {"settings", settings},
                     {"controllers", summary_json(c.result)["controllers"]}});
   }
-  return {{"study", study}, {"seed", seed}, {"conditions", list}};
+  return {{"study", study}, {"seed", seed_json(seed)}, {"conditions", list}};
 }
 
 }  // namespace esc::store

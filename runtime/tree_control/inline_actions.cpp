@@ -1,6 +1,5 @@
 #include "runtime/tree_control/inline_actions.hpp"
 
-#include <limits>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -57,7 +56,9 @@ class Inliner {
  public:
   Inliner(const Tree& tree, const PrimitiveSet& set, std::span<const control::Behavior> actions)
       : t_(tree), set_(set), actions_(actions), prims_(set.primitives().begin(), set.primitives().end()) {
-    constant_ = add(prim::erc(-std::numeric_limits<double>::max(), std::numeric_limits<double>::max()));
+    // Holds the behaviors' constants, any finite value: never drawn, so its range is only
+    // the one any random constant must have.
+    constant_ = add(prim::erc(-prim::kMaxErcBound, prim::kMaxErcBound));
     wheels_ = add(prim::wheels());
     if_wheels_ = add(prim::if_then_else(Type::Wheels));
     not_zero_ = function(Op::Ne, Type::Bool);

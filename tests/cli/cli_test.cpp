@@ -58,7 +58,7 @@ TEST(Cli, RunWritesResultsAndNeverOverwritesThem) {
   EXPECT_NE(o.output.find("behavior usage"), std::string::npos) << o.output;
   const auto s = read_json(out / "summary.json");
   EXPECT_EQ(s["experiment"], "tiny");
-  EXPECT_EQ(s["seed"], 3);
+  EXPECT_EQ(s["seed"], "3");   // seeds are strings in JSON (exact beyond 2^53)
   for (const char* name : {"CC", "SC"}) {
     const auto& runs = s["controllers"][name]["runs"];
     ASSERT_EQ(runs.size(), 2U) << name;

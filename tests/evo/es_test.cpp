@@ -228,7 +228,7 @@ TEST(Es, GenesStayInBoundsWithHugeSteps) {
     s.step_sizes = ss;
     s.lower = -1.0;
     s.upper = 1.0;
-    s.initial_sigma = 1e6;
+    s.initial_sigma = kMaxStepSize;   // the largest allowed
     const EvolutionStrategy es(s, 20);
     Rng rng(77);
     std::vector<Individual> parents = es.initial(rng);
@@ -242,12 +242,28 @@ TEST(Es, GenesStayInBoundsWithHugeSteps) {
           ASSERT_LE(x, 1.0);
           if (std::abs(x) == 1.0) ++edge_hits;
         }
+        for (double sigma : k.sigmas) ASSERT_LE(sigma, kMaxStepSize * 2.0);   // capped at 1000 (HI - LO)
         k.fitness = rng.uniform();  // selection that keeps sigmas huge
       }
       parents = es.select(parents, kids);
     }
     EXPECT_LT(edge_hits, 10) << "reflection must not pile genes up on the bounds";
   }
+}
+
+TEST(Es, RefusesBoundsAndStepSizesWhoseArithmeticCouldOverflow) {
+  EsSettings s;
+  s.lower = -1e308;
+  s.upper = 1e308;   // HI - LO is infinite: genes would be NaN
+  EXPECT_THROW(EvolutionStrategy(s, 4), std::invalid_argument);
+  s.lower = -kMaxGeneBound;
+  s.upper = kMaxGeneBound;
+  EXPECT_NO_THROW(EvolutionStrategy(s, 4));
+  s.initial_sigma = kMaxStepSize * 1.5;
+  EXPECT_THROW(EvolutionStrategy(s, 4), std::invalid_argument);
+  s.initial_sigma = 0.1;
+  s.min_sigma = 3 * kMaxGeneBound;   // wider than the interval
+  EXPECT_THROW(EvolutionStrategy(s, 4), std::invalid_argument);
 }
 
 TEST(Es, StepsNeverFallBelowMinSigma) {

@@ -42,7 +42,7 @@ TEST(RunDirectory, WritesSettingsSourcesCsvGenomesAndSummary) {
 
   const auto settings = nlohmann::json::parse(slurp(dir / "settings.json"));
   EXPECT_EQ(settings["experiment"], "demo");
-  EXPECT_EQ(settings["seed"], 42);
+  EXPECT_EQ(settings["seed"], "42");
   EXPECT_EQ(settings["settings"]["epochs"], "10");
   EXPECT_EQ(slurp(dir / "sources" / "00-main.esc"), "experiment x {}");
   EXPECT_EQ(slurp(dir / "CC" / "run-01.csv"),
@@ -52,7 +52,7 @@ TEST(RunDirectory, WritesSettingsSourcesCsvGenomesAndSummary) {
   const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
   EXPECT_EQ(summary["experiment"], "demo");
   const auto& run = summary["controllers"]["CC"]["runs"][0];
-  EXPECT_EQ(run["seed"], 99);
+  EXPECT_EQ(run["seed"], "99");
   EXPECT_EQ(run["best_fitness"], 3.0);
   EXPECT_EQ(run["best"], (std::vector<double>{2.0, 3.0}));
   EXPECT_EQ(run["mean"], (std::vector<double>{1.0, 2.0}));

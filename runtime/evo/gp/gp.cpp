@@ -53,8 +53,8 @@ GeneticProgramming::GeneticProgramming(const GpSettings& settings, PrimitiveSet 
                       s_.init_min_depth, s_.init_max_depth, s_.max_depth));
   require(s_.mutation_depth >= 1,
           fmt::format("mutation_depth must be at least 1, got {}", s_.mutation_depth));
-  require(std::isfinite(s_.erc_sigma) && s_.erc_sigma >= 0.0,
-          fmt::format("erc_sigma must be non-negative, got {}", s_.erc_sigma));
+  require(s_.erc_sigma >= 0.0 && s_.erc_sigma <= GpSettings::kMaxErcSigma,
+          fmt::format("erc_sigma must be in [0, 1000], got {}", s_.erc_sigma));
 }
 
 std::vector<Individual> GeneticProgramming::initial(Rng& rng) const {

@@ -41,10 +41,12 @@ struct GpSettings {
   int init_max_depth = 6;
   int mutation_depth = 4;          // depth of the subtrees grown by subtree mutation
   double internal_bias = 0.9;      // crossover picks an internal node this often (Koza)
-  double erc_sigma = 0.1;          // point mutation of an ERC: N(0, erc_sigma * (hi - lo))
+  double erc_sigma = 0.1;          // point mutation of an ERC: N(0, erc_sigma * (hi - lo)); at
+                                   // most kMaxErcSigma (as the ES's kMaxStepSize)
 
   // Deepest trees the flat evaluator can run (its stack has FlatProgram::kMaxStack slots).
   static constexpr int kMaxDepthLimit = 40;
+  static constexpr double kMaxErcSigma = 1e3;
 };
 
 class GeneticProgramming {

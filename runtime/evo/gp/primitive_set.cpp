@@ -199,8 +199,8 @@ PrimitiveSet::PrimitiveSet(std::vector<Primitive> primitives, Type root)
         if (!std::isfinite(p.value)) fail("constant `" + p.name + "` is not finite");
         break;
       case Kind::Erc:
-        if (!(std::isfinite(p.lo) && std::isfinite(p.hi) && p.lo < p.hi))
-          fail(fmt::format("random constant range [{}, {}] must be finite and non-empty", p.lo, p.hi));
+        if (!(std::abs(p.lo) <= prim::kMaxErcBound && std::abs(p.hi) <= prim::kMaxErcBound && p.lo < p.hi))
+          fail(fmt::format("random constant range [{}, {}] must be non-empty and within +-1e6", p.lo, p.hi));
         if (p.arity != 0 || p.result != Type::Number) fail("a random constant is a Number terminal");
         break;
       case Kind::Action:

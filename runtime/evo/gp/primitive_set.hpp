@@ -73,6 +73,8 @@ namespace prim {
 // Every script observable, arrays expanded (speed, forward_speed, ..., ir[0] .. ir[7], ...).
 [[nodiscard]] std::vector<Primitive> all_observables();
 [[nodiscard]] Primitive constant(Type t, double value);  // Bool constants print true/false
+// LO and HI within +-kMaxErcBound: HI - LO and the point mutations' steps stay finite.
+inline constexpr double kMaxErcBound = 1e6;
 [[nodiscard]] Primitive erc(double lo, double hi);
 // Action `index` of the action list, printed `name(p1, ...)`, with `params` Number arguments
 // (0 .. expr::kMaxParams), which the controller stores in frame[slot::param + k].
