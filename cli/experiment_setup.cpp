@@ -6,6 +6,7 @@
 
 #include "cli/load.hpp"
 #include "compiler/names.hpp"
+#include "runtime/eval/memory_need.hpp"
 #include "runtime/store/seed_json.hpp"
 
 namespace esc::cli {
@@ -90,6 +91,15 @@ bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec, std::strin
     }
   }
   return ok;
+}
+
+bool fits_in_memory(const eval::ExperimentSpec& spec) {
+  const std::string problem = eval::memory_problem(spec, true, eval::memory_limit());
+  if (problem.empty()) return true;
+  complain("esc: error: {}\nhelp: lower lambda (or the GP population, max_size, runs, epochs x steps), or run on a "
+           "machine with more memory\n",
+           problem);
+  return false;
 }
 
 RunOptions stored_overrides(const store::StoredExperiment& stored, const std::filesystem::path& dir) {

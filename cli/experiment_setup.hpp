@@ -37,6 +37,10 @@ using Target = std::variant<std::monostate, eval::ExperimentSpec*, eval::StudySp
 // problem (after `where`: `condition `x`: `), returns false if any.
 bool apply_overrides(const RunOptions& o, eval::ExperimentSpec& spec, std::string_view where = {});
 
+// Whether the campaign of `spec` fits in this machine's memory (runtime/eval/memory_need.hpp);
+// prints what it needs and what there is when not. Asked before any directory is made.
+bool fits_in_memory(const eval::ExperimentSpec& spec);
+
 // The overrides a stored run started with (and its dependency cache), to apply again.
 // Throws store::StoreError when `dir`'s database holds them damaged.
 [[nodiscard]] RunOptions stored_overrides(const store::StoredExperiment& stored, const std::filesystem::path& dir);

@@ -33,6 +33,15 @@ int main(int argc, char** argv) {
         return esc::parse_seed(text) ? std::string() : fmt::format("a seed is {}, found `{}`", esc::kSeedRange, text);
       },
       "SEED");
+  // `--set KEY=VALUE` is command-line syntax (exit 2 when malformed); the value itself is the
+  // script's, checked with the experiment (exit 1 when refused).
+  const CLI::Validator kKeyValue(
+      [](const std::string& text) {
+        const auto eq = text.find('=');
+        return eq != std::string::npos && eq > 0 ? std::string()
+                                                 : fmt::format("--set expects KEY=VALUE, got `{}`", text);
+      },
+      "KEY=VALUE");
   CLI::App app{"esc: evolutionary robotics experiments written as scripts"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text());
@@ -66,7 +75,8 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   run_cmd->add_option("--set", run.settings, "override a setting, KEY=VALUE (e.g. epochs=2, robot.inertia=off); "
                                              "once per setting")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->check(kKeyValue);
 
   ExportOptions exp;
   auto* export_cmd = app.add_subcommand("export", "write run directories' results as one CSV or JSON table");

@@ -65,7 +65,23 @@ ProgressPrinter::ProgressPrinter(const eval::ExperimentSpec& spec, eval::Campaig
       generations_done_(already_done),
       start_(std::chrono::steady_clock::now()) {}
 
+void ProgressPrinter::round_progress(const eval::RoundProgress& p) {
+  next_->round_progress(p);
+  const double percent = 100.0 * static_cast<double>(p.done) / static_cast<double>(std::max<std::int64_t>(p.evaluations, 1));
+  const double rate = p.seconds > 0.0 ? static_cast<double>(p.done) / p.seconds : 0.0;
+  const std::string status = fmt::format("this generation: {}/{} evaluations ({:.1f}%), {:.0f} eval/s", p.done,
+                                         p.evaluations, percent, rate);
+  if (live_) {
+    redraw_status({" " + status});
+  } else if (p.seconds >= next_piped_progress_s_) {
+    next_piped_progress_s_ = p.seconds + kPipedProgressInterval_s;
+    fmt::print("  {}\n", status);
+  }
+  std::fflush(stdout);
+}
+
 void ProgressPrinter::round_evaluated(const eval::RoundStats& round) {
+  next_piped_progress_s_ = 0.0;
   next_->round_evaluated(round);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const auto done_here = done_here_ + static_cast<std::int64_t>(round.runs);
@@ -95,6 +111,12 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
                "{:>5.0f}k steps/s  ETA {}\n",
                controller.name, run + 1, spec_->runs, g.generation, last_generation, g.best, g.mean,
                evaluations_per_second_, steps_per_second_ / 1000.0, format_duration(eta_seconds_));
+  }
+  if (g.saturated > 0) {
+    // Shown on its own line, live or piped: a fitness term overflows (docs/language.md).
+    close();
+    fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}: {} of {} evaluations saturated at +-1e300\n", controller.name, run + 1,
+               spec_->runs, g.generation, g.saturated, g.evaluations);
   }
   std::fflush(stdout);
 }

@@ -23,6 +23,7 @@ class ProgressPrinter final : public eval::CampaignListener {
   ProgressPrinter(const eval::ExperimentSpec& spec, eval::CampaignListener& next, bool live,
                   std::int64_t already_done = 0);
 
+  void round_progress(const eval::RoundProgress& progress) override;
   void round_evaluated(const eval::RoundStats& round) override;
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
@@ -54,6 +55,9 @@ class ProgressPrinter final : public eval::CampaignListener {
   double evaluations_per_second_ = 0.0;
   double steps_per_second_ = 0.0;
   double eta_seconds_ = 0.0;
+  // Piped, a long round's progress is printed at most this often (the live line: always).
+  static constexpr double kPipedProgressInterval_s = 30.0;
+  double next_piped_progress_s_ = 0.0;
 };
 
 [[nodiscard]] std::string format_duration(double seconds);

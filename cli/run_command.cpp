@@ -54,7 +54,9 @@ int resume_command(const RunOptions& o) {
   eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
   // The settings it was launched with, for it and its dependencies.
   RunOptions replay = stored_overrides(stored, o.resume);
-  if (!apply_overrides(replay, spec) || !select_controllers(replay.controllers, spec)) return kExitBadInput;
+  if (!apply_overrides(replay, spec) || !select_controllers(replay.controllers, spec) ||
+      !fits_in_memory(spec))
+    return kExitBadInput;
   replay.threads = o.threads;
   replay.runs_at_once = o.runs_at_once;
   // As stored: with the generations a previous --generations carried it on to, if any.
@@ -111,7 +113,8 @@ int run_command(const RunOptions& o) {
   if (std::holds_alternative<eval::StudySpec*>(target)) return run_study(o, compiled, *std::get<eval::StudySpec*>(target));
   if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
   eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
-  if (!apply_overrides(o, spec) || !select_controllers(o.controllers, spec)) return kExitBadInput;
+  if (!apply_overrides(o, spec) || !select_controllers(o.controllers, spec) || !fits_in_memory(spec))
+    return kExitBadInput;
 
   const std::filesystem::path out = o.out.empty() ? default_out(spec.name) : o.out;
   if (!prepare_dependencies(spec, dependency_context(compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file)))

@@ -151,6 +151,7 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
   // where it went).
   const auto run = [](const eval::ExperimentSpec& d, const eval::CampaignOptions& options,
                       const std::function<store::RunDirectory()>& open, std::int64_t done) {
+    if (!fits_in_memory(d)) return kExitBadInput;
     std::optional<store::RunDirectory> dir;
     if (!open_on_rank0([&] { dir.emplace(open()); })) return kExitBadInput;
     const eval::CampaignResult result = campaign_on_all_ranks(d, options, dir ? &*dir : nullptr, done);

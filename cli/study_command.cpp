@@ -44,7 +44,8 @@ bool vary_nothing_given(const RunOptions& o, const eval::StudySpec& study) {
 bool apply_to_conditions(const RunOptions& o, eval::StudySpec& study) {
   for (eval::ConditionSpec& c : study.conditions) {
     const std::string where = fmt::format("condition `{}`: ", c.name);
-    if (!apply_overrides(o, c.experiment, where) || !select_controllers(o.controllers, c.experiment, where))
+    if (!apply_overrides(o, c.experiment, where) || !select_controllers(o.controllers, c.experiment, where) ||
+        !fits_in_memory(c.experiment))
       return false;
   }
   if (o.seed) study.seed = *o.seed;

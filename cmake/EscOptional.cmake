@@ -31,6 +31,31 @@ macro(esc_optional_program var doc)
   endif()
 endmacro()
 
+# ESC_WITH_FUZZ: the libFuzzer targets (tests/fuzz), found when a clang++ links a fuzz
+# target with -fsanitize=fuzzer,address,undefined (Debian: clang libclang-rt-14-dev). Sets
+# ESC_WITH_FUZZ_FOUND and ESC_WITH_FUZZ_CLANG.
+macro(esc_optional_fuzzer)
+  esc_optional_mode(ESC_WITH_FUZZ "Fuzz the compiler with libFuzzer (Debian: clang libclang-rt-14-dev)")
+  set(ESC_WITH_FUZZ_FOUND OFF)
+  if(NOT _esc_mode STREQUAL "OFF")
+    find_program(ESC_WITH_FUZZ_CLANG NAMES clang++ clang++-16 clang++-15 clang++-14)
+    if(ESC_WITH_FUZZ_CLANG)
+      set(_probe ${CMAKE_BINARY_DIR}/fuzz-probe)
+      file(WRITE ${_probe}/probe.cpp "#include <cstddef>\n#include <cstdint>\n"
+                 "extern \"C\" int LLVMFuzzerTestOneInput(const std::uint8_t*, std::size_t) { return 0; }\n")
+      execute_process(COMMAND ${ESC_WITH_FUZZ_CLANG} -fsanitize=fuzzer,address,undefined probe.cpp -o probe
+                      WORKING_DIRECTORY ${_probe} RESULT_VARIABLE _esc_rc OUTPUT_QUIET ERROR_QUIET)
+      if(_esc_rc EQUAL 0)
+        set(ESC_WITH_FUZZ_FOUND ON)
+      endif()
+    endif()
+    if(NOT ESC_WITH_FUZZ_FOUND AND _esc_mode STREQUAL "ON")
+      message(FATAL_ERROR "ESC_WITH_FUZZ is ON but no clang++ links with -fsanitize=fuzzer (Debian: clang "
+                          "libclang-rt-14-dev)")
+    endif()
+  endif()
+endmacro()
+
 # Declares the option and sets _esc_mode to AUTO, ON or OFF.
 macro(esc_optional_mode var doc)
   set(${var} AUTO CACHE STRING "${doc}: AUTO (when found), ON (required) or OFF")
@@ -58,6 +83,11 @@ function(esc_report_optional_parts)
   else()
     message(STATUS "  Google Benchmark (ESC_WITH_BENCHMARK) no: esc bench measures nothing, esc bench --campaign "
                    "still estimates (needs libbenchmark-dev)")
+  endif()
+  if(ESC_BUILD_TESTS AND ESC_WITH_FUZZ_FOUND)
+    message(STATUS "  fuzz targets (ESC_WITH_FUZZ)        yes: ctest fuzz.compile, fuzz.set (${ESC_WITH_FUZZ_CLANG})")
+  elseif(ESC_BUILD_TESTS)
+    message(STATUS "  fuzz targets (ESC_WITH_FUZZ)        no: needs clang and libclang-rt-14-dev")
   endif()
   if(NOT ESC_BUILD_TESTS)
     message(STATUS "  tests (ESC_BUILD_TESTS)             no")

@@ -3,12 +3,12 @@
 // experiments.
 #include "compiler/compiler.hpp"
 
+#include <array>
 #include <deque>
 #include <fstream>
 #include <functional>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -55,9 +55,17 @@ bool read_file(const fs::path& p, std::string& out, std::string& error) {
     error = "cannot be opened";
     return false;
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
+  // At most one byte past the limit, whatever the file claims: a device or a pipe
+  // (`import "/dev/zero"`) has no size and would be read forever.
+  out.clear();
+  std::array<char, 1 << 16> chunk{};
+  while (out.size() <= kMaxFileBytes && in.read(chunk.data(), chunk.size()).gcount() > 0)
+    out.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  if (out.size() > kMaxFileBytes) {
+    error = fmt::format("is too large (more than {} bytes; scripts are at most {} bytes)", kMaxFileBytes, kMaxFileBytes);
+    out.clear();
+    return false;
+  }
   return true;
 }
 

@@ -18,7 +18,8 @@ PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr
           libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev   # uuid-dev: the ANTLR runtime links -luuid
           libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
-          libgtest-dev python3 chromium)                                                       # tests
+          libgtest-dev python3 chromium                                                        # tests
+          clang libclang-rt-14-dev)                                                            # ESC_WITH_FUZZ
 
 install_missing() {
   local missing=()

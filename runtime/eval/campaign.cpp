@@ -1,9 +1,11 @@
 #include "runtime/eval/campaign.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <deque>
 #include <memory>
+#include <mutex>
 #include <numeric>
 
 #include <tbb/global_control.h>
@@ -30,6 +32,34 @@ struct Pool {
   }
 };
 
+// Tells the listener how far a long round has come, from whichever worker finishes an
+// evaluation when the interval has passed; the others go on without waiting.
+class RoundTicker {
+ public:
+  RoundTicker(CampaignListener& listener, std::size_t evaluations, Clock::time_point start)
+      : listener_(listener), evaluations_(static_cast<std::int64_t>(evaluations)), start_(start) {}
+
+  void one_done() {
+    const std::int64_t done = ++done_;
+    const Clock::time_point now = Clock::now();
+    if (now < next_.load(std::memory_order_relaxed)) return;
+    const std::unique_lock lock(mutex_, std::try_to_lock);
+    if (!lock.owns_lock() || now < next_.load(std::memory_order_relaxed)) return;
+    next_.store(now + kInterval, std::memory_order_relaxed);
+    listener_.round_progress({done, evaluations_, std::chrono::duration<double>(now - start_).count()});
+  }
+
+ private:
+  static constexpr auto kInterval =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kRoundProgressInterval_s));
+  CampaignListener& listener_;
+  std::int64_t evaluations_;
+  Clock::time_point start_;
+  std::atomic<std::int64_t> done_{0};
+  std::atomic<Clock::time_point> next_{start_ + kInterval};
+  std::mutex mutex_;
+};
+
 // One generation of every active run: breeds them, evaluates the pooled individuals on
 // every worker and rank, and hands each run its fitness and statistics.
 void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, CampaignListener& listener) {
@@ -42,6 +72,7 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
   }
   const std::size_t width = detail::kResultUsage + *std::max_element(choices.begin(), choices.end());
   std::vector<double> results(pool.size() * width, 0.0);
+  RoundTicker ticker(listener, pool.size(), start);
   ev.distribution.run(pool.size(), width, ev.threads, results, [&](std::size_t i) {
     const std::size_t j = pool.job_of(i);
     const RunJob& job = *active[j];
@@ -52,6 +83,7 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
     row[detail::kResultSteps] = static_cast<double>(e.steps);
     for (std::size_t c = 0; c < e.usage.size() && detail::kResultUsage + c < width; ++c)
       row[detail::kResultUsage + c] = static_cast<double>(e.usage[c]);
+    ticker.one_done();
   });
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::vector<double> fitness;

@@ -26,6 +26,13 @@ struct RoundStats {
   double seconds = 0.0;        // wall time
 };
 
+// How far the evaluation of a long round has come (lambda 1,000,000 takes a while).
+struct RoundProgress {
+  std::int64_t done = 0;       // evaluations finished in this process (under MPI: on this rank)
+  std::int64_t evaluations = 0;   // in the whole round, all ranks
+  double seconds = 0.0;        // since the round began
+};
+
 struct RunResult {
   int run = 0;                 // from 0
   std::uint64_t seed = 0;
@@ -63,13 +70,19 @@ struct CampaignResult {
   std::vector<ControllerResult> controllers;
 };
 
+inline constexpr double kRoundProgressInterval_s = 2.0;
+
 // Told about progress as the campaign goes; called from the thread that called
-// run_campaign, never concurrently. When several runs advance together, their events
+// run_campaign (round_progress excepted), never concurrently. When several runs advance together, their events
 // interleave: each run's own events come in order, and its run_done after its last
 // generation.
 class CampaignListener {
  public:
   virtual ~CampaignListener() = default;
+  // While a round's pool is evaluated, every kRoundProgressInterval_s once the round has
+  // taken that long: no effect on any result. The one event that comes from a worker
+  // thread; never concurrently with itself or another event.
+  virtual void round_progress(const RoundProgress& /*progress*/) {}
   // Once a round's pool is evaluated, before the generation_done of each of its runs.
   virtual void round_evaluated(const RoundStats& /*round*/) {}
   virtual void generation_done(const control::ControllerSpec& /*controller*/, int /*run*/,

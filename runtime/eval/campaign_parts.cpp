@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/eval/moments.hpp"
+#include "runtime/expr/program.hpp"
+
 
 namespace esc::eval::detail {
 
@@ -48,17 +51,14 @@ GenerationStats summarise(int generation, std::span<const double> fitness, std::
   g.evaluations = static_cast<std::int64_t>(fitness.size());
   g.steps = steps;
   g.seconds = seconds;
-  double sum = 0.0;
   g.best = fitness.front();
   for (const double f : fitness) {
-    sum += f;
     g.best = std::max(g.best, f);
+    if (std::abs(f) >= expr::kSaturation) ++g.saturated;
   }
-  const auto n = static_cast<double>(fitness.size());
-  g.mean = sum / n;
-  double sq = 0.0;
-  for (const double f : fitness) sq += (f - g.mean) * (f - g.mean);
-  g.sd = fitness.size() > 1 ? std::sqrt(sq / (n - 1.0)) : 0.0;
+  const Moments m = moments(fitness);
+  g.mean = m.mean;
+  g.sd = m.sd;
   return g;
 }
 

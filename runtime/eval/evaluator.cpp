@@ -15,6 +15,17 @@ namespace esc::eval {
 
 namespace {
 
+// The fitness sum saturates at +-kSaturation like the VM's operators (one constant term of
+// 1e308 over two steps would otherwise reach infinity), and a NaN, which no operator makes
+// (only a broken observable could), is the lowest fitness. Identical to a plain sum within
+// the limits. The generation's statistics count evaluations at the limit (`saturated`).
+double add_term(double sum, double term) noexcept {
+  const double s = sum + term;
+  if (std::isnan(s)) return -expr::kSaturation;
+  return std::clamp(s, -expr::kSaturation, expr::kSaturation);
+}
+
+
 bool any_stop(const FitnessSpec& f, const expr::Frame& frame) noexcept {
   for (const expr::Program& p : f.stop_when)
     if (p.eval(frame) != 0.0) return true;
@@ -121,7 +132,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
       world_.step(cmd.left, cmd.right);
       sense(rng);
       ++result.steps;
-      result.fitness += s.fitness.step.eval(frame);
+      result.fitness = add_term(result.fitness, s.fitness.step.eval(frame));
       if (trace != nullptr) [[unlikely]]
         report_step(*trace, epoch, step, world_, ir, light, cmd, ctl.last_action(), result.fitness);
       if (any_stop(s.fitness, frame) || world_.state().floor.energy_empty) break;

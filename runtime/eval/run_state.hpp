@@ -38,6 +38,9 @@ struct GenerationStats {
   // advanced with it (not part of the result proper).
   double seconds = 0.0;
   GenerationUsage usage{};
+  // Evaluations whose fitness reached the saturation limit, +-expr::kSaturation (beyond it,
+  // or NaN, which counts as the lowest): fitness terms that overflow.
+  std::int64_t saturated = 0;
 };
 
 // What the ES breeds the next generation from: the mu parents selected after the last

@@ -34,7 +34,7 @@ const char* name_of(Op op) noexcept {
 // Finite results for finite inputs: overflow saturates instead of reaching infinity.
 inline double finite(double v) noexcept {
   if (std::isnan(v)) return 0.0;
-  return std::clamp(v, -1e300, 1e300);
+  return std::clamp(v, -kSaturation, kSaturation);
 }
 
 }  // namespace

@@ -11,6 +11,10 @@
 
 namespace esc::expr {
 
+// Where overflow saturates: every arithmetic operator's result is clamped to +-kSaturation,
+// and an evaluation's fitness (a sum of step terms) saturates at the same value.
+inline constexpr double kSaturation = 1e300;
+
 enum class Op : std::uint8_t {
   Const,   // push value
   Load,    // push frame[slot]

@@ -10,6 +10,8 @@
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
+#include "runtime/eval/moments.hpp"
+
 namespace esc::report {
 
 namespace {
@@ -70,11 +72,9 @@ Summary summarise(std::span<const double> sample) {
   if (s.n == 0) return s;
   std::vector<double> v(sample.begin(), sample.end());
   std::sort(v.begin(), v.end());
-  const auto n = static_cast<double>(s.n);
-  s.mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
-  double sq = 0.0;
-  for (double x : v) sq += (x - s.mean) * (x - s.mean);
-  s.sd = s.n > 1 ? std::sqrt(sq / (n - 1.0)) : 0.0;
+  const eval::Moments m = eval::moments(v);
+  s.mean = m.mean;
+  s.sd = m.sd;
   s.median = median_of_sorted(v);
   s.min = v.front();
   s.max = v.back();

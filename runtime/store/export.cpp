@@ -14,7 +14,8 @@ json generations_json(const std::vector<eval::GenerationStats>& gens) {
   json a = json::array();
   for (const auto& g : gens) {
     a.push_back({{"generation", g.generation}, {"best", g.best}, {"mean", g.mean}, {"sd", g.sd},
-                 {"evaluations", g.evaluations}, {"steps", g.steps}, {"seconds", g.seconds}});
+                 {"evaluations", g.evaluations}, {"steps", g.steps}, {"seconds", g.seconds},
+                 {"saturated", g.saturated}});
     if (!g.usage.empty())
       a.back()["usage"] = {{"best_steps", g.usage.best}, {"mean_steps", g.usage.mean},
                            {"steps_total", g.usage.steps_total}};

@@ -88,6 +88,9 @@ CREATE TABLE generations (
   evaluations   INTEGER NOT NULL,
   steps         INTEGER NOT NULL,
   seconds       REAL NOT NULL,
+  -- Evaluations whose fitness saturated at +-1e300. Added within schema 2: an older
+  -- database gets the column (0) when opened for writing and reads as 0 otherwise.
+  saturated     INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run, generation)
 );
 CREATE TABLE run_state (
@@ -441,6 +444,11 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     if (!read_only) r.db_.exec("PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
     r.schema_version_ = static_cast<int>(version);
     if (!read_only && version < kSchemaVersion) r.upgrade();
+    r.has_saturated_ = r.column_exists("generations", "saturated");
+    if (!read_only && !r.has_saturated_) {
+      r.db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
+      r.has_saturated_ = true;
+    }
     auto ex = r.db_.prepare("SELECT id FROM experiments ORDER BY id LIMIT 1");
     if (!ex.step())
       throw StoreError(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
@@ -452,6 +460,13 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
   } catch (const sql::SqliteError& e) {
     throw StoreError(fmt::format("{} is damaged or not an esc database: {}", file.string(), e.what()));
   }
+}
+
+bool ResultsDb::column_exists(const std::string& table, const std::string& column) {
+  auto info = db_.prepare(fmt::format("PRAGMA table_info({})", table));
+  while (info.step())
+    if (info.text(1) == column) return true;
+  return false;
 }
 
 void ResultsDb::upgrade() {
@@ -485,10 +500,10 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   const eval::GenerationStats& g = st.generations.back();
   sql::Transaction tx(db_);
   db_.prepare(
-         "INSERT INTO generations(controller_id, run, generation, best, mean, sd, evaluations, steps, seconds) "
-         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)")
+         "INSERT INTO generations(controller_id, run, generation, best, mean, sd, evaluations, steps, seconds, "
+         "saturated) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
       .bind(1, cid).bind(2, st.run).bind(3, g.generation).bind(4, g.best).bind(5, g.mean).bind(6, g.sd)
-      .bind(7, g.evaluations).bind(8, g.steps).bind(9, g.seconds)
+      .bind(7, g.evaluations).bind(8, g.steps).bind(9, g.seconds).bind(10, g.saturated)
       .run();
   auto run = db_.prepare(
       "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
@@ -617,11 +632,12 @@ std::vector<StoredExperiment> ResultsDb::load() {
           const int run = runs.integer(0);
           std::vector<eval::GenerationStats> gens;
           auto g = db_.prepare(
-              "SELECT generation, best, mean, sd, evaluations, steps, seconds FROM generations "
-              "WHERE controller_id = ? AND run = ? ORDER BY generation");
+              fmt::format("SELECT generation, best, mean, sd, evaluations, steps, seconds, {} FROM generations "
+                          "WHERE controller_id = ? AND run = ? ORDER BY generation",
+                          has_saturated_ ? "saturated" : "0"));
           g.bind(1, c.id).bind(2, run);
           while (g.step())
-            gens.push_back({g.integer(0), g.real(1), g.real(2), g.real(3), g.int64(4), g.int64(5), g.real(6), {}});
+            gens.push_back({g.integer(0), g.real(1), g.real(2), g.real(3), g.int64(4), g.int64(5), g.real(6), {}, g.int64(7)});
           const auto done = static_cast<std::size_t>(runs.int64(3));
           bool contiguous = gens.size() == done;
           for (std::size_t i = 0; contiguous && i < gens.size(); ++i) contiguous = gens[i].generation == static_cast<int>(i);

@@ -185,8 +185,10 @@ class ResultsDb {
   // table holds it. Throws StoreError when neither does or the stored state is damaged.
   std::variant<eval::EsState, eval::GpState> load_state(const StoredController& c, int run);
   void upgrade();   // to kSchemaVersion
+  bool column_exists(const std::string& table, const std::string& column);
 
   int schema_version_ = kSchemaVersion;
+  bool has_saturated_ = true;   // generations.saturated (older schema-2 databases lack it)
 
   sql::Database db_;
   std::filesystem::path file_;

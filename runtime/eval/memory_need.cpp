@@ -1,0 +1,89 @@
+#include "runtime/eval/memory_need.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "runtime/eval/evaluator.hpp"
+#include "runtime/eval/run_state.hpp"
+
+namespace esc::eval {
+
+namespace {
+
+// One generation of one run of `c`, in doubles (sizes multiply beyond any integer type).
+double generation_bytes(const ExperimentSpec& spec, const control::ControllerSpec& c) {
+  const double evaluations = static_cast<double>(spec.evaluations_per_generation(c));
+  // The pooled results (fitness, steps) and the fitness handed to the run.
+  const double results = evaluations * 3.0 * sizeof(double);
+  if (c.is_tree() && spec.gp) {
+    // The evaluated generation and the one bred from it, every tree at most max_size nodes.
+    const double tree = sizeof(evo::gp::Individual) + static_cast<double>(spec.gp->max_size) * sizeof(evo::gp::Node);
+    return 2.0 * static_cast<double>(spec.gp->population) * tree + results;
+  }
+  const double genes = static_cast<double>(c.genome_size());
+  const double sigmas = spec.es.step_sizes == evo::StepSizes::PerGene ? genes : 1.0;
+  const double individual = sizeof(evo::Individual) + (genes + sigmas) * sizeof(double);
+  // Parents, offspring and the parents selected from them.
+  const double individuals = 2.0 * spec.es.mu + evaluations;
+  return individuals * individual + results;
+}
+
+// A number from a file such as /sys/fs/cgroup/memory.max ("max" when unlimited).
+double number_in(const char* path) {
+  std::ifstream in(path);
+  double v = 0.0;
+  return (in >> v) && v > 0.0 ? v : 0.0;
+}
+
+}  // namespace
+
+double memory_needed_bytes(const ExperimentSpec& spec, bool trace_best) {
+  double largest = 0.0;
+  double statistics = 0.0;
+  for (const control::ControllerSpec& c : spec.controllers) {
+    largest = std::max(largest, generation_bytes(spec, c));
+    statistics += static_cast<double>(spec.runs) * spec.generations_for(c) * sizeof(GenerationStats);
+  }
+  const double trace = trace_best ? static_cast<double>(spec.epochs) * spec.steps * sizeof(TraceStep) : 0.0;
+  return largest + statistics + trace;
+}
+
+MemoryLimit memory_limit() {
+  MemoryLimit m{static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE)),
+                "physical memory"};
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY && static_cast<double>(as.rlim_cur) < m.bytes)
+    m = {static_cast<double>(as.rlim_cur), "the address-space limit (ulimit -v)"};
+  for (const char* cgroup : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"})
+    if (const double v = number_in(cgroup); v > 0.0 && v < m.bytes) m = {v, "the container's memory limit (cgroup)"};
+  return m;
+}
+
+std::string memory_problem(const ExperimentSpec& spec, bool trace_best, const MemoryLimit& limit) {
+  const double need = memory_needed_bytes(spec, trace_best);
+  if (need <= limit.bytes) return {};
+  return fmt::format("experiment `{}` needs at least {} of memory at once (lambda {}, {} runs, {} epochs x {} steps{}); "
+                     "{} is {}",
+                     spec.name, bytes_text(need), spec.es.lambda, spec.runs, spec.epochs, spec.steps,
+                     spec.gp ? fmt::format(", GP population {} of up to {} nodes", spec.gp->population, spec.gp->max_size)
+                             : std::string(),
+                     limit.what, bytes_text(limit.bytes));
+}
+
+std::string bytes_text(double bytes) {
+  constexpr const char* kUnits[] = {"B", "kB", "MB", "GB", "TB", "PB", "EB"};
+  std::size_t u = 0;
+  while (bytes >= 1000.0 && u + 1 < std::size(kUnits)) {
+    bytes /= 1000.0;
+    ++u;
+  }
+  return u == 0 ? fmt::format("{:.0f} B", bytes) : fmt::format("{:.1f} {}", bytes, kUnits[u]);
+}
+
+}  // namespace esc::eval
