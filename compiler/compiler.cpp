@@ -202,6 +202,11 @@ class Driver {
         key = key_of(c);
         return true;
       }
+      // A device or a pipe: reading it could block or never end.
+      if (fs::exists(c, ec) && !fs::is_directory(c, ec)) {
+        sink_.error(imp.where, fmt::format("cannot import `{}`: it is not a regular file", c.string()));
+        return false;
+      }
     }
     std::string searched;
     for (const fs::path& c : candidates) searched += (searched.empty() ? "" : ", ") + c.string();

@@ -76,7 +76,7 @@ const std::vector<EsOption>& es_options() {
        {"one_sigma", "self_adaptive"}},
       {"bounds", Shape::Range, "genes stay in [LO, HI] (LO < HI, both within +-1e6)", &read_bounds, &bounds},
       {"sigma", Shape::Value, "initial step size, a fraction of HI - LO (> 0, at most 1000)",
-       &read_real<S, &S::initial_sigma, RealRange::Positive, evo::kMaxStepSize>, &real_text<S, &S::initial_sigma>},
+       &read_real<S, &S::initial_sigma, RealRange::Positive, &evo::kMaxStepSize>, &real_text<S, &S::initial_sigma>},
       {"min_sigma", Shape::Value, "floor of the step sizes (>= 0, at most HI - LO)",
        &read_real<S, &S::min_sigma, RealRange::NonNegative>, &real_text<S, &S::min_sigma>},
       {"generations",

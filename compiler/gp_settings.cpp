@@ -82,7 +82,7 @@ const std::vector<GpOption>& gp_options() {
       {"internal_bias", Shape::Value, "crossover picks an internal node this often", probability<&S::internal_bias>,
        &real_text<S, &S::internal_bias>},
       {"erc_sigma", Shape::Value, "point mutation moves an ERC by N(0, X (HI - LO)) (at most 1000)",
-       &read_real<S, &S::erc_sigma, RealRange::NonNegative, S::kMaxErcSigma>, &real_text<S, &S::erc_sigma>},
+       &read_real<S, &S::erc_sigma, RealRange::NonNegative, &S::kMaxErcSigma>, &real_text<S, &S::erc_sigma>},
   };
   return table;
 }

@@ -50,9 +50,10 @@ std::string whole_text(const OptionRow<Settings>&, const Settings& s) {
 // What a plain number must be.
 enum class RealRange { Probability, Positive, NonNegative };
 
-// A plain number in its range, and at most Max (the algorithm's limit that keeps its
-// arithmetic finite), into a double field; its text.
-template <class Settings, double Settings::*Field, RealRange R, double Max = std::numeric_limits<double>::max()>
+// A plain number in its range, and at most *Max when given (the algorithm's limit that keeps
+// its arithmetic finite), into a double field; its text. A pointer, since clang 14 (the fuzz
+// build) takes no double template argument.
+template <class Settings, double Settings::*Field, RealRange R, const double* Max = nullptr>
 bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
   const auto x = read_quantity(v, o.key, Dim::None, sink);
   if (!x) return false;
@@ -67,9 +68,11 @@ bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, S
                                     number_text(*x)));
     return false;
   }
-  if (*x > Max) {
-    sink.error(v.where, fmt::format("`{}` must be at most {}, found {}", o.key, number_text(Max), number_text(*x)));
-    return false;
+  if constexpr (Max != nullptr) {
+    if (*x > *Max) {
+      sink.error(v.where, fmt::format("`{}` must be at most {}, found {}", o.key, number_text(*Max), number_text(*x)));
+      return false;
+    }
   }
   s.*Field = *x;
   return true;

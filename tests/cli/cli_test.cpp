@@ -43,7 +43,7 @@ TEST(Cli, BadOverridesAreRejectedBeforeRunning) {
   EXPECT_NE(o.output.find("epochs"), std::string::npos) << "no did-you-mean: " << o.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
   o = esc("run " + tiny() + " --set nonsense --out " + out.string());
-  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_EQ(o.status, 2) << o.output;   // not KEY=VALUE: a bad command line
   o = esc("run " + tiny() + " --experiment nope --out " + out.string());
   EXPECT_EQ(o.status, 1) << o.output;
   EXPECT_NE(o.output.find("tiny"), std::string::npos) << o.output;

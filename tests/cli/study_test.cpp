@@ -36,7 +36,7 @@ TEST(Study, OneRunRunsEveryConditionIntoOneDirectory) {
   ASSERT_EQ(o.status, 0) << o.output;
   const json s = read_json(out / "summary.json");
   EXPECT_EQ(s["study"], "tiny_study");   // the file's first declaration
-  EXPECT_EQ(s["seed"], 1);
+  EXPECT_EQ(s["seed"], "1");   // a string, as every seed in JSON
   ASSERT_EQ(s["conditions"].size(), 4u);
   const json& off = s["conditions"][0];
   EXPECT_EQ(off["name"], "no_inertia");
@@ -111,7 +111,7 @@ TEST(Study, SettingAVariedKeyIsRefusedOtherSettingsApplyToEveryCondition) {
                          "--seed 4 --out " + out.string());
   ASSERT_EQ(ok.status, 0) << ok.output;
   const json s = read_json(out / "summary.json");
-  EXPECT_EQ(s["seed"], 4);
+  EXPECT_EQ(s["seed"], "4");
   for (const json& c : s["conditions"]) EXPECT_EQ(c["controllers"]["CC"]["runs"].size(), 1u);
   EXPECT_EQ(read_json(out / "no_inertia" / "settings.json")["settings"]["epochs"], "1");
   // A bad value for one condition names it.

@@ -41,7 +41,8 @@ TEST(EdgeFitness, AGenerationCountsItsSaturatedEvaluationsAndKeepsFiniteStatisti
   EXPECT_TRUE(std::isfinite(g.mean));
   EXPECT_TRUE(std::isfinite(g.sd));
   EXPECT_NEAR(g.mean / 1e300, 0.25, 1e-12);
-  EXPECT_NEAR(g.sd / 1e300, std::sqrt((3 * 0.75 * 0.75 + 1.25 * 1.25) / 3.0), 1e-12);
+  // Deviations from the mean 0.25e300: 0.75, -0.25 (3 is nothing beside it), -1.25, 0.75.
+  EXPECT_NEAR(g.sd / 1e300, std::sqrt((2 * 0.75 * 0.75 + 0.25 * 0.25 + 1.25 * 1.25) / 3.0), 1e-12);
 }
 
 TEST(Moments, AreThePlainTwoPassFormulasBitForBitWhereThoseAreFinite) {
