@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <system_error>
 #include <variant>
@@ -108,6 +109,14 @@ bool finished_run(const std::filesystem::path& dir) {
   }
 }
 
+// Whether cache entry `dir` was made for `key`: the whole fingerprint stored with it, not
+// only the hash its name holds.
+bool same_fingerprint(const std::filesystem::path& dir, const std::string& key) {
+  std::ifstream in(dir / "fingerprint.txt", std::ios::binary);
+  const std::string stored{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return in.is_open() && stored == key;
+}
+
 std::optional<Prepared> load_into(Prepared& p) {
   auto stored = load_finished(p.dir);
   if (!stored) return std::nullopt;
@@ -159,13 +168,32 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   // Rank 0 decides whether to reuse; the others follow.
   std::error_code ec;
   bool reuse = false;
+  bool refused = false;
   if (!follower_rank()) {
-    if (std::filesystem::exists(p.dir / "esc.db", ec) && !finished_run(p.dir)) {
-      say("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
-      std::filesystem::remove_all(p.dir, ec);
+    if (std::filesystem::exists(p.dir / "esc.db", ec)) {
+      const auto incomplete = [&] {
+        say("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
+        std::filesystem::remove_all(p.dir, ec);
+      };
+      try {
+        if (!store::ResultsDb::open(p.dir, true).load_single().finished()) incomplete();
+      } catch (const store::NothingStored&) {
+        incomplete();
+      } catch (const store::StoreError& e) {
+        // Damaged: never used, and not removed either (what damaged it may matter).
+        complain("esc: error: dependency {}: {}; remove it to run it again\n", name, e.what());
+        refused = true;
+      }
     }
-    reuse = std::filesystem::exists(p.dir / "esc.db", ec);
+    reuse = !refused && std::filesystem::exists(p.dir / "esc.db", ec);
+    if (reuse && !same_fingerprint(p.dir, key)) {
+      complain("esc: error: {} is not the run experiment `{}` needs: its fingerprint.txt differs from this run's "
+               "inputs (its name holds only their hash); remove it or give another --cache\n",
+               p.dir.string(), name);
+      refused = true;
+    }
   }
+  if (agree(refused)) return std::nullopt;
   if (agree(reuse)) {
     say("esc: dependency {}: reused {}\n", name, p.dir.string());
     return load_into(p);

@@ -11,6 +11,7 @@
 #include "cli/load.hpp"
 #include "cli/run_support.hpp"
 #include "runtime/store/run_directory.hpp"
+#include "runtime/store/untouched_load.hpp"
 
 namespace esc::cli {
 
@@ -35,10 +36,21 @@ int resume_command(const RunOptions& o) {
              "--experiment and --out cannot be given with it (--generations G carries it on to G generations)\n");
     return kExitUsage;
   }
-  store::ResultsDb db = store::ResultsDb::open(o.resume);
-  std::vector<store::StoredExperiment> all = db.load();
-  if (!all.empty() && all.front().condition) return resume_study(o, db, std::move(all));
-  const store::StoredExperiment stored = db.load_single();
+  // Every check reads a copy: a refused resume leaves every byte of the directory as it was.
+  std::vector<store::StoredExperiment> all;
+  try {
+    all = store::load_untouched(o.resume);
+  } catch (const store::NothingStored& e) {
+    complain("esc: error: {}; nothing was stored to resume: start it again with `esc run FILE --out {}`\n", e.what(),
+             o.resume.string());
+    return kExitBadInput;
+  }
+  if (!all.empty() && all.front().condition) return resume_study(o, std::move(all));
+  if (all.size() != 1) {
+    complain("esc: error: {} holds {} experiments; a run directory holds one\n", o.resume.string(), all.size());
+    return kExitBadInput;
+  }
+  const store::StoredExperiment stored = std::move(all.front());
   const auto complete = [&] {
     say("esc: {} is complete ({} x {} runs x {} generations); nothing to resume\n", o.resume.string(),
         stored.controllers.size(), stored.runs, stored.generations);
@@ -78,7 +90,8 @@ int resume_command(const RunOptions& o) {
   if (!same_inputs(spec, stored, cache, o.resume)) return kExitBadInput;
   (void)set_generations(spec, extend ? extend : carried);
 
-  const eval::ResumePoint point = db.resume_point(stored, spec);
+  // Read from a copy too: a carry-on refused here leaves the directory as it was.
+  const eval::ResumePoint point = std::move(store::resume_points_untouched(o.resume, {&stored}, {&spec}).front());
   const std::int64_t done = generations_done(point);
   if (extend)
     say("esc: carrying {} in {} on to {} generations: {} of {} generations done\n", spec.name, o.resume.string(),
@@ -89,6 +102,7 @@ int resume_command(const RunOptions& o) {
   return run_experiment(
       spec, campaign_options(o, &point),
       [&] {
+        store::ResultsDb db = store::ResultsDb::open(o.resume);
         if (extend) {
           nlohmann::ordered_json overrides = stored.overrides;
           overrides["carry_on"] = *extend;

@@ -91,6 +91,6 @@ eval::CampaignResult campaign_on_all_ranks(const eval::ExperimentSpec& spec, con
 
 // A study's run and resume (study_command.cpp).
 int run_study(const RunOptions& o, compiler::CompileResult& compiled, eval::StudySpec& study);
-int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::StoredExperiment> stored);
+int resume_study(const RunOptions& o, std::vector<store::StoredExperiment> stored);
 
 }  // namespace esc::cli

@@ -10,6 +10,7 @@
 #include "cli/load.hpp"
 #include "cli/run_support.hpp"
 #include "runtime/store/study_directory.hpp"
+#include "runtime/store/untouched_load.hpp"
 
 namespace esc::cli {
 
@@ -55,7 +56,8 @@ bool apply_to_conditions(const RunOptions& o, eval::StudySpec& study) {
 // What a stopped study left: its database and one stored experiment per condition; none
 // for a new study.
 struct Stored {
-  store::ResultsDb* db = nullptr;
+  // Per condition, where it resumes from (read from a copy of the database).
+  const std::vector<eval::ResumePoint>* points = nullptr;
   const std::vector<store::StoredExperiment>* conditions = nullptr;
   // Per condition, the generations `--resume DIR --generations G` carries it on to, if any.
   const std::vector<std::optional<int>>* carry_on = nullptr;
@@ -75,7 +77,7 @@ int run_conditions(const eval::StudySpec& study, const RunOptions& o, std::optio
       continue;
     }
     const eval::ResumePoint point =
-        before != nullptr ? stored.db->resume_point(*before, c.experiment) : eval::ResumePoint{};
+        before != nullptr ? (*stored.points)[i] : eval::ResumePoint{};
     say("esc: condition {}/{} {}: {} ({} controller{}, {} run{}, {})\n", i + 1, study.conditions.size(), c.name,
         c.experiment.name, c.experiment.controllers.size(), c.experiment.controllers.size() == 1 ? "" : "s",
         c.experiment.runs, c.experiment.runs == 1 ? "" : "s", generations_text(c.experiment));
@@ -128,7 +130,7 @@ int run_study(const RunOptions& o, compiler::CompileResult& compiled, eval::Stud
   return run_conditions(study, o, dir, Stored{}, out);
 }
 
-int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::StoredExperiment> all) {
+int resume_study(const RunOptions& o, std::vector<store::StoredExperiment> all) {
   const std::vector<store::StoredExperiment> stored = store::study_conditions(std::move(all));
   const store::StoredExperiment& first = stored.front();
   const std::string& name = first.condition->study;
@@ -197,9 +199,18 @@ int resume_study(const RunOptions& o, store::ResultsDb& db, std::vector<store::S
   else
     say("esc: resuming study {} in {}: {} of {} conditions finished\n", name, o.resume.string(), finished,
         stored.size());
+  // Where each condition to run resumes from, read from a copy: a refused carry-on leaves the
+  // directory as it was.
+  std::vector<const store::StoredExperiment*> before;
+  std::vector<const eval::ExperimentSpec*> specs;
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    before.push_back(stored[i].finished() && !extend[i] ? nullptr : &stored[i]);
+    specs.push_back(&study.conditions[i].experiment);
+  }
+  const std::vector<eval::ResumePoint> points = store::resume_points_untouched(o.resume, before, specs);
   std::optional<store::StudyDirectory> dir;
   if (!open_on_rank0([&] { dir.emplace(o.resume, stored); })) return kExitBadInput;
-  return run_conditions(study, replay, dir, Stored{&db, &stored, &extend}, o.resume);
+  return run_conditions(study, replay, dir, Stored{&points, &stored, &extend}, o.resume);
 }
 
 }  // namespace esc::cli

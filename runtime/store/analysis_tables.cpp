@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/row_checksum.hpp"
 
 namespace esc::store {
 
@@ -16,6 +17,7 @@ CREATE TABLE generation_usage (
   best_steps    INTEGER NOT NULL,
   mean_steps    REAL NOT NULL,
   steps_total   INTEGER NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run, generation, choice_idx)
 );
 CREATE TABLE choices (
@@ -25,6 +27,7 @@ CREATE TABLE choices (
   behavior      TEXT NOT NULL,
   library       TEXT NOT NULL,
   useless       INTEGER NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, idx)
 );
 CREATE TABLE transfers (
@@ -35,6 +38,7 @@ CREATE TABLE transfers (
   origin_fitness    REAL NOT NULL,
   evaluate_only     INTEGER NOT NULL,
   fitness_here      REAL,
+  checksum          INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
 );
 )sql";
@@ -48,6 +52,7 @@ void save_choices(sql::Database& db, std::int64_t controller_id, const std::vect
     row.bind(1, controller_id).bind(2, static_cast<std::int64_t>(i)).bind(3, c.name).bind(4, c.behavior)
         .bind(5, c.library).bind(6, c.useless ? 1 : 0)
         .run();
+    seal_row(db, "choices", db.last_insert_rowid());
   }
 }
 
@@ -64,10 +69,12 @@ void save_usage(sql::Database& db, std::int64_t controller_id, int run, const ev
   auto row = db.prepare(
       "INSERT OR REPLACE INTO generation_usage(controller_id, run, generation, choice_idx, best_steps, mean_steps, "
       "steps_total) VALUES (?, ?, ?, ?, ?, ?, ?)");
-  for (std::size_t c = 0; c < u.best.size() && c < u.mean.size(); ++c)
+  for (std::size_t c = 0; c < u.best.size() && c < u.mean.size(); ++c) {
     row.bind(1, controller_id).bind(2, run).bind(3, g.generation).bind(4, static_cast<std::int64_t>(c))
         .bind(5, u.best[c]).bind(6, u.mean[c]).bind(7, u.steps_total)
         .run();
+    seal_row(db, "generation_usage", db.last_insert_rowid());
+  }
 }
 
 void load_usage(sql::Database& db, std::int64_t controller_id, int run, std::vector<eval::GenerationStats>& generations,
@@ -97,6 +104,7 @@ void save_transfer(sql::Database& db, std::int64_t controller_id, int run, const
       .bind(6, t.evaluate_only ? 1 : 0);
   if (t.fitness_here) row.bind(7, *t.fitness_here);
   row.run();
+  seal_row(db, "transfers", db.last_insert_rowid());
 }
 
 std::optional<eval::Transfer> load_transfer(sql::Database& db, std::int64_t controller_id, int run) {

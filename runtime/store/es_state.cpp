@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/row_checksum.hpp"
 
 namespace esc::store {
 
@@ -16,6 +17,7 @@ void save_state(sql::Database& db, std::int64_t controller_id, int run, const ev
       .bind(4, static_cast<std::int64_t>(genome_size)).bind(5, static_cast<std::int64_t>(sigma_count))
       .bind_blob(6, pack_parents(state.parents))
       .run();
+  seal_row(db, "run_state", db.last_insert_rowid());
 }
 
 std::optional<eval::EsState> load_es_state(sql::Database& db, std::int64_t controller_id, int run,

@@ -9,6 +9,7 @@
 
 #include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/es_state.hpp"
+#include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/tree_state.hpp"
 
@@ -18,6 +19,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Every table but meta ends its columns with `checksum` (schema 5, row_checksum.hpp): the
+// hash of the row's other columns, written with the row.
 constexpr const char* kSchema = R"sql(
 CREATE TABLE meta (
   key   TEXT PRIMARY KEY,
@@ -38,19 +41,22 @@ CREATE TABLE experiments (
   runs             INTEGER NOT NULL,
   generations      INTEGER NOT NULL,
   epochs           INTEGER NOT NULL,
-  steps            INTEGER NOT NULL
+  steps            INTEGER NOT NULL,
+  checksum         INTEGER NOT NULL DEFAULT 0
 );
 CREATE TABLE sources (
   experiment_id INTEGER NOT NULL REFERENCES experiments(id),
   idx           INTEGER NOT NULL,
   name          TEXT NOT NULL,
   text          TEXT NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (experiment_id, idx)
 );
 CREATE TABLE settings (
   experiment_id INTEGER NOT NULL REFERENCES experiments(id),
   key           TEXT NOT NULL,
   value         TEXT NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (experiment_id, key)
 );
 CREATE TABLE controllers (
@@ -62,6 +68,7 @@ CREATE TABLE controllers (
   genome_size   INTEGER NOT NULL,
   head          TEXT NOT NULL,
   actions       TEXT NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   UNIQUE (experiment_id, name)
 );
 CREATE TABLE runs (
@@ -76,6 +83,7 @@ CREATE TABLE runs (
   best_genome      BLOB,
   best_tree        TEXT,
   best_behavior    TEXT,
+  checksum         INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
 );
 CREATE TABLE generations (
@@ -88,9 +96,10 @@ CREATE TABLE generations (
   evaluations   INTEGER NOT NULL,
   steps         INTEGER NOT NULL,
   seconds       REAL NOT NULL,
-  -- Evaluations whose fitness saturated at +-1e300. Added within schema 2: an older
-  -- database gets the column (0) when opened for writing and reads as 0 otherwise.
+  -- Evaluations whose fitness saturated at +-1e300 (schema 5: an older database gets the
+  -- column, 0, when opened for writing and reads as 0 otherwise).
   saturated     INTEGER NOT NULL DEFAULT 0,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run, generation)
 );
 CREATE TABLE run_state (
@@ -100,6 +109,7 @@ CREATE TABLE run_state (
   genome_size   INTEGER NOT NULL,
   sigma_count   INTEGER NOT NULL,
   population    BLOB NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
 );
 -- Schema 2 (GP); also what opening a schema-1 database for writing adds to it.
@@ -108,6 +118,7 @@ CREATE TABLE tree_state (
   run           INTEGER NOT NULL,
   individuals   INTEGER NOT NULL,
   population    BLOB NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
 );
 CREATE TABLE behavior_usage (
@@ -116,6 +127,7 @@ CREATE TABLE behavior_usage (
   action_idx    INTEGER NOT NULL,
   action        TEXT NOT NULL,
   steps         INTEGER NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run, action_idx)
 );
 CREATE TABLE replays (
@@ -124,13 +136,15 @@ CREATE TABLE replays (
   seed          TEXT NOT NULL,
   fitness       REAL NOT NULL,
   columns       TEXT NOT NULL,
-  trace         BLOB NOT NULL
+  trace         BLOB NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0
 );
 -- Schema 3 (studies); also what opening an older database for writing adds to it.
 CREATE TABLE studies (
   id            INTEGER PRIMARY KEY,
   name          TEXT NOT NULL,
-  seed          TEXT NOT NULL
+  seed          TEXT NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0
 );
 CREATE TABLE conditions (
   experiment_id INTEGER PRIMARY KEY REFERENCES experiments(id),
@@ -139,6 +153,7 @@ CREATE TABLE conditions (
   name          TEXT NOT NULL,
   directory     TEXT NOT NULL,
   sweep         INTEGER,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   UNIQUE (study_id, name)
 );
 CREATE TABLE condition_settings (
@@ -149,6 +164,7 @@ CREATE TABLE condition_settings (
   swept         INTEGER NOT NULL,
   x             REAL,
   x_unit        TEXT NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (experiment_id, idx)
 );
 )sql";
@@ -347,14 +363,20 @@ std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, cons
       .bind(13, spec.steps)
       .run();
   experiment_id_ = db.last_insert_rowid();
+  seal_row(db, "experiments", experiment_id_);
   controller_ids_.clear();
 
   auto src = db.prepare("INSERT INTO sources(experiment_id, idx, name, text) VALUES (?, ?, ?, ?)");
-  for (std::size_t i = 0; i < sources.size(); ++i)
+  for (std::size_t i = 0; i < sources.size(); ++i) {
     src.bind(1, experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, sources[i].name.generic_string())
         .bind(4, sources[i].text).run();
+    seal_row(db, "sources", db.last_insert_rowid());
+  }
   auto set = db.prepare("INSERT INTO settings(experiment_id, key, value) VALUES (?, ?, ?)");
-  for (const auto& [k, v] : spec.resolved_settings) set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
+  for (const auto& [k, v] : spec.resolved_settings) {
+    set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
+    seal_row(db, "settings", db.last_insert_rowid());
+  }
   auto ctl = db.prepare(
       "INSERT INTO controllers(experiment_id, idx, name, architecture, genome_size, head, actions) "
       "VALUES (?, ?, ?, ?, ?, ?, ?)");
@@ -367,6 +389,7 @@ std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, cons
         .bind(7, actions.dump())
         .run();
     controller_ids_[c.name] = db.last_insert_rowid();
+    seal_row(db, "controllers", controller_ids_[c.name]);
     save_choices(db, controller_ids_[c.name], c.choices);
   }
   return experiment_id_;
@@ -390,6 +413,7 @@ ResultsDb ResultsDb::create_study(const fs::path& dir, const eval::StudySpec& st
   sql::Transaction tx(db);
   db.prepare("INSERT INTO studies(name, seed) VALUES (?, ?)").bind(1, study.name).bind(2, std::to_string(study.seed)).run();
   const std::int64_t study_id = db.last_insert_rowid();
+  seal_row(db, "studies", study_id);
   auto cond = db.prepare(
       "INSERT INTO conditions(experiment_id, study_id, idx, name, directory, sweep) VALUES (?, ?, ?, ?, ?, ?)");
   auto set = db.prepare(
@@ -400,12 +424,14 @@ ResultsDb ResultsDb::create_study(const fs::path& dir, const eval::StudySpec& st
     cond.bind(1, id).bind(2, study_id).bind(3, static_cast<std::int64_t>(i)).bind(4, c.name).bind(5, c.directory);
     if (c.sweep) cond.bind(6, *c.sweep);
     cond.run();
+    seal_row(db, "conditions", id);
     for (std::size_t k = 0; k < c.settings.size(); ++k) {
       const eval::ConditionSetting& st = c.settings[k];
       set.bind(1, id).bind(2, static_cast<std::int64_t>(k)).bind(3, st.key).bind(4, st.value).bind(5, st.swept ? 1 : 0)
           .bind(7, st.x_unit);
       if (st.x) set.bind(6, *st.x);
       set.run();
+      seal_row(db, "condition_settings", db.last_insert_rowid());
     }
   }
   tx.commit();
@@ -427,12 +453,20 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
   const fs::path file = dir / kDatabaseFile;
   if (!fs::is_regular_file(file, ec))
     throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
+  const auto nothing = [&] {
+    return NothingStored(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
+  };
+  if (fs::file_size(file, ec) == 0 && !ec) throw nothing();
   try {
     ResultsDb r(sql::Database(file, read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite), file);
     auto id = r.db_.prepare("PRAGMA application_id");
     const std::int64_t app = id.step() ? id.int64(0) : 0;
-    if (app != kApplicationId)
+    if (app != kApplicationId) {
+      // Stopped while it was being created: no table yet.
+      auto tables = r.db_.prepare("SELECT count(*) FROM sqlite_master");
+      if (tables.step() && tables.int64(0) == 0) throw nothing();
       throw StoreError(fmt::format("{} is an SQLite database but not one written by esc", file.string()));
+    }
     auto ver = r.db_.prepare("PRAGMA user_version");
     const std::int64_t version = ver.step() ? ver.int64(0) : 0;
     if (version > kSchemaVersion)
@@ -445,13 +479,8 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     r.schema_version_ = static_cast<int>(version);
     if (!read_only && version < kSchemaVersion) r.upgrade();
     r.has_saturated_ = r.column_exists("generations", "saturated");
-    if (!read_only && !r.has_saturated_) {
-      r.db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
-      r.has_saturated_ = true;
-    }
     auto ex = r.db_.prepare("SELECT id FROM experiments ORDER BY id LIMIT 1");
-    if (!ex.step())
-      throw StoreError(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
+    if (!ex.step()) throw nothing();
     r.experiment_id_ = ex.int64(0);
     auto ctl = r.db_.prepare("SELECT id, name FROM controllers WHERE experiment_id = ?");
     ctl.bind(1, r.experiment_id_);
@@ -484,6 +513,15 @@ void ResultsDb::upgrade() {
   if (schema_version_ < 3) tables("CREATE TABLE studies", nullptr);   // studies
   // The analyses' tables, empty: the generations stored before have no usage.
   if (schema_version_ < kAnalysisSchemaVersion) db_.exec(analysis_schema());
+  if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
+    if (!column_exists("generations", "saturated"))
+      db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
+    for (const std::string_view t : sealed_tables()) {
+      if (!column_exists(std::string(t), "checksum"))
+        db_.exec(fmt::format("ALTER TABLE {} ADD COLUMN checksum INTEGER NOT NULL DEFAULT 0;", t));
+      seal_table(db_, t);
+    }
+  }
   db_.exec(fmt::format("PRAGMA user_version={};", kSchemaVersion));
   tx.commit();
   schema_version_ = kSchemaVersion;
@@ -505,6 +543,7 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
       .bind(1, cid).bind(2, st.run).bind(3, g.generation).bind(4, g.best).bind(5, g.mean).bind(6, g.sd)
       .bind(7, g.evaluations).bind(8, g.steps).bind(9, g.seconds).bind(10, g.saturated)
       .run();
+  seal_row(db_, "generations", db_.last_insert_rowid());
   auto run = db_.prepare(
       "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
       "best_generation, best_index, best_genome) VALUES (?, ?, ?, 'running', ?, ?, ?, ?, ?)");
@@ -512,6 +551,7 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   if (st.has_best)
     run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
   run.run();
+  seal_row(db_, "runs", db_.last_insert_rowid());
   std::visit([&](const auto& algorithm) { save_state(db_, cid, st.run, algorithm); }, st.algorithm);
   save_usage(db_, cid, st.run, g);
   if (st.transfer) save_transfer(db_, cid, st.run, *st.transfer);
@@ -536,6 +576,7 @@ void ResultsDb::commit_replay(const std::string& controller, const eval::RunResu
       .bind(1, cid).bind(2, run.run).bind(3, std::to_string(seed)).bind(4, run.best_fitness).bind(5, columns.dump())
       .bind_blob(6, pack_trace(trace))
       .run();
+  seal_row(db_, "replays", cid);   // its rowid, whether the row changed or not
   tx.commit();
 }
 
@@ -558,24 +599,33 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
   if (!run.best_tree.empty()) row.bind(9, run.best_tree);
   if (!run.best_behavior.empty()) row.bind(10, run.best_behavior);
   row.run();
+  seal_row(db_, "runs", db_.last_insert_rowid());
   // The run's state (run_state or tree_state) stays: `esc run --resume DIR --generations G`
   // carries a finished run on from it.
   db_.prepare("DELETE FROM behavior_usage WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
   auto use = db_.prepare(
       "INSERT INTO behavior_usage(controller_id, run, action_idx, action, steps) VALUES (?, ?, ?, ?, ?)");
-  for (std::size_t i = 0; i < run.action_usage.size(); ++i)
+  for (std::size_t i = 0; i < run.action_usage.size(); ++i) {
     use.bind(1, cid).bind(2, run.run).bind(3, static_cast<std::int64_t>(i))
         .bind(4, i < actions.size() ? actions[i] : fmt::format("action{}", i)).bind(5, run.action_usage[i])
         .run();
+    seal_row(db_, "behavior_usage", db_.last_insert_rowid());
+  }
   tx.commit();
 }
 
 void ResultsDb::mark_finished() {
+  sql::Transaction tx(db_);
   db_.prepare("UPDATE experiments SET status = 'finished' WHERE id = ?").bind(1, experiment_id_).run();
+  seal_row(db_, "experiments", experiment_id_);
+  tx.commit();
 }
 
 std::vector<StoredExperiment> ResultsDb::load() {
   try {
+    // Nothing stored is used before every row is known to be as written (older schemas
+    // carry no checksums: opening one for writing seals it as it is).
+    if (schema_version_ >= 5) verify_rows(db_, file_);
     std::vector<StoredExperiment> out;
     auto ex = db_.prepare(
         "SELECT id, name, seed, content_hash, status, created, software_version, script_path, overrides, arena, "
@@ -791,8 +841,12 @@ void ResultsDb::extend(const eval::ExperimentSpec& spec, const nlohmann::ordered
   db_.prepare("UPDATE experiments SET generations = ?, overrides = ?, status = 'running' WHERE id = ?")
       .bind(1, spec.max_generations()).bind(2, overrides.dump()).bind(3, experiment_id_)
       .run();
+  seal_row(db_, "experiments", experiment_id_);
   auto set = db_.prepare("INSERT OR REPLACE INTO settings(experiment_id, key, value) VALUES (?, ?, ?)");
-  for (const auto& [k, v] : spec.resolved_settings) set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
+  for (const auto& [k, v] : spec.resolved_settings) {
+    set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
+    seal_row(db_, "settings", db_.last_insert_rowid());
+  }
   tx.commit();
 }
 

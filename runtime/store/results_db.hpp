@@ -28,7 +28,8 @@ inline constexpr const char* kDatabaseFile = "esc.db";
 // study's database holds one experiment row per condition). 4: the analyses' tables
 // (analysis_tables.hpp: behavior usage per generation, choices, transfers), and a finished
 // run keeps its state. An older database opened for writing is upgraded.
-inline constexpr int kSchemaVersion = 4;
+// 5: a checksum on every row (row_checksum.hpp).
+inline constexpr int kSchemaVersion = 5;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -37,6 +38,14 @@ inline constexpr std::int32_t kApplicationId = 0x45534331;
 class StoreError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// A directory whose esc.db holds no committed generation: an empty file, a database stopped
+// before its experiment was stored, or one stopped before the first generation committed.
+// Nothing in it can be resumed or lost; `esc run --out` may reuse it.
+class NothingStored : public StoreError {
+ public:
+  using StoreError::StoreError;
 };
 
 struct SourceFile {
@@ -188,7 +197,7 @@ class ResultsDb {
   bool column_exists(const std::string& table, const std::string& column);
 
   int schema_version_ = kSchemaVersion;
-  bool has_saturated_ = true;   // generations.saturated (older schema-2 databases lack it)
+  bool has_saturated_ = true;   // generations.saturated (databases before schema 5 lack it)
 
   sql::Database db_;
   std::filesystem::path file_;

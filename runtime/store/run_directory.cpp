@@ -8,6 +8,7 @@
 
 #include "runtime/store/seed_json.hpp"
 #include "runtime/store/summary_json.hpp"
+#include "runtime/store/untouched_load.hpp"
 
 namespace esc::store {
 
@@ -40,6 +41,13 @@ void create_output_directory(const fs::path& dir) {
     fresh = true;
     for (const auto& entry : fs::directory_iterator(dir, ec))
       if (entry.path().filename() != "deps") fresh = false;
+  }
+  // A run stopped before its first generation committed left nothing to lose: its files
+  // (all but `deps/`) go, and the directory is used again.
+  if (!fresh && holds_nothing_stored(dir)) {
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+      if (entry.path().filename() != "deps") fs::remove_all(entry.path(), ec);
+    fresh = !ec;
   }
   if (!fresh)
     throw std::runtime_error(fmt::format(

@@ -80,7 +80,8 @@ class RunDirectory final : public eval::CampaignListener {
   SummarySink summary_;               // empty: DIR/summary.json
 };
 
-// Makes `dir` with its `sources/` for a new run: it must not exist, or hold only `deps/`
+// Makes `dir` with its `sources/` for a new run: it must not exist, hold only `deps/`, or
+// hold a run that committed no generation (holds_nothing_stored), whose files it removes
 // (results are never overwritten). Throws std::runtime_error otherwise.
 void create_output_directory(const std::filesystem::path& dir);
 

@@ -134,6 +134,32 @@ std::string Statement::text(int column) const {
   return {reinterpret_cast<const char*>(p), static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column))};
 }
 
+int Statement::column_count() const { return sqlite3_column_count(stmt_); }
+
+std::string Statement::column_name(int column) const {
+  const char* name = sqlite3_column_name(stmt_, column);
+  return name == nullptr ? std::string() : std::string(name);
+}
+
+Statement::Type Statement::type(int column) const {
+  switch (sqlite3_column_type(stmt_, column)) {
+    case SQLITE_INTEGER: return Type::Integer;
+    case SQLITE_FLOAT: return Type::Real;
+    case SQLITE_TEXT: return Type::Text;
+    case SQLITE_BLOB: return Type::Blob;
+    default: return Type::Null;
+  }
+}
+
+std::string_view Statement::bytes(int column) const {
+  // The text or blob pointer first, then its size (the order SQLite's documentation asks).
+  const void* p = sqlite3_column_type(stmt_, column) == SQLITE_TEXT
+                      ? static_cast<const void*>(sqlite3_column_text(stmt_, column))
+                      : sqlite3_column_blob(stmt_, column);
+  const auto n = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column));
+  return p == nullptr ? std::string_view() : std::string_view(static_cast<const char*>(p), n);
+}
+
 std::vector<double> Statement::doubles(int column) const {
   const void* p = sqlite3_column_blob(stmt_, column);
   const auto bytes = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column));

@@ -82,6 +82,14 @@ class Statement {
   // A blob of native doubles (see bind_blob); throws if its size is not a multiple of 8.
   [[nodiscard]] std::vector<double> doubles(int column) const;
 
+  // The row as SQLite holds it, column by column, whatever the column (row_checksum.cpp).
+  enum class Type { Integer, Real, Text, Blob, Null };
+  [[nodiscard]] int column_count() const;
+  [[nodiscard]] std::string column_name(int column) const;
+  [[nodiscard]] Type type(int column) const;
+  // The bytes of a text or blob column.
+  [[nodiscard]] std::string_view bytes(int column) const;
+
  private:
   Database* db_;
   sqlite3_stmt* stmt_ = nullptr;

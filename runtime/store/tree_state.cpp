@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/row_checksum.hpp"
 
 namespace esc::store {
 
@@ -25,6 +26,7 @@ void save_state(sql::Database& db, std::int64_t controller_id, int run, const ev
       .bind(1, controller_id).bind(2, run).bind(3, static_cast<std::int64_t>(state.population.size()))
       .bind_blob(4, pack_trees(state.population))
       .run();
+  seal_row(db, "tree_state", db.last_insert_rowid());
 }
 
 std::optional<eval::GpState> load_tree_state(sql::Database& db, std::int64_t controller_id, int run,

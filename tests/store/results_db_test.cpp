@@ -7,10 +7,12 @@
 #include <sstream>
 #include <variant>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/export.hpp"
+#include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/sqlite.hpp"
 
@@ -220,12 +222,44 @@ TEST(ResultsDb, AMissingOrDamagedEsStateNamesTheRun) {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
     raw.exec("UPDATE run_state SET population = substr(population, 9)");   // one double short
   }
+  EXPECT_NE(error().find("of run 2 of SC does not match its checksum"), std::string::npos) << error();
+  {  // The same row with a checksum that matches it: the size check finds it.
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    seal_table(raw, "run_state");
+  }
   EXPECT_NE(error().find("run 2 of SC: the stored population has the wrong size"), std::string::npos) << error();
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
     raw.exec("DELETE FROM run_state");
   }
   EXPECT_NE(error().find("run 2 of SC is unfinished but has no state to resume from"), std::string::npos) << error();
+}
+
+TEST(ResultsDb, ASchemaThreeDatabaseIsReadThenSealedWhenWritten) {
+  const fs::path dir = fresh_dir("upgrade-3");
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {{"main.esc", "x"}}, {});
+    db.commit_generation("SC", state(1));
+    db.commit_generation("SC", state(2));
+  }
+  {  // What esc wrote before checksums.
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    for (const std::string_view t : sealed_tables()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    raw.exec("ALTER TABLE generations DROP COLUMN saturated; PRAGMA user_version=3;");
+  }
+  const std::string before = export_json({{"d", ResultsDb::open(dir, true).load()}}).dump();
+  { ResultsDb db = ResultsDb::open(dir); }   // upgraded: every row sealed as it is
+  EXPECT_EQ(export_json({{"d", ResultsDb::open(dir, true).load()}}).dump(), before);
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("UPDATE runs SET best_fitness = 9.5");
+  }
+  try {
+    (void)ResultsDb::open(dir, true).load();
+    ADD_FAILURE() << "a changed row of an upgraded database was read";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("the run's record"), std::string::npos) << e.what();
+  }
 }
 
 TEST(EsState, DamagedBlobsAreRefused) {

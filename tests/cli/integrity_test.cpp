@@ -1,0 +1,107 @@
+// End-to-end integrity of stored runs: a bit flipped in a killed run's stored population is
+// refused on resume, naming the run and what is damaged; every kind of refused resume
+// (damaged state, changed script, nothing stored) leaves every byte of the directory as it
+// was; a directory whose esc.db holds nothing can be run into again.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "runtime/store/sqlite.hpp"
+#include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+
+std::string bytes_of(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every file under `dir` with its bytes.
+std::map<std::string, std::string> contents(const fs::path& dir) {
+  std::map<std::string, std::string> all;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) all[fs::relative(e.path(), dir).string()] = bytes_of(e.path());
+  return all;
+}
+
+// Resumes `dir`, expecting a refusal (exit 1, one line naming `why`) that changes nothing.
+void expect_refused_untouched(const fs::path& dir, const std::string& why) {
+  const auto before = contents(dir);
+  const Outcome o = cli_test::esc("run --resume " + dir.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find(why), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  const auto after = contents(dir);
+  EXPECT_EQ(before.size(), after.size());
+  for (const auto& [name, text] : before) EXPECT_TRUE(after.count(name) && after.at(name) == text) << name;
+}
+
+TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
+  const fs::path killed = scratch("integrity-killed");
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 20, 400));
+  std::string population;
+  std::string which;
+  {
+    // The last connection folds the killed run's log into esc.db (what a copy of the
+    // directory would hold after any esc command read it).
+    esc::store::sql::Database db(killed / "esc.db", esc::store::sql::Database::Mode::ReadWrite);
+    auto q = db.prepare(
+        "SELECT c.name, s.run, s.population FROM run_state s JOIN controllers c ON c.id = s.controller_id "
+        "ORDER BY s.controller_id, s.run LIMIT 1");
+    ASSERT_TRUE(q.step());
+    which = "of run " + std::to_string(q.int64(1) + 1) + " of " + q.text(0);
+    population = std::string(q.bytes(2));
+  }
+  ASSERT_GT(population.size(), 64U);
+  std::string db = bytes_of(killed / "esc.db");
+  const std::size_t at = db.rfind(population);
+  ASSERT_NE(at, std::string::npos);
+  db[at + 44] = static_cast<char>(db[at + 44] ^ 0x10);   // a gene's mantissa
+  std::ofstream(killed / "esc.db", std::ios::binary | std::ios::trunc) << db;
+
+  expect_refused_untouched(killed, "does not match its checksum");
+  const Outcome o = cli_test::esc("run --resume " + killed.string());
+  EXPECT_NE(o.output.find("the population to continue from"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find(which), std::string::npos) << o.output;
+  // Report and export refuse it too.
+  EXPECT_EQ(cli_test::esc("export " + killed.string() + " --format csv").status, 1);
+  EXPECT_EQ(cli_test::esc("report " + killed.string()).status, 1);
+}
+
+TEST(Integrity, ChangedScriptRefusalChangesNothing) {
+  const fs::path src = scratch("integrity-src");
+  fs::create_directories(src);
+  fs::copy_file(tiny(), src / "tiny.esc");
+  const fs::path changed = scratch("integrity-changed");
+  const pid_t child = spawn_esc(
+      {"run", (src / "tiny.esc").string(), "--generations", "200", "--threads", "1", "--out", changed.string()});
+  ASSERT_GE(child, 0);
+  ASSERT_GE(kill_when_committed(child, changed, 3).seen, 3);
+  std::ofstream(src / "tiny.esc", std::ios::app) << "\n// an edit\n";
+  expect_refused_untouched(changed, "has changed");
+}
+
+TEST(Integrity, EmptyDatabaseHoldsNothingAndCanBeReused) {
+  const fs::path dir = scratch("integrity-empty");
+  fs::create_directories(dir);
+  std::ofstream(dir / "esc.db").flush();   // created, then killed before anything was written
+  expect_refused_untouched(dir, "nothing was stored to resume");
+  const Outcome run = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_GT(fs::file_size(dir / "esc.db"), 0U);
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
+  // A directory that holds results is still never overwritten.
+  const Outcome again = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
+  EXPECT_EQ(again.status, 1) << again.output;
+  EXPECT_NE(again.output.find("already exists"), std::string::npos) << again.output;
+}
+
+}  // namespace
