@@ -15,9 +15,16 @@ namespace {
 
 constexpr std::string_view kColumn = "checksum";
 
-// Hash of the current row of `q` (every column but `checksum`): each value as its type and
-// its bytes, so that 1 and 1.0, or "" and NULL, differ.
-std::uint64_t row_hash(const sql::Statement& q) {
+// Index of the column `checksum` in `q`'s rows; -1 when it has none.
+int checksum_column(const sql::Statement& q) {
+  for (int c = 0; c < q.column_count(); ++c)
+    if (q.column_name(c) == kColumn) return c;
+  return -1;
+}
+
+// Hash of the current row of `q` (every column but `skip`, the checksum): each value as its
+// type and its bytes, so that 1 and 1.0, or "" and NULL, differ.
+std::uint64_t row_hash(const sql::Statement& q, int skip) {
   std::uint64_t h = content_hash(std::string_view());
   const auto add_u64 = [&h](std::uint64_t v) {
     char b[8];
@@ -25,7 +32,7 @@ std::uint64_t row_hash(const sql::Statement& q) {
     h = content_hash(std::string_view(b, 8), h);
   };
   for (int c = 0; c < q.column_count(); ++c) {
-    if (q.column_name(c) == kColumn) continue;
+    if (c == skip) continue;
     const sql::Statement::Type t = q.type(c);
     const char tag = static_cast<char>('0' + static_cast<int>(t));
     h = content_hash(std::string_view(&tag, 1), h);
@@ -101,7 +108,7 @@ void seal_row(sql::Database& db, std::string_view table, std::int64_t rowid) {
   auto q = db.prepare(fmt::format("SELECT * FROM {} WHERE rowid = ?", table));
   q.bind(1, rowid);
   if (!q.step()) throw StoreError(fmt::format("internal error: no row {} in table {} to seal", rowid, table));
-  const auto h = static_cast<std::int64_t>(row_hash(q));
+  const auto h = static_cast<std::int64_t>(row_hash(q, checksum_column(q)));
   db.prepare(fmt::format("UPDATE {} SET checksum = ? WHERE rowid = ?", table)).bind(1, h).bind(2, rowid).run();
 }
 
@@ -115,11 +122,11 @@ void seal_table(sql::Database& db, std::string_view table) {
 void verify_rows(sql::Database& db, const std::filesystem::path& file) {
   for (const std::string_view table : sealed_tables()) {
     auto q = db.prepare(fmt::format("SELECT * FROM {}", table));
+    const int sum = checksum_column(q);
     while (q.step()) {
-      std::optional<std::int64_t> stored;
-      for (int c = 0; c < q.column_count(); ++c)
-        if (q.column_name(c) == kColumn && q.type(c) == sql::Statement::Type::Integer) stored = q.int64(c);
-      if (stored && static_cast<std::uint64_t>(*stored) == row_hash(q)) continue;
+      if (sum >= 0 && q.type(sum) == sql::Statement::Type::Integer &&
+          static_cast<std::uint64_t>(q.int64(sum)) == row_hash(q, sum))
+        continue;
       throw StoreError(fmt::format("{} is damaged: {}{} does not match its checksum (table {}); it is not used",
                                    file.string(), meaning(table), row_name(db, q), table));
     }
