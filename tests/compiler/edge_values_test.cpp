@@ -16,14 +16,9 @@ namespace esc::compiler {
 namespace {
 
 using test::options;
+using test::paper;
 using test::rendered;
 using test::source_dir;
-
-eval::ExperimentSpec paper() {
-  const auto r = compile_file(source_dir() / "experiments/paper/obstacle_avoidance.esc", options());
-  EXPECT_TRUE(r.ok()) << rendered(r);
-  return r.experiments.at(0);
-}
 
 std::string script_with(const std::string& experiment_items) {
   return "arena a { size 1m x 1m }\nfitness f { step: speed }\ncontroller c = mlp(ir[0..7] -> wheels)\n"
@@ -108,7 +103,11 @@ std::vector<std::string> declaration_keywords() {
   std::vector<std::string> words;
   const std::regex alternative(R"(\b([a-z]+Decl)\b)");
   for (auto it = std::sregex_iterator(body.begin(), body.end(), alternative); it != std::sregex_iterator(); ++it) {
-    const std::regex first("\n" + (*it)[1].str() + R"(\s*:\s*([A-Z_]+))");
+    // Appended, not `"\n" + ... + ...`: GCC 12 warns (-Wrestrict) on that form.
+    std::string pattern = "\n";
+    pattern += (*it)[1].str();
+    pattern += R"(\s*:\s*([A-Z_]+))";
+    const std::regex first(pattern);
     std::smatch m;
     if (std::regex_search(g, m, first)) words.push_back(literal.at(m[1]));
   }

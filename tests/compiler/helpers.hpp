@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <string>
 
+#include <gtest/gtest.h>
+
 #include "compiler/compiler.hpp"
 
 namespace esc::compiler::test {
@@ -16,6 +18,13 @@ inline CompileOptions options() {
 }
 
 inline std::string rendered(const CompileResult& r) { return render_all(r.diagnostics, r.sources); }
+
+// The paper's obstacle-avoidance experiment, compiled (a test fails if it does not compile).
+inline eval::ExperimentSpec paper() {
+  const auto r = compile_file(source_dir() / "experiments/paper/obstacle_avoidance.esc", options());
+  EXPECT_TRUE(r.ok()) << rendered(r);
+  return r.experiments.at(0);
+}
 
 // A complete script around one fitness `step:` expression.
 inline std::string with_step(const std::string& step) {

@@ -7,14 +7,9 @@ namespace esc::compiler {
 namespace {
 
 using test::options;
+using test::paper;
 using test::rendered;
 using test::source_dir;
-
-eval::ExperimentSpec paper() {
-  const auto r = compile_file(source_dir() / "experiments/paper/obstacle_avoidance.esc", options());
-  EXPECT_TRUE(r.ok()) << rendered(r);
-  return r.experiments.at(0);
-}
 
 TEST(ApplySetting, GoodKeysChangeTheSpecAndResolvedSettings) {
   eval::ExperimentSpec x = paper();

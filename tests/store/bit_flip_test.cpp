@@ -31,13 +31,9 @@ eval::ExperimentSpec spec() {
   e.runs = 2;
   e.es.generations = 5;
   e.resolved_settings = {{"epochs", "10"}, {"steps", "150"}};
-  control::ControllerSpec c;
+  control::ControllerSpec c;   // a classical head: usage is stored all the same
   c.name = "SC";
-  c.mlp.inputs = {5, 6};
-  c.head = control::Head::Symbolic;
-  c.actions.resize(2);
-  c.actions[0].name = "forward";
-  c.actions[1].name = "left";
+  c.mlp.inputs = {0, 1, 2};
   e.controllers.push_back(c);
   return e;
 }
@@ -161,7 +157,7 @@ TEST(BitFlip, EveryFlipIsRefusedOrHarmless) {
       {"experiments", R"("cylinders")"},   // in the arena's JSON
       {"sources", "experiment flips { runs 2 }"},
       {"settings", "150"},
-      {"controllers", "forward"},
+      {"controllers", "classical"},
       {"runs", std::to_string(0x0123456789abcdefULL + 1)},
       {"generations", third},
       {"run_state", genes},
