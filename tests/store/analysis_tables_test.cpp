@@ -1,13 +1,15 @@
-// The store's schema-3 tables and what they serve: behavior usage per generation, choices
+// The store's schema-4 tables (sealed since schema 5) and what they serve: behavior usage per generation, choices
 // and transfers load back bit for bit; a finished run keeps its state and is carried on from
 // it; the best replay is the earliest best run whatever the order runs finish in; replays
 // carry the light sensors; an older database reads without usage and is upgraded for writing.
 #include <filesystem>
 #include <variant>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/row_checksum.hpp"
 #include "runtime/store/sqlite.hpp"
 #include "runtime/store/summary_json.hpp"
 #include "runtime/store/usage_export.hpp"
@@ -202,6 +204,67 @@ TEST(AnalysisTables, ASchemaThreeDatabaseReadsWithoutUsageAndIsUpgradedForWritin
   auto version = raw.prepare("PRAGMA user_version");
   ASSERT_TRUE(version.step());
   EXPECT_EQ(version.int64(0), kSchemaVersion);
+}
+
+// Schema 5: the analyses' rows carry checksums like every other row; a changed value in any
+// of them (or in the state a finished run keeps, or in what a carry-on records) is refused.
+TEST(AnalysisTables, TheirRowsAndAFinishedRunsKeptStateAreVerified) {
+  const std::vector<std::pair<std::string, std::string>> changes = {
+      {"generation_usage", "UPDATE generation_usage SET best_steps = best_steps + 1 WHERE run = 1 AND generation = 1 "
+                           "AND choice_idx = 2"},
+      {"choices", "UPDATE choices SET useless = 0 WHERE idx = 1"},
+      {"transfers", "UPDATE transfers SET origin_fitness = 2.5 WHERE run = 0"},
+      {"run_state", "UPDATE run_state SET parents = parents WHERE run = 1; UPDATE run_state SET sigma_count = 2 "
+                    "WHERE run = 1"},
+  };
+  for (const auto& [table, change] : changes) {
+    const fs::path dir = finished_dir("sealed-" + table, 2);
+    (void)ResultsDb::open(dir, true).load();   // as written: verified
+    {
+      sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+      raw.exec(change);
+    }
+    try {
+      (void)ResultsDb::open(dir, true).load();
+      ADD_FAILURE() << "a changed row of " << table << " was read";
+    } catch (const StoreError& e) {
+      EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << table << ": " << e.what();
+    }
+  }
+  // What a carry-on records is sealed with it.
+  const fs::path dir = finished_dir("sealed-extend", 2);
+  {
+    ResultsDb db = ResultsDb::open(dir);
+    eval::ExperimentSpec five = spec(5);
+    five.resolved_settings = {{"generations", "5"}};
+    db.extend(five, {{"carry_on", 5}});
+  }
+  EXPECT_EQ(ResultsDb::open(dir, true).load_single().generations, 5);
+}
+
+// A database written by schema 4 (usage tables, no checksums) is read as it is and sealed,
+// its usage rows included, when opened for writing.
+TEST(AnalysisTables, ASchemaFourDatabaseIsSealedWhenUpgraded) {
+  const fs::path dir = finished_dir("schema-4", 2);
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    for (const std::string_view t : sealed_tables()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    raw.exec("ALTER TABLE generations DROP COLUMN saturated; PRAGMA user_version=4;");
+  }
+  const StoredExperiment old = ResultsDb::open(dir, true).load_single();
+  EXPECT_EQ(old.controllers[0].finished[1].generations[1].usage, generation(1).usage);
+  { ResultsDb db = ResultsDb::open(dir); }   // upgraded
+  const StoredExperiment now = ResultsDb::open(dir, true).load_single();
+  EXPECT_EQ(now.controllers[0].finished[1].generations[1].usage, generation(1).usage);
+  EXPECT_EQ(now.controllers[0].choices.size(), 3u);
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    auto version = raw.prepare("PRAGMA user_version");
+    ASSERT_TRUE(version.step());
+    EXPECT_EQ(version.int64(0), kSchemaVersion);
+    raw.exec("UPDATE generation_usage SET mean_steps = 1.0 WHERE run = 0 AND generation = 0 AND choice_idx = 0");
+  }
+  EXPECT_THROW((void)ResultsDb::open(dir, true).load(), StoreError);
 }
 
 }  // namespace

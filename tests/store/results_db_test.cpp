@@ -245,7 +245,8 @@ TEST(ResultsDb, ASchemaThreeDatabaseIsReadThenSealedWhenWritten) {
   {  // What esc wrote before checksums.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
     for (const std::string_view t : sealed_tables()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
-    raw.exec("ALTER TABLE generations DROP COLUMN saturated; PRAGMA user_version=3;");
+    raw.exec("ALTER TABLE generations DROP COLUMN saturated; DROP TABLE generation_usage; DROP TABLE choices; "
+             "DROP TABLE transfers; PRAGMA user_version=3;");
   }
   const std::string before = export_json({{"d", ResultsDb::open(dir, true).load()}}).dump();
   { ResultsDb db = ResultsDb::open(dir); }   // upgraded: every row sealed as it is
