@@ -42,7 +42,7 @@ eval::RunState state(int run, int generations) {
   eval::RunState s;
   s.run = run;
   s.seed = 0x0123456789abcdefULL + static_cast<std::uint64_t>(run);
-  for (int g = 0; g < generations; ++g) s.generations.push_back({g, 2.0 / 3.0 + g, 0.1 * g, 0.5, 20, 1234, 0.25, 0});
+  for (int g = 0; g < generations; ++g) s.generations.push_back({g, 2.0 / 3.0 + g, 0.1 * g, 0.5, 20, 1234, 0.25, {}, 0});
   const std::size_t n = spec().controllers[0].genome_size();
   std::vector<double> a(n);
   for (std::size_t i = 0; i < n; ++i) a[i] = static_cast<double>(i) / 7.0 - 0.5 + run;
