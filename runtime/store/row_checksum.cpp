@@ -58,21 +58,35 @@ std::optional<std::int64_t> column_value(const sql::Statement& q, std::string_vi
   return std::nullopt;
 }
 
-// What a table holds, for the message that refuses it.
+// Every sealed table and what it holds, for the message that refuses a damaged row: one
+// list, so a table sealed is a table named.
+struct SealedTable {
+  std::string_view name;
+  std::string_view meaning;
+};
+constexpr SealedTable kSealedTables[] = {
+    {"experiments", "the experiment's record (seed, runs, generations, command-line settings)"},
+    {"sources", "a stored source file"},
+    {"settings", "a stored setting"},
+    {"controllers", "a controller's record"},
+    {"runs", "the run's record (seed, best fitness and genome)"},
+    {"generations", "the statistics of a generation"},
+    {"run_state", "the population to continue from (ES parents and step sizes)"},
+    {"tree_state", "the population to continue from (GP trees)"},
+    {"behavior_usage", "the behavior usage"},
+    {"replays", "the stored replay"},
+    {"studies", "the study's record"},
+    {"conditions", "a condition's record"},
+    {"condition_settings", "a condition's setting"},
+    {"generation_usage", "the behavior usage of a generation"},
+    {"choices", "a controller's list of behaviors"},
+    {"transfers", "a transferred controller's origin fitness"},
+};
+
 std::string_view meaning(std::string_view table) {
-  if (table == "experiments") return "the experiment's record (seed, runs, generations, command-line settings)";
-  if (table == "sources") return "a stored source file";
-  if (table == "settings") return "a stored setting";
-  if (table == "controllers") return "a controller's record";
-  if (table == "runs") return "the run's record (seed, best fitness and genome)";
-  if (table == "generations") return "the statistics of a generation";
-  if (table == "run_state") return "the population to continue from (ES parents and step sizes)";
-  if (table == "tree_state") return "the population to continue from (GP trees)";
-  if (table == "behavior_usage") return "the behavior usage";
-  if (table == "replays") return "the stored replay";
-  if (table == "studies") return "the study's record";
-  if (table == "conditions") return "a condition's record";
-  return "a condition's setting";
+  for (const SealedTable& t : kSealedTables)
+    if (t.name == table) return t.meaning;
+  return table;
 }
 
 // "run 2 of CS, generation 14" for a row that names them.
@@ -97,10 +111,11 @@ std::string row_name(sql::Database& db, const sql::Statement& q) {
 }  // namespace
 
 const std::vector<std::string_view>& sealed_tables() {
-  static const std::vector<std::string_view> tables = {
-      "experiments", "sources",        "settings", "controllers", "runs",       "generations",       "run_state",
-      "tree_state",  "behavior_usage", "replays",  "studies",     "conditions", "condition_settings",
-      "generation_usage", "choices", "transfers"};
+  static const std::vector<std::string_view> tables = [] {
+    std::vector<std::string_view> names;
+    for (const SealedTable& t : kSealedTables) names.push_back(t.name);
+    return names;
+  }();
   return tables;
 }
 
