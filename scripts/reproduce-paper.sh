@@ -94,7 +94,8 @@ store_results() {
   "$ESC" report "$out" --out "$scratch/report/report.html" >/dev/null 2>&1
   [ -d "$scratch/report/figures" ] && cp -r "$scratch/report/figures" "$dir/figures"
   rm -rf "$scratch/report"
-  "$ESC" --version >"$dir/version"
+  # The standard library line names this checkout's path: not part of what made the results.
+  "$ESC" --version | grep -v '^standard library:' >"$dir/version"
   {
     echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //')"
     echo "cores: $(nproc)"

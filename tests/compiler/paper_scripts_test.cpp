@@ -118,11 +118,18 @@ TEST(PaperScripts, ObstacleAvoidanceCompilesToTheSectionThreeSetup) {
 TEST(PaperScripts, LoopholeHasBackwardAndBothSimulators) {
   const auto r = compile_file(source_dir() / "experiments/paper/loophole.esc", options());
   ASSERT_TRUE(r.ok()) << rendered(r);
-  ASSERT_EQ(r.experiments.size(), 2u);
+  ASSERT_EQ(r.experiments.size(), 3u);
   EXPECT_EQ(r.experiments[0].name, "loophole_no_inertia");
   EXPECT_FALSE(r.experiments[0].robot.motor.inertia);
   EXPECT_EQ(r.experiments[1].name, "loophole_inertia");
   EXPECT_TRUE(r.experiments[1].robot.motor.inertia);
+  // The paper's condition for a CC to find the trick: genes in [-10, 10], 20 and 30 hidden.
+  const eval::ExperimentSpec& wide = r.experiments[2];
+  EXPECT_EQ(wide.name, "loophole_wide_weights");
+  EXPECT_FALSE(wide.robot.motor.inertia);
+  EXPECT_EQ(wide.resolved_settings.at("bounds"), "[-10, 10]");
+  EXPECT_EQ(weights(find(wide, "CC30")), 30u * 9 + 2u * 31);   // 8-30-2
+  EXPECT_EQ(weights(find(r.experiments[0], "SC4_0")), 8u * 9);    // 8-8: 4 choices and their 4 parameters
   const auto& sc4 = find(r.experiments[0], "SC4");
   ASSERT_EQ(sc4.actions.size(), 4u);
   EXPECT_EQ(weights(sc4), 14u * 9 + 8u * 15);   // 8-14-8

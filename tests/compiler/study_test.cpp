@@ -183,7 +183,7 @@ TEST(Study, ShippedStudies) {
   };
   const CompileResult loophole = shipped("experiments/paper/loophole.esc");
   EXPECT_EQ(loophole.first_declared, "loophole");
-  EXPECT_EQ(names(study(loophole, "loophole")), (std::vector<std::string>{"loophole_no_inertia", "loophole_inertia"}));
+  EXPECT_EQ(names(study(loophole, "loophole")), (std::vector<std::string>{"loophole_no_inertia", "loophole_inertia", "loophole_wide_weights"}));
   const CompileResult sweep = shipped("experiments/studies/inertia_sweep.esc");
   const eval::StudySpec& s = study(sweep, "inertia_sweep");
   ASSERT_GE(s.conditions.size(), 6u);
