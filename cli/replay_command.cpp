@@ -253,6 +253,57 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   return status;
 }
 
+// Where a source's stored run is: the directory holding esc.db and, for a condition of a
+// study (the source is, or a genome file lies in, STUDY/CONDITION), the condition's
+// directory under it.
+struct RunLocation {
+  fs::path root;
+  std::string condition;
+  bool found = false;
+};
+
+RunLocation locate(fs::path dir) {
+  std::error_code ec;
+  if (dir.filename().empty()) dir = dir.parent_path();   // "DIR/"
+  if (fs::exists(dir / store::kDatabaseFile, ec)) return {dir, {}, true};
+  if (!dir.filename().empty() && fs::exists(dir.parent_path() / store::kDatabaseFile, ec))
+    return {dir.parent_path(), dir.filename().string(), true};
+  return {dir, {}, false};
+}
+
+// The stored experiment to replay: the run's one experiment, or the study condition
+// `at.condition`. Nullopt after printing an error (a study's directory names no condition).
+std::optional<store::StoredExperiment> load_stored(const RunLocation& at) {
+  std::vector<store::StoredExperiment> all = store::ResultsDb::open(at.root, true).load();
+  const bool study = !all.empty() && all.front().condition;
+  if (!study && at.condition.empty()) return store::ResultsDb::open(at.root, true).load_single();
+  std::vector<std::string> directories;
+  for (store::StoredExperiment& e : all) {
+    if (!e.condition) continue;
+    if (e.condition->directory == at.condition) return std::move(e);
+    directories.push_back(e.condition->directory);
+  }
+  if (at.condition.empty())
+    complain("esc: error: {} holds study `{}`: replay one of its conditions, e.g. esc replay {} (its conditions: {})\n",
+             at.root.string(), all.front().condition->study, (at.root / directories.front()).string(),
+             compiler::quoted_list(directories, ", "));
+  else
+    complain("esc: error: {} is not a condition of the {} in {} (its conditions: {})\n", at.condition,
+             study ? fmt::format("study `{}`", all.front().condition->study) : "run", at.root.string(),
+             directories.empty() ? "none: it holds one experiment" : compiler::quoted_list(directories, ", "));
+  return std::nullopt;
+}
+
+// The experiment a stored condition ran: its study's condition, as the study's script gives it.
+eval::ExperimentSpec* pick_condition(compiler::CompileResult& compiled, const store::StoredCondition& stored) {
+  for (eval::StudySpec& study : compiled.studies)
+    if (study.name == stored.study)
+      for (eval::ConditionSpec& c : study.conditions)
+        if (c.name == stored.name) return &c.experiment;
+  complain("esc: error: the stored sources no longer declare condition `{}` of study `{}`\n", stored.name, stored.study);
+  return nullptr;
+}
+
 }  // namespace
 
 int replay_command(const ReplayOptions& o) {
@@ -260,8 +311,8 @@ int replay_command(const ReplayOptions& o) {
   const bool genome_file = fs::is_regular_file(o.source, ec);
   // The run directory: SOURCE itself, or the one a genome file was written into.
   const fs::path dir = genome_file ? o.source.parent_path().parent_path() : o.source;
-  const bool has_run = fs::exists(dir / store::kDatabaseFile, ec);
-  if (genome_file && !has_run && o.script.empty()) {
+  const RunLocation at = locate(dir);
+  if (genome_file && !at.found && o.script.empty()) {
     complain("esc: error: {} is not inside a run directory: give the experiment to replay it in with --script FILE "
              "[--experiment NAME]\n", o.source.string());
     return kExitUsage;
@@ -271,7 +322,10 @@ int replay_command(const ReplayOptions& o) {
     return kExitUsage;
   }
   std::optional<store::StoredExperiment> stored;
-  if (has_run || !genome_file) stored = store::ResultsDb::open(dir, true).load_single();
+  if (at.found || !genome_file) {
+    stored = at.found ? load_stored(at) : store::ResultsDb::open(dir, true).load_single();
+    if (!stored) return kExitUsage;
+  }
 
   std::vector<Subject> subjects;
   if (genome_file) {
@@ -287,7 +341,7 @@ int replay_command(const ReplayOptions& o) {
 
   // The experiment: the stored one, compiled from the sources the run stored (whatever has
   // happened to the script since), with its settings; or one of another script.
-  RunOptions settings = stored ? stored_overrides(*stored, dir) : RunOptions{};
+  RunOptions settings = stored ? stored_overrides(*stored, at.root) : RunOptions{};
   compiler::CompileResult compiled;
   eval::ExperimentSpec* spec = nullptr;
   if (o.script.empty()) {
@@ -295,10 +349,11 @@ int replay_command(const ReplayOptions& o) {
     compiled = sources.compile();
     if (!compiled.ok()) return kExitBadInput;
     if (store::campaign_hash(stored->name, sources_of(compiled)) != stored->content_hash) {
-      complain("esc: error: the sources stored in {} do not compile back to the run's script\n", dir.string());
+      complain("esc: error: the sources stored in {} do not compile back to the run's script\n", at.root.string());
       return kExitBadInput;
     }
-    spec = pick_experiment(compiled, sources.main_file(), stored->name);
+    spec = stored->condition ? pick_condition(compiled, *stored->condition)
+                             : pick_experiment(compiled, sources.main_file(), stored->name);
   } else {
     settings.runs.reset();
     settings.generations.reset();
@@ -314,7 +369,7 @@ int replay_command(const ReplayOptions& o) {
     return kExitBadInput;
   }
   spec->start_from.reset();   // where evolution started does not change an evaluation
-  const fs::path cache = !settings.cache.empty() ? settings.cache : dir / "deps";
+  const fs::path cache = !settings.cache.empty() ? settings.cache : at.root / "deps";
   if (!prepare_dependencies(*spec, reuse_only(compiled, settings, cache))) return kExitBadInput;
 
   const auto epochs = parse_epochs(o.epochs, spec->epochs);

@@ -202,6 +202,39 @@ TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {
   EXPECT_FALSE(fs::exists(dir / "deps"));
 }
 
+// A study's condition replays from its directory (STUDY/CONDITION) with the condition's own
+// settings: a condition that changes the motor's time constant replays bit-identically.
+TEST(Replay, AStudysConditionFromItsDirectory) {
+  const fs::path study = scratch("replay-study");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc";
+  Outcome o = esc_command("run " + script + " --experiment tiny_study_fewer --runs 2 --generations 2 --threads 2 --out " +
+                          study.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const fs::path out = scratch("replay-study-out");
+  o = esc_command("replay " + (study / "time_constant=200ms").string() + " --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("in tiny (fitness"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  // Its genome files too, by default beside them; run 2's fitness is the condition's.
+  o = esc_command("replay " + (study / "no_inertia" / "SC" / "run-02.best.json").string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto rows = read_csv(study / "no_inertia" / "SC" / "replay-SC-run-02.csv");
+  ASSERT_GT(rows.size(), 1U);
+  const auto summary = read_json(study / "summary.json");
+  for (const auto& c : summary["conditions"]) {
+    if (c["name"] != "no_inertia") continue;
+    EXPECT_EQ(number(rows.back()[rows.front().size() - 2]), c["controllers"]["SC"]["runs"][1]["best_fitness"].get<double>());
+  }
+  // The study's own directory names no condition; an unknown one is named.
+  o = esc_command("replay " + study.string());
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("holds study `tiny_study_fewer`: replay one of its conditions"), std::string::npos) << o.output;
+  o = esc_command("replay " + (study / "time_constant=100ms").string());
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("time_constant=100ms is not a condition of the study `tiny_study_fewer`"), std::string::npos)
+      << o.output;
+}
+
 TEST(Replay, BadChoicesAreErrors) {
   const fs::path dir = tiny_run();
   Outcome o = esc_command("replay " + dir.string() + " --epochs 0");
