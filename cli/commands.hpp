@@ -28,6 +28,7 @@ struct RunOptions {
   std::vector<std::string> settings;         // KEY=VALUE
   std::vector<std::string> controllers;      // empty: every compared controller
   std::filesystem::path cache;               // empty: <out>/deps (dependency experiments' runs)
+  bool verbose = false;                      // a refused resume's details, beside its one line
 };
 
 int run_command(const RunOptions& options);

@@ -69,6 +69,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run.out, "output directory (default: runs/<experiment or study>-<time>)");
   run_cmd->add_option("--cache", run.cache,
                       "where experiments whose evolved controllers are used run, and are reused (default: <out>/deps)");
+  run_cmd->add_flag("--verbose", run.verbose,
+                    "with --resume: a refusal's details (the script's diagnostics, which files changed)");
   // One KEY=VALUE per --set, so that `--set epochs=2 FILE` leaves FILE to the command.
   run_cmd->add_option("--controllers", run.controllers,
                       "run only these compared controllers, C1,C2 (each one's results do not change)")

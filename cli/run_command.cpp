@@ -36,6 +36,18 @@ int resume_command(const RunOptions& o) {
              "--experiment and --out cannot be given with it (--generations G carries it on to G generations)\n");
     return kExitUsage;
   }
+  // Held from the start (rank 0 writes): a run still writing into the directory refuses
+  // this one before anything is read or printed.
+  std::shared_ptr<const store::DirectoryLock> lock;
+  std::error_code ec;
+  if (!follower_rank() && std::filesystem::is_directory(o.resume, ec)) {
+    try {
+      lock = store::DirectoryLock::acquire(o.resume);
+    } catch (const store::StoreError& e) {
+      complain("esc: error: {}\n", e.what());
+      return kExitBadInput;
+    }
+  }
   // Every check reads a copy: a refused resume leaves every byte of the directory as it was.
   std::vector<store::StoredExperiment> all;
   try {
@@ -59,7 +71,7 @@ int resume_command(const RunOptions& o) {
   if (stored.finished() && !o.generations) return complete();
   const auto script = resume_script(o, stored.script);
   if (!script) return kExitBadInput;
-  compiler::CompileResult compiled = load_script(*script);
+  compiler::CompileResult compiled = compile_to_resume(o, *script);
   if (!compiled.ok()) return kExitBadInput;
   const Target target = pick_target(compiled, *script, stored.name);
   if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
@@ -78,7 +90,7 @@ int resume_command(const RunOptions& o) {
     complain("esc: error: {} is damaged: it was carried on to {} generations\n", o.resume.string(), *carried);
     return kExitBadInput;
   }
-  if (!resumable(as_stored, sources_of(compiled), stored, *script, o.resume)) return kExitBadInput;
+  if (!resumable(as_stored, sources_of(compiled), stored, *script, o)) return kExitBadInput;
   const std::optional<int> extend = carry_on_to(o, as_stored);
   if (extend && *extend < 0) return kExitBadInput;
   if (!extend && stored.finished()) return complete();

@@ -1,5 +1,6 @@
 #include "cli/run_support.hpp"
 
+#include <algorithm>
 #include <ctime>
 
 #include <unistd.h>
@@ -77,14 +78,55 @@ std::optional<std::filesystem::path> resume_script(const RunOptions& o, const st
   return std::nullopt;
 }
 
+compiler::CompileResult compile_to_resume(const RunOptions& o, const std::filesystem::path& script) {
+  compiler::CompileResult compiled = compiler::compile_file(script, default_compile_options());
+  const std::string diagnostics =
+      compiler::render_all(compiled.diagnostics, compiled.sources, isatty(STDERR_FILENO) != 0);
+  if (compiled.ok()) {
+    if (!compiled.diagnostics.empty()) complain("{}", diagnostics);
+    return compiled;
+  }
+  const auto errors = std::count_if(compiled.diagnostics.begin(), compiled.diagnostics.end(),
+                                    [](const compiler::Diagnostic& d) { return d.severity == compiler::Severity::Error; });
+  complain("esc: error: {} no longer compiles ({} error{}{}); the run in {} resumes only with the script it started "
+           "with (a copy is in {}/sources)\n",
+           script.string(), errors, errors == 1 ? "" : "s", o.verbose ? "" : ", shown with --verbose", o.resume.string(),
+           o.resume.string());
+  if (o.verbose) complain("{}", diagnostics);
+  return compiled;
+}
+
+namespace {
+
+// The files of `now` whose text the run did not read, and the files it read that `now`
+// does not hold: what a content-hash mismatch comes from.
+std::vector<std::string> changed_sources(const std::vector<store::SourceFile>& now,
+                                         const std::vector<store::SourceFile>& then) {
+  const auto holds = [](const std::vector<store::SourceFile>& files, const store::SourceFile& f) {
+    return std::any_of(files.begin(), files.end(), [&](const store::SourceFile& g) { return g.text == f.text; });
+  };
+  std::vector<std::string> changed;
+  for (const store::SourceFile& f : now)
+    if (!holds(then, f)) changed.push_back(fmt::format("changed or new: {}", f.name.string()));
+  for (const store::SourceFile& f : then)
+    if (!holds(now, f)) changed.push_back(fmt::format("as the run read it: {}", f.name.string()));
+  return changed;
+}
+
+}  // namespace
+
 bool resumable(const eval::ExperimentSpec& spec, const std::vector<store::SourceFile>& sources,
-               const store::StoredExperiment& stored, const std::filesystem::path& script,
-               const std::filesystem::path& dir) {
+               const store::StoredExperiment& stored, const std::filesystem::path& script, const RunOptions& o) {
+  const std::filesystem::path& dir = o.resume;
   const std::string hash = store::campaign_hash(spec.name, sources);
   if (hash != stored.content_hash) {
-    complain("esc: error: {} has changed since the run in {} started (content hash {}, stored {}); a run resumes "
-             "only with the script it started with (a copy is in {}/sources)\n",
-             script.string(), dir.string(), hash, stored.content_hash, dir.string());
+    complain("esc: error: {} has changed since the run in {} started; a run resumes only with the script it started "
+             "with (a copy is in {}/sources{})\n",
+             script.string(), dir.string(), dir.string(), o.verbose ? "" : "; --verbose names the files");
+    if (o.verbose) {
+      for (const std::string& line : changed_sources(sources, stored.sources)) complain("  {}\n", line);
+      complain("  content hash {}, stored {}\n", hash, stored.content_hash);
+    }
     return false;
   }
   if (spec.resolved_settings == stored.settings) return true;

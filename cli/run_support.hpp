@@ -56,12 +56,16 @@ namespace esc::cli {
 [[nodiscard]] std::optional<std::filesystem::path> resume_script(const RunOptions& o,
                                                                  const std::filesystem::path& stored);
 
+// `script` compiled to resume the run in `o.resume`. When it does not compile, one line says
+// so (the diagnostics follow with --verbose); warnings are printed as a run prints them.
+[[nodiscard]] compiler::CompileResult compile_to_resume(const RunOptions& o, const std::filesystem::path& script);
+
 // Whether `spec` (compiled from `script` and its `sources`, with the stored overrides) is
-// what the run in `dir` started with: the same content hash and resolved settings. Prints
-// what differs otherwise.
+// what the run in `o.resume` started with: the same content hash and resolved settings.
+// Prints what differs otherwise, in one line (which files changed follow with --verbose).
 [[nodiscard]] bool resumable(const eval::ExperimentSpec& spec, const std::vector<store::SourceFile>& sources,
                              const store::StoredExperiment& stored, const std::filesystem::path& script,
-                             const std::filesystem::path& dir);
+                             const RunOptions& o);
 
 // Whether `spec`'s dependencies, found in `cache`, gave what the run in `dir` started with
 // (the stored inputs hash); prints the problem otherwise.

@@ -142,7 +142,7 @@ int resume_study(const RunOptions& o, std::vector<store::StoredExperiment> all) 
   if (static_cast<std::size_t>(finished) == stored.size() && !o.generations) return complete();
   const auto script = resume_script(o, first.script);
   if (!script) return kExitBadInput;
-  compiler::CompileResult compiled = load_script(*script);
+  compiler::CompileResult compiled = compile_to_resume(o, *script);
   if (!compiled.ok()) return kExitBadInput;
   const auto it = std::find_if(compiled.studies.begin(), compiled.studies.end(),
                                [&](const eval::StudySpec& s) { return s.name == name; });
@@ -177,7 +177,7 @@ int resume_study(const RunOptions& o, std::vector<store::StoredExperiment> all) 
                stored[i].condition->name, *carried[i]);
       return kExitBadInput;
     }
-    if (!resumable(as_stored, sources, stored[i], *script, o.resume)) return kExitBadInput;
+    if (!resumable(as_stored, sources, stored[i], *script, o)) return kExitBadInput;
     extend[i] = carry_on_to(o, as_stored);
     if (extend[i] && *extend[i] < 0) return kExitBadInput;
     any = any || extend[i] || !stored[i].finished();

@@ -323,8 +323,10 @@ ResultsDb::ResultsDb(sql::Database db, fs::path file) : db_(std::move(db)), file
 
 ResultsDb ResultsDb::create_empty(const fs::path& dir, const LaunchInfo& launch) {
   const fs::path file = dir / kDatabaseFile;
+  auto lock = DirectoryLock::acquire(dir);
   if (fs::exists(file)) throw StoreError(fmt::format("{} already exists; results are never overwritten", file.string()));
   ResultsDb r(sql::Database(file, sql::Database::Mode::Create), file);
+  r.lock_ = std::move(lock);
   sql::Database& db = r.db_;
   // WAL: a commit is one append to the log, atomic after a crash; synchronous=FULL makes it
   // durable across power loss too (one fsync per generation costs nothing here).
@@ -457,8 +459,11 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     return NothingStored(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
   };
   if (fs::file_size(file, ec) == 0 && !ec) throw nothing();
+  // Reading needs no lock (export and report read a running run); writing excludes others.
+  std::shared_ptr<const DirectoryLock> lock = read_only ? nullptr : DirectoryLock::acquire(dir);
   try {
     ResultsDb r(sql::Database(file, read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite), file);
+    r.lock_ = std::move(lock);
     auto id = r.db_.prepare("PRAGMA application_id");
     const std::int64_t app = id.step() ? id.int64(0) : 0;
     if (app != kApplicationId) {

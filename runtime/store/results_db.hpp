@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -18,6 +19,7 @@
 
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/study.hpp"
+#include "runtime/store/directory_lock.hpp"
 #include "runtime/store/sqlite.hpp"
 
 namespace esc::store {
@@ -196,6 +198,7 @@ class ResultsDb {
   void upgrade();   // to kSchemaVersion
   bool column_exists(const std::string& table, const std::string& column);
 
+  std::shared_ptr<const DirectoryLock> lock_;   // written to: no other process writes beside it
   int schema_version_ = kSchemaVersion;
   bool has_saturated_ = true;   // generations.saturated (databases before schema 5 lack it)
 

@@ -25,20 +25,24 @@ std::string csv_line(const eval::GenerationStats& g) {
 
 std::pair<fs::path, ResultsDb> create_new(fs::path dir, const eval::ExperimentSpec& spec,
                                           const std::vector<SourceFile>& sources, const LaunchInfo& launch) {
-  create_output_directory(dir);
+  const auto lock = create_output_directory(dir);
   ResultsDb db = ResultsDb::create(dir, spec, sources, launch);
   return {std::move(dir), std::move(db)};
 }
 
 }  // namespace
 
-void create_output_directory(const fs::path& dir) {
+std::shared_ptr<const DirectoryLock> create_output_directory(const fs::path& dir) {
   std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir.string(), ec.message()));
+  // Locked before it is judged: a run that started into it and stored nothing yet is not
+  // a directory that holds nothing.
+  auto lock = DirectoryLock::acquire(dir);
   // Empty, or holding only `deps/` (the runs of the experiments whose evolved controllers
   // this one uses, written first by `esc run`).
-  bool fresh = !fs::exists(dir, ec);
-  if (!fresh && fs::is_directory(dir, ec)) {
-    fresh = true;
+  bool fresh = true;
+  if (fs::is_directory(dir, ec)) {
     for (const auto& entry : fs::directory_iterator(dir, ec))
       if (entry.path().filename() != "deps") fresh = false;
   }
@@ -55,6 +59,7 @@ void create_output_directory(const fs::path& dir) {
         "choose another --out or remove it", dir.string()));
   fs::create_directories(dir / "sources", ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir.string(), ec.message()));
+  return lock;
 }
 
 nlohmann::ordered_json write_sources(const fs::path& dir, const std::vector<SourceFile>& sources) {

@@ -83,7 +83,7 @@ class RunDirectory final : public eval::CampaignListener {
 // Makes `dir` with its `sources/` for a new run: it must not exist, hold only `deps/`, or
 // hold a run that committed no generation (holds_nothing_stored), whose files it removes
 // (results are never overwritten). Throws std::runtime_error otherwise.
-void create_output_directory(const std::filesystem::path& dir);
+[[nodiscard]] std::shared_ptr<const DirectoryLock> create_output_directory(const std::filesystem::path& dir);
 
 // Writes every source file to DIR/sources/NN-<file>; returns the list settings.json shows.
 [[nodiscard]] nlohmann::ordered_json write_sources(const std::filesystem::path& dir,

@@ -22,7 +22,7 @@ nlohmann::ordered_json settings_object(const std::vector<eval::ConditionSetting>
 // The database just created, loaded.
 std::vector<StoredExperiment> created(const fs::path& dir, const eval::StudySpec& study,
                                       const std::vector<SourceFile>& sources, const std::vector<LaunchInfo>& launches) {
-  create_output_directory(dir);
+  const auto lock = create_output_directory(dir);
   (void)ResultsDb::create_study(dir, study, sources, launches);
   return study_conditions(ResultsDb::open(dir).load());
 }
@@ -63,7 +63,7 @@ StudyDirectory::StudyDirectory(fs::path dir, const eval::StudySpec& study, const
 }
 
 StudyDirectory::StudyDirectory(fs::path dir, std::vector<StoredExperiment> stored)
-    : dir_(std::move(dir)), stored_(study_conditions(std::move(stored))) {
+    : dir_(std::move(dir)), lock_(DirectoryLock::acquire(dir_)), stored_(study_conditions(std::move(stored))) {
   name_ = stored_.front().condition->study;
   seed_ = stored_.front().condition->study_seed;
   for (const StoredExperiment& e : stored_) {

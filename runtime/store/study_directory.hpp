@@ -55,6 +55,7 @@ class StudyDirectory {
   void write_summary() const;
 
   std::filesystem::path dir_;
+  std::shared_ptr<const DirectoryLock> lock_;   // held while it runs: no other process writes in it
   std::string name_;
   std::uint64_t seed_ = 0;
   std::vector<StoredExperiment> stored_;     // in the study's order

@@ -8,6 +8,10 @@
 #include <map>
 #include <string>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "runtime/store/sqlite.hpp"
@@ -32,16 +36,19 @@ std::map<std::string, std::string> contents(const fs::path& dir) {
   return all;
 }
 
-// Resumes `dir`, expecting a refusal (exit 1, one line naming `why`) that changes nothing.
-void expect_refused_untouched(const fs::path& dir, const std::string& why) {
+// Resumes `dir` (with `more` arguments), expecting a refusal (exit 1, naming `why` in one
+// line, or in `lines` with --verbose) that changes nothing. Returns what it printed.
+std::string expect_refused_untouched(const fs::path& dir, const std::string& why, const std::string& more = "",
+                                     long lines = 1) {
   const auto before = contents(dir);
-  const Outcome o = cli_test::esc("run --resume " + dir.string());
+  const Outcome o = cli_test::esc("run --resume " + dir.string() + more);
   EXPECT_EQ(o.status, 1) << o.output;
   EXPECT_NE(o.output.find(why), std::string::npos) << o.output;
-  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), lines) << o.output;
   const auto after = contents(dir);
   EXPECT_EQ(before.size(), after.size());
   for (const auto& [name, text] : before) EXPECT_TRUE(after.count(name) && after.at(name) == text) << name;
+  return o.output;
 }
 
 TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
@@ -86,7 +93,30 @@ TEST(Integrity, ChangedScriptRefusalChangesNothing) {
   ASSERT_GE(child, 0);
   ASSERT_GE(kill_when_committed(child, changed, 3).seen, 3);
   std::ofstream(src / "tiny.esc", std::ios::app) << "\n// an edit\n";
-  expect_refused_untouched(changed, "has changed");
+  EXPECT_NE(expect_refused_untouched(changed, "has changed").find("--verbose names the files"), std::string::npos);
+  // --verbose names the file and the hashes; a carry-on is refused alike.
+  const std::string verbose = expect_refused_untouched(changed, "has changed", " --verbose", 4);
+  EXPECT_NE(verbose.find("changed or new: " + (src / "tiny.esc").string()), std::string::npos) << verbose;
+  EXPECT_NE(verbose.find("content hash"), std::string::npos) << verbose;
+  expect_refused_untouched(changed, "has changed", " --generations 300");
+  // A script that no longer compiles: one line, its diagnostics with --verbose.
+  std::ofstream(src / "tiny.esc", std::ios::app) << "experiment broken {\n";
+  EXPECT_NE(expect_refused_untouched(changed, "no longer compiles (1 error, shown with --verbose)").find("resumes only"),
+            std::string::npos);
+  const std::string diagnostics = expect_refused_untouched(changed, "no longer compiles (1 error)", " --verbose", 8);
+  EXPECT_NE(diagnostics.find("missing `}`"), std::string::npos) << diagnostics;
+}
+
+// A carry-on that cannot be done (fewer generations than the run has) is refused before
+// anything is written.
+TEST(Integrity, RefusedCarryOnChangesNothing) {
+  const fs::path dir = scratch("integrity-carry-on");
+  ASSERT_EQ(cli_test::esc("run " + tiny() + " --generations 3 --out " + dir.string()).status, 0);
+  const auto before = contents(dir);
+  const Outcome o = cli_test::esc("run --resume " + dir.string() + " --generations 2");
+  EXPECT_NE(o.status, 0) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  EXPECT_EQ(contents(dir), before);
 }
 
 TEST(Integrity, EmptyDatabaseHoldsNothingAndCanBeReused) {
@@ -102,6 +132,32 @@ TEST(Integrity, EmptyDatabaseHoldsNothingAndCanBeReused) {
   const Outcome again = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
   EXPECT_EQ(again.status, 1) << again.output;
   EXPECT_NE(again.output.find("already exists"), std::string::npos) << again.output;
+}
+
+// A run that has just started into a directory (its esc.db still empty) holds it: another
+// `esc run --out` there is refused instead of deleting its files, and so is a resume; once
+// it ends (here: the lock this test holds is released), the directory can be reused.
+TEST(Integrity, ADirectoryInUseIsNeitherReusedNorResumed) {
+  const fs::path dir = scratch("integrity-in-use");
+  fs::create_directories(dir / "sources");
+  std::ofstream(dir / "esc.db").flush();
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const auto before = contents(dir);
+  Outcome o = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("is in use by another esc process"), std::string::npos) << o.output;
+  o = cli_test::esc("run --resume " + dir.string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("is in use by another esc process"), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  EXPECT_EQ(contents(dir), before);
+  EXPECT_TRUE(fs::exists(dir / "sources"));
+  ::close(fd);
+  o = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
+  EXPECT_EQ(o.status, 0) << o.output;
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
 }
 
 }  // namespace
