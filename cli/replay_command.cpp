@@ -136,6 +136,14 @@ std::optional<Subject> genome_subject(const fs::path& file, const ReplayOptions&
     s.run = j.at("run").get<int>() - 1;
     s.genome = j.at("genome").get<std::vector<double>>();
     s.fitness = j.at("fitness").get<double>();
+    if (j.contains("checksum")) {   // files of esc before checksums have none
+      const std::string tree = j.contains("tree") ? j["tree"].get<std::string>() : "";
+      if (j["checksum"].get<std::string>() != store::genome_checksum(s.genome, *s.fitness,
+                                                                     store::seed_from_json(j.at("evaluation_seed")), tree)) {
+        complain("esc: error: {} is damaged: its genome, fitness or seed does not match its checksum\n", file.string());
+        return std::nullopt;
+      }
+    }
     if (o.seed) s.seed = *o.seed;
     else if (j.contains("evaluation_seed")) s.seed = store::seed_from_json(j["evaluation_seed"]);
     else {

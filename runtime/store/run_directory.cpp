@@ -89,6 +89,17 @@ std::uint64_t content_hash(std::string_view text, std::uint64_t h) noexcept {
   return h;
 }
 
+std::string genome_checksum(const std::vector<double>& genome, double fitness, std::uint64_t evaluation_seed,
+                            std::string_view tree) {
+  const auto bytes = [](const auto& value) {
+    return std::string_view(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  std::uint64_t h = content_hash(bytes(fitness));
+  h = content_hash(bytes(evaluation_seed), h);
+  for (const double g : genome) h = content_hash(bytes(g), h);
+  return fmt::format("{:016x}", content_hash(tree, h));
+}
+
 void write_atomically(const fs::path& file, std::string_view text) {
   const fs::path tmp = fs::path(file).concat(".tmp");
   {
@@ -204,6 +215,8 @@ void RunDirectory::best_traced(const control::ControllerSpec& controller, const 
 
 void RunDirectory::write_best(const std::string& controller, const std::string& architecture,
                               const eval::RunResult& run) {
+  const std::uint64_t evaluation_seed =
+      eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
   nlohmann::ordered_json best = {{"controller", controller},
                                  {"architecture", architecture},
                                  {"run", run.run + 1},
@@ -213,10 +226,10 @@ void RunDirectory::write_best(const std::string& controller, const std::string& 
                                  // re-simulates it from this file alone.
                                  {"generation", run.best_generation},
                                  {"individual", run.best_index},
-                                 {"evaluation_seed", seed_json(eval::evaluation_seed(run.seed, run.best_generation,
-                                                                                     static_cast<std::size_t>(run.best_index)))},
+                                 {"evaluation_seed", seed_json(evaluation_seed)},
                                  {"genome", run.best_genome}};
   if (!run.best_tree.empty()) best["tree"] = run.best_tree;
+  best["checksum"] = genome_checksum(run.best_genome, run.best_fitness, evaluation_seed, run.best_tree);
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");
   if (!run.best_tree.empty())
     write_atomically(run_file(controller, run.run, ".best.esc"), best_tree_script(controller, architecture, run));

@@ -2,6 +2,7 @@
 // paths, legend) and a CSV whose rows are the replay stored in esc.db, value for value; a
 // genome file replays in another script's experiment; bad choices are errors, not crashes.
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -232,6 +233,28 @@ TEST(Replay, AStudysConditionFromItsDirectory) {
   o = esc_command("replay " + (study / "time_constant=100ms").string());
   EXPECT_EQ(o.status, 2) << o.output;
   EXPECT_NE(o.output.find("time_constant=100ms is not a condition of the study `tiny_study_fewer`"), std::string::npos)
+      << o.output;
+}
+
+// A genome file carries a checksum of what a replay uses: a gene changed in the last digit
+// is refused, never replayed as if it were the run's.
+TEST(Replay, ADamagedGenomeFileIsRefused) {
+  const fs::path dir = tiny_run();
+  const nlohmann::json intact = read_json(dir / "CC" / "run-01.best.json");
+  ASSERT_TRUE(intact.contains("checksum"));
+  const fs::path copies = scratch("replay-damaged");
+  fs::create_directories(copies);
+  std::ofstream(copies / "intact.json") << intact.dump(1);
+  nlohmann::json damaged = intact;
+  damaged["genome"][0] = std::nextafter(intact["genome"][0].get<double>(), 2.0);
+  std::ofstream(copies / "damaged.json") << damaged.dump(1);
+  const std::string elsewhere = " --script " + tiny() + " --out " + copies.string();
+  Outcome o = esc_command("replay " + (copies / "intact.json").string() + elsewhere);
+  EXPECT_EQ(o.status, 0) << o.output;
+  o = esc_command("replay " + (copies / "damaged.json").string() + elsewhere);
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("damaged.json is damaged: its genome, fitness or seed does not match its checksum"),
+            std::string::npos)
       << o.output;
 }
 
