@@ -1,7 +1,9 @@
-// End-to-end integrity of stored runs: a bit flipped in a killed run's stored population is
-// refused on resume, naming the run and what is damaged; every kind of refused resume
-// (damaged state, changed script, nothing stored) leaves every byte of the directory as it
-// was; a directory whose esc.db holds nothing can be run into again.
+// End-to-end integrity of stored runs: a bit flipped in a killed run's stored population
+// (ES parents or GP trees) is refused on resume, naming the run and what is damaged; every
+// kind of refused resume or carry-on (damaged state, changed script, nothing stored, a
+// directory in use) leaves every byte of the directory as it was and says why in one line
+// (details with --verbose); a directory whose esc.db holds nothing can be run into again,
+// unless another esc process is writing into it.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -51,28 +53,38 @@ std::string expect_refused_untouched(const fs::path& dir, const std::string& why
   return o.output;
 }
 
-TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
-  const fs::path killed = scratch("integrity-killed");
-  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 20, 400));
+// Flips one bit, `offset` bytes into the population blob that `query` (controller name, run,
+// blob) selects first in a killed run's database; returns which run it belongs to.
+std::string flip_population_bit(const fs::path& killed, const std::string& query, std::size_t offset) {
   std::string population;
   std::string which;
   {
     // The last connection folds the killed run's log into esc.db (what a copy of the
     // directory would hold after any esc command read it).
     esc::store::sql::Database db(killed / "esc.db", esc::store::sql::Database::Mode::ReadWrite);
-    auto q = db.prepare(
-        "SELECT c.name, s.run, s.population FROM run_state s JOIN controllers c ON c.id = s.controller_id "
-        "ORDER BY s.controller_id, s.run LIMIT 1");
-    ASSERT_TRUE(q.step());
+    auto q = db.prepare(query);
+    EXPECT_TRUE(q.step());
     which = "of run " + std::to_string(q.int64(1) + 1) + " of " + q.text(0);
     population = std::string(q.bytes(2));
   }
-  ASSERT_GT(population.size(), 64U);
+  EXPECT_GT(population.size(), offset);
   std::string db = bytes_of(killed / "esc.db");
   const std::size_t at = db.rfind(population);
-  ASSERT_NE(at, std::string::npos);
-  db[at + 44] = static_cast<char>(db[at + 44] ^ 0x10);   // a gene's mantissa
+  EXPECT_NE(at, std::string::npos);
+  if (at == std::string::npos || population.size() <= offset) return which;
+  db[at + offset] = static_cast<char>(db[at + offset] ^ 0x10);
   std::ofstream(killed / "esc.db", std::ios::binary | std::ios::trunc) << db;
+  return which;
+}
+
+TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
+  const fs::path killed = scratch("integrity-killed");
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 20, 400));
+  const std::string which = flip_population_bit(
+      killed,
+      "SELECT c.name, s.run, s.population FROM run_state s JOIN controllers c ON c.id = s.controller_id "
+      "ORDER BY s.controller_id, s.run LIMIT 1",
+      44);   // a gene's mantissa
 
   expect_refused_untouched(killed, "does not match its checksum");
   const Outcome o = cli_test::esc("run --resume " + killed.string());
@@ -81,6 +93,20 @@ TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
   // Report and export refuse it too.
   EXPECT_EQ(cli_test::esc("export " + killed.string() + " --format csv").status, 1);
   EXPECT_EQ(cli_test::esc("report " + killed.string()).status, 1);
+}
+
+// The same for a GP run's stored trees.
+TEST(Integrity, FlippedTreePopulationBitIsRefused) {
+  const fs::path killed = scratch("integrity-killed-gp");
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny_gp(), killed, 240, 600));
+  const std::string which = flip_population_bit(
+      killed,
+      "SELECT c.name, s.run, s.population FROM tree_state s JOIN controllers c ON c.id = s.controller_id "
+      "ORDER BY s.controller_id, s.run LIMIT 1",
+      40);
+  const std::string refused = expect_refused_untouched(killed, "does not match its checksum");
+  EXPECT_NE(refused.find("the population to continue from (GP trees)"), std::string::npos) << refused;
+  EXPECT_NE(refused.find(which), std::string::npos) << refused;
 }
 
 TEST(Integrity, ChangedScriptRefusalChangesNothing) {
