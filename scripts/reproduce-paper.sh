@@ -5,14 +5,18 @@
 #   scripts/reproduce-paper.sh [--full] [CAMPAIGN...]   run each as committed; its summary.json
 #                                                        must equal the committed one byte for byte
 #   scripts/reproduce-paper.sh --quick [CAMPAIGN...]    each command shortened (2 runs x 3
-#                                                        generations x 2 epochs): minutes for all,
-#                                                        checks that every campaign still runs
+#                                                        generations x 2 epochs; or the campaign's
+#                                                        `quick` command, if it has one): minutes
+#                                                        for all, checks that every campaign runs
 #   scripts/reproduce-paper.sh --full --write CAMPAIGN  run it and store what it gives in its
 #                                                        directory (summary.json, export.csv,
-#                                                        usage.csv, figures/, version, machine, cost.md)
+#                                                        usage.csv, figures/, version, machine,
+#                                                        cost.md; analysis.md from its `analysis`)
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
-# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>.
+# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>. A
+# campaign's optional `analysis` file is a command reading the finished run in $OUT; its
+# output is stored as analysis.md.
 # Exit status: 0 every campaign ran (and, in full, reproduced), 1 otherwise, 2 bad usage.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,7 +29,7 @@ for arg in "$@"; do
     --quick) mode=quick ;;
     --full) mode=full ;;
     --write) write=1 ;;
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "reproduce-paper: unknown option $arg (try --help)" >&2; exit 2 ;;
     *) campaigns+=("${arg%/}") ;;
   esac
@@ -106,6 +110,9 @@ store_results() {
   local script
   script=$(awk '{for (i = 1; i <= NF; ++i) if ($i ~ /\.esc$/) {print $i; exit}}' "$dir/command")
   cost_report "$name" "$out" "$seconds" "$script" "$dir/cost.md"
+  if [ -f "$dir/analysis" ]; then
+    OUT=$out bash "$dir/analysis" >"$dir/analysis.md"
+  fi
 }
 
 failed=0
@@ -122,10 +129,17 @@ for name in "${campaigns[@]}"; do
   mkdir -p "$(dirname "$OUT")"
   export OUT
   args=()
-  [ "$mode" = quick ] && args=("${quick_args[@]}")
-  echo "== $name ($mode): $(grep -v '^#' "$dir/command" | tr -s ' \\\n' ' ')"
+  command=$dir/command
+  if [ "$mode" = quick ]; then
+    args=("${quick_args[@]}")
+    if [ -f "$dir/quick" ]; then
+      command=$dir/quick
+      args=()
+    fi
+  fi
+  echo "== $name ($mode): $(grep -v '^#' "$command" | tr -s ' \\\n' ' ')"
   start=$(date +%s%N)
-  if ! bash "$dir/command" "${args[@]}" >"$scratch/$name.log" 2>&1; then
+  if ! bash "$command" "${args[@]}" >"$scratch/$name.log" 2>&1; then
     echo "FAILED $name: the command did not finish; last lines:"
     tail -5 "$scratch/$name.log"
     failed=1
