@@ -106,6 +106,8 @@ store_results() {
     echo "memory: $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo)"
     echo "system: $(uname -sr), $(. /etc/os-release && echo "$PRETTY_NAME")"
     echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+    # Other work on the machine slows the wall time (cost.md) and changes no result.
+    echo "load average when it finished (1, 5, 15 min): $(cut -d' ' -f1-3 /proc/loadavg)"
   } >"$dir/machine"
   local script
   script=$(awk '{for (i = 1; i <= NF; ++i) if ($i ~ /\.esc$/) {print $i; exit}}' "$dir/command")
