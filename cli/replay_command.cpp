@@ -21,6 +21,7 @@
 #include "cli/replay_sources.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
+#include "runtime/eval/settings_history.hpp"
 #include "runtime/report/trajectory_csv.hpp"
 #include "runtime/report/trajectory_svg.hpp"
 #include "runtime/store/run_directory.hpp"
@@ -372,7 +373,7 @@ int replay_command(const ReplayOptions& o) {
     spec = pick_experiment(compiled, o.script, o.experiment);
   }
   if (spec == nullptr || !apply_overrides(settings, *spec)) return kExitBadInput;
-  if (o.script.empty() && spec->resolved_settings != stored->settings) {
+  if (o.script.empty() && !eval::same_settings(spec->resolved_settings, stored->settings)) {
     complain("esc: error: the stored sources of {} no longer compile to the settings the run used\n", dir.string());
     return kExitBadInput;
   }

@@ -12,6 +12,7 @@
 #include "cli/progress.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
+#include "runtime/eval/settings_history.hpp"
 #include "runtime/store/seed_json.hpp"
 
 namespace esc::cli {
@@ -129,10 +130,10 @@ bool resumable(const eval::ExperimentSpec& spec, const std::vector<store::Source
     }
     return false;
   }
-  if (spec.resolved_settings == stored.settings) return true;
+  if (eval::same_settings(spec.resolved_settings, stored.settings)) return true;
   for (const auto& [key, value] : spec.resolved_settings) {
     const auto it = stored.settings.find(key);
-    if (it == stored.settings.end() || it->second != value) {
+    if (it == stored.settings.end() ? !eval::as_before_it_existed(key, value) : it->second != value) {
       complain("esc: error: setting `{}` is now `{}` but the run in {} used `{}`; cannot resume\n", key, value,
                dir.string(), it == stored.settings.end() ? "nothing" : it->second);
       return false;

@@ -129,7 +129,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
       if (noise) observe_noise(seed, epoch, step, frame);
       const control::WheelCommand cmd = ctl.step(frame);
       frame[expr::slot::acting] = controller.choice_id(ctl.last_action());
-      world_.step(cmd.left, cmd.right);
+      world_.step(cmd.left, cmd.right, rng);
       sense(rng);
       ++result.steps;
       result.fitness = add_term(result.fitness, s.fitness.step.eval(frame));

@@ -1,5 +1,6 @@
 #include "runtime/eval/fingerprint.hpp"
 
+#include "runtime/eval/settings_history.hpp"
 #include "runtime/evo/gp/primitive_set.hpp"
 
 #include <span>
@@ -63,7 +64,8 @@ class Writer {
 std::string fingerprint(const ExperimentSpec& spec) {
   Writer w;
   w.line("results_revision", std::to_string(kResultsRevision));
-  for (const auto& [key, value] : spec.resolved_settings) w.line("setting." + key, value);
+  for (const auto& [key, value] : spec.resolved_settings)
+    if (!as_before_it_existed(key, value)) w.line("setting." + key, value);   // cache entries of older esc stay valid
   const sim::ArenaSpec& a = spec.arena;
   w.numbers("arena.size", std::initializer_list<double>{a.width_m, a.height_m, a.sweep_cell_m, a.reach_radius_m});
   for (const auto& b : a.boxes)

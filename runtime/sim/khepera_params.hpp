@@ -8,6 +8,9 @@ struct MotorParams {
   double max_speed_mps = 0.08;      // command 1.0 (Khepera: about 8 mm/s per unit, +-10)
   double time_constant_s = 0.1;     // first-order lag of the wheel speed behind the command
   double max_accel_mps2 = 1.0;      // acceleration limit of each wheel
+  // Speed error of each wheel, a fraction of its commanded speed (Gaussian sd, drawn per
+  // wheel at each control step); 0: the wheels follow their commands exactly.
+  double noise_sd = 0.0;
 };
 
 struct IrParams {

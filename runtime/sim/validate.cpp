@@ -85,6 +85,8 @@ constexpr RuleInfo kRules[] = {
      "a lag is never negative"},
     {Rule::MaxAccel, O::Robot, "max_accel", {}, R::Above, D::Acceleration, "robot.motor.max_accel_mps2",
      "the wheels can speed up"},
+    {Rule::MotorNoise, O::Robot, "motor_noise", {}, R::AtLeast, D::Number, "robot.motor.noise_sd",
+     "a standard deviation is never negative"},
     {Rule::IrRange, O::Robot, "ir_range", {}, R::Above, D::Length, "robot.ir.range_m", "a sensor sees some distance"},
     {Rule::IrApertureMin, O::Robot, "ir_aperture", {}, R::AtLeast, D::Angle, "robot.ir.aperture_rad",
      "an aperture is never negative"},
@@ -326,6 +328,7 @@ std::vector<Problem> robot_problems(const KheperaParams& robot) {
   const bool speed = c.require(Rule::MaxSpeed, robot.motor.max_speed_mps, 0.0);
   c.require(Rule::TimeConstant, robot.motor.time_constant_s, 0.0);
   c.require(Rule::MaxAccel, robot.motor.max_accel_mps2, 0.0);
+  c.require(Rule::MotorNoise, robot.motor.noise_sd, 0.0);
   c.require(Rule::IrRange, robot.ir.range_m, 0.0);
   if (c.require(Rule::IrApertureMin, robot.ir.aperture_rad, 0.0))
     c.require(Rule::IrApertureMax, robot.ir.aperture_rad, std::numbers::pi);

@@ -44,7 +44,7 @@ enum class Rule {
   // the robot in the arena
   RobotFits, StartClearOfWalls, StartClearOfCylinder, StartClearOfBlock,
   // the robot alone
-  BodyRadius, BodyHeight, Mass, WheelBase, WheelBaseWithinBody, MaxSpeed, TimeConstant, MaxAccel,
+  BodyRadius, BodyHeight, Mass, WheelBase, WheelBaseWithinBody, MaxSpeed, TimeConstant, MaxAccel, MotorNoise,
   IrRange, IrApertureMin, IrApertureMax, IrRaysMin, IrRaysMax, IrNoise, ControlStep, SubstepsMin,
   SubstepsMax, LightHalfDistance, LightNoise, EnergyDischargeMin, EnergyDischargeMax,
   EnergyRechargeMin, EnergyRechargeMax, ContactLookAhead,

@@ -61,9 +61,9 @@ struct World::Impl {
 
   // Motors, drive and body substep by substep; the floor counts energy at every substep
   // and observes the rest at the end of the step.
-  void step(double left_command, double right_command) {
-    const double target_l = motor.target(left_command);
-    const double target_r = motor.target(right_command);
+  void step(double left_command, double right_command, Rng* rng) {
+    const double target_l = motor.noisy(motor.target(left_command), rng);
+    const double target_r = motor.noisy(motor.target(right_command), rng);
     const Vec2 start = body.position();
     const Vec2 start_heading = body.heading();
     double vl = state.wheel_speed_mps[0];
@@ -121,7 +121,13 @@ Pose World::begin_epoch(Rng& rng) {
   impl_->reset(pose);
   return pose;
 }
-void World::step(double left_command, double right_command) { impl_->step(left_command, right_command); }
+void World::step(double left_command, double right_command, Rng& rng) {
+  impl_->step(left_command, right_command, &rng);
+}
+void World::step(double left_command, double right_command) {
+  if (impl_->motor.noisy()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
+  impl_->step(left_command, right_command, nullptr);
+}
 void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng) const {
   impl_->ir.read(impl_->state.pose, out, rng);
 }

@@ -62,7 +62,11 @@ class World {
   Pose begin_epoch(Rng& rng);
 
   // One control step: commands in [-1, 1] (clamped), motors and body integrated over
-  // physics_substeps fixed steps. No allocation.
+  // physics_substeps fixed steps; the motors' speed errors drawn from `rng` when the robot
+  // has motor noise (left wheel first). No allocation.
+  void step(double left_command, double right_command, Rng& rng);
+  // The same for a robot without motor noise, which draws nothing (tests, benchmarks);
+  // throws std::logic_error for a robot with motor noise.
   void step(double left_command, double right_command);
 
   // IR proximity readings, 0 (nothing within range) .. 1 (touching); noise drawn from
