@@ -12,6 +12,12 @@
 #                                                        directory (summary.json, export.csv,
 #                                                        usage.csv, figures/, version, machine,
 #                                                        cost.md; analysis.md from its `analysis`)
+#   scripts/reproduce-paper.sh --write --from DIR CAMPAIGN
+#                                                        store the run kept in DIR/CAMPAIGN (by KEEP)
+#                                                        instead of running it: a campaign stopped
+#                                                        (a session's end, a crash) is resumed there
+#                                                        to the end first; its wall time is then
+#                                                        not measured
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
 # binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>. A
@@ -23,19 +29,36 @@ cd "$(dirname "$0")/.."
 
 mode=full
 write=0
+from=
 campaigns=()
+# `--from DIR` as two words too.
+args_in=("$@")
+set --
+for ((i = 0; i < ${#args_in[@]}; ++i)); do
+  if [ "${args_in[i]}" = --from ] && [ $((i + 1)) -lt ${#args_in[@]} ]; then
+    set -- "$@" "--from=${args_in[i + 1]}"
+    i=$((i + 1))
+  else
+    set -- "$@" "${args_in[i]}"
+  fi
+done
 for arg in "$@"; do
   case "$arg" in
     --quick) mode=quick ;;
     --full) mode=full ;;
     --write) write=1 ;;
-    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --from=*) from=${arg#--from=} ;;
     -*) echo "reproduce-paper: unknown option $arg (try --help)" >&2; exit 2 ;;
     *) campaigns+=("${arg%/}") ;;
   esac
 done
 if [ "$write" = 1 ] && [ "$mode" != full ]; then
   echo "reproduce-paper: --write stores full-length results only; drop --quick" >&2
+  exit 2
+fi
+if [ -n "$from" ] && [ "$write" != 1 ]; then
+  echo "reproduce-paper: --from DIR stores a kept run: give --write too" >&2
   exit 2
 fi
 
@@ -74,10 +97,13 @@ for line in open(bench):
 print(f"# Cost of campaign {name}\n")
 print("| wall time | control steps | cores | steps/s per core | core-hours | `esc bench --campaign` estimate |")
 print("|---|---|---|---|---|---|")
-core_hours = seconds * cores / 3600
-ratio = f" ({estimate / core_hours:.1f}x the cost measured)" if core_hours > 0 and estimate > 0 else ""
-print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {steps / (seconds * cores):,.0f} | {core_hours:.2f} "
-      f"| {estimate:.2f} core-hours at most{ratio} |")
+if seconds > 0:
+    core_hours = seconds * cores / 3600
+    ratio = f" ({estimate / core_hours:.1f}x the cost measured)" if core_hours > 0 and estimate > 0 else ""
+    print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {steps / (seconds * cores):,.0f} | {core_hours:.2f} "
+          f"| {estimate:.2f} core-hours at most{ratio} |")
+else:   # stored with --from: stopped and resumed, its wall time is not one measurement
+    print(f"| not measured (stopped and resumed) | {steps:,} | {cores} | - | - | {estimate:.2f} core-hours at most |")
 print("\nThe estimate counts every epoch at full length at the rate of random genomes; its lines:\n")
 print("```")
 print("\n".join(lines) if lines else "(none matched)")
@@ -123,6 +149,19 @@ for name in "${campaigns[@]}"; do
   if [ ! -f "$dir/command" ]; then
     echo "reproduce-paper: $name: no $dir/command" >&2
     failed=1
+    continue
+  fi
+  if [ -n "$from" ]; then
+    OUT=$from/$name
+    echo "== $name: the run kept in $OUT, finished there first"
+    if ! "$ESC" run --resume "$OUT" >"$scratch/$name.log" 2>&1; then
+      echo "FAILED $name: $OUT could not be finished; last lines:"
+      tail -5 "$scratch/$name.log"
+      failed=1
+      continue
+    fi
+    store_results "$name" "$OUT" 0
+    echo "stored $name in $dir (from $OUT)"
     continue
   fi
   OUT=$scratch/runs/$name
