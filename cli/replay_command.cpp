@@ -19,6 +19,7 @@
 #include "cli/load.hpp"
 #include "cli/replay_animation.hpp"
 #include "cli/replay_sources.hpp"
+#include "cli/run_support.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/settings_history.hpp"
@@ -139,7 +140,7 @@ std::optional<Subject> genome_subject(const fs::path& file, const ReplayOptions&
     s.fitness = j.at("fitness").get<double>();
     if (j.contains("checksum")) {   // files of esc before checksums have none
       const std::string tree = j.contains("tree") ? j["tree"].get<std::string>() : "";
-      if (j["checksum"].get<std::string>() != store::genome_checksum(s.genome, *s.fitness,
+      if (j["checksum"].get<std::string>() != store::genome_checksum(s.controller, s.run + 1, s.genome, *s.fitness,
                                                                      store::seed_from_json(j.at("evaluation_seed")), tree)) {
         complain("esc: error: {} is damaged: its genome, fitness or seed does not match its checksum\n", file.string());
         return std::nullopt;
@@ -273,6 +274,7 @@ struct RunLocation {
 
 RunLocation locate(fs::path dir) {
   std::error_code ec;
+  dir = fs::absolute(dir, ec).lexically_normal();   // `.` and `run-01.best.json` from inside
   if (dir.filename().empty()) dir = dir.parent_path();   // "DIR/"
   if (fs::exists(dir / store::kDatabaseFile, ec)) return {dir, {}, true};
   if (!dir.filename().empty() && fs::exists(dir.parent_path() / store::kDatabaseFile, ec))
@@ -373,6 +375,12 @@ int replay_command(const ReplayOptions& o) {
     spec = pick_experiment(compiled, o.script, o.experiment);
   }
   if (spec == nullptr || !apply_overrides(settings, *spec)) return kExitBadInput;
+  // A run carried on by `esc run --resume DIR --generations G` stored G as its generations.
+  if (stored && o.script.empty() && !set_generations(*spec, stored_carry_on(*stored, at.root))) {
+    complain("esc: error: {} is damaged: it was carried on to {} generations\n", at.root.string(),
+             *stored_carry_on(*stored, at.root));
+    return kExitBadInput;
+  }
   if (o.script.empty() && !eval::same_settings(spec->resolved_settings, stored->settings)) {
     complain("esc: error: the stored sources of {} no longer compile to the settings the run used\n", dir.string());
     return kExitBadInput;

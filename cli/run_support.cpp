@@ -83,17 +83,23 @@ compiler::CompileResult compile_to_resume(const RunOptions& o, const std::filesy
   compiler::CompileResult compiled = compiler::compile_file(script, default_compile_options());
   const std::string diagnostics =
       compiler::render_all(compiled.diagnostics, compiled.sources, isatty(STDERR_FILENO) != 0);
+  // Rendered source lines go out as they are (complain() would shorten `quoted` names).
+  const auto print_diagnostics = [&] {
+    if (!follower_rank()) fmt::print(stderr, "{}", diagnostics);
+  };
   if (compiled.ok()) {
-    if (!compiled.diagnostics.empty()) complain("{}", diagnostics);
+    print_diagnostics();   // warnings, as a run prints them
     return compiled;
   }
-  const auto errors = std::count_if(compiled.diagnostics.begin(), compiled.diagnostics.end(),
+  const auto first = std::find_if(compiled.diagnostics.begin(), compiled.diagnostics.end(),
+                                  [](const compiler::Diagnostic& d) { return d.severity == compiler::Severity::Error; });
+  const auto errors = std::count_if(first, compiled.diagnostics.end(),
                                     [](const compiler::Diagnostic& d) { return d.severity == compiler::Severity::Error; });
-  complain("esc: error: {} no longer compiles ({} error{}{}); the run in {} resumes only with the script it started "
-           "with (a copy is in {}/sources)\n",
-           script.string(), errors, errors == 1 ? "" : "s", o.verbose ? "" : ", shown with --verbose", o.resume.string(),
-           o.resume.string());
-  if (o.verbose) complain("{}", diagnostics);
+  complain("esc: error: {} no longer compiles: {} ({} error{}{}); the run in {} resumes only with the script it "
+           "started with (a copy is in {}/sources)\n",
+           script.string(), first->message, errors, errors == 1 ? "" : "s", o.verbose ? "" : ", all shown with --verbose",
+           o.resume.string(), o.resume.string());
+  if (o.verbose) print_diagnostics();
   return compiled;
 }
 

@@ -96,7 +96,8 @@ def main():
             for controller, c in part["controllers"].items():
                 alternating = 0
                 runs = c["runs"]
-                for i, r in enumerate(runs, 1):
+                for r in runs:
+                    i = int(r["run"])   # from 1, as `esc replay --run` takes it
                     j = judge(replay(a.esc, source, controller, i, scratch), top)
                     alt = j["backward"] >= MIN_BACKWARD and j["reversals"] >= MIN_REVERSALS
                     alternating += alt

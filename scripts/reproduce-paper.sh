@@ -15,9 +15,9 @@
 #   scripts/reproduce-paper.sh --write --from DIR CAMPAIGN
 #                                                        store the run kept in DIR/CAMPAIGN (by KEEP)
 #                                                        instead of running it: a campaign stopped
-#                                                        (a session's end, a crash) is resumed there
-#                                                        to the end first; its wall time is then
-#                                                        not measured
+#                                                        (a session's end, a crash) is finished there
+#                                                        first (by its `resume` command, default
+#                                                        esc run --resume); wall time not measured
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
 # binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>. A
@@ -25,6 +25,11 @@
 # output is stored as analysis.md.
 # Exit status: 0 every campaign ran (and, in full, reproduced), 1 otherwise, 2 bad usage.
 set -euo pipefail
+# Paths given relative to where the script was called from (ESC, KEEP, --from) stay so.
+here=$PWD
+absolute() { case $1 in /*) echo "$1" ;; *) echo "$here/$1" ;; esac; }
+[ -n "${ESC:-}" ] && ESC=$(absolute "$ESC")
+[ -n "${KEEP:-}" ] && KEEP=$(absolute "$KEEP")
 cd "$(dirname "$0")/.."
 
 mode=full
@@ -48,7 +53,7 @@ for arg in "$@"; do
     --full) mode=full ;;
     --write) write=1 ;;
     -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    --from=*) from=${arg#--from=} ;;
+    --from=*) from=$(absolute "${arg#--from=}") ;;
     -*) echo "reproduce-paper: unknown option $arg (try --help)" >&2; exit 2 ;;
     *) campaigns+=("${arg%/}") ;;
   esac
@@ -111,21 +116,33 @@ print("```")
 EOF
 }
 
-# Stores what a full run of a campaign gave, beside its command.
+# Runs one step of storing a campaign; on failure says which, with the last lines it printed.
+step() {
+  local what=$1
+  shift
+  if ! "$@" >"$scratch/step.log" 2>&1; then
+    echo "FAILED $name: $what did not work; last lines:"
+    tail -5 "$scratch/step.log"
+    return 1
+  fi
+}
+
+# Stores what a full run of a campaign gave, beside its command: everything is made in a
+# staging directory first and copied into place only when every part was made, so a failure
+# leaves the committed files as they were (and is reported: the function returns 1).
 store_results() {
   local name=$1 out=$2 seconds=$3
-  local dir=$root/$name
-  cp "$out/summary.json" "$dir/summary.json"
-  "$ESC" export "$out" --format csv --out "$dir/export.csv" >/dev/null 2>&1
-  if "$ESC" export "$out" --table usage --format csv --out "$scratch/usage.csv" >/dev/null 2>&1; then
-    cp "$scratch/usage.csv" "$dir/usage.csv"
-  fi
-  rm -rf "$dir/figures"
-  "$ESC" report "$out" --out "$scratch/report/report.html" >/dev/null 2>&1
-  [ -d "$scratch/report/figures" ] && cp -r "$scratch/report/figures" "$dir/figures"
-  rm -rf "$scratch/report"
+  local dir=$root/$name stage=$scratch/stage-$name
+  rm -rf "$stage" "$scratch/report"
+  mkdir -p "$stage"
+  step "copying summary.json" cp "$out/summary.json" "$stage/summary.json" || return 1
+  step "esc export" "$ESC" export "$out" --format csv --out "$stage/export.csv" || return 1
+  # The usage table, where the esc that ran it had one.
+  "$ESC" export "$out" --table usage --format csv --out "$stage/usage.csv" >/dev/null 2>&1 || rm -f "$stage/usage.csv"
+  step "esc report" "$ESC" report "$out" --out "$scratch/report/report.html" || return 1
+  if [ -d "$scratch/report/figures" ]; then cp -r "$scratch/report/figures" "$stage/figures"; fi
   # The standard library line names this checkout's path: not part of what made the results.
-  "$ESC" --version | grep -v '^standard library:' >"$dir/version"
+  "$ESC" --version | grep -v '^standard library:' >"$stage/version"
   {
     echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //')"
     echo "cores: $(nproc)"
@@ -134,13 +151,19 @@ store_results() {
     echo "finished: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
     # Other work on the machine slows the wall time (cost.md) and changes no result.
     echo "load average when it finished (1, 5, 15 min): $(cut -d' ' -f1-3 /proc/loadavg)"
-  } >"$dir/machine"
+  } >"$stage/machine"
   local script
   script=$(awk '{for (i = 1; i <= NF; ++i) if ($i ~ /\.esc$/) {print $i; exit}}' "$dir/command")
-  cost_report "$name" "$out" "$seconds" "$script" "$dir/cost.md"
+  step "the cost report" cost_report "$name" "$out" "$seconds" "$script" "$stage/cost.md" || return 1
   if [ -f "$dir/analysis" ]; then
-    OUT=$out bash "$dir/analysis" >"$dir/analysis.md"
+    if ! OUT=$out bash "$dir/analysis" >"$stage/analysis.md" 2>"$scratch/step.log"; then
+      echo "FAILED $name: its analysis did not work; last lines:"
+      tail -5 "$scratch/step.log"
+      return 1
+    fi
   fi
+  rm -rf "$dir/figures"
+  cp -r "$stage"/. "$dir"/
 }
 
 failed=0
@@ -154,14 +177,16 @@ for name in "${campaigns[@]}"; do
   if [ -n "$from" ]; then
     OUT=$from/$name
     echo "== $name: the run kept in $OUT, finished there first"
-    if ! "$ESC" run --resume "$OUT" >"$scratch/$name.log" 2>&1; then
+    export OUT
+    finish=("$ESC" run --resume "$OUT")
+    [ -f "$dir/resume" ] && finish=(bash "$dir/resume")
+    if ! "${finish[@]}" >"$scratch/$name.log" 2>&1; then
       echo "FAILED $name: $OUT could not be finished; last lines:"
       tail -5 "$scratch/$name.log"
       failed=1
       continue
     fi
-    store_results "$name" "$OUT" 0
-    echo "stored $name in $dir (from $OUT)"
+    if store_results "$name" "$OUT" 0; then echo "stored $name in $dir (from $OUT)"; else failed=1; fi
     continue
   fi
   OUT=$scratch/runs/$name
@@ -190,8 +215,7 @@ for name in "${campaigns[@]}"; do
   if [ "$mode" = quick ]; then
     echo "ok     $name ran in ${seconds} s"
   elif [ "$write" = 1 ]; then
-    store_results "$name" "$OUT" "$seconds"
-    echo "stored $name in $dir (${seconds} s)"
+    if store_results "$name" "$OUT" "$seconds"; then echo "stored $name in $dir (${seconds} s)"; else failed=1; fi
   elif [ ! -f "$dir/summary.json" ]; then
     echo "FAILED $name: nothing committed to compare with (run it with --write first)"
     failed=1

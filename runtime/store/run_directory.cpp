@@ -1,6 +1,7 @@
 #include "runtime/store/run_directory.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -89,15 +90,26 @@ std::uint64_t content_hash(std::string_view text, std::uint64_t h) noexcept {
   return h;
 }
 
-std::string genome_checksum(const std::vector<double>& genome, double fitness, std::uint64_t evaluation_seed,
-                            std::string_view tree) {
-  const auto bytes = [](const auto& value) {
-    return std::string_view(reinterpret_cast<const char*>(&value), sizeof value);
+std::string genome_checksum(std::string_view controller, int run, const std::vector<double>& genome, double fitness,
+                            std::uint64_t evaluation_seed, std::string_view tree) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  const auto word = [&h](std::uint64_t w) {   // little-endian whatever the machine
+    char bytes[8];
+    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<char>((w >> (8 * i)) & 0xff);
+    h = content_hash(std::string_view(bytes, 8), h);
   };
-  std::uint64_t h = content_hash(bytes(fitness));
-  h = content_hash(bytes(evaluation_seed), h);
-  for (const double g : genome) h = content_hash(bytes(g), h);
-  return fmt::format("{:016x}", content_hash(tree, h));
+  const auto text = [&](std::string_view t) {
+    word(t.size());
+    h = content_hash(t, h);
+  };
+  text(controller);
+  word(static_cast<std::uint64_t>(run));
+  word(std::bit_cast<std::uint64_t>(fitness));
+  word(evaluation_seed);
+  word(genome.size());
+  for (const double g : genome) word(std::bit_cast<std::uint64_t>(g));
+  text(tree);
+  return fmt::format("{:016x}", h);
 }
 
 void write_atomically(const fs::path& file, std::string_view text) {
@@ -229,7 +241,8 @@ void RunDirectory::write_best(const std::string& controller, const std::string& 
                                  {"evaluation_seed", seed_json(evaluation_seed)},
                                  {"genome", run.best_genome}};
   if (!run.best_tree.empty()) best["tree"] = run.best_tree;
-  best["checksum"] = genome_checksum(run.best_genome, run.best_fitness, evaluation_seed, run.best_tree);
+  best["checksum"] = genome_checksum(controller, run.run + 1, run.best_genome, run.best_fitness, evaluation_seed,
+                                     run.best_tree);
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");
   if (!run.best_tree.empty())
     write_atomically(run_file(controller, run.run, ".best.esc"), best_tree_script(controller, architecture, run));

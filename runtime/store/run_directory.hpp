@@ -108,10 +108,11 @@ class RunDirectory final : public eval::CampaignListener {
 [[nodiscard]] std::uint64_t content_hash(std::string_view text, std::uint64_t h = 0xcbf29ce484222325ULL) noexcept;
 
 // The checksum a genome file (CONTROLLER/run-NN.best.json) carries, 16 hex digits: FNV-1a of
-// what a replay uses from it (the genes' and the fitness's bit patterns, the evaluation seed,
-// the tree), so a flipped bit in any of them is refused instead of replayed.
-[[nodiscard]] std::string genome_checksum(const std::vector<double>& genome, double fitness,
-                                          std::uint64_t evaluation_seed, std::string_view tree);
+// what a replay uses from it (the controller's name and the run, the genes' and the
+// fitness's bit patterns, the evaluation seed, the tree; numbers little-endian, texts after
+// their lengths), so a flipped bit in any of them is refused instead of replayed.
+[[nodiscard]] std::string genome_checksum(std::string_view controller, int run, const std::vector<double>& genome,
+                                          double fitness, std::uint64_t evaluation_seed, std::string_view tree);
 
 // Writes `text` to `file` through a temporary file and a rename, so readers never see a
 // half-written file.

@@ -19,12 +19,13 @@ nlohmann::ordered_json settings_object(const std::vector<eval::ConditionSetting>
   return o;
 }
 
-// The database just created, loaded.
-std::vector<StoredExperiment> created(const fs::path& dir, const eval::StudySpec& study,
-                                      const std::vector<SourceFile>& sources, const std::vector<LaunchInfo>& launches) {
-  const auto lock = create_output_directory(dir);
+// The database just created, loaded, with the directory's lock (held from before it was
+// judged empty, so that no other process sees it holding nothing in between).
+StudyDirectory::Opened created(const fs::path& dir, const eval::StudySpec& study, const std::vector<SourceFile>& sources,
+                               const std::vector<LaunchInfo>& launches) {
+  auto lock = create_output_directory(dir);
   (void)ResultsDb::create_study(dir, study, sources, launches);
-  return study_conditions(ResultsDb::open(dir).load());
+  return {std::move(lock), ResultsDb::open(dir).load()};
 }
 
 }  // namespace
@@ -63,7 +64,10 @@ StudyDirectory::StudyDirectory(fs::path dir, const eval::StudySpec& study, const
 }
 
 StudyDirectory::StudyDirectory(fs::path dir, std::vector<StoredExperiment> stored)
-    : dir_(std::move(dir)), lock_(DirectoryLock::acquire(dir_)), stored_(study_conditions(std::move(stored))) {
+    : StudyDirectory(dir, Opened{DirectoryLock::acquire(dir), std::move(stored)}) {}
+
+StudyDirectory::StudyDirectory(fs::path dir, Opened opened)
+    : dir_(std::move(dir)), lock_(std::move(opened.lock)), stored_(study_conditions(std::move(opened.stored))) {
   name_ = stored_.front().condition->study;
   seed_ = stored_.front().condition->study_seed;
   for (const StoredExperiment& e : stored_) {

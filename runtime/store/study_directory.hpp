@@ -34,6 +34,12 @@ class StudyDirectory {
   StudyDirectory(const StudyDirectory&) = delete;
   StudyDirectory& operator=(const StudyDirectory&) = delete;
 
+  // A directory opened for writing: its lock and what its database holds.
+  struct Opened {
+    std::shared_ptr<const DirectoryLock> lock;
+    std::vector<StoredExperiment> stored;
+  };
+
   // The listener of condition `i`'s campaign: its files under DIR/<condition>/ (rewritten
   // from the database), its results in its experiment of the database; each finished run
   // rewrites the study's summary.json. The StudyDirectory must outlive it. `point`: where
@@ -52,6 +58,7 @@ class StudyDirectory {
   [[nodiscard]] const std::filesystem::path& path() const noexcept { return dir_; }
 
  private:
+  StudyDirectory(std::filesystem::path dir, Opened opened);
   void write_summary() const;
 
   std::filesystem::path dir_;

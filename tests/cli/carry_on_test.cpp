@@ -4,7 +4,7 @@
 // with the same seed: the same per-generation statistics, best genomes and summary.json, for
 // the ES and GP, on another thread count, and after a kill -9 during the extension. Fewer
 // generations than stored is an error that changes nothing. A study is carried on as an
-// experiment is, condition by condition.
+// experiment is, condition by condition. A run carried on replays as stored.
 #include <sstream>
 #include <string>
 #include <vector>
@@ -68,6 +68,10 @@ TEST(CarryOn, AnEsRunCarriedOnIsTheLongerRun) {
   const Outcome report = esc("report " + (dir / "two").string());
   ASSERT_EQ(report.status, 0) << report.output;
   EXPECT_EQ(read_json(dir / "two" / "summary.json")["controllers"]["CC"]["runs"][0]["best"].size(), 4u);
+  // Its best controllers replay as stored (the run now says 4 generations, its script 2).
+  const Outcome replayed = esc("replay " + (dir / "two").string() + " --out " + (dir / "replays").string());
+  EXPECT_EQ(replayed.status, 0) << replayed.output;
+  EXPECT_NE(replayed.output.find("identical to the stored replay"), std::string::npos) << replayed.output;
   // Asked again: nothing left to do.
   const Outcome again = esc("run --resume " + (dir / "two").string() + " --generations 4");
   EXPECT_EQ(again.status, 0) << again.output;
@@ -146,6 +150,8 @@ TEST(CarryOn, AStudyCarriedOnIsTheLongerStudy) {
   EXPECT_EQ(results_without_times(dir / "one"), results_without_times(dir / "three"));
   const Outcome again = esc("run --resume " + (dir / "one").string());
   EXPECT_NE(again.output.find("is complete"), std::string::npos) << again.output;
+  const Outcome replayed = esc("replay " + (dir / "one" / "no_inertia").string() + " --out " + (dir / "replays").string());
+  EXPECT_EQ(replayed.status, 0) << replayed.output;
   const Outcome shorter = esc("run --resume " + (dir / "one").string() + " --generations 2");
   EXPECT_EQ(shorter.status, 1) << shorter.output;
 }

@@ -120,9 +120,11 @@ TEST(Integrity, ChangedScriptRefusalChangesNothing) {
   expect_refused_untouched(changed, "has changed", " --generations 300");
   // A script that no longer compiles: one line, its diagnostics with --verbose.
   std::ofstream(src / "tiny.esc", std::ios::app) << "experiment broken {\n";
-  EXPECT_NE(expect_refused_untouched(changed, "no longer compiles (1 error, shown with --verbose)").find("resumes only"),
+  EXPECT_NE(expect_refused_untouched(changed, "no longer compiles: unexpected end of file: missing `}` (1 error, all "
+                                              "shown with --verbose)")
+                .find("resumes only"),
             std::string::npos);
-  const std::string diagnostics = expect_refused_untouched(changed, "no longer compiles (1 error)", " --verbose", 8);
+  const std::string diagnostics = expect_refused_untouched(changed, "missing `}` (1 error)", " --verbose", 8);
   EXPECT_NE(diagnostics.find("missing `}`"), std::string::npos) << diagnostics;
 }
 
