@@ -115,6 +115,7 @@ const std::vector<Row>& rows() {
        "`ir_aperture` must be below 180deg, found 200deg"},
       {Rule::IrRaysMin, "robot r { ir_rays 0 }", "1:19", "`ir_rays` must be at least 1, found 0"},
       {Rule::IrRaysMax, "robot r { ir_rays 65 }", "1:19", "`ir_rays` must be at most 64, found 65"},
+      {Rule::MotorNoise, "robot r { motor_noise -0.1 }", "1:23", "`motor_noise` must be at least 0, found -0.1"},
       {Rule::IrNoise, "robot r { ir_noise -0.1 }", "1:20", "`ir_noise` must be at least 0, found -0.1"},
       {Rule::ControlStep, "robot r { control_step 0ms }", "1:24", "`control_step` must be greater than 0, found 0"},
       {Rule::SubstepsMin, "robot r { substeps 0 }", "1:20", "`substeps` must be at least 1, found 0"},
