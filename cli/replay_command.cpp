@@ -287,7 +287,10 @@ RunLocation locate(fs::path dir) {
 std::optional<store::StoredExperiment> load_stored(const RunLocation& at) {
   std::vector<store::StoredExperiment> all = store::ResultsDb::open(at.root, true).load();
   const bool study = !all.empty() && all.front().condition;
-  if (!study && at.condition.empty()) return store::ResultsDb::open(at.root, true).load_single();
+  if (!study && at.condition.empty()) {
+    if (all.size() == 1) return std::move(all.front());
+    return store::ResultsDb::open(at.root, true).load_single();   // throws, saying what it holds instead
+  }
   std::vector<std::string> directories;
   for (store::StoredExperiment& e : all) {
     if (!e.condition) continue;
@@ -376,10 +379,12 @@ int replay_command(const ReplayOptions& o) {
   }
   if (spec == nullptr || !apply_overrides(settings, *spec)) return kExitBadInput;
   // A run carried on by `esc run --resume DIR --generations G` stored G as its generations.
-  if (stored && o.script.empty() && !set_generations(*spec, stored_carry_on(*stored, at.root))) {
-    complain("esc: error: {} is damaged: it was carried on to {} generations\n", at.root.string(),
-             *stored_carry_on(*stored, at.root));
-    return kExitBadInput;
+  if (stored && o.script.empty()) {
+    const std::optional<int> carried = stored_carry_on(*stored, at.root);
+    if (!set_generations(*spec, carried)) {
+      complain("esc: error: {} is damaged: it was carried on to {} generations\n", at.root.string(), *carried);
+      return kExitBadInput;
+    }
   }
   if (o.script.empty() && !eval::same_settings(spec->resolved_settings, stored->settings)) {
     complain("esc: error: the stored sources of {} no longer compile to the settings the run used\n", dir.string());

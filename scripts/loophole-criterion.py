@@ -20,6 +20,7 @@ while a controller that backs away from a wall now and then does neither. The ta
 every run's figures, so the threshold can be judged against them.
 """
 import argparse
+import contextlib
 import csv
 import json
 import os
@@ -106,7 +107,11 @@ def main():
                                  f"{100 * j['backward']:.0f}% | {j['reversals']:.1f} | {usage} | "
                                  f"{'yes' if alt else 'no'} |")
                 totals.append(f"| {name} | {controller} | {alternating} of {len(runs)} |")
-    print_to = open(a.out, "w") if a.out else sys.stdout
+    with open(a.out, "w") if a.out else contextlib.nullcontext(sys.stdout) as print_to:
+        write_table(print_to, totals, lines)
+
+
+def write_table(print_to, totals, lines):
     print("# Loophole: runs that alternate FORWARD and BACKWARD\n", file=print_to)
     print(f"Criterion: backward share >= {MIN_BACKWARD:.0%} and >= {MIN_REVERSALS:g} reversals per 100 steps "
           f"in the run's best evaluation (scripts/loophole-criterion.py).\n", file=print_to)

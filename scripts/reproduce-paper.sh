@@ -36,27 +36,19 @@ mode=full
 write=0
 from=
 campaigns=()
-# `--from DIR` as two words too.
-args_in=("$@")
-set --
-for ((i = 0; i < ${#args_in[@]}; ++i)); do
-  if [ "${args_in[i]}" = --from ] && [ $((i + 1)) -lt ${#args_in[@]} ]; then
-    set -- "$@" "--from=${args_in[i + 1]}"
-    i=$((i + 1))
-  else
-    set -- "$@" "${args_in[i]}"
-  fi
-done
-for arg in "$@"; do
-  case "$arg" in
+while [ $# -gt 0 ]; do
+  case "$1" in
     --quick) mode=quick ;;
     --full) mode=full ;;
     --write) write=1 ;;
     -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    --from=*) from=$(absolute "${arg#--from=}") ;;
-    -*) echo "reproduce-paper: unknown option $arg (try --help)" >&2; exit 2 ;;
-    *) campaigns+=("${arg%/}") ;;
+    --from) [ $# -gt 1 ] || { echo "reproduce-paper: --from needs a directory" >&2; exit 2; }
+            from=$(absolute "$2"); shift ;;
+    --from=*) from=$(absolute "${1#--from=}") ;;
+    -*) echo "reproduce-paper: unknown option $1 (try --help)" >&2; exit 2 ;;
+    *) campaigns+=("${1%/}") ;;
   esac
+  shift
 done
 if [ "$write" = 1 ] && [ "$mode" != full ]; then
   echo "reproduce-paper: --write stores full-length results only; drop --quick" >&2

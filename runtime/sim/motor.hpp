@@ -31,12 +31,12 @@ class WheelMotor {
     return std::clamp(command, -1.0, 1.0) * max_speed_mps_;
   }
 
-  [[nodiscard]] bool noisy() const noexcept { return noise_sd_ > 0.0; }
+  [[nodiscard]] bool has_noise() const noexcept { return noise_sd_ > 0.0; }
 
   // The target a wheel actually pursues over one control step: `target_mps` with its speed
   // error, drawn from `rng` only when the motor is noisy (`rng` may be null otherwise).
   [[nodiscard]] double noisy(double target_mps, Rng* rng) const noexcept {
-    if (!noisy()) return target_mps;
+    if (!has_noise()) return target_mps;
     return std::clamp(target_mps * (1.0 + noise_sd_ * rng->normal()), -max_speed_mps_, max_speed_mps_);
   }
 

@@ -125,7 +125,7 @@ void World::step(double left_command, double right_command, Rng& rng) {
   impl_->step(left_command, right_command, &rng);
 }
 void World::step(double left_command, double right_command) {
-  if (impl_->motor.noisy()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
+  if (impl_->motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
   impl_->step(left_command, right_command, nullptr);
 }
 void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng) const {
