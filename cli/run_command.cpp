@@ -53,8 +53,9 @@ int resume_command(const RunOptions& o) {
   try {
     all = store::load_untouched(o.resume);
   } catch (const store::NothingStored& e) {
-    complain("esc: error: {}; nothing was stored to resume: start it again with `esc run FILE --out {}`\n", e.what(),
-             o.resume.string());
+    complain("esc: error: {}; nothing was stored to resume: start it again with `esc run FILE --out {}` (finished "
+             "dependencies in its deps/ are reused)\n",
+             e.what(), o.resume.string());
     return kExitBadInput;
   }
   if (!all.empty() && all.front().condition) return resume_study(o, std::move(all));

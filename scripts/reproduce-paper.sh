@@ -17,7 +17,9 @@
 #                                                        instead of running it: a campaign stopped
 #                                                        (a session's end, a crash) is finished there
 #                                                        first (by its `resume` command, default
-#                                                        esc run --resume); wall time not measured
+#                                                        esc run --resume; by its command if it
+#                                                        stopped in its dependencies); wall time
+#                                                        not measured
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
 # binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>. A
@@ -172,6 +174,9 @@ for name in "${campaigns[@]}"; do
     export OUT
     finish=("$ESC" run --resume "$OUT")
     [ -f "$dir/resume" ] && finish=(bash "$dir/resume")
+    # Stopped while its dependencies ran (deps/ and no database yet): its command runs into
+    # the same directory again, reusing the finished dependencies and continuing the other.
+    [ -e "$OUT/esc.db" ] || finish=(bash "$dir/command")
     if ! "${finish[@]}" >"$scratch/$name.log" 2>&1; then
       echo "FAILED $name: $OUT could not be finished; last lines:"
       tail -5 "$scratch/$name.log"

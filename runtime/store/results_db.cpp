@@ -453,11 +453,16 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw StoreError(fmt::format("`{}` is not a directory", dir.string()));
   const fs::path file = dir / kDatabaseFile;
-  if (!fs::is_regular_file(file, ec))
-    throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
   const auto nothing = [&] {
     return NothingStored(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
   };
+  if (!fs::is_regular_file(file, ec)) {
+    // What `esc run` writes before its database: the runs of the experiments it depends on.
+    if (fs::is_directory(dir / "deps", ec))
+      throw NothingStored(fmt::format("`{}` holds only its dependencies (deps/): the run was stopped before it started",
+                                      dir.string()));
+    throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
+  }
   if (fs::file_size(file, ec) == 0 && !ec) throw nothing();
   // Reading needs no lock (export and report read a running run); writing excludes others.
   std::shared_ptr<const DirectoryLock> lock = read_only ? nullptr : DirectoryLock::acquire(dir);

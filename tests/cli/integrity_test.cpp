@@ -1,9 +1,9 @@
 // End-to-end integrity of stored runs: a bit flipped in a killed run's stored population
 // (ES parents or GP trees) is refused on resume, naming the run and what is damaged; every
 // kind of refused resume or carry-on (damaged state, changed script, nothing stored, a
-// directory in use) leaves every byte of the directory as it was and says why in one line
-// (details with --verbose); a directory whose esc.db holds nothing can be run into again,
-// unless another esc process is writing into it.
+// run stopped in its dependencies, a directory in use) leaves every byte of the directory
+// as it was and says why in one line (details with --verbose); a directory whose esc.db
+// holds nothing can be run into again, unless another esc process is writing into it.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -153,6 +153,19 @@ TEST(Integrity, EmptyDatabaseHoldsNothingAndCanBeReused) {
   const Outcome again = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
   EXPECT_EQ(again.status, 1) << again.output;
   EXPECT_NE(again.output.find("already exists"), std::string::npos) << again.output;
+}
+
+// Killed while its dependencies ran: the directory holds deps/ alone. Resuming says how to
+// go on (run the script into it again, which reuses deps/), and that run is accepted.
+TEST(Integrity, StoppedInItsDependenciesSaysHowToGoOn) {
+  const fs::path dir = scratch("integrity-deps-only");
+  fs::create_directories(dir / "deps");
+  std::ofstream(dir / "deps" / "kept").flush();
+  const std::string said = expect_refused_untouched(dir, "holds only its dependencies (deps/)");
+  EXPECT_NE(said.find("start it again with `esc run FILE --out " + dir.string()), std::string::npos) << said;
+  const Outcome run = cli_test::esc("run " + tiny() + " --generations 2 --out " + dir.string());
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "deps" / "kept"));
 }
 
 // A run that has just started into a directory (its esc.db still empty) holds it: another
