@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
 #include "cli/partial_run.hpp"
+#include "compiler/setting_keys.hpp"
 #include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
 #include "runtime/evo/gp/codec.hpp"
@@ -147,17 +148,39 @@ std::optional<Prepared> finish_dependency(const std::string& name, const std::st
   return load_into(p);
 }
 
+// Gives dependency `spec` what its user's study condition sets in it; what the condition
+// sets further down goes on to `spec`'s own dependencies. False after printing an error.
+bool apply_given(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
+                 const std::string& user) {
+  bool further = false;
+  for (const eval::DependencySetting& s : given) {
+    if (s.path.empty() || s.path.front() != spec.name) continue;
+    if (s.path.size() > 1) {
+      spec.dependency_settings.push_back({{s.path.begin() + 1, s.path.end()}, s.key, s.value});
+      further = true;
+      continue;
+    }
+    if (const std::string error = compiler::apply_setting(spec, s.key, s.value); !error.empty()) {
+      complain("esc: error: dependency {} of {}: {}={}: {}\n", spec.name, user, s.key, s.value, error);
+      return false;
+    }
+  }
+  if (further) compiler::resolve_settings(spec);
+  return true;
+}
+
 // Runs experiment `name` into the cache, or reuses a finished run of the same fingerprint.
-std::optional<Prepared> run_or_reuse(const std::string& name, const std::string& user, const DependencyContext& cx,
-                                     int depth) {
+std::optional<Prepared> run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
+                                     const DependencyContext& cx, int depth) {
   const auto& all = cx.compiled.all_experiments;
   const auto found = std::find_if(all.begin(), all.end(), [&](const eval::ExperimentSpec& e) { return e.name == name; });
   if (found == all.end()) {
-    complain("esc: error: experiment `{}` (needed by `{}`) was not compiled\n", name, user);
+    complain("esc: error: experiment `{}` (needed by `{}`) was not compiled\n", name, user.name);
     return std::nullopt;
   }
   Prepared p{*found, {}, {}};
-  if (!cx.apply_overrides(p.spec)) return std::nullopt;
+  // The script's settings before the command line's, as for the experiment run itself.
+  if (!apply_given(p.spec, user.dependency_settings, user.name) || !cx.apply_overrides(p.spec)) return std::nullopt;
   if (!prepare(p.spec, cx, depth + 1)) return std::nullopt;
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
@@ -200,7 +223,7 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const std::string&
   }
   if (cx.reuse_only) {
     complain("esc: error: experiment `{}` (needed by `{}`) has no finished run in {}; run it first (esc run)\n", name,
-             user, cx.cache.string());
+             user.name, cx.cache.string());
     return std::nullopt;
   }
   // Rank 0 names the run's directory and holds its lock; the other ranks only follow.
@@ -309,7 +332,7 @@ bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth)
   }
   // Each experiment once, however many of its controllers are used.
   for (const std::string& name : spec.needs()) {
-    const auto p = run_or_reuse(name, spec.name, cx, depth);
+    const auto p = run_or_reuse(name, spec, cx, depth);
     if (!p) return false;
     for (const eval::Dependency& dep : spec.dependencies)
       if (dep.experiment == name && !freeze_behaviors(spec, dep, *p)) return false;

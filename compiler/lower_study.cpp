@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "compiler/experiment_settings.hpp"
+#include "compiler/names.hpp"
 #include "compiler/setting_keys.hpp"
 #include "compiler/setting_values.hpp"
 
@@ -91,13 +92,48 @@ std::optional<eval::ExperimentSpec> StudyLowering::base(const ast::Name& ref, co
 }
 
 bool StudyLowering::apply(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value) {
-  if (setting.key.text == "seed") {
+  const std::string& key = setting.key.text;
+  if (key == "seed") {
     sink_.error(setting.key.where, "a condition cannot set `seed`: every condition of a study runs with the "
                                    "study's master seed (common random numbers)")
         .help.push_back("write `seed N` in the study itself");
     return false;
   }
+  const std::size_t dot = key.find('.');
+  if (dot != std::string::npos && !is_setting_group(std::string_view(key).substr(0, dot)) &&
+      names_.find<ast::ExperimentDecl>(std::string_view(key).substr(0, dot)) != nullptr)
+    return apply_to_dependency(spec, setting, value);
   return set_setting(spec, setting.key, value, sink_);
+}
+
+bool StudyLowering::apply_to_dependency(eval::ExperimentSpec& spec, const ast::StudySetting& setting,
+                                        const ast::Value& value) {
+  const std::string& key = setting.key.text;
+  const std::string name = key.substr(0, key.find('.'));
+  const std::vector<std::string> needs = spec.needs();
+  if (std::find(needs.begin(), needs.end(), name) == needs.end()) {
+    sink_.error(setting.key.where, fmt::format("`{}` does not depend on experiment `{}`: a condition sets its own "
+                                               "experiment's settings and those of the experiments it depends on",
+                                               spec.name, name))
+        .help.push_back(needs.empty() ? fmt::format("`{}` depends on no experiment", spec.name)
+                                      : fmt::format("`{}` depends on {}", spec.name, quoted_list(needs, " and ")));
+    return false;
+  }
+  const auto& lowered = experiments_.lower(*names_.find<ast::ExperimentDecl>(name));
+  if (!lowered) return false;   // reported where it is declared
+  // Checked on the experiment as it is declared, at the value written here.
+  eval::ExperimentSpec dependency = *lowered;
+  ast::StudySetting inner = setting;
+  inner.key.text = key.substr(name.size() + 1);
+  if (!apply(dependency, inner, value) || !check_settings(dependency, value.where, sink_)) return false;
+  if (dependency.dependency_settings.empty()) {
+    spec.dependency_settings.push_back({{name}, inner.key.text, compact(value.text)});
+  } else {   // a setting further down (`energy.stop.generations`)
+    eval::DependencySetting further = std::move(dependency.dependency_settings.back());
+    further.path.insert(further.path.begin(), name);
+    spec.dependency_settings.push_back(std::move(further));
+  }
+  return true;
 }
 
 bool StudyLowering::unique_keys(const std::vector<ast::StudySetting>& settings) {

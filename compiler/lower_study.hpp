@@ -2,8 +2,9 @@
 // Lowers `study` declarations to eval::StudySpec: the conditions (whole experiments,
 // experiments with settings changed, the points of a sweep: the grid of several settings'
 // listed values), the study's `runs` and `seed`, every condition's settings read and
-// checked by the `--set` tables (setting_keys.hpp) at the values written, and the names
-// and directories of the conditions (unique, usable as file names).
+// checked by the `--set` tables (setting_keys.hpp) at the values written (a setting of an
+// experiment the condition depends on, `energy.generations`, checked on that experiment),
+// and the names and directories of the conditions (unique, usable as file names).
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ class StudyLowering {
   std::vector<eval::ConditionSpec> sweep(const ast::StudyItem& item, const Common& common, int index);
   // Sets `setting`'s key to `value` in `spec` (a study may not set `seed`). False when refused.
   bool apply(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value);
+  // `energy.generations 60`: records a setting of an experiment `spec` depends on, checked
+  // on that experiment. False when refused.
+  bool apply_to_dependency(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value);
   // Reports a key given twice in one condition or sweep.
   bool unique_keys(const std::vector<ast::StudySetting>& settings);
 

@@ -602,8 +602,14 @@ class Builder {
       if (auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(ch)) {
         if (missing(t)) return ast::Name{{}, n.where};
         n.text += t->getText();
-      } else if (auto* i = dynamic_cast<P::IdentContext*>(ch)) {
-        const ast::Name part = name(i);
+      } else if (auto* k = dynamic_cast<P::KeyPartContext*>(ch)) {
+        if (k->ident() == nullptr) {
+          antlr4::tree::TerminalNode* word = k->ROBOT() != nullptr ? k->ROBOT() : k->ARENA();
+          if (word == nullptr || missing(word)) return ast::Name{{}, n.where};
+          n.text += word->getText();
+          continue;
+        }
+        const ast::Name part = name(k->ident());
         if (part.text.empty()) return ast::Name{{}, n.where};
         n.text += part.text;
       }

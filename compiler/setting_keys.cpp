@@ -70,6 +70,8 @@ std::vector<std::string> setting_keys() {
   return k;
 }
 
+bool is_setting_group(std::string_view word) { return word == "robot" || word == "arena" || word == "gp"; }
+
 bool setting_takes_range(std::string_view key) {
   if (const EsOption* o = find_option_key(es_options(), key)) return o->shape == OptionShape::Range;
   if (key.rfind("gp.", 0) != 0) return false;
@@ -147,6 +149,8 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;
   r["compare"] = names;
   resolve_gp_settings(spec);
+  for (const eval::DependencySetting& d : spec.dependency_settings)
+    r[fmt::format("{}.{}", fmt::join(d.path, "."), d.key)] = d.value;
 }
 
 std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key, std::string_view value) {

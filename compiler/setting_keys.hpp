@@ -19,6 +19,9 @@ namespace esc::compiler {
 // Every `--set` key, for "did you mean" and the documentation.
 [[nodiscard]] std::vector<std::string> setting_keys();
 
+// Whether `word` begins the keys of a group of settings: `robot`, `arena`, `gp`.
+[[nodiscard]] bool is_setting_group(std::string_view word);
+
 // Whether `key`'s value is a range (`bounds`, `gp.init_depth`).
 [[nodiscard]] bool setting_takes_range(std::string_view key);
 
@@ -31,8 +34,9 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
 // rules for the robot, the arena and the robot in it. False when one fails.
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
 
-// Rewrites the keys of resolved_settings that the spec's fields determine; keeps the others
-// (robot name, fitness sources).
+// Rewrites the keys of resolved_settings that the spec's fields determine, the settings a
+// study gives its dependencies among them (`energy.generations`); keeps the others (robot
+// name, fitness sources).
 void resolve_settings(eval::ExperimentSpec& spec);
 
 }  // namespace esc::compiler

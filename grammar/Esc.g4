@@ -149,7 +149,10 @@ studyItem
 // A `--set` key and its value in script syntax; in a sweep, a list of values `[a, b, ...]`
 // (a range is itself a list of two numbers: `bounds [[-1, 1], [-2, 2]]`).
 studySetting : key=settingKey studyValue ';'? ;
-settingKey : (ROBOT | ARENA | ident) ('.' ident)? ;
+// `generations`, `robot.time_constant`; in a study, a setting of an experiment the
+// condition depends on, named first (`energy.generations`, `energy.stop.generations`).
+settingKey : keyPart ('.' keyPart)* ;
+keyPart : ROBOT | ARENA | ident ;
 studyValue
   : value | ident
   | '[' (studyValue (',' studyValue)*)? ']'

@@ -85,7 +85,9 @@ import csv, sys
 name, table, seconds, cores, bench = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
 rows = list(csv.DictReader(open(table)))
 steps = sum(int(r["steps"]) for r in rows)
+# The bench names a study's condition STUDY/CONDITION, the export its experiment.
 pairs = {(r["experiment"], r["controller"]) for r in rows}
+pairs |= {(f'{r["study"]}/{r["condition"]}', r["controller"]) for r in rows if r.get("study")}
 estimate = 0.0
 lines = []
 for line in open(bench):

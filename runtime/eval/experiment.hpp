@@ -42,6 +42,16 @@ struct Dependency {
   std::vector<std::pair<std::size_t, std::size_t>> targets;
 };
 
+// A setting a study condition gives an experiment this one depends on (`energy.generations
+// 60`): applied to that experiment where it runs, before the command line's, so that it runs
+// into a cache entry of its own. `path` names the dependency, then, for a setting further
+// down, that one's dependency, and so on (`energy.stop.generations`: energy, stop).
+struct DependencySetting {
+  std::vector<std::string> path;
+  std::string key;
+  std::string value;                // as written in the script, without spaces
+};
+
 // `start from experiment E` / `evaluate from experiment E`: every run r begins with the
 // best genome of run r (modulo E's run count) of E's controller of the same name, which
 // must run first. Evaluating only, a run is one generation holding that genome alone;
@@ -89,6 +99,7 @@ struct ExperimentSpec {
   // Evolved behaviors to fill in before running, one per (experiment, controller) used.
   std::vector<Dependency> dependencies;
   std::optional<StartFrom> start_from;
+  std::vector<DependencySetting> dependency_settings;
 
   // Experiments that must have run before this one (evolved behaviors, start genomes),
   // each named once, in the order they are first needed.

@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <thread>
@@ -188,6 +189,35 @@ TEST(Study, ExportAndReportTakeSeveralDirectories) {
   ASSERT_EQ(esc("report " + study.string()).status, 0);
   EXPECT_TRUE(fs::exists(study / "report.html"));
   EXPECT_TRUE(fs::exists(study / "figures" / "tiny_study_fewer-sweep.svg"));
+}
+
+// A condition's setting of an experiment it depends on (`basic.generations 2`) runs that
+// experiment with it into a cache entry of its own, beside the one as declared, and is
+// stored among the condition's settings; the study resumes and replays with it.
+TEST(Study, AConditionSetsAnExperimentItDependsOn) {
+  const fs::path out = scratch("study-dependency-setting");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/start_from.esc";
+  const Outcome o = esc("run " + script + " --experiment from_shorter --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  std::vector<std::string> generations;
+  for (const auto& e : fs::directory_iterator(out / "deps"))
+    if (e.path().filename().string().rfind("basic-", 0) == 0)
+      generations.push_back(read_json(e.path() / "settings.json")["settings"]["generations"].get<std::string>());
+  std::sort(generations.begin(), generations.end());
+  EXPECT_EQ(generations, (std::vector<std::string>{"2", "4"}));
+  const json s = read_json(out / "summary.json");
+  EXPECT_EQ(condition(s, "again_after_2")["settings"], json({{"basic.generations", "2"}}));
+  EXPECT_EQ(read_json(out / "again_after_2" / "settings.json")["settings"]["basic.generations"], "2");
+  // Each condition evaluates the best genomes of its own `basic`: those of 2 generations
+  // are another set (3 runs of a seed-independent evaluation: they would match only if
+  // every run's best had appeared by generation 2).
+  EXPECT_NE(condition(s, "again")["controllers"], condition(s, "again_after_2")["controllers"]);
+  const Outcome replay = esc("replay " + (out / "again_after_2").string() + " --controller SC --run 1 --out " +
+                             scratch("study-dependency-setting-replay").string());
+  EXPECT_EQ(replay.status, 0) << replay.output;
+  const Outcome resumed = esc("run --resume " + out.string());
+  EXPECT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(read_json(out / "summary.json"), s);
 }
 
 }  // namespace
