@@ -20,21 +20,26 @@ struct UsageRow {
   std::int64_t best_steps;
   double mean_steps;
   std::int64_t steps_total;
+  const std::string& library;     // "" when none (actions, or stored before schema 4)
+  bool useless;
 };
 
 // Every row, in directory, experiment, controller, run (finished ones first, as stored),
 // generation and behavior order.
 void for_each_row(const std::vector<StoredDirectory>& directories, const std::function<void(const UsageRow&)>& f) {
-  static const std::string kNoCondition;
+  static const std::string kNone;
   for (const StoredDirectory& d : directories)
     for (const StoredExperiment& e : d.experiments) {
-      const std::string& condition = e.condition ? e.condition->name : kNoCondition;
+      const std::string& condition = e.condition ? e.condition->name : kNone;
       for (const StoredController& c : e.controllers) {
         const auto rows = [&](int run, const std::vector<eval::GenerationStats>& generations) {
           for (const eval::GenerationStats& g : generations)
-            for (std::size_t i = 0; i < g.usage.best.size() && i < g.usage.mean.size() && i < c.actions.size(); ++i)
+            for (std::size_t i = 0; i < g.usage.best.size() && i < g.usage.mean.size() && i < c.actions.size(); ++i) {
+              const control::Choice* choice = i < c.choices.size() ? &c.choices[i] : nullptr;
               f({e.name, condition, c.name, run + 1, g.generation, c.actions[i], g.usage.best[i], g.usage.mean[i],
-                 g.usage.steps_total});
+                 g.usage.steps_total, choice != nullptr ? choice->library : kNone,
+                 choice != nullptr && choice->useless});
+            }
         };
         for (const eval::RunResult& r : c.finished) rows(r.run, r.generations);
         for (const eval::RunState& s : c.in_progress) rows(s.run, s.generations);
@@ -47,8 +52,9 @@ void for_each_row(const std::vector<StoredDirectory>& directories, const std::fu
 std::string usage_csv(const std::vector<StoredDirectory>& directories) {
   std::string out = std::string(kUsageColumns) + "\n";
   for_each_row(directories, [&](const UsageRow& r) {
-    out += fmt::format("{},{},{},{},{},{},{},{:.17g},{}\n", r.experiment, csv_field(r.condition), r.controller, r.run,
-                       r.generation, csv_field(r.behavior), r.best_steps, r.mean_steps, r.steps_total);
+    out += fmt::format("{},{},{},{},{},{},{},{:.17g},{},{},{}\n", r.experiment, csv_field(r.condition), r.controller,
+                       r.run, r.generation, csv_field(r.behavior), r.best_steps, r.mean_steps, r.steps_total,
+                       csv_field(r.library), r.useless ? 1 : 0);
   });
   return out;
 }
@@ -58,7 +64,8 @@ nlohmann::ordered_json usage_json(const std::vector<StoredDirectory>& directorie
   for_each_row(directories, [&](const UsageRow& r) {
     rows.push_back({{"experiment", r.experiment}, {"condition", r.condition}, {"controller", r.controller},
                     {"run", r.run}, {"generation", r.generation}, {"behavior", r.behavior},
-                    {"best_steps", r.best_steps}, {"mean_steps", r.mean_steps}, {"steps_total", r.steps_total}});
+                    {"best_steps", r.best_steps}, {"mean_steps", r.mean_steps}, {"steps_total", r.steps_total},
+                    {"library", r.library}, {"useless", r.useless}});
   });
   return rows;
 }

@@ -13,9 +13,11 @@ namespace esc::store {
 
 // The columns, in order: `condition` is a study's condition and empty for a plain
 // experiment; then the steps the behavior acted in the generation's best evaluation, their
-// mean over all the generation's evaluations, and the best evaluation's steps.
+// mean over all the generation's evaluations, and the best evaluation's steps; last the
+// behavior's library ("" for an action) and whether it is marked `useless` (1) or not (0),
+// as the report groups them.
 inline constexpr const char* kUsageColumns =
-    "experiment,condition,controller,run,generation,behavior,best_steps,mean_steps,steps_total";
+    "experiment,condition,controller,run,generation,behavior,best_steps,mean_steps,steps_total,library,useless";
 
 // Header then rows (runs from 1, generations from 0; mean_steps with 17 significant digits),
 // finished runs and runs in progress; controllers without actions or behaviors have none.

@@ -40,7 +40,8 @@ std::vector<std::map<std::string, std::string>> usage_rows(const fs::path& dir) 
   std::stringstream in(o.output);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "experiment,condition,controller,run,generation,behavior,best_steps,mean_steps,steps_total");
+  EXPECT_EQ(header,
+            "experiment,condition,controller,run,generation,behavior,best_steps,mean_steps,steps_total,library,useless");
   const std::vector<std::string> columns = split(header);
   std::vector<std::map<std::string, std::string>> rows;
   for (std::string line; std::getline(in, line);) {
@@ -69,6 +70,12 @@ TEST(Analyses, TheUsageTableHasARowPerRunGenerationAndBehavior) {
     totals[key] = std::stoll(r.at("steps_total"));
     EXPECT_EQ(r.at("experiment"), "energy");
     EXPECT_EQ(r.at("condition"), "");   // a plain experiment
+    // The library each behavior comes from, none for the SC's actions; nothing is useless here.
+    const std::string library = r.at("controller") == "SC"   ? ""
+                                : r.at("controller") == "CS" ? "classical_behaviors"
+                                                             : "symbolic_behaviors";
+    EXPECT_EQ(r.at("library"), library) << r.at("controller") << " " << r.at("behavior");
+    EXPECT_EQ(r.at("useless"), "0");
   }
   EXPECT_EQ(per_controller.count("CC"), 0u);
   EXPECT_EQ(per_controller["SC"], 2u * 2u * 3u);
@@ -93,6 +100,30 @@ TEST(Analyses, TheUsageTableHasARowPerRunGenerationAndBehavior) {
                   r["behavior_usage"][usage["behaviors"][b].get<std::string>()])
             << controller << " run " << r["run"] << " behavior " << usage["behaviors"][b];
     }
+}
+
+// A library marked `useless` is named in every row of its behaviors, with useless 1: what a
+// script needs to follow their usage over the generations (the paper's sensitivity analysis).
+TEST(Analyses, TheUsageTableMarksUselessBehaviors) {
+  const fs::path dir = scratch("usage-useless");
+  const Outcome run = esc("run " + std::string(ESC_SOURCE_DIR) +
+                          "/experiments/paper/sensitivity.esc --experiment behaviors_8 --runs 1 --generations 1 "
+                          "--set epochs=1 --set steps=60 --set mu=2 --set lambda=6 --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::map<std::string, std::pair<std::string, std::string>> marked;   // behavior -> (library, useless)
+  for (const auto& r : usage_rows(dir))
+    marked[r.at("controller") + "/" + r.at("behavior")] = {r.at("library"), r.at("useless")};
+  ASSERT_EQ(marked.size(), 16u);   // CS and SS, 8 behaviors each
+  for (const char* useful : {"avoid", "follow", "stop", "sweep"}) {
+    EXPECT_EQ(marked[std::string("CS/") + useful].first, "classical_behaviors");
+    EXPECT_EQ(marked[std::string("SS/") + useful].first, "symbolic_behaviors");
+    EXPECT_EQ(marked[std::string("CS/") + useful].second, "0");
+    EXPECT_EQ(marked[std::string("SS/") + useful].second, "0");
+  }
+  for (const char* useless : {"random", "avoid_light", "crash", "stick_to_walls"})
+    for (const char* controller : {"CS/", "SS/"})
+      EXPECT_EQ(marked[std::string(controller) + useless], std::make_pair(std::string("useless"), std::string("1")))
+          << controller << useless;
 }
 
 TEST(Analyses, AStudysUsageRowsNameTheirCondition) {
