@@ -11,6 +11,7 @@
 #include "runtime/report/markup.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/study_table.hpp"
+#include "runtime/report/usage_figure.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/store/seed_json.hpp"
 
@@ -130,15 +131,13 @@ json usage_curves(const eval::RunResult& r, std::size_t choices) {
   return {{"run", r.run + 1}, {"best", best}, {"mean", mean}};
 }
 
-// What each choice is, for grouping: its library and mark (from the store; a database
-// written before schema 4 has the names alone).
-json choices_json(const store::StoredController& c) {
+// The usage chart's panels and lines, as the SVG figure draws them (usage_figure.hpp).
+json usage_panels_json(const store::StoredController& c) {
   json out = json::array();
-  for (std::size_t i = 0; i < c.actions.size(); ++i) {
-    const bool known = i < c.choices.size();
-    out.push_back({{"name", c.actions[i]},
-                   {"library", known ? c.choices[i].library : ""},
-                   {"useless", known && c.choices[i].useless}});
+  for (const UsagePanel& p : usage_panels(c)) {
+    json lines = json::array();
+    for (const UsageLine& l : p.lines) lines.push_back({{"label", l.label}, {"indices", l.indices}});
+    out.push_back({{"title", p.title}, {"by_library", p.by_library}, {"lines", lines}});
   }
   return out;
 }
@@ -186,7 +185,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
     controllers.push_back({{"name", c.name}, {"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"head", c.head}, {"actions", c.actions}, {"runs", runs},
                            {"unfinished_runs", c.in_progress.size()}, {"usage", usage},
-                           {"choices", choices_json(c)}, {"usage_generations", usage_generations},
+                           {"usage_panels", usage_panels_json(c)}, {"usage_generations", usage_generations},
                            {"transfers", transfers_json(c.finished)}, {"replay", replay_json(c, o)}});
   }
   json pairs = json::array();

@@ -20,17 +20,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kMostLines = 8;
 constexpr double kStepsScale = 1e4;
 
-// A line of the figure: one choice, or a library's choices summed.
-struct UsageLine {
-  std::string label;
-  std::vector<std::size_t> indices;   // into the controller's choices
-};
-
-struct UsagePanel {
-  std::string title;
-  std::vector<UsageLine> lines;
-};
-
 // Calls per 10,000 steps of `indices` together in a generation's best evaluation; NaN for
 // a generation stored without usage.
 double calls(const eval::GenerationStats& g, const std::vector<std::size_t>& indices) {
@@ -41,38 +30,6 @@ double calls(const eval::GenerationStats& g, const std::vector<std::size_t>& ind
     steps += g.usage.best[i];
   }
   return kStepsScale * static_cast<double>(steps) / static_cast<double>(g.usage.steps_total);
-}
-
-std::vector<UsagePanel> panels_of(const store::StoredController& c) {
-  // A database that kept the names alone (no libraries, no marks) draws them as useful.
-  const bool known = c.choices.size() == c.actions.size();
-  const auto useless = [&](std::size_t i) { return known && c.choices[i].useless; };
-  std::vector<UsagePanel> panels;
-  bool marked = false;
-  for (std::size_t i = 0; i < c.actions.size(); ++i) marked = marked || useless(i);
-  for (const bool of_useless : {false, true}) {
-    UsagePanel p{marked ? (of_useless ? "useless behaviors" : "useful behaviors") : "behaviors", {}};
-    for (std::size_t i = 0; i < c.actions.size(); ++i)
-      if (useless(i) == of_useless) p.lines.push_back({c.actions[i], {i}});
-    if (p.lines.size() > kMostLines) {
-      std::map<std::string, std::vector<std::size_t>> by_library;
-      std::vector<std::string> order;
-      for (const UsageLine& l : p.lines) {
-        const std::size_t i = l.indices.front();
-        const std::string key = known && !c.choices[i].library.empty() ? c.choices[i].library : l.label;
-        if (!by_library.contains(key)) order.push_back(key);
-        by_library[key].push_back(i);
-      }
-      p.lines.clear();
-      for (const std::string& key : order) {
-        const std::vector<std::size_t>& indices = by_library[key];
-        p.lines.push_back(
-            {indices.size() > 1 ? fmt::format("{} ({} behaviors)", key, indices.size()) : key, indices});
-      }
-    }
-    if (!p.lines.empty()) panels.push_back(std::move(p));
-  }
-  return panels;
 }
 
 // Mean over the finished runs of a line's calls, generation by generation, with ± one sd.
@@ -90,8 +47,8 @@ svg::Line curve(const store::StoredController& c, const UsageLine& line, std::si
     const Summary s = summarise(values);
     out.x.push_back(static_cast<double>(g));
     out.y.push_back(values.empty() ? kNaN : s.mean);
-    out.lo.push_back(values.empty() ? kNaN : s.mean - s.sd);
-    out.hi.push_back(values.empty() ? kNaN : s.mean + s.sd);
+    out.lo.push_back(values.empty() ? kNaN : std::max(0.0, s.mean - s.sd));   // calls are never negative
+    out.hi.push_back(values.empty() ? kNaN : std::min(kStepsScale, s.mean + s.sd));
   }
   return out;
 }
@@ -106,6 +63,38 @@ bool has_usage(const store::StoredController& c) {
 
 }  // namespace
 
+std::vector<UsagePanel> usage_panels(const store::StoredController& c) {
+  const bool known = c.choices.size() == c.actions.size();
+  const auto useless = [&](std::size_t i) { return known && c.choices[i].useless; };
+  std::vector<UsagePanel> panels;
+  bool marked = false;
+  for (std::size_t i = 0; i < c.actions.size(); ++i) marked = marked || useless(i);
+  for (const bool of_useless : {false, true}) {
+    UsagePanel p{marked ? (of_useless ? "useless behaviors" : "useful behaviors") : "behaviors", false, {}};
+    for (std::size_t i = 0; i < c.actions.size(); ++i)
+      if (useless(i) == of_useless) p.lines.push_back({c.actions[i], {i}});
+    if (p.lines.size() > kMostLines) {
+      std::map<std::string, std::vector<std::size_t>> by_library;
+      std::vector<std::string> order;
+      for (const UsageLine& l : p.lines) {
+        const std::size_t i = l.indices.front();
+        const std::string key = known && !c.choices[i].library.empty() ? c.choices[i].library : l.label;
+        if (!by_library.contains(key)) order.push_back(key);
+        by_library[key].push_back(i);
+      }
+      p.lines.clear();
+      p.by_library = true;
+      for (const std::string& key : order) {
+        const std::vector<std::size_t>& indices = by_library[key];
+        p.lines.push_back(
+            {indices.size() > 1 ? fmt::format("{} ({} behaviors)", key, indices.size()) : key, indices});
+      }
+    }
+    if (!p.lines.empty()) panels.push_back(std::move(p));
+  }
+  return panels;
+}
+
 std::vector<NamedFigure> usage_figures(const store::StoredExperiment& e, const std::string& stem) {
   std::vector<NamedFigure> out;
   for (const store::StoredController& c : e.controllers) {
@@ -116,7 +105,7 @@ std::vector<NamedFigure> usage_figures(const store::StoredExperiment& e, const s
                                       : fmt::format("experiment {}", e.name));
     f.columns = 2;
     std::size_t style = 0;
-    for (const UsagePanel& p : panels_of(c)) {
+    for (const UsagePanel& p : usage_panels(c)) {
       svg::Panel panel{p.title, "generation", "calls per 10,000 steps", {}, {}, {}, true};
       for (const UsageLine& l : p.lines) {
         panel.lines.push_back(curve(c, l, style));

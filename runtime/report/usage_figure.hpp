@@ -14,6 +14,22 @@
 
 namespace esc::report {
 
+// A line of the figure: one choice, or a library's choices summed.
+struct UsageLine {
+  std::string label;
+  std::vector<std::size_t> indices;   // into the controller's choices
+};
+
+struct UsagePanel {
+  std::string title;                  // "behaviors", or "useful behaviors" / "useless behaviors"
+  bool by_library = false;            // its lines are libraries, not choices
+  std::vector<UsageLine> lines;
+};
+
+// The panels and lines of controller `c`'s figure; the report's chart draws the same ones.
+// A database that kept the names alone (no libraries, no marks) draws them as useful.
+[[nodiscard]] std::vector<UsagePanel> usage_panels(const store::StoredController& c);
+
 // One figure per controller with usage stored (`STEM-usage-CONTROLLER.svg`); none for a
 // classical controller or a database written before usage was kept per generation.
 [[nodiscard]] std::vector<NamedFigure> usage_figures(const store::StoredExperiment& e, const std::string& stem);

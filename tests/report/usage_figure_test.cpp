@@ -1,7 +1,8 @@
 // The paper's Figure 2 as an SVG file: one figure per controller that chooses behaviors,
 // useless behaviors (their library marked) in a panel of their own, one line per library
 // when a panel would hold more than 8, nothing for a classical controller or for usage not
-// stored (a database older than schema 4).
+// stored (a database older than schema 4); the panels the report's chart draws are the same
+// ones, and the band of ± one sd never leaves [0, 10,000] calls.
 #include "runtime/report/usage_figure.hpp"
 
 #include <gtest/gtest.h>
@@ -72,6 +73,36 @@ TEST(UsageFigure, FewBehaviorsOneLineEachInOnePanelWhenNoneIsMarked) {
     EXPECT_NE(f[0].svg.find(text), std::string::npos) << text;
   EXPECT_EQ(f[0].svg.find(">useless behaviors<"), std::string::npos);
   EXPECT_EQ(f[0].svg.find("(4 behaviors)"), std::string::npos);
+}
+
+// What the report's chart reads (usage_panels in its JSON): the same grouping.
+TEST(UsageFigure, ThePanelsAreWhatTheReportDraws) {
+  const std::vector<UsagePanel> many = usage_panels(supervisor(20, true));
+  ASSERT_EQ(many.size(), 2u);
+  EXPECT_EQ(many[0].title, "useful behaviors");
+  EXPECT_FALSE(many[0].by_library);
+  ASSERT_EQ(many[0].lines.size(), 1u);
+  EXPECT_EQ(many[0].lines[0].label, "go");
+  EXPECT_EQ(many[1].title, "useless behaviors");
+  EXPECT_TRUE(many[1].by_library);
+  ASSERT_EQ(many[1].lines.size(), 1u);
+  EXPECT_EQ(many[1].lines[0].label, "junk (20 behaviors)");
+  EXPECT_EQ(many[1].lines[0].indices.size(), 20u);
+  const std::vector<UsagePanel> few = usage_panels(supervisor(4, false));
+  ASSERT_EQ(few.size(), 1u);
+  EXPECT_EQ(few[0].title, "behaviors");
+  EXPECT_EQ(few[0].lines.size(), 5u);
+}
+
+// A line whose runs differ more than its mean: the band stops at 0 calls.
+TEST(UsageFigure, TheBandNeverGoesBelowZero) {
+  store::StoredController c = supervisor(1, false);
+  c.finished[1].generations[0].usage.best = {0, 100};   // `go` 25 and 0: mean 12.5, sd 17.7
+  const std::vector<NamedFigure> f = usage_figures(experiment(c), "e");
+  ASSERT_EQ(f.size(), 1u);
+  // The axis covers the bands: no tick below 0.
+  EXPECT_EQ(f[0].svg.find(">-"), std::string::npos);
+  EXPECT_EQ(f[0].svg.find(">\u2212"), std::string::npos);
 }
 
 TEST(UsageFigure, NoneWithoutStoredUsage) {

@@ -101,8 +101,8 @@ TEST(AnalysisTables, UsageChoicesAndTransfersLoadBackBitForBit) {
   // The tidy table and summary.json show the same numbers.
   const std::vector<StoredDirectory> directories{{dir, {s}}};
   const std::string csv = usage_csv(directories);
-  EXPECT_NE(csv.find("demo,,SV,2,2,crash_2,8,0.5,100\n"), std::string::npos) << csv;   // no condition
-  EXPECT_NE(csv.find("demo,,SV,1,0,go(0.5),60,17,100\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("demo,,SV,2,2,crash_2,8,0.5,100,junk,1\n"), std::string::npos) << csv;   // no condition
+  EXPECT_NE(csv.find("demo,,SV,1,0,go(0.5),60,17,100,,0\n"), std::string::npos) << csv;
   EXPECT_EQ(usage_json(directories).size(), 2u * 3u * 3u);
   const auto summary = summary_json(s.result());
   const auto& usage = summary["controllers"]["SV"]["runs"][0]["usage"];

@@ -246,30 +246,16 @@
     });
   }
 
-  // The lines of the paper's Figure 2 for a controller: one per behavior, the useless ones
-  // (their library marked `useless`) in a panel of their own, and one per library when a
-  // panel would hold more than 8 (the behaviors of a library summed).
+  // The lines of the paper's Figure 2 for a controller, as the SVG figure groups them
+  // (usage_figure.cpp, sent as `usage_panels`): a colour per behavior, or per library when a
+  // panel's lines are libraries.
   function usagePanels(c) {
-    const choices = c.choices.length === c.actions.length
-      ? c.choices : c.actions.map(name => ({name, library: '', useless: false}));
-    const panels = [['useful', false], ['useless', true]].map(([title, useless]) => ({
-      title, items: choices.map((ch, i) => ({ch, i})).filter(({ch}) => ch.useless === useless)}));
-    const marked = panels[1].items.length > 0;
-    return panels.filter(p => p.items.length > 0).map(p => {
-      let lines = p.items.map(({ch, i}) => ({label: ch.name, indices: [i], colour: choiceColour(i, choices.length)}));
-      if (lines.length > 8) {
-        const groups = new Map();
-        p.items.forEach(({ch, i}) => {
-          const key = ch.library || ch.name;
-          if (!groups.has(key)) groups.set(key, []);
-          groups.get(key).push(i);
-        });
-        lines = [...groups].map(([key, indices], k) => ({
-          label: indices.length > 1 ? `${key} (${indices.length} behaviors)` : key, indices,
-          colour: choiceColour(k, groups.size)}));
-      }
-      return {title: marked ? `${p.title} behaviors` : 'behaviors', lines};
-    });
+    return c.usage_panels.map(p => ({
+      title: p.title,
+      lines: p.lines.map((line, k) => ({
+        label: line.label, indices: line.indices,
+        colour: p.by_library ? choiceColour(k, p.lines.length) : choiceColour(line.indices[0], c.actions.length)})),
+    }));
   }
 
   // Mean over runs, per generation, of a line's calls per 10,000 steps, with +-sd.
@@ -281,7 +267,9 @@
       const values = runs.filter(r => g < r[key].length && r[key][g] !== null)
                          .map(r => line.indices.reduce((sum, i) => sum + r[key][g][i], 0));
       const [m, sd] = meanSd(values);
-      mean.push(values.length ? m : null); lo.push(values.length ? m - sd : null); hi.push(values.length ? m + sd : null);
+      // Calls are never negative, nor more than every step.
+      mean.push(values.length ? m : null); lo.push(values.length ? Math.max(0, m - sd) : null);
+      hi.push(values.length ? Math.min(1e4, m + sd) : null);
     }
     return {mean, lo, hi, length};
   }
