@@ -3,6 +3,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -13,6 +14,7 @@
 #include "bench/campaign_estimate.hpp"
 #include "cli/bench.hpp"
 #include "cli/commands.hpp"
+#include "cli/dependencies.hpp"
 #include "cli/load.hpp"
 
 namespace esc::cli {
@@ -34,15 +36,26 @@ void zero_evolved_genomes(control::ControllerSpec& c) {
 // The script's experiments, its studies' conditions (`STUDY/CONDITION`; a condition that is
 // one of the script's experiments unchanged counts once), and every experiment they need
 // first (evolved behaviors, start genomes), each once, those needed first before those that
-// need them.
-std::vector<eval::ExperimentSpec> whole_campaign(const compiler::CompileResult& compiled) {
+// need them; one that a condition gives settings (`energy.generations 60`) as it will run,
+// named with them (`energy[generations=60]`). Empty after printing an error.
+std::optional<std::vector<eval::ExperimentSpec>> whole_campaign(const compiler::CompileResult& compiled) {
   std::vector<eval::ExperimentSpec> out;
   std::set<std::string> seen;
+  bool ok = true;
   std::function<void(const eval::ExperimentSpec&)> add = [&](const eval::ExperimentSpec& e) {
     if (!seen.insert(e.name).second) return;
     for (const std::string& n : e.needs())
-      for (const eval::ExperimentSpec& x : compiled.all_experiments)
-        if (x.name == n) add(x);
+      for (const eval::ExperimentSpec& x : compiled.all_experiments) {
+        if (x.name != n) continue;
+        eval::ExperimentSpec given = x;
+        ok = apply_dependency_settings(given, e.dependency_settings, e.name) && ok;
+        std::string settings;
+        for (const eval::DependencySetting& d : e.dependency_settings)
+          if (d.path.size() == 1 && d.path.front() == n)
+            settings += fmt::format("{}{}={}", settings.empty() ? "" : ",", d.key, d.value);
+        if (!settings.empty()) given.name = fmt::format("{}[{}]", n, settings);
+        add(given);
+      }
     out.push_back(e);
   };
   for (const eval::ExperimentSpec& e : compiled.experiments) add(e);
@@ -53,13 +66,16 @@ std::vector<eval::ExperimentSpec> whole_campaign(const compiler::CompileResult& 
       x.name = s.name + "/" + c.name;
       add(x);
     }
+  if (!ok) return std::nullopt;
   return out;
 }
 
 int campaign_command(const BenchOptions& o) {
   compiler::CompileResult compiled = load_script(o.campaign);
   if (!compiled.ok()) return kExitBadInput;
-  std::vector<eval::ExperimentSpec> experiments = whole_campaign(compiled);
+  std::optional<std::vector<eval::ExperimentSpec>> campaign = whole_campaign(compiled);
+  if (!campaign) return kExitBadInput;
+  std::vector<eval::ExperimentSpec>& experiments = *campaign;
   for (eval::ExperimentSpec& e : experiments)
     for (control::ControllerSpec& c : e.controllers) zero_evolved_genomes(c);
   const std::size_t cores = std::max(1U, std::thread::hardware_concurrency());
@@ -73,9 +89,13 @@ int campaign_command(const BenchOptions& o) {
     fmt::print("{:<30} {:<12} {:<10} {:>12.0f} {:>14.0f} {:>12.0f} {:>11.2f}\n", c.experiment, c.controller,
                c.architecture, c.evaluations, c.max_steps, c.steps_per_second, c.core_seconds() / 3600.0);
   }
-  fmt::print("\ntotal: {:.2f} core-hours at most (every epoch at full length; early epochs end sooner)\n",
+  // Not a bound either way: epochs that end early (a collision, an empty accumulator) make a
+  // run cheaper, evolved controllers that step slower than these genomes (more rays within
+  // reach, more contacts) dearer; docs/paper-results.md compares it with measured campaigns.
+  fmt::print("\ntotal: {:.2f} core-hours (every epoch at full length, at the rates measured here; epochs that end "
+             "early make a run cheaper, evolved controllers that step slower dearer)\n",
              core_seconds / 3600.0);
-  fmt::print("wall time at most: full-length evaluations scheduled as `esc run` schedules them, every worker at the "
+  fmt::print("wall time: full-length evaluations scheduled as `esc run` schedules them, every worker at the "
              "one-core rate; and the share of a linear speed-up with evaluations as long as measured (they end early, "
              "so rounds wait longer for their last one). docs/performance.md gives measured speed-ups.\n");
   for (const std::size_t workers : std::set<std::size_t>{cores, 16, 64, 256}) {

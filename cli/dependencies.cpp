@@ -148,27 +148,6 @@ std::optional<Prepared> finish_dependency(const std::string& name, const std::st
   return load_into(p);
 }
 
-// Gives dependency `spec` what its user's study condition sets in it; what the condition
-// sets further down goes on to `spec`'s own dependencies. False after printing an error.
-bool apply_given(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
-                 const std::string& user) {
-  bool further = false;
-  for (const eval::DependencySetting& s : given) {
-    if (s.path.empty() || s.path.front() != spec.name) continue;
-    if (s.path.size() > 1) {
-      spec.dependency_settings.push_back({{s.path.begin() + 1, s.path.end()}, s.key, s.value});
-      further = true;
-      continue;
-    }
-    if (const std::string error = compiler::apply_setting(spec, s.key, s.value); !error.empty()) {
-      complain("esc: error: dependency {} of {}: {}={}: {}\n", spec.name, user, s.key, s.value, error);
-      return false;
-    }
-  }
-  if (further) compiler::resolve_settings(spec);
-  return true;
-}
-
 // Runs experiment `name` into the cache, or reuses a finished run of the same fingerprint.
 std::optional<Prepared> run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
                                      const DependencyContext& cx, int depth) {
@@ -180,7 +159,7 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const eval::Experi
   }
   Prepared p{*found, {}, {}};
   // The script's settings before the command line's, as for the experiment run itself.
-  if (!apply_given(p.spec, user.dependency_settings, user.name) || !cx.apply_overrides(p.spec)) return std::nullopt;
+  if (!apply_dependency_settings(p.spec, user.dependency_settings, user.name) || !cx.apply_overrides(p.spec)) return std::nullopt;
   if (!prepare(p.spec, cx, depth + 1)) return std::nullopt;
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
@@ -342,6 +321,25 @@ bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth)
 }
 
 }  // namespace
+
+bool apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
+                               const std::string& user) {
+  bool further = false;
+  for (const eval::DependencySetting& s : given) {
+    if (s.path.empty() || s.path.front() != spec.name) continue;
+    if (s.path.size() > 1) {
+      spec.dependency_settings.push_back({{s.path.begin() + 1, s.path.end()}, s.key, s.value});
+      further = true;
+      continue;
+    }
+    if (const std::string error = compiler::apply_setting(spec, s.key, s.value); !error.empty()) {
+      complain("esc: error: dependency {} of {}: {}={}: {}\n", spec.name, user, s.key, s.value, error);
+      return false;
+    }
+  }
+  if (further) compiler::resolve_settings(spec);
+  return true;
+}
 
 bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context) {
   return prepare(spec, context, 0);

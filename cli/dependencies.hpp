@@ -33,6 +33,13 @@ struct DependencyContext {
   bool reuse_only = false;
 };
 
+// Gives dependency `spec` what the study condition of its user (the experiment that needs
+// it) sets in it (`energy.generations 60`); what the condition sets further down goes on to
+// `spec`'s own dependencies. False after printing an error.
+[[nodiscard]] bool apply_dependency_settings(eval::ExperimentSpec& spec,
+                                             const std::vector<eval::DependencySetting>& given,
+                                             const std::string& user);
+
 // Fills `spec`'s frozen behaviors and start genomes, running what it needs first
 // (dependencies of dependencies before). Prints what it does; false after printing an error.
 [[nodiscard]] bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context);

@@ -102,10 +102,11 @@ if seconds > 0:
     core_hours = seconds * cores / 3600
     ratio = f" ({estimate / core_hours:.1f}x the cost measured)" if core_hours > 0 and estimate > 0 else ""
     print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {steps / (seconds * cores):,.0f} | {core_hours:.2f} "
-          f"| {estimate:.2f} core-hours at most{ratio} |")
+          f"| {estimate:.2f} core-hours{ratio} |")
 else:   # stored with --from: stopped and resumed, its wall time is not one measurement
-    print(f"| not measured (stopped and resumed) | {steps:,} | {cores} | - | - | {estimate:.2f} core-hours at most |")
-print("\nThe estimate counts every epoch at full length at the rate of random genomes; its lines:\n")
+    print(f"| not measured (stopped and resumed) | {steps:,} | {cores} | - | - | {estimate:.2f} core-hours |")
+print("\nThe estimate counts every epoch at full length at the rates of the genomes it times (not a bound: "
+      "epochs that end early make a run cheaper, controllers that step slower dearer); its lines:\n")
 print("```")
 print("\n".join(lines) if lines else "(none matched)")
 print("```")

@@ -2,6 +2,8 @@
 // directory, improvement of fitness, and identical results for any thread count.
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -145,6 +147,25 @@ TEST(Cli, BenchEstimatesACampaignFromMeasuredRates) {
   EXPECT_NE(o.output.find("240"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("57600"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("core-hours"), std::string::npos);
+}
+
+// A study condition's setting of an experiment it depends on (start_from.esc's
+// `basic.generations 2`) is estimated as it will run: the experiment as declared and the
+// one with the setting, each with its own evaluations.
+TEST(Cli, BenchEstimatesADependencyWithTheSettingsAConditionGivesIt) {
+  const Outcome o = esc("bench --campaign " + std::string(ESC_SOURCE_DIR) + "/tests/cli/data/start_from.esc" +
+                        " --min-time 0.02");
+  ASSERT_EQ(o.status, 0) << o.output;
+  // basic: 3 runs x 6 offspring x 4 generations = 72 evaluations; with 2 generations, 36.
+  std::istringstream lines(o.output);
+  std::map<std::string, std::string> evaluations;   // "experiment controller" -> evaluations
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string experiment, controller, architecture, count;
+    if (words >> experiment >> controller >> architecture >> count) evaluations[experiment + " " + controller] = count;
+  }
+  EXPECT_EQ(evaluations["basic CC"], "72") << o.output;
+  EXPECT_EQ(evaluations["basic[generations=2] CC"], "36") << o.output;
 }
 
 TEST(Cli, EvolvedBehaviorsRunTheirExperimentFirstAndReuseIt) {
