@@ -37,7 +37,7 @@ void zero_evolved_genomes(control::ControllerSpec& c) {
 // one of the script's experiments unchanged counts once), and every experiment they need
 // first (evolved behaviors, start genomes), each once, those needed first before those that
 // need them; one that a condition gives settings (`energy.generations 60`) as it will run,
-// named with them (`energy[generations=60]`). Empty after printing an error.
+// named with them (`energy[generations=60]`, `energy[stop.generations=10]`). Empty after printing an error.
 std::optional<std::vector<eval::ExperimentSpec>> whole_campaign(const compiler::CompileResult& compiled) {
   std::vector<eval::ExperimentSpec> out;
   std::set<std::string> seen;
@@ -50,9 +50,13 @@ std::optional<std::vector<eval::ExperimentSpec>> whole_campaign(const compiler::
         eval::ExperimentSpec given = x;
         ok = apply_dependency_settings(given, e.dependency_settings, e.name) && ok;
         std::string settings;
-        for (const eval::DependencySetting& d : e.dependency_settings)
-          if (d.path.size() == 1 && d.path.front() == n)
-            settings += fmt::format("{}{}={}", settings.empty() ? "" : ",", d.key, d.value);
+        for (const eval::DependencySetting& d : e.dependency_settings) {
+          if (d.path.front() != n) continue;
+          // Further down too (`energy[stop.generations=10]`): the experiment changes with it.
+          std::string key;
+          for (std::size_t i = 1; i < d.path.size(); ++i) key += d.path[i] + ".";
+          settings += fmt::format("{}{}{}={}", settings.empty() ? "" : ",", key, d.key, d.value);
+        }
         if (!settings.empty()) given.name = fmt::format("{}[{}]", n, settings);
         add(given);
       }

@@ -324,16 +324,21 @@ bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth)
 
 bool apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
                                const std::string& user) {
+  std::vector<std::pair<std::string, std::string>> own;
   bool further = false;
   for (const eval::DependencySetting& s : given) {
     if (s.path.empty() || s.path.front() != spec.name) continue;
-    if (s.path.size() > 1) {
+    if (s.path.size() == 1) {
+      own.emplace_back(s.key, s.value);
+    } else {
       spec.dependency_settings.push_back({{s.path.begin() + 1, s.path.end()}, s.key, s.value});
       further = true;
-      continue;
     }
-    if (const std::string error = compiler::apply_setting(spec, s.key, s.value); !error.empty()) {
-      complain("esc: error: dependency {} of {}: {}={}: {}\n", spec.name, user, s.key, s.value, error);
+  }
+  if (!own.empty()) {
+    // Together, as the compiler checked them.
+    if (const std::string error = compiler::apply_settings(spec, own); !error.empty()) {
+      complain("esc: error: experiment {}, as {} needs it: {}\n", spec.name, user, error);
       return false;
     }
   }

@@ -28,9 +28,25 @@ bool vary_nothing_given(const RunOptions& o, const eval::StudySpec& study) {
   const auto settings = override_settings(o);
   if (!settings) return false;
   const std::vector<std::string> varied = study.varied_keys();
+  // What a condition gives an experiment it depends on (`energy.generations 60`): the
+  // command line's `generations` would override that too.
+  const auto given = [&](const std::string& k) -> const eval::DependencySetting* {
+    for (const eval::ConditionSpec& c : study.conditions)
+      for (const eval::DependencySetting& d : c.experiment.dependency_settings)
+        if (d.key == k) return &d;
+    return nullptr;
+  };
   bool ok = true;
   for (const auto& [key, value] : *settings) {
     const std::string k = trimmed(key);
+    if (const eval::DependencySetting* d = given(k)) {
+      complain("esc: error: {}={}: study `{}` gives `{}` to experiment `{}` in its conditions ({}.{} {}); the "
+               "command line's value would replace it (to shorten such a study, run its experiments with "
+               "--experiment)\n",
+               k, trimmed(value), study.name, k, d->path.back(), fmt::join(d->path, "."), d->key, d->value);
+      ok = false;
+      continue;
+    }
     if (std::find(varied.begin(), varied.end(), k) == varied.end()) continue;
     complain("esc: error: {}={}: study `{}` varies `{}` across its conditions; one value for all of them would "
              "flatten it (to run one condition with another value, run its experiment with --experiment and "

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "compiler/diagnostic.hpp"
@@ -48,5 +49,9 @@ struct CompileResult {
 // experiment is unchanged on error.
 [[nodiscard]] std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key,
                                         std::string_view value);
+// Several at once, (key, value) in order, checked together once all are set (as a script's
+// items are), as a study condition's settings of an experiment it depends on are applied.
+[[nodiscard]] std::string apply_settings(eval::ExperimentSpec& experiment,
+                                         const std::vector<std::pair<std::string, std::string>>& settings);
 
 }  // namespace esc::compiler

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/compiler.hpp"
 #include "compiler/experiment_settings.hpp"
 #include "compiler/names.hpp"
 #include "compiler/setting_keys.hpp"
@@ -91,18 +92,20 @@ std::optional<eval::ExperimentSpec> StudyLowering::base(const ast::Name& ref, co
   return spec;
 }
 
+bool StudyLowering::is_dependency_key(std::string_view key) const {
+  const std::size_t dot = key.find('.');
+  return dot != std::string_view::npos && !is_setting_group(key.substr(0, dot)) &&
+         names_.find<ast::ExperimentDecl>(key.substr(0, dot)) != nullptr;
+}
+
 bool StudyLowering::apply(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value) {
-  const std::string& key = setting.key.text;
-  if (key == "seed") {
+  if (setting.key.text == "seed") {
     sink_.error(setting.key.where, "a condition cannot set `seed`: every condition of a study runs with the "
                                    "study's master seed (common random numbers)")
         .help.push_back("write `seed N` in the study itself");
     return false;
   }
-  const std::size_t dot = key.find('.');
-  if (dot != std::string::npos && !is_setting_group(std::string_view(key).substr(0, dot)) &&
-      names_.find<ast::ExperimentDecl>(std::string_view(key).substr(0, dot)) != nullptr)
-    return apply_to_dependency(spec, setting, value);
+  if (is_dependency_key(setting.key.text)) return apply_to_dependency(spec, setting, value);
   return set_setting(spec, setting.key, value, sink_);
 }
 
@@ -121,19 +124,41 @@ bool StudyLowering::apply_to_dependency(eval::ExperimentSpec& spec, const ast::S
   }
   const auto& lowered = experiments_.lower(*names_.find<ast::ExperimentDecl>(name));
   if (!lowered) return false;   // reported where it is declared
-  // Checked on the experiment as it is declared, at the value written here.
+  // The value alone here, located; an experiment's settings are checked together once the
+  // condition has given them all (check_dependency_settings). Its seed may change: common
+  // random numbers concern the conditions, not what they depend on.
   eval::ExperimentSpec dependency = *lowered;
   ast::StudySetting inner = setting;
   inner.key.text = key.substr(name.size() + 1);
-  if (!apply(dependency, inner, value) || !check_settings(dependency, value.where, sink_)) return false;
-  if (dependency.dependency_settings.empty()) {
+  const bool further = is_dependency_key(inner.key.text);
+  if (further ? !apply_to_dependency(dependency, inner, value) : !set_setting(dependency, inner.key, value, sink_))
+    return false;
+  if (!further) {
     spec.dependency_settings.push_back({{name}, inner.key.text, compact(value.text)});
   } else {   // a setting further down (`energy.stop.generations`)
-    eval::DependencySetting further = std::move(dependency.dependency_settings.back());
-    further.path.insert(further.path.begin(), name);
-    spec.dependency_settings.push_back(std::move(further));
+    eval::DependencySetting below = std::move(dependency.dependency_settings.back());
+    below.path.insert(below.path.begin(), name);
+    spec.dependency_settings.push_back(std::move(below));
   }
   return true;
+}
+
+bool StudyLowering::check_dependency_settings(const eval::ExperimentSpec& spec, const SourceRange& where) {
+  std::map<std::vector<std::string>, std::vector<std::pair<std::string, std::string>>> given;
+  for (const eval::DependencySetting& d : spec.dependency_settings) given[d.path].emplace_back(d.key, d.value);
+  bool ok = true;
+  for (const auto& [path, settings] : given) {
+    const auto* decl = names_.find<ast::ExperimentDecl>(path.back());
+    const auto& lowered = decl != nullptr ? experiments_.lower(*decl) : std::nullopt;
+    if (!lowered) continue;   // reported where it is declared
+    eval::ExperimentSpec dependency = *lowered;
+    if (const std::string error = apply_settings(dependency, settings); !error.empty()) {
+      sink_.error(where, fmt::format("experiment `{}` with the settings this condition gives it: {}",
+                                     fmt::join(path, "."), error));
+      ok = false;
+    }
+  }
+  return ok;
 }
 
 bool StudyLowering::unique_keys(const std::vector<ast::StudySetting>& settings) {
@@ -176,7 +201,8 @@ std::optional<eval::ConditionSpec> StudyLowering::condition(const ast::StudyItem
     last = &st.value.where;
   }
   if (!ok || !spec) return std::nullopt;
-  if (last != nullptr && !check_settings(*spec, *last, sink_)) return std::nullopt;
+  if (last != nullptr && (!check_settings(*spec, *last, sink_) || !check_dependency_settings(*spec, *last)))
+    return std::nullopt;
   resolve_settings(*spec);
   c.experiment = std::move(*spec);
   return c;
@@ -235,10 +261,15 @@ std::vector<eval::ConditionSpec> StudyLowering::sweep(const ast::StudyItem& item
   if (!ok || !spec) return {};
 
   // Short keys in names, unless two axes share one (`generations`, `gp.generations`).
+  // A setting of a dependency keeps its experiment (`energy.generations=60`): it is not the
+  // condition's own.
   std::vector<std::string> labels;
-  for (const Axis& a : axes) labels.emplace_back(short_key(a.setting->key.text));
+  for (const Axis& a : axes) {
+    const std::string& key = a.setting->key.text;
+    labels.emplace_back(is_dependency_key(key) ? std::string_view(key) : short_key(key));
+  }
   for (std::size_t i = 0; i < axes.size(); ++i)
-    if (std::count(labels.begin(), labels.end(), std::string(short_key(axes[i].setting->key.text))) > 1)
+    if (std::count(labels.begin(), labels.end(), labels[i]) > 1)
       for (std::size_t j = 0; j < axes.size(); ++j) labels[j] = axes[j].setting->key.text;
 
   // The grid, the first axis varying slowest.
@@ -260,7 +291,8 @@ std::vector<eval::ConditionSpec> StudyLowering::sweep(const ast::StudyItem& item
                             on_axis[i] ? v.q.unit : std::string()});
     }
     const std::size_t before = sink_.items().size();
-    if (point_ok && check_settings(x, axes.back().values[at.back()].where, sink_)) {
+    const SourceRange& where = axes.back().values[at.back()].where;
+    if (point_ok && check_settings(x, where, sink_) && check_dependency_settings(x, where)) {
       resolve_settings(x);
       c.experiment = std::move(x);
       c.sweep = index;

@@ -7,6 +7,7 @@
 // and the names and directories of the conditions (unique, usable as file names).
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/ast.hpp"
@@ -39,9 +40,14 @@ class StudyLowering {
   std::vector<eval::ConditionSpec> sweep(const ast::StudyItem& item, const Common& common, int index);
   // Sets `setting`'s key to `value` in `spec` (a study may not set `seed`). False when refused.
   bool apply(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value);
-  // `energy.generations 60`: records a setting of an experiment `spec` depends on, checked
-  // on that experiment. False when refused.
+  // Whether `key` names an experiment first (`energy.generations`), not a group of settings.
+  [[nodiscard]] bool is_dependency_key(std::string_view key) const;
+  // `energy.generations 60`: records a setting of an experiment `spec` depends on, its value
+  // read as that experiment's. False when refused.
   bool apply_to_dependency(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value);
+  // The settings recorded for each experiment `spec` depends on, checked together on it (as
+  // the runtime applies them), reported at `where`. False when one fails.
+  bool check_dependency_settings(const eval::ExperimentSpec& spec, const SourceRange& where);
   // Reports a key given twice in one condition or sweep.
   bool unique_keys(const std::vector<ast::StudySetting>& settings);
 

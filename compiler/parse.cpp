@@ -593,7 +593,7 @@ class Builder {
     return x;
   }
 
-  // `robot.time_constant`, `mu`: one name spanning the key.
+  // `robot.time_constant`, `mu`, `energy.stop.generations`: one name spanning the key.
   ast::Name setting_key(P::SettingKeyContext* c) const {
     ast::Name n;
     if (c == nullptr) return n;

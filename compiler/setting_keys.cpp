@@ -153,22 +153,33 @@ void resolve_settings(eval::ExperimentSpec& spec) {
     r[fmt::format("{}.{}", fmt::join(d.path, "."), d.key)] = d.value;
 }
 
-std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key, std::string_view value) {
+std::string apply_settings(eval::ExperimentSpec& experiment,
+                           const std::vector<std::pair<std::string, std::string>>& settings) {
   Sink sink;
   const SourceRange where{"--set", 0, 0, 0};
-  const ast::Name name{trimmed(key), where};
   eval::ExperimentSpec spec = experiment;   // commit only when everything checks
-  if (const auto v = value_from_text(value, where)) {
-    if (set_setting(spec, name, *v, sink)) (void)check_settings(spec, where, sink);
-  } else {
-    sink.error(where, fmt::format("`{}` cannot take `{}`: a value is a number with its unit (`50ms`), `on` or "
-                                  "`off`, a word, or a range `[-1, 1]`",
-                                  name.text, trimmed(value)));
+  bool all_set = true;
+  for (const auto& [key, value] : settings) {
+    const ast::Name name{trimmed(key), where};
+    if (const auto v = value_from_text(value, where)) {
+      all_set = set_setting(spec, name, *v, sink) && all_set;
+    } else {
+      sink.error(where, fmt::format("`{}` cannot take `{}`: a value is a number with its unit (`50ms`), `on` or "
+                                    "`off`, a word, or a range `[-1, 1]`",
+                                    name.text, trimmed(value)));
+      all_set = false;
+    }
   }
+  // Together, as a script's items are: `mu 40  lambda 60` checks lambda >= mu once both hold.
+  if (all_set) (void)check_settings(spec, where, sink);
   if (sink.errors() != 0) return shorten_names(flattened(sink.items()));
   resolve_settings(spec);
   experiment = std::move(spec);
   return {};
+}
+
+std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key, std::string_view value) {
+  return apply_settings(experiment, {{std::string(key), std::string(value)}});
 }
 
 }  // namespace esc::compiler

@@ -175,11 +175,16 @@ for name in "${campaigns[@]}"; do
     OUT=$from/$name
     echo "== $name: the run kept in $OUT, finished there first"
     export OUT
+    if [ ! -d "$OUT" ]; then
+      echo "FAILED $name: $OUT does not exist (--from names the KEEP directory of a stopped campaign)"
+      failed=1
+      continue
+    fi
     finish=("$ESC" run --resume "$OUT")
     [ -f "$dir/resume" ] && finish=(bash "$dir/resume")
     # Stopped while its dependencies ran (deps/ and no database yet): its command runs into
     # the same directory again, reusing the finished dependencies and continuing the other.
-    [ -e "$OUT/esc.db" ] || finish=(bash "$dir/command")
+    if [ -d "$OUT/deps" ] && [ ! -s "$OUT/esc.db" ]; then finish=(bash "$dir/command"); fi
     if ! "${finish[@]}" >"$scratch/$name.log" 2>&1; then
       echo "FAILED $name: $OUT could not be finished; last lines:"
       tail -5 "$scratch/$name.log"

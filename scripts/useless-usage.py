@@ -34,8 +34,13 @@ def main():
 
     # (condition, controller) -> run -> generation -> [useless steps, all steps]
     shares = defaultdict(lambda: defaultdict(lambda: defaultdict(lambda: [0, 0])))
+    marked = set()   # (condition, controller) offered a useless behavior, used or not
     for r in export(args.esc, args.directory, "--table", "usage"):
-        cell = shares[(r["condition"], r["controller"])][int(r["run"])][int(r["generation"])]
+        # The usage table leaves a plain experiment's condition empty, the main export names it.
+        key = (r["condition"] or r["experiment"], r["controller"])
+        if r["useless"] == "1":
+            marked.add(key)
+        cell = shares[key][int(r["run"])][int(r["generation"])]
         steps = int(r["best_steps"])
         cell[0] += steps if r["useless"] == "1" else 0
         cell[1] += steps
@@ -44,9 +49,9 @@ def main():
         key = (r["condition"], r["controller"])
         best[key][int(r["run"])] = max(best[key][int(r["run"])], float(r["best"]))
 
-    keys = [k for k in shares if any(cell[0] for run in shares[k].values() for cell in run.values())]
+    keys = [k for k in shares if k in marked]
     if not keys:
-        print("No controller of this run chose a behavior of a library marked `useless`.")
+        print("No controller of this run is offered a behavior of a library marked `useless`.")
         return 0
 
     def share(cell):

@@ -193,7 +193,7 @@ TEST(Study, ExportAndReportTakeSeveralDirectories) {
 
 // A condition's setting of an experiment it depends on (`basic.generations 2`) runs that
 // experiment with it into a cache entry of its own, beside the one as declared, and is
-// stored among the condition's settings; the study resumes and replays with it.
+// stored among the condition's settings; a carried-on study prepares the same entry again.
 TEST(Study, AConditionSetsAnExperimentItDependsOn) {
   const fs::path out = scratch("study-dependency-setting");
   const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/start_from.esc";
@@ -215,9 +215,20 @@ TEST(Study, AConditionSetsAnExperimentItDependsOn) {
   const Outcome replay = esc("replay " + (out / "again_after_2").string() + " --controller SC --run 1 --out " +
                              scratch("study-dependency-setting-replay").string());
   EXPECT_EQ(replay.status, 0) << replay.output;
-  const Outcome resumed = esc("run --resume " + out.string());
-  EXPECT_EQ(resumed.status, 0) << resumed.output;
-  EXPECT_EQ(read_json(out / "summary.json"), s);
+
+  const fs::path onwards = scratch("study-dependency-setting-onwards");
+  Outcome o2 = esc("run " + script + " --experiment onwards_from_shorter --out " + onwards.string());
+  ASSERT_EQ(o2.status, 0) << o2.output;
+  o2 = esc("run --resume " + onwards.string() + " --generations 3");
+  ASSERT_EQ(o2.status, 0) << o2.output;
+  EXPECT_NE(o2.output.find("esc: dependency basic: reused"), std::string::npos) << o2.output;
+  EXPECT_EQ(o2.output.find("running into"), std::string::npos) << o2.output;
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::directory_iterator(onwards / "deps"))
+    if (e.path().filename().string().rfind("basic-", 0) == 0) entries.push_back(e.path());
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(read_json(entries[0] / "settings.json")["settings"]["generations"], "2");
+  EXPECT_EQ(read_json(onwards / "summary.json")["conditions"][0]["controllers"]["CC"]["runs"][0]["best"].size(), 3u);
 }
 
 }  // namespace

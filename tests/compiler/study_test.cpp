@@ -246,5 +246,55 @@ TEST(Study, SetSettingValuesAreReadLikeTheScriptsOwn) {
   EXPECT_EQ(study(r, "s").conditions[0].directory, "x");
 }
 
+// `energy.generations 60`: a setting of an experiment the condition's depends on, recorded
+// with its path and checked on that experiment with the condition's other settings of it
+// (lambda >= mu once both hold); its seed may change; further down by naming each; a sweep
+// point keeps the experiment in its name.
+TEST(Study, AConditionSetsAnExperimentItDependsOn) {
+  const std::string text = R"(
+arena a { size 1m x 1m }
+fitness f { step: speed }
+controller c = mlp(ir[0..7] -> wheels)
+controller s = supervisor(mlp(ir[0..7]), behaviors [lib])
+library lib { behavior b = evolved from experiment base controller c }
+experiment base { arena a  fitness f  evolve es(mu 5, lambda 30, comma) for 4 generations  compare c }
+experiment middle { arena a  fitness f  compare s }
+experiment top { arena a  fitness f  start from experiment middle  compare s }
+study st {
+  condition both = top { middle.lambda 60  middle.mu 40  middle.seed 7 }
+  condition deeper = top { middle.base.generations 2 }
+  sweep top { middle.generations [2, 3] }
+}
+)";
+  const CompileResult r = compile_source(text, "deps.esc", options());
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const eval::StudySpec& st = study(r, "st");
+  EXPECT_EQ(names(st), (std::vector<std::string>{"both", "deeper", "middle.generations=2", "middle.generations=3"}));
+  const auto& both = st.conditions[0].experiment.dependency_settings;
+  ASSERT_EQ(both.size(), 3u);
+  EXPECT_EQ(both[0].path, std::vector<std::string>{"middle"});
+  EXPECT_EQ(both[0].key, "lambda");
+  EXPECT_EQ(both[0].value, "60");
+  EXPECT_EQ(both[2].key, "seed");
+  EXPECT_EQ(st.conditions[0].experiment.resolved_settings.at("middle.mu"), "40");
+  // The condition's own experiment is as declared.
+  EXPECT_EQ(st.conditions[0].experiment.es.mu, r.all_experiments.back().es.mu);
+  const auto& deeper = st.conditions[1].experiment.dependency_settings;
+  ASSERT_EQ(deeper.size(), 1u);
+  EXPECT_EQ(deeper[0].path, (std::vector<std::string>{"middle", "base"}));
+  EXPECT_EQ(deeper[0].key, "generations");
+  EXPECT_EQ(st.conditions[3].experiment.dependency_settings.at(0).value, "3");
+
+  // Checked together: mu 25 with lambda 20 fails on the experiment, reported at the last value.
+  const CompileResult wrong = compile_source(
+      text.substr(0, text.find("study st")) + "study w { condition x = top { middle.mu 25  middle.lambda 20 } }\n",
+      "deps.esc", options());
+  EXPECT_FALSE(wrong.ok());
+  EXPECT_NE(rendered(wrong).find("experiment `middle` with the settings this condition gives it: comma selection "
+                                 "needs `lambda` >= `mu`"),
+            std::string::npos)
+      << rendered(wrong);
+}
+
 }  // namespace
 }  // namespace esc::compiler
