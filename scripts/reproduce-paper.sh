@@ -19,7 +19,7 @@
 #                                                        first (by its `resume` command, default
 #                                                        esc run --resume; by its command if it
 #                                                        stopped in its dependencies); wall time
-#                                                        not measured
+#                                                        from its files' times (any stop in it)
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
 # binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>. A
@@ -74,15 +74,16 @@ trap 'rm -rf "$scratch"' EXIT
 quick_args=(--runs 2 --generations 3 --set epochs=2)
 
 # Wall time, control steps and steps/s per core of a finished run, beside the estimate of
-# `esc bench --campaign` for the same experiments and controllers (an upper bound: it counts
-# every epoch at full length).
+# `esc bench --campaign` for the same experiments and controllers (not a bound: it counts
+# every epoch at full length, at the rates of the genomes it times).
 cost_report() {
   local name=$1 out=$2 seconds=$3 script=$4 dest=$5
   "$ESC" export "$out" --format csv --out "$scratch/cost.csv" >/dev/null 2>&1
   "$ESC" bench --campaign "$script" --min-time 0.5 >"$scratch/bench.txt" 2>&1 || true
-  python3 - "$name" "$scratch/cost.csv" "$seconds" "$(nproc)" "$scratch/bench.txt" >"$dest" <<'EOF'
-import csv, sys
-name, table, seconds, cores, bench = sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
+  python3 - "$name" "$scratch/cost.csv" "$seconds" "$(nproc)" "$scratch/bench.txt" "$out" >"$dest" <<'EOF'
+import csv, os, sys
+name, table, seconds, cores, bench, out = (sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4]),
+                                           sys.argv[5], sys.argv[6])
 rows = list(csv.DictReader(open(table)))
 steps = sum(int(r["steps"]) for r in rows)
 # The bench names a study's condition STUDY/CONDITION, the export its experiment.
@@ -103,8 +104,17 @@ if seconds > 0:
     ratio = f" ({estimate / core_hours:.1f}x the cost measured)" if core_hours > 0 and estimate > 0 else ""
     print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {steps / (seconds * cores):,.0f} | {core_hours:.2f} "
           f"| {estimate:.2f} core-hours{ratio} |")
-else:   # stored with --from: stopped and resumed, its wall time is not one measurement
-    print(f"| not measured (stopped and resumed) | {steps:,} | {cores} | - | - | {estimate:.2f} core-hours |")
+else:
+    # Stored with --from: not timed here. Its files' times bound it: settings.json is written
+    # when the run starts (after its dependencies), summary.json after its last generation;
+    # the span counts any time it was stopped, so the rate is at least what it says.
+    span = os.path.getmtime(os.path.join(out, "summary.json")) - os.path.getmtime(os.path.join(out, "settings.json"))
+    if span > 0:
+        print(f"| {span / 60:.1f} min from its files' times (settings.json to summary.json: without its dependencies, "
+              f"with any time it was stopped) | {steps:,} | {cores} | at least {steps / (span * cores):,.0f} "
+              f"| at most {span * cores / 3600:.2f} | {estimate:.2f} core-hours |")
+    else:
+        print(f"| not measured | {steps:,} | {cores} | - | - | {estimate:.2f} core-hours |")
 print("\nThe estimate counts every epoch at full length at the rates of the genomes it times (not a bound: "
       "epochs that end early make a run cheaper, controllers that step slower dearer); its lines:\n")
 print("```")
