@@ -22,16 +22,19 @@
 #                                                        from its files' times (any stop in it)
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
-# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>. A
+# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>;
+# PAPER_RESULTS=DIR reads (and writes) the campaigns there instead of results/paper. A
 # campaign's optional `analysis` file is a command reading the finished run in $OUT; its
 # output is stored as analysis.md.
 # Exit status: 0 every campaign ran (and, in full, reproduced), 1 otherwise, 2 bad usage.
 set -euo pipefail
-# Paths given relative to where the script was called from (ESC, KEEP, --from) stay so.
+# Paths given relative to where the script was called from (ESC, KEEP, PAPER_RESULTS, --from)
+# stay so.
 here=$PWD
 absolute() { case $1 in /*) echo "$1" ;; *) echo "$here/$1" ;; esac; }
 [ -n "${ESC:-}" ] && ESC=$(absolute "$ESC")
 [ -n "${KEEP:-}" ] && KEEP=$(absolute "$KEEP")
+[ -n "${PAPER_RESULTS:-}" ] && PAPER_RESULTS=$(absolute "$PAPER_RESULTS")
 cd "$(dirname "$0")/.."
 
 mode=full
@@ -63,7 +66,7 @@ fi
 
 export ESC=${ESC:-build/cli/esc}
 [ -x "$ESC" ] || { echo "reproduce-paper: no esc binary at $ESC (build first, or set ESC)" >&2; exit 2; }
-root=results/paper
+root=${PAPER_RESULTS:-results/paper}
 if [ ${#campaigns[@]} -eq 0 ]; then
   for d in "$root"/*/; do [ -f "$d/command" ] && campaigns+=("$(basename "$d")"); done
 fi
