@@ -131,7 +131,9 @@ bool StudyLowering::apply_to_dependency(eval::ExperimentSpec& spec, const ast::S
   ast::StudySetting inner = setting;
   inner.key.text = key.substr(name.size() + 1);
   const bool further = is_dependency_key(inner.key.text);
-  if (further ? !apply_to_dependency(dependency, inner, value) : !set_setting(dependency, inner.key, value, sink_))
+  const std::string scope = key.substr(0, key.size() - inner.key.text.size());
+  if (further ? !apply_to_dependency(dependency, inner, value)
+              : !set_setting(dependency, inner.key, value, sink_, scope))
     return false;
   if (!further) {
     spec.dependency_settings.push_back({{name}, inner.key.text, compact(value.text)});

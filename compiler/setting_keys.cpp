@@ -25,11 +25,13 @@ std::vector<std::string> prefixed(std::string_view prefix, const std::vector<std
 }
 
 // "unknown robot setting `robot.x`; did you mean `robot.y`?", listing the group's keys;
-// `word` is the key without the group's prefix.
+// `word` is the key without the group's prefix, `scope` what the script wrote before the key
+// (`energy.` for a setting of a dependency), shown in the message and the suggestion.
 void unknown(Sink& sink, const ast::Name& key, std::string_view what, std::string_view word, std::string_view prefix,
-             const std::vector<std::string>& names) {
-  suggest(sink.error(key.where, fmt::format("unknown {} `{}`", what, key.text)), word, names,
-          {.prefix = prefix, .otherwise = fmt::format("{}s: {}", what, fmt::join(prefixed(prefix, names), ", ")),
+             const std::vector<std::string>& names, std::string_view scope) {
+  const std::string shown = std::string(scope) + std::string(prefix);
+  suggest(sink.error(key.where, fmt::format("unknown {} `{}{}`", what, scope, key.text)), word, names,
+          {.prefix = shown, .otherwise = fmt::format("{}s: {}", what, fmt::join(prefixed(prefix, names), ", ")),
            .always = true});
 }
 
@@ -79,14 +81,15 @@ bool setting_takes_range(std::string_view key) {
   return o != nullptr && o->shape == OptionShape::Range;
 }
 
-bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink) {
+bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink,
+                 std::string_view scope) {
   const std::string& k = key.text;
   if (const ExperimentSetting* s = find_experiment_setting(k)) return s->read(*s, spec, value, sink);
   if (const EsOption* o = find_option_key(es_options(), k)) return o->read(*o, spec.es, value, sink);
   if (k.rfind("gp.", 0) == 0) {
     const GpOption* o = find_option_key(gp_options(), k.substr(3));
     if (o == nullptr) {
-      unknown(sink, key, "GP setting", k.substr(3), "gp.", option_keys(gp_options()));
+      unknown(sink, key, "GP setting", k.substr(3), "gp.", option_keys(gp_options()), scope);
       return false;
     }
     // An experiment without GP settings checks the value and ignores it: the experiments
@@ -99,7 +102,7 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   if (k.rfind("robot.", 0) == 0) {
     const RobotSetting* s = find_robot_setting(k.substr(6));
     if (s == nullptr) {
-      unknown(sink, key, "robot setting", k.substr(6), "robot.", robot_setting_names());
+      unknown(sink, key, "robot setting", k.substr(6), "robot.", robot_setting_names(), scope);
       return false;
     }
     const auto v = read_robot_value(*s, value, sink);
@@ -109,14 +112,14 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   if (k.rfind("arena.", 0) == 0) {
     const ArenaSetting* s = find_arena_setting(k.substr(6));
     if (s == nullptr) {
-      unknown(sink, key, "arena setting", k.substr(6), "arena.", arena_setting_names());
+      unknown(sink, key, "arena setting", k.substr(6), "arena.", arena_setting_names(), scope);
       return false;
     }
     const auto v = read_quantity(value, s->name, Dim::Length, sink);
     if (v) spec.arena.*s->value = *v;
     return v.has_value();
   }
-  unknown(sink, key, "setting", k, "", setting_keys());
+  unknown(sink, key, "setting", k, "", setting_keys(), scope);
   return false;
 }
 

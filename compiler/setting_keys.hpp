@@ -27,7 +27,9 @@ namespace esc::compiler {
 
 // Sets `key` of `spec` to `value` (written as in a script: `50ms`, `on`, `comma`,
 // `[-1, 1]`); reports an unknown key at `key`, a wrong value at `value`. False when refused.
-bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink);
+// `scope`: what the script wrote before the key (`energy.`), shown in an unknown key's message.
+bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink,
+                 std::string_view scope = {});
 
 // The checks of the settings together, reported at `where`: ES options that relate (comma
 // needs lambda >= mu), the GP settings against the trees' primitives, and the runtime's
