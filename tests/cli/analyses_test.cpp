@@ -53,11 +53,16 @@ std::vector<std::map<std::string, std::string>> usage_rows(const fs::path& dir) 
   return rows;
 }
 
+// A paper script (`ARGS`: its file under experiments/paper and options) at a small size: one
+// epoch of 60 steps, (2, 6)-ES, into `dir`.
+Outcome run_small(const std::string& args, const fs::path& dir) {
+  return esc("run " + std::string(ESC_SOURCE_DIR) + "/experiments/paper/" + args +
+             " --set epochs=1 --set steps=60 --set mu=2 --set lambda=6 --threads 2 --out " + dir.string());
+}
+
 TEST(Analyses, TheUsageTableHasARowPerRunGenerationAndBehavior) {
   const fs::path dir = scratch("usage-table");
-  const Outcome run = esc("run " + std::string(ESC_SOURCE_DIR) +
-                          "/experiments/paper/energy.esc --runs 2 --generations 2 --set epochs=1 --set steps=60 "
-                          "--set mu=2 --set lambda=6 --threads 2 --out " + dir.string());
+  const Outcome run = run_small("energy.esc --runs 2 --generations 2", dir);
   ASSERT_EQ(run.status, 0) << run.output;
   const auto rows = usage_rows(dir);
   // SC: 3 actions, CS and SS: 4 behaviors each; CC chooses nothing. 2 runs x 2 generations.
@@ -106,9 +111,7 @@ TEST(Analyses, TheUsageTableHasARowPerRunGenerationAndBehavior) {
 // script needs to follow their usage over the generations (the paper's sensitivity analysis).
 TEST(Analyses, TheUsageTableMarksUselessBehaviors) {
   const fs::path dir = scratch("usage-useless");
-  const Outcome run = esc("run " + std::string(ESC_SOURCE_DIR) +
-                          "/experiments/paper/sensitivity.esc --experiment behaviors_8 --runs 1 --generations 1 "
-                          "--set epochs=1 --set steps=60 --set mu=2 --set lambda=6 --threads 2 --out " + dir.string());
+  const Outcome run = run_small("sensitivity.esc --experiment behaviors_8 --runs 1 --generations 1", dir);
   ASSERT_EQ(run.status, 0) << run.output;
   std::map<std::string, std::pair<std::string, std::string>> marked;   // behavior -> (library, useless)
   for (const auto& r : usage_rows(dir))
