@@ -21,6 +21,16 @@ std::vector<double> holm(std::span<const double> p) {
   return adjusted;
 }
 
+namespace {
+
+// Values that differ only in their last bits (runs that all end the same way) have a spread
+// of rounding: a ratio over it prints the noise (1e14), not a comparison.
+constexpr double kRoundingSpread = 1e-12;
+
+bool has_spread(const Summary& s) { return s.sd > kRoundingSpread * std::max(1.0, std::abs(s.mean)); }
+
+}  // namespace
+
 std::vector<Comparison> compare(std::span<const std::vector<double>> samples,
                                 std::span<const std::pair<std::size_t, std::size_t>> pairs) {
   std::vector<Comparison> out;
@@ -33,8 +43,8 @@ std::vector<Comparison> compare(std::span<const std::vector<double>> samples,
     c.mann_whitney = mann_whitney_u(samples[i], samples[j]);
     c.a12 = vargha_delaney_a12(samples[i], samples[j]);
     c.spread = brown_forsythe(samples[i], samples[j]);
-    const double sd_a = summarise(samples[i]).sd, sd_b = summarise(samples[j]).sd;
-    c.sd_ratio = sd_b > 0.0 && samples[i].size() > 1 ? sd_a / sd_b : std::numeric_limits<double>::quiet_NaN();
+    const Summary a = summarise(samples[i]), b = summarise(samples[j]);
+    c.sd_ratio = has_spread(b) && samples[i].size() > 1 ? a.sd / b.sd : std::numeric_limits<double>::quiet_NaN();
     welch_p.push_back(c.welch.p_value);
     mw_p.push_back(c.mann_whitney.p_value);
     spread_p.push_back(c.spread.p_value);

@@ -190,6 +190,17 @@ TEST(Statistics, ComparisonsAdjustEachTestOverTheFamily) {
   }
 }
 
+// Runs that all end the same way but for the last bits of their fitness have no spread to
+// compare: the ratio is undefined, not 1e14.
+TEST(Statistics, AnSdRatioOverRoundingIsUndefined) {
+  const std::vector<std::vector<double>> samples = {{4000.0, 4100.0, 4200.0},
+                                                    {5000.0, std::nextafter(5000.0, 6000.0), 5000.0}};
+  const std::vector<std::pair<std::size_t, std::size_t>> pairs = {{0, 1}, {1, 0}};
+  const std::vector<Comparison> cs = compare(samples, pairs);
+  EXPECT_TRUE(std::isnan(cs[0].sd_ratio));
+  EXPECT_DOUBLE_EQ(cs[1].sd_ratio, summarise(samples[1]).sd / summarise(samples[0]).sd);
+}
+
 TEST(Statistics, UndefinedTestsGiveNaN) {
   const std::vector<double> one = {1.0};
   const std::vector<double> flat = {2.0, 2.0, 2.0};
