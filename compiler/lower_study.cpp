@@ -251,8 +251,13 @@ std::vector<eval::ConditionSpec> StudyLowering::sweep(const ast::StudyItem& item
       }
       // Each value checked alone, once: a wrong one is reported at itself, not per point.
       eval::ExperimentSpec probe = spec.value_or(eval::ExperimentSpec{});
+      const std::size_t before = sink_.items().size();
       if (spec && !apply(probe, st, *v)) {
         ok = false;
+        // A wrong key (unknown, or an experiment not depended on) is wrong for every value:
+        // said once, at the key.
+        const auto& first = sink_.items().size() > before ? sink_.items()[before].where : SourceRange{};
+        if (first.line == st.key.where.line && first.column == st.key.where.column) break;
         continue;
       }
       a.values.push_back(*v);

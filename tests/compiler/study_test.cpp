@@ -296,5 +296,18 @@ study st {
       << rendered(wrong);
 }
 
+// A wrong key in a sweep is one error, at the key, however many values it lists; a wrong
+// value is one error per value.
+TEST(Study, ASweepsWrongKeyIsReportedOnce) {
+  const auto errors = [](const CompileResult& r) {
+    return std::count_if(r.diagnostics.begin(), r.diagnostics.end(),
+                         [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  };
+  const CompileResult key = compile(R"(study s { sweep e { robot.time_constat [25ms, 50ms, 75ms] } })");
+  EXPECT_EQ(errors(key), 1) << rendered(key);
+  const CompileResult values = compile(R"(study s { sweep e { robot.time_constant [25kg, 50kg] } })");
+  EXPECT_EQ(errors(values), 2) << rendered(values);
+}
+
 }  // namespace
 }  // namespace esc::compiler
