@@ -159,7 +159,8 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const eval::Experi
   }
   Prepared p{*found, {}, {}};
   // The script's settings before the command line's, as for the experiment run itself.
-  if (!apply_dependency_settings(p.spec, user.dependency_settings, user.name) || !cx.apply_overrides(p.spec)) return std::nullopt;
+  if (!apply_dependency_settings(p.spec, user.dependency_settings, user.name) || !cx.apply_overrides(p.spec))
+    return std::nullopt;
   if (!prepare(p.spec, cx, depth + 1)) return std::nullopt;
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
