@@ -110,7 +110,7 @@ bool StudyLowering::apply(eval::ExperimentSpec& spec, const ast::StudySetting& s
 }
 
 bool StudyLowering::apply_to_dependency(eval::ExperimentSpec& spec, const ast::StudySetting& setting,
-                                        const ast::Value& value) {
+                                        const ast::Value& value, const std::string& written_above) {
   const std::string& key = setting.key.text;
   const std::string name = key.substr(0, key.find('.'));
   const std::vector<std::string> needs = spec.needs();
@@ -131,8 +131,8 @@ bool StudyLowering::apply_to_dependency(eval::ExperimentSpec& spec, const ast::S
   ast::StudySetting inner = setting;
   inner.key.text = key.substr(name.size() + 1);
   const bool further = is_dependency_key(inner.key.text);
-  const std::string scope = key.substr(0, key.size() - inner.key.text.size());
-  if (further ? !apply_to_dependency(dependency, inner, value)
+  const std::string scope = written_above + key.substr(0, key.size() - inner.key.text.size());
+  if (further ? !apply_to_dependency(dependency, inner, value, scope)
               : !set_setting(dependency, inner.key, value, sink_, scope))
     return false;
   if (!further) {

@@ -43,8 +43,11 @@ class StudyLowering {
   // Whether `key` names an experiment first (`energy.generations`), not a group of settings.
   [[nodiscard]] bool is_dependency_key(std::string_view key) const;
   // `energy.generations 60`: records a setting of an experiment `spec` depends on, its value
-  // read as that experiment's. False when refused.
-  bool apply_to_dependency(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value);
+  // read as that experiment's; `written_above` is the part of the key already stripped on the
+  // way down (`energy.` for `energy.stop.generations`), so that errors name the key as written.
+  // False when refused.
+  bool apply_to_dependency(eval::ExperimentSpec& spec, const ast::StudySetting& setting, const ast::Value& value,
+                           const std::string& written_above = {});
   // The settings recorded for each experiment `spec` depends on, checked together on it (as
   // the runtime applies them), reported at `where`. False when one fails.
   bool check_dependency_settings(const eval::ExperimentSpec& spec, const SourceRange& where);
