@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""What the best controllers do in the recharge area, from a finished run of an experiment
+with the energy accumulator (the paper's section 4.5: with a recharge twice slower, "the
+robot simply stays in the recharge area until the energy level is back to maximum, using
+the stop behavior"; "direct controller architectures never stop on the recharge area").
+Replays each run's stored best controller (`esc replay`, every epoch; no other dependency)
+and prints Markdown.
+
+    python3 scripts/recharge-visits.py RUN_DIR [--esc build/cli/esc] [--condition NAME]...
+
+A step is in the recharge area when the accumulator did not fall over it (it falls on every
+step outside, and stays full or rises inside); a visit is a stretch of such steps. Per run:
+- epochs and the steps they lasted (an epoch ends early when the accumulator is empty);
+- visits: those left (the robot drove out) and those the epoch ended in;
+- left full: visits left with the accumulator at least FULL (a step that crosses the area's
+  edge recharges only on its substeps inside: a robot that waits for full may drive out a
+  substep early, at 0.998);
+- level left: the mean level at which the robot drove out (1 = full);
+- still: the share of in-area steps whose centre moved less than STILL_MM (the evolved stop
+  behaviors spin on the spot: the wheels turn, the centre does not move);
+- stop: for supervisors, the share of in-area steps that the behavior `stop` acted.
+"""
+import argparse
+import csv
+import io
+import math
+import statistics
+import subprocess
+import sys
+import tempfile
+from collections import defaultdict
+from pathlib import Path
+
+STILL_MM = 0.5   # a step at full speed moves the centre about 8 mm
+FULL = 0.99      # one control step recharges 0.01 at the paper's rate (100 steps), 0.005 at half of it
+
+
+def export(esc, directory):
+    out = subprocess.run([esc, "export", directory, "--format", "csv"], check=True, capture_output=True,
+                         text=True).stdout
+    return list(csv.DictReader(io.StringIO(out)))
+
+
+def replay(esc, directory, controller, run, scratch):
+    done = subprocess.run([esc, "replay", directory, "--controller", controller, "--run", str(run), "--out", scratch],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"esc replay {directory} --controller {controller} --run {run} failed:\n{done.stderr}")
+    with open(Path(scratch) / f"replay-{controller}-run-{run:02d}.csv", newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def visits_of(rows):
+    """Per-run figures from one replay's steps (every epoch)."""
+    epochs = defaultdict(list)
+    for r in rows:
+        epochs[int(r["epoch"])].append(r)
+    f = {"epochs": len(epochs), "steps": [], "empty": 0, "left": 0, "left_full": 0, "ended_in": 0,
+         "left_levels": [], "in_steps": 0, "still": 0, "stop": 0}
+    for steps in epochs.values():
+        f["steps"].append(len(steps))
+        level, x, y = 1.0, None, None   # every epoch starts full
+        inside = False
+        for r in steps:
+            e = float(r["energy"])
+            now_in = e >= level and e > 0.0
+            if inside and not now_in:
+                f["left"] += 1
+                f["left_levels"].append(level)
+                f["left_full"] += level >= FULL
+            inside = now_in
+            if inside:
+                f["in_steps"] += 1
+                moved = math.hypot(float(r["x_m"]) - x, float(r["y_m"]) - y) if x is not None else 0.0
+                f["still"] += moved * 1000.0 < STILL_MM
+                f["stop"] += r.get("behavior") == "stop"
+            level, x, y = e, float(r["x_m"]), float(r["y_m"])
+        f["ended_in"] += inside
+        f["empty"] += level == 0.0
+    return f
+
+
+def share(n, d):
+    return f"{100.0 * n / d:.0f}%" if d else "-"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("directory")
+    parser.add_argument("--esc", default="build/cli/esc")
+    parser.add_argument("--condition", action="append", help="only this study condition (repeatable)")
+    args = parser.parse_args()
+
+    best = defaultdict(lambda: float("-inf"))   # (condition, controller, run) -> best fitness
+    for r in export(args.esc, args.directory):
+        if args.condition and r["condition"] not in args.condition:
+            continue
+        # A plain experiment's rows name it as their condition, outside any study.
+        key = (r["condition"] if r["study"] else "", r["controller"], int(r["run"]))
+        best[key] = max(best[key], float(r["best"]))
+    if not best:
+        print("No run to replay (is the directory finished, and the condition named right?).", file=sys.stderr)
+        return 1
+
+    print(f"# Recharge visits of the best controllers (full: level >= {FULL}; centre still: moved < {STILL_MM} mm "
+          "in a step)\n")
+    with tempfile.TemporaryDirectory() as scratch:
+        groups = defaultdict(list)
+        for (condition, controller, run) in sorted(best):
+            groups[(condition, controller)].append(run)
+        for (condition, controller), runs in groups.items():
+            where = str(Path(args.directory) / condition) if condition else args.directory
+            print(f"## {controller}" + (f" in {condition}" if condition else "") + "\n")
+            print("| run | best | steps per epoch | epochs emptied | visits left / ended in | left full "
+                  "| level left | still in area | stop in area |")
+            print("|---|---|---|---|---|---|---|---|---|")
+            totals = defaultdict(int)
+            for run in runs:
+                f = visits_of(replay(args.esc, where, controller, run, scratch))
+                for k in ("left", "left_full", "ended_in", "in_steps", "still", "stop", "empty"):
+                    totals[k] += f[k]
+                totals["runs_full"] += f["left"] > 0 and f["left_full"] == f["left"]
+                level = f"{statistics.mean(f['left_levels']):.2f}" if f["left_levels"] else "-"
+                print(f"| {run} | {best[(condition, controller, run)]:.1f} | {statistics.mean(f['steps']):.0f} "
+                      f"| {f['empty']} of {f['epochs']} | {f['left']} / {f['ended_in']} "
+                      f"| {share(f['left_full'], f['left'])} | {level} | {share(f['still'], f['in_steps'])} "
+                      f"| {share(f['stop'], f['in_steps'])} |")
+            print(f"\nAll runs: {totals['left']} visits left, {share(totals['left_full'], totals['left'])} of "
+                  f"them full; {totals['runs_full']} of {len(runs)} runs leave only when full; centre still "
+                  f"{share(totals['still'], totals['in_steps'])} and `stop` acting "
+                  f"{share(totals['stop'], totals['in_steps'])} of the in-area steps; "
+                  f"{totals['empty']} epochs emptied.\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
