@@ -40,6 +40,28 @@ std::vector<double> genome_for(const ControllerSpec& s) {
   return g;
 }
 
+// Steps `c` `steps` times over varying IR readings, `between(t, frame)` before each step
+// (resets, rebinds, other inputs), and checks that nothing was allocated in between; also
+// `after()`, inside the counted scope; the wheel commands must stay finite.
+template <typename Between, typename After>
+void expect_no_allocation(Controller& c, int steps, Between between, After after) {
+  expr::Frame f{};
+  double sum = 0.0;
+  {
+    CountScope scope;
+    for (int t = 0; t < steps; ++t) {
+      fill_ir(f, t);
+      between(t, f);
+      const WheelCommand w = c.step(f);
+      sum += w.left - w.right;
+    }
+    after();
+  }
+  EXPECT_EQ(g_news.load(), 0);
+  EXPECT_EQ(g_mallocs.load(), 0);
+  EXPECT_TRUE(std::isfinite(sum));
+}
+
 TEST(NoAlloc, CounterSeesAllocations) {
   long news = 0;
   {
@@ -73,20 +95,7 @@ TEST(NoAlloc, SymbolicStepDoesNotAllocate) {
   s.actions = {forward(), left(), right(), backward()};
   const std::vector<double> g = genome_for(s);
   Controller c(s, g);
-  expr::Frame f{};
-  double sum = 0.0;
-  {
-    CountScope scope;
-    for (int t = 0; t < 1000; ++t) {
-      fill_ir(f, t);
-      const WheelCommand w = c.step(f);
-      sum += w.left + w.right;
-    }
-    c.reset();
-  }
-  EXPECT_EQ(g_news.load(), 0);
-  EXPECT_EQ(g_mallocs.load(), 0);
-  EXPECT_TRUE(std::isfinite(sum));
+  expect_no_allocation(c, 1000, [](int, expr::Frame&) {}, [&] { c.reset(); });
 }
 
 TEST(NoAlloc, ClassicalStepDoesNotAllocate) {
@@ -96,20 +105,12 @@ TEST(NoAlloc, ClassicalStepDoesNotAllocate) {
   const std::vector<double> g = genome_for(s);
   const std::vector<double> g2(g.rbegin(), g.rend());
   Controller c(s, g);
-  expr::Frame f{};
-  double sum = 0.0;
-  {
-    CountScope scope;
-    for (int t = 0; t < 1000; ++t) {
-      fill_ir(f, t);
-      if (t == 500) c.rebind(g2);  // rebinding reuses the buffers
-      const WheelCommand w = c.step(f);
-      sum += w.left - w.right;
-    }
-  }
-  EXPECT_EQ(g_news.load(), 0);
-  EXPECT_EQ(g_mallocs.load(), 0);
-  EXPECT_TRUE(std::isfinite(sum));
+  expect_no_allocation(
+      c, 1000,
+      [&](int t, expr::Frame&) {
+        if (t == 500) c.rebind(g2);  // rebinding reuses the buffers
+      },
+      [] {});
 }
 
 TEST(NoAlloc, ElmanStepDoesNotAllocate) {
@@ -121,20 +122,12 @@ TEST(NoAlloc, ElmanStepDoesNotAllocate) {
   s.actions = {forward(), left(), right()};
   const std::vector<double> g = genome_for(s);
   Controller c(s, g);
-  expr::Frame f{};
-  double sum = 0.0;
-  {
-    CountScope scope;
-    for (int t = 0; t < 1000; ++t) {
-      fill_ir(f, t);
-      if (t % 250 == 0) c.reset();
-      const WheelCommand w = c.step(f);
-      sum += w.left + w.right;
-    }
-  }
-  EXPECT_EQ(g_news.load(), 0);
-  EXPECT_EQ(g_mallocs.load(), 0);
-  EXPECT_TRUE(std::isfinite(sum));
+  expect_no_allocation(
+      c, 1000,
+      [&](int t, expr::Frame&) {
+        if (t % 250 == 0) c.reset();
+      },
+      [] {});
 }
 
 TEST(NoAlloc, SupervisorOverElmanSubControllersDoesNotAllocate) {
@@ -156,27 +149,20 @@ TEST(NoAlloc, SupervisorOverElmanSubControllersDoesNotAllocate) {
   const std::vector<double> g = genome_for(s);
   const std::vector<double> g2(g.rbegin(), g.rend());
   Controller c(s, g);
-  expr::Frame f{};
-  double sum = 0.0;
   int behaviors_used = 0;
-  {
-    CountScope scope;
-    for (int t = 0; t < 2000; ++t) {
-      fill_ir(f, t);
-      f[0] = std::sin(0.11 * t);  // slots 0..4 feed the supervisor too: vary the choice
-      f[1] = std::cos(0.07 * t);
-      if (t % 250 == 0) c.reset();
-      if (t == 1000) c.rebind(g2);
-      const WheelCommand w = c.step(f);
-      sum += w.left - w.right;
-    }
-    for (const std::int64_t u : c.usage()) behaviors_used += u > 0 ? 1 : 0;
-    c.clear_usage();
-  }
+  expect_no_allocation(
+      c, 2000,
+      [&](int t, expr::Frame& f) {
+        f[0] = std::sin(0.11 * t);  // slots 0..4 feed the supervisor too: vary the choice
+        f[1] = std::cos(0.07 * t);
+        if (t % 250 == 0) c.reset();
+        if (t == 1000) c.rebind(g2);
+      },
+      [&] {
+        for (const std::int64_t u : c.usage()) behaviors_used += u > 0 ? 1 : 0;
+        c.clear_usage();
+      });
   EXPECT_GE(behaviors_used, 2);
-  EXPECT_EQ(g_news.load(), 0);
-  EXPECT_EQ(g_mallocs.load(), 0);
-  EXPECT_TRUE(std::isfinite(sum));
 }
 
 }  // namespace
