@@ -1,11 +1,11 @@
 #include "bench/campaign_estimate.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <deque>
 #include <functional>
 #include <span>
 
+#include "bench/cpu_time.hpp"
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/evaluator.hpp"
@@ -17,8 +17,9 @@ namespace esc::bench {
 namespace {
 
 // Per-core control steps per second of evaluating random genomes (an early generation:
-// short epochs, many resets), measured for about `seconds`. Trees are drawn as a GP run's
-// initial population is.
+// short epochs, many resets), measured for about `seconds` of this thread's CPU time, which
+// other work on the machine does not stretch. Trees are drawn as a GP run's initial
+// population is.
 double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec& c, double seconds,
                     std::vector<double>& lengths) {
   eval::Evaluator evaluator(e);
@@ -26,7 +27,7 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
   std::vector<double> genome(c.genome_size());
   const evo::gp::GpSettings gp = e.gp.value_or(evo::gp::GpSettings{});
   std::int64_t steps = 0;
-  const auto start = std::chrono::steady_clock::now();
+  const double start = thread_cpu_seconds();
   double elapsed = 0.0;
   for (std::uint64_t i = 0; elapsed < seconds || steps == 0; ++i) {
     if (c.is_tree())
@@ -35,7 +36,7 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
       for (double& g : genome) g = rng.uniform(e.es.lower, e.es.upper);
     steps += evaluator.evaluate(c, genome, i).steps;
     const double before = elapsed;
-    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    elapsed = thread_cpu_seconds() - start;
     lengths.push_back(elapsed - before);
   }
   return static_cast<double>(steps) / elapsed;

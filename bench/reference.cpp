@@ -1,13 +1,12 @@
 #include "bench/reference.hpp"
 
-#include <time.h>
-
 #include <algorithm>
 #include <array>
 #include <limits>
 #include <memory>
 #include <numbers>
 
+#include "bench/cpu_time.hpp"
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/sim/world.hpp"
@@ -15,14 +14,6 @@
 namespace esc::bench {
 
 namespace {
-
-// This thread's CPU time: other processes on a shared machine slow a loop's wall time, not
-// its CPU time (both halves of a fraction still share caches and clock speed with them).
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 struct Tally {
   std::int64_t steps = 0;
@@ -32,12 +23,12 @@ struct Tally {
 
 // Runs items of `loop` until `seconds` of CPU time have passed; returns this round's rate.
 double run_for(const StepLoop& loop, double seconds, Tally& tally) {
-  const double start = cpu_seconds();
+  const double start = thread_cpu_seconds();
   std::int64_t steps = 0;
   double elapsed = 0.0;
   while (elapsed < seconds || steps == 0) {
     steps += loop(tally.next++);
-    elapsed = cpu_seconds() - start;
+    elapsed = thread_cpu_seconds() - start;
   }
   tally.steps += steps;
   tally.seconds += elapsed;
