@@ -22,18 +22,22 @@ void print_transfers(const eval::CampaignResult& result) {
   for (const eval::ControllerResult& c : result.controllers) {
     const auto s = report::summarise_transfers(c.runs);
     if (!s) continue;
-    if (!header)
-      fmt::print("\nfrom experiment {} (mean over runs: each run's genome there, then here)\n{:<12} {:>14} {:>14} "
-                 "{:>9}  {}\n",
-                 s->origin, "controller", "fitness there", "fitness here", "change", s->evaluate_only ? "" : "regained");
+    if (!header) {
+      fmt::print("\nfrom experiment {} (mean over runs: each run's genome there, then here{})\n{:<12} {:>14} {:>14} {:>9}",
+                 s->origin, s->evaluate_only ? "" : "; evolving on: the best here, the share of the loss made up, runs back at the level there",
+                 "controller", "fitness there", "fitness here", "change");
+      if (!s->evaluate_only) fmt::print(" {:>14} {:>14}  regained", "best here", "loss made up");
+      fmt::print("\n");
+    }
     header = true;
-    std::string regained;
+    fmt::print("{:<12} {:>14} {:>14} {:>9}", c.name, or_na(s->origin_mean, "{:.1f}"), or_na(s->here_mean, "{:.1f}"),
+               or_na(s->change_mean, "{:+.1f}%"));
     if (!s->evaluate_only)
-      regained = s->regained == 0 ? fmt::format("0 of {} runs", s->runs.size())
+      fmt::print(" {:>14} {:>14}  {}", or_na(s->best_here_mean, "{:.1f}"), or_na(s->loss_regained_mean, "{:.0f}%"),
+                 s->regained == 0 ? fmt::format("0 of {} runs", s->runs.size())
                                   : fmt::format("{} of {} runs, median generation {}", s->regained, s->runs.size(),
-                                                or_na(s->regained_median, "{:.0f}"));
-    fmt::print("{:<12} {:>14} {:>14} {:>9}  {}\n", c.name, or_na(s->origin_mean, "{:.1f}"),
-               or_na(s->here_mean, "{:.1f}"), or_na(s->change_mean, "{:+.1f}%"), regained);
+                                                or_na(s->regained_median, "{:.0f}")));
+    fmt::print("\n");
   }
 }
 

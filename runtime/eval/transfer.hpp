@@ -26,6 +26,16 @@ struct Transfer {
   return 100.0 * (*t.fitness_here - t.origin_fitness) / std::abs(t.origin_fitness);
 }
 
+// How much of what the genome lost here the run made up by evolving on: (best here - fitness
+// here) / (origin - fitness here) in percent, `best_here` the run's best fitness over its
+// generations here. 50: "only recover half of it"; 100: back at the origin's level; above:
+// past it. nullopt when the run only evaluates, before generation 0, or when the genome lost
+// nothing here.
+[[nodiscard]] inline std::optional<double> loss_regained_percent(const Transfer& t, double best_here) noexcept {
+  if (t.evaluate_only || !t.fitness_here || !(*t.fitness_here < t.origin_fitness)) return std::nullopt;
+  return 100.0 * (best_here - *t.fitness_here) / (t.origin_fitness - *t.fitness_here);
+}
+
 // The first generation whose best fitness reaches the origin's (`best` per generation, from
 // 0); nullopt when none does, or when the run only evaluates.
 [[nodiscard]] inline std::optional<int> regained_at(const Transfer& t, std::span<const double> best) noexcept {

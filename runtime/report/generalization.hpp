@@ -3,8 +3,9 @@
 // starts from another's controllers: the fitness each run's genome had in the origin
 // experiment, its fitness here, the change in percent ("lose around 10% of their
 // fitness"), and for `start from` the generation at which each run regained the origin's
-// level ("reach the same level again in 150 generations", "never recover"). The end table
-// of `esc run` and the report show them.
+// level ("reach the same level again in 150 generations", "never recover"), its best here
+// and the share of its loss it made up ("only recover half of it"). The end table of
+// `esc run` and the report show them.
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ struct RunTransfer {
   std::optional<double> fitness_here;
   std::optional<double> change_percent;
   std::optional<int> regained_at;       // generation; none when never (or only evaluated)
+  std::optional<double> best_here;      // start from: the run's best over its generations here
+  std::optional<double> loss_regained;  // start from: eval::loss_regained_percent
 };
 
 struct TransferSummary {
@@ -32,6 +35,8 @@ struct TransferSummary {
   double change_mean = 0.0;             // mean of the runs' changes, in percent
   std::size_t regained = 0;             // runs that regained the origin's level
   double regained_median = 0.0;         // their median generation (NaN when none)
+  double best_here_mean = 0.0;          // start from (NaN otherwise)
+  double loss_regained_mean = 0.0;      // over the runs that lost something (NaN when none)
 };
 
 // Nothing when no run of `runs` started from a stored genome.

@@ -150,10 +150,18 @@ json transfers_json(const std::vector<eval::RunResult>& runs) {
   for (const RunTransfer& t : s->runs)
     per_run.push_back({{"run", t.run + 1}, {"origin_run", t.origin_run + 1}, {"origin_fitness", t.origin_fitness},
                        {"fitness_here", opt(t.fitness_here)}, {"change_percent", opt(t.change_percent)},
-                       {"regained_at", opt(t.regained_at)}});
-  return {{"origin", s->origin}, {"evaluate_only", s->evaluate_only}, {"origin_mean", number(s->origin_mean)},
-          {"here_mean", number(s->here_mean)}, {"change_mean", number(s->change_mean)}, {"regained", s->regained},
-          {"regained_median", number(s->regained_median)}, {"runs", per_run}};
+                       {"regained_at", opt(t.regained_at)}, {"best_here", opt(t.best_here)},
+                       {"loss_regained", opt(t.loss_regained)}});
+  return {{"origin", s->origin},
+          {"evaluate_only", s->evaluate_only},
+          {"origin_mean", number(s->origin_mean)},
+          {"here_mean", number(s->here_mean)},
+          {"change_mean", number(s->change_mean)},
+          {"regained", s->regained},
+          {"regained_median", number(s->regained_median)},
+          {"best_here_mean", number(s->best_here_mean)},
+          {"loss_regained_mean", number(s->loss_regained_mean)},
+          {"runs", per_run}};
 }
 
 json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {

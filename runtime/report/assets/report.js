@@ -39,6 +39,7 @@
     return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${a})`;
   }
   function fmt(x, d) { return x === null || x === undefined || Number.isNaN(x) ? 'n/a' : Number(x).toFixed(d); }
+  function percent(x) { const t = fmt(x, 0); return t === 'n/a' ? t : `${t}%`; }
   function fmtP(p) {
     if (p === null || p === undefined) return 'n/a';
     return p < 1e-4 ? p.toExponential(1) : p.toFixed(4);
@@ -329,32 +330,37 @@
     card.appendChild(el('h3', {text: `From experiment ${first.origin}`}));
     const t = el('table');
     const head = ['controller', 'fitness there', 'fitness here', 'change'];
-    if (!first.evaluate_only) head.push('regained', 'median generation');
+    if (!first.evaluate_only) head.push('best here', 'loss made up', 'regained', 'median generation');
     t.appendChild(el('tr', {}, head.map(h => el('th', {text: h}))));
     for (const c of cs) {
       const s = c.transfers;
       const cells = [c.name, fmt(s.origin_mean, 1), fmt(s.here_mean, 1),
                      s.change_mean === null ? 'n/a' : `${s.change_mean > 0 ? '+' : ''}${fmt(s.change_mean, 1)}%`];
-      if (!s.evaluate_only) cells.push(`${s.regained} of ${s.runs.length} runs`, fmt(s.regained_median, 0));
+      if (!s.evaluate_only)
+        cells.push(fmt(s.best_here_mean, 1), percent(s.loss_regained_mean), `${s.regained} of ${s.runs.length} runs`,
+                   fmt(s.regained_median, 0));
       t.appendChild(el('tr', {}, cells.map(v => el('td', {text: v}))));
     }
     card.appendChild(t);
     const runs = el('table');
     const runHead = ['controller', 'run', 'from run', 'fitness there', 'fitness here', 'change'];
-    if (!first.evaluate_only) runHead.push('regained at generation');
+    if (!first.evaluate_only) runHead.push('best here', 'loss made up', 'regained at generation');
     runs.appendChild(el('tr', {}, runHead.map(h => el('th', {text: h}))));
     for (const c of cs)
       for (const r of c.transfers.runs) {
         const cells = [c.name, String(r.run), String(r.origin_run), fmt(r.origin_fitness, 1), fmt(r.fitness_here, 1),
                        r.change_percent === null ? 'n/a' : `${r.change_percent > 0 ? '+' : ''}${fmt(r.change_percent, 1)}%`];
-        if (!c.transfers.evaluate_only) cells.push(r.regained_at === null ? 'never' : String(r.regained_at));
+        if (!c.transfers.evaluate_only)
+          cells.push(fmt(r.best_here, 1), percent(r.loss_regained), r.regained_at === null ? 'never' : String(r.regained_at));
         runs.appendChild(el('tr', {}, cells.map(v => el('td', {text: v}))));
       }
     card.appendChild(el('h3', {text: 'Per run'}));
     card.appendChild(runs);
     card.appendChild(el('p', {class: 'note', text:
       'Fitness there: the best fitness of the origin run whose best genome this run took. Fitness here: that genome ' +
-      'evaluated here (individual 0 of generation 0). Change: (here - there) / |there|. Regained: the first ' +
+      'evaluated here (individual 0 of generation 0). Change: (here - there) / |there|. Best here: the run\'s ' +
+      'best fitness over its generations here. Loss made up: (best here - fitness here) / (there - fitness here), ' +
+      'for runs whose genome lost fitness here (100%: back at the origin\'s level). Regained: the first ' +
       'generation whose best fitness reaches the origin\'s.'}));
     parent.appendChild(card);
   }
