@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -23,9 +24,11 @@ void print_transfers(const eval::CampaignResult& result) {
     const auto s = report::summarise_transfers(c.runs);
     if (!s) continue;
     if (!header) {
-      fmt::print("\nfrom experiment {} (mean over runs: each run's genome there, then here{})\n{:<12} {:>14} {:>14} {:>9}",
-                 s->origin, s->evaluate_only ? "" : "; evolving on: the best here, the share of the loss made up, runs back at the level there",
-                 "controller", "fitness there", "fitness here", "change");
+      constexpr std::string_view evolving_on =
+          "; evolving on: the best here, the share of the loss made up, runs back at the level there";
+      fmt::print("\nfrom experiment {} (mean over runs: each run's genome there, then here{})\n", s->origin,
+                 s->evaluate_only ? "" : evolving_on);
+      fmt::print("{:<12} {:>14} {:>14} {:>9}", "controller", "fitness there", "fitness here", "change");
       if (!s->evaluate_only) fmt::print(" {:>14} {:>14}  regained", "best here", "loss made up");
       fmt::print("\n");
     }
