@@ -25,7 +25,7 @@ void print_transfers(const eval::CampaignResult& result) {
     if (!s) continue;
     if (!header) {
       constexpr std::string_view evolving_on =
-          "; evolving on: the best here, the share of the loss made up, runs back at the level there";
+          "; evolving on: the best here, the share of the loss made up (pooled), runs back at the level there";
       fmt::print("\nfrom experiment {} (mean over runs: each run's genome there, then here{})\n", s->origin,
                  s->evaluate_only ? "" : evolving_on);
       fmt::print("{:<12} {:>14} {:>14} {:>9}", "controller", "fitness there", "fitness here", "change");
@@ -36,7 +36,7 @@ void print_transfers(const eval::CampaignResult& result) {
     fmt::print("{:<12} {:>14} {:>14} {:>9}", c.name, or_na(s->origin_mean, "{:.1f}"), or_na(s->here_mean, "{:.1f}"),
                or_na(s->change_mean, "{:+.1f}%"));
     if (!s->evaluate_only)
-      fmt::print(" {:>14} {:>14}  {}", or_na(s->best_here_mean, "{:.1f}"), or_na(s->loss_regained_mean, "{:.0f}%"),
+      fmt::print(" {:>14} {:>14}  {}", or_na(s->best_here_mean, "{:.1f}"), or_na(s->loss_regained_pooled, "{:.0f}%"),
                  s->regained == 0 ? fmt::format("0 of {} runs", s->runs.size())
                                   : fmt::format("{} of {} runs, median generation {}", s->regained, s->runs.size(),
                                                 or_na(s->regained_median, "{:.0f}")));

@@ -21,12 +21,12 @@ every run's figures, so the threshold can be judged against them.
 """
 import argparse
 import contextlib
-import csv
 import json
 import os
-import subprocess
 import sys
 import tempfile
+
+from esc_runs import parts, replay
 
 DEADBAND = 0.05        # share of the top speed below which the direction is kept
 MIN_BACKWARD = 0.25
@@ -65,32 +65,17 @@ def split_epochs(rows):
     return epochs.values()
 
 
-def replay(esc, source, controller, run, scratch):
-    out = os.path.join(scratch, f"{os.path.basename(source)}-{controller}-{run}")
-    subprocess.run([esc, "replay", source, "--controller", controller, "--run", str(run), "--out", out],
-                   check=True, stdout=subprocess.DEVNULL)
-    with open(os.path.join(out, f"replay-{controller}-run-{run:02}.csv")) as f:
-        return list(csv.DictReader(f))
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("dir")
     parser.add_argument("--esc", default=os.environ.get("ESC", "build/cli/esc"))
     parser.add_argument("--out", help="write the Markdown table here (default: print it)")
     a = parser.parse_args()
-    with open(os.path.join(a.dir, "summary.json")) as f:
-        summary = json.load(f)
-    with open(os.path.join(a.dir, "settings.json")) as f:
-        directories = {c["name"]: c["directory"] for c in json.load(f).get("conditions", [])}
-    # A study's conditions replay from their directories; one experiment from DIR itself.
-    parts = [(c["name"], os.path.join(a.dir, directories[c["name"]]), c) for c in summary["conditions"]] \
-        if "conditions" in summary else [(summary["experiment"], a.dir, summary)]
     lines = ["| condition | controller | run | best fitness | backward share | reversals / 100 steps "
              "| BACKWARD usage | alternates |", "|---|---|---|---|---|---|---|---|"]
     totals = []
     with tempfile.TemporaryDirectory() as scratch:
-        for name, source, part in parts:
+        for name, source, part in parts(a.dir):
             with open(os.path.join(source, "settings.json")) as f:
                 settings = json.load(f)
             top = float(str(settings["settings"]["robot.max_speed"]).split()[0])

@@ -3,7 +3,7 @@
 with the energy accumulator (the paper's section 4.5: with a recharge twice slower, "the
 robot simply stays in the recharge area until the energy level is back to maximum, using
 the stop behavior"; "direct controller architectures never stop on the recharge area").
-Replays each run's stored best controller (`esc replay`, every epoch; no other dependency)
+Replays each run's stored best controller (`esc replay`, every epoch; scripts/esc_runs.py)
 and prints Markdown.
 
     python3 scripts/recharge-visits.py RUN_DIR [--esc build/cli/esc] [--condition NAME]...
@@ -17,37 +17,23 @@ step outside, and stays full or rises inside); a visit is a stretch of such step
   substep early, at 0.998);
 - level left: the mean level at which the robot drove out (1 = full);
 - still: the share of in-area steps whose centre moved less than STILL_MM (the evolved stop
-  behaviors spin on the spot: the wheels turn, the centre does not move);
+  behaviors spin on the spot: the wheels turn, the centre does not move once the motors,
+  with their inertia, have reached the spin);
 - stop: for supervisors, the share of in-area steps that the behavior `stop` acted.
+Only finished runs are replayed (summary.json's), so a campaign still running is read as
+far as it got.
 """
 import argparse
-import csv
-import io
 import math
 import statistics
-import subprocess
 import sys
 import tempfile
 from collections import defaultdict
-from pathlib import Path
+
+from esc_runs import parts, replay
 
 STILL_MM = 0.5   # a step at full speed moves the centre about 8 mm
 FULL = 0.99      # one control step recharges 0.01 at the paper's rate (100 steps), 0.005 at half of it
-
-
-def export(esc, directory):
-    out = subprocess.run([esc, "export", directory, "--format", "csv"], check=True, capture_output=True,
-                         text=True).stdout
-    return list(csv.DictReader(io.StringIO(out)))
-
-
-def replay(esc, directory, controller, run, scratch):
-    done = subprocess.run([esc, "replay", directory, "--controller", controller, "--run", str(run), "--out", scratch],
-                          capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"esc replay {directory} --controller {controller} --run {run} failed:\n{done.stderr}")
-    with open(Path(scratch) / f"replay-{controller}-run-{run:02d}.csv", newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def visits_of(rows):
@@ -71,8 +57,9 @@ def visits_of(rows):
             inside = now_in
             if inside:
                 f["in_steps"] += 1
-                moved = math.hypot(float(r["x_m"]) - x, float(r["y_m"]) - y) if x is not None else 0.0
-                f["still"] += moved * 1000.0 < STILL_MM
+                # The first step of an epoch has no previous position: not counted as still.
+                moved_mm = math.hypot(float(r["x_m"]) - x, float(r["y_m"]) - y) * 1000.0 if x is not None else None
+                f["still"] += moved_mm is not None and moved_mm < STILL_MM
                 f["stop"] += r.get("behavior") == "stop"
             level, x, y = e, float(r["x_m"]), float(r["y_m"])
         f["ended_in"] += inside
@@ -91,45 +78,37 @@ def main():
     parser.add_argument("--condition", action="append", help="only this study condition (repeatable)")
     args = parser.parse_args()
 
-    best = defaultdict(lambda: float("-inf"))   # (condition, controller, run) -> best fitness
-    for r in export(args.esc, args.directory):
-        if args.condition and r["condition"] not in args.condition:
-            continue
-        # A plain experiment's rows name it as their condition, outside any study.
-        key = (r["condition"] if r["study"] else "", r["controller"], int(r["run"]))
-        best[key] = max(best[key], float(r["best"]))
-    if not best:
-        print("No run to replay (is the directory finished, and the condition named right?).", file=sys.stderr)
+    chosen = [p for p in parts(args.directory) if not args.condition or p[0] in args.condition]
+    if not chosen:
+        print("No such condition in this run.", file=sys.stderr)
         return 1
-
     print(f"# Recharge visits of the best controllers (full: level >= {FULL}; centre still: moved < {STILL_MM} mm "
           "in a step)\n")
     with tempfile.TemporaryDirectory() as scratch:
-        groups = defaultdict(list)
-        for (condition, controller, run) in sorted(best):
-            groups[(condition, controller)].append(run)
-        for (condition, controller), runs in groups.items():
-            where = str(Path(args.directory) / condition) if condition else args.directory
-            print(f"## {controller}" + (f" in {condition}" if condition else "") + "\n")
-            print("| run | best | steps per epoch | epochs emptied | visits left / ended in | left full "
-                  "| level left | still in area | stop in area |")
-            print("|---|---|---|---|---|---|---|---|---|")
-            totals = defaultdict(int)
-            for run in runs:
-                f = visits_of(replay(args.esc, where, controller, run, scratch))
-                for k in ("left", "left_full", "ended_in", "in_steps", "still", "stop", "empty"):
-                    totals[k] += f[k]
-                totals["runs_full"] += f["left"] > 0 and f["left_full"] == f["left"]
-                level = f"{statistics.mean(f['left_levels']):.2f}" if f["left_levels"] else "-"
-                print(f"| {run} | {best[(condition, controller, run)]:.1f} | {statistics.mean(f['steps']):.0f} "
-                      f"| {f['empty']} of {f['epochs']} | {f['left']} / {f['ended_in']} "
-                      f"| {share(f['left_full'], f['left'])} | {level} | {share(f['still'], f['in_steps'])} "
-                      f"| {share(f['stop'], f['in_steps'])} |")
-            print(f"\nAll runs: {totals['left']} visits left, {share(totals['left_full'], totals['left'])} of "
-                  f"them full; {totals['runs_full']} of {len(runs)} runs leave only when full; centre still "
-                  f"{share(totals['still'], totals['in_steps'])} and `stop` acting "
-                  f"{share(totals['stop'], totals['in_steps'])} of the in-area steps; "
-                  f"{totals['empty']} epochs emptied.\n")
+        for name, source, part in chosen:
+            for controller, c in part["controllers"].items():
+                print(f"## {controller} in {name}\n")
+                print("| run | best | steps per epoch | epochs emptied | visits left / ended in | left full "
+                      "| level left | still in area | stop in area |")
+                print("|---|---|---|---|---|---|---|---|---|")
+                totals = defaultdict(int)
+                for r in c["runs"]:
+                    rows = replay(args.esc, source, controller, int(r["run"]), scratch)
+                    if all(float(s["energy"]) == 1.0 for s in rows):
+                        sys.exit(f"{name}: the accumulator never moves (an experiment without the energy model?)")
+                    f = visits_of(rows)
+                    for k in ("left", "left_full", "ended_in", "in_steps", "still", "stop", "empty"):
+                        totals[k] += f[k]
+                    totals["runs_full"] += f["left"] > 0 and f["left_full"] == f["left"]
+                    level = f"{statistics.mean(f['left_levels']):.2f}" if f["left_levels"] else "-"
+                    print(f"| {r['run']} | {r['best_fitness']:.1f} | {statistics.mean(f['steps']):.0f} "
+                          f"| {f['empty']} of {f['epochs']} | {f['left']} / {f['ended_in']} "
+                          f"| {share(f['left_full'], f['left'])} | {level} | {share(f['still'], f['in_steps'])} "
+                          f"| {share(f['stop'], f['in_steps'])} |")
+                print(f"\nAll runs: {totals['left']} visits left, {share(totals['left_full'], totals['left'])} of "
+                      f"them full; {totals['runs_full']} of {len(c['runs'])} runs leave only when full; of the "
+                      f"in-area steps, the centre still on {share(totals['still'], totals['in_steps'])} and `stop` "
+                      f"acting on {share(totals['stop'], totals['in_steps'])}; {totals['empty']} epochs emptied.\n")
     return 0
 
 

@@ -16,7 +16,9 @@ double mean_or_nan(const std::vector<double>& values) {
 
 std::optional<TransferSummary> summarise_transfers(const std::vector<eval::RunResult>& runs) {
   TransferSummary s;
-  std::vector<double> origin, here, change, regained, best_here, loss_regained;
+  std::vector<double> origin, here, change, regained, best_here;
+  double gained = 0.0;
+  double lost = 0.0;
   for (const eval::RunResult& r : runs) {
     if (!r.transfer) continue;
     const eval::Transfer& t = *r.transfer;
@@ -38,7 +40,10 @@ std::optional<TransferSummary> summarise_transfers(const std::vector<eval::RunRe
     if (rt.change_percent) change.push_back(*rt.change_percent);
     if (rt.regained_at) regained.push_back(*rt.regained_at);
     if (rt.best_here) best_here.push_back(*rt.best_here);
-    if (rt.loss_regained) loss_regained.push_back(*rt.loss_regained);
+    if (rt.loss_regained) {
+      gained += *rt.best_here - *rt.fitness_here;
+      lost += rt.origin_fitness - *rt.fitness_here;
+    }
     s.runs.push_back(rt);
   }
   if (s.runs.empty()) return std::nullopt;
@@ -48,7 +53,7 @@ std::optional<TransferSummary> summarise_transfers(const std::vector<eval::RunRe
   s.regained = regained.size();
   s.regained_median = regained.empty() ? std::numeric_limits<double>::quiet_NaN() : summarise(regained).median;
   s.best_here_mean = mean_or_nan(best_here);
-  s.loss_regained_mean = mean_or_nan(loss_regained);
+  s.loss_regained_pooled = lost > 0.0 ? 100.0 * gained / lost : std::numeric_limits<double>::quiet_NaN();
   return s;
 }
 

@@ -36,7 +36,10 @@ struct TransferSummary {
   std::size_t regained = 0;             // runs that regained the origin's level
   double regained_median = 0.0;         // their median generation (NaN when none)
   double best_here_mean = 0.0;          // start from (NaN otherwise)
-  double loss_regained_mean = 0.0;      // over the runs that lost something (NaN when none)
+  // Over the runs that lost something: their gains summed over their losses summed, in
+  // percent (NaN when none lost). Pooled, not a mean of ratios: a run that lost next to
+  // nothing would weigh as much as one that lost half.
+  double loss_regained_pooled = 0.0;
 };
 
 // Nothing when no run of `runs` started from a stored genome.

@@ -160,7 +160,7 @@ json transfers_json(const std::vector<eval::RunResult>& runs) {
           {"regained", s->regained},
           {"regained_median", number(s->regained_median)},
           {"best_here_mean", number(s->best_here_mean)},
-          {"loss_regained_mean", number(s->loss_regained_mean)},
+          {"loss_regained_pooled", number(s->loss_regained_pooled)},
           {"runs", per_run}};
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# scripts/recharge-visits.py on a short run of the energy experiment: a table per controller,
-# a row per run, every share between 0% and 100%, and the supervisors' in-area steps counted
-# under `stop` no more often than there are in-area steps.
+# scripts/recharge-visits.py on short runs: of the energy experiment (a plain experiment: a
+# table per controller, a row per run) and of the generalization campaign (a study: only the
+# conditions asked for, read from their own directories); every share within 0-100%, every
+# epoch's visits ending inside at most once.
 set -euo pipefail
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -10,8 +11,21 @@ trap 'rm -rf "$out"' EXIT
 python3 scripts/recharge-visits.py "$out/run" --esc "$ESC" >"$out/table.md"
 cat "$out/table.md"
 for c in CC SC CS SS; do
-  grep -qF "## $c" "$out/table.md" || { echo "missing: the table of $c"; exit 1; }
+  grep -qF "## $c in energy" "$out/table.md" || { echo "missing: the table of $c"; exit 1; }
 done
-rows=$(grep -cE '^\| [12] \| [0-9.-]+ \| [0-9]+ \| [0-2] of 2 \| [0-9]+ / [01] \| ' "$out/table.md")
+rows=$(grep -cE '^\| [12] \| [0-9.-]+ \| [0-9]+ \| [0-2] of 2 \| [0-9]+ / [0-2] \| ' "$out/table.md")
 [ "$rows" -eq 8 ] || { echo "expected 8 run rows (4 controllers x 2 runs), found $rows"; exit 1; }
-if grep -qE '[0-9]{4,}%|1[0-9][1-9]%|-[0-9]+%' "$out/table.md"; then echo "a share outside 0-100%"; exit 1; fi
+python3 - "$out/table.md" <<'PY'
+import re, sys
+shares = [int(s) for s in re.findall(r"(-?\d+)%", open(sys.argv[1]).read())]
+bad = [s for s in shares if not 0 <= s <= 100]
+sys.exit(f"shares outside 0-100%: {bad}" if bad or not shares else 0)
+PY
+"$ESC" run results/paper/generalization/campaign.esc --runs 2 --generations 2 --set epochs=1 --set steps=300 \
+  --threads 2 --out "$out/study" >/dev/null
+python3 scripts/recharge-visits.py "$out/study" --esc "$ESC" --condition slow_recharge_evolved >"$out/study.md"
+[ "$(grep -c '^## ' "$out/study.md")" -eq 4 ] || { echo "expected the 4 controllers of one condition"; exit 1; }
+[ "$(grep -c '^## .* in slow_recharge_evolved$' "$out/study.md")" -eq 4 ] || { echo "wrong condition"; exit 1; }
+if python3 scripts/recharge-visits.py "$out/study" --esc "$ESC" --condition no_such >/dev/null 2>&1; then
+  echo "an unknown condition must fail"; exit 1
+fi

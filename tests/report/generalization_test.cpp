@@ -31,12 +31,15 @@ TEST(Transfers, LossMadeUpIsTheShareOfTheDropRecovered) {
   const auto s = summarise_transfers(runs);
   ASSERT_TRUE(s.has_value());
   ASSERT_EQ(s->runs.size(), 3u);
+  ASSERT_TRUE(s->runs[0].loss_regained.has_value() && s->runs[1].loss_regained.has_value());
   EXPECT_DOUBLE_EQ(*s->runs[0].loss_regained, 50.0);
   EXPECT_DOUBLE_EQ(*s->runs[1].loss_regained, 150.0);
   EXPECT_FALSE(s->runs[2].loss_regained.has_value());
+  ASSERT_TRUE(s->runs[0].best_here.has_value() && s->runs[2].best_here.has_value());
   EXPECT_DOUBLE_EQ(*s->runs[0].best_here, 90.0);
   EXPECT_DOUBLE_EQ(*s->runs[2].best_here, 105.0);
-  EXPECT_DOUBLE_EQ(s->loss_regained_mean, 100.0);   // over the two runs that lost something
+  // Pooled over the two runs that lost something: (10 + 60) / (20 + 40).
+  EXPECT_DOUBLE_EQ(s->loss_regained_pooled, 100.0 * 70.0 / 60.0);
   EXPECT_DOUBLE_EQ(s->best_here_mean, (90.0 + 120.0 + 105.0) / 3);
   EXPECT_EQ(s->regained, 2u);                        // runs 1 (generation 1) and 2 (generation 0)
   EXPECT_DOUBLE_EQ(s->regained_median, 0.5);
@@ -51,8 +54,9 @@ TEST(Transfers, AnEvaluatedGenomeHasNoBestHereNorLossMadeUp) {
   EXPECT_FALSE(s->runs[0].best_here.has_value());
   EXPECT_FALSE(s->runs[0].loss_regained.has_value());
   EXPECT_FALSE(s->runs[0].regained_at.has_value());
-  EXPECT_TRUE(std::isnan(s->loss_regained_mean));
+  EXPECT_TRUE(std::isnan(s->loss_regained_pooled));
   EXPECT_TRUE(std::isnan(s->best_here_mean));
+  ASSERT_TRUE(s->runs[0].change_percent.has_value());
   EXPECT_DOUBLE_EQ(*s->runs[0].change_percent, -20.0);
 }
 

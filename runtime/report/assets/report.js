@@ -337,8 +337,8 @@
       const cells = [c.name, fmt(s.origin_mean, 1), fmt(s.here_mean, 1),
                      s.change_mean === null ? 'n/a' : `${s.change_mean > 0 ? '+' : ''}${fmt(s.change_mean, 1)}%`];
       if (!s.evaluate_only)
-        cells.push(fmt(s.best_here_mean, 1), percent(s.loss_regained_mean), `${s.regained} of ${s.runs.length} runs`,
-                   fmt(s.regained_median, 0));
+        cells.push(fmt(s.best_here_mean, 1), percent(s.loss_regained_pooled),
+                   `${s.regained} of ${s.runs.length} runs`, fmt(s.regained_median, 0));
       t.appendChild(el('tr', {}, cells.map(v => el('td', {text: v}))));
     }
     card.appendChild(t);
@@ -351,7 +351,8 @@
         const cells = [c.name, String(r.run), String(r.origin_run), fmt(r.origin_fitness, 1), fmt(r.fitness_here, 1),
                        r.change_percent === null ? 'n/a' : `${r.change_percent > 0 ? '+' : ''}${fmt(r.change_percent, 1)}%`];
         if (!c.transfers.evaluate_only)
-          cells.push(fmt(r.best_here, 1), percent(r.loss_regained), r.regained_at === null ? 'never' : String(r.regained_at));
+          cells.push(fmt(r.best_here, 1), percent(r.loss_regained),
+                     r.regained_at === null ? 'never' : String(r.regained_at));
         runs.appendChild(el('tr', {}, cells.map(v => el('td', {text: v}))));
       }
     card.appendChild(el('h3', {text: 'Per run'}));
@@ -360,7 +361,9 @@
       'Fitness there: the best fitness of the origin run whose best genome this run took. Fitness here: that genome ' +
       'evaluated here (individual 0 of generation 0). Change: (here - there) / |there|. Best here: the run\'s ' +
       'best fitness over its generations here. Loss made up: (best here - fitness here) / (there - fitness here), ' +
-      'for runs whose genome lost fitness here (100%: back at the origin\'s level). Regained: the first ' +
+      'for runs whose genome lost fitness here (100%: back at the origin\'s level; the controller\'s line pools ' +
+      'the runs: their gains summed over their losses summed). Best here is the highest of many noisy ' +
+      'evaluations, so it leans high. Regained: the first ' +
       'generation whose best fitness reaches the origin\'s.'}));
     parent.appendChild(card);
   }
