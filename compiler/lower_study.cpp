@@ -115,9 +115,11 @@ bool StudyLowering::apply_to_dependency(eval::ExperimentSpec& spec, const ast::S
   const std::string name = key.substr(0, key.find('.'));
   const std::vector<std::string> needs = spec.needs();
   if (std::find(needs.begin(), needs.end(), name) == needs.end()) {
-    sink_.error(setting.key.where, fmt::format("`{}` does not depend on experiment `{}`: a condition sets its own "
+    // Further down a nested key (`energy.stop.x`), the key as written says which step failed.
+    const std::string where_in_key = written_above.empty() ? "" : fmt::format("in `{}{}`, ", written_above, key);
+    sink_.error(setting.key.where, fmt::format("{}`{}` does not depend on experiment `{}`: a condition sets its own "
                                                "experiment's settings and those of the experiments it depends on",
-                                               spec.name, name))
+                                               where_in_key, spec.name, name))
         .help.push_back(needs.empty() ? fmt::format("`{}` depends on no experiment", spec.name)
                                       : fmt::format("`{}` depends on {}", spec.name, quoted_list(needs, " and ")));
     return false;
