@@ -22,6 +22,14 @@ def parts(directory):
     return [(c["name"], os.path.join(directory, where[c["name"]]), c) for c in summary["conditions"]]
 
 
+def split_epochs(rows):
+    """A replay's steps, epoch by epoch, in order."""
+    epochs = {}
+    for r in rows:
+        epochs.setdefault(r["epoch"], []).append(r)
+    return epochs.values()
+
+
 def replay(esc, source, controller, run, scratch):
     """Every step of run `run` (from 1)'s best controller, as `esc replay` writes them."""
     out = os.path.join(scratch, f"{os.path.basename(os.path.normpath(source))}-{controller}-{run}")

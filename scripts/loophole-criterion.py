@@ -26,7 +26,7 @@ import os
 import sys
 import tempfile
 
-from esc_runs import parts, replay
+from esc_runs import parts, replay, split_epochs
 
 DEADBAND = 0.05        # share of the top speed below which the direction is kept
 MIN_BACKWARD = 0.25
@@ -56,13 +56,6 @@ def judge(rows, top_speed):
         "backward_usage": used_backward / steps if steps else 0.0,
         "symbolic": symbolic,
     }
-
-
-def split_epochs(rows):
-    epochs = {}
-    for r in rows:
-        epochs.setdefault(r["epoch"], []).append(r)
-    return epochs.values()
 
 
 def main():

@@ -30,7 +30,7 @@ import sys
 import tempfile
 from collections import defaultdict
 
-from esc_runs import parts, replay
+from esc_runs import parts, replay, split_epochs
 
 STILL_MM = 0.5   # a step at full speed moves the centre about 8 mm
 FULL = 0.99      # one control step recharges 0.01 at the paper's rate (100 steps), 0.005 at half of it
@@ -38,12 +38,10 @@ FULL = 0.99      # one control step recharges 0.01 at the paper's rate (100 step
 
 def visits_of(rows):
     """Per-run figures from one replay's steps (every epoch)."""
-    epochs = defaultdict(list)
-    for r in rows:
-        epochs[int(r["epoch"])].append(r)
+    epochs = split_epochs(rows)
     f = {"epochs": len(epochs), "steps": [], "empty": 0, "left": 0, "left_full": 0, "ended_in": 0,
          "left_levels": [], "in_steps": 0, "still": 0, "stop": 0}
-    for steps in epochs.values():
+    for steps in epochs:
         f["steps"].append(len(steps))
         level, x, y = 1.0, None, None   # every epoch starts full
         inside = False
