@@ -318,6 +318,22 @@ eval::ExperimentSpec* pick_condition(compiler::CompileResult& compiled, const st
   return nullptr;
 }
 
+// The experiment a run stored, among every experiment compiled: a dependency cache entry's
+// stored main file may only import it (deps/stop-... of a study over energy).
+eval::ExperimentSpec* pick_stored_experiment(compiler::CompileResult& compiled, const std::string& name) {
+  for (eval::ExperimentSpec& e : compiled.all_experiments)
+    if (e.name == name) return &e;
+  complain("esc: error: the stored sources no longer declare experiment `{}`\n", name);
+  return nullptr;
+}
+
+// Where a run's evolved behaviors are: its own deps/, or, for a dependency cache entry (it
+// holds the fingerprint it was filed under), the cache it sits in, beside its own dependencies.
+fs::path dependency_cache(const fs::path& root) {
+  std::error_code ec;
+  return fs::exists(root / "fingerprint.txt", ec) ? root.parent_path() : root / "deps";
+}
+
 }  // namespace
 
 int replay_command(const ReplayOptions& o) {
@@ -367,7 +383,7 @@ int replay_command(const ReplayOptions& o) {
       return kExitBadInput;
     }
     spec = stored->condition ? pick_condition(compiled, *stored->condition)
-                             : pick_experiment(compiled, sources.main_file(), stored->name);
+                             : pick_stored_experiment(compiled, stored->name);
   } else {
     settings.runs.reset();
     settings.generations.reset();
@@ -391,7 +407,7 @@ int replay_command(const ReplayOptions& o) {
     return kExitBadInput;
   }
   spec->start_from.reset();   // where evolution started does not change an evaluation
-  const fs::path cache = !settings.cache.empty() ? settings.cache : at.root / "deps";
+  const fs::path cache = !settings.cache.empty() ? settings.cache : dependency_cache(at.root);
   if (!prepare_dependencies(*spec, reuse_only(compiled, settings, cache))) return kExitBadInput;
 
   const auto epochs = parse_epochs(o.epochs, spec->epochs);

@@ -23,7 +23,6 @@ class ReplaySources {
   // Compiles the run's script from the copies (diagnostics printed).
   [[nodiscard]] compiler::CompileResult compile() const;
   // Where the copy of the run's script is.
-  [[nodiscard]] const std::filesystem::path& main_file() const noexcept { return main_; }
 
  private:
   std::filesystem::path root_;

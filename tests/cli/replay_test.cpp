@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -201,6 +202,31 @@ TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {
       << o.output;
   EXPECT_EQ(o.output.find("running into"), std::string::npos) << o.output;
   EXPECT_FALSE(fs::exists(dir / "deps"));
+}
+
+// A dependency cache entry replays from its directory: its experiment is one the stored main
+// file only imports, and its own evolved behaviors are the entries beside it.
+TEST(Replay, ADependencyCacheEntryBesideItsOwnDependencies) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved_nested.esc";
+  const fs::path dir = scratch("replay-cache-entry");
+  Outcome o = esc_command("run " + script + " --threads 2 --out " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  std::map<std::string, fs::path> entries;
+  for (const auto& e : fs::directory_iterator(dir / "deps"))
+    entries[e.path().filename().string().substr(0, e.path().filename().string().find('-'))] = e.path();
+  ASSERT_EQ(entries.size(), 2U);
+  const fs::path out = scratch("replay-cache-entry-out");
+  o = esc_command("replay " + entries.at("basic").string() + " --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("replayed CC run"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("in basic (fitness"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  o = esc_command("replay " + entries.at("supervised").string() + " --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("dependency basic: reused " + entries.at("basic").string()), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("in supervised (fitness"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("running into"), std::string::npos) << o.output;
 }
 
 // A study's condition replays from its directory (STUDY/CONDITION) with the condition's own
