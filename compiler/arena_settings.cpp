@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "compiler/quantities.hpp"
+#include "compiler/setting_keys.hpp"
 #include "compiler/table_lookup.hpp"
 
 namespace esc::compiler {
@@ -33,7 +34,7 @@ void resolve_arena_settings(eval::ExperimentSpec& spec) {
   r["arena.lights"] = std::to_string(a.lights.size());
   r["arena.zones"] = std::to_string(a.zones.size());
   for (const ArenaSetting& s : arena_settings())
-    r["arena." + std::string(s.name)] = fmt::format("{} m", number_text(a.*s.value));
+    r[std::string(kArenaGroup).append(s.name)] = fmt::format("{} m", number_text(a.*s.value));
   if (a.fixed_start)
     r["arena.start"] = fmt::format("({} m, {} m) heading {} rad", number_text(a.fixed_start->x_m),
                                    number_text(a.fixed_start->y_m), number_text(a.fixed_start->heading_rad));

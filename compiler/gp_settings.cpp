@@ -7,6 +7,7 @@
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
+#include "compiler/setting_keys.hpp"
 #include "compiler/setting_values.hpp"
 
 namespace esc::compiler {
@@ -117,9 +118,9 @@ std::string check_gp(const eval::ExperimentSpec& spec) {
 
 void resolve_gp_settings(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;
-  for (auto it = r.begin(); it != r.end();) it = it->first.rfind("gp.", 0) == 0 ? r.erase(it) : std::next(it);
+  for (auto it = r.begin(); it != r.end();) it = it->first.starts_with(kGpGroup) ? r.erase(it) : std::next(it);
   if (!spec.gp) return;
-  for (const GpOption& o : gp_options()) r["gp." + std::string(o.key)] = o.text(o, *spec.gp);
+  for (const GpOption& o : gp_options()) r[std::string(kGpGroup).append(o.key)] = o.text(o, *spec.gp);
 }
 
 }  // namespace esc::compiler

@@ -1,5 +1,7 @@
 #include "compiler/setting_keys.hpp"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "compiler/arena_settings.hpp"
@@ -55,6 +57,12 @@ std::string flattened(const std::vector<Diagnostic>& ds) {
   return out;
 }
 
+// `key` without its group's prefix, when it is in `group`.
+std::optional<std::string_view> in_group(std::string_view key, std::string_view group) {
+  if (key.substr(0, group.size()) != group) return std::nullopt;
+  return key.substr(group.size());
+}
+
 std::string trimmed(std::string_view t) {
   while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
   while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
@@ -66,18 +74,23 @@ std::string trimmed(std::string_view t) {
 std::vector<std::string> setting_keys() {
   std::vector<std::string> k;
   for (const ExperimentSetting& s : experiment_settings()) k.emplace_back(s.key);
-  for (const auto& group : {option_keys(es_options()), prefixed("arena.", arena_setting_names()),
-                            prefixed("robot.", robot_setting_names()), option_keys(gp_options(), "gp.")})
+  for (const auto& group : {option_keys(es_options()), prefixed(kArenaGroup, arena_setting_names()),
+                            prefixed(kRobotGroup, robot_setting_names()), option_keys(gp_options(), kGpGroup)})
     k.insert(k.end(), group.begin(), group.end());
   return k;
 }
 
-bool is_setting_group(std::string_view word) { return word == "robot" || word == "arena" || word == "gp"; }
+bool is_setting_group(std::string_view word) {
+  for (const std::string_view group : {kRobotGroup, kArenaGroup, kGpGroup})
+    if (group.substr(0, group.size() - 1) == word) return true;
+  return false;
+}
 
 bool setting_takes_range(std::string_view key) {
   if (const EsOption* o = find_option_key(es_options(), key)) return o->shape == OptionShape::Range;
-  if (key.rfind("gp.", 0) != 0) return false;
-  const GpOption* o = find_option_key(gp_options(), key.substr(3));
+  const auto name = in_group(key, kGpGroup);
+  if (!name) return false;
+  const GpOption* o = find_option_key(gp_options(), *name);
   return o != nullptr && o->shape == OptionShape::Range;
 }
 
@@ -86,10 +99,10 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   const std::string& k = key.text;
   if (const ExperimentSetting* s = find_experiment_setting(k)) return s->read(*s, spec, value, sink);
   if (const EsOption* o = find_option_key(es_options(), k)) return o->read(*o, spec.es, value, sink);
-  if (k.rfind("gp.", 0) == 0) {
-    const GpOption* o = find_option_key(gp_options(), k.substr(3));
+  if (const auto name = in_group(k, kGpGroup)) {
+    const GpOption* o = find_option_key(gp_options(), *name);
     if (o == nullptr) {
-      unknown(sink, key, "GP setting", k.substr(3), "gp.", option_keys(gp_options()), scope);
+      unknown(sink, key, "GP setting", *name, kGpGroup, option_keys(gp_options()), scope);
       return false;
     }
     // An experiment without GP settings checks the value and ignores it: the experiments
@@ -99,20 +112,20 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     if (spec.gp) spec.gp = scratch;
     return true;
   }
-  if (k.rfind("robot.", 0) == 0) {
-    const RobotSetting* s = find_robot_setting(k.substr(6));
+  if (const auto name = in_group(k, kRobotGroup)) {
+    const RobotSetting* s = find_robot_setting(*name);
     if (s == nullptr) {
-      unknown(sink, key, "robot setting", k.substr(6), "robot.", robot_setting_names(), scope);
+      unknown(sink, key, "robot setting", *name, kRobotGroup, robot_setting_names(), scope);
       return false;
     }
     const auto v = read_robot_value(*s, value, sink);
     if (v) s->set(spec.robot, *v);
     return v.has_value();
   }
-  if (k.rfind("arena.", 0) == 0) {
-    const ArenaSetting* s = find_arena_setting(k.substr(6));
+  if (const auto name = in_group(k, kArenaGroup)) {
+    const ArenaSetting* s = find_arena_setting(*name);
     if (s == nullptr) {
-      unknown(sink, key, "arena setting", k.substr(6), "arena.", arena_setting_names(), scope);
+      unknown(sink, key, "arena setting", *name, kArenaGroup, arena_setting_names(), scope);
       return false;
     }
     const auto v = read_quantity(value, s->name, Dim::Length, sink);
@@ -146,7 +159,7 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   for (const EsOption& o : es_options())
     if (o.own_key) r[std::string(o.key)] = o.text(o, spec.es);
   resolve_arena_settings(spec);
-  for (const RobotSetting& s : robot_settings()) r["robot." + std::string(s.name)] = robot_value_text(s, spec.robot);
+  for (const RobotSetting& s : robot_settings()) r[std::string(kRobotGroup).append(s.name)] = robot_value_text(s, spec.robot);
   r["fitness"] = spec.fitness.name;
   std::string names;
   for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;

@@ -19,6 +19,9 @@ namespace esc::compiler {
 // Every `--set` key, for "did you mean" and the documentation.
 [[nodiscard]] std::vector<std::string> setting_keys();
 
+// The groups of settings: `robot.NAME` is read by the robot's table, and so on.
+inline constexpr std::string_view kRobotGroup = "robot.", kArenaGroup = "arena.", kGpGroup = "gp.";
+
 // Whether `word` begins the keys of a group of settings: `robot`, `arena`, `gp`.
 [[nodiscard]] bool is_setting_group(std::string_view word);
 
