@@ -19,12 +19,18 @@ step outside, and stays full or rises inside); a visit is a stretch of such step
 - still: the share of in-area steps whose centre moved less than STILL_MM (the evolved stop
   behaviors spin on the spot: the wheels turn, the centre does not move once the motors,
   with their inertia, have reached the spin);
-- stop: for supervisors, the share of in-area steps that the behavior `stop` acted.
+- stop: for supervisors, the share of in-area steps that the behavior `stop` acted;
+- last exit: in each epoch that the robot finishes outside the area with energy left, the
+  level at which it last drove out, against the level needed to drive to the epoch's end
+  (its remaining steps over the accumulator's discharge steps): waiting until full is worth
+  nothing to a fitness that pays only outside the area, once the rest of the epoch is covered.
 Only finished runs are replayed (summary.json's), so a campaign still running is read as
 far as it got.
 """
 import argparse
+import json
 import math
+import os
 import statistics
 import sys
 import tempfile
@@ -36,22 +42,31 @@ STILL_MM = 0.5   # a step at full speed moves the centre about 8 mm
 FULL = 0.99      # one control step recharges 0.01 at the paper's rate (100 steps), 0.005 at half of it
 
 
-def visits_of(rows):
-    """Per-run figures from one replay's steps (every epoch)."""
+def discharge_steps(source):
+    """The steps a full accumulator lasts, from the settings the run used."""
+    with open(os.path.join(source, "settings.json")) as f:
+        return float(json.load(f)["settings"]["robot.energy_discharge"])
+
+
+def visits_of(rows, discharge):
+    """Per-run figures from one replay's steps (every epoch); `discharge`: the steps a full
+    accumulator lasts."""
     epochs = split_epochs(rows)
     f = {"epochs": len(epochs), "steps": [], "empty": 0, "left": 0, "left_full": 0, "ended_in": 0,
-         "left_levels": [], "in_steps": 0, "still": 0, "stop": 0}
+         "left_levels": [], "in_steps": 0, "still": 0, "stop": 0, "last_exits": []}
     for steps in epochs:
         f["steps"].append(len(steps))
         level, x, y = 1.0, None, None   # every epoch starts full
         inside = False
-        for r in steps:
+        last_exit = None
+        for i, r in enumerate(steps):
             e = float(r["energy"])
             now_in = e >= level and e > 0.0
             if inside and not now_in:
                 f["left"] += 1
                 f["left_levels"].append(level)
                 f["left_full"] += level >= FULL
+                last_exit = (level, (len(steps) - i) / discharge)
             inside = now_in
             if inside:
                 f["in_steps"] += 1
@@ -62,7 +77,13 @@ def visits_of(rows):
             level, x, y = e, float(r["x_m"]), float(r["y_m"])
         f["ended_in"] += inside
         f["empty"] += level == 0.0
+        if last_exit and not inside and level > 0.0:
+            f["last_exits"].append(last_exit)
     return f
+
+
+def mean_of(pairs, i):
+    return f"{statistics.mean(p[i] for p in pairs):.2f}" if pairs else "-"
 
 
 def share(n, d):
@@ -84,29 +105,36 @@ def main():
           "in a step)\n")
     with tempfile.TemporaryDirectory() as scratch:
         for name, source, part in chosen:
+            discharge = discharge_steps(source)
             for controller, c in part["controllers"].items():
                 print(f"## {controller} in {name}\n")
                 print("| run | best | steps per epoch | epochs emptied | visits left / ended in | left full "
-                      "| level left | still in area | stop in area |")
-                print("|---|---|---|---|---|---|---|---|---|")
+                      "| level left | still in area | stop in area | last exit: level / needed |")
+                print("|---|---|---|---|---|---|---|---|---|---|")
                 totals = defaultdict(int)
+                last_exits = []
                 for r in c["runs"]:
                     rows = replay(args.esc, source, controller, int(r["run"]), scratch)
                     if all(float(s["energy"]) == 1.0 for s in rows):
                         sys.exit(f"{name}: the accumulator never moves (an experiment without the energy model?)")
-                    f = visits_of(rows)
+                    f = visits_of(rows, discharge)
                     for k in ("left", "left_full", "ended_in", "in_steps", "still", "stop", "empty"):
                         totals[k] += f[k]
+                    last_exits += f["last_exits"]
                     totals["runs_full"] += f["left"] > 0 and f["left_full"] == f["left"]
                     level = f"{statistics.mean(f['left_levels']):.2f}" if f["left_levels"] else "-"
                     print(f"| {r['run']} | {r['best_fitness']:.1f} | {statistics.mean(f['steps']):.0f} "
                           f"| {f['empty']} of {f['epochs']} | {f['left']} / {f['ended_in']} "
                           f"| {share(f['left_full'], f['left'])} | {level} | {share(f['still'], f['in_steps'])} "
-                          f"| {share(f['stop'], f['in_steps'])} |")
+                          f"| {share(f['stop'], f['in_steps'])} "
+                          f"| {mean_of(f['last_exits'], 0)} / {mean_of(f['last_exits'], 1)} |")
                 print(f"\nAll runs: {totals['left']} visits left, {share(totals['left_full'], totals['left'])} of "
                       f"them full; {totals['runs_full']} of {len(c['runs'])} runs leave only when full; of the "
                       f"in-area steps, the centre still on {share(totals['still'], totals['in_steps'])} and `stop` "
-                      f"acting on {share(totals['stop'], totals['in_steps'])}; {totals['empty']} epochs emptied.\n")
+                      f"acting on {share(totals['stop'], totals['in_steps'])}; {totals['empty']} epochs emptied; "
+                      f"at the last exit of the {len(last_exits)} epochs finished outside the area, the level "
+                      f"{mean_of(last_exits, 0)} against {mean_of(last_exits, 1)} needed for the rest of the epoch "
+                      f"(its remaining steps over the accumulator's {discharge:.0f}).\n")
     return 0
 
 

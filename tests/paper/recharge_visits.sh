@@ -17,9 +17,20 @@ rows=$(grep -cE '^\| [12] \| [0-9.-]+ \| [0-9]+ \| [0-2] of 2 \| [0-9]+ / [0-2] 
 [ "$rows" -eq 8 ] || { echo "expected 8 run rows (4 controllers x 2 runs), found $rows"; exit 1; }
 python3 - "$out/table.md" <<'PY'
 import re, sys
-shares = [int(s) for s in re.findall(r"(-?\d+)%", open(sys.argv[1]).read())]
+text = open(sys.argv[1]).read()
+shares = [int(s) for s in re.findall(r"(-?\d+)%", text)]
 bad = [s for s in shares if not 0 <= s <= 100]
-sys.exit(f"shares outside 0-100%: {bad}" if bad or not shares else 0)
+if bad or not shares:
+    sys.exit(f"shares outside 0-100%: {bad}")
+# The last exit's level and the level needed (the energy script's 285 discharge steps).
+exits = re.findall(r"\| ([0-9.]+|-) / ([0-9.]+|-) \|\n", text)
+if len(exits) != 8:
+    sys.exit(f"expected a last exit column in 8 rows, found {len(exits)}")
+levels = [float(v) for pair in exits for v in pair if v != "-"]
+if any(not 0.0 <= v <= 1.0 for v in levels):
+    sys.exit(f"last exit levels outside 0-1: {levels}")
+if text.count("over the accumulator's 285)") != 4:
+    sys.exit("each controller's summary names the accumulator's 285 discharge steps")
 PY
 "$ESC" run results/paper/generalization/campaign.esc --runs 2 --generations 2 --set epochs=1 --set steps=300 \
   --threads 2 --out "$out/study" >/dev/null

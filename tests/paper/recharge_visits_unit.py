@@ -1,5 +1,6 @@
 """visits_of (scripts/recharge-visits.py) on steps made up for it: a visit left full, one left
-early, one an epoch ends in, an epoch that empties, the still and `stop` counts."""
+early, one an epoch ends in, an epoch that empties, the still and `stop` counts, the last exit
+of the one epoch finished outside the area."""
 import importlib.util
 import pathlib
 import sys
@@ -24,9 +25,11 @@ rows = (
     + steps(2, [0.5, 0.6, 0.59, 0.6], [0.3, 0.31, 0.32, 0.33])
     # Emptied.
     + steps(3, [0.01, 0.0], [0.4, 0.41]))
-f = rv.visits_of(rows)
+f = rv.visits_of(rows, 10.0)   # a full accumulator lasts 10 steps
 expected = {"epochs": 3, "steps": [6, 4, 2], "left": 2, "left_full": 1, "ended_in": 1, "left_levels": [1.0, 0.6],
-            "in_steps": 5, "still": 2, "stop": 3, "empty": 1}
+            "in_steps": 5, "still": 2, "stop": 3, "empty": 1,
+            # Epoch 1 is left full at its 6th step, 1 step before its end: 0.1 needed.
+            "last_exits": [(1.0, 0.1)]}
 for key, value in expected.items():
     if f[key] != value:
         sys.exit(f"{key}: {f[key]} (expected {value}); all: {f}")
