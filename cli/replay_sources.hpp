@@ -22,7 +22,6 @@ class ReplaySources {
 
   // Compiles the run's script from the copies (diagnostics printed).
   [[nodiscard]] compiler::CompileResult compile() const;
-  // Where the copy of the run's script is.
 
  private:
   std::filesystem::path root_;
