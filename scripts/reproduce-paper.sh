@@ -22,7 +22,8 @@
 #                                                        from its files' times (any stop in it)
 #
 # With no CAMPAIGN, every directory of results/paper holding a `command`. ESC names the esc
-# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign>;
+# binary (default build/cli/esc); KEEP=DIR keeps each run's directory in DIR/<campaign> (one
+# holding only deps/, a seeded dependency cache, is used, not emptied);
 # PAPER_RESULTS=DIR reads (and writes) the campaigns there instead of results/paper. A
 # campaign's optional `analysis` file is a command reading the finished run in $OUT; its
 # output is stored as analysis.md.
@@ -46,7 +47,7 @@ while [ $# -gt 0 ]; do
     --quick) mode=quick ;;
     --full) mode=full ;;
     --write) write=1 ;;
-    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,30p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     --from) [ $# -gt 1 ] || { echo "reproduce-paper: --from needs a directory" >&2; exit 2; }
             from=$(absolute "$2"); shift ;;
     --from=*) from=$(absolute "${1#--from=}") ;;
@@ -209,7 +210,13 @@ for name in "${campaigns[@]}"; do
   fi
   OUT=$scratch/runs/$name
   [ -n "${KEEP:-}" ] && OUT=$KEEP/$name
-  rm -rf "$OUT"
+  # A kept directory holding nothing but deps/ is a dependency cache seeded for this run
+  # (finished entries of the experiments it depends on, copied from another run): kept.
+  if [ -n "${KEEP:-}" ] && [ "$(ls -A "$OUT" 2>/dev/null)" = deps ]; then
+    echo "== $name: the dependency cache seeded in $OUT/deps is used"
+  else
+    rm -rf "$OUT"
+  fi
   mkdir -p "$(dirname "$OUT")"
   export OUT
   args=()
