@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <string_view>
 #include <system_error>
 #include <variant>
 
@@ -26,6 +27,8 @@ namespace esc::cli {
 namespace {
 
 constexpr int kMaxDepth = 64;
+// Beside each cache entry: the whole fingerprint it was filed under (its name holds a hash).
+constexpr std::string_view kFingerprintFile = "fingerprint.txt";
 
 struct Prepared {
   eval::ExperimentSpec spec;          // as run, its own dependencies filled in
@@ -113,7 +116,7 @@ bool finished_run(const std::filesystem::path& dir) {
 // Whether cache entry `dir` was made for `key`: the whole fingerprint stored with it, not
 // only the hash its name holds.
 bool same_fingerprint(const std::filesystem::path& dir, const std::string& key) {
-  std::ifstream in(dir / "fingerprint.txt", std::ios::binary);
+  std::ifstream in(dir / kFingerprintFile, std::ios::binary);
   const std::string stored{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   return in.is_open() && stored == key;
 }
@@ -132,7 +135,7 @@ std::optional<Prepared> finish_dependency(const std::string& name, const std::st
   std::error_code ec;
   bool moved = true;
   if (!follower_rank()) {
-    std::ofstream(partial / "fingerprint.txt") << key;
+    std::ofstream(partial / kFingerprintFile) << key;
     std::filesystem::rename(partial, p.dir, ec);
     if (ec) {
       // Another process finished the same run first: its result is the same; keep it.
@@ -349,6 +352,11 @@ bool apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eva
 
 bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context) {
   return prepare(spec, context, 0);
+}
+
+std::filesystem::path cache_of_run(const std::filesystem::path& dir) {
+  std::error_code ec;
+  return std::filesystem::exists(dir / kFingerprintFile, ec) ? dir.parent_path() : dir / "deps";
 }
 
 }  // namespace esc::cli

@@ -44,4 +44,8 @@ struct DependencyContext {
 // (dependencies of dependencies before). Prints what it does; false after printing an error.
 [[nodiscard]] bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context);
 
+// Where the finished run in `dir` finds what it depended on: its own deps/, or, for an entry
+// of a dependency cache, the cache it sits in, beside its own dependencies.
+[[nodiscard]] std::filesystem::path cache_of_run(const std::filesystem::path& dir);
+
 }  // namespace esc::cli

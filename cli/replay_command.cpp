@@ -327,13 +327,6 @@ eval::ExperimentSpec* pick_stored_experiment(compiler::CompileResult& compiled, 
   return nullptr;
 }
 
-// Where a run's evolved behaviors are: its own deps/, or, for a dependency cache entry (it
-// holds the fingerprint it was filed under), the cache it sits in, beside its own dependencies.
-fs::path dependency_cache(const fs::path& root) {
-  std::error_code ec;
-  return fs::exists(root / "fingerprint.txt", ec) ? root.parent_path() : root / "deps";
-}
-
 }  // namespace
 
 int replay_command(const ReplayOptions& o) {
@@ -407,7 +400,7 @@ int replay_command(const ReplayOptions& o) {
     return kExitBadInput;
   }
   spec->start_from.reset();   // where evolution started does not change an evaluation
-  const fs::path cache = !settings.cache.empty() ? settings.cache : dependency_cache(at.root);
+  const fs::path cache = !settings.cache.empty() ? settings.cache : cache_of_run(at.root);
   if (!prepare_dependencies(*spec, reuse_only(compiled, settings, cache))) return kExitBadInput;
 
   const auto epochs = parse_epochs(o.epochs, spec->epochs);

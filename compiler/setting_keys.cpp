@@ -59,7 +59,7 @@ std::string flattened(const std::vector<Diagnostic>& ds) {
 
 // `key` without its group's prefix, when it is in `group`.
 std::optional<std::string_view> in_group(std::string_view key, std::string_view group) {
-  if (key.substr(0, group.size()) != group) return std::nullopt;
+  if (!key.starts_with(group)) return std::nullopt;
   return key.substr(group.size());
 }
 
@@ -159,7 +159,8 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   for (const EsOption& o : es_options())
     if (o.own_key) r[std::string(o.key)] = o.text(o, spec.es);
   resolve_arena_settings(spec);
-  for (const RobotSetting& s : robot_settings()) r[std::string(kRobotGroup).append(s.name)] = robot_value_text(s, spec.robot);
+  for (const RobotSetting& s : robot_settings())
+    r[std::string(kRobotGroup).append(s.name)] = robot_value_text(s, spec.robot);
   r["fitness"] = spec.fitness.name;
   std::string names;
   for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;

@@ -82,8 +82,13 @@ def visits_of(rows, discharge):
     return f
 
 
-def mean_of(pairs, i):
-    return f"{statistics.mean(p[i] for p in pairs):.2f}" if pairs else "-"
+def mean_text(values):
+    return f"{statistics.mean(values):.2f}" if values else "-"
+
+
+def exits_text(exits, between=" / "):
+    """Mean level at the last exits, and mean level needed."""
+    return mean_text([e[0] for e in exits]) + between + mean_text([e[1] for e in exits])
 
 
 def share(n, d):
@@ -122,18 +127,17 @@ def main():
                         totals[k] += f[k]
                     last_exits += f["last_exits"]
                     totals["runs_full"] += f["left"] > 0 and f["left_full"] == f["left"]
-                    level = f"{statistics.mean(f['left_levels']):.2f}" if f["left_levels"] else "-"
                     print(f"| {r['run']} | {r['best_fitness']:.1f} | {statistics.mean(f['steps']):.0f} "
                           f"| {f['empty']} of {f['epochs']} | {f['left']} / {f['ended_in']} "
-                          f"| {share(f['left_full'], f['left'])} | {level} | {share(f['still'], f['in_steps'])} "
+                          f"| {share(f['left_full'], f['left'])} | {mean_text(f['left_levels'])} | {share(f['still'], f['in_steps'])} "
                           f"| {share(f['stop'], f['in_steps'])} "
-                          f"| {mean_of(f['last_exits'], 0)} / {mean_of(f['last_exits'], 1)} |")
+                          f"| {exits_text(f['last_exits'])} |")
                 print(f"\nAll runs: {totals['left']} visits left, {share(totals['left_full'], totals['left'])} of "
                       f"them full; {totals['runs_full']} of {len(c['runs'])} runs leave only when full; of the "
                       f"in-area steps, the centre still on {share(totals['still'], totals['in_steps'])} and `stop` "
                       f"acting on {share(totals['stop'], totals['in_steps'])}; {totals['empty']} epochs emptied; "
                       f"at the last exit of the {len(last_exits)} epochs finished outside the area, the level "
-                      f"{mean_of(last_exits, 0)} against {mean_of(last_exits, 1)} needed for the rest of the epoch "
+                      f"{exits_text(last_exits, ' against ')} needed for the rest of the epoch "
                       f"(its remaining steps over the accumulator's {discharge:.0f}).\n")
     return 0
 
