@@ -5,7 +5,6 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
-#include <string_view>
 #include <system_error>
 #include <variant>
 
@@ -27,8 +26,6 @@ namespace esc::cli {
 namespace {
 
 constexpr int kMaxDepth = 64;
-// Beside each cache entry: the whole fingerprint it was filed under (its name holds a hash).
-constexpr std::string_view kFingerprintFile = "fingerprint.txt";
 
 struct Prepared {
   eval::ExperimentSpec spec;          // as run, its own dependencies filled in
@@ -354,9 +351,13 @@ bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& c
   return prepare(spec, context, 0);
 }
 
-std::filesystem::path cache_of_run(const std::filesystem::path& dir) {
+bool is_cache_entry(const std::filesystem::path& dir) {
   std::error_code ec;
-  return std::filesystem::exists(dir / kFingerprintFile, ec) ? dir.parent_path() : dir / "deps";
+  return std::filesystem::exists(dir / kFingerprintFile, ec);
+}
+
+std::filesystem::path cache_of_run(const std::filesystem::path& dir) {
+  return is_cache_entry(dir) ? dir.parent_path() : dir / store::kDependencyCache;
 }
 
 }  // namespace esc::cli

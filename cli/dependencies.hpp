@@ -44,6 +44,13 @@ struct DependencyContext {
 // (dependencies of dependencies before). Prints what it does; false after printing an error.
 [[nodiscard]] bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context);
 
+// Beside the results of a dependency cache entry: the whole fingerprint it was filed under
+// (its name holds a hash).
+inline constexpr const char* kFingerprintFile = "fingerprint.txt";
+
+// Whether `dir` is an entry of a dependency cache (a finished run filed under its fingerprint).
+[[nodiscard]] bool is_cache_entry(const std::filesystem::path& dir);
+
 // Where the finished run in `dir` finds what it depended on: its own deps/, or, for an entry
 // of a dependency cache, the cache it sits in, beside its own dependencies.
 [[nodiscard]] std::filesystem::path cache_of_run(const std::filesystem::path& dir);

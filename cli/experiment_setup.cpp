@@ -43,6 +43,15 @@ eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const s
   return nullptr;
 }
 
+eval::ExperimentSpec* pick_stored_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
+                                             const std::string& name) {
+  for (auto& e : compiled.all_experiments)
+    if (e.name == name) return &e;
+  const std::vector<std::string> names = names_of(compiled.all_experiments);
+  no_such(file, "experiment", name, names.empty() ? "none" : compiler::quoted_list(names, " and "), names);
+  return nullptr;
+}
+
 Target pick_target(compiler::CompileResult& compiled, const std::filesystem::path& file, const std::string& name) {
   const std::string wanted = name.empty() ? compiled.first_declared : name;
   if (wanted.empty()) {

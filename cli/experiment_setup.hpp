@@ -21,6 +21,12 @@ namespace esc::cli {
 eval::ExperimentSpec* pick_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
                                       const std::string& name);
 
+// The experiment `name` a run stored, among every experiment `file` compiles, imported ones
+// included (a dependency cache entry's stored main file may only import it), or null after
+// printing an error.
+eval::ExperimentSpec* pick_stored_experiment(compiler::CompileResult& compiled, const std::filesystem::path& file,
+                                             const std::string& name);
+
 // What `esc run --experiment NAME` picked: an experiment or a study; monostate after an error.
 using Target = std::variant<std::monostate, eval::ExperimentSpec*, eval::StudySpec*>;
 

@@ -318,15 +318,6 @@ eval::ExperimentSpec* pick_condition(compiler::CompileResult& compiled, const st
   return nullptr;
 }
 
-// The experiment a run stored, among every experiment compiled: a dependency cache entry's
-// stored main file may only import it (deps/stop-... of a study over energy).
-eval::ExperimentSpec* pick_stored_experiment(compiler::CompileResult& compiled, const std::string& name) {
-  for (eval::ExperimentSpec& e : compiled.all_experiments)
-    if (e.name == name) return &e;
-  complain("esc: error: the stored sources no longer declare experiment `{}`\n", name);
-  return nullptr;
-}
-
 }  // namespace
 
 int replay_command(const ReplayOptions& o) {
@@ -376,7 +367,7 @@ int replay_command(const ReplayOptions& o) {
       return kExitBadInput;
     }
     spec = stored->condition ? pick_condition(compiled, *stored->condition)
-                             : pick_stored_experiment(compiled, stored->name);
+                             : pick_stored_experiment(compiled, stored->script, stored->name);
   } else {
     settings.runs.reset();
     settings.generations.reset();

@@ -74,9 +74,9 @@ int resume_command(const RunOptions& o) {
   if (!script) return kExitBadInput;
   compiler::CompileResult compiled = compile_to_resume(o, *script);
   if (!compiled.ok()) return kExitBadInput;
-  const Target target = pick_target(compiled, *script, stored.name);
-  if (!std::holds_alternative<eval::ExperimentSpec*>(target)) return kExitBadInput;
-  eval::ExperimentSpec& spec = *std::get<eval::ExperimentSpec*>(target);
+  eval::ExperimentSpec* const stored_spec = pick_stored_experiment(compiled, *script, stored.name);
+  if (stored_spec == nullptr) return kExitBadInput;
+  eval::ExperimentSpec& spec = *stored_spec;
   // The settings it was launched with, for it and its dependencies.
   RunOptions replay = stored_overrides(stored, o.resume);
   if (!apply_overrides(replay, spec) || !select_controllers(replay.controllers, spec) ||
@@ -95,6 +95,13 @@ int resume_command(const RunOptions& o) {
   const std::optional<int> extend = carry_on_to(o, as_stored);
   if (extend && *extend < 0) return kExitBadInput;
   if (!extend && stored.finished()) return complete();
+  if (is_cache_entry(o.resume)) {
+    // Its dependents would read the longer run under the fingerprint of the shorter.
+    complain("esc: error: {} is an entry of a dependency cache, which its dependents read as it was made; "
+             "to carry it on, copy it elsewhere without its {} and give --cache {}\n",
+             o.resume.string(), kFingerprintFile, o.resume.parent_path().string());
+    return kExitBadInput;
+  }
   // Dependencies last: a script that cannot resume should not first run them. They, and what
   // the run received from them, are checked with the generations it was launched with:
   // carrying a run on extends it alone.
@@ -144,7 +151,7 @@ int run_command(const RunOptions& o) {
     return kExitBadInput;
 
   const std::filesystem::path out = o.out.empty() ? default_out(spec.name) : o.out;
-  if (!prepare_dependencies(spec, dependency_context(compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file)))
+  if (!prepare_dependencies(spec, dependency_context(compiled, o, run_cache(o, out), o.file)))
     return kExitBadInput;
   const store::LaunchInfo launch = launch_info(o, o.file, &spec);
   const auto open = [&] {

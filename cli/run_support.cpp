@@ -159,7 +159,11 @@ bool same_inputs(const eval::ExperimentSpec& spec, const store::StoredExperiment
 }
 
 std::filesystem::path resume_cache(const RunOptions& o, const RunOptions& replay) {
-  return !o.cache.empty() ? o.cache : !replay.cache.empty() ? replay.cache : o.resume / "deps";
+  return !o.cache.empty() ? o.cache : !replay.cache.empty() ? replay.cache : cache_of_run(o.resume);
+}
+
+std::filesystem::path run_cache(const RunOptions& o, const std::filesystem::path& out) {
+  return o.cache.empty() ? cache_of_run(out) : o.cache;
 }
 
 bool open_on_rank0(const std::function<void()>& open) {

@@ -72,8 +72,11 @@ namespace esc::cli {
 [[nodiscard]] bool same_inputs(const eval::ExperimentSpec& spec, const store::StoredExperiment& stored,
                                const std::filesystem::path& cache, const std::filesystem::path& dir);
 
-// The cache of a resumed run: --cache, else the one it used, else DIR/deps.
+// The cache of a resumed run: --cache, else the one it used, else cache_of_run(DIR).
 [[nodiscard]] std::filesystem::path resume_cache(const RunOptions& o, const RunOptions& replay);
+
+// The cache of a new run into `out`: --cache, else OUT/deps.
+[[nodiscard]] std::filesystem::path run_cache(const RunOptions& o, const std::filesystem::path& out);
 
 // Rank 0 (or a lone process) calls `open`; every rank of an MPI job learns whether it
 // succeeded. False after printing the error.

@@ -128,7 +128,7 @@ int run_study(const RunOptions& o, compiler::CompileResult& compiled, eval::Stud
   if (!vary_nothing_given(o, study) || !apply_to_conditions(o, study)) return kExitBadInput;
   const std::filesystem::path out = o.out.empty() ? default_out(study.name) : o.out;
   // Dependencies shared by several conditions are run once: the second finds it in the cache.
-  const DependencyContext deps = dependency_context(compiled, o, o.cache.empty() ? out / "deps" : o.cache, o.file);
+  const DependencyContext deps = dependency_context(compiled, o, run_cache(o, out), o.file);
   std::vector<store::LaunchInfo> launches;
   std::vector<std::string> names;
   for (eval::ConditionSpec& c : study.conditions) {

@@ -458,9 +458,9 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
   };
   if (!fs::is_regular_file(file, ec)) {
     // What `esc run` writes before its database: the runs of the experiments it depends on.
-    if (fs::is_directory(dir / "deps", ec))
-      throw NothingStored(fmt::format("`{}` holds only its dependencies (deps/): the run was stopped before it started",
-                                      dir.string()));
+    if (fs::is_directory(dir / kDependencyCache, ec))
+      throw NothingStored(fmt::format("`{}` holds only its dependencies ({}/): the run was stopped before it started",
+                                      dir.string(), kDependencyCache));
     throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
   }
   if (fs::file_size(file, ec) == 0 && !ec) throw nothing();

@@ -25,6 +25,9 @@
 namespace esc::store {
 
 inline constexpr const char* kDatabaseFile = "esc.db";
+// Beside the database of a run that uses evolved controllers: the runs of the experiments
+// it depends on (its dependency cache, written first).
+inline constexpr const char* kDependencyCache = "deps";
 // 2: GP (table tree_state; runs.best_tree and runs.best_behavior hold a tree controller's
 // best tree as script code). 3: studies (tables studies, conditions, condition_settings: a
 // study's database holds one experiment row per condition). 4: the analyses' tables

@@ -45,13 +45,13 @@ std::shared_ptr<const DirectoryLock> create_output_directory(const fs::path& dir
   bool fresh = true;
   if (fs::is_directory(dir, ec)) {
     for (const auto& entry : fs::directory_iterator(dir, ec))
-      if (entry.path().filename() != "deps") fresh = false;
+      if (entry.path().filename() != kDependencyCache) fresh = false;
   }
   // A run stopped before its first generation committed left nothing to lose: its files
   // (all but `deps/`) go, and the directory is used again.
   if (!fresh && holds_nothing_stored(dir)) {
     for (const auto& entry : fs::directory_iterator(dir, ec))
-      if (entry.path().filename() != "deps") fs::remove_all(entry.path(), ec);
+      if (entry.path().filename() != kDependencyCache) fs::remove_all(entry.path(), ec);
     fresh = !ec;
   }
   if (!fresh)

@@ -11,6 +11,8 @@
 //   <controller>/run-NN.best.esc    tree controllers: the best tree as script code (a
 //                              Wheels tree as a behavior declaration, to paste)
 //   summary.json               all runs finished so far (rewritten atomically after each)
+//   deps/                      the runs of the experiments whose evolved controllers it
+//                              uses (kDependencyCache), written before esc.db
 #include <cstdint>
 #include <filesystem>
 #include <fstream>

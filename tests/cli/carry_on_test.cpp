@@ -119,6 +119,39 @@ TEST(CarryOn, ARunWithDependenciesIsCarriedOnAloneTwice) {
   EXPECT_NE(again.output.find("is complete"), std::string::npos) << again.output;
 }
 
+// A dependency cache entry is read by its dependents as it was made: carried on in place, it
+// would hand them the longer run under the shorter one's fingerprint. It is refused, and
+// carried on once copied out of the cache, finding its own dependencies there.
+TEST(CarryOn, ADependencyCacheEntryIsCarriedOnOnlyOutsideTheCache) {
+  const fs::path dir = scratch("carry-on-cache-entry");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved_nested.esc";
+  const Outcome run = esc("run " + script + " --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  fs::path entry;
+  for (const auto& e : fs::directory_iterator(dir / "deps"))
+    if (e.path().filename().string().starts_with("supervised-") && fs::is_directory(e.path())) entry = e.path();
+  ASSERT_FALSE(entry.empty());
+  const std::string summary = slurp(entry / "summary.json");
+  const Outcome refused = esc("run --resume " + entry.string() + " --generations 4");
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_NE(refused.output.find("esc: error: " + entry.string() + " is an entry of a dependency cache"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_EQ(slurp(entry / "summary.json"), summary);
+  const Outcome complete = esc("run --resume " + entry.string());
+  EXPECT_EQ(complete.status, 0) << complete.output;
+  EXPECT_NE(complete.output.find("is complete"), std::string::npos) << complete.output;
+
+  const fs::path copy = scratch("carry-on-cache-entry-copy");
+  fs::copy(entry, copy, fs::copy_options::recursive);
+  fs::remove(copy / "fingerprint.txt");
+  const Outcome on = esc("run --resume " + copy.string() + " --generations 4 --cache " + (dir / "deps").string());
+  ASSERT_EQ(on.status, 0) << on.output;
+  EXPECT_NE(on.output.find("dependency basic: reused"), std::string::npos) << on.output;
+  EXPECT_EQ(committed_generations(copy), 2 * 4);
+  EXPECT_EQ(slurp(entry / "summary.json"), summary);
+}
+
 TEST(CarryOn, FewerGenerationsThanStoredIsAnErrorThatChangesNothing) {
   const fs::path dir = scratch("carry-on-shorter");
   const Outcome run = esc("run " + tiny() + " --seed 5 --generations 3 --threads 2 --out " + dir.string());
