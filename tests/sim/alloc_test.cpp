@@ -11,6 +11,7 @@
 #include <new>
 
 #include "runtime/sim/world.hpp"
+#include "sim_test_util.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -72,21 +73,11 @@ ArenaSpec cluttered(int obstacles) {
   }
   // Lights (one above a random recharge zone) and zones: read_light, energy, zones,
   // reach and sweep bookkeeping allocate nothing either.
-  Zone recharge;
-  recharge.radius_m = 0.03;
-  recharge.random_position = true;
-  recharge.recharge = true;
-  arena.zones.push_back(recharge);
-  Zone mark;
-  mark.shape = ZoneShape::Rectangle;
-  mark.center_m = {0.3, 0.3};
-  mark.size_m = {0.2, 0.1};
-  mark.visible = true;
-  arena.zones.push_back(mark);
-  LightSource above;
-  above.above_zone = 0;
-  arena.lights.push_back(above);
-  arena.lights.push_back({{0.5, 0.1}, 0.02, 0.7, -1});
+  test::add_homing_features(arena, {.recharge_radius_m = 0.03,
+                                    .mark_center_m = {0.3, 0.3},
+                                    .mark_size_m = {0.2, 0.1},
+                                    .light_height_m = 0.0,
+                                    .free_light = {{0.5, 0.1}, 0.02, 0.7, -1}});
   return arena;
 }
 

@@ -100,22 +100,11 @@ TEST(SimDeterminism, ManyWorldsAgree) {
 // the sweep grid: every epoch starts with begin_epoch from its own stream.
 ArenaSpec homing_arena() {
   ArenaSpec a = cluttered_arena();
-  Zone recharge;
-  recharge.radius_m = 0.06;
-  recharge.random_position = true;
-  recharge.recharge = true;
-  a.zones.push_back(recharge);
-  Zone mark;
-  mark.shape = ZoneShape::Rectangle;
-  mark.center_m = {0.1, 0.5};
-  mark.size_m = {0.15, 0.1};
-  mark.visible = true;
-  a.zones.push_back(mark);
-  LightSource above;
-  above.above_zone = 0;
-  above.height_m = 0.05;
-  a.lights.push_back(above);
-  a.lights.push_back({{0.55, 0.05}, 0.0, 0.5, -1});
+  test::add_homing_features(a, {.recharge_radius_m = 0.06,
+                                .mark_center_m = {0.1, 0.5},
+                                .mark_size_m = {0.15, 0.1},
+                                .light_height_m = 0.05,
+                                .free_light = {{0.55, 0.05}, 0.0, 0.5, -1}});
   return a;
 }
 

@@ -15,6 +15,35 @@ inline ArenaSpec empty_arena(double w, double h) {
   return a;
 }
 
+// What a homing arena adds: a recharge zone placed at random with a light above it, a
+// visible rectangular mark, and a second light standing free.
+struct HomingFeatures {
+  double recharge_radius_m;
+  Vec2 mark_center_m;
+  Vec2 mark_size_m;
+  double light_height_m;
+  LightSource free_light;
+};
+
+inline void add_homing_features(ArenaSpec& a, const HomingFeatures& f) {
+  Zone recharge;
+  recharge.radius_m = f.recharge_radius_m;
+  recharge.random_position = true;
+  recharge.recharge = true;
+  a.zones.push_back(recharge);
+  Zone mark;
+  mark.shape = ZoneShape::Rectangle;
+  mark.center_m = f.mark_center_m;
+  mark.size_m = f.mark_size_m;
+  mark.visible = true;
+  a.zones.push_back(mark);
+  LightSource above;
+  above.above_zone = static_cast<int>(a.zones.size()) - 2;
+  above.height_m = f.light_height_m;
+  a.lights.push_back(above);
+  a.lights.push_back(f.free_light);
+}
+
 inline KheperaParams robot_with_inertia(bool inertia) {
   KheperaParams r;
   r.motor.inertia = inertia;
