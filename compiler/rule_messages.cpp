@@ -1,5 +1,6 @@
 #include "compiler/rule_messages.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -33,12 +34,26 @@ std::string beyond(const sim::Problem& p) {
   return fmt::format(": it reaches {} beyond a wall", shown(p.found, Dimension::Length));
 }
 
-// The smallest sweep cell (shown to the centimetre's hundredth) whose grid fits.
+// The smallest sweep cell (to the centimetre's hundredth) whose grid fits. The cell count
+// falls as the cell grows, so bisection between a cell below the area's bound (too small)
+// and one as large as the arena (one cell) finds it in bounded steps, however long and thin
+// the arena: stepping up from the bound would take longer than any run for one such arena.
 std::string smallest_sweep_cell(const sim::ArenaSpec& a) {
-  const auto cells = [&](double c) { return std::ceil(a.width_m / c) * std::ceil(a.height_m / c); };
-  double cm = std::ceil(std::sqrt(a.width_m * a.height_m / sim::kMaxSweepCells) * 1e4) / 100;
-  while (cells(cm / 100) > sim::kMaxSweepCells) cm += 0.01;
-  return fmt::format("{}cm", number(std::round(cm * 100) / 100));
+  constexpr double kHundredthsPerMetre = 1e4;
+  constexpr int kMaxBisections = 256;
+  const auto fits = [&](double hundredths) {
+    const double cell_m = hundredths / kHundredthsPerMetre;
+    return std::ceil(a.width_m / cell_m) * std::ceil(a.height_m / cell_m) <= sim::kMaxSweepCells;
+  };
+  double too_small =
+      std::max(0.0, std::floor(std::sqrt(a.width_m * a.height_m / sim::kMaxSweepCells) * kHundredthsPerMetre) - 1);
+  double fitting = std::ceil(std::max(a.width_m, a.height_m) * kHundredthsPerMetre);
+  for (int i = 0; i < kMaxBisections && fitting - too_small > 1; ++i) {
+    const double middle = std::floor((too_small + fitting) / 2);
+    if (middle <= too_small || middle >= fitting) break;   // beyond a double's integers
+    (fits(middle) ? fitting : too_small) = middle;
+  }
+  return fmt::format("{}cm", number(fitting / 100));
 }
 
 // Generic: "`ir_aperture` must be below 180deg, found 200deg", with the reason for an upper limit.

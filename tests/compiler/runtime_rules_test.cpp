@@ -4,6 +4,8 @@
 // validators without a row fails EveryRuleHasARow.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <set>
 #include <string>
@@ -185,6 +187,21 @@ TEST(RuntimeRules, TheSweepCellSuggestedForAHugeArenaFits) {
   const std::string cell = out.substr(at + 24, out.find('`', at + 24) - at - 24);
   const auto fixed = compile_source("arena a { size 500m x 520m  sweep_cell " + cell + " }", "fits.esc", options());
   EXPECT_TRUE(fixed.ok()) << cell << "\n" << rendered(fixed);
+  // And it is the smallest that does, to the centimetre's hundredth.
+  const std::string smaller = fmt::format("{:.2f}cm", std::stod(cell) - 0.01);
+  const auto refused = compile_source("arena a { size 500m x 520m  sweep_cell " + smaller + " }", "fits.esc", options());
+  EXPECT_FALSE(refused.ok()) << smaller;
+}
+
+// A long, thin arena: the cell that fits (one row of cells) is far above the area's bound,
+// where stepping up a hundredth of a centimetre at a time hung on a fuzzed script
+// (tests/bad/sweep_grid_long_thin_arena.esc).
+TEST(RuntimeRules, ALongThinArenaGetsTheSweepCellOfOneRow) {
+  const auto r = compile_source("arena a { size 60cm x 1000000000m }", "thin.esc", options());
+  const std::string out = rendered(r);
+  EXPECT_NE(out.find("help: write `sweep_cell 1000cm` or larger"), std::string::npos) << out;
+  const auto fixed = compile_source("arena a { size 60cm x 1000000000m  sweep_cell 1000cm }", "thin.esc", options());
+  EXPECT_TRUE(fixed.ok()) << rendered(fixed);
 }
 
 // Every setting `--set` accepts goes through the same rules: what `esc check` accepts and
