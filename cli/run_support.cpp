@@ -163,7 +163,7 @@ std::filesystem::path resume_cache(const RunOptions& o, const RunOptions& replay
 }
 
 std::filesystem::path run_cache(const RunOptions& o, const std::filesystem::path& out) {
-  return o.cache.empty() ? cache_of_run(out) : o.cache;
+  return o.cache.empty() ? out / store::kDependencyCache : o.cache;
 }
 
 bool open_on_rank0(const std::function<void()>& open) {

@@ -38,9 +38,10 @@ std::string beyond(const sim::Problem& p) {
 // falls as the cell grows, so bisection between a cell below the area's bound (too small)
 // and one as large as the arena (one cell) finds it in bounded steps, however long and thin
 // the arena: stepping up from the bound would take longer than any run for one such arena.
+// Each step halves the gap or meets the spacing of large doubles, so it ends within about
+// as many steps as a double has exponents.
 std::string smallest_sweep_cell(const sim::ArenaSpec& a) {
   constexpr double kHundredthsPerMetre = 1e4;
-  constexpr int kMaxBisections = 256;
   const auto fits = [&](double hundredths) {
     const double cell_m = hundredths / kHundredthsPerMetre;
     return std::ceil(a.width_m / cell_m) * std::ceil(a.height_m / cell_m) <= sim::kMaxSweepCells;
@@ -48,7 +49,7 @@ std::string smallest_sweep_cell(const sim::ArenaSpec& a) {
   double too_small =
       std::max(0.0, std::floor(std::sqrt(a.width_m * a.height_m / sim::kMaxSweepCells) * kHundredthsPerMetre) - 1);
   double fitting = std::ceil(std::max(a.width_m, a.height_m) * kHundredthsPerMetre);
-  for (int i = 0; i < kMaxBisections && fitting - too_small > 1; ++i) {
+  while (fitting - too_small > 1) {
     const double middle = std::floor((too_small + fitting) / 2);
     if (middle <= too_small || middle >= fitting) break;   // beyond a double's integers
     (fits(middle) ? fitting : too_small) = middle;
