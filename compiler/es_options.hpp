@@ -1,5 +1,5 @@
 #pragma once
-// The options of `evolve es(...)` (runtime/evo/es.hpp's EsSettings): one table for scripts,
+// The options of `evolve es(...)` (runtime/evo/es/es.hpp's EsSettings): one table for scripts,
 // `esc run --set KEY=VALUE`, resolved settings and the documentation, with one spelling per
 // value (a choice's words, `comma`, `no_recombination`, are written alone in `es(...)` and
 // as `--set selection=comma`), and every check of ES settings: each option's own value
@@ -11,7 +11,7 @@
 #include "compiler/ast.hpp"
 #include "compiler/option_table.hpp"
 #include "compiler/sink.hpp"
-#include "runtime/evo/es.hpp"
+#include "runtime/evo/es/es.hpp"
 
 namespace esc::compiler {
 

@@ -202,8 +202,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
       while (!queue.empty() && room_for_another(active)) {
         const Queued q = queue.front();
         queue.pop_front();
-        const auto start = q.controller->is_tree() ? detail::gp_run : detail::es_run;
-        std::unique_ptr<RunJob> job = start(spec, *q.controller, q.run, q.from);
+        auto job = std::make_unique<RunJob>(spec, *q.controller, q.run, q.from);
         // A run stopped after its last generation but before it was closed.
         if (job->finished())
           close(*job);

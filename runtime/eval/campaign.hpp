@@ -1,6 +1,6 @@
 #pragma once
 // A campaign: for every compared controller, `runs` independent evolutions of
-// `generations` generations, by the ES for networks and by genetic programming for trees.
+// `generations` generations, each by the optimizer the experiment names for it (evo::Optimizer).
 // Each run's seed is derived from the master seed and the run index alone, so all controllers of an experiment meet the same start poses (common
 // random numbers make the comparison sharper). Offspring are evaluated in parallel; each
 // evaluation's stream is derived from (run seed, generation, individual), so results are

@@ -23,13 +23,6 @@ struct Recorder final : TraceSink {
 
 }  // namespace
 
-std::optional<std::size_t> RunJob::record(std::span<const double> fitness, const GenerationStats& stats) {
-  state_.generations.push_back(stats);
-  // Individual 0 of generation 0 is the stored genome unchanged.
-  if (state_.transfer && stats.generation == 0 && !fitness.empty()) state_.transfer->fitness_here = fitness.front();
-  return improve_best(state_, stats.generation, fitness);
-}
-
 const StartFrom::Origin* start_of(const ExperimentSpec& spec, const control::ControllerSpec& controller,
                                   int run) noexcept {
   if (!spec.start_from) return nullptr;

@@ -1,8 +1,8 @@
 #pragma once
 // The parts of a campaign (campaign.cpp) below the loop over runs: a run as a job that
-// advances one generation at a time (es_run.cpp: the ES for networks, gp_run.cpp: genetic
-// programming for trees), so that the campaign can advance several runs together and deal
-// out their evaluations as one pool; and what both kinds of run share. Internal to esc_eval.
+// advances one generation at a time (run_job.cpp), whatever its optimizer, so that the
+// campaign can advance several runs together and deal out their evaluations as one pool.
+// Internal to esc_eval.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -26,18 +26,17 @@ struct Evaluators {
   std::size_t threads;   // this process's worker threads
 };
 
-// One run of one controller. The campaign calls breed(), evaluates the individuals it
-// made (concurrently, in any order, on any rank), then evaluated(); until finished().
-// Every random stream comes from (run seed, purpose, generation, individual), so the run
-// is the same however its evaluations were shared out and whichever runs it advanced with.
+// One run of one controller by its optimizer (evo::Optimizer, whichever algorithm the
+// experiment names for it). The campaign calls breed(), evaluates the candidates it made
+// (concurrently, in any order, on any rank), then evaluated(); until finished(). Every
+// random stream comes from (run seed, purpose, generation, individual), so the run is the
+// same however its evaluations were shared out and whichever runs it advanced with.
 class RunJob {
  public:
-  RunJob(const ExperimentSpec& spec, const control::ControllerSpec& controller, RunState state)
-      : controller_(&controller),
-        state_(std::move(state)),
-        generations_(spec.generations_for(controller)),
-        evaluations_(spec.evaluations_per_generation(controller)) {}
-  virtual ~RunJob() = default;
+  // A fresh run, or one continued from `from`. Throws std::invalid_argument on impossible
+  // settings, a tree controller compared without GP settings, or a state `from` that the
+  // controller's optimizer did not save or cannot read.
+  RunJob(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from);
   RunJob(const RunJob&) = delete;
   RunJob& operator=(const RunJob&) = delete;
 
@@ -45,42 +44,31 @@ class RunJob {
   [[nodiscard]] const RunState& state() const noexcept { return state_; }
   // The generation breed() makes next.
   [[nodiscard]] int generation() const noexcept { return static_cast<int>(state_.generations.size()); }
-  [[nodiscard]] bool finished() const noexcept { return generation() >= generations_; }
-  // How many individuals each generation evaluates.
+  // After the last generation, or once the optimizer has stopped its search.
+  [[nodiscard]] bool finished() const;
+  // How many candidates each generation evaluates.
   [[nodiscard]] std::size_t evaluations_per_generation() const noexcept { return evaluations_; }
 
-  // Makes generation generation()'s individuals; returns how many there are.
-  virtual std::size_t breed() = 0;
-  // Evaluates individual i of the bred generation; called concurrently for different i.
-  [[nodiscard]] virtual Evaluation evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const = 0;
-  // The bred generation's fitness (in individual order) and statistics: selects, and
-  // keeps the run's best.
-  virtual void evaluated(std::span<const double> fitness, const GenerationStats& stats) = 0;
+  // Makes generation generation()'s candidates; returns how many there are.
+  std::size_t breed();
+  // Evaluates candidate i of the bred generation; called concurrently for different i.
+  [[nodiscard]] Evaluation evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const;
+  // The bred generation's fitness (in candidate order) and statistics: tells the optimizer,
+  // keeps the run's best and the optimizer's state.
+  void evaluated(std::span<const double> fitness, const GenerationStats& stats);
   // The finished run; its best evaluation replayed where the options or the controller
   // ask for it (replay_best).
-  [[nodiscard]] virtual RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
-                                        CampaignListener& listener) = 0;
+  [[nodiscard]] RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
+                                CampaignListener& listener);
 
- protected:
-  // Appends the generation's statistics and returns the individual that beat the run's best
-  // so far, if one did (its genome is the caller's to keep).
-  std::optional<std::size_t> record(std::span<const double> fitness, const GenerationStats& stats);
-
+ private:
   const control::ControllerSpec* controller_;
   RunState state_;
   int generations_;
   std::size_t evaluations_;
+  std::unique_ptr<evo::Optimizer> optimizer_;
+  std::vector<evo::Genome> candidates_;
 };
-
-// A run of a network controller by the ES, fresh or continued from `from`. Throws
-// std::invalid_argument when `from` is not an ES state.
-[[nodiscard]] std::unique_ptr<RunJob> es_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
-                                             int run, const RunState* from);
-// A run of a tree controller by genetic programming. Throws std::invalid_argument when
-// the experiment has no GP settings, `from` is not a GP state or it holds trees this
-// controller cannot have.
-[[nodiscard]] std::unique_ptr<RunJob> gp_run(const ExperimentSpec& spec, const control::ControllerSpec& controller,
-                                             int run, const RunState* from);
 
 // Where run `run` of `controller` starts from (`start from` / `evaluate from`), or null when
 // it starts from a random population.

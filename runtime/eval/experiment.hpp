@@ -2,6 +2,7 @@
 // A checked, fully resolved experiment: everything a run needs, produced by the compiler
 // from a script. Runtime code sees only this, never the parse tree.
 #include <algorithm>
+#include <any>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -10,8 +11,9 @@
 #include <vector>
 
 #include "runtime/control/controller_spec.hpp"
-#include "runtime/evo/es.hpp"
+#include "runtime/evo/es/es.hpp"
 #include "runtime/evo/gp/gp.hpp"
+#include "runtime/evo/registry.hpp"
 #include "runtime/expr/program.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/khepera_params.hpp"
@@ -76,6 +78,13 @@ struct StartFrom {
   }
 };
 
+// How a compared controller evolves: the registered algorithm and its settings (the
+// algorithm's own type; empty when the experiment gives it none).
+struct Evolution {
+  const evo::Algorithm* algorithm = nullptr;
+  std::any settings;
+};
+
 struct ExperimentSpec {
   std::string name;
   std::string arena_name;
@@ -111,6 +120,12 @@ struct ExperimentSpec {
     for (const Dependency& d : dependencies) add(d.experiment);
     if (start_from) add(start_from->experiment);
     return n;
+  }
+
+  // The algorithm that evolves `c`: the ES for a network, GP for a tree.
+  [[nodiscard]] Evolution evolution_of(const control::ControllerSpec& c) const {
+    if (c.is_tree()) return {evo::find_algorithm("gp"), gp ? std::any(*gp) : std::any()};
+    return {evo::find_algorithm("es"), std::any(es)};
   }
 
   [[nodiscard]] bool evaluates_only() const noexcept { return start_from && start_from->evaluate_only; }

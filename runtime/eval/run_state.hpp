@@ -1,17 +1,14 @@
 #pragma once
 // A run while it goes: the statistics of each finished generation, and everything needed to
-// continue it after the last one. What an algorithm continues from is its own: the ES its
-// parents with their step sizes, GP its last evaluated population, one alternative each of
-// RunState::algorithm, so that nothing tells them apart by emptiness (the store keeps each
-// in a table of its own: runtime/store/es_state.*, tree_state.*).
+// continue it after the last one. What an algorithm continues from is its own, saved by its
+// optimizer (runtime/evo/optimizer.hpp) as bytes the run loop and the store do not read.
 #include <cstdint>
 #include <optional>
-#include <variant>
+#include <string>
 #include <vector>
 
 #include "runtime/eval/transfer.hpp"
-#include "runtime/evo/es.hpp"
-#include "runtime/evo/gp/selection.hpp"
+#include "runtime/evo/optimizer.hpp"
 
 namespace esc::eval {
 
@@ -41,22 +38,20 @@ struct GenerationStats {
   // Evaluations whose fitness reached the saturation limit, +-expr::kSaturation (beyond it,
   // or NaN, which counts as the lowest): fitness terms that overflow.
   std::int64_t saturated = 0;
+  std::vector<evo::Metric> metrics{};   // the optimizer's own (evo::Optimizer::metrics)
 };
 
-// What the ES breeds the next generation from: the mu parents selected after the last
-// generation (genes, step sizes and fitness).
-struct EsState {
-  std::vector<evo::Individual> parents;
-};
-
-// What GP breeds the next generation from: the last generation evaluated, each tree with its
-// fitness; empty before generation 0.
-struct GpState {
-  std::vector<evo::gp::Individual> population;
+// An optimizer's state after a run's last finished generation: the algorithm that saved it
+// (evo::Algorithm::name, or evo::kEvaluateOnly), the layout of its bytes, and the bytes.
+struct OptimizerState {
+  std::string algorithm;
+  std::uint32_t format = 0;
+  evo::StateBytes bytes;
+  friend bool operator==(const OptimizerState&, const OptimizerState&) = default;
 };
 
 // Everything needed to continue a run after its last finished generation: restarting
-// generation `generations.size()` from `algorithm` reproduces the uninterrupted run bit for
+// generation `generations.size()` from `optimizer` reproduces the uninterrupted run bit for
 // bit, because every random stream is derived from (run seed, generation, individual).
 struct RunState {
   int run = 0;
@@ -67,7 +62,7 @@ struct RunState {
   std::vector<double> best_genome;            // as RunResult::best_genome
   int best_generation = 0;
   int best_index = 0;
-  std::variant<EsState, GpState> algorithm;   // networks by the ES, trees by GP
+  OptimizerState optimizer;
   std::optional<Transfer> transfer{};         // set when the run starts from a stored genome
 };
 

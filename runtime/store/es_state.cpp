@@ -2,25 +2,12 @@
 
 #include <fmt/format.h>
 
+#include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/store/results_db.hpp"
-#include "runtime/store/row_checksum.hpp"
 
 namespace esc::store {
 
-void save_state(sql::Database& db, std::int64_t controller_id, int run, const eval::EsState& state) {
-  const std::size_t genome_size = state.parents.empty() ? 0 : state.parents.front().genes.size();
-  const std::size_t sigma_count = state.parents.empty() ? 0 : state.parents.front().sigmas.size();
-  db.prepare(
-        "INSERT OR REPLACE INTO run_state(controller_id, run, parents, genome_size, sigma_count, population) "
-        "VALUES (?, ?, ?, ?, ?, ?)")
-      .bind(1, controller_id).bind(2, run).bind(3, static_cast<std::int64_t>(state.parents.size()))
-      .bind(4, static_cast<std::int64_t>(genome_size)).bind(5, static_cast<std::int64_t>(sigma_count))
-      .bind_blob(6, pack_parents(state.parents))
-      .run();
-  seal_row(db, "run_state", db.last_insert_rowid());
-}
-
-std::optional<eval::EsState> load_es_state(sql::Database& db, std::int64_t controller_id, int run,
+std::optional<eval::OptimizerState> load_es_state(sql::Database& db, std::int64_t controller_id, int run,
                                            std::size_t genome_size, std::string_view damaged) {
   auto st = db.prepare("SELECT parents, genome_size, sigma_count, population FROM run_state "
                        "WHERE controller_id = ? AND run = ?");
@@ -31,7 +18,7 @@ std::optional<eval::EsState> load_es_state(sql::Database& db, std::int64_t contr
                                 static_cast<std::size_t>(st.int64(2)));
   if (genes != genome_size || !parents)
     throw StoreError(fmt::format("{}: the stored population has the wrong size", damaged));
-  return eval::EsState{std::move(*parents)};
+  return eval::OptimizerState{"es", 1, evo::es_state(*parents)};
 }
 
 std::vector<double> pack_parents(const std::vector<evo::Individual>& parents) {

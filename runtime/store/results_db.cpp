@@ -9,6 +9,7 @@
 
 #include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/es_state.hpp"
+#include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/tree_state.hpp"
@@ -138,6 +139,27 @@ CREATE TABLE replays (
   columns       TEXT NOT NULL,
   trace         BLOB NOT NULL,
   checksum      INTEGER NOT NULL DEFAULT 0
+);
+-- Schema 6: every optimizer's state (optimizer_tables.hpp); run_state and tree_state above
+-- are read only, for runs an older esc left.
+CREATE TABLE optimizer_state (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  algorithm     TEXT NOT NULL,
+  format        INTEGER NOT NULL,
+  state         BLOB NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (controller_id, run)
+);
+CREATE TABLE metrics (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  generation    INTEGER NOT NULL,
+  idx           INTEGER NOT NULL,
+  name          TEXT NOT NULL,
+  value         REAL,              -- NULL: NaN
+  checksum      INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (controller_id, run, generation, idx)
 );
 -- Schema 3 (studies); also what opening an older database for writing adds to it.
 CREATE TABLE studies (
@@ -523,6 +545,7 @@ void ResultsDb::upgrade() {
   if (schema_version_ < 3) tables("CREATE TABLE studies", nullptr);   // studies
   // The analyses' tables, empty: the generations stored before have no usage.
   if (schema_version_ < kAnalysisSchemaVersion) db_.exec(analysis_schema());
+  if (schema_version_ < 6) tables("CREATE TABLE optimizer_state", "CREATE TABLE studies");
   if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
@@ -562,7 +585,8 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
     run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
   run.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
-  std::visit([&](const auto& algorithm) { save_state(db_, cid, st.run, algorithm); }, st.algorithm);
+  save_state(db_, cid, st.run, st.optimizer);
+  save_metrics(db_, cid, st.run, g);
   save_usage(db_, cid, st.run, g);
   if (st.transfer) save_transfer(db_, cid, st.run, *st.transfer);
   tx.commit();
@@ -610,7 +634,7 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
   if (!run.best_behavior.empty()) row.bind(10, run.best_behavior);
   row.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
-  // The run's state (run_state or tree_state) stays: `esc run --resume DIR --generations G`
+  // The run's state (optimizer_state) stays: `esc run --resume DIR --generations G`
   // carries a finished run on from it.
   db_.prepare("DELETE FROM behavior_usage WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
   auto use = db_.prepare(
@@ -705,10 +729,12 @@ std::vector<StoredExperiment> ResultsDb::load() {
             throw StoreError(fmt::format("{} is damaged: run {} of {} has {} generations stored, {} expected",
                                          file_.string(), run + 1, c.name, gens.size(), done));
           std::optional<eval::Transfer> transfer;
+          const std::string damaged = fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name);
           if (schema_version_ >= kAnalysisSchemaVersion) {
-            load_usage(db_, c.id, run, gens, fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name));
+            load_usage(db_, c.id, run, gens, damaged);
             transfer = load_transfer(db_, c.id, run);
           }
+          if (schema_version_ >= 6) load_metrics(db_, c.id, run, gens, damaged);
           const bool has_best = !runs.is_null(4);
           if (runs.text(2) == "finished") {
             eval::RunResult r;
@@ -738,7 +764,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
               s.best_index = runs.integer(6);
               s.best_genome = runs.doubles(7);
             }
-            s.algorithm = load_state(c, run);
+            s.optimizer = load_state(c, run);
             s.transfer = std::move(transfer);
             c.in_progress.push_back(std::move(s));
           }
@@ -758,8 +784,10 @@ std::vector<StoredExperiment> ResultsDb::load() {
   }
 }
 
-std::variant<eval::EsState, eval::GpState> ResultsDb::load_state(const StoredController& c, int run) {
+eval::OptimizerState ResultsDb::load_state(const StoredController& c, int run) {
   const std::string damaged = fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name);
+  if (schema_version_ >= 6)
+    if (auto s = load_optimizer_state(db_, c.id, run)) return std::move(*s);
   if (auto es = load_es_state(db_, c.id, run, c.genome_size, damaged)) return std::move(*es);
   if (schema_version_ >= 2)   // a schema-1 database holds no trees
     if (auto gp = load_tree_state(db_, c.id, run, damaged)) return std::move(*gp);
@@ -833,7 +861,7 @@ eval::ResumePoint ResultsDb::resume_point(const StoredExperiment& stored, const 
       s.best_index = f.best_index;
       s.transfer = f.transfer;
       try {
-        s.algorithm = load_state(c, f.run);
+        s.optimizer = load_state(c, f.run);
       } catch (const StoreError&) {
         throw StoreError(fmt::format("run {} of {} in {} finished without keeping the state to carry it on from "
                                      "(it was written by an esc older than schema 4)",

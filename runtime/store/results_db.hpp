@@ -33,8 +33,9 @@ inline constexpr const char* kDependencyCache = "deps";
 // study's database holds one experiment row per condition). 4: the analyses' tables
 // (analysis_tables.hpp: behavior usage per generation, choices, transfers), and a finished
 // run keeps its state. An older database opened for writing is upgraded.
-// 5: a checksum on every row (row_checksum.hpp).
-inline constexpr int kSchemaVersion = 5;
+// 5: a checksum on every row (row_checksum.hpp). 6: every optimizer's state in one table,
+// and its metrics per generation (optimizer_tables.hpp).
+inline constexpr int kSchemaVersion = 6;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -197,7 +198,7 @@ class ResultsDb {
   std::int64_t controller_id(const std::string& name);
   // What run `run` of `c` continues from: the ES parents or the GP population, whichever
   // table holds it. Throws StoreError when neither does or the stored state is damaged.
-  std::variant<eval::EsState, eval::GpState> load_state(const StoredController& c, int run);
+  eval::OptimizerState load_state(const StoredController& c, int run);
   void upgrade();   // to kSchemaVersion
   bool column_exists(const std::string& table, const std::string& column);
 

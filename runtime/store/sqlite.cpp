@@ -90,10 +90,14 @@ Statement& Statement::bind(int index, std::string_view text) {
 }
 
 Statement& Statement::bind_blob(int index, std::span<const double> values) {
+  return bind_blob(index, std::span(reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()));
+}
+
+Statement& Statement::bind_blob(int index, std::span<const std::uint8_t> bytes) {
   // A zero-length blob, not NULL, for an empty vector.
-  static constexpr double kEmpty = 0.0;
-  const void* data = values.empty() ? static_cast<const void*>(&kEmpty) : values.data();
-  const int rc = sqlite3_bind_blob64(stmt_, index, data, values.size_bytes(), SQLITE_TRANSIENT);
+  static constexpr std::uint8_t kEmpty = 0;
+  const void* data = bytes.empty() ? static_cast<const void*>(&kEmpty) : bytes.data();
+  const int rc = sqlite3_bind_blob64(stmt_, index, data, bytes.size(), SQLITE_TRANSIENT);
   if (rc != SQLITE_OK) db_->fail(rc, "bind");
   return *this;
 }

@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/evo/gp/gp_optimizer.hpp"
 #include "runtime/store/results_db.hpp"
-#include "runtime/store/row_checksum.hpp"
 
 namespace esc::store {
 
@@ -21,22 +21,14 @@ std::optional<std::uint32_t> whole(double v, double max) {
 
 }  // namespace
 
-void save_state(sql::Database& db, std::int64_t controller_id, int run, const eval::GpState& state) {
-  db.prepare("INSERT OR REPLACE INTO tree_state(controller_id, run, individuals, population) VALUES (?, ?, ?, ?)")
-      .bind(1, controller_id).bind(2, run).bind(3, static_cast<std::int64_t>(state.population.size()))
-      .bind_blob(4, pack_trees(state.population))
-      .run();
-  seal_row(db, "tree_state", db.last_insert_rowid());
-}
-
-std::optional<eval::GpState> load_tree_state(sql::Database& db, std::int64_t controller_id, int run,
+std::optional<eval::OptimizerState> load_tree_state(sql::Database& db, std::int64_t controller_id, int run,
                                              std::string_view damaged) {
   auto st = db.prepare("SELECT individuals, population FROM tree_state WHERE controller_id = ? AND run = ?");
   st.bind(1, controller_id).bind(2, run);
   if (!st.step()) return std::nullopt;
   auto trees = unpack_trees(st.doubles(1), static_cast<std::size_t>(st.int64(0)));
   if (!trees) throw StoreError(fmt::format("{}: the stored population is unreadable", damaged));
-  return eval::GpState{std::move(*trees)};
+  return eval::OptimizerState{"gp", 1, evo::gp::gp_state(*trees)};
 }
 
 std::vector<double> pack_trees(const std::vector<evo::gp::Individual>& population) {

@@ -5,9 +5,7 @@
 // the ES and GP, on another thread count, and after a kill -9 during the extension. Fewer
 // generations than stored is an error that changes nothing. A study is carried on as an
 // experiment is, condition by condition. A run carried on replays as stored.
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -17,40 +15,6 @@
 namespace {
 
 using namespace cli_test;
-
-// The per-generation results of a directory: the export's CSV without the wall times
-// (`seconds`) and the directory's path (the last column); no field here holds a comma.
-std::string results_without_times(const fs::path& dir) {
-  const Outcome o = esc("export " + dir.string() + " --format csv");
-  EXPECT_EQ(o.status, 0) << o.output;
-  std::stringstream in(o.output);
-  std::string out;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::stringstream fields(line);
-    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
-    EXPECT_GE(cells.size(), 13u) << line;
-    if (cells.size() < 13) continue;
-    cells.erase(cells.begin() + 11);   // seconds
-    cells.pop_back();                  // directory
-    for (const std::string& c : cells) out += c + ",";
-    out += "\n";
-  }
-  return out;
-}
-
-// Everything a run directory holds as results: per-generation statistics, usage table,
-// summary.json and every best genome, equal between the two.
-void expect_same_results(const fs::path& a, const fs::path& b, const std::vector<std::string>& controllers, int runs) {
-  EXPECT_EQ(results_without_times(a), results_without_times(b));
-  EXPECT_EQ(esc("export " + a.string() + " --table usage").output, esc("export " + b.string() + " --table usage").output);
-  expect_same_summary(a, b);
-  for (const std::string& c : controllers)
-    for (int r = 1; r <= runs; ++r) {
-      const std::string file = c + "/run-0" + std::to_string(r) + ".best.json";
-      EXPECT_EQ(slurp(a / file), slurp(b / file)) << file;
-    }
-}
 
 TEST(CarryOn, AnEsRunCarriedOnIsTheLongerRun) {
   const fs::path dir = scratch("carry-on-es");

@@ -53,24 +53,25 @@ std::string expect_refused_untouched(const fs::path& dir, const std::string& why
   return o.output;
 }
 
-// Flips one bit, `offset` bytes into the first population blob of `table` (run_state: ES
-// parents, tree_state: GP trees) in a killed run's database; returns which run it belongs to.
-std::string flip_population_bit(const fs::path& killed, const std::string& table, std::size_t offset) {
+// Flips one bit, `offset` bytes into the first optimizer state (ES parents, GP trees) in a
+// killed run's database; returns which run it belongs to.
+std::string flip_population_bit(const fs::path& killed, std::size_t offset) {
   std::string population;
   std::string which;
   {
     // The last connection folds the killed run's log into esc.db (what a copy of the
     // directory would hold after any esc command read it).
     esc::store::sql::Database db(killed / "esc.db", esc::store::sql::Database::Mode::ReadWrite);
-    auto q = db.prepare("SELECT c.name, s.run, s.population FROM " + table +
-                        " s JOIN controllers c ON c.id = s.controller_id ORDER BY s.controller_id, s.run LIMIT 1");
+    auto q = db.prepare("SELECT c.name, s.run, s.state FROM optimizer_state s JOIN controllers c "
+                        "ON c.id = s.controller_id ORDER BY s.controller_id, s.run LIMIT 1");
     EXPECT_TRUE(q.step());
     which = "of run " + std::to_string(q.int64(1) + 1) + " of " + q.text(0);
     population = std::string(q.bytes(2));
   }
   EXPECT_GT(population.size(), offset);
   std::string db = bytes_of(killed / "esc.db");
-  const std::size_t at = db.rfind(population);
+  // The blob's start: a long one continues on overflow pages elsewhere in the file.
+  const std::size_t at = db.rfind(population.substr(0, offset + 16));
   EXPECT_NE(at, std::string::npos);
   if (at == std::string::npos || population.size() <= offset) return which;
   db[at + offset] = static_cast<char>(db[at + offset] ^ 0x10);
@@ -81,11 +82,11 @@ std::string flip_population_bit(const fs::path& killed, const std::string& table
 TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
   const fs::path killed = scratch("integrity-killed");
   ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 20, 400));
-  const std::string which = flip_population_bit(killed, "run_state", 44);   // a gene's mantissa
+  const std::string which = flip_population_bit(killed, 44);   // a gene's mantissa
 
   expect_refused_untouched(killed, "does not match its checksum");
   const Outcome o = cli_test::esc("run --resume " + killed.string());
-  EXPECT_NE(o.output.find("the population to continue from"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("the optimizer's state to continue from"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find(which), std::string::npos) << o.output;
   // Report and export refuse it too.
   EXPECT_EQ(cli_test::esc("export " + killed.string() + " --format csv").status, 1);
@@ -96,9 +97,9 @@ TEST(Integrity, FlippedPopulationBitIsRefusedAndChangesNothing) {
 TEST(Integrity, FlippedTreePopulationBitIsRefused) {
   const fs::path killed = scratch("integrity-killed-gp");
   ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny_gp(), killed, 240, 600));
-  const std::string which = flip_population_bit(killed, "tree_state", 40);
+  const std::string which = flip_population_bit(killed, 40);
   const std::string refused = expect_refused_untouched(killed, "does not match its checksum");
-  EXPECT_NE(refused.find("the population to continue from (GP trees)"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("the optimizer's state to continue from"), std::string::npos) << refused;
   EXPECT_NE(refused.find(which), std::string::npos) << refused;
 }
 

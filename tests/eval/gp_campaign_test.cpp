@@ -67,7 +67,7 @@ TEST(GpCampaign, ContinuingFromAnyGenerationIsBitIdentical) {
     for (const auto& s : snap.states)
       if (!(s.controller == spec.controllers[0].name && s.state.run == 0)) point.in_progress.push_back(s);
     for (const auto& s : point.in_progress)
-      EXPECT_EQ(std::get<GpState>(s.state.algorithm).population.size(), 24u);
+      EXPECT_EQ(s.state.optimizer.algorithm, "gp");
     CampaignListener none;
     expect_same(whole, run_campaign(spec, {2, &point}, none));
   }
@@ -120,8 +120,8 @@ TEST(GpCampaign, TreesBesideNetworksLeaveTheEsRunsUntouched) {
   EXPECT_EQ(mixed.total_generations(), 2 * (6 + 2 + 2));
 }
 
-// What a run continues from is its algorithm's state: ES parents for a network, a GP
-// population for a tree; the other kind is refused, not misread.
+// What a run continues from is its optimizer's state: the ES's for a network, GP's for a
+// tree; the other one's is refused, not misread.
 TEST(GpCampaign, AStateOfTheOtherAlgorithmIsRefused) {
   ExperimentSpec mixed = testing::gp_experiment();
   mixed.controllers.insert(mixed.controllers.begin(), testing::small_experiment().controllers.front());
@@ -129,18 +129,15 @@ TEST(GpCampaign, AStateOfTheOtherAlgorithmIsRefused) {
   for (std::size_t k : {0u, 1u}) {   // the network given trees, the Wheels tree given parents
     RunState st;
     st.generations.push_back({0, 1.0, 0.5, 0.1, 24, 100, 0.0});
-    if (k == 0)
-      st.algorithm = GpState{};
-    else
-      st.algorithm = EsState{};
+    st.optimizer = {k == 0 ? "gp" : "es", 1, {}};
     ResumePoint point;
     point.in_progress.push_back({mixed.controllers[k].name, st});
     try {
       (void)run_campaign(mixed, {1, &point}, quiet);
       ADD_FAILURE() << "resumed " << mixed.controllers[k].name << " from the other algorithm's state";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(k == 0 ? "is a GP population, not ES parents"
-                                                  : "is ES parents, not a GP population"),
+      EXPECT_NE(std::string(e.what()).find(k == 0 ? "was saved by gp (format 1), not by es (format 1)"
+                                                  : "was saved by es (format 1), not by gp (format 1)"),
                 std::string::npos)
           << e.what();
     }

@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "runtime/eval/experiment.hpp"
-#include "runtime/evo/es.hpp"
+#include "runtime/evo/es/es.hpp"
 #include "runtime/evo/gp/gp.hpp"
 #include "runtime/sim/validate.hpp"
 

@@ -3,16 +3,18 @@
 // it; the best replay is the earliest best run whatever the order runs finish in; replays
 // carry the light sensors; an older database reads without usage and is upgraded for writing.
 #include <filesystem>
-#include <variant>
+#include <span>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/sqlite.hpp"
 #include "runtime/store/summary_json.hpp"
 #include "runtime/store/usage_export.hpp"
+#include "tests/store/older_schema.hpp"
 #include "tests/store/scratch.hpp"
 
 namespace esc::store {
@@ -53,7 +55,8 @@ eval::RunState run_state(int run, int generations) {
   s.best_fitness = 1.5 + generations - 1;
   s.best_genome = std::vector<double>(spec(1).controllers[0].genome_size(), 0.5);
   s.best_generation = generations - 1;
-  s.algorithm = eval::EsState{{{s.best_genome, {0.05}, s.best_fitness}}};
+  const evo::Individual parent{s.best_genome, {0.05}, s.best_fitness};
+  s.optimizer = {"es", 1, evo::es_state(std::span(&parent, 1))};
   s.transfer = eval::Transfer{"origin", run, 2.0, false, 1.75};
   return s;
 }
@@ -128,9 +131,7 @@ TEST(AnalysisTables, AFinishedRunIsCarriedOnFromTheStateItKept) {
   EXPECT_EQ(st.generations.size(), 2u);
   EXPECT_EQ(st.best_fitness, 2.5);
   ASSERT_TRUE(st.transfer.has_value());
-  const auto* es = std::get_if<eval::EsState>(&st.algorithm);
-  ASSERT_NE(es, nullptr);
-  EXPECT_EQ(es->parents.at(0).genes, run_state(1, 2).best_genome);
+  EXPECT_EQ(st.optimizer, run_state(1, 2).optimizer);
   // Recorded: the experiment's generations, settings and overrides, running again.
   eval::ExperimentSpec five = spec(5);
   five.resolved_settings = {{"generations", "5"}};
@@ -146,7 +147,7 @@ TEST(AnalysisTables, ARunFinishedWithoutItsStateCannotBeCarriedOn) {
   const fs::path dir = finished_dir("no-state", 2);
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("DELETE FROM run_state WHERE run = 1");
+    raw.exec("DELETE FROM optimizer_state WHERE run = 1");
   }
   ResultsDb db = ResultsDb::open(dir);
   const StoredExperiment s = db.load_single();
@@ -186,6 +187,7 @@ TEST(AnalysisTables, ASchemaThreeDatabaseReadsWithoutUsageAndIsUpgradedForWritin
   const fs::path dir = finished_dir("schema-3", 1);
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    test::keep_state_as_schema5(raw);
     raw.exec("DROP TABLE generation_usage; DROP TABLE choices; DROP TABLE transfers; PRAGMA user_version=3;");
   }
   const StoredExperiment old = ResultsDb::open(dir, true).load_single();
@@ -214,8 +216,7 @@ TEST(AnalysisTables, TheirRowsAndAFinishedRunsKeptStateAreVerified) {
                            "AND choice_idx = 2"},
       {"choices", "UPDATE choices SET useless = 0 WHERE idx = 1"},
       {"transfers", "UPDATE transfers SET origin_fitness = 2.5 WHERE run = 0"},
-      {"run_state", "UPDATE run_state SET parents = parents WHERE run = 1; UPDATE run_state SET sigma_count = 2 "
-                    "WHERE run = 1"},
+      {"optimizer_state", "UPDATE optimizer_state SET format = 2 WHERE run = 1"},
   };
   for (const auto& [table, change] : changes) {
     const fs::path dir = finished_dir("sealed-" + table, 2);
@@ -250,7 +251,9 @@ TEST(AnalysisTables, ASchemaFourDatabaseIsSealedWhenUpgraded) {
   const fs::path dir = finished_dir("schema-4", 2);
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    for (const std::string_view t : sealed_tables()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    test::keep_state_as_schema5(raw);
+    for (const std::string_view t : sealed_tables())
+      if (t != "optimizer_state" && t != "metrics") raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
     raw.exec("ALTER TABLE generations DROP COLUMN saturated; PRAGMA user_version=4;");
   }
   const StoredExperiment old = ResultsDb::open(dir, true).load_single();

@@ -8,12 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <variant>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "runtime/store/es_state.hpp"
+#include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/results_db.hpp"
 #include "tests/store/scratch.hpp"
@@ -46,7 +45,8 @@ eval::RunState state(int run, int generations) {
   const std::size_t n = spec().controllers[0].genome_size();
   std::vector<double> a(n);
   for (std::size_t i = 0; i < n; ++i) a[i] = static_cast<double>(i) / 7.0 - 0.5 + run;
-  s.algorithm = eval::EsState{{{a, {0.05}, 3.25}, {a, {0.01}, -2.5}}};
+  const std::vector<evo::Individual> parents{{a, {0.05}, 3.25}, {a, {0.01}, -2.5}};
+  s.optimizer = {"es", 1, evo::es_state(parents)};
   s.has_best = true;
   s.best_fitness = 9.875 + run;
   s.best_genome = a;
@@ -95,11 +95,7 @@ std::string loaded(const fs::path& dir) {
   for (const StoredExperiment& e : all)
     for (const StoredController& c : e.controllers) {
       for (const eval::RunState& s : c.in_progress)
-        for (const evo::Individual& p : std::get<eval::EsState>(s.algorithm).parents) {
-          bits(out, p.fitness);
-          for (double g : p.genes) bits(out, g);
-          for (double g : p.sigmas) bits(out, g);
-        }
+        out.append(s.optimizer.bytes.begin(), s.optimizer.bytes.end());
       for (const eval::RunResult& r : c.finished)
         for (double g : r.best_genome) bits(out, g);
       if (c.replay) {
@@ -160,7 +156,7 @@ TEST(BitFlip, EveryFlipIsRefusedOrHarmless) {
       {"controllers", "classical"},
       {"runs", std::to_string(0x0123456789abcdefULL + 1)},
       {"generations", third},
-      {"run_state", genes},
+      {"optimizer_state", genes},
   };
   int targeted = 0;
   for (const auto& [table, bytes] : values) {
@@ -207,7 +203,7 @@ TEST(BitFlip, DamagedPopulationNamesTheRun) {
   ASSERT_NE(at, std::string::npos);
   std::string message;
   ASSERT_EQ(flip(dir, at * 8 + 3, reference, &message), Verdict::Refused);
-  EXPECT_NE(message.find("the population to continue from"), std::string::npos) << message;
+  EXPECT_NE(message.find("the optimizer's state to continue from"), std::string::npos) << message;
   EXPECT_NE(message.find("of run 2 of SC"), std::string::npos) << message;
   fs::remove_all(dir);
 }

@@ -2,19 +2,22 @@
 // foreign, damaged and newer databases give clear errors; exports show what is stored.
 #include "runtime/store/results_db.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <variant>
+#include <limits>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/sqlite.hpp"
+#include "tests/store/older_schema.hpp"
 
 namespace esc::store {
 namespace {
@@ -60,7 +63,10 @@ eval::RunState state(int generations) {
     a[i] = static_cast<double>(i) / 7.0 - 0.5;
     b[i] = -1.0 / (1.0 + static_cast<double>(i));
   }
-  s.algorithm = eval::EsState{{{a, {0.05}, 3.25}, {b, {0.01}, -2.5}}};
+  const std::vector<evo::Individual> parents{{a, {0.05}, 3.25}, {b, {0.01}, -2.5}};
+  s.optimizer = {"es", 1, evo::es_state(parents)};
+  s.generations.back().metrics = {{"sigma", 0.125}, {"condition", std::numeric_limits<double>::infinity()},
+                                  {"nothing", std::numeric_limits<double>::quiet_NaN()}};
   s.has_best = true;
   s.best_fitness = 9.875;
   s.best_genome = {0.5, 0.25, -0.125};
@@ -96,16 +102,13 @@ TEST(ResultsDb, GenerationStateRoundTripsBitForBit) {
   ASSERT_EQ(got.generations.size(), 2U);
   EXPECT_EQ(got.generations[1].best, want.generations[1].best);
   EXPECT_EQ(got.generations[1].sd, want.generations[1].sd);
-  const auto* es = std::get_if<eval::EsState>(&got.algorithm);
-  ASSERT_NE(es, nullptr) << "a network run resumes from ES parents";
-  const auto& parents = es->parents;
-  const auto& want_parents = std::get<eval::EsState>(want.algorithm).parents;
-  ASSERT_EQ(parents.size(), 2U);
-  for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(parents[i].genes, want_parents[i].genes);
-    EXPECT_EQ(parents[i].sigmas, want_parents[i].sigmas);
-    EXPECT_EQ(parents[i].fitness, want_parents[i].fitness);
-  }
+  EXPECT_EQ(got.optimizer, want.optimizer) << "the optimizer's state comes back byte for byte";
+  const std::vector<evo::Metric>& m = got.generations[1].metrics;
+  ASSERT_EQ(m.size(), 3U) << "metrics come back in the order written";
+  EXPECT_EQ(m[0], want.generations[1].metrics[0]);
+  EXPECT_EQ(m[1], want.generations[1].metrics[1]);
+  EXPECT_EQ(m[2].name, "nothing");
+  EXPECT_TRUE(std::isnan(m[2].value)) << "NaN, which SQLite keeps as NULL, reads back as NaN";
   EXPECT_EQ(got.best_genome, want.best_genome);
   EXPECT_EQ(got.best_index, 17);
   const eval::ResumePoint p = db.resume_point(s, e);
@@ -118,7 +121,7 @@ TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
   const eval::ExperimentSpec e = spec();
   ResultsDb db = ResultsDb::create(dir, e, {}, {});
   eval::RunResult r{0, 5, {{0, 2.0, 1.0, 0.5, 10, 100, 0.1}}, 2.0, {0.1}, 0, 3, {7, 3}};
-  db.commit_generation("SC", {0, 5, r.generations, true, 2.0, {0.1}, 0, 3, eval::EsState{{{{0.1}, {0.1}, 2.0}}}});
+  db.commit_generation("SC", {0, 5, r.generations, true, 2.0, {0.1}, 0, 3, eval::OptimizerState{"es", 1, {1, 2, 3}}});
   eval::TraceStep t;
   t.epoch = 0;
   t.step = 4;
@@ -204,9 +207,10 @@ TEST(ResultsDb, ClearErrorsForForeignDamagedAndNewerDatabases) {
   EXPECT_THROW((void)ResultsDb::create(newer, spec(), {}, {}), StoreError);   // never overwritten
 }
 
-// A resume state is found in its algorithm's table; a run with none, or with parents of
-// the wrong size, is a damaged database, and the message names the run.
-TEST(ResultsDb, AMissingOrDamagedEsStateNamesTheRun) {
+// A resume state is found in table optimizer_state, or, for a run an esc before schema 6
+// left, in its algorithm's table; a run with none, or with a damaged one, is a damaged
+// database, and the message names the run.
+TEST(ResultsDb, AMissingOrDamagedStateNamesTheRun) {
   const fs::path dir = fresh_dir("damaged-state");
   { ResultsDb::create(dir, spec(), {}, {}).commit_generation("SC", state(1)); }
   const auto error = [&] {
@@ -217,22 +221,29 @@ TEST(ResultsDb, AMissingOrDamagedEsStateNamesTheRun) {
     }
     return std::string("no error");
   };
+  const auto raw = [&](const std::string& sql) {
+    sql::Database db(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    db.exec(sql);
+  };
   EXPECT_EQ(error(), "no error");
+  raw("UPDATE optimizer_state SET state = substr(state, 9)");
+  EXPECT_NE(error().find("the optimizer's state to continue from of run 2 of SC does not match its checksum"),
+            std::string::npos)
+      << error();
+  raw("DELETE FROM optimizer_state");
+  EXPECT_NE(error().find("run 2 of SC is unfinished but has no state to resume from"), std::string::npos) << error();
+  // Parents as schema 5 kept them, one double short (sealed: the size check finds it).
+  const std::vector<evo::Individual> parents{{std::vector<double>(spec().controllers[0].genome_size(), 0.5), {0.1}, 1.0}};
+  std::vector<double> blob = pack_parents(parents);
+  blob.pop_back();
   {
-    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("UPDATE run_state SET population = substr(population, 9)");   // one double short
-  }
-  EXPECT_NE(error().find("of run 2 of SC does not match its checksum"), std::string::npos) << error();
-  {  // The same row with a checksum that matches it: the size check finds it.
-    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    seal_table(raw, "run_state");
+    sql::Database db(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    db.prepare("INSERT INTO run_state(controller_id, run, parents, genome_size, sigma_count, population) "
+               "VALUES (1, 1, 1, ?, 1, ?)")
+        .bind(1, static_cast<std::int64_t>(parents[0].genes.size())).bind_blob(2, blob).run();
+    seal_table(db, "run_state");
   }
   EXPECT_NE(error().find("run 2 of SC: the stored population has the wrong size"), std::string::npos) << error();
-  {
-    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("DELETE FROM run_state");
-  }
-  EXPECT_NE(error().find("run 2 of SC is unfinished but has no state to resume from"), std::string::npos) << error();
 }
 
 TEST(ResultsDb, ASchemaThreeDatabaseIsReadThenSealedWhenWritten) {
@@ -244,7 +255,9 @@ TEST(ResultsDb, ASchemaThreeDatabaseIsReadThenSealedWhenWritten) {
   }
   {  // What esc wrote before checksums.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    for (const std::string_view t : sealed_tables()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    test::keep_state_as_schema5(raw);
+    for (const std::string_view t : sealed_tables())
+      if (t != "optimizer_state" && t != "metrics") raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
     raw.exec("ALTER TABLE generations DROP COLUMN saturated; DROP TABLE generation_usage; DROP TABLE choices; "
              "DROP TABLE transfers; PRAGMA user_version=3;");
   }
@@ -264,7 +277,7 @@ TEST(ResultsDb, ASchemaThreeDatabaseIsReadThenSealedWhenWritten) {
 }
 
 TEST(EsState, DamagedBlobsAreRefused) {
-  const std::vector<evo::Individual> parents = std::get<eval::EsState>(state(1).algorithm).parents;
+  const std::vector<evo::Individual> parents{{{0.5, -0.25, 1.0 / 3.0}, {0.05}, 3.25}, {{0.1, 0.2, 0.3}, {0.01}, -2.5}};
   const std::size_t genes = parents[0].genes.size();
   const std::vector<double> blob = pack_parents(parents);
   const auto back = unpack_parents(blob, 2, genes, 1);

@@ -8,6 +8,7 @@
 #include "runtime/store/sqlite.hpp"
 #include "runtime/store/study_directory.hpp"
 #include "tests/eval/test_experiment.hpp"
+#include "tests/store/older_schema.hpp"
 #include "tests/store/scratch.hpp"
 
 namespace esc::store {
@@ -90,6 +91,7 @@ TEST(StudyStore, ASchemaTwoDatabaseIsReadAndUpgradedWhenWritten) {
   { (void)ResultsDb::create(dir, e, {}, {}); }
   {  // What esc wrote before studies.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    test::keep_state_as_schema5(raw);
     raw.exec("DROP TABLE generation_usage; DROP TABLE choices; DROP TABLE transfers; "
              "DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; PRAGMA user_version=2;");
   }

@@ -8,12 +8,15 @@
 #include <gtest/gtest.h>
 
 #include "runtime/evo/gp/codec.hpp"
+#include "runtime/evo/gp/gp_optimizer.hpp"
 #include "runtime/evo/gp/print.hpp"
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/sqlite.hpp"
 #include "runtime/store/tree_state.hpp"
 #include "tests/eval/gp_experiment.hpp"
+#include "tests/store/older_schema.hpp"
 #include "tests/store/scratch.hpp"
 
 namespace esc::store {
@@ -39,39 +42,44 @@ std::vector<evo::gp::Individual> population(const eval::ExperimentSpec& e) {
   return pop;
 }
 
+// What GP saves comes back byte for byte; a population that results schema 5 kept in table
+// tree_state comes back as GP would have saved it.
 TEST(TreeState, AGpPopulationRoundTripsBitForBit) {
-  const fs::path dir = fresh_dir("population");
   const eval::ExperimentSpec e = testing::gp_experiment();
   eval::RunState st;
   st.run = 1;
   st.seed = 0xfedcba9876543210ULL;
   st.generations.push_back({0, 2.5, 1.0 / 3.0, 0.5, 24, 999, 0.1});
   const std::vector<evo::gp::Individual> pop = population(e);
-  st.algorithm = eval::GpState{pop};
+  st.optimizer = {"gp", 1, evo::gp::gp_state(pop)};
   st.has_best = true;
   st.best_fitness = 2.5;
   st.best_genome = evo::gp::encode(pop[3].tree);
-  {
-    ResultsDb db = ResultsDb::create(dir, e, {}, {});
-    db.commit_generation("GW", st);
+  for (const bool legacy : {false, true}) {
+    const fs::path dir = fresh_dir(legacy ? "population-schema5" : "population");
+    {
+      ResultsDb db = ResultsDb::create(dir, e, {}, {});
+      db.commit_generation("GW", st);
+    }
+    if (legacy) {
+      sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+      raw.exec("DELETE FROM optimizer_state");
+      raw.prepare("INSERT INTO tree_state(controller_id, run, individuals, population) VALUES (1, 1, ?, ?)")
+          .bind(1, static_cast<std::int64_t>(pop.size())).bind_blob(2, pack_trees(pop)).run();
+      seal_table(raw, "tree_state");
+    }
+    ResultsDb db = ResultsDb::open(dir);
+    const StoredExperiment s = db.load_single();
+    EXPECT_EQ(s.generations, 6);
+    const StoredController& c = s.controllers.at(0);
+    EXPECT_EQ(c.head, "tree");
+    EXPECT_EQ(c.architecture, "tree wheels");
+    EXPECT_EQ(c.genome_size, 40u);   // max_size
+    ASSERT_EQ(c.in_progress.size(), 1u);
+    const eval::RunState& got = c.in_progress[0];
+    EXPECT_EQ(got.optimizer, st.optimizer) << (legacy ? "schema 5" : "schema 6");
+    EXPECT_EQ(got.best_genome, st.best_genome);
   }
-  ResultsDb db = ResultsDb::open(dir);
-  const StoredExperiment s = db.load_single();
-  EXPECT_EQ(s.generations, 6);
-  const StoredController& c = s.controllers.at(0);
-  EXPECT_EQ(c.head, "tree");
-  EXPECT_EQ(c.architecture, "tree wheels");
-  EXPECT_EQ(c.genome_size, 40u);   // max_size
-  ASSERT_EQ(c.in_progress.size(), 1u);
-  const eval::RunState& got = c.in_progress[0];
-  const auto* trees = std::get_if<eval::GpState>(&got.algorithm);
-  ASSERT_NE(trees, nullptr) << "a tree run resumes from a GP population";
-  ASSERT_EQ(trees->population.size(), pop.size());
-  for (std::size_t i = 0; i < pop.size(); ++i) {
-    EXPECT_EQ(trees->population[i].tree, pop[i].tree) << i;
-    EXPECT_EQ(trees->population[i].fitness, pop[i].fitness) << i;
-  }
-  EXPECT_EQ(got.best_genome, st.best_genome);
 }
 
 TEST(TreeState, AFinishedRunKeepsItsBestTreeAndDropsItsState) {
@@ -81,7 +89,7 @@ TEST(TreeState, AFinishedRunKeepsItsBestTreeAndDropsItsState) {
   const evo::gp::PrimitiveSet& set = *e.controllers[0].primitives;
   eval::RunState st;
   st.generations.push_back({0, 2.5, 1.0, 0.5, 24, 999, 0.1});
-  st.algorithm = eval::GpState{pop};
+  st.optimizer = {"gp", 1, evo::gp::gp_state(pop)};
   eval::RunResult r;
   r.generations = st.generations;
   r.best_fitness = 2.5;
@@ -126,6 +134,7 @@ TEST(TreeState, ASchemaOneDatabaseIsReadAndUpgradedWhenWritten) {
   }
   {  // What esc wrote before GP.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    test::keep_state_as_schema5(raw);
     raw.exec("DROP TABLE generation_usage; DROP TABLE choices; DROP TABLE transfers; "
              "DROP TABLE condition_settings; DROP TABLE conditions; DROP TABLE studies; "
              "ALTER TABLE runs DROP COLUMN best_behavior; DROP TABLE tree_state; PRAGMA user_version=1;");

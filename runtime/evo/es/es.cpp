@@ -1,4 +1,4 @@
-#include "runtime/evo/es.hpp"
+#include "runtime/evo/es/es.hpp"
 
 #include <algorithm>
 #include <cmath>

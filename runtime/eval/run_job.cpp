@@ -1,0 +1,123 @@
+// A run of one controller by its optimizer: the one loop every algorithm runs in. What it
+// adds to ask/tell is what every run needs: the run's best and where it happened, the
+// optimizer's state after each generation (what the store keeps to resume and carry on),
+// a stored genome to start from or only evaluate, and the trees' texts at the end.
+#include <stdexcept>
+#include <string>
+
+#include "runtime/eval/campaign_parts.hpp"
+#include "runtime/evo/evaluate_only.hpp"
+#include "runtime/evo/gp/codec.hpp"
+#include "runtime/evo/gp/print.hpp"
+#include "runtime/tree_control/inline_actions.hpp"
+
+namespace esc::eval::detail {
+
+namespace {
+
+// The tree as the body of a behavior that computes the same wheel commands, or "" when
+// there is none (a Behavior tree; actions reading an arena's zones or lights).
+std::string behavior_body(const control::ControllerSpec& controller, const evo::gp::Tree& tree) {
+  const evo::gp::PrimitiveSet& set = *controller.primitives;
+  if (set.root() == evo::gp::Type::Wheels) return evo::gp::to_script(tree, set);
+  if (set.root() != evo::gp::Type::Action) return {};
+  try {
+    const tree_control::InlinedTree inlined = tree_control::inline_actions(tree, set, controller.actions);
+    return evo::gp::to_script(inlined.tree, inlined.set);
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+}
+
+std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "tree" : "network"; }
+
+// The optimizer of `controller`'s run, and the name and format its state is stored under.
+struct Made {
+  std::unique_ptr<evo::Optimizer> optimizer;
+  OptimizerState empty_state;
+};
+
+Made make_optimizer(const ExperimentSpec& spec, const control::ControllerSpec& controller, const evo::Problem& problem) {
+  if (spec.evaluates_only()) return {evo::make_evaluate_only(problem), {std::string(evo::kEvaluateOnly), 1, {}}};
+  const Evolution evolution = spec.evolution_of(controller);
+  if (controller.is_tree() && !evolution.settings.has_value())
+    throw std::invalid_argument("tree controller '" + controller.name + "' is compared, but experiment '" +
+                                spec.name + "' has no GP settings");
+  const evo::Algorithm& a = *evolution.algorithm;
+  return {a.make(evolution.settings, problem), {std::string(a.name), a.state_format, {}}};
+}
+
+}  // namespace
+
+RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
+    : controller_(&controller),
+      generations_(spec.generations_for(controller)),
+      evaluations_(spec.evaluations_per_generation(controller)) {
+  const StartFrom::Origin* start = start_of(spec, controller, run);
+  state_ = from != nullptr ? *from : fresh_run(spec, run, start);
+  const evo::Problem problem{controller.is_tree() ? 0 : controller.genome_size(), controller.primitives.get(),
+                             state_.seed, start != nullptr ? &start->genome : nullptr};
+  Made made = make_optimizer(spec, controller, problem);
+  optimizer_ = std::move(made.optimizer);
+  if (from == nullptr || from->generations.empty()) {
+    state_.optimizer = std::move(made.empty_state);
+    state_.optimizer.bytes = optimizer_->save();
+    return;
+  }
+  const OptimizerState& stored = from->optimizer;
+  if (stored.algorithm != made.empty_state.algorithm || stored.format != made.empty_state.format)
+    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name +
+                                "': the state to resume from was saved by " + stored.algorithm + " (format " +
+                                std::to_string(stored.format) + "), not by " + made.empty_state.algorithm +
+                                " (format " + std::to_string(made.empty_state.format) + ")");
+  try {
+    optimizer_->load(stored.bytes);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name +
+                                "': the state to resume from is not one its optimizer could have saved: " + e.what());
+  }
+}
+
+bool RunJob::finished() const { return generation() >= generations_ || !optimizer_->stopped().empty(); }
+
+std::size_t RunJob::breed() {
+  candidates_ = optimizer_->ask(generation());
+  return candidates_.size();
+}
+
+Evaluation RunJob::evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const {
+  return e.evaluate(*controller_, candidates_[i], seed);
+}
+
+void RunJob::evaluated(std::span<const double> fitness, const GenerationStats& stats) {
+  std::vector<evo::Outcome> outcomes(fitness.size());
+  for (std::size_t i = 0; i < fitness.size(); ++i) outcomes[i].objectives = {fitness[i]};
+  optimizer_->tell(outcomes);
+  GenerationStats& g = state_.generations.emplace_back(stats);
+  g.metrics = optimizer_->metrics();
+  // Candidate 0 of generation 0 is the stored genome unchanged.
+  if (state_.transfer && stats.generation == 0 && !fitness.empty()) state_.transfer->fitness_here = fitness.front();
+  if (const auto best = improve_best(state_, stats.generation, fitness)) state_.best_genome = candidates_[*best];
+  state_.optimizer.bytes = optimizer_->save();
+  candidates_.clear();
+}
+
+RunResult RunJob::close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
+                        CampaignListener& listener) {
+  const bool has_best = state_.has_best;
+  RunResult result = close_run(std::move(state_));
+  if (!has_best) return result;
+  const control::ControllerSpec& controller = *controller_;
+  if (controller.is_tree()) {
+    const evo::gp::Tree best = evo::gp::decode(result.best_genome, *controller.primitives);
+    result.best_tree = evo::gp::to_script(best, *controller.primitives);
+    result.best_behavior = behavior_body(controller, best);
+  }
+  replay_best(spec, controller, result, options, ev, listener,
+              [&](Evaluator& e, std::uint64_t seed, TraceSink* sink) {
+                return e.evaluate(controller, result.best_genome, seed, sink);
+              });
+  return result;
+}
+
+}  // namespace esc::eval::detail

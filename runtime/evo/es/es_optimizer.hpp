@@ -1,0 +1,21 @@
+#pragma once
+// The paper's evolution strategy (es.hpp) as an Optimizer: generation 0 is bred from the
+// initial parents (drawn from Rng(seed, Init), or mu copies of the start genome), every
+// generation g from Rng(seed, Breed, g); tell() selects the next parents. Its state is the
+// parents, genes, step sizes and fitness.
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "runtime/evo/es/es.hpp"
+#include "runtime/evo/optimizer.hpp"
+
+namespace esc::evo {
+
+[[nodiscard]] std::unique_ptr<Optimizer> make_es(const EsSettings& settings, const Problem& problem);
+
+// The ES's saved state for `parents`: what a store that kept the parents in a table of its
+// own (results schema 5 and older) hands a resumed run.
+[[nodiscard]] StateBytes es_state(std::span<const Individual> parents);
+
+}  // namespace esc::evo

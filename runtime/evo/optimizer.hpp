@@ -1,0 +1,84 @@
+#pragma once
+// An optimizer: what evolves the genomes of one run, whatever the algorithm (the paper's
+// ES, GP, CMA-ES, ...), behind one ask/tell interface (as pycma's, or pagmo2's algorithm
+// against its problem). The run loop (runtime/eval/optimizer_run.cpp) asks for a
+// generation's candidates, evaluates them anywhere (threads, MPI ranks, pooled with other
+// runs), tells the optimizer what each measured, and stores its whole state after every
+// generation, so that any optimizer is resumable after a kill and carried on to more
+// generations without knowing how.
+//
+// Reproducibility is the optimizer's contract: every number it draws comes from a stream
+// derived from the run's seed and the generation (Rng(seed, Stream::Init) for what it
+// starts from, Rng(seed, Stream::Breed, g) for generation g's candidates), never from a
+// stream that lives across generations. A state saved after generation g and loaded into a
+// fresh optimizer of the same algorithm, settings and problem then asks for generation g + 1
+// exactly what the uninterrupted one would.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/evo/state_bytes.hpp"
+
+namespace esc::evo {
+
+namespace gp {
+class PrimitiveSet;
+}
+
+// A candidate as the run loop, the store and the evaluator see it: a network's weights, or
+// a tree encoded (gp/codec.hpp). One form for both keeps the loop representation-blind.
+using Genome = std::vector<double>;
+
+// What evaluating one candidate measured. Objectives are maximised; one today (the fitness).
+// Descriptors characterise the behavior (for diversity-seeking algorithms); empty when the
+// experiment declares none.
+struct Outcome {
+  std::vector<double> objectives;
+  std::vector<double> descriptors;
+};
+
+// A number an optimizer reports about its own state after a generation (CMA-ES's step size,
+// ...), stored per generation beside the fitness statistics the run loop computes.
+struct Metric {
+  std::string name;
+  double value = 0.0;
+  friend bool operator==(const Metric&, const Metric&) = default;
+};
+
+// What one run evolves: genomes of `genome_size` weights (a network) or trees over
+// `primitives` (null for a network), from the run's `seed`; `start` is the genome a run
+// that starts from a stored controller (`start from`) begins with, or null.
+struct Problem {
+  std::size_t genome_size = 0;
+  const gp::PrimitiveSet* primitives = nullptr;
+  std::uint64_t seed = 0;
+  const Genome* start = nullptr;
+};
+
+class Optimizer {
+ public:
+  virtual ~Optimizer() = default;
+
+  // The candidates of generation `generation` (0 first, each asked once, in order). A run
+  // that starts from a stored genome has it unchanged as candidate 0 of generation 0, so
+  // that generation measures it in the new setting.
+  [[nodiscard]] virtual std::vector<Genome> ask(int generation) = 0;
+  // What the candidates of the last ask measured, in their order.
+  virtual void tell(std::span<const Outcome> outcomes) = 0;
+  // The optimizer's own numbers after the last tell; none by default.
+  [[nodiscard]] virtual std::vector<Metric> metrics() const { return {}; }
+  // Why the search ended before its last generation ("" while it goes on): a run whose
+  // optimizer has stopped ends there.
+  [[nodiscard]] virtual std::string stopped() const { return {}; }
+
+  // The whole state after the last tell (or as started), and back. load throws
+  // std::invalid_argument when the bytes are not a state this optimizer could have written
+  // (another size, another format, a tree outside its primitive set).
+  [[nodiscard]] virtual StateBytes save() const = 0;
+  virtual void load(std::span<const std::uint8_t> state) = 0;
+};
+
+}  // namespace esc::evo

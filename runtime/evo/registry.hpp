@@ -1,0 +1,35 @@
+#pragma once
+// Every optimizer a script can name, in one table: its name, what it evolves, how to make
+// one, and the version of the state it saves. Adding an algorithm is a folder of its own
+// under runtime/evo/ and a row in registry.cpp (docs/optimizers.md).
+#include <any>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/evo/optimizer.hpp"
+
+namespace esc::evo {
+
+struct Algorithm {
+  std::string_view name;          // as scripts and stored states name it
+  // The layout of save()'s bytes: a stored state of another format is refused, not misread.
+  std::uint32_t state_format = 1;
+  bool networks = false;          // evolves a network's weights
+  bool trees = false;             // evolves trees over a primitive set
+  // A fresh optimizer for one run; `settings` holds the algorithm's own settings type (as
+  // the compiler made it). Throws std::invalid_argument on impossible settings.
+  std::unique_ptr<Optimizer> (*make)(const std::any& settings, const Problem& problem) = nullptr;
+};
+
+[[nodiscard]] const std::vector<Algorithm>& algorithms();
+// The algorithm called `name`, or null.
+[[nodiscard]] const Algorithm* find_algorithm(std::string_view name) noexcept;
+
+// The state a run evaluating a stored genome keeps (none), named so that the store tells it
+// from an algorithm's.
+inline constexpr std::string_view kEvaluateOnly = "evaluate";
+
+}  // namespace esc::evo

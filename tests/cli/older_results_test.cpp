@@ -1,0 +1,59 @@
+// Results written by the esc before optimizers became components (results schema 5: the ES's
+// parents and GP's trees each in a table of their own), kept as tests/store/data/schema5:
+// they still export as they did, report, and carry on to the run the current esc makes
+// from the start (README there says how the directory was made).
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
+
+namespace {
+
+using namespace cli_test;
+
+const fs::path kData = fs::path(ESC_SOURCE_DIR) / "tests" / "store" / "data";
+
+// The fixture, copied: a test never writes into the source tree.
+fs::path copy_of_schema5(const std::string& name) {
+  const fs::path dir = scratch(name);
+  fs::copy(kData / "schema5", dir, fs::copy_options::recursive);
+  return dir;
+}
+
+// CSV lines without their last field (the directory, which depends on where it was read).
+std::string without_directory(const std::string& csv) {
+  std::stringstream in(csv);
+  std::string out;
+  for (std::string line; std::getline(in, line);) out += line.substr(0, line.rfind(',')) + "\n";
+  return out;
+}
+
+TEST(OlderResults, ASchema5DirectoryExportsAsItDidAndReports) {
+  const fs::path dir = copy_of_schema5("schema5-read");
+  const Outcome exported = esc("export " + dir.string() + " --format csv");
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  EXPECT_EQ(without_directory(exported.output), without_directory(slurp(kData / "schema5-export.csv")));
+  const Outcome report = esc("report " + dir.string() + " --out " + (dir / "report" / "report.html").string());
+  EXPECT_EQ(report.status, 0) << report.output;
+  EXPECT_TRUE(fs::exists(dir / "report" / "report.html"));
+}
+
+// Its ES and GP runs resume from the states schema 5 kept, and end as a fresh run asked for
+// the longer run.
+TEST(OlderResults, ASchema5DirectoryCarriesOnToTheFreshLongerRun) {
+  const fs::path dir = copy_of_schema5("schema5-carry");
+  const Outcome on = esc("run --resume " + dir.string() + " --generations 4");
+  ASSERT_EQ(on.status, 0) << on.output;
+  const fs::path fresh = scratch("schema5-fresh");
+  const Outcome four = esc("run " + std::string(ESC_SOURCE_DIR) +
+                           "/experiments/gp/nn_vs_gp.esc --runs 2 --generations 4 --set epochs=2 --set steps=150 "
+                           "--set mu=4 --set lambda=12 --set gp.population=12 --seed 5 --out " + fresh.string());
+  ASSERT_EQ(four.status, 0) << four.output;
+  expect_same_results(dir, fresh, {"SC_8_14_6", "GP_SC"}, 2);
+}
+
+}  // namespace
