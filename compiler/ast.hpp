@@ -224,6 +224,8 @@ struct ExpItem {
   // Compare: the name each controller of `refs` is compared under (`CS8 as CS`: `CS`);
   // empty text when it keeps its own.
   std::vector<Name> aliases;
+  // Compare: the algorithm `by` names for controller `refs[i]`; empty text when none.
+  std::vector<Name> algorithms;
   std::vector<Setting> settings;    // robot { ... } overrides
   std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed
   std::vector<EsOption> options;    // evolve es(...)

@@ -25,30 +25,6 @@ std::string choice(const EsOption& o, const S& s) {
   return o.words[static_cast<std::size_t>(s.*Field)];
 }
 
-bool read_bounds(const EsOption& o, S& s, const ast::Value& v, Sink& sink) {
-  const auto r = read_range(v, o.key, "[-1, 1]", sink);
-  if (!r) return false;
-  if (std::abs(r->first) > evo::kMaxGeneBound || std::abs(r->second) > evo::kMaxGeneBound) {
-    sink.error(v.where, fmt::format("bounds must lie within [-{0}, {0}], found [{1}, {2}]", number_text(evo::kMaxGeneBound),
-                                    number_text(r->first), number_text(r->second)))
-        .help.push_back("beyond that the ES's steps and the networks' sums lose their precision and can overflow; "
-                        "scale the inputs instead");
-    return false;
-  }
-  if (!(r->first < r->second)) {
-    sink.error(v.where, fmt::format("empty bounds: the lower bound ({}) must be below the upper ({})",
-                                    number_text(r->first), number_text(r->second)));
-    return false;
-  }
-  s.lower = r->first;
-  s.upper = r->second;
-  return true;
-}
-
-std::string bounds(const EsOption&, const S& s) {
-  return fmt::format("[{}, {}]", number_text(s.lower), number_text(s.upper));
-}
-
 }  // namespace
 
 const std::vector<EsOption>& es_options() {
@@ -74,7 +50,7 @@ const std::vector<EsOption>& es_options() {
        &read_choice<StepSizes, &S::step_sizes>,
        &choice<StepSizes, &S::step_sizes>,
        {"one_sigma", "self_adaptive"}},
-      {"bounds", Shape::Range, "genes stay in [LO, HI] (LO < HI, both within +-1e6)", &read_bounds, &bounds},
+      {"bounds", Shape::Range, "genes stay in [LO, HI] (LO < HI, both within +-1e6)", &read_gene_bounds<S>, &gene_bounds_text<S>},
       {"sigma", Shape::Value, "initial step size, a fraction of HI - LO (> 0, at most 1000)",
        &read_real<S, &S::initial_sigma, RealRange::Positive, &evo::kMaxStepSize>, &real_text<S, &S::initial_sigma>},
       {"min_sigma", Shape::Value, "floor of the step sizes (>= 0, at most HI - LO)",

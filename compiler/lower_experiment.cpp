@@ -10,6 +10,7 @@
 #include "compiler/es_options.hpp"
 #include "compiler/experiment_settings.hpp"
 #include "compiler/gp_settings.hpp"
+#include "compiler/lower_evolution.hpp"
 #include "compiler/names.hpp"
 #include "compiler/setting_keys.hpp"
 #include "compiler/setting_values.hpp"
@@ -70,7 +71,8 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   std::vector<const ast::ControllerDecl*> controller_decls;
   std::vector<const ast::Name*> compared;   // the names in `compare`, one per controller
   const ast::ExperimentDecl* start_decl = nullptr;
-  const ast::ExpItem* gp_item = nullptr;
+  std::vector<const ast::Name*> by;         // `by` of each controller, empty text when none
+  EvolveItems evolve;
   bool epochs_gave_steps = false;
   // `epochs`, `steps`, `runs`, `seed`: each number read by its row of the table.
   const auto setting = [&](std::string_view key, const ast::Quantity& q) {
@@ -79,14 +81,19 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   };
 
   for (const ast::ExpItem& item : d.items) {
-    // `evolve gp(...)` evolves the trees, beside an `evolve es(...)` for the networks.
+    // `evolve gp(...)` evolves the trees, beside an `evolve es(...)` for the networks, and
+    // any other algorithm beside them.
+    if (is_further_evolve(item)) {
+      lower_further_evolve(item, x, evolve, sink_);
+      continue;
+    }
     if (is_gp(item)) {
-      if (gp_item != nullptr) {
+      if (evolve.gp != nullptr) {
         sink_.error(item.where, "`evolve gp` is already given in this experiment")
-            .notes.emplace_back(gp_item->where, "first given here");
+            .notes.emplace_back(evolve.gp->where, "first given here");
         continue;
       }
-      gp_item = &item;
+      evolve.gp = &item;
       lower_gp_item(item, x, sink_);
       continue;
     }
@@ -144,11 +151,13 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
         const ast::Name& method = item.refs[0];
         if (method.text != "es") {
           Diagnostic& diag = sink_.error(method.where, fmt::format("unknown evolution method `{}`", method.text));
-          suggest(diag, method.text, {"es", "gp"});
+          suggest(diag, method.text, algorithm_names());
           diag.help.push_back("write `evolve es(mu 30, lambda 150, comma) for 250 generations` (networks)");
           diag.help.push_back("or `evolve gp(population 150, tournament 7) for 50 generations` (tree controllers)");
+          diag.help.push_back(fmt::format("algorithms: {}", quoted_list(algorithm_names())));
           break;
         }
+        evolve.es = &item;
         lower_es_item(item, x.es, sink_);
         break;
       }
@@ -183,6 +192,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
           x.controllers.back().name = as.text;   // `CS8 as CS`: stored and reported as CS
           controller_decls.push_back(cd);
           compared.push_back(&as);
+          by.push_back(&item.algorithms[i]);
         }
         break;
       }
@@ -197,10 +207,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   require(K::Arena, "arena", "arena <name>");
   require(K::Fitness, "fitness", "fitness <name>");
   require(K::Compare, "controllers to compare", "compare <controller>, <controller>");
-  if (ok && sink_.errors() == errors) {
-    const auto es_item = first.find(K::Evolve);
-    check_algorithms(d, x, compared, es_item == first.end() ? nullptr : es_item->second, gp_item);
-  }
+  if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);
 
   // `in(zone)` and `reached(light)` resolve in this experiment's arena, `using(B)` & co.
   // among its controllers' choices.
@@ -219,7 +226,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);
   }
-  if (start_decl != nullptr) check_start_from(*start_decl, first, gp_item);
+  if (start_decl != nullptr) check_start_from(*start_decl, first, evolve);
   if (!ok || sink_.errors() != errors) return slot;
 
   add_dependencies(x, controller_decls);
@@ -272,29 +279,13 @@ void ExperimentLowering::add_dependencies(eval::ExperimentSpec& x,
   }
 }
 
-void ExperimentLowering::check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,
-                                          const std::vector<const ast::Name*>& compared, const ast::ExpItem* es_item,
-                                          const ast::ExpItem* gp_item) {
-  for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i) {
-    const control::ControllerSpec& c = x.controllers[i];
-    if (c.is_tree() && gp_item == nullptr && !x.evaluates_only()) {
-      sink_.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
-                                                  "`evolve gp(...)` to evolve it", c.name, d.name.text))
-          .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
-    } else if (!c.is_tree() && gp_item != nullptr && es_item == nullptr) {
-      sink_.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
-                                                  "(`evolve gp`)", c.name, d.name.text))
-          .help.push_back("networks are evolved by the ES: add `evolve es(mu 30, lambda 150) for 250 generations`");
-    }
-  }
-  if (gp_item != nullptr)
-    if (std::string m = check_gp(x); !m.empty()) sink_.error(gp_item->where, m);
-}
-
 void ExperimentLowering::check_start_from(const ast::ExperimentDecl& from, const Items& first,
-                                          const ast::ExpItem* gp_item) {
+                                          const EvolveItems& evolves) {
   const ast::ExpItem& item = *first.at(K::StartFrom);
-  const ast::ExpItem* evolve = first.count(K::Evolve) != 0 ? first.at(K::Evolve) : gp_item;
+  const ast::ExpItem* evolve = evolves.es != nullptr   ? evolves.es
+                               : evolves.gp != nullptr ? evolves.gp
+                               : evolves.further.empty() ? nullptr
+                                                         : evolves.further.at(evolves.further_order.front());
   if (item.evaluate_only && evolve != nullptr) {
     Diagnostic& diag =
         sink_.error(evolve->where, "an experiment that evaluates stored controllers evolves nothing");

@@ -1,6 +1,6 @@
 #pragma once
 // Lowers `experiment` declarations to eval::ExperimentSpec: every item (arena, robot and its
-// inline settings, fitness, epochs, steps, runs, seed, `evolve es/gp`, `compare`,
+// inline settings, fitness, epochs, steps, runs, seed, `evolve`, `compare`,
 // `start/evaluate from`), the checks that involve several declarations (the robot in the
 // arena, which algorithm evolves which controller, stored controllers to start from), the
 // dependencies on other experiments' evolved controllers and their cycles.
@@ -12,6 +12,7 @@
 #include "compiler/lower_arena.hpp"
 #include "compiler/lower_behavior.hpp"
 #include "compiler/lower_controller.hpp"
+#include "compiler/lower_evolution.hpp"
 #include "compiler/lower_fitness.hpp"
 #include "compiler/lower_robot.hpp"
 #include "compiler/resolver.hpp"
@@ -42,16 +43,11 @@ class ExperimentLowering {
  private:
   using Items = std::map<ast::ExpItem::Kind, const ast::ExpItem*>;
   // `start from` / `evaluate from experiment E`: E compares every controller compared
-  // here, and an evaluation evolves nothing, by the ES or GP (reported).
-  void check_start_from(const ast::ExperimentDecl& from, const Items& first, const ast::ExpItem* gp_item);
+  // here, and an evaluation evolves nothing, by any algorithm (reported).
+  void check_start_from(const ast::ExperimentDecl& from, const Items& first, const EvolveItems& evolves);
   // Gives each distinct action or behavior of the compared controllers an experiment-wide id
   // (control::Choice::id; x.choice_ids of them) and returns the names that read them.
   static ChoiceNames number_choices(eval::ExperimentSpec& x);
-  // Every compared controller has its algorithm (`es` for networks, `gp` for trees), and
-  // the GP settings suit every tree's primitives (reported at `compared` / `gp_item`).
-  void check_algorithms(const ast::ExperimentDecl& d, const eval::ExperimentSpec& x,
-                        const std::vector<const ast::Name*>& compared, const ast::ExpItem* es_item,
-                        const ast::ExpItem* gp_item);
   // The evolved controllers the compared controllers supervise: which experiment's
   // controller fills which supervised behavior.
   void add_dependencies(eval::ExperimentSpec& x, const std::vector<const ast::ControllerDecl*>& compared);

@@ -3,6 +3,7 @@
 // `evolve gp(...)`: one row per option (its key in scripts, `--set` and resolved settings,
 // how it is written, how its value is read and checked, its text), the lookups, and the
 // reading of a script's option list, shared by the ES and the GP.
+#include <cmath>
 #include <limits>
 #include <map>
 #include <string>
@@ -16,6 +17,7 @@
 #include "compiler/quantities.hpp"
 #include "compiler/setting_values.hpp"
 #include "compiler/sink.hpp"
+#include "runtime/evo/limits.hpp"
 
 namespace esc::compiler {
 
@@ -80,6 +82,33 @@ bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, S
 template <class Settings, double Settings::*Field>
 std::string real_text(const OptionRow<Settings>&, const Settings& s) {
   return number_text(s.*Field);
+}
+
+// `bounds [LO, HI]` of the genes (a network's weights), within +-evo::kMaxGeneBound, into
+// the `lower` and `upper` fields; its text.
+template <class Settings>
+bool read_gene_bounds(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
+  const auto r = read_range(v, o.key, "[-1, 1]", sink);
+  if (!r) return false;
+  if (std::abs(r->first) > evo::kMaxGeneBound || std::abs(r->second) > evo::kMaxGeneBound) {
+    sink.error(v.where, fmt::format("bounds must lie within [-{0}, {0}], found [{1}, {2}]", number_text(evo::kMaxGeneBound),
+                                    number_text(r->first), number_text(r->second)))
+        .help.push_back("beyond that the steps and the networks' sums lose their precision and can overflow; "
+                        "scale the inputs instead");
+    return false;
+  }
+  if (!(r->first < r->second)) {
+    sink.error(v.where, fmt::format("empty bounds: the lower bound ({}) must be below the upper ({})",
+                                    number_text(r->first), number_text(r->second)));
+    return false;
+  }
+  s.lower = r->first;
+  s.upper = r->second;
+  return true;
+}
+template <class Settings>
+std::string gene_bounds_text(const OptionRow<Settings>&, const Settings& s) {
+  return fmt::format("[{}, {}]", number_text(s.lower), number_text(s.upper));
 }
 
 // The row an option written `word` sets: its key, or one of a choice's words.

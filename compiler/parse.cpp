@@ -584,6 +584,7 @@ class Builder {
           if (cc == nullptr) continue;
           item.refs.push_back(name(cc->ctl));
           item.aliases.push_back(cc->alias != nullptr ? name(cc->alias) : ast::Name{});
+          item.algorithms.push_back(cc->algo != nullptr ? name(cc->algo) : ast::Name{});
         }
       } else {
         continue;

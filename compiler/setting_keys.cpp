@@ -4,11 +4,13 @@
 
 #include <fmt/format.h>
 
+#include "compiler/algorithm_options.hpp"
 #include "compiler/arena_settings.hpp"
 #include "compiler/compiler.hpp"
 #include "compiler/es_options.hpp"
 #include "compiler/experiment_settings.hpp"
 #include "compiler/gp_settings.hpp"
+#include "compiler/lower_evolution.hpp"
 #include "compiler/names.hpp"
 #include "compiler/robot_settings.hpp"
 #include "compiler/rule_messages.hpp"
@@ -63,6 +65,19 @@ std::optional<std::string_view> in_group(std::string_view key, std::string_view 
   return key.substr(group.size());
 }
 
+// `cmaes.`: the prefix of an algorithm's `--set` keys.
+std::string group_of(const AlgorithmOptions& a) { return std::string(a.name) + "."; }
+
+// Whether algorithm `name` evolves one of the experiment's controllers.
+bool in_use(const eval::ExperimentSpec& spec, std::string_view name) {
+  if (spec.evaluates_only()) return false;
+  for (const control::ControllerSpec& c : spec.controllers) {
+    const evo::Algorithm* a = spec.evolution_of(c).algorithm;
+    if (a != nullptr && a->name == name) return true;
+  }
+  return false;
+}
+
 std::string trimmed(std::string_view t) {
   while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
   while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
@@ -77,17 +92,23 @@ std::vector<std::string> setting_keys() {
   for (const auto& group : {option_keys(es_options()), prefixed(kArenaGroup, arena_setting_names()),
                             prefixed(kRobotGroup, robot_setting_names()), option_keys(gp_options(), kGpGroup)})
     k.insert(k.end(), group.begin(), group.end());
+  for (const AlgorithmOptions& a : further_algorithms()) {
+    const auto keys = prefixed(group_of(a), a.keys());
+    k.insert(k.end(), keys.begin(), keys.end());
+  }
   return k;
 }
 
 bool is_setting_group(std::string_view word) {
   for (const std::string_view group : {kRobotGroup, kArenaGroup, kGpGroup})
     if (group.substr(0, group.size() - 1) == word) return true;
-  return false;
+  return find_further_algorithm(word) != nullptr;
 }
 
 bool setting_takes_range(std::string_view key) {
   if (const EsOption* o = find_option_key(es_options(), key)) return o->shape == OptionShape::Range;
+  for (const AlgorithmOptions& a : further_algorithms())
+    if (const auto name = in_group(key, group_of(a))) return a.takes_range(*name);
   const auto name = in_group(key, kGpGroup);
   if (!name) return false;
   const GpOption* o = find_option_key(gp_options(), *name);
@@ -111,6 +132,18 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     if (!o->read(*o, scratch, value, sink)) return false;
     if (spec.gp) spec.gp = scratch;
     return true;
+  }
+  for (const AlgorithmOptions& a : further_algorithms()) {
+    const std::string group = group_of(a);
+    const auto name = in_group(k, group);
+    if (!name) continue;
+    if (!a.has_key(*name)) {
+      unknown(sink, key, fmt::format("{} setting", a.what), *name, group, a.keys(), scope);
+      return false;
+    }
+    // Kept even where the algorithm evolves nothing yet: `--set networks=cmaes` may follow.
+    return a.set(spec.algorithm_settings.try_emplace(std::string(a.name), a.defaults()).first->second, *name, value,
+                 sink);
   }
   if (const auto name = in_group(k, kRobotGroup)) {
     const RobotSetting* s = find_robot_setting(*name);
@@ -140,6 +173,7 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   const int errors = sink.errors();
   if (const auto p = es_problem(spec.es)) sink.error(where, p->message).help.push_back(p->help);
   if (std::string m = check_gp(spec); !m.empty()) sink.error(where, m);
+  check_further_settings(spec, where, sink);
   const RuleContext context{&spec.arena, spec.arena_name, &spec.robot};
   const auto robot = sim::robot_problems(spec.robot);
   const auto arena = sim::arena_problems(spec.arena);
@@ -152,7 +186,11 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
 void resolve_settings(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;
   r["experiment"] = spec.name;
-  for (const ExperimentSetting& s : experiment_settings()) r[std::string(s.key)] = s.text(spec);
+  for (const ExperimentSetting& s : experiment_settings()) {
+    const std::string t = s.text(spec);
+    if (t.empty()) r.erase(std::string(s.key));   // left at its default (`networks`)
+    else r[std::string(s.key)] = t;
+  }
   if (spec.start_from)
     r["start_from"] = fmt::format("{} from experiment {}", spec.start_from->evaluate_only ? "evaluate" : "start",
                                   spec.start_from->experiment);
@@ -166,6 +204,15 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;
   r["compare"] = names;
   resolve_gp_settings(spec);
+  // Another algorithm's settings where it evolves a compared controller, only: a run from
+  // before it keeps its settings, and its dependencies theirs.
+  for (const AlgorithmOptions& a : further_algorithms()) {
+    const std::string group = group_of(a);
+    for (auto it = r.begin(); it != r.end();) it = it->first.starts_with(group) ? r.erase(it) : std::next(it);
+    if (const auto s = spec.algorithm_settings.find(std::string(a.name));
+        s != spec.algorithm_settings.end() && in_use(spec, a.name))
+      a.resolve(s->second, r);
+  }
   for (const eval::DependencySetting& d : spec.dependency_settings)
     r[fmt::format("{}.{}", fmt::join(d.path, "."), d.key)] = d.value;
 }

@@ -128,14 +128,14 @@ expItem
   | RUNS NUMBER ';'?                                                              # expRuns
   | SEED NUMBER ';'?                                                              # expSeed
   // `CS8 as CS`: compared under another name, so that a study pairs it with the CS of
-  // other conditions.
+  // other conditions; `SC by cmaes`: evolved by that algorithm, not the experiment's default.
   | COMPARE compared (',' compared)* ';'?                                         # expCompare
   // Each run takes the best genome of the same run of another experiment (which runs
   // first): `evaluate` only evaluates it here; `start` evolves on from it.
   | kw=(START | EVALUATE) FROM EXPERIMENT ident ';'?                              # expStartFrom
   ;
 esOption : ident ('[' lo=quantity ',' hi=quantity ']' | quantity)? ;
-compared : ctl=ident (AS alias=ident)? ;
+compared : ctl=ident (BY algo=ident)? (AS alias=ident)? ;
 
 // ---- studies: conditions compared together ------------------------------------------
 studyDecl : STUDY name=ident '{' studyItem* '}' ;
@@ -186,7 +186,7 @@ ident
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
-  | CONDITIONS | CONDITION | SWEEP | AS
+  | CONDITIONS | CONDITION | SWEEP | AS | BY
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -263,6 +263,7 @@ CONDITIONS : 'conditions' ;
 CONDITION : 'condition' ;
 SWEEP : 'sweep' ;
 AS : 'as' ;
+BY : 'by' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;

@@ -86,6 +86,10 @@ struct Evolution {
 };
 
 struct ExperimentSpec {
+  // The paper's algorithms, whose settings have fields of their own (`es`, `gp`).
+  static constexpr const char* kEs = "es";
+  static constexpr const char* kGp = "gp";
+
   std::string name;
   std::string arena_name;
   sim::ArenaSpec arena;
@@ -99,6 +103,13 @@ struct ExperimentSpec {
   // `evolve gp(...)`: evolves the tree controllers (the compiler requires it when one is
   // compared). Its primitive set is each tree controller's own.
   std::optional<evo::gp::GpSettings> gp;
+  // The settings of every other algorithm a compared controller is evolved by, by its name
+  // (the algorithm's own settings type: evo::CmaesSettings for `cmaes`, ...).
+  std::map<std::string, std::any> algorithm_settings;
+  // What evolves the networks compared without `by` (`--set networks=cmaes`).
+  std::string networks{kEs};
+  // Per compared controller, the algorithm its `by` names; empty: the default above.
+  std::vector<std::string> evolved_by;
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
   // Distinct choice ids over the compared controllers (control::Choice::id is below it): the
   // counts an end term can read.
@@ -122,10 +133,18 @@ struct ExperimentSpec {
     return n;
   }
 
-  // The algorithm that evolves `c`: the ES for a network, GP for a tree.
+  // The algorithm that evolves `c`: the one its `by` names, else `networks` for a network
+  // and GP for a tree; with its settings (`es`, `gp`, or algorithm_settings).
   [[nodiscard]] Evolution evolution_of(const control::ControllerSpec& c) const {
-    if (c.is_tree()) return {evo::find_algorithm("gp"), gp ? std::any(*gp) : std::any()};
-    return {evo::find_algorithm("es"), std::any(es)};
+    const auto i = static_cast<std::size_t>(&c - controllers.data());
+    const std::string& by = i < evolved_by.size() && !evolved_by[i].empty() ? evolved_by[i]
+                            : c.is_tree()                                  ? kGp
+                                                                           : networks;
+    Evolution e{evo::find_algorithm(by), {}};
+    if (by == kEs) e.settings = es;
+    else if (by == kGp) e.settings = gp ? std::any(*gp) : std::any();
+    else if (const auto it = algorithm_settings.find(by); it != algorithm_settings.end()) e.settings = it->second;
+    return e;
   }
 
   [[nodiscard]] bool evaluates_only() const noexcept { return start_from && start_from->evaluate_only; }
@@ -135,12 +154,14 @@ struct ExperimentSpec {
   [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
     return c.is_tree() && gp && !evaluates_only() ? gp->generations : es_generations();
   }
-  // Individuals a compared controller evaluates each generation: the GP population for a
-  // tree, else the ES's lambda, or 1 when the experiment only evaluates stored genomes.
-  [[nodiscard]] std::size_t evaluations_per_generation(const control::ControllerSpec& c) const noexcept {
+  // Individuals a compared controller evaluates in its first generation: its algorithm's
+  // population (the ES's lambda, GP's population, ...), or 1 when the experiment only
+  // evaluates stored genomes; 0 when its algorithm has no settings (refused at run time).
+  [[nodiscard]] std::size_t evaluations_per_generation(const control::ControllerSpec& c) const {
     if (evaluates_only()) return 1;
-    if (c.is_tree() && gp) return static_cast<std::size_t>(gp->population);
-    return static_cast<std::size_t>(es.lambda);
+    const Evolution e = evolution_of(c);
+    if (e.algorithm == nullptr || !e.settings.has_value()) return 0;
+    return e.algorithm->population(e.settings, c.is_tree() ? 0 : c.genome_size());
   }
   // The most generations of any compared controller (the ES's when none is compared).
   [[nodiscard]] int max_generations() const noexcept {

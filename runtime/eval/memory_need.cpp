@@ -16,22 +16,13 @@ namespace esc::eval {
 
 namespace {
 
-// One generation of one run of `c`, in doubles (sizes multiply beyond any integer type).
+// One generation of one run of `c`: its optimizer and the pooled results (fitness, steps)
+// with the fitness handed to the run. In doubles: sizes multiply beyond any integer type.
 double generation_bytes(const ExperimentSpec& spec, const control::ControllerSpec& c) {
-  const double evaluations = static_cast<double>(spec.evaluations_per_generation(c));
-  // The pooled results (fitness, steps) and the fitness handed to the run.
-  const double results = evaluations * 3.0 * sizeof(double);
-  if (c.is_tree() && spec.gp) {
-    // The evaluated generation and the one bred from it, every tree at most max_size nodes.
-    const double tree = sizeof(evo::gp::Individual) + static_cast<double>(spec.gp->max_size) * sizeof(evo::gp::Node);
-    return 2.0 * static_cast<double>(spec.gp->population) * tree + results;
-  }
-  const double genes = static_cast<double>(c.genome_size());
-  const double sigmas = spec.es.step_sizes == evo::StepSizes::PerGene ? genes : 1.0;
-  const double individual = sizeof(evo::Individual) + (genes + sigmas) * sizeof(double);
-  // Parents, offspring and the parents selected from them.
-  const double individuals = 2.0 * spec.es.mu + evaluations;
-  return individuals * individual + results;
+  const double results = static_cast<double>(spec.evaluations_per_generation(c)) * 3.0 * sizeof(double);
+  const Evolution e = spec.evolution_of(c);
+  if (spec.evaluates_only() || !e.settings.has_value()) return results;
+  return e.algorithm->memory_bytes(e.settings, c.is_tree() ? 0 : c.genome_size()) + results;
 }
 
 // A number from a file such as /sys/fs/cgroup/memory.max ("max" when unlimited).

@@ -22,6 +22,11 @@ struct Algorithm {
   // A fresh optimizer for one run; `settings` holds the algorithm's own settings type (as
   // the compiler made it). Throws std::invalid_argument on impossible settings.
   std::unique_ptr<Optimizer> (*make)(const std::any& settings, const Problem& problem) = nullptr;
+  // Candidates of a run's first generation for a genome of `genome_size` weights (0 for a
+  // tree): what the campaign sizes its rounds by.
+  std::size_t (*population)(const std::any& settings, std::size_t genome_size) = nullptr;
+  // Bytes one run's optimizer holds at once, at least (the campaign's memory check).
+  double (*memory_bytes)(const std::any& settings, std::size_t genome_size) = nullptr;
 };
 
 [[nodiscard]] const std::vector<Algorithm>& algorithms();

@@ -11,17 +11,10 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
+#include "runtime/evo/limits.hpp"
 
 namespace esc::evo {
 
-// Limits that keep every operation of the ES finite: genes within +-kMaxGeneBound, so
-// HI - LO <= 2e6, intermediate recombination, reflection (fmod over 2 (HI - LO)) and the
-// networks' weighted sums stay far from overflow; step sizes at most kMaxStepSize (HI - LO)
-// (a step of a few times HI - LO already folds back to about uniform, so more means
-// nothing), so a mutation moves a gene by at most about 1e11 and the geometric mean of two
-// step sizes cannot overflow.
-inline constexpr double kMaxGeneBound = 1e6;
-inline constexpr double kMaxStepSize = 1e3;
 
 enum class Selection { Comma, Plus };
 enum class Recombination { Intermediate, Discrete, None };

@@ -75,6 +75,17 @@ std::unique_ptr<Optimizer> make_es(const EsSettings& settings, const Problem& pr
   return std::make_unique<EsOptimizer>(settings, problem);
 }
 
+std::size_t es_population(const EsSettings& settings, std::size_t /*genome_size*/) {
+  return static_cast<std::size_t>(settings.lambda);
+}
+
+double es_memory_bytes(const EsSettings& settings, std::size_t genome_size) {
+  const double genes = static_cast<double>(genome_size);
+  const double sigmas = settings.step_sizes == StepSizes::PerGene ? genes : 1.0;
+  const double individual = sizeof(Individual) + (genes + sigmas) * sizeof(double);
+  return (2.0 * settings.mu + settings.lambda) * individual;
+}
+
 StateBytes es_state(std::span<const Individual> parents) {
   StateWriter w;
   w.put(static_cast<std::uint64_t>(parents.size()));

@@ -14,6 +14,12 @@ namespace esc::evo {
 
 [[nodiscard]] std::unique_ptr<Optimizer> make_es(const EsSettings& settings, const Problem& problem);
 
+// Offspring per generation: lambda.
+[[nodiscard]] std::size_t es_population(const EsSettings& settings, std::size_t genome_size);
+// What one run's ES holds at once, in bytes: parents, offspring and the parents selected
+// from them, with their genes and step sizes.
+[[nodiscard]] double es_memory_bytes(const EsSettings& settings, std::size_t genome_size);
+
 // The ES's saved state for `parents`: what a store that kept the parents in a table of its
 // own (results schema 5 and older) hands a resumed run.
 [[nodiscard]] StateBytes es_state(std::span<const Individual> parents);

@@ -80,6 +80,15 @@ std::unique_ptr<Optimizer> make_gp(const GpSettings& settings, const Problem& pr
   return std::make_unique<GpOptimizer>(settings, problem);
 }
 
+std::size_t gp_population(const GpSettings& settings, std::size_t /*genome_size*/) {
+  return static_cast<std::size_t>(settings.population);
+}
+
+double gp_memory_bytes(const GpSettings& settings, std::size_t /*genome_size*/) {
+  const double tree = sizeof(Individual) + static_cast<double>(settings.max_size) * sizeof(Node);
+  return 2.0 * static_cast<double>(settings.population) * tree;
+}
+
 StateBytes gp_state(std::span<const Individual> population) {
   StateWriter w;
   w.put(static_cast<std::uint64_t>(population.size()));

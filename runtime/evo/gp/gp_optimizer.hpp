@@ -17,6 +17,12 @@ namespace esc::evo::gp {
 // Throws std::invalid_argument on impossible settings (GeneticProgramming's checks).
 [[nodiscard]] std::unique_ptr<Optimizer> make_gp(const GpSettings& settings, const Problem& problem);
 
+// Trees per generation: the population.
+[[nodiscard]] std::size_t gp_population(const GpSettings& settings, std::size_t genome_size);
+// What one run's GP holds at once, in bytes: the evaluated generation and the one bred
+// from it, every tree at most max_size nodes.
+[[nodiscard]] double gp_memory_bytes(const GpSettings& settings, std::size_t genome_size);
+
 // GP's saved state for `population`: what a store that kept the population in a table of
 // its own (results schema 5 and older) hands a resumed run.
 [[nodiscard]] StateBytes gp_state(std::span<const Individual> population);

@@ -1,0 +1,151 @@
+#include "compiler/lower_evolution.hpp"
+
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "compiler/algorithm_options.hpp"
+#include "compiler/gp_settings.hpp"
+#include "compiler/names.hpp"
+#include "compiler/setting_values.hpp"
+#include "runtime/evo/registry.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+using X = eval::ExperimentSpec;
+
+std::vector<std::string> names_that(bool trees) {
+  std::vector<std::string> v;
+  for (const evo::Algorithm& a : evo::algorithms())
+    if (trees ? a.trees : a.networks) v.emplace_back(a.name);
+  return v;
+}
+
+std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "a tree controller" : "a network"; }
+
+// The algorithm that evolves x.controllers[i] now that `by` and `networks` are set.
+std::string algorithm_of(const X& x, std::size_t i) {
+  const evo::Algorithm* a = x.evolution_of(x.controllers[i]).algorithm;
+  return a != nullptr ? std::string(a->name) : std::string();
+}
+
+}  // namespace
+
+std::vector<std::string> algorithm_names() {
+  std::vector<std::string> v;
+  for (const evo::Algorithm& a : evo::algorithms()) v.emplace_back(a.name);
+  return v;
+}
+
+bool is_further_evolve(const ast::ExpItem& item) {
+  return item.kind == ast::ExpItem::Kind::Evolve && !item.refs.empty() &&
+         find_further_algorithm(item.refs[0].text) != nullptr;
+}
+
+void lower_further_evolve(const ast::ExpItem& item, X& x, EvolveItems& items, Sink& sink) {
+  const std::string& name = item.refs[0].text;
+  if (const auto it = items.further.find(name); it != items.further.end()) {
+    sink.error(item.where, fmt::format("`evolve {}` is already given in this experiment", name))
+        .notes.emplace_back(it->second->where, "first given here");
+    return;
+  }
+  items.further.emplace(name, &item);
+  items.further_order.push_back(name);
+  const AlgorithmOptions& o = *find_further_algorithm(name);
+  std::any& settings = x.algorithm_settings.try_emplace(name, o.defaults()).first->second;
+  o.lower(item, settings, sink);
+  if (!item.generations || !item.generations->finite) return;
+  if (const auto n = read_count(as_value(*item.generations), "generations", 1, std::numeric_limits<int>::max(), sink))
+    x.es.generations = static_cast<int>(*n);
+}
+
+void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<const ast::Name*>& compared,
+                       const std::vector<const ast::Name*>& by, const EvolveItems& items, Sink& sink) {
+  // Networks compared without `by`: the ES, unless the experiment names another algorithm
+  // for networks and not the ES.
+  if (items.es == nullptr)
+    for (const std::string& name : items.further_order)
+      if (evo::find_algorithm(name)->networks) {
+        x.networks = name;
+        break;
+      }
+  x.evolved_by.assign(x.controllers.size(), std::string());
+  for (std::size_t i = 0; i < x.controllers.size() && i < by.size(); ++i) {
+    const ast::Name& name = *by[i];
+    if (name.text.empty()) continue;
+    const control::ControllerSpec& c = x.controllers[i];
+    const evo::Algorithm* a = evo::find_algorithm(name.text);
+    if (a == nullptr) {
+      suggest(sink.error(name.where, fmt::format("unknown algorithm `{}`", name.text)), name.text, algorithm_names(),
+              {.otherwise = fmt::format("algorithms: {}", quoted_list(algorithm_names()))});
+      continue;
+    }
+    if (c.is_tree() ? !a->trees : !a->networks) {
+      sink.error(name.where, fmt::format("`{}` cannot evolve `{}`: it is {}", name.text, c.name, kind_of(c)))
+          .help.push_back(fmt::format("{} evolved by {}", c.is_tree() ? "trees are" : "networks are",
+                                      quoted_list(names_that(c.is_tree()))));
+      continue;
+    }
+    x.evolved_by[i] = name.text;
+  }
+  if (x.evaluates_only()) return;
+  // Every algorithm in use has its settings (its defaults when no `evolve` gives them); an
+  // `evolve` of another algorithm that evolves none of the compared controllers is a mistake.
+  std::map<std::string, bool> used;
+  for (std::size_t i = 0; i < x.controllers.size(); ++i) {
+    const std::string a = algorithm_of(x, i);
+    used[a] = true;
+    if (const AlgorithmOptions* o = find_further_algorithm(a)) x.algorithm_settings.try_emplace(a, o->defaults());
+  }
+  for (const std::string& name : items.further_order) {
+    if (used.count(name) != 0) continue;
+    const ast::ExpItem& item = *items.further.at(name);
+    const evo::Algorithm& a = *evo::find_algorithm(name);
+    Diagnostic& diag = sink.error(item.refs[0].where, fmt::format("`evolve {}` evolves none of the controllers "
+                                                                  "experiment `{}` compares", name, d.name.text));
+    bool any_network = false;
+    for (const control::ControllerSpec& c : x.controllers) any_network = any_network || !c.is_tree();
+    if (a.networks && !a.trees && !any_network)
+      diag.help.push_back(fmt::format("`{}` evolves networks; the compared controllers are trees, evolved by {}", name,
+                                      quoted_list(names_that(true))));
+    else
+      diag.help.push_back(fmt::format("name it for a controller in `compare`: `CONTROLLER by {}`", name));
+  }
+  for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i) {
+    const control::ControllerSpec& c = x.controllers[i];
+    const std::string a = algorithm_of(x, i);
+    if (c.is_tree() && a == X::kGp && items.gp == nullptr) {
+      sink.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
+                                                 "`evolve gp(...)` to evolve it", c.name, d.name.text))
+          .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
+    } else if (!c.is_tree() && a == X::kEs && items.gp != nullptr && items.es == nullptr) {
+      sink.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
+                                                 "(`evolve gp`)", c.name, d.name.text))
+          .help.push_back("networks are evolved by the ES: add `evolve es(mu 30, lambda 150) for 250 generations`");
+    }
+  }
+  if (items.gp != nullptr)
+    if (std::string m = check_gp(x); !m.empty()) sink.error(items.gp->where, m);
+  for (const auto& [name, item] : items.further) {
+    const int before = sink.errors();
+    check_further_settings(x, item->where, sink);
+    if (sink.errors() != before) break;   // one report for settings that several controllers share
+  }
+}
+
+void check_further_settings(const X& x, const SourceRange& where, Sink& sink) {
+  for (std::size_t i = 0; i < x.controllers.size(); ++i) {
+    const std::string a = algorithm_of(x, i);
+    const AlgorithmOptions* o = find_further_algorithm(a);
+    const auto s = x.algorithm_settings.find(a);
+    if (o == nullptr || s == x.algorithm_settings.end()) continue;
+    if (std::string m = o->problem(s->second, x.controllers[i].genome_size()); !m.empty()) {
+      sink.error(where, fmt::format("impossible {} settings for `{}`: {}", o->what, x.controllers[i].name, m));
+      return;
+    }
+  }
+}
+
+}  // namespace esc::compiler

@@ -1,0 +1,45 @@
+#pragma once
+// Which algorithm evolves which compared controller: `evolve NAME(...)` items beyond the
+// paper's `es` and `gp` (algorithm_options.hpp), `by NAME` in `compare`, and the checks that
+// tie them together (an algorithm that cannot evolve the controller it is given, an
+// `evolve` that evolves nothing, settings that do not suit a controller's network).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "compiler/ast.hpp"
+#include "compiler/sink.hpp"
+#include "runtime/eval/experiment.hpp"
+
+namespace esc::compiler {
+
+// The `evolve` items of one experiment, by algorithm.
+struct EvolveItems {
+  const ast::ExpItem* es = nullptr;
+  const ast::ExpItem* gp = nullptr;
+  std::map<std::string, const ast::ExpItem*> further;   // in algorithm_options.hpp
+  std::vector<std::string> further_order;                // as written
+};
+
+// Every algorithm a script can name, for messages: `es`, `gp`, `cmaes`, ...
+[[nodiscard]] std::vector<std::string> algorithm_names();
+
+// Whether `item` is `evolve NAME(...)` for an algorithm of algorithm_options.hpp.
+[[nodiscard]] bool is_further_evolve(const ast::ExpItem& item);
+
+// `evolve NAME(...)` of such an algorithm into x.algorithm_settings[NAME] (its `for N
+// generations` into the experiment's generations); a second one of the same name reported.
+void lower_further_evolve(const ast::ExpItem& item, eval::ExperimentSpec& x, EvolveItems& items, Sink& sink);
+
+// Chooses the algorithm of every compared controller (x.evolved_by from `by`, x.networks
+// from the `evolve` items) and reports what does not fit; `compared[i]` and `by[i]` are the
+// names `compare` wrote for x.controllers[i] (`by[i]` empty text when none).
+void choose_algorithms(const ast::ExperimentDecl& d, eval::ExperimentSpec& x,
+                       const std::vector<const ast::Name*>& compared, const std::vector<const ast::Name*>& by,
+                       const EvolveItems& items, Sink& sink);
+
+// Problems of the settings of the algorithms beyond ES and GP that evolve x's controllers,
+// reported at `where`.
+void check_further_settings(const eval::ExperimentSpec& x, const SourceRange& where, Sink& sink);
+
+}  // namespace esc::compiler

@@ -1,0 +1,65 @@
+#include "runtime/evo/cmaes/cmaes_optimizer.hpp"
+
+#include <string>
+
+namespace esc::evo {
+
+namespace {
+
+class CmaesOptimizer final : public Optimizer {
+ public:
+  CmaesOptimizer(const CmaesSettings& settings, const Problem& problem)
+      : cma_(settings, problem.genome_size), seed_(problem.seed) {
+    if (problem.start != nullptr) {
+      cma_.start(*problem.start);
+    } else {
+      Rng init(seed_, {static_cast<std::uint64_t>(Stream::Init)});
+      cma_.start(init);
+    }
+  }
+
+  std::vector<Genome> ask(int generation) override {
+    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(generation)});
+    return cma_.ask(rng);
+  }
+
+  void tell(std::span<const Outcome> outcomes) override {
+    std::vector<double> f(outcomes.size());
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] = -outcomes[i].objectives.front();
+    cma_.tell(f);
+  }
+
+  std::vector<Metric> metrics() const override {
+    return {{"sigma", cma_.sigma()}, {"condition", cma_.condition()}, {"lambda", static_cast<double>(cma_.lambda())}};
+  }
+
+  std::string stopped() const override { return cma_.done() ? std::string(cma_.stop_reason()) : std::string(); }
+
+  StateBytes save() const override { return cma_.save(); }
+  void load(std::span<const std::uint8_t> state) override { cma_.load(state); }
+
+ private:
+  Cmaes cma_;
+  std::uint64_t seed_;
+};
+
+}  // namespace
+
+std::unique_ptr<Optimizer> make_cmaes(const CmaesSettings& settings, const Problem& problem) {
+  if (problem.primitives != nullptr) throw std::invalid_argument("CMA-ES evolves a network's weights, not trees");
+  return std::make_unique<CmaesOptimizer>(settings, problem);
+}
+
+std::size_t cmaes_population(const CmaesSettings& settings, std::size_t n) {
+  return settings.lambda > 0 ? static_cast<std::size_t>(settings.lambda) : cmaes_default_lambda(n);
+}
+
+double cmaes_memory_bytes(const CmaesSettings& settings, std::size_t n) {
+  const double d = static_cast<double>(n);
+  const double matrices = settings.separable ? 2.0 * d : 2.0 * d * d;
+  // z and y per candidate, the candidates handed out, and the vectors of the distribution.
+  const double samples = 3.0 * d * static_cast<double>(cmaes_population(settings, n));
+  return (matrices + samples + 6.0 * d) * sizeof(double);
+}
+
+}  // namespace esc::evo
