@@ -71,6 +71,16 @@ void print_trees(const eval::CampaignResult& result, const Label& label) {
         fmt::print("{:<12} run {} best tree (fitness {:.1f}): {}\n", label(c), r.run + 1, r.best_fitness, r.best_tree);
 }
 
+// Each run whose optimizer ended the search early, and why.
+template <class Label>
+void print_stops(const eval::CampaignResult& result, const Label& label) {
+  for (const auto& c : result.controllers)
+    for (const auto& r : c.runs)
+      if (!r.stopped.empty())
+        fmt::print("{:<12} run {} stopped its search after generation {} ({}): best fitness {:.1f}\n", label(c),
+                   r.run + 1, r.generations.size() - 1, r.stopped, r.best_fitness);
+}
+
 bool has_trees(const eval::ExperimentSpec& spec) {
   return std::any_of(spec.controllers.begin(), spec.controllers.end(), [](const auto& c) { return c.is_tree(); });
 }
@@ -130,6 +140,7 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
     fmt::print("\n");
     print_trees(result, name);
   }
+  print_stops(result, name);
   const auto& cs = result.controllers;
   print_comparisons(finals, report::all_pairs(finals.size()),
                     [&](std::size_t a, std::size_t b) { return fmt::format("{} vs {}", cs[a].name, cs[b].name); }, "");
@@ -198,6 +209,8 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
     trees = true;
     print_trees(c.result, [&](const eval::ControllerResult& r) { return fmt::format("{} {}", r.name, c.name); });
   }
+  for (const ConditionResult& c : conditions)
+    print_stops(c.result, [&](const eval::ControllerResult& r) { return fmt::format("{} {}", r.name, c.name); });
 
   // One family: within each condition every pair of controllers, then for each controller
   // every pair of conditions.

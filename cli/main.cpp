@@ -86,8 +86,9 @@ int main(int argc, char** argv) {
   export_cmd->add_option("--format", exp.format, "csv (default: per-generation statistics) or json (everything)")
       ->check(CLI::IsMember({"csv", "json"}));
   export_cmd->add_option("--table", exp.table,
-                         "usage: the steps each behavior acted, per run, generation and behavior (a tidy table)")
-      ->check(CLI::IsMember({"usage"}));
+                         "usage: the steps each behavior acted, per run, generation and behavior; metrics: what each "
+                         "run's optimizer reported (CMA-ES's sigma, ...) per generation (tidy tables)")
+      ->check(CLI::IsMember({"usage", "metrics"}));
   export_cmd->add_option("--out", exp.out, "output file (default: standard output)");
 
   ReportOptions rep;

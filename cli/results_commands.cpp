@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "runtime/report/html_report.hpp"
 #include "runtime/store/export.hpp"
+#include "runtime/store/metrics_export.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/usage_export.hpp"
 
@@ -29,9 +30,11 @@ int export_command(const ExportOptions& o) {
   }
   const std::vector<store::StoredDirectory> all = load_all(o.dirs);
   const bool csv = o.format == "csv";
-  const std::string text = o.table == "usage" ? (csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n")
-                           : csv              ? store::export_csv(all)
-                                              : store::export_json(all).dump(2) + "\n";
+  const std::string text =
+      o.table == "usage"     ? (csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n")
+      : o.table == "metrics" ? (csv ? store::metrics_csv(all) : store::metrics_json(all).dump(2) + "\n")
+      : csv                  ? store::export_csv(all)
+                             : store::export_json(all).dump(2) + "\n";
   if (o.out.empty()) {
     std::cout << text << std::flush;
   } else {

@@ -51,6 +51,9 @@ struct RunResult {
   // same commands (an Action tree with its actions inlined); empty for a Behavior tree.
   std::string best_behavior{};
   std::optional<Transfer> transfer{};   // a run that started from a stored genome
+  // Why its optimizer ended the search before the last generation (CMA-ES's `stop_sigma`,
+  // ...); empty when the run went through every generation.
+  std::string stopped{};
 };
 
 // Seed of the evaluation of offspring `index` of generation `generation` of a run.

@@ -106,6 +106,7 @@ RunResult RunJob::close(const ExperimentSpec& spec, const CampaignOptions& optio
                         CampaignListener& listener) {
   const bool has_best = state_.has_best;
   RunResult result = close_run(std::move(state_));
+  result.stopped = optimizer_->stopped();
   if (!has_best) return result;
   const control::ControllerSpec& controller = *controller_;
   if (controller.is_tree()) {

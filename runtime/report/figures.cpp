@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -96,6 +97,50 @@ svg::Figure box_figure(const store::StoredExperiment& e) {
   f.columns = 1;
   f.panel_width = std::max(340.0, 70.0 * static_cast<double>(p.categories.size()) + 80.0);
   f.note = "Box: quartiles; whiskers: lowest and highest run; bar: median; dots: runs.";
+  return f;
+}
+
+// What the optimizers reported after each generation (CMA-ES's sigma, ...): one panel per
+// metric, for each controller the median over its finished runs with their range as a band;
+// no figure when no optimizer reported anything.
+std::optional<svg::Figure> metrics_figure(const store::StoredExperiment& e) {
+  std::vector<std::string> names;   // as first reported
+  for (const auto& c : e.controllers)
+    for (const auto& r : c.finished)
+      for (const auto& g : r.generations)
+        for (const evo::Metric& m : g.metrics)
+          if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
+  if (names.empty()) return std::nullopt;
+  svg::Figure f;
+  f.title = fmt::format("What each optimizer reported: {}", who(e));
+  for (const std::string& name : names) {
+    svg::Panel p{name, "generation", name, {}, {}, {}, true};
+    for (std::size_t i = 0; i < e.controllers.size(); ++i) {
+      const store::StoredController& c = e.controllers[i];
+      svg::Line l{fmt::format("{} ({})", c.name, c.algorithm), i, {}, {}, {}, {}, false, false, {}};
+      std::size_t length = 0;
+      for (const auto& r : c.finished) length = std::max(length, r.generations.size());
+      for (std::size_t g = 0; g < length; ++g) {
+        std::vector<double> values;
+        for (const auto& r : c.finished)
+          if (g < r.generations.size())
+            for (const evo::Metric& m : r.generations[g].metrics)
+              if (m.name == name && std::isfinite(m.value)) values.push_back(m.value);
+        if (values.empty()) continue;
+        const Summary s = summarise(values);
+        l.x.push_back(static_cast<double>(g));
+        l.y.push_back(s.median);
+        l.lo.push_back(s.min);
+        l.hi.push_back(s.max);
+      }
+      if (!l.x.empty()) p.lines.push_back(std::move(l));
+    }
+    f.panels.push_back(std::move(p));
+  }
+  for (std::size_t i = 0; i < e.controllers.size(); ++i)
+    if (!e.controllers[i].finished.empty())
+      f.legend.push_back({fmt::format("{} ({})", e.controllers[i].name, e.controllers[i].algorithm), i, {}});
+  f.note = "Over the finished runs: median of each generation; band: lowest to highest run.";
   return f;
 }
 
@@ -210,6 +255,7 @@ std::vector<NamedFigure> experiment_figures(const store::StoredExperiment& e, co
   std::vector<NamedFigure> out = {{stem + "-fitness.svg", fitness.title, svg::render(fitness)},
                                   {stem + "-best.svg", box.title, svg::render(box)}};
   for (NamedFigure& f : usage_figures(e, stem)) out.push_back(std::move(f));
+  if (const auto metrics = metrics_figure(e)) out.push_back({stem + "-metrics.svg", metrics->title, svg::render(*metrics)});
   return out;
 }
 

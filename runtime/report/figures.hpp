@@ -3,8 +3,9 @@
 // - per experiment or study condition, the paper's Figure 1: for each controller the
 //   maximum and the mean over runs of the best fitness of each generation, and the best
 //   so far (mean over runs of each run's best up to that generation); a box plot of the
-//   runs' best fitness; and the paper's Figure 2 per controller that chooses behaviors
-//   (usage_figure.hpp);
+//   runs' best fitness; the paper's Figure 2 per controller that chooses behaviors
+//   (usage_figure.hpp); and what the optimizers reported per generation (CMA-ES's sigma),
+//   where they reported anything;
 // - per study, box plots of each controller's runs across the conditions (one panel per
 //   controller), and for each sweep the final best fitness against the swept value (mean
 //   and sd over runs, one line per controller; a categorical axis when the values are not

@@ -1,5 +1,7 @@
 #include "runtime/store/export.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "runtime/store/seed_json.hpp"
@@ -19,6 +21,11 @@ json generations_json(const std::vector<eval::GenerationStats>& gens) {
     if (!g.usage.empty())
       a.back()["usage"] = {{"best_steps", g.usage.best}, {"mean_steps", g.usage.mean},
                            {"steps_total", g.usage.steps_total}};
+    if (!g.metrics.empty()) {
+      json m = json::object();
+      for (const evo::Metric& x : g.metrics) m[x.name] = std::isnan(x.value) ? json(nullptr) : json(x.value);
+      a.back()["metrics"] = std::move(m);
+    }
   }
   return a;
 }
@@ -30,6 +37,7 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
   json j = {{"run", r.run + 1}, {"seed", seed_json(r.seed)}, {"status", "finished"}, {"best_fitness", r.best_fitness},
             {"best_generation", r.best_generation}, {"best_index", r.best_index}, {"best_genome", r.best_genome}};
   if (!r.best_tree.empty()) j["best_tree"] = r.best_tree;
+  if (!r.stopped.empty()) j["stopped"] = r.stopped;
   j["behavior_usage"] = usage;
   if (r.transfer)
     j["transfer"] = {{"experiment", r.transfer->experiment}, {"origin_run", r.transfer->origin_run + 1},
@@ -70,7 +78,7 @@ json export_json(const std::vector<StoredDirectory>& directories) {
         for (const auto& r : c.finished) runs.push_back(run_json(c, r));
         for (const auto& s : c.in_progress) runs.push_back(run_json(s));
         controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size}, {"head", c.head},
-                               {"actions", c.actions}, {"runs", runs}};
+                               {"algorithm", c.algorithm}, {"actions", c.actions}, {"runs", runs}};
       }
       json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
       if (e.condition) {
@@ -91,22 +99,22 @@ json export_json(const std::vector<StoredDirectory>& directories) {
 std::string export_csv(const std::vector<StoredDirectory>& directories) {
   std::string out =
       "experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,seconds,condition,study,"
-      "directory\n";
+      "directory,algorithm\n";
   for (const StoredDirectory& d : directories)
     for (const StoredExperiment& e : d.experiments) {
       // A grid sweep's point is named with commas (`time_constant=50ms,mu=10`).
       const std::string condition = csv_field(e.condition ? e.condition->name : e.name);
       const std::string study = e.condition ? e.condition->study : "";
-      const auto rows = [&](const std::string& ctl, int run, std::uint64_t seed, const char* status,
+      const auto rows = [&](const StoredController& c, int run, std::uint64_t seed, const char* status,
                             const std::vector<eval::GenerationStats>& gens) {
         for (const auto& g : gens)
-          out += fmt::format("{},{},{},{},{},{},{:.17g},{:.17g},{:.17g},{},{},{:.3f},{},{},{}\n", e.name, ctl, run + 1,
-                             seed, status, g.generation, g.best, g.mean, g.sd, g.evaluations, g.steps, g.seconds,
-                             condition, study, csv_field(d.path.generic_string()));
+          out += fmt::format("{},{},{},{},{},{},{:.17g},{:.17g},{:.17g},{},{},{:.3f},{},{},{},{}\n", e.name, c.name,
+                             run + 1, seed, status, g.generation, g.best, g.mean, g.sd, g.evaluations, g.steps,
+                             g.seconds, condition, study, csv_field(d.path.generic_string()), c.algorithm);
       };
       for (const StoredController& c : e.controllers) {
-        for (const auto& r : c.finished) rows(c.name, r.run, r.seed, "finished", r.generations);
-        for (const auto& s : c.in_progress) rows(c.name, s.run, s.seed, "running", s.generations);
+        for (const auto& r : c.finished) rows(c, r.run, r.seed, "finished", r.generations);
+        for (const auto& s : c.in_progress) rows(c, s.run, s.seed, "running", s.generations);
       }
     }
   return out;

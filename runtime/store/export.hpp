@@ -16,8 +16,9 @@ namespace esc::store {
 [[nodiscard]] nlohmann::ordered_json export_json(const std::vector<StoredDirectory>& directories);
 
 // Columns: experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,
-// seconds,condition,study,directory (run counts from 1, generation from 0; numbers with 17
-// significant digits; a plain experiment's condition is its own name and its study empty).
+// seconds,condition,study,directory,algorithm (run counts from 1, generation from 0; numbers
+// with 17 significant digits; a plain experiment's condition is its own name and its study
+// empty; the algorithm that evolved the controller, `evaluate` for one only evaluated).
 [[nodiscard]] std::string export_csv(const std::vector<StoredDirectory>& directories);
 
 // A CSV field: quoted when it holds a comma, a quote or a line break (a directory's path, a

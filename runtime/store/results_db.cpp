@@ -69,6 +69,7 @@ CREATE TABLE controllers (
   genome_size   INTEGER NOT NULL,
   head          TEXT NOT NULL,
   actions       TEXT NOT NULL,
+  algorithm     TEXT,              -- schema 7; NULL in older rows: `gp` for a tree, else `es`
   checksum      INTEGER NOT NULL DEFAULT 0,
   UNIQUE (experiment_id, name)
 );
@@ -84,6 +85,7 @@ CREATE TABLE runs (
   best_genome      BLOB,
   best_tree        TEXT,
   best_behavior    TEXT,
+  stopped          TEXT,             -- schema 7: why the optimizer ended the search early
   checksum         INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
 );
@@ -219,6 +221,13 @@ const char* head_name(const control::ControllerSpec& c) {
     case control::Head::Supervisor: return "supervisor";
   }
   return "unknown";
+}
+
+// What evolves `c` in `spec`, as the controllers table keeps it.
+std::string algorithm_name(const eval::ExperimentSpec& spec, const control::ControllerSpec& c) {
+  if (spec.evaluates_only()) return std::string(evo::kEvaluateOnly);
+  const evo::Algorithm* a = spec.evolution_of(c).algorithm;
+  return a != nullptr ? std::string(a->name) : std::string();
 }
 
 nlohmann::ordered_json arena_json(const sim::ArenaSpec& a) {
@@ -402,8 +411,8 @@ std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, cons
     seal_row(db, "settings", db.last_insert_rowid());
   }
   auto ctl = db.prepare(
-      "INSERT INTO controllers(experiment_id, idx, name, architecture, genome_size, head, actions) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?)");
+      "INSERT INTO controllers(experiment_id, idx, name, architecture, genome_size, head, actions, algorithm) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
   for (std::size_t i = 0; i < spec.controllers.size(); ++i) {
     const control::ControllerSpec& c = spec.controllers[i];
     const nlohmann::json actions = c.choice_names();
@@ -411,6 +420,7 @@ std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, cons
         .bind(5, static_cast<std::int64_t>(spec.genome_size_of(c)))
         .bind(6, head_name(c))
         .bind(7, actions.dump())
+        .bind(8, algorithm_name(spec, c))
         .run();
     controller_ids_[c.name] = db.last_insert_rowid();
     seal_row(db, "controllers", controller_ids_[c.name]);
@@ -545,7 +555,15 @@ void ResultsDb::upgrade() {
   if (schema_version_ < 3) tables("CREATE TABLE studies", nullptr);   // studies
   // The analyses' tables, empty: the generations stored before have no usage.
   if (schema_version_ < kAnalysisSchemaVersion) db_.exec(analysis_schema());
-  if (schema_version_ < 6) tables("CREATE TABLE optimizer_state", "CREATE TABLE studies");
+  if (schema_version_ < 6) tables("CREATE TABLE optimizer_state", "CREATE TABLE studies");   // optimizers
+  if (schema_version_ < 7) {   // each controller's algorithm, a run's early stop
+    db_.exec("ALTER TABLE controllers ADD COLUMN algorithm TEXT; ALTER TABLE runs ADD COLUMN stopped TEXT;");
+    // Their rows' checksums covered the columns they had (an older schema's are sealed below).
+    if (schema_version_ >= 5) {
+      seal_table(db_, "controllers");
+      seal_table(db_, "runs");
+    }
+  }
   if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
@@ -625,13 +643,14 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
   sql::Transaction tx(db_);
   auto row = db_.prepare(
       "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
-      "best_generation, best_index, best_genome, best_tree, best_behavior) "
-      "VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?, ?, ?)");
+      "best_generation, best_index, best_genome, best_tree, best_behavior, stopped) "
+      "VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?, ?, ?, ?)");
   row.bind(1, cid).bind(2, run.run).bind(3, std::to_string(run.seed))
       .bind(4, static_cast<std::int64_t>(run.generations.size())).bind(5, run.best_fitness)
       .bind(6, run.best_generation).bind(7, run.best_index).bind_blob(8, run.best_genome);
   if (!run.best_tree.empty()) row.bind(9, run.best_tree);
   if (!run.best_behavior.empty()) row.bind(10, run.best_behavior);
+  if (!run.stopped.empty()) row.bind(11, run.stopped);
   row.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
   // The run's state (optimizer_state) stays: `esc run --resume DIR --generations G`
@@ -692,8 +711,9 @@ std::vector<StoredExperiment> ResultsDb::load() {
       while (set.step()) e.settings[set.text(0)] = set.text(1);
       if (schema_version_ >= 3) load_condition(e);
       auto ctl = db_.prepare(
-          "SELECT id, name, architecture, genome_size, head, actions FROM controllers WHERE experiment_id = ? "
-          "ORDER BY idx");
+          fmt::format("SELECT id, name, architecture, genome_size, head, actions, {} FROM controllers "
+                      "WHERE experiment_id = ? ORDER BY idx",
+                      schema_version_ >= 7 ? "algorithm" : "NULL"));
       ctl.bind(1, e.id);
       while (ctl.step()) {
         StoredController c;
@@ -703,14 +723,15 @@ std::vector<StoredExperiment> ResultsDb::load() {
         c.genome_size = static_cast<std::size_t>(ctl.int64(3));
         c.head = ctl.text(4);
         c.actions = nlohmann::json::parse(ctl.text(5)).get<std::vector<std::string>>();
+        c.algorithm = !ctl.is_null(6) ? ctl.text(6) : algorithm_before_7(c);
         if (schema_version_ >= kAnalysisSchemaVersion) c.choices = load_choices(db_, c.id);
         e.controllers.push_back(std::move(c));
       }
       for (StoredController& c : e.controllers) {
         auto runs = db_.prepare(fmt::format(
             "SELECT run, seed, status, generations_done, best_fitness, best_generation, best_index, best_genome, "
-            "best_tree, {} FROM runs WHERE controller_id = ? ORDER BY run",
-            schema_version_ >= 2 ? "best_behavior" : "NULL"));
+            "best_tree, {}, {} FROM runs WHERE controller_id = ? ORDER BY run",
+            schema_version_ >= 2 ? "best_behavior" : "NULL", schema_version_ >= 7 ? "stopped" : "NULL"));
         runs.bind(1, c.id);
         while (runs.step()) {
           const int run = runs.integer(0);
@@ -747,6 +768,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
             r.best_genome = runs.doubles(7);
             if (!runs.is_null(8)) r.best_tree = runs.text(8);
             if (!runs.is_null(9)) r.best_behavior = runs.text(9);
+            if (!runs.is_null(10)) r.stopped = runs.text(10);
             r.transfer = std::move(transfer);
             auto u = db_.prepare("SELECT steps FROM behavior_usage WHERE controller_id = ? AND run = ? ORDER BY action_idx");
             u.bind(1, c.id).bind(2, run);
@@ -782,6 +804,15 @@ std::vector<StoredExperiment> ResultsDb::load() {
   } catch (const nlohmann::json::exception& e) {
     throw StoreError(fmt::format("{} is damaged: {}", file_.string(), e.what()));
   }
+}
+
+std::string ResultsDb::algorithm_before_7(const StoredController& c) {
+  if (schema_version_ == 6) {   // the algorithm that saved a run's state
+    auto q = db_.prepare("SELECT algorithm FROM optimizer_state WHERE controller_id = ? LIMIT 1");
+    q.bind(1, c.id);
+    if (q.step()) return q.text(0);
+  }
+  return c.head == "tree" ? "gp" : "es";   // before schema 6, only the ES and GP
 }
 
 eval::OptimizerState ResultsDb::load_state(const StoredController& c, int run) {

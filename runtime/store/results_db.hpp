@@ -34,8 +34,9 @@ inline constexpr const char* kDependencyCache = "deps";
 // (analysis_tables.hpp: behavior usage per generation, choices, transfers), and a finished
 // run keeps its state. An older database opened for writing is upgraded.
 // 5: a checksum on every row (row_checksum.hpp). 6: every optimizer's state in one table,
-// and its metrics per generation (optimizer_tables.hpp).
-inline constexpr int kSchemaVersion = 6;
+// and its metrics per generation (optimizer_tables.hpp). 7: the algorithm that evolves each
+// controller (controllers.algorithm), and why a run's search ended early (runs.stopped).
+inline constexpr int kSchemaVersion = 7;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -87,6 +88,9 @@ struct StoredController {
   std::string head;                       // "classical", "symbolic", "supervisor" or "tree"
   std::vector<std::string> actions;       // what usage counts: action or behavior names
   std::vector<control::Choice> choices;   // the same, with library and mark (schema 3; else empty)
+  // What evolved it: an algorithm's name (evo::Algorithm), or `evaluate` for a controller
+  // only evaluated; for a database older than schema 7, `gp` for a tree and `es` otherwise.
+  std::string algorithm;
   std::vector<eval::RunResult> finished;  // in run order
   std::vector<eval::RunState> in_progress;
   std::optional<StoredReplay> replay;     // the best run's best evaluation, if traced
@@ -199,6 +203,8 @@ class ResultsDb {
   // What run `run` of `c` continues from: the ES parents or the GP population, whichever
   // table holds it. Throws StoreError when neither does or the stored state is damaged.
   eval::OptimizerState load_state(const StoredController& c, int run);
+  // What evolved `c` in a database older than schema 7, which does not say.
+  std::string algorithm_before_7(const StoredController& c);
   void upgrade();   // to kSchemaVersion
   bool column_exists(const std::string& table, const std::string& column);
 

@@ -67,6 +67,7 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
       // Evaluations whose fitness saturated at +-1e300 (docs/language.md), over the run.
       run["saturated_evaluations"] = saturated;
       if (!r.best_tree.empty()) run["best_tree"] = r.best_tree;   // tree controllers, as script code
+      if (!r.stopped.empty()) run["stopped"] = r.stopped;         // the search ended early
       // Steps per action or behavior in the run's best evaluation (symbolic heads, supervisors).
       if (!r.action_usage.empty() && r.action_usage.size() == c.choices.size()) {
         nlohmann::ordered_json usage = nlohmann::ordered_json::object();

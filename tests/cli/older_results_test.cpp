@@ -1,7 +1,7 @@
 // Results written by the esc before optimizers became components (results schema 5: the ES's
 // parents and GP's trees each in a table of their own), kept as tests/store/data/schema5:
-// they still export as they did, report, and carry on to the run the current esc makes
-// from the start (README there says how the directory was made).
+// they still export as they did (with the algorithm of each row added), report, and carry on
+// to the run the current esc makes from the start (README there says how it was made).
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -24,11 +24,16 @@ fs::path copy_of_schema5(const std::string& name) {
   return dir;
 }
 
-// CSV lines without their last field (the directory, which depends on where it was read).
-std::string without_directory(const std::string& csv) {
+// The first 14 fields of each CSV line: the export's columns up to the directory (which
+// depends on where it was read), no field holding a comma.
+std::string before_directory(const std::string& csv) {
   std::stringstream in(csv);
   std::string out;
-  for (std::string line; std::getline(in, line);) out += line.substr(0, line.rfind(',')) + "\n";
+  for (std::string line; std::getline(in, line);) {
+    std::size_t at = 0;
+    for (int i = 0; i < 14 && at != std::string::npos; ++i) at = line.find(',', at + 1);
+    out += line.substr(0, at) + "\n";
+  }
   return out;
 }
 
@@ -36,7 +41,15 @@ TEST(OlderResults, ASchema5DirectoryExportsAsItDidAndReports) {
   const fs::path dir = copy_of_schema5("schema5-read");
   const Outcome exported = esc("export " + dir.string() + " --format csv");
   ASSERT_EQ(exported.status, 0) << exported.output;
-  EXPECT_EQ(without_directory(exported.output), without_directory(slurp(kData / "schema5-export.csv")));
+  // As it did, then the algorithm: the ES for the network, GP for the tree.
+  EXPECT_EQ(before_directory(exported.output), before_directory(slurp(kData / "schema5-export.csv")));
+  EXPECT_NE(exported.output.find(",SC_8_14_6,1,"), std::string::npos);
+  std::stringstream rows(exported.output);
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_TRUE(line.ends_with(",directory,algorithm")) << line;
+  while (std::getline(rows, line))
+    EXPECT_TRUE(line.ends_with(line.find(",GP_SC,") != std::string::npos ? ",gp" : ",es")) << line;
   const Outcome report = esc("report " + dir.string() + " --out " + (dir / "report" / "report.html").string());
   EXPECT_EQ(report.status, 0) << report.output;
   EXPECT_TRUE(fs::exists(dir / "report" / "report.html"));

@@ -161,9 +161,9 @@ TEST(Study, ExportAndReportTakeSeveralDirectories) {
   const Outcome csv = esc("export " + study.string() + " " + plain.string() + " --format csv");
   ASSERT_EQ(csv.status, 0) << csv.output;
   EXPECT_EQ(csv.output.rfind("experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,"
-                             "seconds,condition,study,directory\n", 0), 0U);
-  EXPECT_NE(csv.output.find(",time_constant=200ms,tiny_study_fewer," + study.string() + "\n"), std::string::npos);
-  EXPECT_NE(csv.output.find(",tiny,," + plain.string() + "\n"), std::string::npos);
+                             "seconds,condition,study,directory,algorithm\n", 0), 0U);
+  EXPECT_NE(csv.output.find(",time_constant=200ms,tiny_study_fewer," + study.string() + ",es\n"), std::string::npos);
+  EXPECT_NE(csv.output.find(",tiny,," + plain.string() + ",es\n"), std::string::npos);
   // 3 conditions and one experiment, 2 controllers x 2 runs x 2 generations each.
   EXPECT_EQ(std::count(csv.output.begin(), csv.output.end(), '\n'), 1 + 4 * 8);
   const json j = json::parse(esc("export " + study.string() + " " + plain.string() + " --format json").output);

@@ -1,0 +1,118 @@
+// Which algorithm evolves which controller: `evolve NAME(...)`, `compare C by NAME`,
+// `--set networks=NAME` and `--set NAME.KEY` (CMA-ES here, as the first algorithm beyond the
+// paper's ES and GP); the errors are in tests/bad/.
+#include <gtest/gtest.h>
+
+#include "compiler/algorithm_options.hpp"
+#include "helpers.hpp"
+#include "runtime/evo/cmaes/cmaes.hpp"
+
+namespace esc::compiler {
+namespace {
+
+using test::options;
+using test::paper;
+using test::rendered;
+
+constexpr const char* kHead =
+    "arena a { size 1m x 1m }\n"
+    "fitness f { step: speed }\n"
+    "controller c = mlp(ir[0..7] -> wheels)\n"
+    "controller d = symbolic(mlp(ir[0..7]), actions [forward, left, right])\n"
+    "import \"lib/khepera.esc\"\n";
+
+eval::ExperimentSpec compiled(const std::string& experiment) {
+  const CompileResult r = compile_source(std::string(kHead) + experiment, "algorithms.esc", options());
+  EXPECT_TRUE(r.ok()) << rendered(r);
+  return r.ok() ? r.experiments.at(0) : eval::ExperimentSpec{};
+}
+
+std::string algorithm_of(const eval::ExperimentSpec& x, std::size_t i) {
+  return std::string(x.evolution_of(x.controllers.at(i)).algorithm->name);
+}
+
+const evo::CmaesSettings& cmaes(const eval::ExperimentSpec& x) {
+  return std::any_cast<const evo::CmaesSettings&>(x.algorithm_settings.at("cmaes"));
+}
+
+TEST(Algorithms, EvolveCmaesAloneEvolvesTheNetworksWithItsOptions) {
+  const auto x = compiled("experiment e { arena a  fitness f  evolve cmaes(lambda 20, mu 5, sigma 0.3, separable, "
+                          "restarts 2) for 40 generations  compare c, d }");
+  EXPECT_EQ(algorithm_of(x, 0), "cmaes");
+  EXPECT_EQ(algorithm_of(x, 1), "cmaes");
+  EXPECT_EQ(cmaes(x).lambda, 20);
+  EXPECT_EQ(cmaes(x).mu, 5);
+  EXPECT_DOUBLE_EQ(cmaes(x).sigma, 0.3);
+  EXPECT_TRUE(cmaes(x).separable);
+  EXPECT_EQ(cmaes(x).restarts, 2);
+  EXPECT_EQ(x.es.generations, 40);   // the experiment's generations
+  EXPECT_EQ(x.evaluations_per_generation(x.controllers[0]), 20u);
+  EXPECT_EQ(x.resolved_settings.at("networks"), "cmaes");
+  EXPECT_EQ(x.resolved_settings.at("cmaes.covariance"), "separable");
+  EXPECT_EQ(x.resolved_settings.at("cmaes.lambda"), "20");
+}
+
+TEST(Algorithms, ByChoosesForOneControllerBesideTheDefault) {
+  const auto x = compiled("experiment e { arena a  fitness f  evolve es(mu 3, lambda 12)  "
+                          "compare c, c by cmaes as c_cma, d }");
+  EXPECT_EQ(algorithm_of(x, 0), "es");
+  EXPECT_EQ(algorithm_of(x, 1), "cmaes");
+  EXPECT_EQ(algorithm_of(x, 2), "es");
+  EXPECT_EQ(x.controllers[1].name, "c_cma");
+  EXPECT_EQ(cmaes(x).lambda, 0);   // its defaults: no `evolve cmaes`
+  // CMA-ES's default population for c's 18 weights: 4 + floor(3 ln 18) = 12.
+  EXPECT_EQ(x.evaluations_per_generation(x.controllers[1]), 12u);
+  EXPECT_EQ(x.resolved_settings.count("networks"), 0u);
+  EXPECT_EQ(x.resolved_settings.at("cmaes.lambda"), "0");
+}
+
+// The paper's scripts name no new algorithm: nothing of one appears in their settings, so
+// their runs and dependency caches keep their fingerprints.
+TEST(Algorithms, ThePaperScriptsResolveAsBefore) {
+  const eval::ExperimentSpec x = paper();
+  EXPECT_TRUE(x.algorithm_settings.empty());
+  for (const auto& [key, value] : x.resolved_settings) {
+    EXPECT_FALSE(key.starts_with("cmaes.")) << key;
+    EXPECT_NE(key, "networks");
+  }
+  for (const auto& c : x.controllers) EXPECT_EQ(x.evolution_of(c).algorithm->name, "es");
+}
+
+TEST(Algorithms, SetNetworksAndCmaesKeys) {
+  eval::ExperimentSpec x = paper();
+  EXPECT_EQ(apply_settings(x, {{"cmaes.lambda", "30"}, {"networks", "cmaes"}, {"cmaes.covariance", "separable"}}), "");
+  EXPECT_EQ(x.networks, "cmaes");
+  EXPECT_EQ(cmaes(x).lambda, 30);   // given before `networks`, kept
+  EXPECT_TRUE(cmaes(x).separable);
+  EXPECT_EQ(x.resolved_settings.at("networks"), "cmaes");
+  EXPECT_EQ(x.resolved_settings.at("cmaes.lambda"), "30");
+  EXPECT_EQ(apply_setting(x, "networks", "es"), "");
+  EXPECT_EQ(x.resolved_settings.count("networks"), 0u);
+  EXPECT_EQ(x.resolved_settings.count("cmaes.lambda"), 0u);   // CMA-ES evolves nothing now
+
+  eval::ExperimentSpec y = paper();
+  const auto before = y.resolved_settings;
+  std::string m = apply_setting(y, "cmaes.lamda", "30");
+  EXPECT_NE(m.find("unknown CMA-ES setting `cmaes.lamda`; did you mean `cmaes.lambda`?"), std::string::npos) << m;
+  m = apply_setting(y, "networks", "gp");
+  EXPECT_NE(m.find("networks"), std::string::npos) << m;
+  m = apply_settings(y, {{"networks", "cmaes"}, {"cmaes.lambda", "10"}, {"cmaes.mu", "9"}});
+  EXPECT_NE(m.find("impossible CMA-ES settings"), std::string::npos) << m;
+  EXPECT_EQ(y.resolved_settings, before);
+  EXPECT_EQ(y.networks, "es");
+}
+
+TEST(Algorithms, EveryFurtherAlgorithmIsRegisteredAndHasItsKeys) {
+  for (const AlgorithmOptions& a : further_algorithms()) {
+    const evo::Algorithm* r = evo::find_algorithm(a.name);
+    ASSERT_NE(r, nullptr) << a.name;
+    EXPECT_FALSE(a.keys().empty());
+    for (const std::string& k : a.keys()) EXPECT_TRUE(a.has_key(k)) << a.name << "." << k;
+    std::map<std::string, std::string> resolved;
+    a.resolve(a.defaults(), resolved);
+    EXPECT_EQ(resolved.size(), a.keys().size());
+  }
+}
+
+}  // namespace
+}  // namespace esc::compiler
