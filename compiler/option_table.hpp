@@ -17,6 +17,7 @@
 #include "compiler/quantities.hpp"
 #include "compiler/setting_values.hpp"
 #include "compiler/sink.hpp"
+#include "runtime/evo/algorithm_options.hpp"
 #include "runtime/evo/limits.hpp"
 
 namespace esc::compiler {
@@ -35,6 +36,8 @@ struct OptionRow {
   // False for the ES's `generations`: `--set generations` and the resolved `generations`
   // are the experiment's, for the ES and the GP alike.
   bool own_key = true;
+  // The algorithm's own row, where the table is read from its folder (algorithm_options.hpp).
+  const evo::AlgorithmOption* option = nullptr;
 };
 
 // A whole number of at least Min into an int field; its text.
@@ -152,11 +155,12 @@ std::vector<std::string> option_keys(const std::vector<OptionRow<Settings>>& tab
 
 // `evolve METHOD(OPTIONS) [for N generations]` into `s`: reports an unknown option (with
 // "did you mean"), one whose setting is already given, one written with the wrong shape,
-// and each value its row refuses. `what` names the group in messages ("ES").
+// and each value its row refuses. `what` names the group in messages ("ES"); `defaults`
+// gives the example shown for a value written with the wrong shape.
 template <class Settings>
 void read_options(const ast::ExpItem& item, std::string_view method, std::string_view what,
-                  const std::vector<OptionRow<Settings>>& table, Settings& s, Sink& sink) {
-  const Settings defaults;
+                  const std::vector<OptionRow<Settings>>& table, Settings& s, Sink& sink,
+                  const Settings& defaults = Settings{}) {
   std::map<const OptionRow<Settings>*, const ast::EsOption*> seen;
   for (const ast::EsOption& o : item.options) {
     const std::string& n = o.name.text;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/evo/algorithm_options.hpp"
 #include "runtime/evo/optimizer.hpp"
 
 namespace esc::evo {
@@ -27,6 +28,13 @@ struct Algorithm {
   std::size_t (*population)(const std::any& settings, std::size_t genome_size) = nullptr;
   // Bytes one run's optimizer holds at once, at least (the campaign's memory check).
   double (*memory_bytes)(const std::any& settings, std::size_t genome_size) = nullptr;
+  // Its options as scripts write them, its default settings, and why settings cannot run on
+  // a network of `genome_size` weights ("" when they can). Null for the paper's ES and GP,
+  // whose options the compiler keeps in tables of their own (their historic keys).
+  std::string_view what = {};     // in messages: "CMA-ES"
+  const std::vector<AlgorithmOption>& (*options)() = nullptr;
+  std::any (*defaults)() = nullptr;
+  std::string (*problem)(const std::any& settings, std::size_t genome_size) = nullptr;
 };
 
 [[nodiscard]] const std::vector<Algorithm>& algorithms();

@@ -16,9 +16,6 @@ namespace {
 
 constexpr int kMaxLambda = 1'000'000;
 constexpr int kMaxRestarts = 20;  // a population 2^20 times the first is far beyond any budget
-// Beyond about 1e16 the eigenvalues of C are rounding noise, so the condition stop cannot be
-// put off further.
-constexpr double kMaxCondition = 1e16;
 constexpr std::string_view kFormat = "esc-cmaes";
 constexpr std::uint32_t kVersion = 1;
 
