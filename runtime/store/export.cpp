@@ -96,6 +96,20 @@ json export_json(const std::vector<StoredDirectory>& directories) {
   return {{"format", "esc results"}, {"schema_version", kSchemaVersion}, {"experiments", exps}};
 }
 
+void for_each_run(const std::vector<StoredDirectory>& directories,
+                  const std::function<void(const StoredExperiment&, const std::string&, const StoredController&, int,
+                                           const std::vector<eval::GenerationStats>&)>& f) {
+  static const std::string kNone;
+  for (const StoredDirectory& d : directories)
+    for (const StoredExperiment& e : d.experiments) {
+      const std::string& condition = e.condition ? e.condition->name : kNone;
+      for (const StoredController& c : e.controllers) {
+        for (const eval::RunResult& r : c.finished) f(e, condition, c, r.run, r.generations);
+        for (const eval::RunState& s : c.in_progress) f(e, condition, c, s.run, s.generations);
+      }
+    }
+}
+
 std::string export_csv(const std::vector<StoredDirectory>& directories) {
   std::string out =
       "experiment,controller,run,run_seed,status,generation,best,mean,sd,evaluations,steps,seconds,condition,study,"

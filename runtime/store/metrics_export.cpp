@@ -24,19 +24,11 @@ struct MetricRow {
 // Every row, in directory, experiment, controller, run (finished ones first, as stored),
 // generation and metric order.
 void for_each_row(const std::vector<StoredDirectory>& directories, const std::function<void(const MetricRow&)>& f) {
-  static const std::string kNone;
-  for (const StoredDirectory& d : directories)
-    for (const StoredExperiment& e : d.experiments) {
-      const std::string& condition = e.condition ? e.condition->name : kNone;
-      for (const StoredController& c : e.controllers) {
-        const auto rows = [&](int run, const std::vector<eval::GenerationStats>& generations) {
-          for (const eval::GenerationStats& g : generations)
-            for (const evo::Metric& m : g.metrics) f({e.name, condition, c.name, c.algorithm, run + 1, g.generation, m});
-        };
-        for (const eval::RunResult& r : c.finished) rows(r.run, r.generations);
-        for (const eval::RunState& s : c.in_progress) rows(s.run, s.generations);
-      }
-    }
+  for_each_run(directories, [&](const StoredExperiment& e, const std::string& condition, const StoredController& c,
+                                int run, const std::vector<eval::GenerationStats>& generations) {
+    for (const eval::GenerationStats& g : generations)
+      for (const evo::Metric& m : g.metrics) f({e.name, condition, c.name, c.algorithm, run + 1, g.generation, m});
+  });
 }
 
 }  // namespace

@@ -28,23 +28,15 @@ struct UsageRow {
 // generation and behavior order.
 void for_each_row(const std::vector<StoredDirectory>& directories, const std::function<void(const UsageRow&)>& f) {
   static const std::string kNone;
-  for (const StoredDirectory& d : directories)
-    for (const StoredExperiment& e : d.experiments) {
-      const std::string& condition = e.condition ? e.condition->name : kNone;
-      for (const StoredController& c : e.controllers) {
-        const auto rows = [&](int run, const std::vector<eval::GenerationStats>& generations) {
-          for (const eval::GenerationStats& g : generations)
-            for (std::size_t i = 0; i < g.usage.best.size() && i < g.usage.mean.size() && i < c.actions.size(); ++i) {
-              const control::Choice* choice = i < c.choices.size() ? &c.choices[i] : nullptr;
-              f({e.name, condition, c.name, run + 1, g.generation, c.actions[i], g.usage.best[i], g.usage.mean[i],
-                 g.usage.steps_total, choice != nullptr ? choice->library : kNone,
-                 choice != nullptr && choice->useless});
-            }
-        };
-        for (const eval::RunResult& r : c.finished) rows(r.run, r.generations);
-        for (const eval::RunState& s : c.in_progress) rows(s.run, s.generations);
+  for_each_run(directories, [&](const StoredExperiment& e, const std::string& condition, const StoredController& c,
+                                int run, const std::vector<eval::GenerationStats>& generations) {
+    for (const eval::GenerationStats& g : generations)
+      for (std::size_t i = 0; i < g.usage.best.size() && i < g.usage.mean.size() && i < c.actions.size(); ++i) {
+        const control::Choice* choice = i < c.choices.size() ? &c.choices[i] : nullptr;
+        f({e.name, condition, c.name, run + 1, g.generation, c.actions[i], g.usage.best[i], g.usage.mean[i],
+           g.usage.steps_total, choice != nullptr ? choice->library : kNone, choice != nullptr && choice->useless});
       }
-    }
+  });
 }
 
 }  // namespace
