@@ -45,6 +45,20 @@ TEST(Mpi, ThreeRanksGiveTheSameSummaryAsOneProcess) {
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
 }
 
+// Any optimizer: every rank asks the same candidates of the same state.
+TEST(Mpi, ThreeRanksGiveOneProcesssCmaesRuns) {
+  const fs::path one = scratch("mpi-cmaes-1");
+  const fs::path three = scratch("mpi-cmaes-3");
+  const std::string args = "run " + tiny() + " --seed 5 --set networks=cmaes --out ";
+  const Outcome a = esc(args + one.string() + " --threads 1");
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + three.string() + " --threads 1");
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_EQ(slurp(one / "summary.json"), slurp(three / "summary.json"));
+  EXPECT_EQ(esc("export " + one.string() + " --table metrics").output,
+            esc("export " + three.string() + " --table metrics").output);
+}
+
 TEST(Mpi, AStudyUnderThreeRanksGivesOneProcesssResults) {
   const fs::path one = scratch("mpi-study-1");
   const fs::path three = scratch("mpi-study-3");
