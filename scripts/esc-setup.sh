@@ -18,7 +18,7 @@ PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr
           libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev   # uuid-dev: the ANTLR runtime links -luuid
           libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
-          libgtest-dev python3 chromium                                                        # tests
+          libgtest-dev python3 chromium file                                                   # tests (file: cpack -G DEB)
           clang libclang-rt-14-dev)                                                            # ESC_WITH_FUZZ
 
 install_missing() {
@@ -34,9 +34,14 @@ install_missing() {
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# `demo` builds esc alone (the tests, benchmarks and fuzz targets are for `test`).
 build() {
   cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
-  cmake --build "$BUILD_DIR" -j "$JOBS"
+  if [ "$mode" = demo ]; then
+    cmake --build "$BUILD_DIR" -j "$JOBS" --target esc
+  else
+    cmake --build "$BUILD_DIR" -j "$JOBS"
+  fi
 }
 
 install_missing
