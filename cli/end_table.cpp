@@ -115,7 +115,7 @@ void print_comparisons(const std::vector<std::vector<double>>& samples,
 std::string generations_text(const eval::ExperimentSpec& spec) {
   int es = -1, gp = -1;
   for (const auto& c : spec.controllers) (c.is_tree() ? gp : es) = spec.generations_for(c);
-  if (es >= 0 && gp >= 0 && es != gp) return fmt::format("{} (ES) / {} (GP) generations", es, gp);
+  if (es >= 0 && gp >= 0 && es != gp) return fmt::format("{} (networks) / {} (GP) generations", es, gp);
   return fmt::format("{} generations", spec.max_generations());
 }
 

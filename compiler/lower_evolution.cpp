@@ -71,7 +71,6 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
         x.networks = name;
         break;
       }
-  x.evolved_by.assign(x.controllers.size(), std::string());
   for (std::size_t i = 0; i < x.controllers.size() && i < by.size(); ++i) {
     const ast::Name& name = *by[i];
     if (name.text.empty()) continue;
@@ -88,7 +87,26 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
                                       quoted_list(names_that(c.is_tree()))));
       continue;
     }
-    x.evolved_by[i] = name.text;
+    x.controllers[i].evolved_by = name.text;
+  }
+  // The experiment's generations, given once: by the ES or by one other algorithm.
+  const auto generations_of = [](const ast::ExpItem* item) -> const SourceRange* {
+    if (item == nullptr) return nullptr;
+    if (item->generations) return &item->generations->where;
+    for (const ast::EsOption& o : item->options)
+      if (o.name.text == "generations") return &o.where;
+    return nullptr;
+  };
+  const SourceRange* first = generations_of(items.es);
+  for (const std::string& name : items.further_order) {
+    const SourceRange* here = generations_of(items.further.at(name));
+    if (here == nullptr) continue;
+    if (first == nullptr) {
+      first = here;
+      continue;
+    }
+    sink.error(*here, "the experiment's number of generations is already given")
+        .notes.emplace_back(*first, "first given here");
   }
   if (x.evaluates_only()) return;
   // Every algorithm in use has its settings (its defaults when no `evolve` gives them); an

@@ -31,8 +31,8 @@ struct EvolveItems {
 // generations` into the experiment's generations); a second one of the same name reported.
 void lower_further_evolve(const ast::ExpItem& item, eval::ExperimentSpec& x, EvolveItems& items, Sink& sink);
 
-// Chooses the algorithm of every compared controller (x.evolved_by from `by`, x.networks
-// from the `evolve` items) and reports what does not fit; `compared[i]` and `by[i]` are the
+// Chooses the algorithm of every compared controller (ControllerSpec::evolved_by from `by`,
+// x.networks from the `evolve` items) and reports what does not fit; `compared[i]` and `by[i]` are the
 // names `compare` wrote for x.controllers[i] (`by[i]` empty text when none).
 void choose_algorithms(const ast::ExperimentDecl& d, eval::ExperimentSpec& x,
                        const std::vector<const ast::Name*>& compared, const std::vector<const ast::Name*>& by,

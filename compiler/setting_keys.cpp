@@ -201,7 +201,8 @@ void resolve_settings(eval::ExperimentSpec& spec) {
     r[std::string(kRobotGroup).append(s.name)] = robot_value_text(s, spec.robot);
   r["fitness"] = spec.fitness.name;
   std::string names;
-  for (const auto& c : spec.controllers) names += (names.empty() ? "" : ", ") + c.name;
+  for (const auto& c : spec.controllers)
+    names += (names.empty() ? "" : ", ") + c.name + (c.evolved_by.empty() ? "" : " by " + c.evolved_by);
   r["compare"] = names;
   resolve_gp_settings(spec);
   // Another algorithm's settings where it evolves a compared controller, only: a run from

@@ -6,7 +6,8 @@
 DIR is a finished run of a study such as experiments/studies/es_vs_cmaes.esc. For each
 condition and controller: the runs' best fitness (mean, sd, median, best and worst run),
 and how fast the mean over runs of each run's best so far rose: the first generation at
-which it reached 50%, 90% and 99% of its final value. The statistics between controllers and
+which it reached 50%, 90% and 99% of its final value (a run its optimizer stopped early keeps
+its best so far to the end). The statistics between controllers and
 between conditions (Welch, Mann-Whitney, A12, Holm) are what `esc run` prints at the end of
 the study and the report shows; this table adds what they do not: the speed.
 """
@@ -25,7 +26,8 @@ def rows(summary):
         for name, controller in condition["controllers"].items():
             runs = controller["runs"]
             best = [r["best_fitness"] for r in runs]
-            length = min(len(r["best"]) for r in runs)
+            # A run its optimizer stopped early keeps its best so far to the end.
+            length = max(len(r["best"]) for r in runs)
             so_far = [statistics.mean(max(r["best"][: g + 1]) for r in runs) for g in range(length)]
             final = so_far[-1]
             reached = [next(g for g, v in enumerate(so_far) if v >= q * final) for q in (0.5, 0.9, 0.99)]

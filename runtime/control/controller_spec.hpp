@@ -96,6 +96,9 @@ struct ControllerSpec {
   // Shared and immutable: copies of the spec share one set.
   std::shared_ptr<const evo::gp::PrimitiveSet> primitives;
   std::string primitives_name;                 // the script's `primitives` declaration
+  // The algorithm a compared controller's `by` names (evo::Algorithm::name); empty: the
+  // experiment's default for its kind (ExperimentSpec::evolution_of).
+  std::string evolved_by;
   // One per choice_names() entry, in order, when the compiler built the spec; may be empty
   // (then no choice has an id: `using(B)` reads 0).
   std::vector<Choice> choices;

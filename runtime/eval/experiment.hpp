@@ -99,7 +99,7 @@ struct ExperimentSpec {
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;
   std::uint64_t seed = 1;
-  evo::EsSettings es;                 // evolves the networks
+  evo::EsSettings es;                 // the ES's settings, and the experiment's generations
   // `evolve gp(...)`: evolves the tree controllers (the compiler requires it when one is
   // compared). Its primitive set is each tree controller's own.
   std::optional<evo::gp::GpSettings> gp;
@@ -108,8 +108,6 @@ struct ExperimentSpec {
   std::map<std::string, std::any> algorithm_settings;
   // What evolves the networks compared without `by` (`--set networks=cmaes`).
   std::string networks{kEs};
-  // Per compared controller, the algorithm its `by` names; empty: the default above.
-  std::vector<std::string> evolved_by;
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
   // Distinct choice ids over the compared controllers (control::Choice::id is below it): the
   // counts an end term can read.
@@ -136,10 +134,7 @@ struct ExperimentSpec {
   // The algorithm that evolves `c`: the one its `by` names, else `networks` for a network
   // and GP for a tree; with its settings (`es`, `gp`, or algorithm_settings).
   [[nodiscard]] Evolution evolution_of(const control::ControllerSpec& c) const {
-    const auto i = static_cast<std::size_t>(&c - controllers.data());
-    const std::string& by = i < evolved_by.size() && !evolved_by[i].empty() ? evolved_by[i]
-                            : c.is_tree()                                  ? kGp
-                                                                           : networks;
+    const std::string& by = !c.evolved_by.empty() ? c.evolved_by : c.is_tree() ? kGp : networks;
     Evolution e{evo::find_algorithm(by), {}};
     if (by == kEs) e.settings = es;
     else if (by == kGp) e.settings = gp ? std::any(*gp) : std::any();

@@ -35,6 +35,8 @@ class Writer {
     line(key, fmt::format("{} head {} kind {} activation {} inputs {} hidden {}", c.name, static_cast<int>(c.head),
                           static_cast<int>(c.mlp.kind), static_cast<int>(c.mlp.hidden_activation),
                           fmt::join(c.mlp.inputs, ","), fmt::join(c.mlp.hidden, ",")));
+    // Only where given, so that controllers without `by` keep their fingerprints.
+    if (!c.evolved_by.empty()) line(key + ".by", c.evolved_by);
     if (c.primitives)
       for (const evo::gp::Primitive& p : c.primitives->primitives())
         line(key + ".primitive",

@@ -40,9 +40,14 @@ struct Made {
 Made make_optimizer(const ExperimentSpec& spec, const control::ControllerSpec& controller, const evo::Problem& problem) {
   if (spec.evaluates_only()) return {evo::make_evaluate_only(problem), {std::string(evo::kEvaluateOnly), 1, {}}};
   const Evolution evolution = spec.evolution_of(controller);
-  if (controller.is_tree() && !evolution.settings.has_value())
-    throw std::invalid_argument("tree controller '" + controller.name + "' is compared, but experiment '" +
-                                spec.name + "' has no GP settings");
+  if (evolution.algorithm == nullptr)
+    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name + "': no algorithm `" +
+                                controller.evolved_by + "`");
+  if (!evolution.settings.has_value())
+    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name + "' is compared, but "
+                                "experiment '" + spec.name + "' has no " +
+                                (controller.is_tree() ? std::string("GP") : std::string(evolution.algorithm->name)) +
+                                " settings");
   const evo::Algorithm& a = *evolution.algorithm;
   return {a.make(evolution.settings, problem), {std::string(a.name), a.state_format, {}}};
 }
@@ -59,7 +64,9 @@ RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& contro
                              state_.seed, start != nullptr ? &start->genome : nullptr};
   Made made = make_optimizer(spec, controller, problem);
   optimizer_ = std::move(made.optimizer);
-  if (from == nullptr || from->generations.empty()) {
+  // A run that only evaluates has no state to go on from (and one stored by an esc before
+  // schema 6 is its ES's or GP's).
+  if (from == nullptr || from->generations.empty() || spec.evaluates_only()) {
     state_.optimizer = std::move(made.empty_state);
     state_.optimizer.bytes = optimizer_->save();
     return;

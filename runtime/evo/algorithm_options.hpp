@@ -55,13 +55,14 @@ std::string whole_text(const std::any& s) {
   return std::to_string(std::any_cast<const S&>(s).*Field);
 }
 
-// A number in [*Min, *Max] (or (0, *Max] when Positive) into a double field.
-template <class S, double S::*Field, bool Positive, const double* Min, const double* Max>
+// A number between *Min and *Max into a double field; each end excluded when its flag says.
+template <class S, double S::*Field, const double* Min, bool AboveMin, const double* Max, bool BelowMax>
 std::string real(std::any& s, const OptionValue& v) {
-  const bool low_ok = Positive ? v.number > *Min : v.number >= *Min;
-  if (!(low_ok && v.number <= *Max))
-    return fmt::format("must be in {}{}, {}], found {}", Positive ? "(" : "[", number(*Min), number(*Max),
-                       number(v.number));
+  const bool low_ok = AboveMin ? v.number > *Min : v.number >= *Min;
+  const bool high_ok = BelowMax ? v.number < *Max : v.number <= *Max;
+  if (!(low_ok && high_ok))
+    return fmt::format("must be in {}{}, {}{}, found {}", AboveMin ? "(" : "[", number(*Min), number(*Max),
+                       BelowMax ? ")" : "]", number(v.number));
   std::any_cast<S&>(s).*Field = v.number;
   return {};
 }

@@ -1,7 +1,7 @@
 #pragma once
 // An optimizer: what evolves the genomes of one run, whatever the algorithm (the paper's
 // ES, GP, CMA-ES, ...), behind one ask/tell interface (as pycma's, or pagmo2's algorithm
-// against its problem). The run loop (runtime/eval/optimizer_run.cpp) asks for a
+// against its problem). The run loop (runtime/eval/run_job.cpp) asks for a
 // generation's candidates, evaluates them anywhere (threads, MPI ranks, pooled with other
 // runs), tells the optimizer what each measured, and stores its whole state after every
 // generation, so that any optimizer is resumable after a kill and carried on to more

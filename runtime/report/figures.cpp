@@ -27,7 +27,8 @@ std::vector<double> best_fitness(const store::StoredController& c) {
 }
 
 // Over the finished runs, generation by generation: the maximum and the mean (with sd) of
-// each generation's best, and the mean of each run's best so far.
+// each generation's best, and the mean of each run's best so far (a run its optimizer
+// stopped early keeps its best so far after its last generation).
 struct Curves {
   std::vector<double> x, max, mean, lo, hi, so_far;
 };
@@ -41,9 +42,12 @@ Curves curves(const store::StoredController& c) {
     std::vector<double> best, so_far;
     for (std::size_t r = 0; r < c.finished.size(); ++r) {
       const auto& gens = c.finished[r].generations;
-      if (g >= gens.size()) continue;
-      best.push_back(gens[g].best);
-      running[r] = std::max(running[r], gens[g].best);
+      if (g < gens.size()) {
+        best.push_back(gens[g].best);
+        running[r] = std::max(running[r], gens[g].best);
+      } else if (c.finished[r].stopped.empty()) {
+        continue;
+      }
       so_far.push_back(running[r]);
     }
     const Summary s = summarise(best);

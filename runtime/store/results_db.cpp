@@ -519,7 +519,12 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     if (verdict != "ok") throw StoreError(fmt::format("{} is damaged: {}", file.string(), verdict));
     if (!read_only) r.db_.exec("PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
     r.schema_version_ = static_cast<int>(version);
-    if (!read_only && version < kSchemaVersion) r.upgrade();
+    if (!read_only && version < kSchemaVersion) {
+      // An upgrade reseals the rows of the tables it adds columns to: they must be as
+      // written first (older schemas carry no checksums to check).
+      if (version >= 5) verify_rows(r.db_, file);
+      r.upgrade();
+    }
     r.has_saturated_ = r.column_exists("generations", "saturated");
     auto ex = r.db_.prepare("SELECT id FROM experiments ORDER BY id LIMIT 1");
     if (!ex.step()) throw nothing();
@@ -558,6 +563,9 @@ void ResultsDb::upgrade() {
   if (schema_version_ < 6) tables("CREATE TABLE optimizer_state", "CREATE TABLE studies");   // optimizers
   if (schema_version_ < 7) {   // each controller's algorithm, a run's early stop
     db_.exec("ALTER TABLE controllers ADD COLUMN algorithm TEXT; ALTER TABLE runs ADD COLUMN stopped TEXT;");
+    if (schema_version_ == 6)   // the algorithm that saved each controller's run states
+      db_.exec("UPDATE controllers SET algorithm = (SELECT s.algorithm FROM optimizer_state s "
+               "WHERE s.controller_id = controllers.id LIMIT 1);");
     // Their rows' checksums covered the columns they had (an older schema's are sealed below).
     if (schema_version_ >= 5) {
       seal_table(db_, "controllers");
@@ -877,7 +885,8 @@ eval::ResumePoint ResultsDb::resume_point(const StoredExperiment& stored, const 
     const std::size_t asked =
         compared == spec.controllers.end() ? 0 : static_cast<std::size_t>(spec.generations_for(*compared));
     for (const auto& f : c.finished) {
-      if (f.generations.size() >= asked) {
+      // A run its optimizer stopped early is finished however many generations are asked.
+      if (f.generations.size() >= asked || !f.stopped.empty()) {
         p.finished.push_back({c.name, f});
         continue;
       }

@@ -200,8 +200,9 @@ class ResultsDb {
   // The study condition `e` is, if any.
   void load_condition(StoredExperiment& e);
   std::int64_t controller_id(const std::string& name);
-  // What run `run` of `c` continues from: the ES parents or the GP population, whichever
-  // table holds it. Throws StoreError when neither does or the stored state is damaged.
+  // What run `run` of `c` continues from: its optimizer's state (table optimizer_state; for a
+  // run an esc before schema 6 left, its ES parents or GP population converted). Throws
+  // StoreError when there is none or the stored state is damaged.
   eval::OptimizerState load_state(const StoredController& c, int run);
   // What evolved `c` in a database older than schema 7, which does not say.
   std::string algorithm_before_7(const StoredController& c);

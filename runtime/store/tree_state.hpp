@@ -3,9 +3,8 @@
 // schema 6 keeps every optimizer's in optimizer_tables.hpp), read back as the GP optimizer's
 // state: the number of individuals and one BLOB of doubles with,
 // per individual, its fitness, its node count, then per node in postfix order the primitive
-// id, arity, type, subtree length and value. Every field of every node is kept, so trees come
-// back bit for bit without the script's primitive set (the campaign checks them against it
-// when it resumes).
+// id, arity, type, subtree length and value; converted to GP's state (trees encoded), which
+// the GP optimizer decodes with the script's primitive set when the run resumes.
 #include <cstddef>
 #include <cstdint>
 #include <optional>

@@ -64,6 +64,23 @@ TEST(Algorithms, ByChoosesForOneControllerBesideTheDefault) {
   EXPECT_EQ(x.evaluations_per_generation(x.controllers[1]), 12u);
   EXPECT_EQ(x.resolved_settings.count("networks"), 0u);
   EXPECT_EQ(x.resolved_settings.at("cmaes.lambda"), "0");
+  // `by` is part of what was compared (the resolved settings, so resume and the dependency
+  // cache tell the two scripts apart) and travels with the controller (`--controllers c_cma`).
+  EXPECT_EQ(x.resolved_settings.at("compare"), "c, c_cma by cmaes, d");
+  eval::ExperimentSpec alone = x;
+  alone.controllers = {x.controllers[1]};
+  EXPECT_EQ(algorithm_of(alone, 0), "cmaes");
+}
+
+TEST(Algorithms, TheExperimentsGenerationsAreGivenOnce) {
+  const CompileResult r = compile_source(
+      std::string(kHead) + "experiment e { arena a  fitness f  evolve es(mu 3, lambda 12) for 20 generations\n"
+                           "  evolve cmaes(lambda 12) for 30 generations  compare c, c by cmaes as c_cma }",
+      "generations.esc", options());
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(rendered(r).find("generations.esc:7:31: error: the experiment's number of generations is already given"),
+            std::string::npos)
+      << rendered(r);
 }
 
 // The paper's scripts name no new algorithm: nothing of one appears in their settings, so

@@ -26,13 +26,26 @@ std::vector<evo::Outcome> measure(const std::vector<evo::Genome>& candidates) {
 }
 
 struct Case {
-  const char* name;
+  std::string name;
   ExperimentSpec spec;
   std::size_t controller;
 };
 
+// Every registered algorithm on a controller it evolves: a network of the small experiment,
+// or the GP experiment's Action tree.
 std::vector<Case> cases() {
-  return {{"es", testing::small_experiment(), 0}, {"gp", testing::gp_experiment(), 1}};
+  std::vector<Case> v;
+  for (const evo::Algorithm& a : evo::algorithms()) {
+    if (a.trees) {
+      v.push_back({std::string(a.name), testing::gp_experiment(), 1});
+      continue;
+    }
+    ExperimentSpec x = testing::small_experiment();
+    x.networks = std::string(a.name);
+    if (a.defaults != nullptr) x.algorithm_settings[x.networks] = a.defaults();
+    v.push_back({std::string(a.name), std::move(x), 0});
+  }
+  return v;
 }
 
 std::unique_ptr<evo::Optimizer> make(const ExperimentSpec& spec, const control::ControllerSpec& c,

@@ -14,8 +14,6 @@ namespace esc::evo {
 
 namespace {
 
-constexpr int kMaxLambda = 1'000'000;
-constexpr int kMaxRestarts = 20;  // a population 2^20 times the first is far beyond any budget
 constexpr std::string_view kFormat = "esc-cmaes";
 constexpr std::uint32_t kVersion = 1;
 
@@ -96,18 +94,18 @@ std::size_t cmaes_default_lambda(std::size_t n) {
 
 Cmaes::Cmaes(const CmaesSettings& settings, std::size_t n) : s_(settings), n_(n) {
   require(n_ >= 1, "the dimension n must be at least 1, got 0");
-  require(s_.lambda == 0 || (s_.lambda >= 2 && s_.lambda <= kMaxLambda),
-          "lambda must be 0 (4 + floor(3 ln n)) or in [2, " + text(kMaxLambda) + "], got " + text(s_.lambda));
+  require(s_.lambda == 0 || (s_.lambda >= 2 && s_.lambda <= kCmaesMaxLambda),
+          "lambda must be 0 (4 + floor(3 ln n)) or in [2, " + text(kCmaesMaxLambda) + "], got " + text(s_.lambda));
   const std::size_t lambda = s_.lambda == 0 ? cmaes_default_lambda(n_) : static_cast<std::size_t>(s_.lambda);
   require(s_.mu == 0 || (s_.mu >= 1 && static_cast<std::size_t>(s_.mu) <= lambda / 2),
           "mu must be 0 (lambda / 2) or in [1, lambda / 2 = " + text(lambda / 2) + "], got " + text(s_.mu));
   require(std::abs(s_.lower) <= kMaxGeneBound && std::abs(s_.upper) <= kMaxGeneBound && s_.lower < s_.upper,
           "lower (" + text(s_.lower) + ") must be below upper (" + text(s_.upper) + "), both within +-1e6");
   require(s_.sigma > 0.0 && s_.sigma <= kMaxStepSize, "sigma must be in (0, 1000], got " + text(s_.sigma));
-  require(s_.restarts >= 0 && s_.restarts <= kMaxRestarts,
-          "restarts must be in [0, " + text(kMaxRestarts) + "], got " + text(s_.restarts));
+  require(s_.restarts >= 0 && s_.restarts <= kCmaesMaxRestarts,
+          "restarts must be in [0, " + text(kCmaesMaxRestarts) + "], got " + text(s_.restarts));
   require(s_.stop_sigma >= 0.0 && s_.stop_sigma < 1.0, "stop_sigma must be in [0, 1), got " + text(s_.stop_sigma));
-  require(s_.stop_condition > 1.0 && s_.stop_condition <= kMaxCondition,
+  require(s_.stop_condition > 1.0 && s_.stop_condition <= kCmaesMaxCondition,
           "stop_condition must be in (1, 1e16], got " + text(s_.stop_condition));
   require(s_.stop_flat >= 0, "stop_flat must be at least 0, got " + text(s_.stop_flat));
 
@@ -449,7 +447,7 @@ void Cmaes::load(std::span<const std::uint8_t> bytes) {
 
   if (next.stop_ != "" && next.stop_ != "stop_sigma" && next.stop_ != "stop_condition" && next.stop_ != "stop_flat")
     fail("unknown stop '" + next.stop_ + "'");
-  if (next.restarts_ < 0 || next.restarts_ > kMaxRestarts) fail("restarts out of range");
+  if (next.restarts_ < 0 || next.restarts_ > kCmaesMaxRestarts) fail("restarts out of range");
   if (next.flat_ < 0 || next.decomposed_at_ > next.updates_) fail("counters out of range");
   if (!(next.sigma_ >= 0.0) || !std::isfinite(next.sigma_)) fail("sigma is not a finite non-negative number");
   const std::size_t matrix = s_.separable ? n_ : n_ * n_;

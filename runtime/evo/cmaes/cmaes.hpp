@@ -46,9 +46,12 @@ struct CmaesSettings {
   int stop_flat = 10;            // this many generations in a row with a flat fitness; 0: never
 };
 
-// Beyond about 1e16 the eigenvalues of C are rounding noise, so the condition stop cannot be
-// put off further.
-inline constexpr double kMaxCondition = 1e16;
+// Limits of the settings: beyond about 1e16 the eigenvalues of C are rounding noise, so the
+// condition stop cannot be put off further; a population 2^20 times the first is far beyond
+// any budget.
+inline constexpr double kCmaesMaxCondition = 1e16;
+inline constexpr int kCmaesMaxLambda = 1'000'000;
+inline constexpr int kCmaesMaxRestarts = 20;
 
 // The default population for n coordinates, 4 + floor(3 ln n) (48).
 [[nodiscard]] std::size_t cmaes_default_lambda(std::size_t n);

@@ -21,12 +21,12 @@ constexpr double kOne = 1.0;
 
 const std::vector<AlgorithmOption>& cmaes_options() {
   static const std::vector<AlgorithmOption> table = {
-      {"lambda", F::Number, "candidates per generation; 0: 4 + floor(3 ln n)", {}, &whole<S, &S::lambda, 0, 1000000>,
+      {"lambda", F::Number, "candidates per generation; 0: 4 + floor(3 ln n)", {}, &whole<S, &S::lambda, 0, kCmaesMaxLambda>,
        &whole_text<S, &S::lambda>},
-      {"mu", F::Number, "parents recombined, at most lambda / 2; 0: lambda / 2", {}, &whole<S, &S::mu, 0, 500000>,
+      {"mu", F::Number, "parents recombined, at most lambda / 2; 0: lambda / 2", {}, &whole<S, &S::mu, 0, kCmaesMaxLambda / 2>,
        &whole_text<S, &S::mu>},
       {"sigma", F::Number, "initial step size, a fraction of HI - LO (> 0, at most 1000)", {},
-       &real<S, &S::sigma, true, &kZero, &kMaxStepSize>, &real_text<S, &S::sigma>},
+       &real<S, &S::sigma, &kZero, true, &kMaxStepSize, false>, &real_text<S, &S::sigma>},
       {"bounds", F::Range, "every weight stays in [LO, HI] (LO < HI, both within +-1e6)", {},
        &bounds<S, &kMaxGeneBound>, &bounds_text<S>},
       {"covariance", F::Word,
@@ -34,12 +34,13 @@ const std::vector<AlgorithmOption>& cmaes_options() {
        {"full", "separable"}, &two_words<S, &S::separable>,
        [](const std::any& s) { return std::string(std::any_cast<const S&>(s).separable ? "separable" : "full"); }},
       {"restarts", F::Number, "IPOP: restarts with the population doubled after a stop; 0: none", {},
-       &whole<S, &S::restarts, 0, 20>, &whole_text<S, &S::restarts>},
-      {"stop_sigma", F::Number, "stop when every coordinate's sd is below this fraction of HI - LO; 0: never", {},
-       &real<S, &S::stop_sigma, false, &kZero, &kOne>, &real_text<S, &S::stop_sigma>},
+       &whole<S, &S::restarts, 0, kCmaesMaxRestarts>, &whole_text<S, &S::restarts>},
+      {"stop_sigma", F::Number, "stop when every coordinate's sd is below this fraction of HI - LO (below 1); 0: never", {},
+       &real<S, &S::stop_sigma, &kZero, false, &kOne, true>, &real_text<S, &S::stop_sigma>},
       {"stop_condition", F::Number, "stop when the covariance's condition number exceeds this (at most 1e16)", {},
-       &real<S, &S::stop_condition, true, &kOne, &kMaxCondition>, &real_text<S, &S::stop_condition>},
-      {"stop_flat", F::Number, "stop after this many generations of equal best and worst fitness; 0: never", {},
+       &real<S, &S::stop_condition, &kOne, true, &kCmaesMaxCondition, false>, &real_text<S, &S::stop_condition>},
+      {"stop_flat", F::Number, "stop after this many generations in a row whose best fitness equals the fitness ranked "
+       "floor(0.1 + lambda / 4) behind it (a flat fitness); 0: never", {},
        &whole<S, &S::stop_flat, 0, 1000000000>, &whole_text<S, &S::stop_flat>},
   };
   return table;
