@@ -16,6 +16,7 @@
 #include "compiler/ast.hpp"
 #include "compiler/option_table.hpp"
 #include "compiler/sink.hpp"
+#include "runtime/eval/experiment.hpp"
 #include "runtime/evo/registry.hpp"
 
 namespace esc::compiler {
@@ -28,6 +29,10 @@ class AlgorithmOptions {
   std::string_view what;   // in messages: "CMA-ES"
 
   [[nodiscard]] std::any defaults() const { return algorithm_->defaults(); }
+  // Its settings in `x` (x.algorithm_settings[NAME]), its defaults until something sets them.
+  std::any& settings_in(eval::ExperimentSpec& x) const {
+    return x.algorithm_settings.try_emplace(std::string(name), defaults()).first->second;
+  }
   // `evolve NAME(...)`'s options into `settings` (the item's `for N generations` is the
   // experiment's, read by the caller); problems reported.
   void lower(const ast::ExpItem& item, std::any& settings, Sink& sink) const;

@@ -3,9 +3,9 @@
 #include <limits>
 
 #include "compiler/algorithm_options.hpp"
+#include "compiler/lower_evolution.hpp"
 #include "compiler/setting_values.hpp"
 #include "compiler/table_lookup.hpp"
-#include "runtime/evo/registry.hpp"
 
 namespace esc::compiler {
 
@@ -56,14 +56,11 @@ const std::vector<ExperimentSetting>& experiment_settings() {
       // Resolved only when not the ES, so that runs from before it keep their settings.
       {"networks", "the algorithm that evolves the networks compared without `by` (`es`, `cmaes`)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
-         std::vector<std::string> names;
-         for (const evo::Algorithm& a : evo::algorithms())
-           if (a.networks) names.emplace_back(a.name);
+         const std::vector<std::string> names = algorithms_for(false);
          const auto i = read_word(v, r.key, names, k);
          if (!i) return false;
          x.networks = names[*i];
-         if (const AlgorithmOptions* o = find_further_algorithm(x.networks))
-           x.algorithm_settings.try_emplace(x.networks, o->defaults());
+         if (const AlgorithmOptions* o = find_further_algorithm(x.networks)) o->settings_in(x);
          return true;
        },
        [](const X& x) { return x.networks == X::kEs ? std::string() : x.networks; }},

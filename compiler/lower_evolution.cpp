@@ -16,12 +16,6 @@ namespace {
 
 using X = eval::ExperimentSpec;
 
-std::vector<std::string> names_that(bool trees) {
-  std::vector<std::string> v;
-  for (const evo::Algorithm& a : evo::algorithms())
-    if (trees ? a.trees : a.networks) v.emplace_back(a.name);
-  return v;
-}
 
 std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "a tree controller" : "a network"; }
 
@@ -32,6 +26,22 @@ std::string algorithm_of(const X& x, std::size_t i) {
 }
 
 }  // namespace
+
+std::vector<std::string> algorithms_for(bool trees) {
+  std::vector<std::string> v;
+  for (const evo::Algorithm& a : evo::algorithms())
+    if (trees ? a.trees : a.networks) v.emplace_back(a.name);
+  return v;
+}
+
+bool in_use(const X& x, std::string_view name) {
+  if (x.evaluates_only()) return false;
+  for (const control::ControllerSpec& c : x.controllers) {
+    const evo::Algorithm* a = x.evolution_of(c).algorithm;
+    if (a != nullptr && a->name == name) return true;
+  }
+  return false;
+}
 
 std::vector<std::string> algorithm_names() {
   std::vector<std::string> v;
@@ -54,8 +64,7 @@ void lower_further_evolve(const ast::ExpItem& item, X& x, EvolveItems& items, Si
   items.further.emplace(name, &item);
   items.further_order.push_back(name);
   const AlgorithmOptions& o = *find_further_algorithm(name);
-  std::any& settings = x.algorithm_settings.try_emplace(name, o.defaults()).first->second;
-  o.lower(item, settings, sink);
+  o.lower(item, o.settings_in(x), sink);
   if (!item.generations || !item.generations->finite) return;
   if (const auto n = read_count(as_value(*item.generations), "generations", 1, std::numeric_limits<int>::max(), sink))
     x.es.generations = static_cast<int>(*n);
@@ -84,7 +93,7 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
     if (c.is_tree() ? !a->trees : !a->networks) {
       sink.error(name.where, fmt::format("`{}` cannot evolve `{}`: it is {}", name.text, c.name, kind_of(c)))
           .help.push_back(fmt::format("{} evolved by {}", c.is_tree() ? "trees are" : "networks are",
-                                      quoted_list(names_that(c.is_tree()))));
+                                      quoted_list(algorithms_for(c.is_tree()))));
       continue;
     }
     x.controllers[i].evolved_by = name.text;
@@ -111,14 +120,10 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
   if (x.evaluates_only()) return;
   // Every algorithm in use has its settings (its defaults when no `evolve` gives them); an
   // `evolve` of another algorithm that evolves none of the compared controllers is a mistake.
-  std::map<std::string, bool> used;
-  for (std::size_t i = 0; i < x.controllers.size(); ++i) {
-    const std::string a = algorithm_of(x, i);
-    used[a] = true;
-    if (const AlgorithmOptions* o = find_further_algorithm(a)) x.algorithm_settings.try_emplace(a, o->defaults());
-  }
+  for (std::size_t i = 0; i < x.controllers.size(); ++i)
+    if (const AlgorithmOptions* o = find_further_algorithm(algorithm_of(x, i))) o->settings_in(x);
   for (const std::string& name : items.further_order) {
-    if (used.count(name) != 0) continue;
+    if (in_use(x, name)) continue;
     const ast::ExpItem& item = *items.further.at(name);
     const evo::Algorithm& a = *evo::find_algorithm(name);
     Diagnostic& diag = sink.error(item.refs[0].where, fmt::format("`evolve {}` evolves none of the controllers "
@@ -127,7 +132,7 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
     for (const control::ControllerSpec& c : x.controllers) any_network = any_network || !c.is_tree();
     if (a.networks && !a.trees && !any_network)
       diag.help.push_back(fmt::format("`{}` evolves networks; the compared controllers are trees, evolved by {}", name,
-                                      quoted_list(names_that(true))));
+                                      quoted_list(algorithms_for(true))));
     else
       diag.help.push_back(fmt::format("name it for a controller in `compare`: `CONTROLLER by {}`", name));
   }
@@ -146,16 +151,13 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
   }
   if (items.gp != nullptr)
     if (std::string m = check_gp(x); !m.empty()) sink.error(items.gp->where, m);
-  for (const auto& [name, item] : items.further) {
-    const int before = sink.errors();
-    check_further_settings(x, item->where, sink);
-    if (sink.errors() != before) break;   // one report for settings that several controllers share
-  }
+  for (const auto& [name, item] : items.further) check_further_settings(x, item->where, sink, name);
 }
 
-void check_further_settings(const X& x, const SourceRange& where, Sink& sink) {
+void check_further_settings(const X& x, const SourceRange& where, Sink& sink, std::string_view algorithm) {
   for (std::size_t i = 0; i < x.controllers.size(); ++i) {
     const std::string a = algorithm_of(x, i);
+    if (!algorithm.empty() && a != algorithm) continue;
     const AlgorithmOptions* o = find_further_algorithm(a);
     const auto s = x.algorithm_settings.find(a);
     if (o == nullptr || s == x.algorithm_settings.end()) continue;

@@ -5,6 +5,7 @@
 // `evolve` that evolves nothing, settings that do not suit a controller's network).
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/ast.hpp"
@@ -23,6 +24,12 @@ struct EvolveItems {
 
 // Every algorithm a script can name, for messages: `es`, `gp`, `cmaes`, ...
 [[nodiscard]] std::vector<std::string> algorithm_names();
+// Those that evolve trees, or networks.
+[[nodiscard]] std::vector<std::string> algorithms_for(bool trees);
+
+// Whether algorithm `name` evolves one of x's compared controllers (none when x only
+// evaluates stored ones).
+[[nodiscard]] bool in_use(const eval::ExperimentSpec& x, std::string_view name);
 
 // Whether `item` is `evolve NAME(...)` for an algorithm of algorithm_options.hpp.
 [[nodiscard]] bool is_further_evolve(const ast::ExpItem& item);
@@ -38,8 +45,10 @@ void choose_algorithms(const ast::ExperimentDecl& d, eval::ExperimentSpec& x,
                        const std::vector<const ast::Name*>& compared, const std::vector<const ast::Name*>& by,
                        const EvolveItems& items, Sink& sink);
 
-// Problems of the settings of the algorithms beyond ES and GP that evolve x's controllers,
-// reported at `where`.
-void check_further_settings(const eval::ExperimentSpec& x, const SourceRange& where, Sink& sink);
+// Problems of the settings of the algorithms beyond ES and GP that evolve x's controllers
+// (of `algorithm` alone when given), reported at `where`: the first for each call, since
+// the controllers an algorithm evolves share its settings.
+void check_further_settings(const eval::ExperimentSpec& x, const SourceRange& where, Sink& sink,
+                            std::string_view algorithm = {});
 
 }  // namespace esc::compiler

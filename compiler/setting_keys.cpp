@@ -68,16 +68,6 @@ std::optional<std::string_view> in_group(std::string_view key, std::string_view 
 // `cmaes.`: the prefix of an algorithm's `--set` keys.
 std::string group_of(const AlgorithmOptions& a) { return std::string(a.name) + "."; }
 
-// Whether algorithm `name` evolves one of the experiment's controllers.
-bool in_use(const eval::ExperimentSpec& spec, std::string_view name) {
-  if (spec.evaluates_only()) return false;
-  for (const control::ControllerSpec& c : spec.controllers) {
-    const evo::Algorithm* a = spec.evolution_of(c).algorithm;
-    if (a != nullptr && a->name == name) return true;
-  }
-  return false;
-}
-
 std::string trimmed(std::string_view t) {
   while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
   while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
@@ -142,8 +132,7 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
       return false;
     }
     // Kept even where the algorithm evolves nothing yet: `--set networks=cmaes` may follow.
-    return a.set(spec.algorithm_settings.try_emplace(std::string(a.name), a.defaults()).first->second, *name, value,
-                 sink);
+    return a.set(a.settings_in(spec), *name, value, sink);
   }
   if (const auto name = in_group(k, kRobotGroup)) {
     const RobotSetting* s = find_robot_setting(*name);
