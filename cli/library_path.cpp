@@ -1,11 +1,10 @@
 #include "cli/library_path.hpp"
 
-#include <cstdlib>
-#include <sstream>
-#include <string>
 #include <system_error>
 
 #include <sys/auxv.h>
+
+#include "app/import_path.hpp"
 
 namespace esc::cli {
 
@@ -31,15 +30,6 @@ std::filesystem::path standard_library_dir() {
   return (binary.parent_path() / ESC_STDLIB_FROM_BINARY).lexically_normal();
 }
 
-std::vector<std::filesystem::path> import_search_path() {
-  std::vector<std::filesystem::path> dirs;
-  if (const char* path = std::getenv("ESC_PATH")) {
-    std::stringstream entries(path);
-    for (std::string e; std::getline(entries, e, ':');)
-      if (!e.empty()) dirs.emplace_back(e);
-  }
-  if (std::filesystem::path lib = standard_library_dir(); !lib.empty()) dirs.push_back(std::move(lib));
-  return dirs;
-}
+std::vector<std::filesystem::path> import_search_path() { return app::import_search_path(standard_library_dir()); }
 
 }  // namespace esc::cli

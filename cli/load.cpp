@@ -4,16 +4,13 @@
 
 #include <unistd.h>
 
+#include "app/import_path.hpp"
 #include "cli/library_path.hpp"
 #include "runtime/dist/mpi_session.hpp"
 
 namespace esc::cli {
 
-compiler::CompileOptions default_compile_options() {
-  compiler::CompileOptions o;
-  o.import_paths = import_search_path();
-  return o;
-}
+compiler::CompileOptions default_compile_options() { return app::compile_options(standard_library_dir()); }
 
 bool follower_rank() {
   const dist::MpiSession* mpi = dist::MpiSession::current();

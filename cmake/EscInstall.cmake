@@ -39,7 +39,7 @@ function(esc_install_program target)
           RENAME esc COMPONENT runtime)
 endfunction()
 
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/compiler ${PROJECT_SOURCE_DIR}/runtime DESTINATION ${ESC_INSTALL_INCLUDE_DIR}
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/compiler ${PROJECT_SOURCE_DIR}/runtime ${PROJECT_SOURCE_DIR}/app DESTINATION ${ESC_INSTALL_INCLUDE_DIR}
         COMPONENT dev FILES_MATCHING PATTERN "*.hpp" PATTERN assets EXCLUDE)
 install(EXPORT escTargets NAMESPACE esc:: DESTINATION ${ESC_INSTALL_CMAKE_DIR} COMPONENT dev)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/escConfig.cmake.in
