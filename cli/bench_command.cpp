@@ -11,11 +11,12 @@
 
 #include <fmt/format.h>
 
+#include "app/dependencies.hpp"
 #include "bench/campaign_estimate.hpp"
 #include "cli/bench.hpp"
 #include "cli/commands.hpp"
-#include "cli/dependencies.hpp"
 #include "cli/load.hpp"
+#include "cli/terminal_events.hpp"
 
 namespace esc::cli {
 
@@ -48,7 +49,12 @@ std::optional<std::vector<eval::ExperimentSpec>> whole_campaign(const compiler::
       for (const eval::ExperimentSpec& x : compiled.all_experiments) {
         if (x.name != n) continue;
         eval::ExperimentSpec given = x;
-        ok = apply_dependency_settings(given, e.dependency_settings, e.name) && ok;
+        try {
+          app::apply_dependency_settings(given, e.dependency_settings, e.name);
+        } catch (const app::Error& error) {   // each reported, the whole campaign checked
+          print_error(error);
+          ok = false;
+        }
         std::string settings;
         for (const eval::DependencySetting& d : e.dependency_settings) {
           if (d.path.front() != n) continue;

@@ -1,5 +1,7 @@
 #include "cli/end_table.hpp"
 
+#include "app/campaign_run.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -112,16 +114,9 @@ void print_comparisons(const std::vector<std::vector<double>>& samples,
 
 }  // namespace
 
-std::string generations_text(const eval::ExperimentSpec& spec) {
-  int es = -1, gp = -1;
-  for (const auto& c : spec.controllers) (c.is_tree() ? gp : es) = spec.generations_for(c);
-  if (es >= 0 && gp >= 0 && es != gp) return fmt::format("{} (networks) / {} (GP) generations", es, gp);
-  return fmt::format("{} generations", spec.max_generations());
-}
-
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
   fmt::print("\n{}: {} run{} x {}, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
-             spec.runs == 1 ? "" : "s", generations_text(spec), spec.epochs, spec.steps, spec.seed);
+             spec.runs == 1 ? "" : "s", app::generations_text(spec), spec.epochs, spec.steps, spec.seed);
   fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
              "best fitness mean ± sd", "median", "best run");
   std::vector<std::vector<double>> finals;
@@ -197,7 +192,7 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
       break;
     }
   fmt::print("{} run{} x {}, {} epochs x {} steps{}\n", first.runs, first.runs == 1 ? "" : "s",
-             generations_text(first), first.epochs, first.steps, conditions.size() > 1 ? " (the first condition)" : "");
+             app::generations_text(first), first.epochs, first.steps, conditions.size() > 1 ? " (the first condition)" : "");
 
   bool header = false;
   for (const ConditionResult& c : conditions)

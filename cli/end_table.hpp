@@ -13,9 +13,6 @@
 
 namespace esc::cli {
 
-// "250 generations", or "250 (ES) / 50 (GP) generations" when the algorithms differ.
-[[nodiscard]] std::string generations_text(const eval::ExperimentSpec& spec);
-
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result);
 
 // One condition of a study, as the end table shows it.

@@ -5,17 +5,14 @@
 #include <unistd.h>
 
 #include "app/import_path.hpp"
+#include "app/ranks.hpp"
 #include "cli/library_path.hpp"
-#include "runtime/dist/mpi_session.hpp"
 
 namespace esc::cli {
 
 compiler::CompileOptions default_compile_options() { return app::compile_options(standard_library_dir()); }
 
-bool follower_rank() {
-  const dist::MpiSession* mpi = dist::MpiSession::current();
-  return mpi != nullptr && mpi->active() && !mpi->is_root();
-}
+bool follower_rank() { return app::follower_rank(); }
 
 compiler::CompileResult load_script(const std::filesystem::path& file) {
   return load_script(file, default_compile_options());

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/terminal_events.hpp"
 #include "cli/unknown_arguments.hpp"
 #include "cli/version.hpp"
 #include "runtime/core/seed_text.hpp"
@@ -149,6 +150,10 @@ int main(int argc, char** argv) {
     if (*report_cmd) return report_command(rep);
     if (*replay_cmd) return replay_command(replay);
     if (*bench_cmd) return bench_command(bench);
+  } catch (const esc::app::Error& e) {
+    // Every rank met it (app/ranks.hpp) and ends normally.
+    print_error(e);
+    return kExitBadInput;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "esc: error: out of memory\n");
   } catch (const std::exception& e) {

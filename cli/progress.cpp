@@ -58,15 +58,15 @@ std::string progress_bar(std::int64_t done, std::int64_t total, int width) {
 
 ProgressPrinter::ProgressPrinter(const eval::ExperimentSpec& spec, eval::CampaignListener& next, bool live,
                                  std::int64_t already_done)
-    : spec_(&spec),
-      next_(&next),
+    : Progress(next),
+      spec_(&spec),
       live_(live),
       generations_total_(spec.total_generations()),
       generations_done_(already_done),
       start_(std::chrono::steady_clock::now()) {}
 
 void ProgressPrinter::round_progress(const eval::RoundProgress& p) {
-  next_->round_progress(p);
+  Progress::round_progress(p);
   const double percent = 100.0 * static_cast<double>(p.done) / static_cast<double>(std::max<std::int64_t>(p.evaluations, 1));
   const double rate = p.seconds > 0.0 ? static_cast<double>(p.done) / p.seconds : 0.0;
   const std::string status = fmt::format("this generation: {}/{} evaluations ({:.1f}%), {:.0f} eval/s", p.done,
@@ -82,7 +82,7 @@ void ProgressPrinter::round_progress(const eval::RoundProgress& p) {
 
 void ProgressPrinter::round_evaluated(const eval::RoundStats& round) {
   next_piped_progress_s_ = 0.0;
-  next_->round_evaluated(round);
+  Progress::round_evaluated(round);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const auto done_here = done_here_ + static_cast<std::int64_t>(round.runs);
   const auto left = generations_total_ - generations_done_ - static_cast<std::int64_t>(round.runs);
@@ -93,7 +93,7 @@ void ProgressPrinter::round_evaluated(const eval::RoundStats& round) {
 
 void ProgressPrinter::generation_done(const control::ControllerSpec& controller, int run,
                                       const eval::GenerationStats& g) {
-  next_->generation_done(controller, run, g);
+  Progress::generation_done(controller, run, g);
   ++generations_done_;
   ++done_here_;
   // Generations are numbered from 0 (generation 0 is the initial population), runs from 1.
@@ -122,16 +122,16 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
 }
 
 void ProgressPrinter::checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) {
-  next_->checkpoint(controller, state);
+  Progress::checkpoint(controller, state);
 }
 
 void ProgressPrinter::best_traced(const control::ControllerSpec& controller, const eval::RunResult& run,
                                   std::span<const eval::TraceStep> trace) {
-  next_->best_traced(controller, run, trace);
+  Progress::best_traced(controller, run, trace);
 }
 
 void ProgressPrinter::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {
-  next_->run_done(controller, run);
+  Progress::run_done(controller, run);
   if (live_) {
     redraw(fmt::format("{:<8} run {:>2}/{:<2} done: best fitness {:.2f}", controller.name, run.run + 1, spec_->runs,
                        run.best_fitness));

@@ -6,18 +6,18 @@
 // from 0, as in every other output.
 // Rates and time left are those of the last round: every run advancing together.
 // Otherwise (a pipe, a log file): one plain line per generation.
-// Forwards every event to the next listener (the run directory).
 #include <chrono>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "app/events.hpp"
 #include "runtime/eval/campaign.hpp"
 
 namespace esc::cli {
 
-class ProgressPrinter final : public eval::CampaignListener {
+class ProgressPrinter final : public app::Progress {
  public:
   // `already_done`: generations finished before this process started (a resumed run).
   ProgressPrinter(const eval::ExperimentSpec& spec, eval::CampaignListener& next, bool live,
@@ -33,7 +33,7 @@ class ProgressPrinter final : public eval::CampaignListener {
   void run_done(const control::ControllerSpec& controller, const eval::RunResult& run) override;
 
   // Ends the live line (call before printing anything else).
-  void close();
+  void close() override;
 
  private:
   // The bar and the first of `statuses` (longest first) that leaves room for one on the
@@ -43,7 +43,6 @@ class ProgressPrinter final : public eval::CampaignListener {
   void redraw(const std::string& line);
 
   const eval::ExperimentSpec* spec_;
-  eval::CampaignListener* next_;
   bool live_;
   bool line_open_ = false;
   std::int64_t generations_total_;

@@ -13,13 +13,15 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/compile.hpp"
+#include "app/dependencies.hpp"
+#include "app/settings.hpp"
+#include "app/version.hpp"
 #include "cli/commands.hpp"
-#include "cli/dependencies.hpp"
-#include "cli/experiment_setup.hpp"
 #include "cli/load.hpp"
 #include "cli/replay_animation.hpp"
 #include "cli/replay_sources.hpp"
-#include "cli/run_support.hpp"
+#include "cli/terminal_events.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/settings_history.hpp"
@@ -179,10 +181,11 @@ std::string first_difference(std::span<const eval::TraceStep> now, const store::
 
 // What the run's experiment needs from other experiments' stored results (evolved
 // behaviors), read from the cache; replaying never runs them.
-DependencyContext reuse_only(const compiler::CompileResult& compiled, const RunOptions& settings,
-                             const fs::path& cache) {
-  DependencyContext context{compiled, [&settings](eval::ExperimentSpec& d) { return apply_overrides(settings, d); },
-                            {}, {}, cache, ESC_VERSION_STRING};
+app::DependencyContext reuse_only(const compiler::CompileResult& compiled, const app::Overrides& settings,
+                                  const fs::path& cache, app::Events& events) {
+  app::DependencyContext context{
+      compiled, [&settings](eval::ExperimentSpec& d) { app::apply_settings(settings, d); }, {}, {}, cache,
+      app::version(), events};
   context.reuse_only = true;
   return context;
 }
@@ -355,33 +358,34 @@ int replay_command(const ReplayOptions& o) {
 
   // The experiment: the stored one, compiled from the sources the run stored (whatever has
   // happened to the script since), with its settings; or one of another script.
-  RunOptions settings = stored ? stored_overrides(*stored, at.root) : RunOptions{};
+  app::Overrides settings = stored ? app::stored_overrides(*stored, at.root) : app::Overrides{};
   compiler::CompileResult compiled;
   eval::ExperimentSpec* spec = nullptr;
   if (o.script.empty()) {
     const ReplaySources sources(*stored);
     compiled = sources.compile();
     if (!compiled.ok()) return kExitBadInput;
-    if (store::campaign_hash(stored->name, sources_of(compiled)) != stored->content_hash) {
+    if (store::campaign_hash(stored->name, app::sources_of(compiled)) != stored->content_hash) {
       complain("esc: error: the sources stored in {} do not compile back to the run's script\n", at.root.string());
       return kExitBadInput;
     }
     spec = stored->condition ? pick_condition(compiled, *stored->condition)
-                             : pick_stored_experiment(compiled, stored->script, stored->name);
+                             : &app::pick_stored_experiment(compiled, stored->script, stored->name);
   } else {
     settings.runs.reset();
     settings.generations.reset();
     settings.seed.reset();
-    settings.settings.clear();
+    settings.set.clear();
     compiled = load_script(o.script);
     if (!compiled.ok()) return kExitBadInput;
-    spec = pick_experiment(compiled, o.script, o.experiment);
+    spec = &app::pick_experiment(compiled, o.script, o.experiment);
   }
-  if (spec == nullptr || !apply_overrides(settings, *spec)) return kExitBadInput;
+  if (spec == nullptr) return kExitBadInput;
+  app::apply_settings(settings, *spec);
   // A run carried on by `esc run --resume DIR --generations G` stored G as its generations.
   if (stored && o.script.empty()) {
-    const std::optional<int> carried = stored_carry_on(*stored, at.root);
-    if (!set_generations(*spec, carried)) {
+    const std::optional<int> carried = app::stored_carry_on(*stored, at.root);
+    if (!app::set_generations(*spec, carried)) {
       complain("esc: error: {} is damaged: it was carried on to {} generations\n", at.root.string(), *carried);
       return kExitBadInput;
     }
@@ -391,8 +395,9 @@ int replay_command(const ReplayOptions& o) {
     return kExitBadInput;
   }
   spec->start_from.reset();   // where evolution started does not change an evaluation
-  const fs::path cache = !settings.cache.empty() ? settings.cache : cache_of_run(at.root);
-  if (!prepare_dependencies(*spec, reuse_only(compiled, settings, cache))) return kExitBadInput;
+  const fs::path cache = !settings.cache.empty() ? settings.cache : app::cache_of_run(at.root);
+  TerminalEvents events;
+  app::prepare_dependencies(*spec, reuse_only(compiled, settings, cache, events));
 
   const auto epochs = parse_epochs(o.epochs, spec->epochs);
   if (!epochs) return kExitUsage;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "app/version.hpp"
 #include "cli/library_path.hpp"
 #include "runtime/dist/mpi_session.hpp"
 
@@ -16,7 +17,7 @@ std::string version_text() {
                      "optional parts: MPI {}, Google Benchmark (esc bench) {}\n"
                      "standard library: {}\n"
                      "ESC_PATH: {}",
-                     ESC_VERSION_STRING, kCommit, dist::built_with_mpi() ? "yes" : "no",
+                     app::version(), kCommit, dist::built_with_mpi() ? "yes" : "no",
                      ESC_WITH_BENCHMARK ? "yes" : "no", library.empty() ? "not found" : library.string(),
                      esc_path != nullptr ? esc_path : "(not set)");
 }

@@ -7,7 +7,10 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
@@ -147,6 +150,12 @@ bool room_for_another_run(std::size_t active_runs, std::size_t pooled_evaluation
 
 CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& options,
                             CampaignListener& listener) {
+  // Unfilled, a supervisor would act with empty behaviors and a `start from` run from random
+  // genomes: a result that looks right and is not.
+  if (const std::vector<std::string> missing = spec.unprepared(); !missing.empty())
+    throw std::invalid_argument(fmt::format("experiment {} needs the results of {} first: prepare its dependencies "
+                                            "(esc::app::prepare_dependencies) before running it",
+                                            spec.name, fmt::join(missing, ", ")));
   CampaignResult result;
   result.experiment = spec.name;
   result.seed = spec.seed;

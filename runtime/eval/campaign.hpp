@@ -134,8 +134,9 @@ struct CampaignOptions {
 [[nodiscard]] bool room_for_another_run(std::size_t active_runs, std::size_t pooled_evaluations,
                                         std::size_t workers, int runs_at_once) noexcept;
 
-// Throws std::invalid_argument on impossible ES or GP settings (from the algorithms), or a
-// tree controller compared without GP settings.
+// Throws std::invalid_argument on impossible ES or GP settings (from the algorithms), a
+// tree controller compared without GP settings, or dependencies not prepared
+// (ExperimentSpec::unprepared).
 [[nodiscard]] CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& options,
                                           CampaignListener& listener);
 

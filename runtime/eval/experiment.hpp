@@ -131,6 +131,23 @@ struct ExperimentSpec {
     return n;
   }
 
+  // The experiments of needs() whose results were never filled in (frozen behaviors without
+  // a genome, start genomes missing): what a program must prepare before running this one.
+  [[nodiscard]] std::vector<std::string> unprepared() const {
+    std::vector<std::string> n;
+    const auto add = [&n](const std::string& x) {
+      if (std::find(n.begin(), n.end(), x) == n.end()) n.push_back(x);
+    };
+    for (const Dependency& d : dependencies)
+      for (const auto& [ci, bi] : d.targets) {
+        if (ci >= controllers.size() || bi >= controllers[ci].behaviors.size()) continue;
+        const auto* fixed = std::get_if<control::FixedController>(&controllers[ci].behaviors[bi].what);
+        if (fixed != nullptr && (fixed->spec == nullptr || fixed->genome.empty())) add(d.experiment);
+      }
+    if (start_from && start_from->genomes.size() < controllers.size()) add(start_from->experiment);
+    return n;
+  }
+
   // The algorithm that evolves `c`: the one its `by` names, else `networks` for a network
   // and GP for a tree; with its settings (`es`, `gp`, or algorithm_settings).
   [[nodiscard]] Evolution evolution_of(const control::ControllerSpec& c) const {

@@ -1,4 +1,4 @@
-#include "cli/dependencies.hpp"
+#include "app/dependencies.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -11,17 +11,16 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/commands.hpp"
-#include "cli/load.hpp"
-#include "cli/partial_run.hpp"
+#include "app/error.hpp"
+#include "app/partial_run.hpp"
+#include "app/ranks.hpp"
 #include "compiler/setting_keys.hpp"
-#include "runtime/dist/mpi_session.hpp"
 #include "runtime/eval/fingerprint.hpp"
 #include "runtime/evo/gp/codec.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/run_directory.hpp"
 
-namespace esc::cli {
+namespace esc::app {
 
 namespace {
 
@@ -33,22 +32,22 @@ struct Prepared {
   std::filesystem::path dir;
 };
 
-bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth);
+void prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth);
 
 // Under MPI every rank prepares the same dependencies in the same order (running one is a
 // collective); rank 0 alone reads and writes the cache, tells the others what it decided
-// (reuse or run) and sends them what it read, and alone prints.
-const dist::MpiSession* job() {
-  const dist::MpiSession* mpi = dist::MpiSession::current();
-  return mpi != nullptr && mpi->active() ? mpi : nullptr;
+// (reuse or run) and sends them what it read, and alone reports.
+template <typename... Args>
+void tell(const DependencyContext& cx, fmt::format_string<Args...> format, Args&&... args) {
+  if (!follower_rank()) cx.events.note({Note::Kind::Dependency, fmt::format(format, std::forward<Args>(args)...)});
 }
 
-// Rank 0's answer on every rank.
-bool agree(bool rank0) {
-  if (job() == nullptr) return rank0;
-  std::string text = rank0 ? "1" : "0";
-  job()->broadcast(text);
-  return text == "1";
+// Rank 0's refusal, `message`, on every rank (empty: none).
+void agree_or_throw(std::string message) {
+  const bool refused = agree(!message.empty());
+  if (!refused) return;
+  if (follower_rank()) throw follower_error(ErrorKind::Dependency);
+  throw Error(ErrorKind::Dependency, std::move(message));
 }
 
 // What dependents read of a finished run (its finished runs' best genomes), from rank 0
@@ -86,19 +85,18 @@ store::StoredExperiment unpack(const std::string& text) {
   return stored;
 }
 
-// Rank 0 loads the finished run in `dir`; every rank returns what it holds. Null after
-// printing an error.
-std::optional<store::StoredExperiment> load_finished(const std::filesystem::path& dir) {
-  std::string text;
+// Rank 0 loads the finished run in `dir`; every rank returns what it holds.
+store::StoredExperiment load_finished(const std::filesystem::path& dir) {
+  std::string text, error;
   if (!follower_rank()) {
     try {
       text = pack(store::ResultsDb::open(dir, true).load_single());
     } catch (const store::StoreError& e) {
-      complain("esc: error: {}\n", e.what());
+      error = e.what();
     }
   }
-  if (job() != nullptr) job()->broadcast(text);
-  if (text.empty()) return std::nullopt;
+  agree_or_throw(std::move(error));
+  agree(text);
   return unpack(text);
 }
 
@@ -118,50 +116,45 @@ bool same_fingerprint(const std::filesystem::path& dir, const std::string& key) 
   return in.is_open() && stored == key;
 }
 
-std::optional<Prepared> load_into(Prepared& p) {
-  auto stored = load_finished(p.dir);
-  if (!stored) return std::nullopt;
-  p.stored = std::move(*stored);
+Prepared load_into(Prepared& p) {
+  p.stored = load_finished(p.dir);
   return std::move(p);
 }
 
 // Moves a finished run from `partial` into its cache entry and loads what dependents read
 // of it.
-std::optional<Prepared> finish_dependency(const std::string& name, const std::string& key,
-                                          const std::filesystem::path& partial, Prepared& p) {
+Prepared finish_dependency(const DependencyContext& cx, const std::string& name, const std::string& key,
+                           const std::filesystem::path& partial, Prepared& p) {
   std::error_code ec;
-  bool moved = true;
+  std::string error;
   if (!follower_rank()) {
     std::ofstream(partial / kFingerprintFile) << key;
     std::filesystem::rename(partial, p.dir, ec);
     if (ec) {
       // Another process finished the same run first: its result is the same; keep it.
-      moved = finished_run(p.dir);
-      if (!moved)
-        complain("esc: error: cannot move {} to {}: {}\n", partial.string(), p.dir.string(), ec.message());
+      if (!finished_run(p.dir))
+        error = fmt::format("cannot move {} to {}: {}", partial.string(), p.dir.string(), ec.message());
       else
         std::filesystem::remove_all(partial, ec);
     }
   }
-  if (!agree(moved)) return std::nullopt;
-  say("esc: dependency {}: finished in {}\n", name, p.dir.string());
+  agree_or_throw(std::move(error));
+  tell(cx, "dependency {}: finished in {}", name, p.dir.string());
   return load_into(p);
 }
 
 // Runs experiment `name` into the cache, or reuses a finished run of the same fingerprint.
-std::optional<Prepared> run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
-                                     const DependencyContext& cx, int depth) {
+Prepared run_or_reuse(const std::string& name, const eval::ExperimentSpec& user, const DependencyContext& cx,
+                      int depth) {
   const auto& all = cx.compiled.all_experiments;
   const auto found = std::find_if(all.begin(), all.end(), [&](const eval::ExperimentSpec& e) { return e.name == name; });
-  if (found == all.end()) {
-    complain("esc: error: experiment `{}` (needed by `{}`) was not compiled\n", name, user.name);
-    return std::nullopt;
-  }
+  if (found == all.end())
+    throw Error(ErrorKind::Dependency, fmt::format("experiment `{}` (needed by `{}`) was not compiled", name, user.name));
   Prepared p{*found, {}, {}};
   // The script's settings before the command line's, as for the experiment run itself.
-  if (!apply_dependency_settings(p.spec, user.dependency_settings, user.name) || !cx.apply_overrides(p.spec))
-    return std::nullopt;
-  if (!prepare(p.spec, cx, depth + 1)) return std::nullopt;
+  apply_dependency_settings(p.spec, user.dependency_settings, user.name);
+  cx.apply_overrides(p.spec);
+  prepare(p.spec, cx, depth + 1);
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
   // A cache entry appears only once its run has finished: the run goes into a directory of
@@ -171,11 +164,11 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const eval::Experi
   // Rank 0 decides whether to reuse; the others follow.
   std::error_code ec;
   bool reuse = false;
-  bool refused = false;
+  std::string refused;
   if (!follower_rank()) {
     if (std::filesystem::exists(p.dir / "esc.db", ec)) {
       const auto incomplete = [&] {
-        say("esc: dependency {}: {} is incomplete; running it again\n", name, p.dir.string());
+        tell(cx, "dependency {}: {} is incomplete; running it again", name, p.dir.string());
         std::filesystem::remove_all(p.dir, ec);
       };
       try {
@@ -184,52 +177,49 @@ std::optional<Prepared> run_or_reuse(const std::string& name, const eval::Experi
         incomplete();
       } catch (const store::StoreError& e) {
         // Damaged: never used, and not removed either (what damaged it may matter).
-        complain("esc: error: dependency {}: {}; remove it to run it again\n", name, e.what());
-        refused = true;
+        refused = fmt::format("dependency {}: {}; remove it to run it again", name, e.what());
       }
     }
-    reuse = !refused && std::filesystem::exists(p.dir / "esc.db", ec);
-    if (reuse && !same_fingerprint(p.dir, key)) {
-      complain("esc: error: {} is not the run experiment `{}` needs: its fingerprint.txt differs from this run's "
-               "inputs (its name holds only their hash); remove it or give another --cache\n",
-               p.dir.string(), name);
-      refused = true;
-    }
+    reuse = refused.empty() && std::filesystem::exists(p.dir / "esc.db", ec);
+    if (reuse && !same_fingerprint(p.dir, key))
+      refused = fmt::format("{} is not the run experiment `{}` needs: its fingerprint.txt differs from this run's "
+                            "inputs (its name holds only their hash); remove it or give another --cache",
+                            p.dir.string(), name);
   }
-  if (agree(refused)) return std::nullopt;
+  agree_or_throw(std::move(refused));
   if (agree(reuse)) {
-    say("esc: dependency {}: reused {}\n", name, p.dir.string());
+    tell(cx, "dependency {}: reused {}", name, p.dir.string());
     return load_into(p);
   }
-  if (cx.reuse_only) {
-    complain("esc: error: experiment `{}` (needed by `{}`) has no finished run in {}; run it first (esc run)\n", name,
-             user.name, cx.cache.string());
-    return std::nullopt;
-  }
+  if (cx.reuse_only)
+    throw Error(ErrorKind::Dependency, fmt::format("experiment `{}` (needed by `{}`) has no finished run in {}; run it "
+                                                   "first (esc run)",
+                                                   name, user.name, cx.cache.string()));
   // Rank 0 names the run's directory and holds its lock; the other ranks only follow.
   std::optional<PartialRun> mine;
+  std::string no_cache;
   if (!follower_rank()) {
     std::filesystem::create_directories(cx.cache, ec);
     try {
       mine.emplace(PartialRun::create(p.dir));
     } catch (const std::system_error& e) {
-      complain("esc: error: cannot create the dependency cache {}: {}\n", cx.cache.string(), e.what());
+      no_cache = fmt::format("cannot create the dependency cache {}: {}", cx.cache.string(), e.what());
     }
   }
-  if (!agree(mine.has_value())) return std::nullopt;
+  agree_or_throw(std::move(no_cache));
   const std::filesystem::path partial = mine ? mine->dir() : std::filesystem::path();
   // Under MPI the other ranks would have to read the abandoned run: it starts again.
   if (job() == nullptr) {
     if (const auto abandoned = take_over_abandoned(p.dir, *mine)) {
-      say("esc: dependency {}: continuing the run a stopped process left in {}\n", name, abandoned->string());
-      if (cx.resume_into(p.spec, partial) == kExitOk) return finish_dependency(name, key, partial, p);
-      say("esc: dependency {}: running it again\n", name);
+      tell(cx, "dependency {}: continuing the run a stopped process left in {}", name, abandoned->string());
+      if (cx.resume_into(p.spec, partial)) return finish_dependency(cx, name, key, partial, p);
+      tell(cx, "dependency {}: running it again", name);
     }
   }
-  say("esc: dependency {}: running into {}\n", name, partial.string());
+  tell(cx, "dependency {}: running into {}", name, partial.string());
   if (!follower_rank()) std::filesystem::remove_all(partial, ec);
-  if (cx.run_into(p.spec, partial) != kExitOk) return std::nullopt;
-  return finish_dependency(name, key, partial, p);
+  cx.run_into(p.spec, partial);
+  return finish_dependency(cx, name, key, partial, p);
 }
 
 // Why `genome` cannot be controller `c`'s here ("" when it can): a network's weights must be
@@ -247,30 +237,29 @@ std::string genome_problem(const control::ControllerSpec& c, const std::vector<d
   }
 }
 
-const store::StoredController* stored_controller(const Prepared& p, const std::string& name) {
+const store::StoredController& stored_controller(const Prepared& p, const std::string& name) {
   const auto& cs = p.stored.controllers;
   const auto it = std::find_if(cs.begin(), cs.end(), [&](const store::StoredController& c) { return c.name == name; });
-  if (it == cs.end() || it->finished.empty()) {
-    complain("esc: error: {} holds no finished run of controller `{}`\n", p.dir.string(), name);
-    return nullptr;
-  }
-  return &*it;
+  if (it == cs.end() || it->finished.empty())
+    throw Error(ErrorKind::Dependency, fmt::format("{} holds no finished run of controller `{}`", p.dir.string(), name));
+  return *it;
 }
 
-bool freeze_behaviors(eval::ExperimentSpec& spec, const eval::Dependency& dep, const Prepared& p) {
-  const store::StoredController* sc = stored_controller(p, dep.controller);
+void freeze_behaviors(const DependencyContext& cx, eval::ExperimentSpec& spec, const eval::Dependency& dep,
+                      const Prepared& p) {
+  const store::StoredController* sc = &stored_controller(p, dep.controller);
   const auto ctl = std::find_if(p.spec.controllers.begin(), p.spec.controllers.end(),
                                 [&](const control::ControllerSpec& c) { return c.name == dep.controller; });
-  if (sc == nullptr || ctl == p.spec.controllers.end()) return false;
+  if (ctl == p.spec.controllers.end())
+    throw Error(ErrorKind::Dependency, fmt::format("experiment `{}` compares no controller `{}`", p.spec.name, dep.controller));
   const eval::RunResult* best = &sc->finished.front();
   for (const eval::RunResult& r : sc->finished)
     if (r.best_fitness > best->best_fitness) best = &r;
   auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
-  if (const std::string why = genome_problem(*frozen, best->best_genome); !why.empty()) {
-    complain("esc: error: {}: the best genome of `{}` cannot be frozen: {}\n", p.dir.string(), dep.controller, why);
-    return false;
-  }
-  say("esc: dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})\n",
+  if (const std::string why = genome_problem(*frozen, best->best_genome); !why.empty())
+    throw Error(ErrorKind::Dependency,
+                fmt::format("{}: the best genome of `{}` cannot be frozen: {}", p.dir.string(), dep.controller, why));
+  tell(cx, "dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})",
              dep.experiment, dep.controller, sc->finished.size(), sc->finished.size() == 1 ? "" : "s",
              best->best_fitness, best->run + 1);
   for (const auto& [ci, bi] : dep.targets) {
@@ -280,50 +269,41 @@ bool freeze_behaviors(eval::ExperimentSpec& spec, const eval::Dependency& dep, c
     fixed->spec = frozen;
     fixed->genome = best->best_genome;
   }
-  return true;
 }
 
-bool fill_start_genomes(eval::ExperimentSpec& spec, const Prepared& p) {
+void fill_start_genomes(const DependencyContext& cx, eval::ExperimentSpec& spec, const Prepared& p) {
   eval::StartFrom& start = *spec.start_from;
   start.genomes.clear();
   for (const control::ControllerSpec& c : spec.controllers) {
-    const store::StoredController* sc = stored_controller(p, c.name);
-    if (sc == nullptr) return false;
+    const store::StoredController& sc = stored_controller(p, c.name);
     auto& runs = start.genomes.emplace_back();
-    for (const eval::RunResult& r : sc->finished) {
-      if (const std::string why = genome_problem(c, r.best_genome); !why.empty()) {
-        complain("esc: error: {}: the best genome of run {} of `{}` cannot start a run here: {}\n", p.dir.string(),
-                 r.run + 1, c.name, why);
-        return false;
-      }
+    for (const eval::RunResult& r : sc.finished) {
+      if (const std::string why = genome_problem(c, r.best_genome); !why.empty())
+        throw Error(ErrorKind::Dependency, fmt::format("{}: the best genome of run {} of `{}` cannot start a run here: {}",
+                                                       p.dir.string(), r.run + 1, c.name, why));
       runs.push_back({r.run, r.best_fitness, r.best_genome});
     }
   }
-  say("esc: {} {} from the best genomes of {} ({} run{} each)\n", spec.name,
+  tell(cx, "{} {} from the best genomes of {} ({} run{} each)", spec.name,
              start.evaluate_only ? "evaluates" : "starts", start.experiment, p.stored.runs, p.stored.runs == 1 ? "" : "s");
-  return true;
 }
 
-bool prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth) {
-  if (spec.dependencies.empty() && !spec.start_from) return true;
-  if (depth > kMaxDepth) {
-    complain("esc: error: dependencies of `{}` nest too deeply\n", spec.name);
-    return false;
-  }
+void prepare(eval::ExperimentSpec& spec, const DependencyContext& cx, int depth) {
+  if (spec.dependencies.empty() && !spec.start_from) return;
+  if (depth > kMaxDepth)
+    throw Error(ErrorKind::Dependency, fmt::format("dependencies of `{}` nest too deeply", spec.name));
   // Each experiment once, however many of its controllers are used.
   for (const std::string& name : spec.needs()) {
-    const auto p = run_or_reuse(name, spec, cx, depth);
-    if (!p) return false;
+    const Prepared p = run_or_reuse(name, spec, cx, depth);
     for (const eval::Dependency& dep : spec.dependencies)
-      if (dep.experiment == name && !freeze_behaviors(spec, dep, *p)) return false;
-    if (spec.start_from && spec.start_from->experiment == name && !fill_start_genomes(spec, *p)) return false;
+      if (dep.experiment == name) freeze_behaviors(cx, spec, dep, p);
+    if (spec.start_from && spec.start_from->experiment == name) fill_start_genomes(cx, spec, p);
   }
-  return true;
 }
 
 }  // namespace
 
-bool apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
+void apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
                                const std::string& user) {
   std::vector<std::pair<std::string, std::string>> own;
   bool further = false;
@@ -338,17 +318,14 @@ bool apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eva
   }
   if (!own.empty()) {
     // Together, as the compiler checked them.
-    if (const std::string error = compiler::apply_settings(spec, own); !error.empty()) {
-      complain("esc: error: experiment {}, as {} needs it: {}\n", spec.name, user, error);
-      return false;
-    }
+    if (const std::string error = compiler::apply_settings(spec, own); !error.empty())
+      throw Error(ErrorKind::Setting, fmt::format("experiment {}, as {} needs it: {}", spec.name, user, error));
   }
   if (further) compiler::resolve_settings(spec);
-  return true;
 }
 
-bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context) {
-  return prepare(spec, context, 0);
+void prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context) {
+  prepare(spec, context, 0);
 }
 
 bool is_cache_entry(const std::filesystem::path& dir) {

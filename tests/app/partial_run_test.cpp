@@ -1,7 +1,7 @@
 // Who may take over a dependency's unfinished run (cli/partial_run.hpp): a run whose
 // process still lives is left alone; one whose process is gone is taken over when it holds
 // a database, removed when it does not; and its lock file goes with it.
-#include "cli/partial_run.hpp"
+#include "app/partial_run.hpp"
 
 #include <csignal>
 #include <fstream>
@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-namespace esc::cli {
+namespace esc::app {
 namespace {
 
 namespace fs = std::filesystem;
@@ -102,4 +102,4 @@ TEST(PartialRun, AGoneRunWithoutADatabaseIsRemovedAndLocksGoWithTheirOwners) {
 }
 
 }  // namespace
-}  // namespace esc::cli
+}  // namespace esc::app

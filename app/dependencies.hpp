@@ -11,23 +11,24 @@
 #include <filesystem>
 #include <functional>
 
+#include "app/events.hpp"
 #include "compiler/compiler.hpp"
 #include "runtime/eval/experiment.hpp"
 
-namespace esc::cli {
+namespace esc::app {
 
 struct DependencyContext {
   const compiler::CompileResult& compiled;
-  // Applies the command line's overrides to a dependency (as to the main experiment);
-  // false after printing an error.
-  std::function<bool(eval::ExperimentSpec&)> apply_overrides;
-  // Runs an experiment into a new directory; returns the process exit status.
-  std::function<int(const eval::ExperimentSpec&, const std::filesystem::path&)> run_into;
-  // Continues the run of an experiment in a directory a killed process left; returns the
-  // process exit status (not kExitOk if the directory cannot be continued).
-  std::function<int(const eval::ExperimentSpec&, const std::filesystem::path&)> resume_into;
+  // Applies the run's overrides to a dependency (as to the main experiment); throws Error.
+  std::function<void(eval::ExperimentSpec&)> apply_overrides;
+  // Runs an experiment into a new directory; throws Error.
+  std::function<void(const eval::ExperimentSpec&, const std::filesystem::path&)> run_into;
+  // Continues the run of an experiment in a directory a killed process left; false (after
+  // a warning saying why) when it cannot be continued.
+  std::function<bool(const eval::ExperimentSpec&, const std::filesystem::path&)> resume_into;
   std::filesystem::path cache;
   std::string version;   // part of every cache key
+  Events& events;
   // Only finished runs in the cache are used; a missing one is an error (`esc replay`
   // reads what a run used and never runs anything; run_into and resume_into are not called).
   bool reuse_only = false;
@@ -35,14 +36,14 @@ struct DependencyContext {
 
 // Gives dependency `spec` what the study condition of its user (the experiment that needs
 // it) sets in it (`energy.generations 60`); what the condition sets further down goes on to
-// `spec`'s own dependencies. False after printing an error.
-[[nodiscard]] bool apply_dependency_settings(eval::ExperimentSpec& spec,
-                                             const std::vector<eval::DependencySetting>& given,
-                                             const std::string& user);
+// `spec`'s own dependencies. Throws Error (kind Setting).
+void apply_dependency_settings(eval::ExperimentSpec& spec, const std::vector<eval::DependencySetting>& given,
+                               const std::string& user);
 
 // Fills `spec`'s frozen behaviors and start genomes, running what it needs first
-// (dependencies of dependencies before). Prints what it does; false after printing an error.
-[[nodiscard]] bool prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context);
+// (dependencies of dependencies before), telling `context.events` what it does. Throws
+// Error (kind Dependency, or that of the problem met in running one).
+void prepare_dependencies(eval::ExperimentSpec& spec, const DependencyContext& context);
 
 // Beside the results of a dependency cache entry: the whole fingerprint it was filed under
 // (its name holds a hash).
@@ -55,4 +56,4 @@ inline constexpr const char* kFingerprintFile = "fingerprint.txt";
 // of a dependency cache, the cache it sits in, beside its own dependencies.
 [[nodiscard]] std::filesystem::path cache_of_run(const std::filesystem::path& dir);
 
-}  // namespace esc::cli
+}  // namespace esc::app

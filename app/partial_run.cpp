@@ -1,4 +1,4 @@
-#include "cli/partial_run.hpp"
+#include "app/partial_run.hpp"
 
 #include <array>
 #include <cctype>
@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-namespace esc::cli {
+namespace esc::app {
 
 namespace fs = std::filesystem;
 
@@ -102,4 +102,4 @@ std::optional<fs::path> take_over_abandoned(const fs::path& entry, const Partial
   return taken;
 }
 
-}  // namespace esc::cli
+}  // namespace esc::app

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <optional>
 
-namespace esc::cli {
+namespace esc::app {
 
 class PartialRun {
  public:
@@ -35,4 +35,4 @@ class PartialRun {
 // (a lock over a network filesystem proves little) are left alone.
 std::optional<std::filesystem::path> take_over_abandoned(const std::filesystem::path& entry, const PartialRun& mine);
 
-}  // namespace esc::cli
+}  // namespace esc::app

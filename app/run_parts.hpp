@@ -1,0 +1,44 @@
+#pragma once
+// What starting a run and resuming one do alike (run.cpp, resume.cpp): the overrides on an
+// experiment or on every condition of a study, and running a study's conditions.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "app/campaign_run.hpp"
+#include "app/events.hpp"
+#include "app/run.hpp"
+#include "app/settings.hpp"
+#include "runtime/eval/study.hpp"
+#include "runtime/store/study_directory.hpp"
+
+namespace esc::app {
+
+// The overrides' settings and controllers on `spec`, which must then fit in memory
+// (`where`: `condition `x`: `). Throws Error.
+void apply_to_experiment(const Overrides& o, eval::ExperimentSpec& spec, std::string_view where = {});
+
+// Refuses overrides of a key the study varies (one value for every condition would flatten
+// it) or gives to an experiment its conditions depend on; then applies them to every
+// condition. Throws Error with every problem.
+void apply_to_study(const Overrides& o, eval::StudySpec& study);
+// The same without the refusal: the overrides a study was started with, on resume.
+void apply_to_conditions(const Overrides& o, eval::StudySpec& study);
+
+// What a stopped study left, per condition; nothing for a new study.
+struct StoredStudy {
+  const std::vector<eval::ResumePoint>* points = nullptr;   // read from a copy of the database
+  const std::vector<store::StoredExperiment>* conditions = nullptr;
+  // The generations a carry-on takes each condition to, if any.
+  const std::vector<std::optional<int>>* carry_on = nullptr;
+};
+
+// Runs every condition not finished yet (into `dir` on rank 0) and returns them all.
+[[nodiscard]] std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const Execution& x,
+                                                           std::optional<store::StudyDirectory>& dir,
+                                                           const StoredStudy& stored, Events& events);
+
+// The names, comma-separated.
+[[nodiscard]] std::string names_of(const std::vector<std::string>& names);
+
+}  // namespace esc::app

@@ -1,0 +1,179 @@
+// The application layer as a library sees it: a run and its resume return their outcome and
+// tell their events (never print), refusals are typed errors, and an experiment whose
+// dependencies were never prepared does not run.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "app/compile.hpp"
+#include "app/error.hpp"
+#include "app/import_path.hpp"
+#include "app/run.hpp"
+#include "runtime/eval/campaign.hpp"
+
+namespace esc::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kStartFrom = fs::path(ESC_SOURCE_DIR) / "tests/cli/data/start_from.esc";
+
+compiler::CompileOptions options() { return compile_options(fs::path(ESC_SOURCE_DIR) / "experiments"); }
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("esc-app-test-" + std::to_string(getpid()) + "-" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+// Every event, as a test can inspect it.
+class Recorded final : public Events {
+ public:
+  std::vector<Note> notes;
+  int generations = 0;
+  int experiments_done = 0;
+
+  void note(const Note& n) override { notes.push_back(n); }
+  std::unique_ptr<Progress> progress(const eval::ExperimentSpec&, eval::CampaignListener& next,
+                                     std::int64_t) override {
+    return std::make_unique<Counting>(next, generations);
+  }
+  void experiment_done(const eval::ExperimentSpec&, const eval::CampaignResult&) override { ++experiments_done; }
+
+  [[nodiscard]] int count(Note::Kind kind) const {
+    return static_cast<int>(std::count_if(notes.begin(), notes.end(), [&](const Note& n) { return n.kind == kind; }));
+  }
+
+ private:
+  class Counting final : public Progress {
+   public:
+    Counting(eval::CampaignListener& next, int& generations) : Progress(next), generations_(generations) {}
+    void generation_done(const control::ControllerSpec& c, int run, const eval::GenerationStats& g) override {
+      Progress::generation_done(c, run, g);
+      ++generations_;
+    }
+
+   private:
+    int& generations_;
+  };
+};
+
+RunRequest small_run(const std::string& experiment, const fs::path& out) {
+  RunRequest r;
+  r.script = kStartFrom;
+  r.experiment = experiment;
+  r.overrides.runs = 1;
+  r.overrides.generations = 2;
+  r.execution.threads = 2;
+  r.out = out;
+  return r;
+}
+
+TEST(App, ARunAndItsCarryOnReturnTheirOutcomeAndTellTheirEvents) {
+  const fs::path out = fresh_dir("carry-on");
+  Recorded events;
+  const Outcome first = run(small_run("basic", out), options(), events);
+  ASSERT_EQ(first.conditions.size(), 1U);
+  EXPECT_TRUE(first.ran);
+  EXPECT_TRUE(first.study.empty());
+  EXPECT_EQ(first.conditions.front().result.controllers.size(), 2U);   // CC and SC
+  EXPECT_EQ(events.generations, 2 * 2);                                // 2 controllers x 1 run x 2 generations
+  EXPECT_EQ(events.experiments_done, 1);
+  EXPECT_EQ(events.count(Note::Kind::Start), 1);
+  EXPECT_TRUE(fs::exists(out / "esc.db"));
+
+  ResumeRequest more;
+  more.dir = out;
+  more.generations = 3;
+  Recorded carried;
+  const Outcome longer = resume(more, options(), carried);
+  EXPECT_TRUE(longer.ran);
+  EXPECT_EQ(carried.count(Note::Kind::Resume), 1);
+  EXPECT_EQ(carried.generations, 2);   // one more generation of each controller
+  for (const eval::ControllerResult& c : longer.conditions.front().result.controllers)
+    EXPECT_EQ(c.runs.front().generations.size(), 3U);
+
+  Recorded again;
+  const Outcome nothing = resume(ResumeRequest{out, {}, {}, {}, {}, false}, options(), again);
+  EXPECT_FALSE(nothing.ran);
+  EXPECT_EQ(again.count(Note::Kind::Complete), 1);
+  EXPECT_EQ(again.generations, 0);
+  fs::remove_all(out);
+}
+
+TEST(App, DependenciesArePreparedAndTold) {
+  const fs::path out = fresh_dir("dependency");
+  Recorded events;
+  const Outcome o = run(small_run("again", out), options(), events);
+  EXPECT_GE(events.count(Note::Kind::Dependency), 2);   // running `basic`, then its genomes read
+  EXPECT_EQ(events.experiments_done, 2);                 // `basic`, then `again`
+  EXPECT_TRUE(fs::exists(out / "deps"));
+  EXPECT_EQ(o.conditions.front().result.controllers.size(), 2U);
+  fs::remove_all(out);
+}
+
+TEST(App, AnExperimentWhoseDependenciesWereNotPreparedDoesNotRun) {
+  Recorded events;
+  compiler::CompileResult compiled = compile(kStartFrom, options(), events);
+  for (const std::string name : {"again", "onwards"}) {
+    const eval::ExperimentSpec& spec = pick_experiment(compiled, kStartFrom, name);
+    eval::CampaignListener quiet;
+    try {
+      (void)eval::run_campaign(spec, {}, quiet);
+      ADD_FAILURE() << name << " ran without the genomes of `basic`";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("needs the results of basic first"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(App, RefusalsAreTypedErrorsWithTheirMessages) {
+  Recorded events;
+  const fs::path out = fresh_dir("refused");
+  RunRequest bad_setting = small_run("basic", out);
+  bad_setting.overrides.set = {"epochs=0", "lambda=-1"};
+  try {
+    (void)run(bad_setting, options(), events);
+    ADD_FAILURE() << "ran with epochs=0";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Setting);
+    EXPECT_EQ(e.problems().size(), 2U);   // every refused setting, not the first alone
+    EXPECT_EQ(e.problems().front().message.rfind("epochs=0: ", 0), 0U) << e.what();
+  }
+  RunRequest misspelt = small_run("basik", out);
+  try {
+    (void)run(misspelt, options(), events);
+    ADD_FAILURE() << "ran an experiment the script does not declare";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Script);
+    EXPECT_EQ(e.problems().front().help, "did you mean `basic`?");
+  }
+  const fs::path script = fresh_dir("typo.esc");
+  std::ofstream(script) << "experiment e { epochs 2 x 10 stepz }\n";
+  try {
+    (void)compile(script, options(), events);
+    ADD_FAILURE() << "a typo compiled";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Script);
+    ASSERT_NE(e.script(), nullptr);
+    EXPECT_FALSE(e.script()->ok());
+    EXPECT_NE(std::string(e.what()).find("typo.esc:1:"), std::string::npos) << e.what();
+  }
+  try {
+    (void)resume(ResumeRequest{out / "never", {}, {}, {}, {}, false}, options(), events);
+    ADD_FAILURE() << "resumed a directory that does not exist";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Results);
+  }
+  EXPECT_FALSE(fs::exists(out));   // nothing written by any refusal
+  fs::remove(script);
+  EXPECT_TRUE(events.notes.empty());
+}
+
+}  // namespace
+}  // namespace esc::app
