@@ -13,14 +13,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/compile.hpp"
-#include "app/dependencies.hpp"
-#include "app/settings.hpp"
-#include "app/version.hpp"
+#include "app/stored_run.hpp"
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
 #include "cli/replay_animation.hpp"
-#include "cli/replay_sources.hpp"
 #include "cli/terminal_events.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
@@ -179,17 +175,6 @@ std::string first_difference(std::span<const eval::TraceStep> now, const store::
   return {};
 }
 
-// What the run's experiment needs from other experiments' stored results (evolved
-// behaviors), read from the cache; replaying never runs them.
-app::DependencyContext reuse_only(const compiler::CompileResult& compiled, const app::Overrides& settings,
-                                  const fs::path& cache, app::Events& events) {
-  app::DependencyContext context{
-      compiled, [&settings](eval::ExperimentSpec& d) { app::apply_settings(settings, d); }, {}, {}, cache,
-      app::version(), events};
-  context.reuse_only = true;
-  return context;
-}
-
 std::string epochs_text(const std::vector<int>& epochs, int total) {
   if (total == 1) return "its one epoch";
   if (static_cast<int>(epochs.size()) == total) return fmt::format("all {} epochs", total);
@@ -311,16 +296,6 @@ std::optional<store::StoredExperiment> load_stored(const RunLocation& at) {
   return std::nullopt;
 }
 
-// The experiment a stored condition ran: its study's condition, as the study's script gives it.
-eval::ExperimentSpec* pick_condition(compiler::CompileResult& compiled, const store::StoredCondition& stored) {
-  for (eval::StudySpec& study : compiled.studies)
-    if (study.name == stored.study)
-      for (eval::ConditionSpec& c : study.conditions)
-        if (c.name == stored.name) return &c.experiment;
-  complain("esc: error: the stored sources no longer declare condition `{}` of study `{}`\n", stored.name, stored.study);
-  return nullptr;
-}
-
 }  // namespace
 
 int replay_command(const ReplayOptions& o) {
@@ -358,46 +333,12 @@ int replay_command(const ReplayOptions& o) {
 
   // The experiment: the stored one, compiled from the sources the run stored (whatever has
   // happened to the script since), with its settings; or one of another script.
-  app::Overrides settings = stored ? app::stored_overrides(*stored, at.root) : app::Overrides{};
-  compiler::CompileResult compiled;
-  eval::ExperimentSpec* spec = nullptr;
-  if (o.script.empty()) {
-    const ReplaySources sources(*stored);
-    compiled = sources.compile();
-    if (!compiled.ok()) return kExitBadInput;
-    if (store::campaign_hash(stored->name, app::sources_of(compiled)) != stored->content_hash) {
-      complain("esc: error: the sources stored in {} do not compile back to the run's script\n", at.root.string());
-      return kExitBadInput;
-    }
-    spec = stored->condition ? pick_condition(compiled, *stored->condition)
-                             : &app::pick_stored_experiment(compiled, stored->script, stored->name);
-  } else {
-    settings.runs.reset();
-    settings.generations.reset();
-    settings.seed.reset();
-    settings.set.clear();
-    compiled = load_script(o.script);
-    if (!compiled.ok()) return kExitBadInput;
-    spec = &app::pick_experiment(compiled, o.script, o.experiment);
-  }
-  if (spec == nullptr) return kExitBadInput;
-  app::apply_settings(settings, *spec);
-  // A run carried on by `esc run --resume DIR --generations G` stored G as its generations.
-  if (stored && o.script.empty()) {
-    const std::optional<int> carried = app::stored_carry_on(*stored, at.root);
-    if (!app::set_generations(*spec, carried)) {
-      complain("esc: error: {} is damaged: it was carried on to {} generations\n", at.root.string(), *carried);
-      return kExitBadInput;
-    }
-  }
-  if (o.script.empty() && !eval::same_settings(spec->resolved_settings, stored->settings)) {
-    complain("esc: error: the stored sources of {} no longer compile to the settings the run used\n", dir.string());
-    return kExitBadInput;
-  }
-  spec->start_from.reset();   // where evolution started does not change an evaluation
-  const fs::path cache = !settings.cache.empty() ? settings.cache : app::cache_of_run(at.root);
   TerminalEvents events;
-  app::prepare_dependencies(*spec, reuse_only(compiled, settings, cache, events));
+  const app::StoredRun run{stored ? &*stored : nullptr, at.root, dir};
+  const eval::ExperimentSpec experiment =
+      o.script.empty() ? app::experiment_of_run(run, default_compile_options(), events)
+                       : app::experiment_for_run(run, o.script, o.experiment, default_compile_options(), events);
+  const eval::ExperimentSpec* spec = &experiment;
 
   const auto epochs = parse_epochs(o.epochs, spec->epochs);
   if (!epochs) return kExitUsage;

@@ -1,4 +1,4 @@
-#include "cli/replay_sources.hpp"
+#include "app/stored_sources.hpp"
 
 #include <stdlib.h>
 
@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "cli/load.hpp"
+#include "app/compile.hpp"
 #include "runtime/store/run_directory.hpp"
 
-namespace esc::cli {
+namespace esc::app {
 
 namespace fs = std::filesystem;
 
@@ -43,8 +43,8 @@ bool names_script(const fs::path& name, const fs::path& script) {
 
 }  // namespace
 
-ReplaySources::ReplaySources(const store::StoredExperiment& stored) {
-  std::string pattern = (fs::temp_directory_path() / "esc-replay-XXXXXX").string();
+StoredSources::StoredSources(const store::StoredExperiment& stored) {
+  std::string pattern = (fs::temp_directory_path() / "esc-sources-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr)
     throw std::runtime_error(fmt::format("cannot create a temporary directory in {}", fs::temp_directory_path().string()));
   root_ = pattern;
@@ -66,15 +66,14 @@ ReplaySources::ReplaySources(const store::StoredExperiment& stored) {
   if (main_.empty()) throw store::StoreError(fmt::format("the run's sources do not hold its script {}", stored.script.string()));
 }
 
-ReplaySources::~ReplaySources() {
+StoredSources::~StoredSources() {
   std::error_code ec;
   fs::remove_all(root_, ec);
 }
 
-compiler::CompileResult ReplaySources::compile() const {
-  compiler::CompileOptions options = default_compile_options();
+compiler::CompileResult StoredSources::compile(compiler::CompileOptions options, Events& events) const {
   options.import_paths.insert(options.import_paths.begin(), import_paths_.begin(), import_paths_.end());
-  return load_script(main_, options);
+  return app::compile(main_, options, events);
 }
 
-}  // namespace esc::cli
+}  // namespace esc::app

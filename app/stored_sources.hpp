@@ -7,21 +7,23 @@
 #include <filesystem>
 #include <vector>
 
+#include "app/events.hpp"
 #include "compiler/compiler.hpp"
 #include "runtime/store/results_db.hpp"
 
-namespace esc::cli {
+namespace esc::app {
 
-class ReplaySources {
+class StoredSources {
  public:
   // Throws std::runtime_error when the temporary directory cannot be written.
-  explicit ReplaySources(const store::StoredExperiment& stored);
-  ~ReplaySources();   // removes the copies
-  ReplaySources(const ReplaySources&) = delete;
-  ReplaySources& operator=(const ReplaySources&) = delete;
+  explicit StoredSources(const store::StoredExperiment& stored);
+  ~StoredSources();   // removes the copies
+  StoredSources(const StoredSources&) = delete;
+  StoredSources& operator=(const StoredSources&) = delete;
 
-  // Compiles the run's script from the copies (diagnostics printed).
-  [[nodiscard]] compiler::CompileResult compile() const;
+  // Compiles the run's script from the copies, their directories searched before those of
+  // `options`; throws Error (kind Script) when it does not compile.
+  [[nodiscard]] compiler::CompileResult compile(compiler::CompileOptions options, Events& events) const;
 
  private:
   std::filesystem::path root_;
@@ -29,4 +31,4 @@ class ReplaySources {
   std::vector<std::filesystem::path> import_paths_;   // directories of the copies, deepest first
 };
 
-}  // namespace esc::cli
+}  // namespace esc::app

@@ -1,0 +1,78 @@
+#include "app/stored_run.hpp"
+
+#include <fmt/format.h>
+
+#include "app/compile.hpp"
+#include "app/dependencies.hpp"
+#include "app/error.hpp"
+#include "app/settings.hpp"
+#include "app/stored_sources.hpp"
+#include "app/version.hpp"
+#include "runtime/eval/settings_history.hpp"
+
+namespace esc::app {
+
+namespace {
+
+// The experiment a stored condition ran: its study's condition, as the study's script gives it.
+eval::ExperimentSpec& condition_of(compiler::CompileResult& compiled, const store::StoredCondition& stored) {
+  for (eval::StudySpec& study : compiled.studies)
+    if (study.name == stored.study)
+      for (eval::ConditionSpec& c : study.conditions)
+        if (c.name == stored.name) return c.experiment;
+  throw Error(ErrorKind::Script, fmt::format("the stored sources no longer declare condition `{}` of study `{}`",
+                                             stored.name, stored.study));
+}
+
+// Evaluation only: where evolution started does not change it, and the behaviors it froze
+// come from the cache as they were.
+eval::ExperimentSpec for_evaluation(eval::ExperimentSpec spec, const compiler::CompileResult& compiled,
+                                    const Overrides& settings, const StoredRun& run, Events& events) {
+  spec.start_from.reset();
+  const std::filesystem::path cache = !settings.cache.empty() ? settings.cache : cache_of_run(run.root);
+  DependencyContext reuse{
+      compiled, [&settings](eval::ExperimentSpec& d) { apply_settings(settings, d); }, {}, {}, cache, version(), events};
+  reuse.reuse_only = true;
+  prepare_dependencies(spec, reuse);
+  return spec;
+}
+
+}  // namespace
+
+eval::ExperimentSpec experiment_of_run(const StoredRun& run, const compiler::CompileOptions& options, Events& events) {
+  const store::StoredExperiment& stored = *run.stored;
+  const Overrides settings = stored_overrides(stored, run.root);
+  const StoredSources sources(stored);
+  compiler::CompileResult compiled = sources.compile(options, events);
+  if (store::campaign_hash(stored.name, sources_of(compiled)) != stored.content_hash)
+    throw Error(ErrorKind::Results,
+                fmt::format("the sources stored in {} do not compile back to the run's script", run.root.string()));
+  eval::ExperimentSpec& spec = stored.condition ? condition_of(compiled, *stored.condition)
+                                                : pick_stored_experiment(compiled, stored.script, stored.name);
+  apply_settings(settings, spec);
+  // A run carried on by a resume stored the generations it was carried on to.
+  const std::optional<int> carried = stored_carry_on(stored, run.root);
+  if (!set_generations(spec, carried))
+    throw Error(ErrorKind::Results,
+                fmt::format("{} is damaged: it was carried on to {} generations", run.root.string(), *carried));
+  if (!eval::same_settings(spec.resolved_settings, stored.settings))
+    throw Error(ErrorKind::Results, fmt::format("the stored sources of {} no longer compile to the settings the run used",
+                                                run.dir.string()));
+  return for_evaluation(spec, compiled, settings, run, events);
+}
+
+eval::ExperimentSpec experiment_for_run(const StoredRun& run, const std::filesystem::path& script,
+                                        const std::string& experiment, const compiler::CompileOptions& options,
+                                        Events& events) {
+  Overrides settings = run.stored != nullptr ? stored_overrides(*run.stored, run.root) : Overrides{};
+  settings.runs.reset();
+  settings.generations.reset();
+  settings.seed.reset();
+  settings.set.clear();
+  compiler::CompileResult compiled = compile(script, options, events);
+  eval::ExperimentSpec& spec = pick_experiment(compiled, script, experiment);
+  apply_settings(settings, spec);
+  return for_evaluation(spec, compiled, settings, run, events);
+}
+
+}  // namespace esc::app

@@ -1,0 +1,33 @@
+#pragma once
+// The experiment a stored run ran, set up again to evaluate its genomes (`esc replay`,
+// re-evaluation from Python): compiled from the sources the run stored, whatever has
+// happened to the files since, with the settings it ran with; or an experiment of another
+// script, evaluated with the run's choice of controllers. Behaviors it froze from other
+// experiments are read from the run's dependency cache, never run.
+#include <filesystem>
+#include <string>
+
+#include "app/events.hpp"
+#include "compiler/compiler.hpp"
+#include "runtime/store/results_db.hpp"
+
+namespace esc::app {
+
+struct StoredRun {
+  const store::StoredExperiment* stored = nullptr;   // null: a genome file outside any run
+  std::filesystem::path root;                        // the directory holding its esc.db
+  std::filesystem::path dir;                         // as named: the root, or a study condition's
+};
+
+// The experiment `run` ran, as it ran it (its carried-on generations included); throws Error
+// when the stored sources no longer compile to the run's script and settings.
+[[nodiscard]] eval::ExperimentSpec experiment_of_run(const StoredRun& run, const compiler::CompileOptions& options,
+                                                     Events& events);
+
+// Experiment `experiment` of `script` (its first when empty), with the run's controllers and
+// dependency cache but none of its settings.
+[[nodiscard]] eval::ExperimentSpec experiment_for_run(const StoredRun& run, const std::filesystem::path& script,
+                                                      const std::string& experiment,
+                                                      const compiler::CompileOptions& options, Events& events);
+
+}  // namespace esc::app
