@@ -59,15 +59,16 @@ std::int64_t generations_done(const eval::ResumePoint& point) {
   return done;
 }
 
-eval::CampaignResult run_campaign_into(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
-                                       store::RunDirectory* dir, std::int64_t already_done, Events& events) {
+eval::CampaignResult run_campaign_into(const eval::ExperimentSpec& spec, const std::string& condition,
+                                       const eval::CampaignOptions& options, store::RunDirectory* dir,
+                                       std::int64_t already_done, Events& events) {
   if (follower_rank() || dir == nullptr) {
     eval::CampaignListener silent;
     eval::CampaignOptions quiet = options;
     quiet.trace_best = false;
     return eval::run_campaign(spec, quiet, silent);
   }
-  std::unique_ptr<Progress> progress = events.progress(spec, *dir, already_done);
+  std::unique_ptr<Progress> progress = events.progress(spec, condition, *dir, already_done);
   eval::CampaignResult result;
   try {
     result = eval::run_campaign(spec, options, progress ? static_cast<eval::CampaignListener&>(*progress) : *dir);
@@ -85,7 +86,7 @@ eval::CampaignResult run_experiment(const eval::ExperimentSpec& spec, const eval
                                     Events& events) {
   std::optional<store::RunDirectory> dir;
   on_rank0([&] { dir.emplace(open()); });
-  eval::CampaignResult result = run_campaign_into(spec, options, dir ? &*dir : nullptr, already_done, events);
+  eval::CampaignResult result = run_campaign_into(spec, {}, options, dir ? &*dir : nullptr, already_done, events);
   if (!follower_rank()) events.experiment_done(spec, result);
   return result;
 }

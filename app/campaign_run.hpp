@@ -42,11 +42,13 @@ struct Execution {
 // Generations finished before a resume: the progress starts from them.
 [[nodiscard]] std::int64_t generations_done(const eval::ResumePoint& point);
 
-// Runs `spec`'s campaign on every rank. Rank 0 stores it in `dir` behind the events'
-// progress (`already_done`: generations finished before this process); the other ranks
-// evaluate their share and store nothing (`dir` is null there).
-eval::CampaignResult run_campaign_into(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,
-                                       store::RunDirectory* dir, std::int64_t already_done, Events& events);
+// Runs `spec`'s campaign (study condition `condition`, or none) on every rank. Rank 0
+// stores it in `dir` behind the events' progress (`already_done`: generations finished
+// before this process); the other ranks evaluate their share and store nothing (`dir` is
+// null there).
+eval::CampaignResult run_campaign_into(const eval::ExperimentSpec& spec, const std::string& condition,
+                                       const eval::CampaignOptions& options, store::RunDirectory* dir,
+                                       std::int64_t already_done, Events& events);
 
 // Runs `spec` into the directory `open` makes (on rank 0), and tells the events it is done.
 eval::CampaignResult run_experiment(const eval::ExperimentSpec& spec, const eval::CampaignOptions& options,

@@ -56,9 +56,10 @@ class Events {
   virtual void warnings(const compiler::CompileResult& /*compiled*/) {}
   virtual void note(const Note& /*note*/) {}
   // A campaign begins: what sees its events, forwarding each to `next`; null: nothing.
-  // `already_done`: generations finished before this process (a resumed run).
-  virtual std::unique_ptr<Progress> progress(const eval::ExperimentSpec& /*spec*/, eval::CampaignListener& /*next*/,
-                                             std::int64_t /*already_done*/) {
+  // `condition`: the study condition it runs (empty for an experiment); `already_done`:
+  // generations finished before this process (a resumed run).
+  virtual std::unique_ptr<Progress> progress(const eval::ExperimentSpec& /*spec*/, const std::string& /*condition*/,
+                                             eval::CampaignListener& /*next*/, std::int64_t /*already_done*/) {
     return nullptr;
   }
   // An experiment's campaign has ended: one a run was asked for, or one it depends on (a

@@ -96,7 +96,7 @@ std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const
       run.emplace(dir->open_condition(i, point, recorded));
     }
     results.push_back({c.name, c.experiment,
-                       run_campaign_into(c.experiment, campaign_options(x, before != nullptr ? &point : nullptr),
+                       run_campaign_into(c.experiment, c.name, campaign_options(x, before != nullptr ? &point : nullptr),
                                          run ? &*run : nullptr, generations_done(point), events)});
   }
   return results;

@@ -28,7 +28,7 @@ void TerminalEvents::note(const app::Note& note) {
     say("esc: {}\n", note.text);
 }
 
-std::unique_ptr<app::Progress> TerminalEvents::progress(const eval::ExperimentSpec& spec,
+std::unique_ptr<app::Progress> TerminalEvents::progress(const eval::ExperimentSpec& spec, const std::string&,
                                                         eval::CampaignListener& next, std::int64_t already_done) {
   return std::make_unique<ProgressPrinter>(spec, next, isatty(STDOUT_FILENO) != 0, already_done);
 }

@@ -12,8 +12,8 @@ class TerminalEvents final : public app::Events {
  public:
   void warnings(const compiler::CompileResult& compiled) override;
   void note(const app::Note& note) override;
-  std::unique_ptr<app::Progress> progress(const eval::ExperimentSpec& spec, eval::CampaignListener& next,
-                                          std::int64_t already_done) override;
+  std::unique_ptr<app::Progress> progress(const eval::ExperimentSpec& spec, const std::string& condition,
+                                          eval::CampaignListener& next, std::int64_t already_done) override;
   void experiment_done(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) override;
 };
 

@@ -37,8 +37,8 @@ class Generations final : public esc::app::Progress {
 class Printed final : public esc::app::Events {
  public:
   void note(const esc::app::Note& n) override { std::cout << n.text << "\n"; }
-  std::unique_ptr<esc::app::Progress> progress(const esc::eval::ExperimentSpec&, esc::eval::CampaignListener& next,
-                                               std::int64_t) override {
+  std::unique_ptr<esc::app::Progress> progress(const esc::eval::ExperimentSpec&, const std::string&,
+                                               esc::eval::CampaignListener& next, std::int64_t) override {
     return std::make_unique<Generations>(next);
   }
 };

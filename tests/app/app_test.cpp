@@ -39,7 +39,7 @@ class Recorded final : public Events {
   int experiments_done = 0;
 
   void note(const Note& n) override { notes.push_back(n); }
-  std::unique_ptr<Progress> progress(const eval::ExperimentSpec&, eval::CampaignListener& next,
+  std::unique_ptr<Progress> progress(const eval::ExperimentSpec&, const std::string&, eval::CampaignListener& next,
                                      std::int64_t) override {
     return std::make_unique<Counting>(next, generations);
   }
