@@ -1,0 +1,30 @@
+#pragma once
+// Reading run directories, never changing them: their results as one table (`esc export`),
+// or as one HTML report with its figures (`esc report`).
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace esc::app {
+
+// The tables a directory exports: "generations" (per-generation statistics; the default),
+// "usage" (steps each behavior acted) and "metrics" (what each run's optimizer reported).
+inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics"};
+
+// Table `table` of every directory in `dirs`, as CSV or (csv false) JSON; JSON without a
+// table named is everything stored. Throws store::StoreError for a directory that is not a
+// run's, std::invalid_argument for an unknown table.
+[[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv);
+
+struct ReportFiles {
+  std::filesystem::path html;
+  std::filesystem::path figures;   // the directory beside it holding each figure as SVG
+  std::size_t figure_count = 0;
+};
+
+// One report of `dirs` written to `out` (default: DIR/report.html of a single directory).
+[[nodiscard]] ReportFiles write_report(const std::vector<std::filesystem::path>& dirs, std::filesystem::path out = {});
+
+}  // namespace esc::app
