@@ -1,7 +1,7 @@
 # Where `cmake --install` puts esc, and the CMake package that lets other projects use its
 # libraries (find_package(esc)). Two components: `runtime` (the esc command, its standard
 # library and shipped scripts, docs, man page, bash completion) and `dev` (headers, static
-# libraries, the package files).
+# libraries, the package files); a third, `python` (the Python module esc), where it is built.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -11,6 +11,12 @@ set(ESC_INSTALL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/esc)
 # The standard library relative to the esc binary: how esc finds it wherever the tree is
 # installed or moved, and the build tree stages experiments/ at the same place.
 file(RELATIVE_PATH ESC_STDLIB_FROM_BINARY ${CMAKE_INSTALL_FULL_BINDIR}
+     ${CMAKE_INSTALL_PREFIX}/${ESC_INSTALL_STDLIB_DIR})
+# The Python package: where Debian's python3 looks for packages of Debian's own (never the
+# multiarch libdir), and the standard library relative to it, which the package reads the
+# same way (python/esc/_paths.py.in).
+set(ESC_INSTALL_PYTHON_DIR lib/python3/dist-packages CACHE STRING "Where the Python package esc is installed, under the prefix")
+file(RELATIVE_PATH ESC_STDLIB_FROM_PYTHON ${CMAKE_INSTALL_PREFIX}/${ESC_INSTALL_PYTHON_DIR}/esc
      ${CMAKE_INSTALL_PREFIX}/${ESC_INSTALL_STDLIB_DIR})
 
 # Exports library targets as esc::<name without the esc_ prefix> (with the same aliases in

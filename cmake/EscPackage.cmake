@@ -1,8 +1,9 @@
 # Debian packages of esc (`cpack -G DEB` in the build directory, or `cmake --build build
 # --target package`): esc (the command, its standard library and scripts, docs, man page,
-# bash completion) with its shared-library dependencies found by dpkg-shlibdeps, and esc-dev
+# bash completion) with its shared-library dependencies found by dpkg-shlibdeps, esc-dev
 # (headers, static libraries, the CMake package) depending on the -dev packages its
-# exported targets need. Built for and tested on Debian bookworm.
+# exported targets need, and, where the Python module is built, python3-esc. Built for and
+# tested on Debian bookworm.
 set(CPACK_PACKAGE_NAME esc)
 set(CPACK_PACKAGE_VENDOR "esc")
 set(ESC_PACKAGE_MAINTAINER "esc maintainers <maintainers@esc.invalid>" CACHE STRING
@@ -43,5 +44,22 @@ if(ESC_WITH_MPI_FOUND)
   string(APPEND esc_dev_depends ", libopenmpi-dev")
 endif()
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "${esc_dev_depends}")
+
+# The Python module: its extension is built for one Python minor version, and it reads the
+# standard library that the esc package installs.
+if(ESC_WITH_PYTHON_FOUND)
+  list(APPEND CPACK_COMPONENTS_ALL python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-esc)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS ON)
+  math(EXPR esc_python_next "${Python3_VERSION_MINOR} + 1")
+  set(esc_python_version ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR})
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
+      "esc (= ${PROJECT_VERSION}), python3 (>= ${esc_python_version}), python3 (<< ${Python3_VERSION_MAJOR}.${esc_python_next}), python3-numpy, python3-pandas")
+  string(CONCAT CPACK_DEBIAN_PYTHON_DESCRIPTION
+      "The Python module esc: compile esc's experiment scripts, read its run directories as pandas\n"
+      "tables, evaluate genomes with its simulator (the fitness esc computes, on every thread) and\n"
+      "step its experiments like a Gymnasium environment.")
+endif()
 
 include(CPack)

@@ -18,6 +18,7 @@ PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr
           libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev   # uuid-dev: the ANTLR runtime links -luuid
           libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
+          pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest                 # ESC_WITH_PYTHON (pytest: its tests)
           libgtest-dev python3 chromium file                                                   # tests (file: cpack -G DEB)
           clang libclang-rt-14-dev)                                                            # ESC_WITH_FUZZ
 

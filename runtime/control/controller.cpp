@@ -7,11 +7,11 @@
 
 namespace esc::control {
 
-namespace {
-
 Activation output_activation(Head h) noexcept {
   return h == Head::Classical ? Activation::Tanh : Activation::Sigmoid;
 }
+
+namespace {
 
 std::string where(const ControllerSpec& spec) {
   return "controller '" + spec.name + "' (" + spec.architecture() + ")";
@@ -161,17 +161,26 @@ const Actor* Controller::sub_controller(std::size_t i) const noexcept {
 
 WheelCommand Controller::step(expr::Frame& frame) noexcept {
   net_.forward(frame);
+  return head([this](std::size_t i) { return net_.output(i); }, frame);
+}
+
+WheelCommand Controller::act(std::span<const double> outputs, expr::Frame& frame) noexcept {
+  return head([outputs](std::size_t i) { return outputs[i]; }, frame);
+}
+
+template <class Outputs>
+WheelCommand Controller::head(const Outputs& output, expr::Frame& frame) noexcept {
   if (spec_->head == Head::Classical) {
     last_action_ = -1;
-    return {net_.output(0), net_.output(1)};
+    return {output(0), output(1)};
   }
   // Argmax over the activated outputs, not the sums: two sums that saturate the logistic
   // give equal outputs, and then the first wins.
   std::size_t best = 0;
-  double best_out = net_.output(0);
+  double best_out = output(0);
   const std::size_t n = usage_.size();  // actions or behaviors
   for (std::size_t i = 1; i < n; ++i)
-    if (const double o = net_.output(i); o > best_out) {  // strict: the first of equal outputs wins
+    if (const double o = output(i); o > best_out) {  // strict: the first of equal outputs wins
       best = i;
       best_out = o;
     }
@@ -183,7 +192,7 @@ WheelCommand Controller::step(expr::Frame& frame) noexcept {
     const Behavior& action = spec_->actions[best];
     const std::size_t first = param_offset_[best];
     for (std::size_t k = 0; k < action.params.size(); ++k)
-      frame[expr::slot::param + k] = net_.output(first + k);
+      frame[expr::slot::param + k] = output(first + k);
     return run_behavior(action, frame);
   }
 

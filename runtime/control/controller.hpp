@@ -18,6 +18,10 @@
 
 namespace esc::control {
 
+// How a head activates its network's outputs: tanh for the classical head's wheel commands,
+// the logistic for the symbolic head's and the supervisor's choices and parameters.
+[[nodiscard]] Activation output_activation(Head head) noexcept;
+
 class Controller final : public Actor {
  public:
   // Supervisors may supervise supervisors, down to this depth (a deeper chain is almost
@@ -51,6 +55,12 @@ class Controller final : public Actor {
   // sub-controller, which may write its own parameters there.
   WheelCommand step(expr::Frame& frame) noexcept override;
 
+  // The head alone on `outputs`, activated outputs of a network of this spec's shape
+  // (output_count() values) in place of its own: what step() does after running the network.
+  // For a caller that runs the network itself (the Python module's Env takes a policy's
+  // outputs as its actions); the controller's own network is not used.
+  WheelCommand act(std::span<const double> outputs, expr::Frame& frame) noexcept;
+
   // Index of the action (symbolic head) or behavior (supervisor) chosen by the last step;
   // -1 for a classical head or before the first step after a reset.
   [[nodiscard]] int last_action() const noexcept override { return last_action_; }
@@ -70,6 +80,10 @@ class Controller final : public Actor {
   [[nodiscard]] const ControllerSpec& spec() const noexcept { return *spec_; }
 
  private:
+  // The head on outputs `output(i)` (activated, asked for only where read).
+  template <class Outputs>
+  WheelCommand head(const Outputs& output, expr::Frame& frame) noexcept;
+
   const ControllerSpec* spec_;
   Mlp net_;
   std::vector<std::size_t> param_offset_;  // symbolic head: output index of action i's param 0

@@ -32,6 +32,16 @@ std::size_t ControllerSpec::genome_size() const noexcept {
   return total;
 }
 
+const char* ControllerSpec::head_name() const noexcept {
+  if (is_tree()) return "tree";
+  switch (head) {
+    case Head::Classical: return "classical";
+    case Head::Symbolic: return "symbolic";
+    case Head::Supervisor: return "supervisor";
+  }
+  return "unknown";
+}
+
 std::string ControllerSpec::architecture() const {
   if (is_tree())
     return head == Head::Classical ? "tree wheels" : head == Head::Symbolic ? "tree actions" : "tree behaviors";

@@ -113,6 +113,9 @@ struct ControllerSpec {
   // an r (recurrent): "17-5r-2". A supervisor's string is its own network's: "17-5r-4".
   // A tree controller: "tree wheels", "tree actions" or "tree behaviors".
   [[nodiscard]] std::string architecture() const;
+  // The head as the results store and its tables name it: "classical", "symbolic",
+  // "supervisor", or "tree" for a tree controller.
+  [[nodiscard]] const char* head_name() const noexcept;
   // What Controller::usage() counts, in index order: the action names (Symbolic), the
   // behavior names (Supervisor), nothing (Classical).
   [[nodiscard]] std::vector<std::string> choice_names() const;

@@ -1,7 +1,8 @@
 #pragma once
 // Evaluates one genome of one controller: `epochs` epochs from start poses drawn from the
 // evaluation's own random stream, each at most `steps` control steps of
-//   sense (IR) -> control -> act + physics -> observe -> fitness term -> stop conditions.
+//   sense (IR) -> control -> act + physics -> observe -> fitness term -> stop conditions
+// (each epoch stepped by an EpochStepper, epoch_stepper.hpp).
 // An Evaluator owns one simulated world and reuses it for every evaluation it runs, so a
 // worker thread keeps one Evaluator for a whole campaign.
 #include <array>

@@ -213,16 +213,6 @@ std::uint64_t parse_u64(const std::string& s, const char* what) {
   }
 }
 
-const char* head_name(const control::ControllerSpec& c) {
-  if (c.is_tree()) return "tree";
-  switch (c.head) {
-    case control::Head::Classical: return "classical";
-    case control::Head::Symbolic: return "symbolic";
-    case control::Head::Supervisor: return "supervisor";
-  }
-  return "unknown";
-}
-
 // What evolves `c` in `spec`, as the controllers table keeps it.
 std::string algorithm_name(const eval::ExperimentSpec& spec, const control::ControllerSpec& c) {
   if (spec.evaluates_only()) return std::string(evo::kEvaluateOnly);
@@ -418,7 +408,7 @@ std::int64_t ResultsDb::insert_experiment(const eval::ExperimentSpec& spec, cons
     const nlohmann::json actions = c.choice_names();
     ctl.bind(1, experiment_id_).bind(2, static_cast<std::int64_t>(i)).bind(3, c.name).bind(4, c.architecture())
         .bind(5, static_cast<std::int64_t>(spec.genome_size_of(c)))
-        .bind(6, head_name(c))
+        .bind(6, c.head_name())
         .bind(7, actions.dump())
         .bind(8, algorithm_name(spec, c))
         .run();

@@ -7,6 +7,7 @@
 #                                                 ESC_PATH, check, a short run and a replay
 #   install_test.sh embed     SOURCE BUILD WORK   examples/embed built against the installed package
 #   install_test.sh package   SOURCE BUILD WORK   the .deb files and what they declare
+# With $ESC_PYTHON (the interpreter the Python module is built for), the module too.
 # Exit 0: passed; 77: skipped (a tool it needs is missing); anything else: failed.
 set -euo pipefail
 mode=$1 source_dir=$2 build_dir=$3 work=$4
@@ -52,6 +53,23 @@ installed)
   [ -f "$work/run/summary.json" ] || fail "no summary.json"
   "$esc" replay "$work/run" --controller SC_8_14_6
   grep -q "<svg" "$work/run/replay-SC_8_14_6-run-01.svg" || fail "no replay SVG"
+  # The Python module, where it is built ($ESC_PYTHON: its interpreter): importable from the
+  # prefix, reading the installed library, holding no build path; it reads the run above.
+  if [ -n "${ESC_PYTHON:-}" ]; then
+    packages=$prefix/lib/python3/dist-packages
+    [ -f "$packages/esc/__init__.py" ] || fail "no Python package in $packages/esc"
+    if strings "$packages"/esc/_esc*.so | grep -F -e "$source_dir" -e "$build_dir"; then fail "esc._esc holds a build path"; fi
+    PYTHONPATH=$packages PYTHONDONTWRITEBYTECODE=1 "$ESC_PYTHON" - "$library" "$work/run" <<'PY'
+import sys
+import esc
+from esc._library import standard_library
+library, run = sys.argv[1:]
+assert standard_library() == library, standard_library()
+script = esc.compile('import "paper/obstacle_avoidance.esc"\n', {"epochs": 1, "steps": 20})
+best = esc.open(run).best("SC_8_14_6", 1)
+print("python: esc", esc.__version__, "from", esc.__file__, script.experiments, "fitness", best.fitness)
+PY
+  fi
   ;;
 
 embed)
@@ -86,6 +104,18 @@ package)
   grep -q "esc (= " <<<"$(dpkg-deb -f "$dev" Depends)" || fail "esc-dev does not depend on esc"
   grep -q "\./usr/lib/.*cmake/esc/escConfig.cmake$" <<<"$dev_files" || fail "no CMake package"
   grep -q "\./usr/include/esc/compiler/compiler.hpp$" <<<"$dev_files" || fail "no headers"
+  if [ -n "${ESC_PYTHON:-}" ]; then
+    python=$(ls "$work"/package/python3-esc_*.deb)
+    python_depends=$(dpkg-deb -f "$python" Depends)
+    echo "python3-esc Depends: $python_depends"
+    for dep in "esc (= " python3-numpy python3-pandas "python3 (>= " libtbb; do
+      grep -qF "$dep" <<<"$python_depends" || fail "python3-esc does not declare $dep"
+    done
+    python_files=$(dpkg-deb -c "$python")
+    for f in __init__.py _paths.py '_esc\..*\.so'; do
+      grep -q "\./usr/lib/python3/dist-packages/esc/$f$" <<<"$python_files" || fail "python3-esc has no esc/$f"
+    done
+  fi
   ;;
 
 *) fail "unknown mode $mode" ;;

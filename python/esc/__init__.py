@@ -1,0 +1,32 @@
+"""esc from Python: compile experiment scripts, read run directories as pandas tables,
+evaluate genomes with esc's own simulator (bit-identical fitness, on every thread) and step
+an experiment's epochs like a Gymnasium environment.
+
+    import esc
+    script = esc.compile("experiments/paper/obstacle_avoidance.esc", {"epochs": 2})
+    run = esc.open("runs/oa")                     # a directory `esc run` wrote
+    curves = run.table()                          # = esc export runs/oa --format csv
+    best = run.best("SC_8_14_6", 1)
+    esc.evaluate(script, "obstacle_avoidance", "SC_8_14_6", [best.genome], seed=best.evaluation_seed)
+    env = esc.Env(script, "obstacle_avoidance", "SC_8_14_6", seed=best.evaluation_seed)
+
+Errors: esc.Error (esc refuses something: the message the esc program prints), its subclass
+esc.ScriptError (a script that does not compile: file, line, column, message), ValueError for
+a wrong argument (an unknown name, a genome of the wrong length).
+"""
+
+from esc._esc import __version__
+from esc.env import Box, Env, Policy
+from esc.errors import Diagnostic, Error, ScriptError, ScriptWarning
+from esc.evaluation import evaluate, evaluation_seed, run_seed
+from esc.results import BestEvaluation, Run, open
+from esc.script import Controller, Script, compile
+
+__all__ = [
+    "__version__",
+    "Box", "Env", "Policy",
+    "Diagnostic", "Error", "ScriptError", "ScriptWarning",
+    "evaluate", "evaluation_seed", "run_seed",
+    "BestEvaluation", "Run", "open",
+    "Controller", "Script", "compile",
+]

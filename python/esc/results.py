@@ -1,0 +1,126 @@
+"""Reading run directories: esc.open(path) -> Run."""
+
+import builtins
+import io
+import json
+import os
+from dataclasses import dataclass
+from typing import List, Optional, Union
+
+import numpy as np
+
+from esc import _esc
+from esc.errors import Error
+
+TABLES = ("generations", "usage", "metrics")
+
+
+@dataclass(frozen=True)
+class BestEvaluation:
+    """Where a run's best evaluation happened, enough to evaluate it again: esc.evaluate of
+    `genome` with seed=`evaluation_seed` and the run's settings gives `fitness` exactly.
+    `run` counts from 1, `generation` and `individual` (the offspring index) from 0;
+    `run_seed` is the run's seed, from which evaluation_seed(run_seed, generation,
+    individual) derives the evaluation's."""
+
+    run: int
+    run_seed: int
+    fitness: float
+    generation: int
+    individual: int
+    evaluation_seed: int
+    genome: np.ndarray
+    tree: Optional[str]
+
+
+class Run:
+    """A run directory of esc (an experiment's or a study's), read once when opened, from a
+    copy of its database: nothing in the directory is ever changed, and a read-only one
+    opens. Made by esc.open."""
+
+    def __init__(self, path: str, stored: "_esc.StoredRun"):
+        self._path = path
+        self._stored = stored
+
+    @property
+    def path(self) -> str:
+        """The directory as given to esc.open (the `directory` column of its tables)."""
+        return self._path
+
+    @property
+    def study(self) -> Optional[str]:
+        """The study's name, or None for an experiment's directory."""
+        return self._stored.study or None
+
+    @property
+    def experiments(self) -> List[str]:
+        """The experiments stored: one, or a study's, one per condition."""
+        return list(self._stored.experiments)
+
+    @property
+    def conditions(self) -> List[str]:
+        """A study's conditions in the study's order; [] for an experiment."""
+        return list(self._stored.conditions)
+
+    @property
+    def controllers(self) -> List[str]:
+        """The controllers compared, in order."""
+        return list(self._stored.controllers)
+
+    @property
+    def summary(self) -> dict:
+        """summary.json as a dict (docs/results-store.md): per controller its runs' best
+        fitness, seeds and per-generation best, mean and sd. Seeds are decimal strings."""
+        file = os.path.join(self._path, "summary.json")
+        try:
+            with builtins.open(file, encoding="utf-8") as f:
+                return json.load(f)
+        except FileNotFoundError:
+            raise Error(f"{self._path} has no summary.json: no run of it has finished yet") from None
+
+    def table(self, name: str = "generations"):
+        """Table `name` as a pandas DataFrame: "generations" (the default export: one row
+        per run and generation), "usage" (behavior usage per run, generation and behavior)
+        or "metrics" (what each optimizer reported per generation). ValueError for another
+        name.
+
+        It is pandas.read_csv of the very text `esc export DIR --table NAME --format csv`
+        writes (the `directory` column holds the path as given to esc.open), read with
+        float_precision="round_trip": the same columns and dtypes, and every number the
+        double esc stored (the CSV's 17 significant digits read back exactly, where pandas'
+        default parser may miss the last bit)."""
+        import pandas as pd
+
+        return pd.read_csv(io.StringIO(self._stored.table_csv(name)), float_precision="round_trip")
+
+    def best(self, controller: str, run: int, condition: Optional[str] = None) -> BestEvaluation:
+        """The best evaluation of finished run `run` (from 1) of `controller` (of a study's
+        `condition`, which a study of several conditions needs). ValueError for a controller,
+        run or condition it does not hold."""
+        d = self._stored.best(controller, run, condition or "")
+        return BestEvaluation(d["run"], d["run_seed"], d["fitness"], d["generation"], d["individual"],
+                              d["evaluation_seed"], d["genome"], d["tree"])
+
+    def best_genome(self, controller: str, run: int, condition: Optional[str] = None,
+                    encoded: bool = False) -> Union[np.ndarray, str]:
+        """The best genome of finished run `run` (from 1) of `controller`: a network's
+        weights as a float64 array; a tree's text as script code, or with encoded=True the
+        encoded tree (a float64 array) that esc.evaluate takes."""
+        best = self.best(controller, run, condition)
+        return best.tree if best.tree is not None and not encoded else best.genome
+
+    def __repr__(self) -> str:
+        what = f"study {self.study}" if self.study else f"experiment {self.experiments[0]}"
+        return f"<esc.Run {self._path}: {what}, controllers {self.controllers}>"
+
+
+def open(path: Union[str, "os.PathLike[str]"]) -> Run:
+    """Opens the run directory `path` (written by `esc run`) without changing it.
+
+    Raises FileNotFoundError when `path` does not exist, esc.Error with the store's message
+    when it is not an esc run directory, is damaged, or holds no committed generation.
+    """
+    p = os.fspath(path)
+    if not os.path.exists(p):
+        raise FileNotFoundError(2, "No such run directory", p)
+    return Run(p, _esc.StoredRun(p))

@@ -1,0 +1,136 @@
+"""Compiling scripts: esc.compile(path_or_source, settings) -> Script."""
+
+import os
+import warnings
+from dataclasses import dataclass
+from typing import Dict, List, Mapping, Optional, Tuple, Union
+
+from esc import _esc
+from esc._library import standard_library
+from esc.errors import Diagnostic, ScriptError, ScriptWarning
+
+# The file name a script given as text has in diagnostics; its relative imports are searched
+# from the working directory.
+SOURCE_NAME = "<script>"
+
+
+@dataclass(frozen=True)
+class Controller:
+    """A controller an experiment compares: its name, architecture ("8-14-6", "tree
+    actions"), head ("classical", "symbolic", "supervisor" or "tree"), genome size (a
+    network's weights; 0 for a tree), its network's inputs by observable name ("ir[0]") and
+    its choices (the actions or behaviors it picks from, in order)."""
+
+    name: str
+    architecture: str
+    head: str
+    genome_size: int
+    inputs: Tuple[str, ...]
+    choices: Tuple[str, ...]
+
+    @property
+    def is_tree(self) -> bool:
+        """Whether it is a GP tree (its genome an encoded tree) rather than a network."""
+        return self.head == "tree"
+
+
+def _controller(d: dict) -> Controller:
+    return Controller(d["name"], d["architecture"], d["head"], d["genome_size"], tuple(d["inputs"]),
+                      tuple(d["choices"]))
+
+
+class Script:
+    """A compiled script, its settings applied. Made by esc.compile; passed to esc.evaluate
+    and esc.Env."""
+
+    def __init__(self, compiled: "_esc.CompiledScript"):
+        self._compiled = compiled
+
+    @property
+    def file(self) -> str:
+        """The script's file as given, or "<script>" for a script given as text."""
+        return self._compiled.file
+
+    @property
+    def experiments(self) -> List[str]:
+        """The main file's experiments, in declaration order."""
+        return list(self._compiled.experiments)
+
+    @property
+    def studies(self) -> Dict[str, List[str]]:
+        """The main file's studies, in declaration order: name -> its conditions' names."""
+        return {name: list(conditions) for name, conditions in self._compiled.studies}
+
+    @property
+    def controllers(self) -> Dict[str, Dict[str, Controller]]:
+        """Per experiment, the controllers it compares in order: name -> Controller."""
+        return {e: {c["name"]: _controller(c) for c in self._compiled.controllers(e)} for e in self.experiments}
+
+    @property
+    def settings(self) -> Dict[str, Dict[str, str]]:
+        """Per experiment, every setting as resolved with the settings given applied, as
+        settings.json holds them ("epochs" -> "10", ...)."""
+        return {e: dict(self._compiled.settings(e)) for e in self.experiments}
+
+    def controller(self, experiment: str, name: str) -> Controller:
+        """Controller `name` of `experiment`; ValueError naming the experiments or controllers
+        there are (and the closest)."""
+        return _controller(self._compiled.controller(experiment, name))
+
+    def __repr__(self) -> str:
+        return f"<esc.Script {self.file}: experiments {self.experiments}, studies {list(self.studies)}>"
+
+
+PathOrSource = Union[str, "os.PathLike[str]"]
+
+
+def _setting_text(value) -> str:
+    """A setting's value as `--set KEY=VALUE` writes it (True and False as on and off)."""
+    if isinstance(value, bool):
+        return "on" if value else "off"
+    return str(value)
+
+
+def _is_path(path_or_source: PathOrSource) -> bool:
+    """Whether the argument names a file rather than holding script text: a PathLike always;
+    a str when it is an existing file, or a one-line name ending in .esc (a missing file,
+    reported as such rather than compiled as text)."""
+    if isinstance(path_or_source, os.PathLike):
+        return True
+    if os.path.isfile(path_or_source):
+        return True
+    return "\n" not in path_or_source and path_or_source.strip().endswith(".esc")
+
+
+def compile(path_or_source: PathOrSource, settings: Optional[Mapping[str, object]] = None) -> Script:
+    """Compiles a script as the esc program does.
+
+    `path_or_source` is a path (str or os.PathLike) to a script file, or the script's text
+    (relative imports then searched from the working directory; diagnostics name it
+    "<script>"). Imports not found beside the script are searched in $ESC_PATH, then in esc's
+    standard library. `settings` ({"epochs": 2, "robot.inertia": False, ...}) are applied to
+    every experiment and study condition as `esc run --set KEY=VALUE` applies them.
+
+    Raises FileNotFoundError for a missing file, esc.ScriptError for a script with errors
+    (its first error's file, line, column and message), esc.Error for a setting refused.
+    Warnings are issued as esc.ScriptWarning.
+    """
+    pairs = [(str(k), _setting_text(v)) for k, v in (settings or {}).items()]
+    if _is_path(path_or_source):
+        path = os.fspath(path_or_source)
+        if not os.path.isfile(path):
+            raise FileNotFoundError(2, "No such script", path)
+        compiled = _esc.compile_file(path, standard_library(), pairs)
+    else:
+        compiled = _esc.compile_source(path_or_source, SOURCE_NAME, standard_library(), pairs)
+    diagnostics = [Diagnostic.from_dict(d) for d in compiled.diagnostics]
+    if not compiled.ok:
+        raise ScriptError(compiled.rendered, diagnostics)
+    if diagnostics:
+        warnings.warn(compiled.rendered.rstrip("\n"), ScriptWarning, stacklevel=2)
+    return Script(compiled)
+
+
+def as_script(script: Union[Script, PathOrSource]) -> Script:
+    """`script` itself, or the Script a path or text compiles to."""
+    return script if isinstance(script, Script) else compile(script)

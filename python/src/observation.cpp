@@ -1,0 +1,36 @@
+#include "python/src/observation.hpp"
+
+#include <limits>
+
+namespace esc::python {
+
+namespace {
+
+std::string indexed(std::string_view name, expr::Slot index) { return std::string(name) + "[" + std::to_string(index) + "]"; }
+
+}  // namespace
+
+std::string slot_name(expr::Slot slot) {
+  for (const expr::Observable& o : expr::kObservables)
+    if (slot >= o.first && slot < o.first + o.count) return o.indexed ? indexed(o.name, slot - o.first) : std::string(o.name);
+  for (const expr::ParametrisedObservable& o : expr::kParametrised)
+    if (slot >= o.first && slot < o.first + o.count) return indexed(o.name, slot - o.first);
+  if (slot == expr::slot::acting) return "acting";
+  if (slot >= expr::slot::param && slot < expr::kFrameSize) return indexed("param", slot - expr::slot::param);
+  return "slot " + std::to_string(slot);
+}
+
+SlotRange slot_range(expr::Slot slot, const eval::ExperimentSpec& spec) {
+  namespace s = expr::slot;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double last_step = spec.steps > 0 ? spec.steps - 1 : 0;
+  if (slot == s::forward_speed || (slot >= s::wheels && slot < s::wheels + expr::kWheelCount)) return {-1.0, 1.0};
+  if (slot == s::step) return {0.0, last_step};
+  if (slot == s::time) return {0.0, last_step * spec.robot.control_step_s};
+  if (slot == s::epoch || slot == s::cells_visited) return {0.0, kInf};
+  if (slot == s::acting) return {-1.0, static_cast<double>(spec.choice_ids) - 1.0};
+  if (slot >= s::param) return {-kInf, kInf};
+  return {0.0, 1.0};   // speeds, sensors, booleans, energy, noise
+}
+
+}  // namespace esc::python

@@ -1,0 +1,145 @@
+// A run directory read once, from a copy of its database (store::load_untouched): reading
+// never changes a byte of it, a killed run's log included, and works on a read-only
+// directory. Its tables are the CSV text `esc export DIR --table NAME --format csv` writes,
+// made by the same functions; the package parses them with pandas.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "compiler/names.hpp"
+#include "python/src/bindings.hpp"
+#include "runtime/eval/campaign.hpp"
+#include "runtime/store/export.hpp"
+#include "runtime/store/metrics_export.hpp"
+#include "runtime/store/untouched_load.hpp"
+#include "runtime/store/usage_export.hpp"
+
+namespace esc::python {
+
+namespace py = pybind11;
+
+namespace {
+
+class StoredRun {
+ public:
+  explicit StoredRun(const std::filesystem::path& dir) : dir_{dir, store::load_untouched(dir)} {}
+
+  [[nodiscard]] std::string table_csv(const std::string& name) const {
+    const std::vector<store::StoredDirectory> dirs{dir_};
+    if (name == "generations") return store::export_csv(dirs);
+    if (name == "usage") return store::usage_csv(dirs);
+    if (name == "metrics") return store::metrics_csv(dirs);
+    std::string message = "no table `" + name + "`; esc export has `generations`, `usage` and `metrics`";
+    if (const auto near = compiler::closest(name, {"generations", "usage", "metrics"}))
+      message += "; did you mean `" + *near + "`?";
+    throw py::value_error(message);
+  }
+
+  // The study's name, or "" for a plain experiment.
+  [[nodiscard]] std::string study() const {
+    const auto& all = dir_.experiments;
+    return !all.empty() && all.front().condition ? all.front().condition->study : std::string();
+  }
+
+  [[nodiscard]] std::vector<std::string> experiments() const {
+    std::vector<std::string> names;
+    for (const store::StoredExperiment& e : dir_.experiments) names.push_back(e.name);
+    return names;
+  }
+
+  [[nodiscard]] std::vector<std::string> conditions() const {
+    std::vector<std::string> names;
+    for (const store::StoredExperiment& e : dir_.experiments)
+      if (e.condition) names.push_back(e.condition->name);
+    return names;
+  }
+
+  // Every controller of every experiment (condition), each named once, in order.
+  [[nodiscard]] std::vector<std::string> controllers() const {
+    std::vector<std::string> names;
+    for (const store::StoredExperiment& e : dir_.experiments)
+      for (const store::StoredController& c : e.controllers)
+        if (std::find(names.begin(), names.end(), c.name) == names.end()) names.push_back(c.name);
+    return names;
+  }
+
+  // Run `run` (from 1) of `controller`: its best genome and where its best evaluation happened.
+  [[nodiscard]] py::dict best(const std::string& controller, int run, const std::string& condition) const {
+    const store::StoredController& c = find_controller(find_experiment(condition), controller);
+    const auto r = std::find_if(c.finished.begin(), c.finished.end(),
+                                [run](const eval::RunResult& x) { return x.run + 1 == run; });
+    if (r == c.finished.end())
+      throw py::value_error("controller " + c.name + " has no finished run " + std::to_string(run) + " (" +
+                            std::to_string(c.finished.size()) + " finished)");
+    py::dict d;
+    d["run"] = r->run + 1;
+    d["run_seed"] = r->seed;
+    d["fitness"] = r->best_fitness;
+    d["generation"] = r->best_generation;
+    d["individual"] = r->best_index;
+    d["evaluation_seed"] = eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index));
+    d["genome"] = py::array_t<double>(static_cast<py::ssize_t>(r->best_genome.size()), r->best_genome.data());
+    d["tree"] = c.head == "tree" ? py::object(py::str(r->best_tree)) : py::object(py::none());
+    return d;
+  }
+
+ private:
+  // The experiment, or a study's condition `condition` ("" when the study has only one).
+  [[nodiscard]] const store::StoredExperiment& find_experiment(const std::string& condition) const {
+    const std::vector<std::string> names = conditions();
+    if (names.empty()) {
+      if (!condition.empty()) throw py::value_error(dir_.path.string() + " holds an experiment, not a study: it has no conditions");
+      return dir_.experiments.front();
+    }
+    if (condition.empty() && names.size() == 1) return dir_.experiments.front();
+    for (const store::StoredExperiment& e : dir_.experiments)
+      if (e.condition && e.condition->name == condition) return e;
+    std::string message = condition.empty() ? dir_.path.string() + " holds study `" + study() + "`: name a condition"
+                                            : dir_.path.string() + " has no condition `" + condition + "`";
+    message += "; its conditions are " + compiler::quoted_list(names, " and ");
+    if (const auto near = compiler::closest(condition, names); near && !condition.empty())
+      message += "; did you mean `" + *near + "`?";
+    throw py::value_error(message);
+  }
+
+  [[nodiscard]] static const store::StoredController& find_controller(const store::StoredExperiment& e,
+                                                                      const std::string& name) {
+    std::vector<std::string> names;
+    for (const store::StoredController& c : e.controllers) {
+      if (c.name == name) return c;
+      names.push_back(c.name);
+    }
+    std::string message = "experiment `" + e.name + "` stored no controller `" + name + "`; it compares " +
+                          compiler::quoted_list(names, " and ");
+    if (const auto near = compiler::closest(name, names)) message += "; did you mean `" + *near + "`?";
+    throw py::value_error(message);
+  }
+
+  store::StoredDirectory dir_;
+};
+
+}  // namespace
+
+void bind_results(py::module_& m) {
+  py::class_<StoredRun>(m, "StoredRun", "A run directory as stored (see esc.Run, which wraps it).")
+      .def(py::init<const std::filesystem::path&>(), py::arg("directory"),
+           "Reads `directory`'s database from a copy, changing nothing in it. Raises esc.Error when it is not an "
+           "esc run directory, is damaged, or holds no committed generation.")
+      .def("table_csv", &StoredRun::table_csv, py::arg("name"),
+           "The table `name` (generations, usage or metrics) as `esc export DIR --table NAME --format csv` writes it.")
+      .def_property_readonly("study", &StoredRun::study, "The study's name, or an empty string for an experiment.")
+      .def_property_readonly("experiments", &StoredRun::experiments,
+                             "The experiments stored: one, or one per condition of a study.")
+      .def_property_readonly("conditions", &StoredRun::conditions, "A study's conditions in its order; empty for an experiment.")
+      .def_property_readonly("controllers", &StoredRun::controllers, "The controllers compared, in order.")
+      .def("best", &StoredRun::best, py::arg("controller"), py::arg("run"), py::arg("condition") = "",
+           "Finished run `run` (from 1) of `controller`: a dict of run, run_seed, fitness, generation, individual, "
+           "evaluation_seed, genome (network weights, or a tree encoded) and tree (a tree's text, else None).");
+}
+
+}  // namespace esc::python

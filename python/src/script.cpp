@@ -1,0 +1,181 @@
+// Compiling a script as every esc command does (imports beside the file, then $ESC_PATH, then
+// the standard library the package found), from a file or from text, and the settings a
+// caller gives applied as `esc run --set KEY=VALUE` applies them. What is wrong with a script
+// comes back as data (its diagnostics and the text the CLI prints), from which the package
+// raises esc.ScriptError; a setting refused raises esc.Error.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "app/import_path.hpp"
+#include "python/src/bindings.hpp"
+#include "python/src/compiled_script.hpp"
+#include "python/src/errors.hpp"
+#include "python/src/observation.hpp"
+
+namespace esc::python {
+
+namespace py = pybind11;
+
+namespace {
+
+const char* severity_name(compiler::Severity s) {
+  switch (s) {
+    case compiler::Severity::Error: return "error";
+    case compiler::Severity::Warning: return "warning";
+    case compiler::Severity::Note: return "note";
+  }
+  return "error";
+}
+
+py::dict location(const compiler::SourceRange& where) {
+  py::dict d;
+  d["file"] = where.file.string();
+  d["line"] = where.line;
+  d["column"] = where.column;
+  d["length"] = where.length;
+  return d;
+}
+
+py::list diagnostics(const CompiledScript& s) {
+  py::list out;
+  for (const compiler::Diagnostic& d : s.result.diagnostics) {
+    py::dict item = location(d.where);
+    item["severity"] = severity_name(d.severity);
+    item["message"] = d.message;
+    item["help"] = d.help;
+    py::list notes;
+    for (const auto& [where, text] : d.notes) {
+      py::dict note = location(where);
+      note["message"] = text;
+      notes.append(note);
+    }
+    item["notes"] = notes;
+    out.append(item);
+  }
+  return out;
+}
+
+using Settings = std::vector<std::pair<std::string, std::string>>;
+
+// The settings, (key, value) in order, applied to every experiment of the main file and every
+// study condition's, each as `esc run --set` applies it. Throws Error on the first problem, worded
+// as the CLI words it ("experiment `x`: KEY=VALUE: what is wrong").
+void apply_settings(CompiledScript& s, const Settings& settings) {
+  const auto apply = [&settings](eval::ExperimentSpec& e, const std::string& where) -> std::string {
+    for (const auto& [key, value] : settings)
+      if (const std::string error = compiler::apply_setting(e, key, value); !error.empty())
+        return where + ": " + key + "=" + value + ": " + error;
+    return {};
+  };
+  for (eval::ExperimentSpec& e : s.result.experiments)
+    if (std::string error = apply(e, "experiment `" + e.name + "`"); !error.empty()) throw Error(error);
+  for (eval::StudySpec& study : s.result.studies)
+    for (eval::ConditionSpec& c : study.conditions)
+      if (std::string error = apply(c.experiment, "study `" + study.name + "`, condition `" + c.name + "`");
+          !error.empty())
+        throw Error(error);
+}
+
+py::dict controller_info(const control::ControllerSpec& c) {
+  py::dict d;
+  d["name"] = c.name;
+  d["architecture"] = c.architecture();
+  d["head"] = c.head_name();
+  d["genome_size"] = c.genome_size();
+  std::vector<std::string> inputs;
+  if (!c.is_tree())
+    for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot));
+  d["inputs"] = inputs;
+  d["choices"] = c.choice_names();
+  return d;
+}
+
+py::list controllers(const CompiledScript& s, const std::string& experiment) {
+  py::list out;
+  for (const control::ControllerSpec& c : find_experiment(s, experiment).controllers) out.append(controller_info(c));
+  return out;
+}
+
+// A script that compiled gets its settings; one with errors is returned as it is, for its
+// diagnostics.
+std::shared_ptr<CompiledScript> compiled(compiler::CompileResult result, std::filesystem::path file,
+                                         const Settings& settings) {
+  auto s = std::make_shared<CompiledScript>(CompiledScript{std::move(result), std::move(file)});
+  if (s->result.ok()) apply_settings(*s, settings);
+  return s;
+}
+
+}  // namespace
+
+void bind_script(py::module_& m) {
+  py::class_<CompiledScript, std::shared_ptr<CompiledScript>>(m, "CompiledScript",
+                                                              "A compiled script (see esc.Script, which wraps it).")
+      .def_property_readonly("ok", [](const CompiledScript& s) { return s.result.ok(); },
+                             "Whether it compiled without errors.")
+      .def_property_readonly("file", [](const CompiledScript& s) { return s.file.string(); },
+                             "The script's file, or the pseudo file name of a script given as text.")
+      .def_property_readonly("diagnostics", &diagnostics,
+                             "Every error, warning and note: dicts of severity, file, line, column, length, "
+                             "message, help and notes.")
+      .def_property_readonly(
+          "rendered", [](const CompiledScript& s) { return compiler::render_all(s.result.diagnostics, s.result.sources); },
+          "The diagnostics as `esc check` prints them.")
+      .def_property_readonly(
+          "experiments",
+          [](const CompiledScript& s) {
+            std::vector<std::string> names;
+            for (const eval::ExperimentSpec& e : s.result.experiments) names.push_back(e.name);
+            return names;
+          },
+          "The main file's experiments, in declaration order.")
+      .def_property_readonly(
+          "studies",
+          [](const CompiledScript& s) {
+            std::vector<std::pair<std::string, std::vector<std::string>>> studies;
+            for (const eval::StudySpec& st : s.result.studies) {
+              std::vector<std::string> conditions;
+              for (const eval::ConditionSpec& c : st.conditions) conditions.push_back(c.name);
+              studies.emplace_back(st.name, std::move(conditions));
+            }
+            return studies;
+          },
+          "The main file's studies, in declaration order, each with its conditions.")
+      .def("controllers", &controllers, py::arg("experiment"),
+           "The controllers `experiment` compares, in order: dicts of name, architecture, head, genome_size "
+           "(0 for a tree), inputs (the network's, by observable name) and choices (actions or behaviors).")
+      .def(
+          "controller",
+          [](const CompiledScript& s, const std::string& experiment, const std::string& name) {
+            return controller_info(find_controller(find_experiment(s, experiment), name));
+          },
+          py::arg("experiment"), py::arg("name"),
+          "Controller `name` of `experiment`, as controllers() describes it; ValueError naming those it compares.")
+      .def(
+          "settings", [](const CompiledScript& s, const std::string& e) { return find_experiment(s, e).resolved_settings; },
+          py::arg("experiment"), "Every setting of `experiment` as resolved (what settings.json holds).");
+
+  m.def(
+      "compile_file",
+      [](const std::filesystem::path& file, const std::filesystem::path& standard_library, const Settings& settings) {
+        return compiled(compiler::compile_file(file, app::compile_options(standard_library)), file, settings);
+      },
+      py::arg("file"), py::arg("standard_library"), py::arg("settings"),
+      "Compiles the script `file` (imports searched beside it, in $ESC_PATH, then in `standard_library`) and "
+      "applies `settings`, (key, value) pairs, to every experiment and study condition as `esc run --set` does. "
+      "Raises esc.Error for a setting refused.");
+  m.def(
+      "compile_source",
+      [](const std::string& text, const std::filesystem::path& name, const std::filesystem::path& standard_library,
+         const Settings& settings) {
+        return compiled(compiler::compile_source(text, name, app::compile_options(standard_library)), name, settings);
+      },
+      py::arg("text"), py::arg("name"), py::arg("standard_library"), py::arg("settings"),
+      "Compiles script text as compile_file does; `name` is its file name in diagnostics, and relative imports "
+      "are searched in its directory first.");
+}
+
+}  // namespace esc::python

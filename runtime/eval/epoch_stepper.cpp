@@ -1,0 +1,39 @@
+#include "runtime/eval/epoch_stepper.hpp"
+
+#include <algorithm>
+
+namespace esc::eval {
+
+void EpochStepper::begin(std::uint64_t seed, int epoch) {
+  seed_ = seed;
+  epoch_ = epoch;
+  step_ = 0;
+  rng_ = Rng(seed, {static_cast<std::uint64_t>(epoch)});
+  world_->begin_epoch(rng_);   // random zones, then the start pose, then reset
+  frame_.fill(0.0);
+  sense();
+}
+
+TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, double fitness) const {
+  const sim::RobotState& state = world_->state();
+  TraceStep t;
+  t.energy = state.floor.energy;
+  const auto zones = world_->zone_centers();
+  t.zone_count = std::min(zones.size(), t.zones.size());
+  std::copy_n(zones.begin(), t.zone_count, t.zones.begin());
+  t.epoch = epoch_;
+  t.step = step_ - 1;
+  t.pose = state.pose;
+  t.ir = ir_;
+  t.light = light_;
+  t.left_command = cmd.left;
+  t.right_command = cmd.right;
+  t.left_speed_mps = state.wheel_speed_mps[0];
+  t.right_speed_mps = state.wheel_speed_mps[1];
+  t.action = action;
+  t.fitness = fitness;
+  t.collided = state.collided;
+  return t;
+}
+
+}  // namespace esc::eval
