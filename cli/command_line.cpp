@@ -38,11 +38,15 @@ CLI::App* add_check(CLI::App& app, std::vector<std::filesystem::path>& files) {
 CLI::App* add_run(CLI::App& app, RunOptions& o) {
   auto* const command = app.add_subcommand("run", "evolve the controllers of an experiment or a study and compare them");
   command->add_option("FILE", o.file, "script file (with --resume: default the stored script path)");
-  command->add_option("--resume", o.resume, "continue the interrupted run in this directory");
+  command->add_option("--resume", o.resume,
+                      "continue the interrupted run or study in this directory, with the settings it started with "
+                      "(with --generations G: carry every run on to G generations)");
   command->add_option("--experiment", o.experiment,
                       "experiment or study to run (default: the first declared in the file)");
   command->add_option("--runs", o.runs, "independent runs per controller")->check(kAtLeastOne);
-  command->add_option("--generations", o.generations, "generations per run")->check(kAtLeastOne);
+  command->add_option("--generations", o.generations,
+                      "generations per run (with --resume: carry a finished or stopped run on to this many)")
+      ->check(kAtLeastOne);
   command->add_option("--seed", o.seed, "master seed (every random stream derives from it)")->check(kSeed);
   command->add_option("--threads", o.threads, "worker threads (default: all cores)")->check(kThreads);
   command->add_option("--runs-at-once", o.runs_at_once,

@@ -20,6 +20,7 @@ from esc.env import Box, Env, Policy
 from esc.errors import Diagnostic, Error, ScriptError, ScriptWarning
 from esc.evaluation import evaluate, evaluation_seed, run_seed
 from esc.results import BestEvaluation, Run, open
+from esc.running import Generation, resume, run
 from esc.script import Controller, Script, compile
 
 __all__ = [
@@ -28,5 +29,6 @@ __all__ = [
     "Diagnostic", "Error", "ScriptError", "ScriptWarning",
     "evaluate", "evaluation_seed", "run_seed",
     "BestEvaluation", "Run", "open",
+    "Generation", "resume", "run",
     "Controller", "Script", "compile",
 ]

@@ -8,7 +8,10 @@ from typing import List, Sequence, Tuple
 class Error(Exception):
     """Something esc refuses, with the message the esc program prints after "esc: error:":
     a run directory that is not one (or is damaged), a setting refused, a script that does
-    not compile (ScriptError)."""
+    not compile (ScriptError). `kind`, where esc.run or esc.resume refused, says what was
+    refused: "script", "setting", "results" (the directory), "dependency" or "memory"."""
+
+    kind: str = ""
 
 
 class ScriptWarning(UserWarning):

@@ -3,7 +3,7 @@
 import os
 import warnings
 from dataclasses import dataclass
-from typing import Dict, List, Mapping, Optional, Tuple, Union
+from typing import Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 from esc import _esc
 from esc._library import standard_library
@@ -43,8 +43,15 @@ class Script:
     """A compiled script, its settings applied. Made by esc.compile; passed to esc.evaluate
     and esc.Env."""
 
-    def __init__(self, compiled: "_esc.CompiledScript"):
+    def __init__(self, compiled: "_esc.CompiledScript", given: Sequence[Tuple[str, str]] = ()):
         self._compiled = compiled
+        self._given = tuple(given)
+
+    @property
+    def given_settings(self) -> Tuple[Tuple[str, str], ...]:
+        """The settings esc.compile was given, as (key, value) texts in order: what esc.run
+        gives `esc run` as --set KEY=VALUE."""
+        return self._given
 
     @property
     def file(self) -> str:
@@ -128,7 +135,7 @@ def compile(path_or_source: PathOrSource, settings: Optional[Mapping[str, object
         raise ScriptError(compiled.rendered, diagnostics)
     if diagnostics:
         warnings.warn(compiled.rendered.rstrip("\n"), ScriptWarning, stacklevel=2)
-    return Script(compiled)
+    return Script(compiled, pairs)
 
 
 def as_script(script: Union[Script, PathOrSource]) -> Script:

@@ -12,5 +12,6 @@ void bind_results(pybind11::module_& m);    // results.cpp: reading run director
 void bind_evaluate(pybind11::module_& m);   // evaluate.cpp: fitness of genomes
 void bind_env(pybind11::module_& m);        // env.cpp: one epoch step by step
 void bind_policy(pybind11::module_& m);     // policy.cpp: a genome's network as Env's policy
+void bind_run(pybind11::module_& m);        // run.cpp: running and resuming experiments and studies
 
 }  // namespace esc::python

@@ -10,4 +10,5 @@ PYBIND11_MODULE(_esc, m) {
   esc::python::bind_evaluate(m);
   esc::python::bind_env(m);
   esc::python::bind_policy(m);
+  esc::python::bind_run(m);
 }
