@@ -15,7 +15,7 @@ import "lib/khepera.esc"
 arena box { size 50cm x 50cm  cylinder at (25cm, 25cm) radius 3cm  start random }
 fitness avoid { step: max(forward_speed, 0) * (1 - sqrt(wheel_diff))  stop epoch when collision }
 controller SC = symbolic(mlp(ir[0..7] -> hidden 4), actions [forward, left, right])
-controller CC = classical(mlp(ir[0..7] -> hidden 4 -> 2))
+controller CC = mlp(ir[0..7] -> hidden 4 -> wheels)
 experiment demo { arena box  robot khepera  epochs 2 x 100 steps  fitness avoid
                   evolve es(mu 5, lambda 20) for 3 generations  runs 2  compare SC, CC }
 study inertia {
@@ -54,6 +54,7 @@ int main() {
 
   esc::app::RunRequest request;
   request.script = script;
+  request.experiment = "inertia";   // the script declares experiment demo first
   request.out = work / "out";
   request.execution.threads = 2;
   Printed events;

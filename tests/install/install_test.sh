@@ -83,6 +83,9 @@ embed)
   "$work/embed/embed" | tee "$work/embed.out"
   grep -q "^genome of 66 weights: fitness" "$work/embed.out" || fail "no evaluation"
   grep -q "^run 2: best fitness" "$work/embed.out" || fail "no campaign"
+  "$work/embed/embed_study" | tee "$work/embed_study.out"
+  grep -q "^running study inertia (2 conditions: with_inertia, without)" "$work/embed_study.out" || fail "no study"
+  grep -q "^condition without CC: best fitness" "$work/embed_study.out" || fail "no study outcome"
   ;;
 
 package)
