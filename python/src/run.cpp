@@ -72,11 +72,20 @@ class PythonEvents final : public app::Events {
   py::object progress_;
 };
 
-py::dict outcome_dict(const app::Outcome& o) {
+// `act` (app::run or app::resume) with the GIL released, its outcome as a dict (dir, study, ran).
+template <typename Request>
+py::dict outcome_of(app::Outcome (*act)(const Request&, const compiler::CompileOptions&, app::Events&),
+                    const Request& r, const std::filesystem::path& standard_library, const py::object& progress) {
+  PythonEvents events(progress);
+  std::optional<app::Outcome> o;
+  {
+    const py::gil_scoped_release released;
+    o.emplace(act(r, app::compile_options(standard_library), events));
+  }
   py::dict d;
-  d["dir"] = o.dir.string();
-  d["study"] = o.study;
-  d["ran"] = o.ran;
+  d["dir"] = o->dir.string();
+  d["study"] = o->study;
+  d["ran"] = o->ran;
   return d;
 }
 
@@ -91,13 +100,7 @@ py::dict run(const std::filesystem::path& script, const std::string& experiment,
   r.overrides = {runs, generations, seed, set, controllers, cache};
   r.execution.threads = threads;
   r.out = out;
-  PythonEvents events(progress);
-  std::optional<app::Outcome> outcome;
-  {
-    const py::gil_scoped_release released;
-    outcome.emplace(app::run(r, app::compile_options(standard_library), events));
-  }
-  return outcome_dict(*outcome);
+  return outcome_of(&app::run, r, standard_library, progress);
 }
 
 py::dict resume(const std::filesystem::path& dir, std::optional<int> generations, const std::filesystem::path& script,
@@ -110,13 +113,7 @@ py::dict resume(const std::filesystem::path& dir, std::optional<int> generations
   r.cache = cache;
   r.execution.threads = threads;
   r.explain = true;
-  PythonEvents events(progress);
-  std::optional<app::Outcome> outcome;
-  {
-    const py::gil_scoped_release released;
-    outcome.emplace(app::resume(r, app::compile_options(standard_library), events));
-  }
-  return outcome_dict(*outcome);
+  return outcome_of(&app::resume, r, standard_library, progress);
 }
 
 }  // namespace
