@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "runtime/store/analysis_tables.hpp"
+#include "runtime/store/database_snapshot.hpp"
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/row_checksum.hpp"
@@ -486,11 +487,16 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
   }
   if (fs::file_size(file, ec) == 0 && !ec) throw nothing();
-  // Reading needs no lock (export and report read a running run); writing excludes others.
+  // Reading needs no lock (export and report read a running run) and reads a snapshot (no
+  // file appears beside the database; a read-only directory reads); writing excludes others.
   std::shared_ptr<const DirectoryLock> lock = read_only ? nullptr : DirectoryLock::acquire(dir);
+  std::shared_ptr<const DatabaseSnapshot> snapshot = read_only ? std::make_shared<DatabaseSnapshot>(dir) : nullptr;
   try {
-    ResultsDb r(sql::Database(file, read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite), file);
+    ResultsDb r(sql::Database(snapshot ? snapshot->dir() / kDatabaseFile : file,
+                              read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite),
+                file);
     r.lock_ = std::move(lock);
+    r.snapshot_ = std::move(snapshot);
     auto id = r.db_.prepare("PRAGMA application_id");
     const std::int64_t app = id.step() ? id.int64(0) : 0;
     if (app != kApplicationId) {

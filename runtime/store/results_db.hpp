@@ -24,6 +24,8 @@
 
 namespace esc::store {
 
+class DatabaseSnapshot;
+
 inline constexpr const char* kDatabaseFile = "esc.db";
 // Beside the database of a run that uses evolved controllers: the runs of the experiments
 // it depends on (its dependency cache, written first).
@@ -210,6 +212,8 @@ class ResultsDb {
   bool column_exists(const std::string& table, const std::string& column);
 
   std::shared_ptr<const DirectoryLock> lock_;   // written to: no other process writes beside it
+  // Read: the copy it reads (database_snapshot.hpp), removed after the database is closed.
+  std::shared_ptr<const DatabaseSnapshot> snapshot_;
   int schema_version_ = kSchemaVersion;
   bool has_saturated_ = true;   // generations.saturated (databases before schema 5 lack it)
 

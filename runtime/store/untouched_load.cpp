@@ -1,38 +1,18 @@
 #include "runtime/store/untouched_load.hpp"
 
-#include <stdlib.h>
-
 #include <algorithm>
 #include <string>
 #include <system_error>
 
 #include <fmt/format.h>
 
+#include "runtime/store/database_snapshot.hpp"
+
 namespace esc::store {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// A temporary directory, removed with its contents.
-class TemporaryCopy {
- public:
-  TemporaryCopy() {
-    std::string pattern = (fs::temp_directory_path() / "esc-check-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw StoreError("cannot create a temporary directory to check the run in");
-    dir_ = pattern;
-  }
-  ~TemporaryCopy() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  TemporaryCopy(const TemporaryCopy&) = delete;
-  TemporaryCopy& operator=(const TemporaryCopy&) = delete;
-  [[nodiscard]] const fs::path& dir() const noexcept { return dir_; }
-
- private:
-  fs::path dir_;
-};
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
@@ -53,21 +33,14 @@ bool no_generation(const std::vector<StoredExperiment>& all) {
 // errors naming `dir`, never the copy).
 template <class Read>
 auto on_copy(const fs::path& dir, Read&& read) {
-  const TemporaryCopy copy;
+  const DatabaseSnapshot copy(dir);
   try {
-    std::error_code ec;
-    for (const char* suffix : {"", "-wal"}) {
-      const fs::path file = dir / (std::string(kDatabaseFile) + suffix);
-      if (fs::exists(file, ec)) fs::copy_file(file, copy.dir() / file.filename());
-    }
     ResultsDb db = ResultsDb::open(copy.dir());
     return read(db);
   } catch (const NothingStored& e) {
     throw NothingStored(replaced(e.what(), copy.dir().string(), dir.string()));
   } catch (const StoreError& e) {
     throw StoreError(replaced(e.what(), copy.dir().string(), dir.string()));
-  } catch (const fs::filesystem_error& e) {
-    throw StoreError(fmt::format("cannot read {}: {}", dir.string(), e.code().message()));
   }
 }
 
