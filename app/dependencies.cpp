@@ -161,11 +161,25 @@ Prepared run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
   // its own (partial_run.hpp) and is renamed into place, so concurrent processes sharing a
   // cache never see, reuse or delete each other's unfinished runs; one whose process is
   // gone is continued.
-  // Rank 0 decides whether to reuse; the others follow.
+  // Rank 0 decides whether to reuse, holding the cache's lock until the entry is prepared:
+  // of the processes that need it at once, one runs it and the others then reuse it. The
+  // other ranks follow.
   std::error_code ec;
   bool reuse = false;
   std::string refused;
-  if (!follower_rank()) {
+  std::optional<CacheLock> cache_lock;
+  if (!follower_rank() && !cx.reuse_only) {   // reading what a run used locks nothing
+    std::filesystem::create_directories(cx.cache, ec);
+    try {
+      cache_lock.emplace(CacheLock::acquire(cx.cache, [&] {
+        tell(cx, "dependency {}: another process is preparing a dependency in {}; waiting for it", name,
+             cx.cache.string());
+      }));
+    } catch (const std::system_error& e) {
+      refused = fmt::format("cannot create the dependency cache {}: {}", cx.cache.string(), e.what());
+    }
+  }
+  if (!follower_rank() && refused.empty()) {
     if (std::filesystem::exists(p.dir / "esc.db", ec)) {
       const auto incomplete = [&] {
         tell(cx, "dependency {}: {} is incomplete; running it again", name, p.dir.string());

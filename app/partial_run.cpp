@@ -44,6 +44,24 @@ bool lock(int fd, bool wait) {
 
 }  // namespace
 
+CacheLock CacheLock::acquire(const fs::path& cache, const std::function<void()>& waiting) {
+  const int fd = ::open(cache.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw std::system_error(errno, std::generic_category(), cache.string());
+  if (!lock(fd, false)) {
+    waiting();
+    if (!lock(fd, true)) {
+      const int error = errno;
+      ::close(fd);
+      throw std::system_error(error, std::generic_category(), cache.string());
+    }
+  }
+  return CacheLock(fd);
+}
+
+CacheLock::~CacheLock() {
+  if (fd_ >= 0) ::close(fd_);   // closing the descriptor releases the lock
+}
+
 PartialRun PartialRun::create(const fs::path& entry) {
   // Host and PID say who made it; the token keeps names apart when neither does (two
   // containers with one host name, both PID 1).
