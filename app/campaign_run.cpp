@@ -25,7 +25,7 @@ std::string generations_text(const eval::ExperimentSpec& spec) {
   int es = -1, gp = -1;
   for (const auto& c : spec.controllers) (c.is_tree() ? gp : es) = spec.generations_for(c);
   if (es >= 0 && gp >= 0 && es != gp) return fmt::format("{} (networks) / {} (GP) generations", es, gp);
-  return fmt::format("{} generations", spec.max_generations());
+  return fmt::format("{} generation{}", spec.max_generations(), spec.max_generations() == 1 ? "" : "s");
 }
 
 std::string inputs_hash(const eval::ExperimentSpec& spec) {

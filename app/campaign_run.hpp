@@ -25,7 +25,8 @@ struct Execution {
 // runs/<name>-<local time>.
 [[nodiscard]] std::filesystem::path default_out(const std::string& name);
 
-// "250 generations", or "250 (networks) / 50 (GP) generations" when the algorithms differ.
+// "250 generations" ("1 generation"), or "250 (networks) / 50 (GP) generations" when the
+// algorithms differ.
 [[nodiscard]] std::string generations_text(const eval::ExperimentSpec& spec);
 
 // What an experiment received from the experiments it depends on (frozen behaviors, start

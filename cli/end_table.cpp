@@ -115,8 +115,9 @@ void print_comparisons(const std::vector<std::vector<double>>& samples,
 }  // namespace
 
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
-  fmt::print("\n{}: {} run{} x {}, {} epochs x {} steps, seed {}\n", spec.name, spec.runs,
-             spec.runs == 1 ? "" : "s", app::generations_text(spec), spec.epochs, spec.steps, spec.seed);
+  fmt::print("\n{}: {} run{} x {}, {} epoch{} x {} steps, seed {}\n", spec.name, spec.runs,
+             spec.runs == 1 ? "" : "s", app::generations_text(spec), spec.epochs, spec.epochs == 1 ? "" : "s",
+             spec.steps, spec.seed);
   fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
              "best fitness mean ± sd", "median", "best run");
   std::vector<std::vector<double>> finals;
@@ -191,8 +192,9 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
       fmt::print("(conditions differ in runs, generations, epochs or steps: see each one's settings.json)\n");
       break;
     }
-  fmt::print("{} run{} x {}, {} epochs x {} steps{}\n", first.runs, first.runs == 1 ? "" : "s",
-             app::generations_text(first), first.epochs, first.steps, conditions.size() > 1 ? " (the first condition)" : "");
+  fmt::print("{} run{} x {}, {} epoch{} x {} steps{}\n", first.runs, first.runs == 1 ? "" : "s",
+             app::generations_text(first), first.epochs, first.epochs == 1 ? "" : "s", first.steps,
+             conditions.size() > 1 ? " (the first condition)" : "");
 
   bool header = false;
   for (const ConditionResult& c : conditions)

@@ -121,15 +121,6 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
   std::fflush(stdout);
 }
 
-void ProgressPrinter::checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) {
-  Progress::checkpoint(controller, state);
-}
-
-void ProgressPrinter::best_traced(const control::ControllerSpec& controller, const eval::RunResult& run,
-                                  std::span<const eval::TraceStep> trace) {
-  Progress::best_traced(controller, run, trace);
-}
-
 void ProgressPrinter::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {
   Progress::run_done(controller, run);
   if (live_) {

@@ -27,9 +27,6 @@ class ProgressPrinter final : public app::Progress {
   void round_evaluated(const eval::RoundStats& round) override;
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
-  void checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) override;
-  void best_traced(const control::ControllerSpec& controller, const eval::RunResult& run,
-                   std::span<const eval::TraceStep> trace) override;
   void run_done(const control::ControllerSpec& controller, const eval::RunResult& run) override;
 
   // Ends the live line (call before printing anything else).
