@@ -30,6 +30,15 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", version_text());
   // Unknown options and surplus arguments are reported with a suggestion (unknown_arguments.hpp).
   app.allow_extras();
+  // A command line CLI11 refuses reads like every other refusal: `esc: error:` and where to
+  // look next.
+  app.failure_message([](const CLI::App* root, const CLI::Error& e) {
+    const auto parsed = root->get_subcommands();
+    return fmt::format("esc: error: {}\n{}\n", e.what(),
+                       parsed.empty() ? std::string("run `esc --help` for the commands and their options")
+                                      : fmt::format("run `esc {} --help` for its arguments and options",
+                                                    parsed.front()->get_name()));
+  });
 
   std::vector<std::filesystem::path> check_files;
   RunOptions run;

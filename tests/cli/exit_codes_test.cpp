@@ -61,6 +61,17 @@ TEST(ExitCodes, TwoForAMalformedSet) {
   EXPECT_NE(o.output.find("--set expects KEY=VALUE, got `epochs`"), std::string::npos) << o.output;
 }
 
+TEST(ExitCodes, EveryCommandLineRefusalStartsWithEscError) {
+  const std::vector<std::string> refused = {"run " + tiny() + " --runs 0", "run --generations", "--bogus", "runn",
+                                            "run " + tiny() + " --bogus", "run " + tiny() + " --set epochs"};
+  for (const std::string& args : refused) {
+    const Outcome o = esc(args);
+    EXPECT_EQ(o.status, 2) << args << "\n" << o.output;
+    EXPECT_EQ(o.output.rfind("esc: error: ", 0), 0U) << args << "\n" << o.output;
+    EXPECT_NE(o.output.find("--help"), std::string::npos) << args << "\n" << o.output;
+  }
+}
+
 TEST(ExitCodes, TwoForASeedThatIsNotOne) {
   for (const char* seed : {"-1", "18446744073709551616", "1.5", "0x10"}) {
     const Outcome o = esc("run " + tiny() + " --seed " + seed + " --out " + scratch("exit-seed").string());
