@@ -208,6 +208,16 @@ class Driver {
         return false;
       }
     }
+    // Directories were passed over (a file of the same name may come later in the path);
+    // when no file was found, one of them is what the script meant.
+    for (const fs::path& c : candidates) {
+      std::error_code ec;
+      if (fs::is_directory(c, ec)) {
+        Diagnostic& d = sink_.error(imp.where, fmt::format("cannot import `{}`: {} is a directory", imp.path, c.string()));
+        d.help.push_back(fmt::format("import a script file in it, e.g. `{}/NAME.esc`", imp.path));
+        return false;
+      }
+    }
     std::string searched;
     for (const fs::path& c : candidates) searched += (searched.empty() ? "" : ", ") + c.string();
     Diagnostic& d = sink_.error(imp.where, fmt::format("cannot find `{}`; searched: {}", imp.path, searched));
