@@ -1,5 +1,8 @@
 #include "compiler/setting_keys.hpp"
 
+#include <cerrno>
+#include <cstdlib>
+
 #include <optional>
 
 #include <fmt/format.h>
@@ -207,6 +210,19 @@ void resolve_settings(eval::ExperimentSpec& spec) {
     r[fmt::format("{}.{}", fmt::join(d.path, "."), d.key)] = d.value;
 }
 
+namespace {
+
+// Whether `text` is a number too large for a double (`1e400`), rather than no number at all.
+bool out_of_range(const std::string& text) {
+  if (text.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  (void)std::strtod(text.c_str(), &end);
+  return errno == ERANGE && end == text.c_str() + text.size();
+}
+
+}  // namespace
+
 std::string apply_settings(eval::ExperimentSpec& experiment,
                            const std::vector<std::pair<std::string, std::string>>& settings) {
   Sink sink;
@@ -217,6 +233,11 @@ std::string apply_settings(eval::ExperimentSpec& experiment,
     const ast::Name name{trimmed(key), where};
     if (const auto v = value_from_text(value, where)) {
       all_set = set_setting(spec, name, *v, sink) && all_set;
+    } else if (out_of_range(trimmed(value))) {
+      sink.error(where, fmt::format("`{}` cannot take `{}`: the number is out of range (a number is at most about "
+                                    "1.8e308 in size)",
+                                    name.text, trimmed(value)));
+      all_set = false;
     } else {
       sink.error(where, fmt::format("`{}` cannot take `{}`: a value is a number with its unit (`50ms`), `on` or "
                                     "`off`, a word, or a range `[-1, 1]`",

@@ -39,6 +39,9 @@ TEST(ExitCodes, OneForARefusedSettingValue) {
   EXPECT_NE(o.output.find("bounds must lie within [-1000000, 1000000]"), std::string::npos) << o.output;
   o = esc("run " + tiny() + " --set seed=-1 --out " + scratch("exit-bad-seed-set").string());
   EXPECT_EQ(o.status, 1) << o.output;
+  o = esc("run " + tiny() + " --set epochs=1e400 --out " + scratch("exit-bad-huge").string());
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("`1e400`: the number is out of range"), std::string::npos) << o.output;
 }
 
 TEST(ExitCodes, OneForAnImpossibleSizeBeforeAnythingIsMade) {
