@@ -7,6 +7,8 @@
 
 #include "app/error.hpp"
 #include "app/ranks.hpp"
+#include "compiler/compiler.hpp"
+#include "compiler/setting_keys.hpp"
 
 namespace esc::app {
 
@@ -18,8 +20,9 @@ std::string trimmed(std::string_view t) {
   return std::string(t);
 }
 
-// Refuses an override of a key the study varies, or gives to an experiment its conditions
-// depend on (`energy.generations 60`: the override would replace that too).
+// Refuses an override of a key no experiment has (once, not for the first condition), of a
+// key the study varies, or of one it gives to an experiment its conditions depend on
+// (`energy.generations 60`: the override would replace that too).
 void vary_nothing_given(const Overrides& o, const eval::StudySpec& study) {
   const std::vector<std::string> varied = study.varied_keys();
   const auto given = [&](const std::string& k) -> const eval::DependencySetting* {
@@ -29,8 +32,17 @@ void vary_nothing_given(const Overrides& o, const eval::StudySpec& study) {
     return nullptr;
   };
   Problems problems;
+  const std::vector<std::string> keys = compiler::setting_keys();
   for (const auto& [key, value] : setting_pairs(o)) {
     const std::string k = trimmed(key);
+    // A key no experiment has is the command line's mistake, not a condition's.
+    if (std::find(keys.begin(), keys.end(), k) == keys.end() && !study.conditions.empty()) {
+      eval::ExperimentSpec probe = study.conditions.front().experiment;
+      if (const std::string error = compiler::apply_setting(probe, key, value); !error.empty()) {
+        problems.add(fmt::format("{}={}: {}", key, value, error));
+        continue;
+      }
+    }
     if (const eval::DependencySetting* d = given(k)) {
       problems.add(fmt::format("{}={}: study `{}` gives `{}` to experiment `{}` in its conditions ({}.{} {}); the "
                                "command line's value would replace it (to shorten such a study, run its experiments "

@@ -119,6 +119,12 @@ TEST(Study, SettingAVariedKeyIsRefusedOtherSettingsApplyToEveryCondition) {
   const Outcome bad = esc("run " + studies() + " --set robot.max_speed=1m/s --out " + scratch("study-bad").string());
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.output.find("condition `no_inertia`: robot.max_speed=1m/s"), std::string::npos) << bad.output;
+  // A key no experiment has is the command line's: named once, without a condition.
+  const Outcome typo = esc("run " + studies() + " --set epocs=2 --out " + scratch("study-typo").string());
+  EXPECT_EQ(typo.status, 1);
+  EXPECT_EQ(typo.output.rfind("esc: error: epocs=2: unknown setting `epocs`; did you mean `epochs`?", 0), 0U)
+      << typo.output;
+  EXPECT_EQ(typo.output.find("condition `"), std::string::npos) << typo.output;
 }
 
 TEST(Study, AnUnknownNameListsExperimentsAndStudies) {
