@@ -3,6 +3,7 @@
 // it, the Python module calls back, an embedding program does what it likes. Every member
 // does nothing by default; events reach rank 0 of an MPI job only.
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <span>
 #include <string>
@@ -24,6 +25,7 @@ struct Note {
   };
   Kind kind;
   std::string text;
+  std::filesystem::path dir{};   // Start and Resume: the directory being written
 };
 
 // Sees a campaign's events before its run directory stores them: passes each on to `next`

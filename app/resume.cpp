@@ -22,8 +22,8 @@ namespace esc::app {
 
 namespace {
 
-void tell(Events& events, Note::Kind kind, std::string text) {
-  if (!follower_rank()) events.note({kind, std::move(text)});
+void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir = {}) {
+  if (!follower_rank()) events.note({kind, std::move(text), dir});
 }
 
 // What the directory holds: one experiment, or a study's conditions.
@@ -171,7 +171,8 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
          r.generations ? fmt::format("carrying study {} in {} on to {} generations: {} of {} conditions finished",
                                      study->name, r.dir.string(), *r.generations, finished, n)
                        : fmt::format("resuming study {} in {}: {} of {} conditions finished", study->name,
-                                     r.dir.string(), finished, n));
+                                     r.dir.string(), finished, n),
+         r.dir);
     std::optional<store::StudyDirectory> dir;
     on_rank0([&] { dir.emplace(r.dir, stored.experiments); });
     return {r.dir, study->name,
@@ -184,7 +185,8 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
        extend.front() ? fmt::format("carrying {} in {} on to {} generations: {} of {} generations done", spec.name,
                                     r.dir.string(), *extend.front(), done, spec.total_generations())
                       : fmt::format("resuming {} in {}: {} of {} generations done", spec.name, r.dir.string(), done,
-                                    spec.total_generations()));
+                                    spec.total_generations()),
+       r.dir);
   const auto open = [&] {
     store::ResultsDb db = store::ResultsDb::open(r.dir);
     if (extend.front()) {

@@ -16,8 +16,8 @@ namespace esc::app {
 
 namespace {
 
-void tell(Events& events, Note::Kind kind, std::string text) {
-  if (!follower_rank()) events.note({kind, std::move(text)});
+void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir = {}) {
+  if (!follower_rank()) events.note({kind, std::move(text), dir});
 }
 
 Outcome run_study(const RunRequest& r, const compiler::CompileResult& compiled, eval::StudySpec& study,
@@ -39,7 +39,8 @@ Outcome run_study(const RunRequest& r, const compiler::CompileResult& compiled, 
     dir.emplace(out, study, sources_of(compiled), launches);
     tell(events, Note::Kind::Start,
          fmt::format("running study {} ({} condition{}: {}) into {}", study.name, names.size(),
-                     names.size() == 1 ? "" : "s", names_of(names), out.string()));
+                     names.size() == 1 ? "" : "s", names_of(names), out.string()),
+         out);
   });
   return {out, study.name, run_conditions(study, r.execution, dir, StoredStudy{}, events)};
 }
@@ -56,7 +57,8 @@ Outcome run_one(const RunRequest& r, const compiler::CompileResult& compiled, ev
     tell(events, Note::Kind::Start,
          fmt::format("running {} ({} controller{}, {} run{}, {}) into {}", spec.name, spec.controllers.size(),
                      spec.controllers.size() == 1 ? "" : "s", spec.runs, spec.runs == 1 ? "" : "s",
-                     generations_text(spec), out.string()));
+                     generations_text(spec), out.string()),
+         out);
     return dir;
   };
   eval::CampaignResult result = run_experiment(spec, campaign_options(r.execution, nullptr), open, 0, events);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "cli/end_table.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/load.hpp"
 #include "cli/progress.hpp"
 
@@ -22,6 +23,8 @@ void print_diagnostics(const compiler::CompileResult& compiled) {
 void TerminalEvents::warnings(const compiler::CompileResult& compiled) { print_diagnostics(compiled); }
 
 void TerminalEvents::note(const app::Note& note) {
+  if ((note.kind == app::Note::Kind::Start || note.kind == app::Note::Kind::Resume) && !follower_rank())
+    on_interrupt_name(note.dir);
   if (note.kind == app::Note::Kind::Warning)
     complain("esc: {}\n", note.text);
   else
