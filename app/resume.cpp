@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/compile.hpp"
 #include "app/dependencies.hpp"
@@ -37,16 +38,39 @@ struct Stored {
   }
 };
 
+// `esc run` as the stopped run was started, into `dir` again.
+std::string restart_command(const store::NothingStored::Launch& launch, const std::filesystem::path& dir) {
+  std::string command = fmt::format("esc run {} --experiment {}", launch.script.string(), launch.target);
+  try {
+    const Overrides o = overrides_from_json(launch.overrides, dir);
+    if (o.runs) command += fmt::format(" --runs {}", *o.runs);
+    if (o.generations) command += fmt::format(" --generations {}", *o.generations);
+    if (o.seed) command += fmt::format(" --seed {}", *o.seed);
+    for (const std::string& kv : o.set) command += fmt::format(" --set {}", kv);
+    if (!o.controllers.empty()) command += fmt::format(" --controllers {}", fmt::join(o.controllers, ","));
+    if (!o.cache.empty()) command += fmt::format(" --cache {}", o.cache.string());
+  } catch (const store::StoreError&) {   // unreadable: the script and target still help
+  }
+  return command + fmt::format(" --out {}", dir.string());
+}
+
 // Read from a copy: a refused resume leaves every byte of the directory as it was.
 Stored load(const std::filesystem::path& dir) {
   std::vector<store::StoredExperiment> all;
   try {
     all = store::load_untouched(dir);
   } catch (const store::NothingStored& e) {
+    if (!e.launch())
+      throw Error(ErrorKind::Results,
+                  fmt::format("{}; nothing was stored to resume: start it again with `esc run FILE --out {}` (finished "
+                              "dependencies in its deps/ are reused)",
+                              e.what(), dir.string()));
+    // The command as a hint of its own, whole: a long `quoted` text is shortened in a message.
     throw Error(ErrorKind::Results,
-                fmt::format("{}; nothing was stored to resume: start it again with `esc run FILE --out {}` (finished "
+                fmt::format("{}; nothing was stored to resume: start it again as it was started (finished "
                             "dependencies in its deps/ are reused)",
-                            e.what(), dir.string()));
+                            e.what()),
+                restart_command(*e.launch(), dir));
   }
   if (!all.empty() && all.front().condition) return {store::study_conditions(std::move(all)), true};
   if (all.size() != 1)

@@ -108,9 +108,12 @@ nlohmann::ordered_json to_json(const Overrides& o) {
 }
 
 Overrides stored_overrides(const store::StoredExperiment& stored, const std::filesystem::path& dir) {
+  return overrides_from_json(stored.overrides, dir);
+}
+
+Overrides overrides_from_json(const nlohmann::ordered_json& ov, const std::filesystem::path& dir) {
   Overrides o;
   try {
-    const auto& ov = stored.overrides;
     if (ov.contains("runs")) o.runs = ov["runs"].get<int>();
     if (ov.contains("generations")) o.generations = ov["generations"].get<int>();
     if (ov.contains("seed")) o.seed = store::seed_from_json(ov["seed"]);

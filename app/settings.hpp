@@ -48,6 +48,7 @@ void check_memory(const eval::ExperimentSpec& spec);
 // As stored in a run's database, and read back (throws store::StoreError when damaged).
 [[nodiscard]] nlohmann::ordered_json to_json(const Overrides& o);
 [[nodiscard]] Overrides stored_overrides(const store::StoredExperiment& stored, const std::filesystem::path& dir);
+[[nodiscard]] Overrides overrides_from_json(const nlohmann::ordered_json& ov, const std::filesystem::path& dir);
 
 // The generations a carry-on took the stored run to (the experiment alone, not what it
 // depends on); nullopt when it never was. Throws store::StoreError when damaged.

@@ -55,6 +55,19 @@ class StoreError : public std::runtime_error {
 class NothingStored : public StoreError {
  public:
   using StoreError::StoreError;
+  // What the stopped run was started with, where its database holds that much (it stopped
+  // before its first generation): the command that starts it again repeats it.
+  struct Launch {
+    std::filesystem::path script;
+    std::string target;                 // the experiment, or the study
+    nlohmann::ordered_json overrides;   // as LaunchInfo stores them
+  };
+  NothingStored(const std::string& message, std::optional<Launch> launch)
+      : StoreError(message), launch_(std::move(launch)) {}
+  [[nodiscard]] const std::optional<Launch>& launch() const noexcept { return launch_; }
+
+ private:
+  std::optional<Launch> launch_;
 };
 
 struct SourceFile {

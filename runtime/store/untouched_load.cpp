@@ -38,7 +38,7 @@ auto on_copy(const fs::path& dir, Read&& read) {
     ResultsDb db = ResultsDb::open(copy.dir());
     return read(db);
   } catch (const NothingStored& e) {
-    throw NothingStored(replaced(e.what(), copy.dir().string(), dir.string()));
+    throw NothingStored(replaced(e.what(), copy.dir().string(), dir.string()), e.launch());
   } catch (const StoreError& e) {
     throw StoreError(replaced(e.what(), copy.dir().string(), dir.string()));
   }
@@ -52,9 +52,12 @@ std::vector<StoredExperiment> load_untouched(const fs::path& dir) {
   if (!fs::is_regular_file(dir / kDatabaseFile, ec)) return ResultsDb::open(dir, true).load();
   return on_copy(dir, [&](ResultsDb& db) {
     std::vector<StoredExperiment> all = db.load();
-    if (no_generation(all))
+    if (no_generation(all)) {
+      const StoredExperiment& e = all.front();
       throw NothingStored(fmt::format("{} holds no committed generation: the run was stopped before its first",
-                                      (dir / kDatabaseFile).string()));
+                                      (dir / kDatabaseFile).string()),
+                          NothingStored::Launch{e.script, e.condition ? e.condition->study : e.name, e.overrides});
+    }
     return all;
   });
 }

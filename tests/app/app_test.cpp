@@ -14,6 +14,8 @@
 #include "app/error.hpp"
 #include "app/import_path.hpp"
 #include "app/run.hpp"
+#include "app/settings.hpp"
+#include "runtime/store/run_directory.hpp"
 #include "runtime/eval/campaign.hpp"
 
 namespace esc::app {
@@ -130,6 +132,30 @@ TEST(App, AnExperimentWhoseDependenciesWereNotPreparedDoesNotRun) {
       EXPECT_NE(std::string(e.what()).find("needs the results of basic first"), std::string::npos) << e.what();
     }
   }
+}
+
+TEST(App, ARunStoppedBeforeItsFirstGenerationIsToldHowItWasStarted) {
+  const fs::path out = fresh_dir("nothing-stored");
+  Recorded events;
+  RunRequest r = small_run("basic", out);
+  r.overrides.seed = 11;
+  r.overrides.set = {"epochs=1"};
+  compiler::CompileResult compiled = compile(kStartFrom, options(), events);
+  eval::ExperimentSpec& spec = pick_experiment(compiled, kStartFrom, "basic");
+  apply_settings(r.overrides, spec);
+  // What a run killed before its first generation leaves: the experiment stored, no generation.
+  { const store::RunDirectory dir(out, spec, sources_of(compiled), launch_info(r.overrides, kStartFrom, &spec)); }
+  try {
+    (void)resume(ResumeRequest{out, {}, {}, {}, {}, false}, options(), events);
+    ADD_FAILURE() << "resumed a run that stored nothing";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Results);
+    EXPECT_NE(e.problems().front().message.find("nothing was stored to resume"), std::string::npos) << e.what();
+    EXPECT_EQ(e.problems().front().help,
+              "esc run " + fs::absolute(kStartFrom).lexically_normal().string() +
+                  " --experiment basic --runs 1 --generations 2 --seed 11 --set epochs=1 --out " + out.string());
+  }
+  fs::remove_all(out);
 }
 
 TEST(App, RefusalsAreTypedErrorsWithTheirMessages) {
