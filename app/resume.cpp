@@ -23,10 +23,6 @@ namespace esc::app {
 
 namespace {
 
-void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir = {}) {
-  if (!follower_rank()) events.note({kind, std::move(text), dir});
-}
-
 // What the directory holds: one experiment, or a study's conditions.
 struct Stored {
   std::vector<store::StoredExperiment> experiments;

@@ -16,10 +16,6 @@ namespace esc::app {
 
 namespace {
 
-void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir = {}) {
-  if (!follower_rank()) events.note({kind, std::move(text), dir});
-}
-
 Outcome run_study(const RunRequest& r, const compiler::CompileResult& compiled, eval::StudySpec& study,
                   Events& events) {
   apply_to_study(r.overrides, study);

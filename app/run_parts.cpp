@@ -92,12 +92,11 @@ std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const
       continue;
     }
     const eval::ResumePoint point = before != nullptr ? (*stored.points)[i] : eval::ResumePoint{};
-    if (!follower_rank())
-      events.note({Note::Kind::Condition,
-                   fmt::format("condition {}/{} {}: {} ({} controller{}, {} run{}, {})", i + 1, study.conditions.size(),
-                               c.name, c.experiment.name, c.experiment.controllers.size(),
-                               c.experiment.controllers.size() == 1 ? "" : "s", c.experiment.runs,
-                               c.experiment.runs == 1 ? "" : "s", generations_text(c.experiment))});
+    tell(events, Note::Kind::Condition,
+         fmt::format("condition {}/{} {}: {} ({} controller{}, {} run{}, {})", i + 1, study.conditions.size(), c.name,
+                     c.experiment.name, c.experiment.controllers.size(),
+                     c.experiment.controllers.size() == 1 ? "" : "s", c.experiment.runs,
+                     c.experiment.runs == 1 ? "" : "s", generations_text(c.experiment)));
     std::optional<store::RunDirectory> run;
     if (dir) {
       std::optional<store::StudyDirectory::CarryOn> recorded;
@@ -112,6 +111,10 @@ std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const
                                          run ? &*run : nullptr, generations_done(point), events)});
   }
   return results;
+}
+
+void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir) {
+  if (!follower_rank()) events.note({kind, std::move(text), dir});
 }
 
 std::string names_of(const std::vector<std::string>& names) {

@@ -38,6 +38,9 @@ struct StoredStudy {
                                                            std::optional<store::StudyDirectory>& dir,
                                                            const StoredStudy& stored, Events& events);
 
+// Tells `events` a note (on rank 0 of an MPI job: the others have nothing to say).
+void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir = {});
+
 // The names, comma-separated.
 [[nodiscard]] std::string names_of(const std::vector<std::string>& names);
 
