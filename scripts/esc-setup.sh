@@ -19,6 +19,7 @@ PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr
           libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
           pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest                 # ESC_WITH_PYTHON (pytest: its tests)
+          python3-matplotlib python3-deap                                                      # examples/python, run by ctest
           libgtest-dev python3 chromium file                                                   # tests (file: cpack -G DEB)
           clang libclang-rt-14-dev)                                                            # ESC_WITH_FUZZ
 
