@@ -216,8 +216,14 @@ struct EsOption {
   SourceRange where;
 };
 
+// `in [lo, hi]`: the range an objective's or a descriptor's values lie in.
+struct DeclaredRange {
+  Quantity lo, hi;
+  SourceRange where;
+};
+
 struct ExpItem {
-  enum class Kind { Arena, Robot, Epochs, Steps, Fitness, Evolve, Runs, Seed, Compare, StartFrom };
+  enum class Kind { Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Evolve, Runs, Seed, Compare, StartFrom };
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword
   std::vector<Name> refs;           // arena/robot/fitness/evolve method/compare list
@@ -231,6 +237,15 @@ struct ExpItem {
   std::vector<EsOption> options;    // evolve es(...)
   std::optional<Quantity> generations;
   bool evaluate_only = false;       // StartFrom: `evaluate from ...` rather than `start from ...`
+  // Fitness, Objective, Descriptor: `in [lo, hi]`.
+  std::optional<DeclaredRange> range;
+  bool minimize = false;            // Objective: `minimize`
+  // Descriptor: its name is refs[0]; the expression, its text, `evaluation:` and `by WORD`
+  // (shared: items are copied, an option list with its item).
+  std::shared_ptr<const Expr> expr;
+  std::string text;
+  bool at_evaluation = false;
+  Name reduce;
 
   // Compare: the name controller `refs[i]` is compared under, its alias or its own.
   [[nodiscard]] const Name& compared_as(std::size_t i) const {

@@ -11,6 +11,7 @@
 #include "compiler/experiment_settings.hpp"
 #include "compiler/gp_settings.hpp"
 #include "compiler/lower_evolution.hpp"
+#include "compiler/lower_objectives.hpp"
 #include "compiler/names.hpp"
 #include "compiler/setting_keys.hpp"
 #include "compiler/setting_values.hpp"
@@ -28,6 +29,8 @@ std::string_view item_word(const ast::ExpItem& item) {
     case K::Epochs: return "epochs";
     case K::Steps: return "steps";
     case K::Fitness: return "fitness";
+    case K::Objective: return "objective";
+    case K::Descriptor: return "descriptor";
     case K::Evolve: return "evolve";
     case K::Runs: return "runs";
     case K::Seed: return "seed";
@@ -73,6 +76,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   const ast::ExperimentDecl* start_decl = nullptr;
   std::vector<const ast::Name*> by;         // `by` of each controller, empty text when none
   EvolveItems evolve;
+  ObjectiveItems objective_items;
   bool epochs_gave_steps = false;
   // `epochs`, `steps`, `runs`, `seed`: each number read by its row of the table.
   const auto setting = [&](std::string_view key, const ast::Quantity& q) {
@@ -85,6 +89,11 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     // any other algorithm beside them.
     if (is_further_evolve(item)) {
       lower_further_evolve(item, x, evolve, sink_);
+      continue;
+    }
+    // Objectives and descriptors: as many as the experiment declares.
+    if (item.kind == K::Objective || item.kind == K::Descriptor) {
+      (item.kind == K::Objective ? objective_items.objectives : objective_items.descriptors).push_back(&item);
       continue;
     }
     if (is_gp(item)) {
@@ -142,7 +151,11 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
       case K::Seed:
         if (!item.numbers.empty()) setting("seed", item.numbers[0]);
         break;
+      case K::Objective:
+      case K::Descriptor:
+        break;
       case K::Fitness:
+        objective_items.fitness = &item;
         fitness = lowered(names_, parts_.fitnesses, item.refs[0], fitness_decl);
         if (fitness != nullptr) x.fitness = fitness->spec;
         else ok = false;
@@ -219,6 +232,8 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
       else ok = false;
       if (f) fitness = &*f;
     }
+    if (!lower_objectives(objective_items, d, *arena_decl, choices, names_, parts_.fitnesses, parts_.arenas, sink_, x))
+      ok = false;
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
       if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl)) ok = false;
   }
@@ -239,6 +254,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   if (!fitness->epoch_text.empty()) x.resolved_settings["fitness.epoch"] = fitness->epoch_text;
   if (!fitness->evaluation_text.empty()) x.resolved_settings["fitness.evaluation"] = fitness->evaluation_text;
   resolve_settings(x);
+  resolve_objectives(x, objective_items);
   slot = std::move(x);
   return slot;
 }

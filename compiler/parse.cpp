@@ -527,6 +527,11 @@ class Builder {
     return p;
   }
 
+  std::optional<ast::DeclaredRange> range(P::ObjRangeContext* c) {
+    if (c == nullptr || c->lo == nullptr || c->hi == nullptr) return std::nullopt;
+    return ast::DeclaredRange{quantity(c->lo), quantity(c->hi), span(c)};
+  }
+
   ast::ExperimentDecl experiment(P::ExperimentDeclContext* c, int order) {
     ast::ExperimentDecl x;
     head(x, c, c->name, order);
@@ -551,6 +556,20 @@ class Builder {
       } else if (auto* f = dynamic_cast<P::ExpFitnessContext*>(it)) {
         item.kind = K::Fitness;
         item.refs.push_back(name(f->ident()));
+        item.range = range(f->objRange());
+      } else if (auto* ob = dynamic_cast<P::ExpObjectiveContext*>(it)) {
+        item.kind = K::Objective;
+        item.refs.push_back(name(ob->ident()));
+        item.minimize = ob->dir != nullptr && ob->dir->getType() == P::MINIMIZE;
+        item.range = range(ob->objRange());
+      } else if (auto* de = dynamic_cast<P::ExpDescriptorContext*>(it)) {
+        item.kind = K::Descriptor;
+        item.refs.push_back(name(de->name));
+        item.expr = expr(de->expr());
+        item.text = source(de->expr());
+        item.at_evaluation = de->EVALUATION() != nullptr;
+        item.range = range(de->objRange());
+        if (de->reduce != nullptr) item.reduce = name(de->reduce);
       } else if (auto* ev = dynamic_cast<P::ExpEvolveContext*>(it)) {
         item.kind = K::Evolve;
         item.refs.push_back(name(ev->ident()));

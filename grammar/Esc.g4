@@ -123,7 +123,13 @@ expItem
   | ROBOT ident settingsBlock? ';'?                                               # expRobot
   | EPOCHS NUMBER (X NUMBER STEPS)? ';'?                                          # expEpochs
   | STEPS NUMBER ';'?                                                             # expSteps
-  | FITNESS ident ';'?                                                            # expFitness
+  // The fitness (the first objective), with the range its values lie in when declared.
+  | FITNESS ident objRange? ';'?                                                  # expFitness
+  // Further objectives, each a fitness declaration, in order after the fitness.
+  | OBJECTIVE ident dir=(MAXIMIZE | MINIMIZE)? objRange? ';'?                     # expObjective
+  // A behavior descriptor: an end term at each epoch's end (reduced over the epochs, by
+  // mean unless `by` says otherwise) or, after `evaluation:`, once over the evaluation.
+  | DESCRIPTOR name=ident ':' (EVALUATION ':')? expr objRange (BY reduce=ident)? ';'?   # expDescriptor
   | EVOLVE ident ('(' (esOption (',' esOption)*)? ')')? (FOR NUMBER GENERATIONS)? ';'?   # expEvolve
   | RUNS NUMBER ';'?                                                              # expRuns
   | SEED NUMBER ';'?                                                              # expSeed
@@ -134,6 +140,7 @@ expItem
   // first): `evaluate` only evaluates it here; `start` evolves on from it.
   | kw=(START | EVALUATE) FROM EXPERIMENT ident ';'?                              # expStartFrom
   ;
+objRange : IN '[' lo=quantity ',' hi=quantity ']' ;
 esOption : ident ('[' lo=quantity ',' hi=quantity ']' | quantity)? ;
 compared : ctl=ident (BY algo=ident)? (AS alias=ident)? ;
 
@@ -186,7 +193,7 @@ ident
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
-  | CONDITIONS | CONDITION | SWEEP | AS | BY
+  | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -264,6 +271,11 @@ CONDITION : 'condition' ;
 SWEEP : 'sweep' ;
 AS : 'as' ;
 BY : 'by' ;
+OBJECTIVE : 'objective' ;
+MAXIMIZE : 'maximize' ;
+MINIMIZE : 'minimize' ;
+DESCRIPTOR : 'descriptor' ;
+IN : 'in' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;

@@ -73,7 +73,9 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
     pool.first.push_back(pool.first.back() + job->breed());
     choices.push_back(job->controller().choice_names().size());
   }
-  const std::size_t width = detail::kResultUsage + *std::max_element(choices.begin(), choices.end());
+  const detail::ResultColumns columns =
+      detail::result_columns(active.front()->spec(), *std::max_element(choices.begin(), choices.end()));
+  const std::size_t width = columns.width;
   std::vector<double> results(pool.size() * width, 0.0);
   RoundTicker ticker(listener, pool.size(), start);
   ev.distribution.run(pool.size(), width, ev.threads, results, [&](std::size_t i) {
@@ -81,11 +83,7 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
     const RunJob& job = *active[j];
     const std::size_t k = i - pool.first[j];
     const Evaluation e = job.evaluate(ev.workers.local(), k, evaluation_seed(job.state().seed, job.generation(), k));
-    double* row = &results[i * width];
-    row[detail::kResultFitness] = e.fitness;
-    row[detail::kResultSteps] = static_cast<double>(e.steps);
-    for (std::size_t c = 0; c < e.usage.size() && detail::kResultUsage + c < width; ++c)
-      row[detail::kResultUsage + c] = static_cast<double>(e.usage[c]);
+    detail::write_result(e, columns, &results[i * width]);
     ticker.one_done();
   });
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -105,7 +103,7 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
     const std::span<const double> rows(results.data() + pool.first[j] * width,
                                        (pool.first[j + 1] - pool.first[j]) * width);
     stats.usage = detail::summarise_usage(rows, width, choices[j]);
-    job.evaluated(fitness, stats);
+    job.evaluated(detail::outcomes_of(job.spec(), rows, columns), stats);
     listener.generation_done(job.controller(), job.state().run, job.state().generations.back());
     listener.checkpoint(job.controller(), job.state());
   }

@@ -55,6 +55,40 @@ GenerationStats summarise(int generation, std::span<const double> fitness, std::
   return g;
 }
 
+ResultColumns result_columns(const ExperimentSpec& spec, std::size_t most_choices) noexcept {
+  ResultColumns c;
+  c.objectives = kResultUsage + most_choices;
+  c.descriptors = c.objectives + spec.further.size();
+  c.width = c.descriptors + spec.descriptors.size();
+  return c;
+}
+
+void write_result(const Evaluation& e, const ResultColumns& columns, double* row) noexcept {
+  row[kResultFitness] = e.fitness;
+  row[kResultSteps] = static_cast<double>(e.steps);
+  for (std::size_t c = 0; c < e.usage.size() && kResultUsage + c < columns.objectives; ++c)
+    row[kResultUsage + c] = static_cast<double>(e.usage[c]);
+  std::copy(e.objectives.begin(), e.objectives.end(), row + columns.objectives);
+  std::copy(e.descriptors.begin(), e.descriptors.end(), row + columns.descriptors);
+}
+
+std::vector<evo::Outcome> outcomes_of(const ExperimentSpec& spec, std::span<const double> rows,
+                                      const ResultColumns& columns) {
+  std::vector<evo::Outcome> out(rows.size() / columns.width);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double* row = rows.data() + i * columns.width;
+    evo::Outcome& o = out[i];
+    o.objectives.reserve(1 + spec.further.size());
+    o.objectives.push_back(row[kResultFitness]);
+    for (std::size_t k = 0; k < spec.further.size(); ++k) {
+      const double v = row[columns.objectives + k];
+      o.objectives.push_back(k + 1 < spec.objectives.size() && spec.objectives[k + 1].minimize ? -v : v);
+    }
+    o.descriptors.assign(row + columns.descriptors, row + columns.width);
+  }
+  return out;
+}
+
 GenerationUsage summarise_usage(std::span<const double> rows, std::size_t width, std::size_t choices) {
   GenerationUsage u;
   const std::size_t n = width == 0 ? 0 : rows.size() / width;

@@ -40,6 +40,7 @@ class RunJob {
   RunJob(const RunJob&) = delete;
   RunJob& operator=(const RunJob&) = delete;
 
+  [[nodiscard]] const ExperimentSpec& spec() const noexcept { return *spec_; }
   [[nodiscard]] const control::ControllerSpec& controller() const noexcept { return *controller_; }
   [[nodiscard]] const RunState& state() const noexcept { return state_; }
   // The generation breed() makes next.
@@ -53,15 +54,17 @@ class RunJob {
   std::size_t breed();
   // Evaluates candidate i of the bred generation; called concurrently for different i.
   [[nodiscard]] Evaluation evaluate(Evaluator& e, std::size_t i, std::uint64_t seed) const;
-  // The bred generation's fitness (in candidate order) and statistics: tells the optimizer,
-  // keeps the run's best and the optimizer's state.
-  void evaluated(std::span<const double> fitness, const GenerationStats& stats);
+  // What the bred generation's candidates measured (in candidate order; objectives[0] the
+  // fitness) and its statistics: tells the optimizer, keeps the run's best and the
+  // optimizer's state.
+  void evaluated(std::span<const evo::Outcome> outcomes, const GenerationStats& stats);
   // The finished run; its best evaluation replayed where the options or the controller
   // ask for it (replay_best).
   [[nodiscard]] RunResult close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
                                 CampaignListener& listener);
 
  private:
+  const ExperimentSpec* spec_;
   const control::ControllerSpec* controller_;
   RunState state_;
   int generations_;
@@ -86,6 +89,20 @@ class RunJob {
 inline constexpr std::size_t kResultFitness = 0;
 inline constexpr std::size_t kResultSteps = 1;
 inline constexpr std::size_t kResultUsage = 2;
+// After the usage columns (as many as the most choices of a controller in the round), the
+// experiment's further objectives, then its descriptors.
+struct ResultColumns {
+  std::size_t objectives = 0;    // the first further objective's column
+  std::size_t descriptors = 0;   // the first descriptor's column
+  std::size_t width = 0;
+};
+[[nodiscard]] ResultColumns result_columns(const ExperimentSpec& spec, std::size_t most_choices) noexcept;
+// Writes `e` into `row` (columns.width doubles).
+void write_result(const Evaluation& e, const ResultColumns& columns, double* row) noexcept;
+// Candidate i's outcome from `rows` (columns.width doubles each) as optimizers see it:
+// every objective maximised (a minimised one negated), the descriptors as measured.
+[[nodiscard]] std::vector<evo::Outcome> outcomes_of(const ExperimentSpec& spec, std::span<const double> rows,
+                                                    const ResultColumns& columns);
 // A generation's usage from its evaluations' rows (`width` doubles each, as above), for a
 // controller of `choices` choices; empty when it has none.
 [[nodiscard]] GenerationUsage summarise_usage(std::span<const double> rows, std::size_t width, std::size_t choices);

@@ -14,15 +14,20 @@ namespace esc::eval {
 
 Evaluator::Evaluator(const ExperimentSpec& spec)
     : spec_(&spec), world_(spec.arena, spec.robot), end_frame_(expr::aggregate::count + spec.choice_ids, 0.0) {
-  for (const auto* term : {&spec.fitness.epoch_end, &spec.fitness.evaluation_end}) {
-    if (!*term) continue;
-    if (!(*term)->complete()) throw std::invalid_argument("fitness '" + spec.fitness.name + "': an end term is incomplete");
-    for (const expr::Instr& in : (*term)->code())
+  const auto check = [&](const expr::Program& term, const std::string& owner) {
+    if (!term.complete()) throw std::invalid_argument(owner + ": an end term is incomplete");
+    for (const expr::Instr& in : term.code())
       if (in.op == expr::Op::Load && in.slot >= end_frame_.size())
-        throw std::invalid_argument("fitness '" + spec.fitness.name + "': an end term reads slot " +
-                                    std::to_string(in.slot) + ", beyond the frame and the experiment's " +
-                                    std::to_string(spec.choice_ids) + " choice counts");
-  }
+        throw std::invalid_argument(owner + ": an end term reads slot " + std::to_string(in.slot) +
+                                    ", beyond the frame and the experiment's " + std::to_string(spec.choice_ids) +
+                                    " choice counts");
+  };
+  std::vector<const FitnessSpec*> objectives{&spec.fitness};
+  for (const FitnessSpec& f : spec.further) objectives.push_back(&f);
+  for (const FitnessSpec* f : objectives)
+    for (const auto* term : {&f->epoch_end, &f->evaluation_end})
+      if (*term) check(**term, "fitness '" + f->name + "'");
+  for (const DescriptorSpec& d : spec.descriptors) check(d.program, "descriptor '" + d.name + "'");
 }
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
@@ -30,13 +35,13 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
                                TraceSink* trace) {
   if (controller.is_tree()) return evaluate(controller, evo::gp::decode(genome, *controller.primitives), seed, trace);
   control::Controller ctl(controller, genome, &tree_control::make_actor);
-  return run(controller, ctl, reads_slot(spec_->fitness, controller, expr::slot::noise), seed, trace);
+  return run(controller, ctl, reads_slot(*spec_, controller, expr::slot::noise), seed, trace);
 }
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
                                std::uint64_t seed, TraceSink* trace) {
   tree_control::TreeDriver ctl(controller, tree);
-  return run(controller, ctl, reads_slot(spec_->fitness, controller, expr::slot::noise), seed, trace);
+  return run(controller, ctl, reads_slot(*spec_, controller, expr::slot::noise), seed, trace);
 }
 
 double Evaluator::end_term(const expr::Program& term, const control::ControllerSpec& controller,
@@ -54,12 +59,33 @@ double Evaluator::end_term(const expr::Program& term, const control::ControllerS
   return term.eval(end_frame_);
 }
 
+void Evaluator::reduce_descriptors(const control::ControllerSpec& controller, const expr::Frame& frame,
+                                   std::int64_t steps, std::span<const std::int64_t> usage,
+                                   std::span<const std::int64_t> before, int epoch, std::vector<double>& values) {
+  for (std::size_t i = 0; i < spec_->descriptors.size(); ++i) {
+    const DescriptorSpec& d = spec_->descriptors[i];
+    if (d.at_evaluation) continue;
+    const double v = end_term(d.program, controller, frame, steps, usage, before);
+    double& r = values[i];
+    switch (d.reduce) {
+      case Reduction::Mean:
+      case Reduction::Sum: r += v; break;
+      case Reduction::Min: r = epoch == 0 ? v : std::min(r, v); break;
+      case Reduction::Max: r = epoch == 0 ? v : std::max(r, v); break;
+      case Reduction::First: if (epoch == 0) r = v; break;
+      case Reduction::Last: r = v; break;
+    }
+  }
+}
+
 template <class Driver>
 Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl, bool noise, std::uint64_t seed,
                           TraceSink* trace) {
   const ExperimentSpec& s = *spec_;
   EpochStepper epoch(s, world_, noise);
   Evaluation result;
+  result.objectives.assign(s.further.size(), 0.0);
+  result.descriptors.assign(s.descriptors.size(), 0.0);
   for (int e = 0; e < s.epochs; ++e) {
     epoch.begin(seed, e);
     ctl.reset();
@@ -71,16 +97,32 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
       const StepOutcome outcome = epoch.act(cmd, controller.choice_id(ctl.last_action()));
       ++result.steps;
       result.fitness = add_fitness(result.fitness, outcome.term);
+      for (std::size_t k = 0; k < s.further.size(); ++k)
+        result.objectives[k] = add_fitness(result.objectives[k], s.further[k].step.eval(epoch.frame()));
       if (trace != nullptr) [[unlikely]]
         trace->on_step(epoch.traced(cmd, ctl.last_action(), result.fitness));
       if (outcome.stop) break;
     }
+    const std::int64_t epoch_steps = result.steps - steps_before;
     if (s.fitness.epoch_end)
-      result.fitness += end_term(*s.fitness.epoch_end, controller, epoch.frame(), result.steps - steps_before,
-                                 ctl.usage(), epoch_start_);
+      result.fitness += end_term(*s.fitness.epoch_end, controller, epoch.frame(), epoch_steps, ctl.usage(), epoch_start_);
+    for (std::size_t k = 0; k < s.further.size(); ++k)
+      if (s.further[k].epoch_end)
+        result.objectives[k] +=
+            end_term(*s.further[k].epoch_end, controller, epoch.frame(), epoch_steps, ctl.usage(), epoch_start_);
+    if (!s.descriptors.empty())
+      reduce_descriptors(controller, epoch.frame(), epoch_steps, ctl.usage(), epoch_start_, e, result.descriptors);
   }
   if (s.fitness.evaluation_end)
     result.fitness += end_term(*s.fitness.evaluation_end, controller, epoch.frame(), result.steps, ctl.usage(), {});
+  for (std::size_t k = 0; k < s.further.size(); ++k)
+    if (s.further[k].evaluation_end)
+      result.objectives[k] += end_term(*s.further[k].evaluation_end, controller, epoch.frame(), result.steps, ctl.usage(), {});
+  for (std::size_t i = 0; i < s.descriptors.size(); ++i) {
+    const DescriptorSpec& d = s.descriptors[i];
+    if (d.at_evaluation) result.descriptors[i] = end_term(d.program, controller, epoch.frame(), result.steps, ctl.usage(), {});
+    else if (d.reduce == Reduction::Mean && s.epochs > 0) result.descriptors[i] /= s.epochs;
+  }
   result.usage.assign(ctl.usage().begin(), ctl.usage().end());
   return result;
 }

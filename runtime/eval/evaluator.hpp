@@ -22,6 +22,11 @@ struct Evaluation {
   // Steps on which each action (symbolic head) or behavior (supervisor) acted, in
   // ControllerSpec::choice_names() order; empty for a classical head. They add up to `steps`.
   std::vector<std::int64_t> usage;
+  // The experiment's further objectives (ExperimentSpec::further), as measured (a minimised
+  // one is not negated), and its descriptors (ExperimentSpec::descriptors); empty when it
+  // declares none.
+  std::vector<double> objectives;
+  std::vector<double> descriptors;
 };
 
 // One control step of a traced evaluation (the replay of a controller): the state after
@@ -80,6 +85,11 @@ class Evaluator {
   // `steps` steps in which the choices acted `usage` - `before` times.
   double end_term(const expr::Program& term, const control::ControllerSpec& controller, const expr::Frame& frame,
                   std::int64_t steps, std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
+
+  // Each descriptor's per-epoch values reduced so far (Reduction::Mean: their sum).
+  void reduce_descriptors(const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
+                          std::span<const std::int64_t> usage, std::span<const std::int64_t> before, int epoch,
+                          std::vector<double>& values);
 
   const ExperimentSpec* spec_;
   sim::World world_;

@@ -34,6 +34,37 @@ struct FitnessSpec {
   std::optional<expr::Program> evaluation_end;
 };
 
+// The range an objective's or a descriptor's values are declared to lie in (`in [lo, hi]`):
+// what a hypervolume's reference point, a QD-score's offset and an archive's cells are
+// computed from. Values outside it are kept as measured; only the algorithms clamp.
+struct DeclaredRange {
+  double lower = 0.0;
+  double upper = 0.0;
+  friend bool operator==(const DeclaredRange&, const DeclaredRange&) = default;
+};
+
+// One objective of an experiment that declares several (`fitness F in [..]`, then
+// `objective G minimize in [..]`): index 0 is the fitness, always maximised.
+struct ObjectiveSpec {
+  std::string name;                          // the fitness declaration's
+  bool minimize = false;
+  std::optional<DeclaredRange> range;
+};
+
+// How a descriptor's per-epoch values make the evaluation's.
+enum class Reduction { Mean, Sum, Min, Max, First, Last };
+
+// A behavior descriptor (`descriptor NAME: EXPR in [lo, hi] by REDUCTION`): an end term,
+// evaluated at the end of every epoch and reduced over the epochs, or once at the end of
+// the evaluation over its aggregates (`at_evaluation`).
+struct DescriptorSpec {
+  std::string name;
+  expr::Program program;
+  bool at_evaluation = false;
+  Reduction reduce = Reduction::Mean;
+  DeclaredRange range;
+};
+
 // A supervised behavior that is another experiment's evolved controller
 // (`behavior avoid = evolved from experiment E controller C`): the experiment E must run
 // first; the best genome of C over all its runs fills each target's FixedController.
@@ -95,6 +126,11 @@ struct ExperimentSpec {
   sim::ArenaSpec arena;
   sim::KheperaParams robot;
   FitnessSpec fitness;
+  // Declared objectives: empty for an experiment with the fitness alone and no range;
+  // otherwise objectives[0] describes `fitness` and objectives[i > 0] is further[i - 1].
+  std::vector<ObjectiveSpec> objectives;
+  std::vector<FitnessSpec> further;
+  std::vector<DescriptorSpec> descriptors;
   int epochs = 10;
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;

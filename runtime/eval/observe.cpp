@@ -100,4 +100,17 @@ bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& contr
   return controller_reads(controller, slot);
 }
 
+bool reads_slot(const ExperimentSpec& spec, const control::ControllerSpec& controller, expr::Slot slot) noexcept {
+  const auto fitness_reads = [&](const FitnessSpec& f) {
+    if (program_reads(f.step, slot)) return true;
+    for (const auto* end : {&f.epoch_end, &f.evaluation_end})
+      if (*end && program_reads(**end, slot)) return true;
+    return false;
+  };
+  if (std::any_of(spec.further.begin(), spec.further.end(), fitness_reads)) return true;
+  for (const DescriptorSpec& d : spec.descriptors)
+    if (program_reads(d.program, slot)) return true;
+  return reads_slot(spec.fitness, controller, slot);
+}
+
 }  // namespace esc::eval

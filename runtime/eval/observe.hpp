@@ -36,5 +36,8 @@ void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) 
 // observables nobody reads.
 [[nodiscard]] bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& controller,
                               expr::Slot slot) noexcept;
+// The same over every objective and descriptor of `spec` too.
+[[nodiscard]] bool reads_slot(const ExperimentSpec& spec, const control::ControllerSpec& controller,
+                              expr::Slot slot) noexcept;
 
 }  // namespace esc::eval

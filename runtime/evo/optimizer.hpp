@@ -48,14 +48,26 @@ struct Metric {
   friend bool operator==(const Metric&, const Metric&) = default;
 };
 
+// The range a value is declared to lie in; infinite ends where the script declares none.
+struct Bounds {
+  double lower = 0.0;
+  double upper = 0.0;
+  friend bool operator==(const Bounds&, const Bounds&) = default;
+};
+
 // What one run evolves: genomes of `genome_size` weights (a network) or trees over
 // `primitives` (null for a network), from the run's `seed`; `start` is the genome a run
 // that starts from a stored controller (`start from`) begins with, or null.
+// `objectives` holds one range per objective of an Outcome, in its maximised form (a
+// minimised objective declared in [0, 300] is [-300, 0] here); `descriptors` one per
+// descriptor, as declared.
 struct Problem {
   std::size_t genome_size = 0;
   const gp::PrimitiveSet* primitives = nullptr;
   std::uint64_t seed = 0;
   const Genome* start = nullptr;
+  std::vector<Bounds> objectives;
+  std::vector<Bounds> descriptors;
 };
 
 class Optimizer {

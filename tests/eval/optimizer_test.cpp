@@ -51,7 +51,7 @@ std::vector<Case> cases() {
 std::unique_ptr<evo::Optimizer> make(const ExperimentSpec& spec, const control::ControllerSpec& c,
                                      const evo::Genome* start = nullptr) {
   const Evolution e = spec.evolution_of(c);
-  return e.algorithm->make(e.settings, {c.is_tree() ? 0 : c.genome_size(), c.primitives.get(), 77, start});
+  return e.algorithm->make(e.settings, {c.is_tree() ? 0 : c.genome_size(), c.primitives.get(), 77, start, {}, {}});
 }
 
 TEST(Optimizer, EveryAlgorithmLoadedAfterAnyGenerationContinuesAsTheUnstoppedOne) {
@@ -103,7 +103,7 @@ TEST(Optimizer, AStateItCouldNotHaveSavedIsRefused) {
   more.es.lambda += 5;
   EXPECT_THROW(make(more, more.controllers[0])->load(state), std::invalid_argument);
   const std::size_t n = spec.controllers[0].genome_size();
-  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, nullptr, 77, nullptr})->load(state),
+  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, nullptr, 77, nullptr, {}, {}})->load(state),
                std::invalid_argument);
 }
 
@@ -120,12 +120,12 @@ TEST(Optimizer, AStartGenomeIsCandidateZeroOfGenerationZero) {
 
 TEST(Optimizer, EvaluatingAStoredGenomeAsksForItAloneAndKeepsNoState) {
   const evo::Genome g{0.25, -0.5};
-  auto o = evo::make_evaluate_only({2, nullptr, 1, &g});
+  auto o = evo::make_evaluate_only({2, nullptr, 1, &g, {}, {}});
   EXPECT_EQ(o->ask(0), std::vector<evo::Genome>{g});
   o->tell(measure({g}));
   EXPECT_TRUE(o->save().empty());
   EXPECT_THROW(o->load(evo::StateBytes{1}), std::invalid_argument);
-  EXPECT_THROW((void)evo::make_evaluate_only({2, nullptr, 1, nullptr}), std::invalid_argument);
+  EXPECT_THROW((void)evo::make_evaluate_only({2, nullptr, 1, nullptr, {}, {}}), std::invalid_argument);
 }
 
 TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
