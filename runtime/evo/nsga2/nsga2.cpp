@@ -221,7 +221,7 @@ void Nsga2::load(std::span<const std::uint8_t> bytes) {
     if (!(d >= 0.0)) fail("a crowding distance that is NaN or negative");
 
   // The ranks follow from the objectives: the survivors of whole fronts keep their fronts.
-  next.ranking_.rank.assign(big_n * (told ? 1 : 0), 0);
+  next.ranking_.rank.assign(next.parents_.size(), 0);
   const auto fronts = nondominated_fronts(next.objectives_);
   for (std::size_t k = 0; k < fronts.size(); ++k)
     for (const std::size_t i : fronts[k]) next.ranking_.rank[i] = k;
