@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace esc::evo {
 
@@ -105,6 +106,70 @@ MinimiseResult minimise(const CmaesSettings& settings, std::size_t n, const Obje
   }
   result.stopped = cma.stop_reason();
   return finish();
+}
+
+namespace {
+
+// ZDT's f1 and g.
+std::array<double, 2> zdt_parts(std::span<const double> x) {
+  if (x.size() < 2)
+    throw std::invalid_argument("the ZDT functions need at least 2 variables, got " + std::to_string(x.size()));
+  double sum = 0.0;
+  for (std::size_t i = 1; i < x.size(); ++i) sum += x[i];
+  return {x[0], 1.0 + 9.0 * sum / static_cast<double>(x.size() - 1)};
+}
+
+}  // namespace
+
+std::array<double, 2> zdt1(std::span<const double> x) {
+  const auto [f1, g] = zdt_parts(x);
+  return {f1, g * (1.0 - std::sqrt(f1 / g))};
+}
+
+std::array<double, 2> zdt2(std::span<const double> x) {
+  const auto [f1, g] = zdt_parts(x);
+  return {f1, g * (1.0 - (f1 / g) * (f1 / g))};
+}
+
+std::array<double, 2> zdt3(std::span<const double> x) {
+  const auto [f1, g] = zdt_parts(x);
+  return {f1, g * (1.0 - std::sqrt(f1 / g) - f1 / g * std::sin(10.0 * std::numbers::pi * f1))};
+}
+
+const std::vector<std::string>& multi_objective_function_names() {
+  static const std::vector<std::string> names{"zdt1", "zdt2", "zdt3"};
+  return names;
+}
+
+MultiObjective multi_objective_function(std::string_view name) {
+  const auto wrap = [](std::array<double, 2> (*f)(std::span<const double>)) -> MultiObjective {
+    return [f](std::span<const double> x) {
+      const auto v = f(x);
+      return std::vector<double>(v.begin(), v.end());
+    };
+  };
+  if (name == "zdt1") return wrap(zdt1);
+  if (name == "zdt2") return wrap(zdt2);
+  if (name == "zdt3") return wrap(zdt3);
+  std::string known;
+  for (const std::string& k : multi_objective_function_names()) known += (known.empty() ? "" : ", ") + k;
+  throw std::invalid_argument("unknown multi-objective function '" + std::string(name) + "' (known: " + known + ")");
+}
+
+Nsga2 nsga2_run(const Nsga2Settings& settings, std::size_t n, const MultiObjective& f, std::uint64_t seed,
+                std::uint64_t generations) {
+  Nsga2 nsga(settings, n);
+  Rng init(seed, {static_cast<std::uint64_t>(Stream::Init)});
+  nsga.start(init);
+  for (std::uint64_t g = 0; g < generations; ++g) {
+    Rng rng(seed, {static_cast<std::uint64_t>(Stream::Breed), g});
+    const std::vector<std::vector<double>> candidates = nsga.ask(rng);
+    std::vector<std::vector<double>> values;
+    values.reserve(candidates.size());
+    for (const auto& x : candidates) values.push_back(f(x));
+    nsga.tell(values);
+  }
+  return nsga;
 }
 
 }  // namespace esc::evo

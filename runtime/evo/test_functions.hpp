@@ -1,6 +1,9 @@
 #pragma once
 // Test functions of the CMA-ES literature, minimised, and a driver that runs esc's CMA-ES on
-// one: what esc-testfn, tests/evo/cmaes_test.cpp and scripts/validate-cmaes.py measure.
+// one: what esc-testfn, tests/evo/cmaes_test.cpp and scripts/validate-cmaes.py measure. The
+// ZDT functions, two objectives, and a driver that runs NSGA-II on one, do the same for
+// tests/evo/nsga2_test.cpp and scripts/validate-nsga2.py.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -11,6 +14,7 @@
 #include <vector>
 
 #include "runtime/evo/cmaes/cmaes.hpp"
+#include "runtime/evo/nsga2/nsga2.hpp"
 
 namespace esc::evo {
 
@@ -57,5 +61,30 @@ struct MinimiseResult {
 // order and ends at the first below `target`, after `max_evals`, or when the search stops.
 MinimiseResult minimise(const CmaesSettings& settings, std::size_t n, const Objective& f, std::uint64_t seed,
                         double target, std::uint64_t max_evals);
+
+// ZDT1-3 (Zitzler, Deb & Thiele, Evolutionary Computation 8(2), 2000), both objectives
+// minimised, x in [0, 1]^n, n >= 2 (std::invalid_argument otherwise): f1 = x_1,
+// g = 1 + 9 (x_2 + ... + x_n) / (n - 1) and f2 = g h(f1, g). The optimal fronts have g = 1
+// (x_2 = ... = x_n = 0).
+// ZDT1: h = 1 - sqrt(f1 / g), a convex front.
+std::array<double, 2> zdt1(std::span<const double> x);
+// ZDT2: h = 1 - (f1 / g)^2, a concave front.
+std::array<double, 2> zdt2(std::span<const double> x);
+// ZDT3: h = 1 - sqrt(f1 / g) - (f1 / g) sin(10 pi f1), a front in five disconnected pieces.
+std::array<double, 2> zdt3(std::span<const double> x);
+
+using MultiObjective = std::function<std::vector<double>(std::span<const double>)>;
+
+// The multi-objective functions by name ("zdt1", "zdt2", "zdt3"); std::invalid_argument
+// listing the names for another.
+MultiObjective multi_objective_function(std::string_view name);
+const std::vector<std::string>& multi_objective_function_names();
+
+// NSGA-II on f from `seed` as esc runs an optimizer: the first population from
+// Rng(seed, {Stream::Init}), generation g's children from Rng(seed, {Stream::Breed, g}).
+// `generations` tells, the first of the initial population, so generations x N evaluations
+// (DEAP's NGEN counts alike). Returns the optimizer after the last tell.
+Nsga2 nsga2_run(const Nsga2Settings& settings, std::size_t n, const MultiObjective& f, std::uint64_t seed,
+                std::uint64_t generations);
 
 }  // namespace esc::evo

@@ -1,17 +1,83 @@
-// esc-testfn: esc's CMA-ES on one test function of the literature, one JSON line per run,
-// for scripts/validate-cmaes.py. The box is [-5, 5] unless told (the usual domain of these
-// functions), sigma a fraction of its width as in CmaesSettings.
+// esc-testfn: esc's optimizers on test functions of the literature, for the validation
+// scripts. Three modes:
+//   esc-testfn --function NAME ...        CMA-ES on a single-objective function, one JSON line
+//                                          per run (scripts/validate-cmaes.py); the box is
+//                                          [-5, 5] unless told, sigma a fraction of its width.
+//   esc-testfn nsga2 --function zdtK ...  NSGA-II on a ZDT function in [0, 1]^n: the final
+//                                          population's objectives, one line per point, then
+//                                          "hypervolume V" for the reference (11, 11)
+//                                          (scripts/validate-nsga2.py).
+//   esc-testfn hypervolume --reference R... the hypervolume of the points read from standard
+//                                          input (one per line), for the script's cross-check
+//                                          against DEAP's.
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "runtime/evo/pareto/hypervolume.hpp"
 #include "runtime/evo/test_functions.hpp"
 
+namespace {
+
+// The reference point of DEAP's examples/ga/nsga2.py for ZDT1-3.
+constexpr double kZdtReference = 11.0;
+
+int run_cmaes(const std::string& function, std::size_t n, std::uint64_t seed, double target, double max_evals,
+              const esc::evo::CmaesSettings& s) {
+  const esc::evo::Objective f = esc::evo::test_function(function, n, seed);
+  const auto r = esc::evo::minimise(s, n, f, seed, target, static_cast<std::uint64_t>(max_evals));
+  nlohmann::json line{{"function", function},
+                      {"n", n},
+                      {"seed", seed},
+                      {"separable", s.separable},
+                      {"ipop", s.restarts},
+                      {"evaluations_to_target", nullptr},
+                      {"final_f", r.best_f},
+                      {"evaluations", r.evaluations},
+                      {"restarts", r.restarts},
+                      {"lambda", r.lambda},
+                      {"stopped", r.stopped}};
+  if (r.evaluations_to_target) line["evaluations_to_target"] = *r.evaluations_to_target;
+  std::cout << line.dump() << '\n';
+  return 0;
+}
+
+int run_nsga2(const std::string& function, std::size_t n, std::uint64_t seed, std::uint64_t generations,
+              const esc::evo::Nsga2Settings& s) {
+  const esc::evo::Nsga2 nsga = esc::evo::nsga2_run(s, n, esc::evo::multi_objective_function(function), seed, generations);
+  for (const auto& f : nsga.objectives()) {
+    for (std::size_t k = 0; k < f.size(); ++k) std::printf(k == 0 ? "%.17g" : " %.17g", f[k]);
+    std::printf("\n");
+  }
+  const std::vector<double> reference(2, kZdtReference);
+  std::printf("hypervolume %.17g\n", esc::evo::hypervolume(nsga.objectives(), reference));
+  return 0;
+}
+
+int run_hypervolume(const std::vector<double>& reference) {
+  esc::evo::ObjectiveRows points;
+  std::string line;
+  while (std::getline(std::cin, line)) {
+    std::istringstream in(line);
+    std::vector<double> p;
+    for (double v = 0.0; in >> v;) p.push_back(v);
+    if (!in.eof()) throw std::invalid_argument("not a number in the line '" + line + "'");
+    if (!p.empty()) points.push_back(std::move(p));
+  }
+  std::printf("%.17g\n", esc::evo::hypervolume(points, reference));
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  CLI::App app{"Runs esc's CMA-ES on a test function; prints one JSON line"};
+  CLI::App app{"Runs esc's optimizers on test functions (CMA-ES, or the subcommands nsga2 and hypervolume)"};
   std::string function;
   std::size_t n = 10;
   std::uint64_t seed = 1;
@@ -20,7 +86,7 @@ int main(int argc, char** argv) {
   esc::evo::CmaesSettings s;
   s.lower = -5.0;
   s.upper = 5.0;
-  app.add_option("--function", function, "sphere, ellipsoid, rosenbrock or rastrigin")->required();
+  app.add_option("--function", function, "sphere, ellipsoid, rosenbrock or rastrigin");
   app.add_option("--n", n, "dimension")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "seed of the start, the samples and the ellipsoid's rotation");
   app.add_option("--target", target, "stop at the first evaluation below this value");
@@ -31,27 +97,45 @@ int main(int argc, char** argv) {
   app.add_option("--upper", s.upper, "upper bound of every coordinate");
   app.add_option("--ipop", s.restarts, "IPOP restarts at most (population doubled each)");
   app.add_flag("--separable", s.separable, "sep-CMA-ES: diagonal covariance");
-  CLI11_PARSE(app, argc, argv);
+
+  CLI::App* nsga2 = app.add_subcommand("nsga2", "NSGA-II on a ZDT function; prints the final population's objectives "
+                                                "and its hypervolume for the reference (11, 11)");
+  std::string zdt;
+  std::size_t zdt_n = 30;
+  std::uint64_t zdt_seed = 1;
+  std::uint64_t generations = 250;
+  esc::evo::Nsga2Settings ns;
+  ns.lower = 0.0;
+  ns.upper = 1.0;
+  nsga2->add_option("--function", zdt, "zdt1, zdt2 or zdt3")->required();
+  nsga2->add_option("--n", zdt_n, "number of variables, in [0, 1] each")->check(CLI::Range(2, 1'000'000));
+  nsga2->add_option("--seed", zdt_seed, "seed of the first population and of every generation");
+  nsga2->add_option("--population", ns.population, "N, even");
+  nsga2->add_option("--generations", generations,
+                    "generations evaluated, the first population included (N each; DEAP's NGEN)");
+  nsga2->add_option("--crossover", ns.crossover, "probability that a pair of parents is crossed");
+  nsga2->add_option("--eta-crossover", ns.eta_crossover, "SBX's distribution index");
+  nsga2->add_option("--eta-mutation", ns.eta_mutation, "polynomial mutation's distribution index");
+  nsga2->add_option("--mutation", ns.mutation, "probability that a gene mutates (0: 1 / n)");
+
+  CLI::App* hv = app.add_subcommand("hypervolume", "the hypervolume (minimised objectives) of the points on standard "
+                                                   "input, one per line");
+  std::vector<double> reference;
+  hv->add_option("--reference", reference, "the reference point, 2 or 3 numbers")->required();
 
   try {
-    const esc::evo::Objective f = esc::evo::test_function(function, n, seed);
-    const auto r = esc::evo::minimise(s, n, f, seed, target, static_cast<std::uint64_t>(max_evals));
-    nlohmann::json line{{"function", function},
-                        {"n", n},
-                        {"seed", seed},
-                        {"separable", s.separable},
-                        {"ipop", s.restarts},
-                        {"evaluations_to_target", nullptr},
-                        {"final_f", r.best_f},
-                        {"evaluations", r.evaluations},
-                        {"restarts", r.restarts},
-                        {"lambda", r.lambda},
-                        {"stopped", r.stopped}};
-    if (r.evaluations_to_target) line["evaluations_to_target"] = *r.evaluations_to_target;
-    std::cout << line.dump() << '\n';
+    app.parse(argc, argv);
+    if (app.get_subcommands().empty() && function.empty()) throw CLI::RequiredError("--function");
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  try {
+    if (nsga2->parsed()) return run_nsga2(zdt, zdt_n, zdt_seed, generations, ns);
+    if (hv->parsed()) return run_hypervolume(reference);
+    return run_cmaes(function, n, seed, target, max_evals, s);
   } catch (const std::exception& e) {
     std::cerr << "esc-testfn: " << e.what() << '\n';
     return 2;
   }
-  return 0;
 }
