@@ -564,7 +564,9 @@ TEST(MapElites, RefusesImpossibleSettingsNamingThem) {
   EXPECT_NE(with([](MapElitesSettings& s) { s.lower = -2e6; }).find("lower"), std::string::npos);
   EXPECT_NE(message_of([] { MapElites(MapElitesSettings{}, 0, Archive(unit_square(), Grid({2, 2}), 0.0)); }).find("genome size"),
             std::string::npos);
-  Rng rng(1);
+  Archive seeded(unit_square(), Grid({2, 2}), 0.0);
+  (void)seeded.insert({0.0, 0.0, 0.0}, 1.0, std::vector<double>{0.5, 0.5});
+  EXPECT_NE(message_of([&] { MapElites(MapElitesSettings{}, 2, seeded); }).find("another size"), std::string::npos);
   MapElites me(MapElitesSettings{}, 2, Archive(unit_square(), Grid({2, 2}), 0.0));
   EXPECT_THROW(me.tell(std::vector<double>{}, std::vector<std::vector<double>>{}), std::logic_error);
 }

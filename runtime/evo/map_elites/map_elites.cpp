@@ -31,6 +31,8 @@ MapElites::MapElites(const MapElitesSettings& settings, std::size_t genome_size,
   require(std::abs(s_.lower) <= kMaxGeneBound, "lower must lie within +-1e6");
   require(std::abs(s_.upper) <= kMaxGeneBound && s_.lower < s_.upper, "upper must lie within +-1e6, above lower");
   require(n_ >= 1, "genome size must be at least 1");
+  for (const std::size_t cell : archive_.filled_cells())
+    require(archive_.elite(cell)->genome.size() == n_, "the archive holds a genome of another size");
 }
 
 void MapElites::start(std::span<const double> genome) {
@@ -56,7 +58,6 @@ std::vector<Genome> MapElites::ask(Rng& rng) {
     while (out.size() < s_.batch) {
       const Elite& x = select_uniform(archive_, rng);
       const Elite& y = select_uniform(archive_, rng);
-      require(x.genome.size() == n_ && y.genome.size() == n_, "an elite has another genome size");
       out.push_back(iso_line_dd(x.genome, y.genome, op, rng));
     }
   }

@@ -44,8 +44,9 @@ struct MapElitesSettings {
 
 class MapElites {
  public:
-  // Throws std::invalid_argument naming the setting out of range ("batch", "initial",
-  // "sigma_iso", "sigma_line", "lower", "upper", "genome size").
+  // The archive may hold elites already (a seeded run), of genome_size each. Throws
+  // std::invalid_argument naming the setting out of range ("batch", "initial", "sigma_iso",
+  // "sigma_line", "lower", "upper", "genome size") or for an elite of another size.
   MapElites(const MapElitesSettings& settings, std::size_t genome_size, Archive archive);
 
   // A given genome (`start from`) becomes candidate 0 of the next ask, unchanged. Throws
