@@ -83,6 +83,33 @@ TEST(Grid, RefusesImpossibleBinsNamingTheSetting) {
   EXPECT_NE(message_of([] { Archive(unit_square(), Grid({4, 4}), std::nan("")); }).find("fitness_offset"), std::string::npos);
 }
 
+// ---- kd-tree ----
+
+TEST(PointTree, KNearestSquaredDistancesEqualABruteForceSearch) {
+  Rng rng(17);
+  for (const std::size_t dims : {1u, 3u, 8u}) {
+    std::vector<double> values(900 * dims);
+    for (double& v : values) v = rng.uniform();
+    std::copy_n(values.begin(), 10 * dims, values.begin() + 10 * dims);  // ten twins
+    const PointTree tree(values, dims);
+    std::vector<std::uint32_t> indices;
+    std::vector<double> squared;
+    for (int q = 0; q < 200; ++q) {
+      std::vector<double> query(dims);
+      for (double& v : query) v = q < 20 ? values[static_cast<std::size_t>(q) * dims] : rng.uniform(-0.2, 1.2);
+      std::vector<double> all;
+      for (std::size_t i = 0; i < tree.size(); ++i) all.push_back(squared_distance(query, tree.point(i)));
+      std::sort(all.begin(), all.end());
+      for (const std::size_t k : {1u, 16u, 1000u}) {
+        tree.nearest(query, k, indices, squared);
+        ASSERT_EQ(squared, std::vector<double>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(std::min(k, all.size()))))
+            << "dims " << dims << " query " << q << " k " << k;
+        for (std::size_t j = 0; j < indices.size(); ++j) EXPECT_EQ(squared_distance(query, tree.point(indices[j])), squared[j]);
+      }
+    }
+  }
+}
+
 // ---- CVT ----
 
 TEST(Cvt, CentroidsAreDeterministicDistinctInsideAndEvenlySpread) {
