@@ -69,7 +69,7 @@ class Archive {
 
   [[nodiscard]] std::size_t cells() const noexcept { return slots_.size(); }
   [[nodiscard]] std::size_t filled() const noexcept { return filled_.size(); }
-  // The cell's elite, or null while it is empty.
+  // The cell's elite, or null while it is empty; std::out_of_range beyond cells().
   [[nodiscard]] const Elite* elite(std::size_t cell) const;
   // The filled cells in increasing order.
   [[nodiscard]] std::span<const std::size_t> filled_cells() const noexcept { return filled_; }
