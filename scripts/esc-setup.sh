@@ -14,7 +14,7 @@ BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
 # The full variant, every optional part built in (docs/install.md says what each needs).
 PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev   # required
-          libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+          libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev libnanoflann-dev
           libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev   # uuid-dev: the ANTLR runtime links -luuid
           libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
