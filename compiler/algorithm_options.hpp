@@ -43,9 +43,10 @@ class AlgorithmOptions {
   [[nodiscard]] bool takes_range(std::string_view key) const;
   // Its resolved settings, `NAME.KEY` -> text.
   void resolve(const std::any& settings, std::map<std::string, std::string>& resolved) const;
-  // A problem of the settings together for a network of `genome_size` weights, or "".
-  [[nodiscard]] std::string problem(const std::any& settings, std::size_t genome_size) const {
-    return algorithm_->problem(settings, genome_size);
+  // A problem of the settings together for `problem` (a network's size, the declared
+  // objectives and descriptors), or "".
+  [[nodiscard]] std::string problem(const std::any& settings, const evo::Problem& problem) const {
+    return algorithm_->problem(settings, problem);
   }
 
  private:

@@ -220,7 +220,6 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   require(K::Arena, "arena", "arena <name>");
   require(K::Fitness, "fitness", "fitness <name>");
   require(K::Compare, "controllers to compare", "compare <controller>, <controller>");
-  if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);
 
   // `in(zone)` and `reached(light)` resolve in this experiment's arena, `using(B)` & co.
   // among its controllers' choices.
@@ -237,6 +236,8 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
       if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl)) ok = false;
   }
+  // After the objectives and descriptors: an algorithm's settings are checked against them.
+  if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);
   if (ok && sink_.errors() == errors && arena != nullptr) {
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);

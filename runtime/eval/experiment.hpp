@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <any>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -209,7 +210,26 @@ struct ExperimentSpec {
     if (evaluates_only()) return 1;
     const Evolution e = evolution_of(c);
     if (e.algorithm == nullptr || !e.settings.has_value()) return 0;
-    return e.algorithm->population(e.settings, c.is_tree() ? 0 : c.genome_size());
+    return e.algorithm->population(e.settings, problem_of(c));
+  }
+  // What evolving `c` asks of an optimizer, as far as sizes and declared ranges go (the
+  // run adds its seed and start genome): the genome's length (0 for a tree), every
+  // objective's range maximised (a minimised one's negated; infinite where undeclared) and
+  // every descriptor's.
+  [[nodiscard]] evo::Problem problem_of(const control::ControllerSpec& c) const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    evo::Problem p;
+    p.genome_size = c.is_tree() ? 0 : c.genome_size();
+    p.primitives = c.primitives.get();
+    p.objectives.assign(1 + further.size(), evo::Bounds{-inf, inf});
+    for (std::size_t i = 0; i < objectives.size() && i < p.objectives.size(); ++i) {
+      const ObjectiveSpec& o = objectives[i];
+      if (!o.range) continue;
+      p.objectives[i] = o.minimize ? evo::Bounds{-o.range->upper, -o.range->lower}
+                                   : evo::Bounds{o.range->lower, o.range->upper};
+    }
+    for (const DescriptorSpec& d : descriptors) p.descriptors.push_back({d.range.lower, d.range.upper});
+    return p;
   }
   // The most generations of any compared controller (the ES's when none is compared).
   [[nodiscard]] int max_generations() const noexcept {

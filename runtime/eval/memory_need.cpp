@@ -22,7 +22,7 @@ double generation_bytes(const ExperimentSpec& spec, const control::ControllerSpe
   const double results = static_cast<double>(spec.evaluations_per_generation(c)) * 3.0 * sizeof(double);
   const Evolution e = spec.evolution_of(c);
   if (spec.evaluates_only() || !e.settings.has_value()) return results;
-  return e.algorithm->memory_bytes(e.settings, c.is_tree() ? 0 : c.genome_size()) + results;
+  return e.algorithm->memory_bytes(e.settings, spec.problem_of(c)) + results;
 }
 
 // A number from a file such as /sys/fs/cgroup/memory.max ("max" when unlimited).

@@ -2,7 +2,6 @@
 // adds to ask/tell is what every run needs: the run's best and where it happened, the
 // optimizer's state after each generation (what the store keeps to resume and carry on),
 // a stored genome to start from or only evaluate, and the trees' texts at the end.
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -28,24 +27,6 @@ std::string behavior_body(const control::ControllerSpec& controller, const evo::
   } catch (const std::invalid_argument&) {
     return {};
   }
-}
-
-// The objectives' declared ranges as optimizers see them (maximised).
-std::vector<evo::Bounds> objective_bounds(const ExperimentSpec& spec) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  std::vector<evo::Bounds> b(1 + spec.further.size(), evo::Bounds{-inf, inf});
-  for (std::size_t i = 0; i < spec.objectives.size() && i < b.size(); ++i) {
-    const ObjectiveSpec& o = spec.objectives[i];
-    if (!o.range) continue;
-    b[i] = o.minimize ? evo::Bounds{-o.range->upper, -o.range->lower} : evo::Bounds{o.range->lower, o.range->upper};
-  }
-  return b;
-}
-
-std::vector<evo::Bounds> descriptor_bounds(const ExperimentSpec& spec) {
-  std::vector<evo::Bounds> b;
-  for (const DescriptorSpec& d : spec.descriptors) b.push_back({d.range.lower, d.range.upper});
-  return b;
 }
 
 std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "tree" : "network"; }
@@ -80,9 +61,9 @@ RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& contro
       evaluations_(spec.evaluations_per_generation(controller)) {
   const StartFrom::Origin* start = start_of(spec, controller, run);
   state_ = from != nullptr ? *from : fresh_run(spec, run, start);
-  const evo::Problem problem{controller.is_tree() ? 0 : controller.genome_size(), controller.primitives.get(),
-                             state_.seed, start != nullptr ? &start->genome : nullptr, objective_bounds(spec),
-                             descriptor_bounds(spec)};
+  evo::Problem problem = spec.problem_of(controller);
+  problem.seed = state_.seed;
+  problem.start = start != nullptr ? &start->genome : nullptr;
   Made made = make_optimizer(spec, controller, problem);
   optimizer_ = std::move(made.optimizer);
   // A run that only evaluates has no state to go on from (and one stored by an esc before

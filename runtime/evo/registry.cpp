@@ -6,6 +6,12 @@
 #include "runtime/evo/cmaes/cmaes_options.hpp"
 #include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/evo/gp/gp_optimizer.hpp"
+#include "runtime/evo/map_elites/map_elites_optimizer.hpp"
+#include "runtime/evo/map_elites/map_elites_options.hpp"
+#include "runtime/evo/novelty/novelty_optimizer.hpp"
+#include "runtime/evo/novelty/novelty_options.hpp"
+#include "runtime/evo/nsga2/nsga2_optimizer.hpp"
+#include "runtime/evo/nsga2/nsga2_options.hpp"
 
 namespace esc::evo {
 
@@ -20,9 +26,20 @@ template <class Settings>
 std::any defaults() {
   return Settings{};
 }
+std::any cvt_defaults() {
+  MapElitesRunSettings s;
+  s.cvt = true;
+  return s;
+}
+// A function of the settings and the genome's size alone.
 template <class Settings, class R, R (*F)(const Settings&, std::size_t)>
-R of(const std::any& settings, std::size_t genome_size) {
-  return F(std::any_cast<const Settings&>(settings), genome_size);
+R of(const std::any& settings, const Problem& problem) {
+  return F(std::any_cast<const Settings&>(settings), problem.genome_size);
+}
+// A function of the settings and the whole problem.
+template <class Settings, class R, R (*F)(const Settings&, const Problem&)>
+R on(const std::any& settings, const Problem& problem) {
+  return F(std::any_cast<const Settings&>(settings), problem);
 }
 
 }  // namespace
@@ -35,7 +52,22 @@ const std::vector<Algorithm>& algorithms() {
        &of<gp::GpSettings, std::size_t, &gp::gp_population>, &of<gp::GpSettings, double, &gp::gp_memory_bytes>},
       {"cmaes", 1, true, false, &make<CmaesSettings, &make_cmaes>,
        &of<CmaesSettings, std::size_t, &cmaes_population>, &of<CmaesSettings, double, &cmaes_memory_bytes>, "CMA-ES",
-       &cmaes_options, &defaults<CmaesSettings>, &cmaes_problem},
+       &cmaes_options, &defaults<CmaesSettings>, &of<CmaesSettings, std::string, &cmaes_problem>},
+      {"nsga2", 1, true, false, &make<Nsga2Settings, &make_nsga2>, &on<Nsga2Settings, std::size_t, &nsga2_population>,
+       &on<Nsga2Settings, double, &nsga2_run_memory_bytes>, "NSGA-II", &nsga2_options, &defaults<Nsga2Settings>,
+       &on<Nsga2Settings, std::string, &nsga2_problem>},
+      {"map_elites", 1, true, false, &make<MapElitesRunSettings, &make_map_elites>,
+       &on<MapElitesRunSettings, std::size_t, &map_elites_population>,
+       &on<MapElitesRunSettings, double, &map_elites_run_memory_bytes>, "MAP-Elites", &map_elites_options,
+       &defaults<MapElitesRunSettings>, &on<MapElitesRunSettings, std::string, &map_elites_problem>},
+      {"cvt_map_elites", 1, true, false, &make<MapElitesRunSettings, &make_map_elites>,
+       &on<MapElitesRunSettings, std::size_t, &map_elites_population>,
+       &on<MapElitesRunSettings, double, &map_elites_run_memory_bytes>, "CVT-MAP-Elites", &cvt_map_elites_options,
+       &cvt_defaults, &on<MapElitesRunSettings, std::string, &map_elites_problem>},
+      {"novelty", 1, true, false, &make<NoveltyRunSettings, &make_novelty>,
+       &on<NoveltyRunSettings, std::size_t, &novelty_population>, &on<NoveltyRunSettings, double, &novelty_memory_bytes>,
+       "novelty search", &novelty_options, &defaults<NoveltyRunSettings>,
+       &on<NoveltyRunSettings, std::string, &novelty_problem>},
   };
   return table;
 }

@@ -23,18 +23,20 @@ struct Algorithm {
   // A fresh optimizer for one run; `settings` holds the algorithm's own settings type (as
   // the compiler made it). Throws std::invalid_argument on impossible settings.
   std::unique_ptr<Optimizer> (*make)(const std::any& settings, const Problem& problem) = nullptr;
-  // Candidates of a run's first generation for a genome of `genome_size` weights (0 for a
-  // tree): what the campaign sizes its rounds by.
-  std::size_t (*population)(const std::any& settings, std::size_t genome_size) = nullptr;
+  // Candidates of a run's first generation for `problem` (its genome_size 0 for a tree):
+  // what the campaign sizes its rounds by. These three read only the problem's sizes and
+  // declared ranges, never its seed or start.
+  std::size_t (*population)(const std::any& settings, const Problem& problem) = nullptr;
   // Bytes one run's optimizer holds at once, at least (the campaign's memory check).
-  double (*memory_bytes)(const std::any& settings, std::size_t genome_size) = nullptr;
+  double (*memory_bytes)(const std::any& settings, const Problem& problem) = nullptr;
   // Its options as scripts write them, its default settings, and why settings cannot run on
-  // a network of `genome_size` weights ("" when they can). Null for the paper's ES and GP,
-  // whose options the compiler keeps in tables of their own (their historic keys).
+  // `problem` ("" when they can: an archive's cells need declared descriptors, ...). Null
+  // for the paper's ES and GP, whose options the compiler keeps in tables of their own
+  // (their historic keys).
   std::string_view what = {};     // in messages: "CMA-ES"
   const std::vector<AlgorithmOption>& (*options)() = nullptr;
   std::any (*defaults)() = nullptr;
-  std::string (*problem)(const std::any& settings, std::size_t genome_size) = nullptr;
+  std::string (*problem)(const std::any& settings, const Problem& problem) = nullptr;
 };
 
 [[nodiscard]] const std::vector<Algorithm>& algorithms();

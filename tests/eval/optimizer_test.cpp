@@ -4,6 +4,7 @@
 // algorithm once with what it evolves.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 
 #include "runtime/eval/experiment.hpp"
@@ -14,15 +15,25 @@
 namespace esc::eval {
 namespace {
 
-// A fitness that depends on every gene of the candidate, for ask/tell without a robot.
+// A fitness that depends on every gene of the candidate, a second objective and two
+// descriptors, for ask/tell without a robot.
 std::vector<evo::Outcome> measure(const std::vector<evo::Genome>& candidates) {
   std::vector<evo::Outcome> out;
   for (const evo::Genome& g : candidates) {
     double f = 0.0;
     for (std::size_t i = 0; i < g.size(); ++i) f += std::sin(static_cast<double>(i) + g[i]);
-    out.push_back({{f}, {}});
+    out.push_back({{f, -std::abs(g.front())}, {(std::sin(g.front()) + 1) / 2, (std::cos(g.back()) + 1) / 2}});
   }
   return out;
+}
+
+// Two objectives and two descriptors, declared with their ranges, as every algorithm may
+// need them (NSGA-II's hypervolume, MAP-Elites' cells).
+void declare_objectives(ExperimentSpec& x) {
+  x.objectives = {{"f", false, DeclaredRange{-100, 100}}, {"g", true, DeclaredRange{0, 1}}};
+  x.further = {x.fitness};
+  x.further.front().name = "g";
+  x.descriptors = {{"a", {}, false, Reduction::Mean, {0, 1}}, {"b", {}, false, Reduction::Mean, {0, 1}}};
 }
 
 struct Case {
@@ -37,10 +48,13 @@ std::vector<Case> cases() {
   std::vector<Case> v;
   for (const evo::Algorithm& a : evo::algorithms()) {
     if (a.trees) {
-      v.push_back({std::string(a.name), testing::gp_experiment(), 1});
+      ExperimentSpec x = testing::gp_experiment();
+      declare_objectives(x);
+      v.push_back({std::string(a.name), std::move(x), 1});
       continue;
     }
     ExperimentSpec x = testing::small_experiment();
+    declare_objectives(x);
     x.networks = std::string(a.name);
     if (a.defaults != nullptr) x.algorithm_settings[x.networks] = a.defaults();
     v.push_back({std::string(a.name), std::move(x), 0});
@@ -51,7 +65,10 @@ std::vector<Case> cases() {
 std::unique_ptr<evo::Optimizer> make(const ExperimentSpec& spec, const control::ControllerSpec& c,
                                      const evo::Genome* start = nullptr) {
   const Evolution e = spec.evolution_of(c);
-  return e.algorithm->make(e.settings, {c.is_tree() ? 0 : c.genome_size(), c.primitives.get(), 77, start, {}, {}});
+  evo::Problem p = spec.problem_of(c);
+  p.seed = 77;
+  p.start = start;
+  return e.algorithm->make(e.settings, p);
 }
 
 TEST(Optimizer, EveryAlgorithmLoadedAfterAnyGenerationContinuesAsTheUnstoppedOne) {

@@ -46,9 +46,9 @@ const std::vector<AlgorithmOption>& cmaes_options() {
   return table;
 }
 
-std::string cmaes_problem(const std::any& settings, std::size_t genome_size) {
+std::string cmaes_problem(const CmaesSettings& settings, std::size_t genome_size) {
   try {
-    (void)Cmaes(std::any_cast<const S&>(settings), genome_size);
+    (void)Cmaes(settings, genome_size);
   } catch (const std::invalid_argument& e) {
     std::string m = e.what();
     constexpr std::string_view prefix = "CMA-ES: ";

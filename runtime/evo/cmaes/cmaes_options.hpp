@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "runtime/evo/algorithm_options.hpp"
+#include "runtime/evo/cmaes/cmaes.hpp"
 
 namespace esc::evo {
 
@@ -14,6 +15,6 @@ namespace esc::evo {
 
 // Why CMA-ES cannot run with `settings` (a CmaesSettings) on a network of `genome_size`
 // weights (mu above lambda / 2, ...), or "".
-[[nodiscard]] std::string cmaes_problem(const std::any& settings, std::size_t genome_size);
+[[nodiscard]] std::string cmaes_problem(const CmaesSettings& settings, std::size_t genome_size);
 
 }  // namespace esc::evo

@@ -119,7 +119,16 @@ std::vector<std::vector<double>> Nsga2::ask(Rng& rng) {
   return children_;
 }
 
-void Nsga2::tell(std::span<const std::vector<double>> objectives) {
+void Nsga2::rescore(std::span<const std::vector<double>> parents) {
+  require(parents.size() == parents_.size(), "rescore needs the objectives of " + text(parents_.size()) +
+                                                 " parents, got " + text(parents.size()));
+  for (const auto& row : parents)
+    require(row.size() == objective_count_, "every parent needs " + text(objective_count_) + " objectives, got " +
+                                                text(row.size()));
+  objectives_.assign(parents.begin(), parents.end());
+}
+
+std::vector<std::size_t> Nsga2::tell(std::span<const std::vector<double>> objectives) {
   if (!asked_) throw std::logic_error("NSGA-II: tell without a pending ask");
   require(objectives.size() == children_.size(), "tell needs the objectives of " + text(children_.size()) +
                                                      " candidates (the population), got " + text(objectives.size()));
@@ -151,6 +160,7 @@ void Nsga2::tell(std::span<const std::vector<double>> objectives) {
   asked_ = false;
   objective_count_ = m;
   ++generation_;
+  return kept;
 }
 
 std::vector<std::size_t> Nsga2::first_front() const {

@@ -85,7 +85,13 @@ class Nsga2 {
   // the same number, fixed by the first tell. The first tell makes them the parents; a
   // later one keeps the N best of parents and children. NaN objectives rank last.
   // std::logic_error without a pending ask, std::invalid_argument for another count.
-  void tell(std::span<const std::vector<double>> objectives);
+  // Returns which survived, as indices into parents (as they were) then candidates: what a
+  // caller keeping something per point (novelty's descriptors) keeps in step with.
+  std::vector<std::size_t> tell(std::span<const std::vector<double>> objectives);
+  // Replaces the parents' objectives before the next tell compares them with the candidates:
+  // for a score that changes with time, as novelty does while its archive grows. The
+  // tournaments already drawn are not redrawn. std::invalid_argument for another count.
+  void rescore(std::span<const std::vector<double>> parents);
 
   // The parents after the last tell (empty before the first), their objectives, fronts
   // (0: non-dominated) and crowding distances, aligned.

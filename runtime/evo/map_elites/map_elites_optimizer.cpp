@@ -1,0 +1,131 @@
+#include "runtime/evo/map_elites/map_elites_optimizer.hpp"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <tuple>
+
+#include <fmt/format.h>
+
+namespace esc::evo {
+
+namespace {
+
+double cells_of(const MapElitesRunSettings& s, std::size_t descriptors) {
+  return s.cvt ? static_cast<double>(s.cells) : std::pow(static_cast<double>(s.bins), static_cast<double>(descriptors));
+}
+
+// The experiment's shared CVT, computed once per process (about a second for 2 or 3
+// descriptors at 100,000 samples, far more for many descriptors: not once per run).
+qd::Cvt shared_cvt(std::size_t dims, std::size_t cells, std::size_t samples) {
+  static std::mutex mutex;
+  static std::map<std::tuple<std::size_t, std::size_t, std::size_t>, qd::Cvt> made;
+  const std::lock_guard lock(mutex);
+  const auto key = std::make_tuple(dims, cells, samples);
+  if (const auto it = made.find(key); it != made.end()) return it->second;
+  Rng rng(kCvtStream);
+  qd::CvtSettings cs;
+  cs.samples = samples;
+  return made.emplace(key, qd::Cvt::compute(dims, cells, rng, cs)).first->second;
+}
+
+qd::Archive archive_for(const MapElitesRunSettings& s, const Problem& p) {
+  std::vector<qd::Range> ranges;
+  for (const Bounds& b : p.descriptors) ranges.push_back({b.lower, b.upper});
+  qd::Tessellation cells = s.cvt ? qd::Tessellation(shared_cvt(ranges.size(), static_cast<std::size_t>(s.cells),
+                                                               static_cast<std::size_t>(s.samples)))
+                                 : qd::Tessellation(qd::Grid(std::vector<std::size_t>(
+                                       ranges.size(), static_cast<std::size_t>(s.bins))));
+  return qd::Archive(qd::DescriptorSpace(std::move(ranges)), std::move(cells), p.objectives.front().lower);
+}
+
+qd::MapElitesSettings core_settings(const MapElitesRunSettings& s) {
+  qd::MapElitesSettings c;
+  c.batch = static_cast<std::size_t>(s.batch);
+  c.initial = static_cast<std::size_t>(s.initial);
+  c.sigma_iso = s.sigma_iso;
+  c.sigma_line = s.sigma_line;
+  c.lower = s.lower;
+  c.upper = s.upper;
+  return c;
+}
+
+class MapElitesOptimizer final : public Optimizer {
+ public:
+  MapElitesOptimizer(const MapElitesRunSettings& settings, const Problem& problem)
+      : core_(core_settings(settings), problem.genome_size, archive_for(settings, problem)), seed_(problem.seed) {
+    if (problem.start != nullptr) core_.start(*problem.start);
+  }
+
+  std::vector<Genome> ask(int generation) override {
+    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(generation)});
+    return core_.ask(rng);
+  }
+
+  void tell(std::span<const Outcome> outcomes) override {
+    std::vector<double> fitness(outcomes.size());
+    std::vector<std::vector<double>> descriptors(outcomes.size());
+    for (std::size_t i = 0; i < outcomes.size(); ++i) {
+      fitness[i] = outcomes[i].objectives.front();
+      descriptors[i] = outcomes[i].descriptors;
+    }
+    core_.tell(fitness, descriptors);
+    (void)core_.take_changes();
+  }
+
+  std::vector<Metric> metrics() const override {
+    std::vector<Metric> m{{"qd_score", core_.qd_score()}, {"coverage", core_.coverage()}};
+    if (const auto best = core_.best()) m.push_back({"archive_best", *best});
+    return m;
+  }
+
+  StateBytes save() const override { return core_.save(); }
+  void load(std::span<const std::uint8_t> state) override { core_.load(state); }
+
+ private:
+  qd::MapElites core_;
+  std::uint64_t seed_;
+};
+
+}  // namespace
+
+std::string map_elites_problem(const MapElitesRunSettings& s, const Problem& p) {
+  const std::string what = s.cvt ? "CVT-MAP-Elites" : "MAP-Elites";
+  if (p.primitives != nullptr) return what + " evolves a network's weights here, not trees";
+  if (p.descriptors.empty())
+    return what + " places each controller by its behavior descriptors: declare some (`descriptor NAME: EXPR in "
+                  "[lo, hi]`)";
+  if (!s.cvt && p.descriptors.size() > 3)
+    return fmt::format("a grid has 1 to 3 descriptors, the experiment declares {}: use cvt_map_elites",
+                       p.descriptors.size());
+  if (p.objectives.empty() || !std::isfinite(p.objectives.front().lower))
+    return what + "'s QD-score counts fitness above its declared lower bound: declare the fitness's range "
+                  "(`fitness F in [lo, hi]`)";
+  if (cells_of(s, p.descriptors.size()) > static_cast<double>(qd::kMaxGridCells))
+    return fmt::format("{} cells are more than an archive may hold ({})", cells_of(s, p.descriptors.size()),
+                       qd::kMaxGridCells);
+  if (s.cvt && s.samples < s.cells)
+    return fmt::format("the CVT needs at least as many samples ({}) as cells ({})", s.samples, s.cells);
+  if (!(s.lower < s.upper)) return "the bounds are empty";
+  return {};
+}
+
+std::unique_ptr<Optimizer> make_map_elites(const MapElitesRunSettings& settings, const Problem& problem) {
+  if (std::string why = map_elites_problem(settings, problem); !why.empty()) throw std::invalid_argument(why);
+  return std::make_unique<MapElitesOptimizer>(settings, problem);
+}
+
+std::size_t map_elites_population(const MapElitesRunSettings& settings, const Problem& /*problem*/) {
+  return static_cast<std::size_t>(settings.initial);
+}
+
+double map_elites_run_memory_bytes(const MapElitesRunSettings& settings, const Problem& problem) {
+  const double cells = cells_of(settings, problem.descriptors.size());
+  // Refused by map_elites_problem anyway; the estimate must not wrap around.
+  if (cells > static_cast<double>(qd::kMaxGridCells)) return cells * static_cast<double>(problem.genome_size) * 8.0;
+  return qd::map_elites_memory_bytes(core_settings(settings), problem.genome_size, static_cast<std::size_t>(cells),
+                                     problem.descriptors.size());
+}
+
+}  // namespace esc::evo

@@ -1,0 +1,47 @@
+#pragma once
+// MAP-Elites (map_elites.hpp) as an Optimizer of a network's weights, registered twice:
+// `map_elites` over a grid of `bins` cells per descriptor (1 to 3 descriptors), and
+// `cvt_map_elites` over `cells` centroids of a CVT of the descriptor space (any number of
+// descriptors). The fitness is the Outcome's first objective, the cell its descriptors
+// within their declared ranges; the QD-score counts each elite's fitness above the fitness's
+// declared lower bound, which both therefore need (`fitness F in [lo, hi]`).
+//
+// The CVT's centroids are drawn from a stream of their own, Rng(kCvtStream), not from the
+// run's seed: every run of an experiment shares one tessellation, so that archives of
+// different runs compare cell by cell. They are computed once per process for each (number
+// of descriptors, cells, samples) and stored in every run's state.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "runtime/evo/map_elites/map_elites.hpp"
+#include "runtime/evo/optimizer.hpp"
+
+namespace esc::evo {
+
+inline constexpr std::uint64_t kCvtStream = 2000;   // apart from rng.hpp's Streams
+
+// What scripts set (map_elites_options.hpp); `cvt` is fixed by the algorithm's name.
+struct MapElitesRunSettings {
+  bool cvt = false;
+  int bins = 10;           // grid: cells per descriptor
+  int cells = 1000;        // CVT: centroids
+  int samples = 100'000;   // CVT: uniform samples its k-means runs on
+  int batch = 100;
+  int initial = 100;
+  double sigma_iso = 0.01;
+  double sigma_line = 0.2;
+  double lower = -1.0;
+  double upper = 1.0;
+};
+
+[[nodiscard]] std::unique_ptr<Optimizer> make_map_elites(const MapElitesRunSettings& settings, const Problem& problem);
+// Candidates of the first generation: `initial`.
+[[nodiscard]] std::size_t map_elites_population(const MapElitesRunSettings& settings, const Problem& problem);
+// The archive full, and a generation's candidates (qd::map_elites_memory_bytes).
+[[nodiscard]] double map_elites_run_memory_bytes(const MapElitesRunSettings& settings, const Problem& problem);
+// Why the settings cannot run on `problem` (no declared fitness range, no descriptors, more
+// than 3 for a grid, too many cells, ...), or "".
+[[nodiscard]] std::string map_elites_problem(const MapElitesRunSettings& settings, const Problem& problem);
+
+}  // namespace esc::evo

@@ -1,0 +1,173 @@
+#include "runtime/evo/novelty/novelty_optimizer.hpp"
+
+#include <stdexcept>
+
+namespace esc::evo {
+
+Nsga2Settings variation_of(const NoveltyRunSettings& s) {
+  return {s.population, s.crossover, s.eta_crossover, s.eta_mutation, s.mutation, s.lower, s.upper};
+}
+
+namespace {
+
+qd::NoveltySettings archive_settings(const NoveltyRunSettings& s) {
+  qd::NoveltySettings a;
+  a.k = static_cast<std::size_t>(s.k);
+  a.mode = s.random_archive ? qd::NoveltyMode::Random : qd::NoveltyMode::Threshold;
+  a.threshold = s.threshold;
+  a.random_probability = s.random_probability;
+  return a;
+}
+
+qd::DescriptorSpace space_of(const Problem& p) {
+  std::vector<qd::Range> ranges;
+  for (const Bounds& b : p.descriptors) ranges.push_back({b.lower, b.upper});
+  return qd::DescriptorSpace(std::move(ranges));
+}
+
+class NoveltyOptimizer final : public Optimizer {
+ public:
+  NoveltyOptimizer(const NoveltyRunSettings& settings, const Problem& problem)
+      : core_(variation_of(settings), problem.genome_size),
+        archive_(archive_settings(settings), space_of(problem)),
+        seed_(problem.seed),
+        with_fitness_(settings.with_fitness) {
+    if (problem.start != nullptr) {
+      core_.start(*problem.start);
+    } else {
+      Rng init(seed_, {static_cast<std::uint64_t>(Stream::Init)});
+      core_.start(init);
+    }
+  }
+
+  std::vector<Genome> ask(int generation) override {
+    generation_ = static_cast<std::uint64_t>(generation);
+    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), generation_});
+    return core_.ask(rng);
+  }
+
+  void tell(std::span<const Outcome> outcomes) override {
+    // Parents first, then the candidates: the order of Nsga2::tell's survivors.
+    std::vector<std::vector<double>> descriptors = parent_descriptors_;
+    std::vector<double> fitness = parent_fitness_;
+    for (const Outcome& o : outcomes) {
+      descriptors.push_back(o.descriptors);
+      fitness.push_back(o.objectives.front());
+    }
+    const std::vector<double> novelty = archive_.scores(descriptors);
+    const std::size_t parents = parent_descriptors_.size();
+    const auto objectives_of = [&](std::size_t i) {
+      return with_fitness_ ? std::vector<double>{-novelty[i], -fitness[i]} : std::vector<double>{-novelty[i]};
+    };
+    std::vector<std::vector<double>> now, candidates;
+    for (std::size_t i = 0; i < parents; ++i) now.push_back(objectives_of(i));
+    for (std::size_t i = parents; i < descriptors.size(); ++i) candidates.push_back(objectives_of(i));
+
+    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), generation_, 1});
+    archive_.update(std::span(descriptors).subspan(parents), std::span(novelty).subspan(parents), rng);
+    core_.rescore(now);
+    const std::vector<std::size_t> kept = core_.tell(candidates);
+    parent_descriptors_.clear();
+    parent_fitness_.clear();
+    best_novelty_ = 0.0;
+    for (const std::size_t i : kept) {
+      parent_descriptors_.push_back(descriptors[i]);
+      parent_fitness_.push_back(fitness[i]);
+      best_novelty_ = std::max(best_novelty_, novelty[i]);
+    }
+  }
+
+  std::vector<Metric> metrics() const override {
+    return {{"archive", static_cast<double>(archive_.size())},
+            {"threshold", archive_.threshold()},
+            {"novelty_max", best_novelty_}};
+  }
+
+  StateBytes save() const override {
+    StateWriter w;
+    w.put(std::string("esc-novelty"));
+    w.put(std::uint32_t{1});
+    const StateBytes core = core_.save(), archive = archive_.save();
+    w.put(std::string(core.begin(), core.end()));
+    w.put(std::string(archive.begin(), archive.end()));
+    w.put(best_novelty_);
+    w.put(static_cast<std::uint64_t>(parent_descriptors_.size()));
+    for (std::size_t i = 0; i < parent_descriptors_.size(); ++i) {
+      w.put(parent_fitness_[i]);
+      w.put(std::span<const double>(parent_descriptors_[i]));
+    }
+    return std::move(w).take();
+  }
+
+  // Everything is read and checked before anything changes: a refused state leaves the
+  // optimizer as it was.
+  void load(std::span<const std::uint8_t> state) override {
+    StateReader r(state);
+    if (r.text() != "esc-novelty" || r.get<std::uint32_t>() != 1)
+      throw std::invalid_argument("novelty search: not a state of novelty search's format 1");
+    const std::string core = r.text(), archive = r.text();
+    const double best = r.get<double>();
+    std::vector<std::vector<double>> descriptors(r.count(2 * sizeof(double)));
+    std::vector<double> fitness(descriptors.size());
+    for (std::size_t i = 0; i < descriptors.size(); ++i) {
+      fitness[i] = r.get<double>();
+      descriptors[i] = r.doubles();
+      if (descriptors[i].size() != archive_.space().size())
+        throw std::invalid_argument("novelty search: a parent's descriptors are of another size");
+    }
+    r.finish();
+    Nsga2 c = core_;
+    c.load(std::span(reinterpret_cast<const std::uint8_t*>(core.data()), core.size()));
+    if (c.population().size() != descriptors.size())
+      throw std::invalid_argument("novelty search: the state's parents and their descriptors differ in number");
+    qd::NoveltyArchive a = archive_;
+    a.load(std::span(reinterpret_cast<const std::uint8_t*>(archive.data()), archive.size()));
+    core_ = std::move(c);
+    archive_ = std::move(a);
+    best_novelty_ = best;
+    parent_descriptors_ = std::move(descriptors);
+    parent_fitness_ = std::move(fitness);
+  }
+
+ private:
+  Nsga2 core_;
+  qd::NoveltyArchive archive_;
+  std::uint64_t seed_;
+  bool with_fitness_;
+  std::uint64_t generation_ = 0;
+  std::vector<std::vector<double>> parent_descriptors_;   // aligned with core_.population()
+  std::vector<double> parent_fitness_;
+  double best_novelty_ = 0.0;
+};
+
+}  // namespace
+
+std::string novelty_problem(const NoveltyRunSettings& settings, const Problem& problem) {
+  if (problem.primitives != nullptr) return "novelty search evolves a network's weights here, not trees";
+  if (problem.descriptors.empty())
+    return "novelty is measured between behavior descriptors: declare some (`descriptor NAME: EXPR in [lo, hi]`)";
+  try {
+    check_nsga2_settings(variation_of(settings));
+    (void)qd::NoveltyArchive(archive_settings(settings), space_of(problem));
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return {};
+}
+
+std::unique_ptr<Optimizer> make_novelty(const NoveltyRunSettings& settings, const Problem& problem) {
+  if (std::string why = novelty_problem(settings, problem); !why.empty()) throw std::invalid_argument(why);
+  return std::make_unique<NoveltyOptimizer>(settings, problem);
+}
+
+std::size_t novelty_population(const NoveltyRunSettings& settings, const Problem& /*problem*/) {
+  return static_cast<std::size_t>(settings.population);
+}
+
+double novelty_memory_bytes(const NoveltyRunSettings& settings, const Problem& problem) {
+  const double points = 100.0 * settings.population;
+  return nsga2_memory_bytes(variation_of(settings), problem.genome_size) +
+         points * static_cast<double>(problem.descriptors.size() + 1) * sizeof(double);
+}
+
+}  // namespace esc::evo

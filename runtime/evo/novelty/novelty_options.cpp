@@ -1,0 +1,52 @@
+#include "runtime/evo/novelty/novelty_options.hpp"
+
+#include "runtime/evo/limits.hpp"
+#include "runtime/evo/novelty/novelty_optimizer.hpp"
+
+namespace esc::evo {
+
+namespace {
+
+using S = NoveltyRunSettings;
+using F = OptionForm;
+using namespace option;
+
+constexpr double kZero = 0.0;
+constexpr double kOne = 1.0;
+constexpr double kMaxEta = 1e6;
+
+}  // namespace
+
+const std::vector<AlgorithmOption>& novelty_options() {
+  static const std::vector<AlgorithmOption> table = {
+      {"objectives", F::Word, "novelty alone, or novelty and the fitness as two NSGA-II objectives",
+       {"novelty", "novelty_fitness"}, &two_words<S, &S::with_fitness>,
+       [](const std::any& s) {
+         return std::string(std::any_cast<const S&>(s).with_fitness ? "novelty_fitness" : "novelty");
+       }},
+      {"k", F::Number, "nearest neighbours a novelty is the mean distance to", {}, &whole<S, &S::k, 1, 100000>,
+       &whole_text<S, &S::k>},
+      {"archive", F::Word, "candidates enter the archive above a threshold (adapted), or at random",
+       {"threshold", "random"}, &two_words<S, &S::random_archive>,
+       [](const std::any& s) { return std::string(std::any_cast<const S&>(s).random_archive ? "random" : "threshold"); }},
+      {"threshold", F::Number, "initial novelty a candidate needs to enter the archive (descriptors scaled to [0, 1])",
+       {}, &real<S, &S::threshold, &kZero, true, &kMaxGeneBound, false>, &real_text<S, &S::threshold>},
+      {"random_probability", F::Number, "probability that a candidate enters the archive (archive random)", {},
+       &real<S, &S::random_probability, &kZero, false, &kOne, false>, &real_text<S, &S::random_probability>},
+      {"population", F::Number, "parents kept and children made per generation (even)", {},
+       &whole<S, &S::population, 2, kNsga2MaxPopulation>, &whole_text<S, &S::population>},
+      {"crossover", F::Number, "probability that a pair of tournament winners is crossed (SBX)", {},
+       &real<S, &S::crossover, &kZero, false, &kOne, false>, &real_text<S, &S::crossover>},
+      {"eta_crossover", F::Number, "SBX's distribution index", {},
+       &real<S, &S::eta_crossover, &kZero, false, &kMaxEta, false>, &real_text<S, &S::eta_crossover>},
+      {"eta_mutation", F::Number, "polynomial mutation's distribution index", {},
+       &real<S, &S::eta_mutation, &kZero, false, &kMaxEta, false>, &real_text<S, &S::eta_mutation>},
+      {"mutation", F::Number, "probability that a gene mutates; 0: 1 / (the network's weights)", {},
+       &real<S, &S::mutation, &kZero, false, &kOne, false>, &real_text<S, &S::mutation>},
+      {"bounds", F::Range, "every weight stays in [LO, HI] (LO < HI, both within +-1e6)", {},
+       &bounds<S, &kMaxGeneBound>, &bounds_text<S>},
+  };
+  return table;
+}
+
+}  // namespace esc::evo

@@ -1,0 +1,94 @@
+#include "runtime/evo/nsga2/nsga2_optimizer.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "runtime/evo/pareto/hypervolume.hpp"
+
+namespace esc::evo {
+
+namespace {
+
+class Nsga2Optimizer final : public Optimizer {
+ public:
+  Nsga2Optimizer(const Nsga2Settings& settings, const Problem& problem)
+      : core_(settings, problem.genome_size),
+        seed_(problem.seed),
+        objectives_(problem.objectives.size()),
+        reference_(hypervolume_reference(problem)) {
+    if (problem.start != nullptr) {
+      core_.start(*problem.start);
+    } else {
+      Rng init(seed_, {static_cast<std::uint64_t>(Stream::Init)});
+      core_.start(init);
+    }
+  }
+
+  std::vector<Genome> ask(int generation) override {
+    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(generation)});
+    return core_.ask(rng);
+  }
+
+  void tell(std::span<const Outcome> outcomes) override {
+    std::vector<std::vector<double>> f(outcomes.size());
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (outcomes[i].objectives.size() != objectives_)
+        throw std::invalid_argument("NSGA-II: told " + std::to_string(outcomes[i].objectives.size()) +
+                                    " objectives for a problem of " + std::to_string(objectives_));
+      for (const double v : outcomes[i].objectives) f[i].push_back(-v);
+    }
+    core_.tell(f);
+  }
+
+  std::vector<Metric> metrics() const override {
+    const std::vector<std::size_t> front = core_.first_front();
+    std::vector<Metric> m{{"front", static_cast<double>(front.size())}};
+    if (!reference_.empty()) {
+      ObjectiveRows points;
+      for (const std::size_t i : front) points.push_back(core_.objectives()[i]);
+      m.push_back({"hypervolume", hypervolume(points, reference_)});
+    }
+    return m;
+  }
+
+  StateBytes save() const override { return core_.save(); }
+  void load(std::span<const std::uint8_t> state) override { core_.load(state); }
+
+ private:
+  Nsga2 core_;
+  std::uint64_t seed_;
+  std::size_t objectives_;
+  std::vector<double> reference_;
+};
+
+}  // namespace
+
+std::vector<double> hypervolume_reference(const Problem& problem) {
+  const std::size_t n = problem.objectives.size();
+  if (n < 2 || n > 3) return {};
+  std::vector<double> r;
+  for (const Bounds& b : problem.objectives) {
+    if (!std::isfinite(b.lower)) return {};
+    r.push_back(-b.lower);
+  }
+  return r;
+}
+
+std::unique_ptr<Optimizer> make_nsga2(const Nsga2Settings& settings, const Problem& problem) {
+  if (problem.primitives != nullptr) throw std::invalid_argument("NSGA-II evolves a network's weights, not trees");
+  return std::make_unique<Nsga2Optimizer>(settings, problem);
+}
+
+std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& /*problem*/) {
+  return static_cast<std::size_t>(settings.population);
+}
+
+double nsga2_run_memory_bytes(const Nsga2Settings& settings, const Problem& problem) {
+  // nsga2_memory_bytes counts 2 objectives for each point of parents and children.
+  const double further = problem.objectives.size() > 2 ? static_cast<double>(problem.objectives.size() - 2) : 0.0;
+  return nsga2_memory_bytes(settings, problem.genome_size) +
+         further * 2.0 * static_cast<double>(settings.population) * sizeof(double);
+}
+
+}  // namespace esc::evo

@@ -1,0 +1,29 @@
+#pragma once
+// NSGA-II (nsga2.hpp) as an Optimizer of a network's weights over every objective of an
+// Outcome: it starts from Rng(seed, Init) (or the start genome, then candidate 0 of
+// generation 0), breeds generation g from Rng(seed, Breed, g) and minimises the negated
+// objectives. Its metrics: the size of the first front and, for 2 or 3 objectives whose
+// ranges are all declared, the front's hypervolume with the declared worst values as the
+// reference point (in the objectives' maximised terms, a minimised one counted negated).
+#include <cstddef>
+#include <memory>
+
+#include "runtime/evo/nsga2/nsga2.hpp"
+#include "runtime/evo/optimizer.hpp"
+
+namespace esc::evo {
+
+// Throws std::invalid_argument on impossible settings (check_nsga2_settings) or a tree.
+[[nodiscard]] std::unique_ptr<Optimizer> make_nsga2(const Nsga2Settings& settings, const Problem& problem);
+
+// Candidates per generation: the population.
+[[nodiscard]] std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& problem);
+
+// What one run's NSGA-II holds at once (nsga2_memory_bytes, with every objective).
+[[nodiscard]] double nsga2_run_memory_bytes(const Nsga2Settings& settings, const Problem& problem);
+
+// The hypervolume's reference point in the core's minimised terms (each objective's declared
+// worst value, negated), or empty when there are not 2 or 3 objectives or one has no range.
+[[nodiscard]] std::vector<double> hypervolume_reference(const Problem& problem);
+
+}  // namespace esc::evo
