@@ -210,17 +210,19 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);
 
   // `in(zone)` and `reached(light)` resolve in this experiment's arena, `using(B)` & co.
-  // among its controllers' choices.
+  // among its controllers' choices; what needs a goal or a sensor is read where the arena and
+  // robot have it.
   if (ok && sink_.errors() == errors && arena_decl != nullptr) {
     const ChoiceNames choices = number_choices(x);
+    const Navigation navigation = navigation_of(x);
     if (fitness_decl != nullptr) {
-      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices);
+      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices, &navigation);
       if (f) x.fitness = f->spec;
       else ok = false;
       if (f) fitness = &*f;
     }
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
-      if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl)) ok = false;
+      if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation)) ok = false;
   }
   if (ok && sink_.errors() == errors && arena != nullptr) {
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;

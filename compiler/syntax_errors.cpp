@@ -37,7 +37,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::OFF: case EscParser::EVOLVED: case EscParser::FROM: case EscParser::TREE:
     case EscParser::FUNCTIONS: case EscParser::TERMINALS: case EscParser::EVALUATE:
     case EscParser::CONDITIONS: case EscParser::CONDITION: case EscParser::SWEEP: case EscParser::AS:
-    case EscParser::BY: case EscParser::EVALUATION: return true;
+    case EscParser::BY: case EscParser::EVALUATION: case EscParser::WALL: case EscParser::GOAL:
+    case EscParser::TO: case EscParser::THICKNESS: return true;
     default: return false;
   }
 }
