@@ -248,7 +248,6 @@ const ArenaNames& ArenaLowering::names(const ast::ArenaDecl& d) {
     it->second.arena = d.name.text;
     for (const ast::Zone& z : d.zones) it->second.zones.push_back(z.name.text);
     for (const ast::Light& l : d.lights) it->second.lights.push_back(l.name.text);
-    it->second.goal = !d.goals.empty();
   }
   return it->second;
 }

@@ -30,7 +30,7 @@ class ArenaLowering {
 
   // Memoised: an arena used by several experiments is reported once. Null when it is wrong.
   const std::optional<LoweredArena>& lower(const ast::ArenaDecl& d);
-  // The names `in(zone)` and `reached(light)` resolve against, and whether it has a goal.
+  // The names `in(zone)` and `reached(light)` resolve against.
   const ArenaNames& names(const ast::ArenaDecl& d);
   // The robot fits the arena and a fixed start keeps it clear of walls and obstacles;
   // reported at the start, or at `use` (where the experiment names the arena or robot).

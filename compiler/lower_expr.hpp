@@ -18,7 +18,6 @@ namespace esc::compiler {
 struct ArenaNames {
   std::string arena;                 // the arena's name, for messages
   std::vector<std::string> zones, lights;
-  bool goal = false;                 // it declares a `goal` (`goal_distance`, `radar[i]`)
 };
 
 // The actions and behaviors of an experiment's compared controllers, as `using(B)`,
