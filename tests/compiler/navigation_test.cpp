@@ -233,6 +233,20 @@ TEST(Navigation, FingerprintsNumberTheAggregatesAsBefore) {
   EXPECT_NE(eval::fingerprint(compiled(maze_with("goal at (90cm, 50cm)", "goal at (90cm, 40cm)"))), maze);
 }
 
+TEST(Navigation, GpTerminalsReadTheSensorsTheExperimentHas) {
+  const std::string gp = "primitives p { functions + - < if  terminals range[0..5], radar[0..3], goal_distance, x }\n"
+                         "controller T = tree(wheels, primitives p)\n"
+                         "experiment g { arena maze  robot navigator  fitness near  evolve gp(population 10)  "
+                         "compare T }\n";
+  const auto r = compile_source(std::string(kMaze) + gp, "maze.esc", options());
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const std::string out = refused(maze_with("radars 4", "radars 3") + gp);
+  EXPECT_NE(out.find("maze.esc:18:40: error: `radar[3]` reads goal radar 3, but the robot of experiment `g` has 3"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("help: primitive set `p` holds it as a terminal"), std::string::npos) << out;
+}
+
 TEST(Navigation, TheExampleMazeCompilesCleanly) {
   const auto r = compile_file(test::source_dir() / "examples/maze.esc", options());
   ASSERT_TRUE(r.ok()) << rendered(r);

@@ -65,6 +65,40 @@ TEST(SimNavigation, RaysMeetSegmentWallsBoxesCylindersAndTheArenaWalls) {
   EXPECT_NEAR(cast(StaticGeometry2D(c), {0.45, 0.1}, {0, 1}), 0.4 - std::sqrt(0.0075), 1e-12);
 }
 
+// The IR sensors and the light sensors' occlusion see a segment wall as the block of its
+// rectangle.
+TEST(SimNavigation, IrAndLightSeeASegmentWallAsItsRectangle) {
+  ArenaSpec walled = test::empty_arena(1.0, 1.0);
+  walled.walls.push_back({{0.3, 0.2}, {0.7, 0.6}, 0.02});
+  ArenaSpec blocked = test::empty_arena(1.0, 1.0);
+  blocked.boxes.push_back(wall_box(walled.walls[0]));
+  for (ArenaSpec* a : {&walled, &blocked}) a->lights.push_back({{0.65, 0.2}, 0.0, 1.0, -1});
+  World w(walled, KheperaParams{});
+  World b(blocked, KheperaParams{});
+  Rng rng(1);
+  // Facing the wall, its face 2.25 cm from the body, the light behind it (ahead, to the right).
+  const Pose pose{0.5 - 0.06 / std::sqrt(2.0), 0.4 + 0.06 / std::sqrt(2.0), -45 * kDeg};
+  w.reset(pose);
+  b.reset(pose);
+  std::array<double, kIrSensors> ir_w{}, ir_b{};
+  w.read_ir(ir_w, rng);
+  b.read_ir(ir_b, rng);
+  EXPECT_GT(ir_w[2], 0.1);
+  EXPECT_EQ(ir_w, ir_b);
+  std::array<double, kLightSensors> light_w{}, light_b{};
+  w.read_light(light_w, rng);
+  b.read_light(light_b, rng);
+  EXPECT_EQ(light_w, light_b);
+  // Without the wall, the light ahead-right is seen.
+  ArenaSpec lit = test::empty_arena(1.0, 1.0);
+  lit.lights = walled.lights;
+  World seen(lit, KheperaParams{});
+  seen.reset(pose);
+  std::array<double, kLightSensors> light_open{};
+  seen.read_light(light_open, rng);
+  EXPECT_GT(light_open[3], light_w[3] + 0.1);
+}
+
 TEST(SimNavigation, SegmentWallsCountInClearances) {
   ArenaSpec a = test::empty_arena(1.0, 1.0);
   a.walls.push_back({{0.2, 0.6}, {0.8, 0.6}, 0.01});
