@@ -31,6 +31,9 @@ void resolve_arena_settings(eval::ExperimentSpec& spec) {
   r["arena.size"] = fmt::format("{} m x {} m", number_text(a.width_m), number_text(a.height_m));
   r["arena.cylinders"] = std::to_string(a.cylinders.size());
   r["arena.blocks"] = std::to_string(a.boxes.size());
+  r["arena.walls"] = std::to_string(a.walls.size());
+  r["arena.goal"] =
+      a.goal ? fmt::format("({} m, {} m)", number_text(a.goal->x), number_text(a.goal->y)) : std::string("none");
   r["arena.lights"] = std::to_string(a.lights.size());
   r["arena.zones"] = std::to_string(a.zones.size());
   for (const ArenaSetting& s : arena_settings())

@@ -42,9 +42,10 @@ using ExprPtr = std::unique_ptr<Expr>;
 // A setting's value as written, in a script or after `esc run --set KEY=`: `50ms`, `3`, `on`,
 // a word (`comma`), or a range `[-1, 1]`.
 struct Value {
-  enum class Kind { Quantity, Bool, Word, Range } kind = Kind::Quantity;
+  enum class Kind { Quantity, Bool, Word, Range, List } kind = Kind::Quantity;
   Quantity q;                // Quantity; Range: the lower bound
   Quantity hi;               // Range: the upper bound
+  std::vector<Quantity> list;   // List (`[90deg, 0deg, -90deg]`, also `[]`)
   bool flag = false;         // Bool (`on`, `true`)
   std::string text;          // as written (Word: the word)
   SourceRange where;
@@ -74,6 +75,15 @@ struct Cylinder {
 struct Block {
   Quantity x, y, w, h;
   std::optional<Quantity> angle;
+  SourceRange where;
+};
+struct Wall {                       // `wall from (X1, Y1) to (X2, Y2) [thickness T]`
+  Quantity x1, y1, x2, y2;
+  std::optional<Quantity> thickness;
+  SourceRange where;
+};
+struct Goal {                       // `goal at (X, Y)`
+  Quantity x, y;
   SourceRange where;
 };
 struct Start {
@@ -116,6 +126,8 @@ struct ArenaDecl : DeclHead {
   std::vector<ArenaSize> sizes;     // more than one is an error
   std::vector<Cylinder> cylinders;
   std::vector<Block> blocks;
+  std::vector<Wall> walls;
+  std::vector<Goal> goals;          // more than one is an error
   std::vector<Start> starts;        // more than one is an error
 };
 

@@ -30,6 +30,24 @@ void ArenaLowering::read_obstacles(const ast::ArenaDecl& d, LoweredArena& a) {
     a.spec.boxes.push_back({{*x, *y}, {*w, *h}, *angle});
     a.blocks.push_back(&b);
   }
+  for (const ast::Wall& w : d.walls) {
+    const auto x1 = to_si(w.x1, Dim::Length, sink_), y1 = to_si(w.y1, Dim::Length, sink_),
+               x2 = to_si(w.x2, Dim::Length, sink_), y2 = to_si(w.y2, Dim::Length, sink_);
+    std::optional<double> thickness = sim::kDefaultWallThickness_m;
+    if (w.thickness) thickness = to_si(*w.thickness, Dim::Length, sink_);
+    if (!x1 || !y1 || !x2 || !y2 || !thickness) continue;
+    a.spec.walls.push_back({{*x1, *y1}, {*x2, *y2}, *thickness});
+    a.walls.push_back(&w);
+  }
+}
+
+void ArenaLowering::read_goal(const ast::ArenaDecl& d, LoweredArena& a) {
+  for (std::size_t i = 1; i < d.goals.size(); ++i)
+    sink_.error(d.goals[i].where, "the arena's goal is already given")
+        .notes.emplace_back(d.goals[0].where, "first given here");
+  if (d.goals.empty()) return;
+  const auto x = to_si(d.goals[0].x, Dim::Length, sink_), y = to_si(d.goals[0].y, Dim::Length, sink_);
+  if (x && y) a.spec.goal = sim::Vec2{*x, *y};
 }
 
 void ArenaLowering::read_zones(const ast::ArenaDecl& d, LoweredArena& a,
@@ -151,6 +169,7 @@ const std::optional<LoweredArena>& ArenaLowering::lower(const ast::ArenaDecl& d)
     }
   }
   read_obstacles(d, a);
+  read_goal(d, a);
   for (std::size_t i = 1; i < d.starts.size(); ++i)
     sink_.error(d.starts[i].where, "the arena's start is already given")
         .notes.emplace_back(d.starts[0].where, "first given here");
@@ -191,12 +210,20 @@ SourceRange ArenaLowering::where(const ast::ArenaDecl& d, const LoweredArena& a,
   switch (p.rule) {
     case sim::Rule::ArenaWidth: return d.sizes[0].w.where;
     case sim::Rule::ArenaHeight: return d.sizes[0].h.where;
-    case sim::Rule::ObstacleCount:   // counted blocks first, then cylinders
-      return i < a.blocks.size() ? a.blocks[i]->where : a.cylinders[i - a.blocks.size()]->where;
+    case sim::Rule::ObstacleCount:   // counted blocks first, then cylinders, then walls
+      if (i < a.blocks.size()) return a.blocks[i]->where;
+      if (i - a.blocks.size() < a.cylinders.size()) return a.cylinders[i - a.blocks.size()]->where;
+      return a.walls[i - a.blocks.size() - a.cylinders.size()]->where;
     case sim::Rule::BlockSize:
     case sim::Rule::BlockInside: return a.blocks[i]->where;
     case sim::Rule::CylinderRadius: return a.cylinders[i]->radius.where;
     case sim::Rule::CylinderInside: return a.cylinders[i]->where;
+    case sim::Rule::WallThickness:
+      if (a.walls[i]->thickness) return a.walls[i]->thickness->where;
+      return a.walls[i]->where;
+    case sim::Rule::WallLength:
+    case sim::Rule::WallInside: return a.walls[i]->where;
+    case sim::Rule::GoalInside: return d.goals[0].where;
     case sim::Rule::ZoneRadius: return a.zones[i]->radius.where;
     case sim::Rule::ZoneCount:
     case sim::Rule::ZoneSize:

@@ -19,6 +19,7 @@ struct LoweredArena {
   sim::ArenaSpec spec;
   std::vector<const ast::Block*> blocks;
   std::vector<const ast::Cylinder*> cylinders;
+  std::vector<const ast::Wall*> walls;
   std::vector<const ast::Zone*> zones;
   std::vector<const ast::Light*> lights;
 };
@@ -40,6 +41,7 @@ class ArenaLowering {
   // Where in `d` the part a problem is about was written.
   static SourceRange where(const ast::ArenaDecl& d, const LoweredArena& a, const sim::Problem& p);
   void read_obstacles(const ast::ArenaDecl& d, LoweredArena& a);
+  void read_goal(const ast::ArenaDecl& d, LoweredArena& a);
   void read_zones(const ast::ArenaDecl& d, LoweredArena& a, std::map<std::string, std::size_t>& zone_index);
   void read_lights(const ast::ArenaDecl& d, LoweredArena& a, const std::map<std::string, std::size_t>& zone_index);
 

@@ -49,8 +49,10 @@ const std::optional<EvolvedRef>& BehaviorLowering::evolved(const ast::BehaviorDe
 }
 
 const std::optional<control::Behavior>& BehaviorLowering::lower(const ast::BehaviorDecl& d,
-                                                                const ast::ArenaDecl* arena) {
-  const auto key = std::pair{&d, arena};
+                                                                const ast::ArenaDecl* arena,
+                                                                const Navigation* navigation) {
+  const Key key{&d, arena, navigation != nullptr ? navigation->rangefinders : -1,
+                navigation != nullptr ? navigation->radars : -1};
   if (auto it = behaviors_.find(key); it != behaviors_.end()) return it->second;
   if (arena != nullptr && !lower(d)) return behaviors_[key];   // reported without the arena
   auto& slot = behaviors_[key];
@@ -64,6 +66,7 @@ const std::optional<control::Behavior>& BehaviorLowering::lower(const ast::Behav
   b.name = d.name.text;
   ExprScope scope;
   if (arena != nullptr) scope.arena = &arenas_.names(*arena);
+  scope.navigation = navigation;
   for (const ast::Name& p : d.params) {
     if (std::find(scope.params.begin(), scope.params.end(), p.text) != scope.params.end()) {
       if (arena == nullptr) sink_.error(p.where, fmt::format("parameter `{}` is listed twice", p.text));

@@ -5,10 +5,11 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <utility>
+#include <tuple>
 
 #include "compiler/ast.hpp"
 #include "compiler/lower_arena.hpp"
+#include "compiler/sensor_uses.hpp"
 #include "compiler/resolver.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/control/controller_spec.hpp"
@@ -29,9 +30,12 @@ class BehaviorLowering {
  public:
   BehaviorLowering(Sink& sink, Resolver& names, ArenaLowering& arenas) : sink_(sink), names_(names), arenas_(arenas) {}
 
-  // With an arena, `in(zone)` / `reached(light)` resolve in it (memoised per pair; reported
-  // once, without the arena, for what does not depend on it). Null for an evolved behavior.
-  const std::optional<control::Behavior>& lower(const ast::BehaviorDecl& d, const ast::ArenaDecl* arena = nullptr);
+  // With an arena, `in(zone)` / `reached(light)` resolve in it, and with `navigation` (the
+  // arena's goal and the robot's sensors), `goal_distance`, `range[i]` and `radar[i]` are
+  // checked (memoised per behavior, arena and sensor counts; reported once, without the arena,
+  // for what does not depend on it). Null for an evolved behavior.
+  const std::optional<control::Behavior>& lower(const ast::BehaviorDecl& d, const ast::ArenaDecl* arena = nullptr,
+                                                const Navigation* navigation = nullptr);
   // An evolved behavior's experiment and controller (reported once); null when wrong or
   // when `d` is hand-written.
   const std::optional<EvolvedRef>& evolved(const ast::BehaviorDecl& d);
@@ -40,7 +44,9 @@ class BehaviorLowering {
   Sink& sink_;
   Resolver& names_;
   ArenaLowering& arenas_;
-  std::map<std::pair<const ast::BehaviorDecl*, const ast::ArenaDecl*>, std::optional<control::Behavior>> behaviors_;
+  // (behavior, arena, rangefinders, radars); -1 counts without navigation.
+  using Key = std::tuple<const ast::BehaviorDecl*, const ast::ArenaDecl*, int, int>;
+  std::map<Key, std::optional<control::Behavior>> behaviors_;
   std::map<const ast::BehaviorDecl*, std::optional<EvolvedRef>> evolved_;
 };
 

@@ -8,6 +8,7 @@
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
+#include "runtime/evo/gp/primitive_set.hpp"
 #include "runtime/expr/observables.hpp"
 
 namespace esc::compiler {
@@ -64,6 +65,8 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   used.clear();
 
   const std::vector<std::string> observables = expr::observable_names();
+  auto& spans = inputs_[&d];
+  spans.clear();
   for (const ast::Input& in : d.inputs) {
     const auto o = expr::find_observable(in.name.text);
     if (!o) {
@@ -73,6 +76,7 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
     }
     if (!in.lo) {
       for (expr::Slot i = 0; i < o->count; ++i) c.mlp.inputs.push_back(o->first + i);
+      spans.push_back({&in, o->first, o->count});
       continue;
     }
     if (!o->indexed) {
@@ -89,6 +93,7 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
       continue;
     }
     for (long long i = *lo; i <= *hi; ++i) c.mlp.inputs.push_back(o->first + static_cast<expr::Slot>(i));
+    spans.push_back({&in, o->first + static_cast<expr::Slot>(*lo), static_cast<expr::Slot>(*hi - *lo + 1)});
   }
 
   bool has_wheels = false;
@@ -238,15 +243,52 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   return slot;
 }
 
-bool ControllerLowering::bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena) {
-  const auto it = used_.find(&d);
-  if (it == used_.end()) return true;
-  const auto& decls = it->second;
+bool ControllerLowering::check_sensors(const control::ControllerSpec& c, const ast::ControllerDecl& d,
+                                       const Navigation& navigation) {
   bool ok = true;
+  const auto report = [&](const SourceRange& where, RuleMessage m, std::string help) {
+    Diagnostic& diag = sink_.error(where, std::move(m.message));
+    diag.help = std::move(m.help);
+    diag.help.push_back(std::move(help));
+    ok = false;
+  };
+  // The first slot of `slots` that has no sensor, reported at `where`.
+  const auto check = [&](const auto& slots, const SourceRange& where, const std::string& help) {
+    for (const expr::Slot s : slots)
+      if (auto m = unavailable(s, navigation)) return report(where, std::move(*m), help);
+  };
+  for (const InputSlots& in : inputs_[&d]) {
+    std::vector<expr::Slot> slots;
+    for (expr::Slot i = 0; i < in.count; ++i) slots.push_back(in.first + i);
+    check(slots, in.input->where, fmt::format("controller `{}` reads it as a network input", d.name.text));
+  }
+  if (c.primitives) {
+    std::vector<expr::Slot> terminals;
+    for (const evo::gp::Primitive& p : c.primitives->primitives())
+      if (p.kind == evo::gp::Kind::Observable) terminals.push_back(p.slot);
+    check(terminals, d.primitives.where, fmt::format("primitive set `{}` holds it as a terminal", d.primitives.text));
+  }
+  const auto& listed = supervised(d);
+  for (std::size_t j = 0; j < c.behaviors.size() && j < listed.size(); ++j)
+    if (const auto* fixed = std::get_if<control::FixedController>(&c.behaviors[j].what); fixed && fixed->spec)
+      check(slots_read(*fixed->spec), listed[j].ref->where,
+            fmt::format("the evolved controller `{}` reads it", listed[j].decl->name.text));
+  return ok;
+}
+
+bool ControllerLowering::bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena,
+                              const Navigation& navigation) {
+  const SensorKey key{&d, navigation.goal, navigation.rangefinders, navigation.radars};
+  auto [checked, fresh] = sensors_ok_.try_emplace(key, true);
+  if (fresh) checked->second = check_sensors(c, d, navigation);
+  bool ok = checked->second;
+  const auto it = used_.find(&d);
+  if (it == used_.end()) return ok;
+  const auto& decls = it->second;
   std::size_t k = 0;
   auto rebind = [&](control::Behavior& b) {
     if (k >= decls.size()) return;
-    const auto& bound = behaviors_.lower(*decls[k++], &arena);
+    const auto& bound = behaviors_.lower(*decls[k++], &arena, &navigation);
     if (bound) b = *bound;
     else ok = false;
   };

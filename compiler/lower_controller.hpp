@@ -5,12 +5,14 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <tuple>
 #include <vector>
 
 #include "compiler/ast.hpp"
 #include "compiler/lower_behavior.hpp"
 #include "compiler/lower_primitives.hpp"
 #include "compiler/resolver.hpp"
+#include "compiler/sensor_uses.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/control/controller_spec.hpp"
 
@@ -32,9 +34,11 @@ class ControllerLowering {
   // A supervisor's behavior list with libraries expanded into their members, in order;
   // entries that fail to resolve are reported (once) and left out.
   const std::vector<Supervised>& supervised(const ast::ControllerDecl& d);
-  // Lowers the controller's behaviors (actions, supervised behaviors) again in `arena`;
-  // false when one fails (reported).
-  bool bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena);
+  // Lowers the controller's behaviors (actions, supervised behaviors) again in `arena`, and
+  // checks that what it reads (inputs, behaviors, terminals, frozen controllers) has its
+  // sensor under `navigation`; false when one fails (reported).
+  bool bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena,
+            const Navigation& navigation);
 
  private:
   Sink& sink_;
@@ -45,6 +49,17 @@ class ControllerLowering {
   // The behavior declarations a controller uses, in the order of its actions / behaviors.
   std::map<const ast::ControllerDecl*, std::vector<const ast::BehaviorDecl*>> used_;
   std::map<const ast::ControllerDecl*, std::vector<Supervised>> supervised_;
+  // The slots each network input reads, [first, first + count), for bind()'s sensor check.
+  struct InputSlots {
+    const ast::Input* input;
+    expr::Slot first, count;
+  };
+  std::map<const ast::ControllerDecl*, std::vector<InputSlots>> inputs_;
+  // Whether a controller's inputs, terminals and frozen controllers have their sensors, per
+  // (controller, goal, rangefinders, radars): reported once, not once per experiment.
+  using SensorKey = std::tuple<const ast::ControllerDecl*, bool, int, int>;
+  std::map<SensorKey, bool> sensors_ok_;
+  bool check_sensors(const control::ControllerSpec& c, const ast::ControllerDecl& d, const Navigation& navigation);
   std::set<const ast::ControllerDecl*> supervised_failed_;
 };
 

@@ -222,19 +222,22 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   require(K::Compare, "controllers to compare", "compare <controller>, <controller>");
 
   // `in(zone)` and `reached(light)` resolve in this experiment's arena, `using(B)` & co.
-  // among its controllers' choices.
+  // among its controllers' choices; what needs a goal or a sensor is read where the arena and
+  // robot have it.
   if (ok && sink_.errors() == errors && arena_decl != nullptr) {
     const ChoiceNames choices = number_choices(x);
+    const Navigation navigation = navigation_of(x);
     if (fitness_decl != nullptr) {
-      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices);
+      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices, &navigation);
       if (f) x.fitness = f->spec;
       else ok = false;
       if (f) fitness = &*f;
     }
-    if (!lower_objectives(objective_items, d, *arena_decl, choices, names_, parts_.fitnesses, parts_.arenas, sink_, x))
+    if (!lower_objectives(objective_items, d, *arena_decl, choices, navigation, names_, parts_.fitnesses, parts_.arenas,
+                          sink_, x))
       ok = false;
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
-      if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl)) ok = false;
+      if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation)) ok = false;
   }
   // After the objectives and descriptors: an algorithm's settings are checked against them.
   if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);

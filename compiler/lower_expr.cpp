@@ -157,7 +157,7 @@ class Lowerer {
             .help.push_back(fmt::format("write `{}[0]` .. `{}[{}]`", e.text, e.text, o->count - 1));
         return failed();
       }
-      return load(o->first);
+      return observable(o->first, e.where);
     }
     if (e.text == "true" || e.text == "false") return constant(e.text == "true" ? 1.0 : 0.0);
     if (e.text == kStepsAggregate && scope_.use == ExprScope::Use::End) return load(expr::aggregate::steps);
@@ -264,7 +264,17 @@ class Lowerer {
                                                 o->count - 1));
       return failed();
     }
-    return load(o->first + static_cast<expr::Slot>(v));
+    return observable(o->first + static_cast<expr::Slot>(v), e.where);
+  }
+
+  // An observable's slot, unless the experiment lacks its sensor.
+  Node observable(expr::Slot s, const SourceRange& where) {
+    if (scope_.navigation != nullptr)
+      if (auto m = unavailable(s, *scope_.navigation)) {
+        sink_.error(where, std::move(m->message)).help = std::move(m->help);
+        return failed();
+      }
+    return load(s);
   }
 
   Node parametrised(const ast::Expr& e, const expr::ParametrisedObservable& o) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "compiler/ast.hpp"
+#include "compiler/sensor_uses.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/expr/program.hpp"
 
@@ -42,6 +43,9 @@ struct ExprScope {
   // The choices `using(B)` & co. resolve among. Null outside an experiment: then their
   // argument is only checked to be a name.
   const ChoiceNames* choices = nullptr;
+  // The goal and the sensors `goal_distance`, `range[i]` and `radar[i]` need. Null outside
+  // an experiment: then they are not checked.
+  const Navigation* navigation = nullptr;
 };
 
 // Reports errors to `sink`; nullopt when the expression has one.

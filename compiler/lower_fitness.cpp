@@ -24,7 +24,8 @@ void end_term(const std::vector<ast::FitnessTerm>& terms, std::string_view word,
 
 const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena,
                                                             const ast::ExperimentDecl* experiment,
-                                                            const ChoiceNames* choices) {
+                                                            const ChoiceNames* choices,
+                                                            const Navigation* navigation) {
   const Key key{&d, arena, experiment};
   if (auto it = fitnesses_.find(key); it != fitnesses_.end()) return it->second;
   if ((arena != nullptr || experiment != nullptr) && !lower(d)) return fitnesses_[key];   // reported without them
@@ -37,6 +38,7 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
   scope.use = ExprScope::Use::Step;
   if (arena != nullptr) scope.arena = &arenas_.names(*arena);
   scope.choices = choices;
+  scope.navigation = navigation;
   if (d.steps.empty())
     sink_.error(d.name.where, fmt::format("fitness `{}` has no `step:` term", d.name.text))
         .help.push_back("add `step: forward_speed`, the value added up at every control step");

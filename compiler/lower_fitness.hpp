@@ -28,10 +28,12 @@ class FitnessLowering {
   FitnessLowering(Sink& sink, ArenaLowering& arenas) : sink_(sink), arenas_(arenas) {}
 
   // Memoised per (fitness, arena, experiment); what depends on neither is reported once.
-  // `experiment` names whose compared controllers `choices` are.
+  // `experiment` names whose compared controllers `choices` are, and whose goal and sensors
+  // `navigation` is.
   const std::optional<LoweredFitness>& lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena = nullptr,
                                              const ast::ExperimentDecl* experiment = nullptr,
-                                             const ChoiceNames* choices = nullptr);
+                                             const ChoiceNames* choices = nullptr,
+                                             const Navigation* navigation = nullptr);
 
  private:
   using Key = std::tuple<const ast::FitnessDecl*, const ast::ArenaDecl*, const ast::ExperimentDecl*>;

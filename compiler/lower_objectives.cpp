@@ -50,8 +50,9 @@ const std::vector<std::string>& reduction_names() {
 }
 
 bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& experiment,
-                      const ast::ArenaDecl& arena, const ChoiceNames& choices, Resolver& names,
-                      FitnessLowering& fitnesses, ArenaLowering& arenas, Sink& sink, eval::ExperimentSpec& x) {
+                      const ast::ArenaDecl& arena, const ChoiceNames& choices, const Navigation& navigation,
+                      Resolver& names, FitnessLowering& fitnesses, ArenaLowering& arenas, Sink& sink,
+                      eval::ExperimentSpec& x) {
   const int errors = sink.errors();
   const bool declares = !items.objectives.empty() || (items.fitness != nullptr && items.fitness->range);
   if (declares && items.fitness != nullptr) {
@@ -70,7 +71,7 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
     }
     const auto* decl = names.lookup<ast::FitnessDecl>(ref);
     if (decl == nullptr) continue;
-    const auto& f = fitnesses.lower(*decl, &arena, &experiment, &choices);
+    const auto& f = fitnesses.lower(*decl, &arena, &experiment, &choices, &navigation);
     if (!f) continue;
     if (!f->spec.stop_when.empty()) {
       sink.error(ref.where, fmt::format("objective `{}` has a `stop epoch when` condition", ref.text))
@@ -88,6 +89,7 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
   scope.use = ExprScope::Use::End;
   scope.arena = &arenas.names(arena);
   scope.choices = &choices;
+  scope.navigation = &navigation;
   std::map<std::string, const ast::ExpItem*> described;
   for (const ast::ExpItem* item : items.descriptors) {
     const ast::Name& name = item->refs[0];

@@ -11,6 +11,7 @@
 #include "compiler/lower_expr.hpp"
 #include "compiler/lower_fitness.hpp"
 #include "compiler/resolver.hpp"
+#include "compiler/sensor_uses.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/eval/experiment.hpp"
 
@@ -28,9 +29,11 @@ struct ObjectiveItems {
 
 // Fills x.objectives, x.further and x.descriptors (x.fitness is lowered already); reports
 // every mistake. False when one was found.
+// `navigation` says which sensors the experiment has (a descriptor reading `radar` needs a goal).
 bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& experiment,
-                      const ast::ArenaDecl& arena, const ChoiceNames& choices, Resolver& names,
-                      FitnessLowering& fitnesses, ArenaLowering& arenas, Sink& sink, eval::ExperimentSpec& x);
+                      const ast::ArenaDecl& arena, const ChoiceNames& choices, const Navigation& navigation,
+                      Resolver& names, FitnessLowering& fitnesses, ArenaLowering& arenas, Sink& sink,
+                      eval::ExperimentSpec& x);
 
 // Their resolved settings ("objectives" -> "speed in [0, 1500]; energy minimize in [0, 300]",
 // "descriptors" -> ...), added only when declared so that other experiments resolve as before.

@@ -36,12 +36,10 @@ bool RobotLowering::apply(LoweredRobot& robot, const std::vector<ast::Setting>& 
       ok = false;
       continue;
     }
-    const auto v = read_robot_value(*info, s.value, sink_);
-    if (!v) {
+    if (!apply_robot_value(*info, s.value, robot.params, sink_)) {
       ok = false;
       continue;
     }
-    info->set(robot.params, *v);
     robot.written[info->name] = {s.value.where, ++order_};
   }
   return ok;

@@ -233,12 +233,21 @@ class Builder {
     return v;
   }
 
+  ast::Value list(P::QuantityListContext* c) {
+    ast::Value v;
+    v.kind = ast::Value::Kind::List;
+    v.where = span(c);
+    v.text = source(c);
+    for (P::QuantityContext* q : c->quantity()) v.list.push_back(quantity(q));
+    return v;
+  }
+
   std::vector<ast::Setting> settings(P::SettingsBlockContext* c) {
     std::vector<ast::Setting> out;
     if (c == nullptr) return out;
     for (P::SettingContext* s : c->setting()) {
       if (s == nullptr) continue;
-      out.push_back({name(s->key), value(s->value())});
+      out.push_back({name(s->key), s->list != nullptr ? list(s->list) : value(s->value())});
     }
     return out;
   }
@@ -288,6 +297,27 @@ class Builder {
         if (b->a != nullptr) k.angle = quantity(b->a);
         k.where = span(b);
         a.blocks.push_back(std::move(k));
+      } else if (auto* w = dynamic_cast<P::ArenaWallContext*>(it)) {
+        ast::Wall k;
+        if (w->p1 != nullptr) {
+          k.x1 = quantity(w->p1->x);
+          k.y1 = quantity(w->p1->y);
+        }
+        if (w->p2 != nullptr) {
+          k.x2 = quantity(w->p2->x);
+          k.y2 = quantity(w->p2->y);
+        }
+        if (w->t != nullptr) k.thickness = quantity(w->t);
+        k.where = span(w);
+        a.walls.push_back(std::move(k));
+      } else if (auto* g = dynamic_cast<P::ArenaGoalContext*>(it)) {
+        ast::Goal k;
+        if (auto* p = g->point()) {
+          k.x = quantity(p->x);
+          k.y = quantity(p->y);
+        }
+        k.where = span(g);
+        a.goals.push_back(std::move(k));
       } else if (auto* r = dynamic_cast<P::ArenaStartRandomContext*>(it)) {
         ast::Start st;
         st.random = true;

@@ -1,6 +1,7 @@
 #include "compiler/robot_settings.hpp"
 
 #include <limits>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -78,6 +79,17 @@ const std::vector<RobotSetting>& robot_settings() {
       {"energy_recharge", K::Whole, Dim::None, "control steps from empty to full in a recharge zone",
        [](const sim::KheperaParams& p) { return static_cast<double>(p.energy.recharge_steps); },
        [](sim::KheperaParams& p, double v) { p.energy.recharge_steps = static_cast<int>(v); }},
+      {"rangefinders", K::Angles, Dim::Angle,
+       "rangefinders' angles from the heading (positive = left), in the order `range[i]` reads them",
+       nullptr, nullptr,
+       [](const sim::KheperaParams& p) { return std::span<const double>(p.rangefinders.angles_rad); },
+       [](sim::KheperaParams& p, std::vector<double> v) { p.rangefinders.angles_rad = std::move(v); }},
+      {"rangefinder_range", K::Quantity, Dim::Length, "rangefinders read 1 at and beyond this distance",
+       [](const sim::KheperaParams& p) { return p.rangefinders.range_m; },
+       [](sim::KheperaParams& p, double v) { p.rangefinders.range_m = v; }},
+      {"radars", K::Whole, Dim::None, "pie-slice goal radars around the body (0: none)",
+       [](const sim::KheperaParams& p) { return static_cast<double>(p.radars); },
+       [](sim::KheperaParams& p, double v) { p.radars = static_cast<int>(v); }},
   };
   return table;
 }
@@ -88,7 +100,10 @@ const RobotSetting* find_robot_setting(std::string_view name) {
 
 std::vector<std::string> robot_setting_names() { return row_names(robot_settings(), &RobotSetting::name); }
 
-std::optional<double> read_robot_value(const RobotSetting& s, const ast::Value& v, Sink& sink) {
+namespace {
+
+// One number: SI, a flag 0 or 1.
+std::optional<double> read_number(const RobotSetting& s, const ast::Value& v, Sink& sink) {
   switch (s.kind) {
     case K::Flag:
       if (const auto f = read_flag(v, s.name, sink)) return *f ? 1.0 : 0.0;
@@ -100,11 +115,30 @@ std::optional<double> read_robot_value(const RobotSetting& s, const ast::Value& 
       return std::nullopt;
     }
     case K::Quantity: return read_quantity(v, s.name, s.dim, sink);
+    case K::Angles: break;
   }
   return std::nullopt;
 }
 
+}  // namespace
+
+bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::KheperaParams& p, Sink& sink) {
+  if (s.kind != K::Angles) {
+    const auto n = read_number(s, v, sink);
+    if (n) s.set(p, *n);
+    return n.has_value();
+  }
+  const auto angles = read_list(v, s.name, s.dim, "[90deg, 0deg, -90deg]", sink);
+  if (angles) s.set_angles(p, std::move(*angles));
+  return angles.has_value();
+}
+
 std::string robot_value_text(const RobotSetting& s, const sim::KheperaParams& p) {
+  if (s.kind == K::Angles) {
+    std::vector<std::string> items;
+    for (const double a : s.get_angles(p)) items.push_back(number_text(a) + " rad");
+    return fmt::format("[{}]", fmt::join(items, ", "));
+  }
   const double v = s.get(p);
   if (s.kind == K::Flag) return v != 0.0 ? "on" : "off";
   if (s.kind == K::Whole) return fmt::format("{}", static_cast<long long>(v));

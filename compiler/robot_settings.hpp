@@ -5,6 +5,7 @@
 // the syntax (a whole number, a flag): the ranges are the runtime's rules
 // (runtime/sim/validate.hpp), which the compiler applies to the finished robot.
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,21 +19,27 @@ namespace esc::compiler {
 
 struct RobotSetting {
   std::string_view name;
-  enum class Kind { Flag, Quantity, Whole } kind;
+  // Angles: a list of angles (`[90deg, 0deg, -90deg]`, `[]` for none), read and written by
+  // `get_angles` and `set_angles`; the other kinds are one number, by `get` and `set`.
+  enum class Kind { Flag, Quantity, Whole, Angles } kind;
   Dim dim;
   std::string_view summary;
-  double (*get)(const sim::KheperaParams&);
-  void (*set)(sim::KheperaParams&, double);
+  double (*get)(const sim::KheperaParams&) = nullptr;
+  void (*set)(sim::KheperaParams&, double) = nullptr;
+  std::span<const double> (*get_angles)(const sim::KheperaParams&) = nullptr;
+  void (*set_angles)(sim::KheperaParams&, std::vector<double>) = nullptr;
 };
 
 [[nodiscard]] const std::vector<RobotSetting>& robot_settings();
 [[nodiscard]] const RobotSetting* find_robot_setting(std::string_view name);
 [[nodiscard]] std::vector<std::string> robot_setting_names();
 
-// Reads `v` as setting `s`'s value (SI; a flag is 0 or 1), reporting a mistake at the value.
-[[nodiscard]] std::optional<double> read_robot_value(const RobotSetting& s, const ast::Value& v, Sink& sink);
+// Reads `v` as setting `s`'s value (SI) into `p`, reporting a mistake at the value; false
+// (and `p` unchanged) on a mistake.
+[[nodiscard]] bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::KheperaParams& p, Sink& sink);
 
-// "0.08 m/s", "on", "3": a setting's current value, for resolved settings.
+// "0.08 m/s", "on", "3", "[1.5707963267948966 rad, 0 rad]": a setting's current value, for
+// resolved settings.
 [[nodiscard]] std::string robot_value_text(const RobotSetting& s, const sim::KheperaParams& p);
 
 }  // namespace esc::compiler

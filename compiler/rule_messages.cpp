@@ -74,7 +74,7 @@ RuleMessage arena_message(const sim::Problem& p, const RuleContext& c) {
     case Rule::ArenaWidth: return bound(p, "the arena's width");
     case Rule::ArenaHeight: return bound(p, "the arena's height");
     case Rule::ObstacleCount:
-      return {fmt::format("an arena holds at most {} blocks and cylinders together", sim::kMaxObstacles),
+      return {fmt::format("an arena holds at most {} blocks, cylinders and walls together", sim::kMaxObstacles),
               {std::string(p.info().why)}};
     case Rule::BlockSize: return {"a block's width and height must be greater than 0", {}};
     case Rule::BlockInside:
@@ -84,6 +84,13 @@ RuleMessage arena_message(const sim::Problem& p, const RuleContext& c) {
     case Rule::CylinderInside:
       return {fmt::format("this cylinder is not inside the arena{}{}", arena_text(c), beyond(p)),
               {std::string(kPositions)}};
+    case Rule::WallLength: return {"a wall has a length: its two ends must not be the same point", {}};
+    case Rule::WallThickness: return bound(p, "a wall's thickness");
+    case Rule::WallInside:
+      return {fmt::format("this wall is not inside the arena{}{}", arena_text(c), beyond(p)),
+              {std::string(kPositions) + " to the wall's ends; a wall reaches half its thickness to either side"}};
+    case Rule::GoalInside:
+      return {fmt::format("the goal is outside the arena{}{}", arena_text(c), beyond(p)), {std::string(kPositions)}};
     case Rule::StartInside:
       return {fmt::format("the start position is outside the arena{}{}", arena_text(c), beyond(p)),
               {std::string(kPositions)}};
@@ -142,12 +149,23 @@ RuleMessage placement_message(const sim::Problem& p, const RuleContext& c) {
                           c.arena != nullptr ? at_point(c.arena->boxes.at(static_cast<std::size_t>(p.index)).center_m)
                                              : std::string("?")),
               {}};
+    case Rule::StartClearOfWall: {
+      if (c.arena == nullptr) return {"the robot starting here would overlap a wall", {}};
+      const sim::WallSegment& w = c.arena->walls.at(static_cast<std::size_t>(p.index));
+      return {fmt::format("the robot starting here would overlap the wall from {} to {}", at_point(w.from_m),
+                          at_point(w.to_m)),
+              {}};
+    }
     default: return bound(p, fmt::format("`{}`", p.info().setting));
   }
 }
 
 RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
   switch (p.rule) {
+    case Rule::RangefinderCount:
+      return {fmt::format("a robot has at most {} rangefinders, found {}", shown(p.limit, Dimension::Count),
+                          shown(p.found, Dimension::Count)),
+              {std::string(p.info().why)}};
     case Rule::WheelBaseWithinBody:
       return {fmt::format("the wheel base ({}) is wider than the body ({} across)", shown(p.found, Dimension::Length),
                           shown(p.limit, Dimension::Length)),

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,7 @@
 #include "compiler/names.hpp"
 #include "compiler/robot_settings.hpp"
 #include "compiler/rule_messages.hpp"
+#include "compiler/sensor_uses.hpp"
 #include "compiler/setting_values.hpp"
 #include "compiler/text.hpp"
 #include "runtime/sim/validate.hpp"
@@ -70,6 +72,19 @@ std::optional<std::string_view> in_group(std::string_view key, std::string_view 
 
 // `cmaes.`: the prefix of an algorithm's `--set` keys.
 std::string group_of(const AlgorithmOptions& a) { return std::string(a.name) + "."; }
+
+// What the experiment reads has its goal and sensors: a setting may take one away
+// (`robot.radars=0` under a fitness that reads `radar[0]`). One error says it.
+void check_navigation(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
+  const Navigation n = navigation_of(spec);
+  std::set<expr::Slot> read = slots_read_by_measures(spec);
+  for (const control::ControllerSpec& c : spec.controllers) read.merge(slots_read(c));
+  for (const expr::Slot s : read)
+    if (auto m = unavailable(s, n)) {
+      sink.error(where, std::move(m->message)).help = std::move(m->help);
+      return;
+    }
+}
 
 std::string trimmed(std::string_view t) {
   while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
@@ -143,9 +158,7 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
       unknown(sink, key, "robot setting", *name, kRobotGroup, robot_setting_names(), scope);
       return false;
     }
-    const auto v = read_robot_value(*s, value, sink);
-    if (v) s->set(spec.robot, *v);
-    return v.has_value();
+    return apply_robot_value(*s, value, spec.robot, sink);
   }
   if (const auto name = in_group(k, kArenaGroup)) {
     const ArenaSetting* s = find_arena_setting(*name);
@@ -171,7 +184,10 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   const auto arena = sim::arena_problems(spec.arena);
   report(sink, robot, context, where);
   report(sink, arena, context, where);
-  if (robot.empty() && arena.empty()) report(sink, sim::placement_problems(spec.arena, spec.robot), context, where);
+  if (robot.empty() && arena.empty()) {
+    report(sink, sim::placement_problems(spec.arena, spec.robot), context, where);
+    check_navigation(spec, where, sink);
+  }
   return sink.errors() == errors;
 }
 

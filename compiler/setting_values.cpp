@@ -60,15 +60,25 @@ std::optional<ast::Value> value_from_text(std::string_view text_in, const Source
     return v;
   }
   if (text.size() >= 2 && text.front() == '[' && text.back() == ']') {
-    const std::string_view inner = text.substr(1, text.size() - 2);
-    const std::size_t comma = inner.find(',');
-    if (comma == std::string_view::npos) return std::nullopt;
-    auto lo = quantity_from_text(inner.substr(0, comma), where);
-    auto hi = quantity_from_text(inner.substr(comma + 1), where);
-    if (!lo || !hi) return std::nullopt;
+    std::string_view inner = text.substr(1, text.size() - 2);
+    if (!trimmed(inner).empty()) {
+      for (;;) {
+        const std::size_t comma = inner.find(',');
+        auto q = quantity_from_text(inner.substr(0, comma), where);
+        if (!q) return std::nullopt;
+        v.list.push_back(std::move(*q));
+        if (comma == std::string_view::npos) break;
+        inner.remove_prefix(comma + 1);
+      }
+    }
+    if (v.list.size() != 2) {
+      v.kind = ast::Value::Kind::List;
+      return v;
+    }
     v.kind = ast::Value::Kind::Range;
-    v.q = std::move(*lo);
-    v.hi = std::move(*hi);
+    v.q = std::move(v.list[0]);
+    v.hi = std::move(v.list[1]);
+    v.list.clear();
     return v;
   }
   auto q = quantity_from_text(text, where);
@@ -143,6 +153,26 @@ std::optional<std::pair<double, double>> read_range(const ast::Value& v, std::st
   const auto hi = to_si(v.hi, Dim::None, sink);
   if (!lo || !hi) return std::nullopt;
   return std::pair{*lo, *hi};
+}
+
+std::optional<std::vector<double>> read_list(const ast::Value& v, std::string_view name, Dim dim,
+                                             std::string_view example, Sink& sink) {
+  std::vector<ast::Quantity> items = v.list;
+  if (v.kind == ast::Value::Kind::Range) items = {v.q, v.hi};
+  if (v.kind != ast::Value::Kind::List && v.kind != ast::Value::Kind::Range) {
+    sink.error(v.where, fmt::format("`{}` takes a list, each value {}, as in `{}`, found {}", name, dim_phrase(dim),
+                                    example, shown(v)))
+        .help.push_back(fmt::format("write `{} {}`", name, example));
+    return std::nullopt;
+  }
+  std::vector<double> out;
+  for (const ast::Quantity& q : items) {
+    if (!q.finite) return std::nullopt;   // reported by the parser
+    const auto x = to_si(q, dim, sink);
+    if (!x) return std::nullopt;
+    out.push_back(*x);
+  }
+  return out;
 }
 
 std::optional<ast::Value> option_value(const ast::EsOption& o, OptionShape shape, std::string_view example,

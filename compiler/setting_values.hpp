@@ -17,8 +17,9 @@
 namespace esc::compiler {
 
 // The text after `--set KEY=` as a value located at `where`: `on`, `off`, `true`, `false`, a
-// word, `[LO, HI]`, or a number with an optional unit (`50ms`, `0.5 m/s^2`); nullopt when it
-// is none of these.
+// word, `[LO, HI]` (a range), a list of another length (`[]`, `[0deg]`, `[90deg, 0deg,
+// -90deg]`), or a number with an optional unit (`50ms`, `0.5 m/s^2`); nullopt when it is
+// none of these.
 [[nodiscard]] std::optional<ast::Value> value_from_text(std::string_view text, const SourceRange& where);
 
 // A script's number (`epochs 10`) as a setting's value.
@@ -41,6 +42,11 @@ namespace esc::compiler {
 // (`[-1, 1]`).
 [[nodiscard]] std::optional<std::pair<double, double>> read_range(const ast::Value& v, std::string_view name,
                                                                   std::string_view example, Sink& sink);
+
+// A list of quantities of dimension `dim` in SI, as written in a script (`[90deg, 0deg]`, `[]`)
+// or by `--set` (where a list of two reads as a range); `example` is shown in the help line.
+[[nodiscard]] std::optional<std::vector<double>> read_list(const ast::Value& v, std::string_view name, Dim dim,
+                                                           std::string_view example, Sink& sink);
 
 // What an option of `evolve es(...)` or `evolve gp(...)` is written with.
 enum class OptionShape {

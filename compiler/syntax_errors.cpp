@@ -38,7 +38,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::FUNCTIONS: case EscParser::TERMINALS: case EscParser::EVALUATE:
     case EscParser::CONDITIONS: case EscParser::CONDITION: case EscParser::SWEEP: case EscParser::AS:
     case EscParser::BY: case EscParser::EVALUATION: case EscParser::OBJECTIVE: case EscParser::MAXIMIZE:
-    case EscParser::MINIMIZE: case EscParser::DESCRIPTOR: case EscParser::IN: return true;
+    case EscParser::MINIMIZE: case EscParser::DESCRIPTOR: case EscParser::IN: case EscParser::WALL:
+    case EscParser::GOAL: case EscParser::TO: case EscParser::THICKNESS: return true;
     default: return false;
   }
 }

@@ -33,6 +33,8 @@ arenaItem
   : kw=(SIZE | BOX) w=quantity X h=quantity ';'?                                  # arenaSize
   | CYLINDER AT point RADIUS r=quantity ';'?                                        # arenaCylinder
   | BLOCK AT point SIZE w=quantity X h=quantity (ANGLE a=quantity)? ';'?            # arenaBlock
+  | WALL FROM p1=point TO p2=point (THICKNESS t=quantity)? ';'?                     # arenaWall
+  | GOAL AT point ';'?                                                              # arenaGoal
   | START RANDOM ';'?                                                               # arenaStartRandom
   | START AT point (HEADING a=quantity)? ';'?                                       # arenaStartAt
   | LIGHT name=ident (AT point | ABOVE zone=ident) (HEIGHT h=quantity)? (INTENSITY i=quantity)? ';'?   # arenaLight
@@ -51,8 +53,10 @@ unit : UNIT ('/' UNIT ('^' NUMBER)?)? ;
 // ---- robots -------------------------------------------------------------------------
 robotDecl : ROBOT name=ident ('=' base=ident)? settingsBlock? ;
 settingsBlock : '{' setting* '}' ;
-setting : key=ident value ';'? ;
+// A list of quantities only where a setting takes one (`rangefinders [90deg, 0deg, -90deg]`).
+setting : key=ident (value | list=quantityList) ';'? ;
 value : quantity | ON | OFF | TRUE | FALSE ;
+quantityList : '[' (quantity (',' quantity)*)? ']' ;
 
 // ---- behaviors ----------------------------------------------------------------------
 behaviorDecl
@@ -193,7 +197,7 @@ ident
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
-  | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN
+  | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN | WALL | GOAL | TO | THICKNESS
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -276,6 +280,10 @@ MAXIMIZE : 'maximize' ;
 MINIMIZE : 'minimize' ;
 DESCRIPTOR : 'descriptor' ;
 IN : 'in' ;
+WALL : 'wall' ;
+GOAL : 'goal' ;
+TO : 'to' ;
+THICKNESS : 'thickness' ;
 
 ARROW : '->' ;
 DOTDOT : '..' ;

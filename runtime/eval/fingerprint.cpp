@@ -2,6 +2,7 @@
 
 #include "runtime/eval/settings_history.hpp"
 #include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/expr/observables.hpp"
 
 #include <span>
 #include <variant>
@@ -11,6 +12,16 @@
 namespace esc::eval {
 
 namespace {
+
+// A program's slot as fingerprints have always named it: the aggregates after the frame by
+// the numbers they had before the navigator's observables grew the frame, and those
+// observables apart (`f48`), so that stored runs keep their fingerprints and no two programs
+// share one.
+std::string slot_text(expr::Slot s) {
+  if (s < expr::kFrameSizeBeforeNavigator) return fmt::format("{}", s);
+  if (s < expr::kFrameSize) return fmt::format("f{}", s);
+  return fmt::format("{}", s - expr::kFrameSize + expr::kFrameSizeBeforeNavigator);
+}
 
 class Writer {
  public:
@@ -23,7 +34,8 @@ class Writer {
   }
   void program(std::string_view key, const expr::Program& p) {
     std::string s;
-    for (const expr::Instr& i : p.code()) s += fmt::format("{}:{}:{:a} ", static_cast<int>(i.op), i.slot, i.value);
+    for (const expr::Instr& i : p.code())
+      s += fmt::format("{}:{}:{:a} ", static_cast<int>(i.op), slot_text(i.slot), i.value);
     line(key, s);
   }
   void behavior(std::string_view key, const control::Behavior& b) {
@@ -74,6 +86,9 @@ std::string fingerprint(const ExperimentSpec& spec) {
     w.numbers("arena.box", std::initializer_list<double>{b.center_m.x, b.center_m.y, b.size_m.x, b.size_m.y, b.angle_rad});
   for (const auto& c : a.cylinders)
     w.numbers("arena.cylinder", std::initializer_list<double>{c.center_m.x, c.center_m.y, c.radius_m});
+  for (const auto& k : a.walls)
+    w.numbers("arena.wall", std::initializer_list<double>{k.from_m.x, k.from_m.y, k.to_m.x, k.to_m.y, k.thickness_m});
+  if (a.goal) w.numbers("arena.goal", std::initializer_list<double>{a.goal->x, a.goal->y});
   if (a.fixed_start)
     w.numbers("arena.start", std::initializer_list<double>{a.fixed_start->x_m, a.fixed_start->y_m, a.fixed_start->heading_rad});
   for (const auto& l : a.lights)

@@ -1,10 +1,13 @@
 #include "runtime/eval/observe.hpp"
 
 #include "runtime/core/rng.hpp"
+#include "runtime/sim/goal_radar.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
+#include <span>
 #include <variant>
 
 namespace esc::eval {
@@ -13,6 +16,30 @@ static_assert(expr::kMaxZones == sim::kMaxZones, "in(zone) slots: one per zone a
 static_assert(expr::kMaxLights == sim::kMaxLights, "reached(light) slots: one per light");
 static_assert(expr::kLightCount == sim::kLightSensors);
 static_assert(expr::kIrCount == sim::kIrSensors);
+static_assert(expr::kRangeCount == sim::kMaxRangefinders, "range[i] slots: one per rangefinder a robot may have");
+static_assert(expr::kRadarCount == sim::kMaxRadars, "radar[i] slots: one per radar slice");
+
+namespace {
+
+// Where the robot is, where the goal lies from it and what the rangefinders read. Slots of
+// rangefinders and radars the robot does not have, and of a goal the arena does not have,
+// are left as they are.
+void observe_navigation(const sim::World& world, expr::Frame& frame) noexcept {
+  const sim::Pose& pose = world.state().pose;
+  frame[expr::slot::x] = pose.x_m;
+  frame[expr::slot::y] = pose.y_m;
+  frame[expr::slot::heading] = pose.heading_rad;
+  world.read_rangefinders(std::span<double>(frame).subspan(expr::slot::range, expr::kRangeCount));
+  const std::optional<sim::Vec2>& goal = world.arena().goal;
+  if (!goal) return;
+  frame[expr::slot::goal_distance] = std::hypot(goal->x - pose.x_m, goal->y - pose.y_m);
+  const int slices = world.robot().radars;
+  if (slices == 0) return;
+  const int hit = sim::radar_slice(pose, *goal, slices);
+  for (int i = 0; i < slices; ++i) frame[expr::slot::radar + static_cast<expr::Slot>(i)] = i == hit ? 1.0 : 0.0;
+}
+
+}  // namespace
 
 void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
                    expr::Frame& frame) noexcept {
@@ -41,6 +68,7 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   const sim::ArenaSpec& arena = world.arena();
   for (expr::Slot z = 0; z < arena.zones.size(); ++z) frame[expr::slot::in_zone + z] = (floor.in_zone >> z) & 1U;
   for (expr::Slot l = 0; l < arena.lights.size(); ++l) frame[expr::slot::reached + l] = (floor.reached >> l) & 1U;
+  observe_navigation(world, frame);
 }
 
 void observe_light(const std::array<double, sim::kLightSensors>& light,

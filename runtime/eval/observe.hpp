@@ -12,11 +12,13 @@
 
 namespace esc::eval {
 
-// Writes speed, com_speed, forward_speed, wheel_diff, wheels[], collision and ir[], and the
+// Writes speed, com_speed, forward_speed, wheel_diff, wheels[], collision and ir[], the
 // floor and accumulator state: energy, ground, new_cell, cells_visited, in_zone[] (`in(z)`)
-// and reached[] (`reached(l)`) into `frame`; the in_zone and reached slots of zones and
-// lights the arena does not have are left as they are (0 in a frame zeroed at the epoch's
-// start, as the evaluator's is).
+// and reached[] (`reached(l)`), and the navigator's observables: x, y, heading, the
+// rangefinders' range[] (read here, only for a robot that has some), goal_distance and
+// radar[] into `frame`; the slots of zones, lights, rangefinders and radar slices the arena
+// or robot does not have, and goal_distance without a goal, are left as they are (0 in a
+// frame zeroed at the epoch's start, as the evaluator's is).
 void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
                    expr::Frame& frame) noexcept;
 

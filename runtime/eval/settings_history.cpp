@@ -10,8 +10,14 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 1> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
+    // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
+    {"arena.walls", "0"},
+    {"arena.goal", "none"},
+    {"robot.rangefinders", "[]"},
+    {"robot.rangefinder_range", "0.34375 m"},
+    {"robot.radars", "0"},
 }};
 
 }  // namespace

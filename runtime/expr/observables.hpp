@@ -38,7 +38,15 @@ inline constexpr Slot noise = 42;         // uniform in [0, 1), fresh at every s
 // The experiment-wide id of the action or behavior the compared controller chose at this
 // step (ControllerSpec::Choice::id), -1 when it chooses none: what `using(B)` compares.
 inline constexpr Slot acting = 43;
-inline constexpr Slot param = 44;         // param[0..3]: parameters of the running behavior (last)
+inline constexpr Slot param = 44;         // param[0..3]: parameters of the running behavior
+// Added after `param`, so that no earlier slot moved (stored programs and genomes' inputs
+// name slots): the maze navigator's observables (Lehman & Stanley 2011).
+inline constexpr Slot x = 48;             // the body's centre in the arena frame, metres
+inline constexpr Slot y = 49;
+inline constexpr Slot heading = 50;       // radians from +x, counter-clockwise, in (-pi, pi]
+inline constexpr Slot goal_distance = 51; // metres from the centre to the arena's goal
+inline constexpr Slot range = 52;         // range[0..7]: rangefinders, distance / range, 1 when clear
+inline constexpr Slot radar = 60;         // radar[0..7]: 1 for the pie slice holding the goal (last)
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -47,12 +55,22 @@ inline constexpr Slot kWheelCount = 2;
 inline constexpr Slot kMaxZones = 8;      // = sim::kMaxZones (checked in runtime/eval/observe.cpp)
 inline constexpr Slot kMaxLights = 4;     // = sim::kMaxLights
 inline constexpr Slot kMaxParams = 4;
-inline constexpr Slot kFrameSize = slot::param + kMaxParams;
+inline constexpr Slot kRangeCount = 8;    // = sim::kMaxRangefinders
+inline constexpr Slot kRadarCount = 8;    // = sim::kMaxRadars
+inline constexpr Slot kFrameSize = slot::radar + kRadarCount;
 
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
 static_assert(slot::reached + kMaxLights == slot::noise);
 static_assert(slot::noise + 1 == slot::acting && slot::acting + 1 == slot::param);
+static_assert(slot::param + kMaxParams == slot::x && slot::x + 1 == slot::y && slot::y + 1 == slot::heading);
+static_assert(slot::heading + 1 == slot::goal_distance && slot::goal_distance + 1 == slot::range);
+static_assert(slot::range + kRangeCount == slot::radar);
+
+// The frame's size before `x` and the slots after it existed: what the aggregates' slots
+// (below) are numbered from in a fingerprint (runtime/eval/fingerprint.cpp), so that growing
+// the frame leaves the fingerprints of stored runs as they were.
+inline constexpr Slot kFrameSizeBeforeNavigator = slot::x;
 
 using Frame = std::array<double, kFrameSize>;
 
@@ -104,6 +122,18 @@ inline constexpr std::array kObservables = {
                "grid cells visited in this epoch, the start cell included"},
     Observable{"noise", slot::noise, 1, false, "fraction",
                "uniform random in [0, 1), new at every step, reproducible from the evaluation's seed"},
+    Observable{"x", slot::x, 1, false, "m", "the robot's centre in the arena, from its left wall"},
+    Observable{"y", slot::y, 1, false, "m", "the robot's centre in the arena, from its bottom wall"},
+    Observable{"heading", slot::heading, 1, false, "rad",
+               "the robot's heading, counter-clockwise from +x, -pi .. pi"},
+    Observable{"goal_distance", slot::goal_distance, 1, false, "m",
+               "distance from the robot's centre to the arena's goal (needs a `goal`)"},
+    Observable{"range", slot::range, kRangeCount, true, "fraction of range",
+               "rangefinders in the robot's order: distance to the nearest wall or obstacle / range, 1 when "
+               "nothing is within range (needs `rangefinders`)"},
+    Observable{"radar", slot::radar, kRadarCount, true, "boolean",
+               "goal radars: 1 for the pie slice holding the goal, 0 else; slice 0 ahead, then counter-clockwise "
+               "(needs `radars` and a `goal`)"},
 };
 
 // Observables that take an argument naming a thing of the arena, `in(zone)` and

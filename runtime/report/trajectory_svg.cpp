@@ -6,6 +6,7 @@
 #include <numbers>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -25,6 +26,7 @@ constexpr double kTitleHeight = 46.0;
 constexpr double kLegendWidth = 240.0;
 constexpr double kLegendLine = 20.0;
 constexpr const char* kObstacle = "#8d96a8";
+constexpr const char* kGoal = "#c51b7d";
 // A colour no behavior and no epoch takes (as on the report page).
 constexpr const char* kCollision = "#111111";
 
@@ -71,11 +73,18 @@ void draw_arena(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
   for (const sim::CylinderObstacle& c : a.cylinders)
     svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="{}"/>)~" "\n", at.x(c.center_m.x),
                        at.y(c.center_m.y), c.radius_m * 1000.0, kObstacle);
-  for (const sim::BoxObstacle& b : a.boxes)
+  // A segment wall is the rectangle the simulator holds for it.
+  std::vector<sim::BoxObstacle> boxes = a.boxes;
+  for (const sim::WallSegment& w : a.walls) boxes.push_back(sim::wall_box(w));
+  for (const sim::BoxObstacle& b : boxes)
     svg += fmt::format(R"~(<rect x="{:.1f}" y="{:.1f}" width="{:.1f}" height="{:.1f}" fill="{}" transform="rotate({:.3f} {:.1f} {:.1f})"/>)~"
                        "\n", at.x(b.center_m.x) - b.size_m.x * 500.0, at.y(b.center_m.y) - b.size_m.y * 500.0,
                        b.size_m.x * 1000.0, b.size_m.y * 1000.0, kObstacle, -b.angle_rad * 180.0 / std::numbers::pi,
                        at.x(b.center_m.x), at.y(b.center_m.y));
+  // The goal: a target of two rings.
+  if (a.goal)
+    svg += fmt::format(R"~(<circle cx="{0:.1f}" cy="{1:.1f}" r="9" fill="none" stroke="{2}" stroke-width="2"/><circle cx="{0:.1f}" cy="{1:.1f}" r="3.5" fill="{2}"/>)~"
+                       "\n", at.x(a.goal->x), at.y(a.goal->y), kGoal);
 }
 
 // Zones where they were in each epoch drawn (random ones move at every epoch start), each
@@ -207,6 +216,10 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
   if (!f.arena.lights.empty())
     mark(fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="6" fill="#f2c12e" stroke="#a67c00" stroke-width="1.5"/>)~", cx, y - 4.0),
          "light");
+  if (f.arena.goal)
+    mark(fmt::format(R"~(<circle cx="{0:.1f}" cy="{1:.1f}" r="6" fill="none" stroke="{2}" stroke-width="2"/><circle cx="{0:.1f}" cy="{1:.1f}" r="2.5" fill="{2}"/>)~",
+                     cx, y - 4.0, kGoal),
+         "goal");
   svg += "</g>\n";
   return y - top;
 }

@@ -1,8 +1,9 @@
 #pragma once
 // The static world a robot runs in, as the compiler produces it: a walled rectangle with
-// box and cylinder obstacles, light sources, floor zones and the grid used to measure area
-// sweeping. All lengths in metres, angles in radians; the origin is the arena's lower-left
-// inner corner, x to the right, y up, heading 0 along +x.
+// box and cylinder obstacles, segment walls, light sources, floor zones, a goal point and the
+// grid used to measure area sweeping. All lengths in metres, angles in radians; the origin is
+// the arena's lower-left inner corner, x to the right, y up, heading 0 along +x.
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -35,6 +36,27 @@ struct CylinderObstacle {
   Vec2 center_m;
   double radius_m = 0.0;
 };
+
+// Default thickness of a segment wall: thin against the 55 mm body, and 20 times Bullet's
+// collision margin (0.5 mm), so the contact solver meets a solid box.
+inline constexpr double kDefaultWallThickness_m = 0.01;
+
+// A wall of a maze (Lehman & Stanley 2011's line segments): the rectangle of the segment's
+// length and `thickness_m` centred on the segment from `from_m` to `to_m`, its ends square at
+// the end points. Every part of the simulator sees exactly that rectangle (wall_box).
+struct WallSegment {
+  Vec2 from_m;
+  Vec2 to_m;
+  double thickness_m = kDefaultWallThickness_m;
+};
+
+// The wall's rectangle as a rotated box.
+[[nodiscard]] inline BoxObstacle wall_box(const WallSegment& w) noexcept {
+  const double dx = w.to_m.x - w.from_m.x;
+  const double dy = w.to_m.y - w.from_m.y;
+  return {{(w.from_m.x + w.to_m.x) / 2, (w.from_m.y + w.to_m.y) / 2}, {std::hypot(dx, dy), w.thickness_m},
+          std::atan2(dy, dx)};
+}
 
 // A point light seen by the ambient-light sensors (docs/robot-model.md, "Ambient light").
 struct LightSource {
@@ -71,9 +93,11 @@ struct ArenaSpec {
   double height_m = 0.6;
   std::vector<BoxObstacle> boxes;
   std::vector<CylinderObstacle> cylinders;
+  std::vector<WallSegment> walls;    // segment walls, obstacles like the boxes
   std::optional<Pose> fixed_start;   // none: a random pose, never inside an obstacle
   std::vector<LightSource> lights;   // at most kMaxLights
   std::vector<Zone> zones;           // at most kMaxZones
+  std::optional<Vec2> goal;          // the point `goal_distance` and the goal radars read
   double sweep_cell_m = kDefaultSweepCell_m;      // side of the square cells of `new_cell`
   double reach_radius_m = kDefaultReachRadius_m;  // `reached(light)`: centre within this of
                                                   // the light's floor position

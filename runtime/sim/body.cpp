@@ -54,7 +54,7 @@ Body::Body(const ArenaSpec& a, const KheperaParams& r, double substep_s, const S
   dispatcher_->setDispatcherFlags(dispatcher_->getDispatcherFlags() &
                                   ~btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
   const double pad = kWallThickness_m + 1.0;
-  const auto handles = static_cast<unsigned short>(a.boxes.size() + a.cylinders.size() + 8);
+  const auto handles = static_cast<unsigned short>(a.boxes.size() + a.walls.size() + a.cylinders.size() + 8);
   // Sweep and prune: its state after removing and re-adding the body depends only on
   // where the objects are, which place() relies on. No ray accelerator (no Bullet rays).
   broadphase_ = std::make_unique<btAxisSweep3>(btVector3(bt(-pad), bt(-pad), bt(-kStaticHeight_m)),
@@ -76,6 +76,11 @@ Body::Body(const ArenaSpec& a, const KheperaParams& r, double substep_s, const S
   add_static_box(w / 2, h + t / 2, w / 2 + t, t / 2, 0.0);    // top
   for (const BoxObstacle& b : a.boxes)
     add_static_box(b.center_m.x, b.center_m.y, b.size_m.x / 2, b.size_m.y / 2, b.angle_rad);
+  // A segment wall is its rectangle, the box the 2D geometry holds for it.
+  for (const WallSegment& segment : a.walls) {
+    const BoxObstacle b = wall_box(segment);
+    add_static_box(b.center_m.x, b.center_m.y, b.size_m.x / 2, b.size_m.y / 2, b.angle_rad);
+  }
   for (const CylinderObstacle& c : a.cylinders) {
     auto shape = std::make_unique<btCylinderShapeZ>(btVector3(bt(c.radius_m), bt(c.radius_m), bt(kStaticHeight_m / 2)));
     shape->setMargin(kCollisionMargin_m);

@@ -7,13 +7,15 @@ namespace esc::sim {
 
 StaticGeometry2D::StaticGeometry2D(const ArenaSpec& arena)
     : width_(arena.width_m), height_(arena.height_m) {
-  boxes_.reserve(arena.boxes.size());
-  for (const BoxObstacle& b : arena.boxes) {
+  boxes_.reserve(arena.boxes.size() + arena.walls.size());
+  const auto add_box = [this](const BoxObstacle& b) {
     const double hx = 0.5 * b.size_m.x;
     const double hy = 0.5 * b.size_m.y;
     boxes_.push_back({b.center_m.x, b.center_m.y, hx, hy, std::cos(b.angle_rad),
                       std::sin(b.angle_rad), std::hypot(hx, hy)});
-  }
+  };
+  for (const BoxObstacle& b : arena.boxes) add_box(b);
+  for (const WallSegment& w : arena.walls) add_box(wall_box(w));
   circles_.reserve(arena.cylinders.size());
   for (const CylinderObstacle& c : arena.cylinders)
     circles_.push_back({c.center_m.x, c.center_m.y, c.radius_m});

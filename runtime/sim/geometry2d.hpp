@@ -1,8 +1,9 @@
 #pragma once
 // The arena's static geometry in the plane, precomputed into flat arrays: exact ray casts
-// (for the IR sensors) and signed clearances (for collisions and free start poses) against
-// the walled rectangle, rotated boxes and cylinders. The arena never moves, so these 2D
-// answers are exact and much cheaper than Bullet's ray tests.
+// (for the IR sensors and rangefinders) and signed clearances (for collisions and free start
+// poses) against the walled rectangle, rotated boxes, segment walls (their rectangles,
+// wall_box, kept with the boxes) and cylinders. The arena never moves, so these 2D answers
+// are exact and much cheaper than Bullet's ray tests.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -22,8 +23,8 @@ class StaticGeometry2D {
   // is exact whenever it is below `cutoff_m`, else some value >= cutoff_m.
   [[nodiscard]] double clearance(Vec2 p, double cutoff_m = kNoHit) const noexcept;
 
-  // The same, counting only the obstacles (boxes and cylinders), not the walls; kNoHit in
-  // an arena without obstacles.
+  // The same, counting only the obstacles (boxes, segment walls and cylinders), not the
+  // walled rectangle; kNoHit in an arena without obstacles.
   [[nodiscard]] double obstacle_clearance(Vec2 p, double cutoff_m = kNoHit) const noexcept;
 
   // Casts `n` rays (origins ox/oy, unit directions dx/dy, length max_t) and lowers

@@ -1,6 +1,8 @@
 #pragma once
 // The simulated Khepera's constants, with their defaults and sources in
 // docs/robot-model.md. Every field is settable from a script's `robot` block.
+#include <vector>
+
 namespace esc::sim {
 
 struct MotorParams {
@@ -38,6 +40,22 @@ struct EnergyParams {
   int recharge_steps = 100;         // paper: "a full recharge takes 100 time steps"
 };
 
+// Lehman & Stanley's (2011) maze navigator's sensors, on the Khepera (docs/robot-model.md,
+// "Rangefinders" and "Goal radars"). Neither is read unless declared: none by default.
+// Most rangefinders and radar slices: the observable frame holds as many `range` and
+// `radar` slots (runtime/expr/observables.hpp).
+inline constexpr int kMaxRangefinders = 8;
+inline constexpr int kMaxRadars = 8;
+
+// Rays from the body's centre at these angles from the heading (positive = left), reading
+// the distance to the nearest wall or obstacle along the ray over range_m, 1 when none is
+// within range_m. Their default range is the navigator's, 100 units for a body radius of 8,
+// scaled to the Khepera's radius: 12.5 x 27.5 mm.
+struct RangefinderParams {
+  std::vector<double> angles_rad;   // at most kMaxRangefinders; empty: no rangefinders
+  double range_m = 0.34375;
+};
+
 struct KheperaParams {
   double body_radius_m = 0.0275;    // 55 mm diameter
   double body_height_m = 0.03;
@@ -49,6 +67,11 @@ struct KheperaParams {
   int physics_substeps = 2;         // fixed physics steps per control step
   LightSensorParams light;
   EnergyParams energy;
+  RangefinderParams rangefinders;
+  // Pie-slice goal radars: the circle around the body split into this many equal slices,
+  // slice 0 centred on the heading, then counter-clockwise; 0: none. 4 are the navigator's
+  // front, left, back and right.
+  int radars = 0;
 };
 
 }  // namespace esc::sim

@@ -40,7 +40,12 @@ constexpr RuleInfo kRules[] = {
      "a cylinder has a body"},
     {Rule::CylinderInside, O::Arena, "cylinder", {}, R::AtMost, D::Length, "arena.cylinders[{}] beyond the walls",
      kInside},
+    {Rule::WallLength, O::Arena, "wall", {}, R::Above, D::Length, "arena.walls[{}] length", "a wall has a length"},
+    {Rule::WallThickness, O::Arena, "wall", {}, R::Above, D::Length, "arena.walls[{}].thickness_m",
+     "a wall has a body"},
+    {Rule::WallInside, O::Arena, "wall", {}, R::AtMost, D::Length, "arena.walls[{}] beyond the walls", kInside},
     {Rule::StartInside, O::Arena, "start", {}, R::AtMost, D::Length, "arena.fixed_start beyond the walls", kInside},
+    {Rule::GoalInside, O::Arena, "goal", {}, R::AtMost, D::Length, "arena.goal beyond the walls", kInside},
     {Rule::ZoneCount, O::Arena, "zone", {}, R::AtMost, D::Count, "arena zone count",
      "the observable frame holds one `in(zone)` slot per zone"},
     {Rule::ZoneRadius, O::Arena, "zone", {}, R::Above, D::Length, "arena.zones[{}].radius_m", "a zone has an area"},
@@ -72,6 +77,8 @@ constexpr RuleInfo kRules[] = {
      "arena.fixed_start distance to arena.cylinders[{}]", kStartClear},
     {Rule::StartClearOfBlock, O::Placement, "start", kFitAlso, R::AtLeast, D::Length,
      "arena.fixed_start distance to arena.boxes[{}]", kStartClear},
+    {Rule::StartClearOfWall, O::Placement, "start", kFitAlso, R::AtLeast, D::Length,
+     "arena.fixed_start distance to arena.walls[{}]", kStartClear},
     {Rule::BodyRadius, O::Robot, "body_radius", {}, R::Above, D::Length, "robot.body_radius_m", "a body has a size"},
     {Rule::BodyHeight, O::Robot, "body_height", {}, R::Above, D::Length, "robot.body_height_m", "a body has a size"},
     {Rule::Mass, O::Robot, "mass", {}, R::Above, D::Mass, "robot.mass_kg", "a body has a mass"},
@@ -115,6 +122,13 @@ constexpr RuleInfo kRules[] = {
      "the accumulator takes a step to fill"},
     {Rule::EnergyRechargeMax, O::Robot, "energy_recharge", {}, R::AtMost, D::Count, "robot.energy.recharge_steps",
      "the accumulator counts in 64-bit integer units"},
+    {Rule::RangefinderCount, O::Robot, "rangefinders", {}, R::AtMost, D::Count, "robot.rangefinders.angles_rad count",
+     "the observable frame holds 8 `range` slots"},
+    {Rule::RangefinderRange, O::Robot, "rangefinder_range", {}, R::Above, D::Length, "robot.rangefinders.range_m",
+     "a rangefinder sees some distance"},
+    {Rule::RadarsMin, O::Robot, "radars", {}, R::AtLeast, D::Count, "robot.radars", "a count is never negative"},
+    {Rule::RadarsMax, O::Robot, "radars", {}, R::AtMost, D::Count, "robot.radars",
+     "the observable frame holds 8 `radar` slots"},
     {Rule::ContactLookAhead, O::Robot, "substeps", kContactAlso, R::AtMost, D::Length,
      "robot.physics_substeps: travel of the body's rim per substep",
      "the contact solver sees walls only 10 mm ahead of the moving body"},
@@ -180,6 +194,14 @@ std::array<Vec2, 4> corners(const BoxObstacle& b) {
   return k;
 }
 
+// How far a rotated box reaches past the walls (NaN when it is not finite).
+double box_beyond(const ArenaSpec& a, const BoxObstacle& b) {
+  if (!std::isfinite(b.angle_rad + b.center_m.x + b.center_m.y)) return std::numeric_limits<double>::quiet_NaN();
+  double reach = -std::numeric_limits<double>::infinity();
+  for (const Vec2& p : corners(b)) reach = std::max(reach, beyond(a, p.x, p.x, p.y, p.y));
+  return reach;
+}
+
 // Distance from a point to a rotated box (0 inside).
 double distance_to_box(const BoxObstacle& b, double px, double py) {
   const double c = std::cos(-b.angle_rad), s = std::sin(-b.angle_rad);
@@ -189,16 +211,13 @@ double distance_to_box(const BoxObstacle& b, double px, double py) {
 }
 
 void check_obstacles(const ArenaSpec& a, bool sized, Checker& c) {
-  const std::size_t obstacles = a.boxes.size() + a.cylinders.size();
+  const std::size_t obstacles = a.boxes.size() + a.cylinders.size() + a.walls.size();
   c.at_most(Rule::ObstacleCount, obstacles, kMaxObstacles);
   for (std::size_t i = 0; i < a.boxes.size(); ++i) {
     const BoxObstacle& b = a.boxes[i];
     const int at = static_cast<int>(i);
     if (!c.require(Rule::BlockSize, std::min(b.size_m.x, b.size_m.y), 0.0, at) || !sized) continue;
-    double reach = -std::numeric_limits<double>::infinity();
-    for (const Vec2& p : corners(b)) reach = std::max(reach, beyond(a, p.x, p.x, p.y, p.y));
-    if (!std::isfinite(b.angle_rad + b.center_m.x + b.center_m.y)) reach = std::numeric_limits<double>::quiet_NaN();
-    c.inside(Rule::BlockInside, reach, at);
+    c.inside(Rule::BlockInside, box_beyond(a, b), at);
   }
   for (std::size_t i = 0; i < a.cylinders.size(); ++i) {
     const CylinderObstacle& k = a.cylinders[i];
@@ -208,6 +227,13 @@ void check_obstacles(const ArenaSpec& a, bool sized, Checker& c) {
              beyond(a, k.center_m.x - k.radius_m, k.center_m.x + k.radius_m, k.center_m.y - k.radius_m,
                     k.center_m.y + k.radius_m),
              at);
+  }
+  for (std::size_t i = 0; i < a.walls.size(); ++i) {
+    const BoxObstacle b = wall_box(a.walls[i]);
+    const int at = static_cast<int>(i);
+    const bool body = c.require(Rule::WallLength, b.size_m.x, 0.0, at);
+    if (c.require(Rule::WallThickness, b.size_m.y, 0.0, at) && body && sized)
+      c.inside(Rule::WallInside, box_beyond(a, b), at);
   }
 }
 
@@ -287,6 +313,7 @@ std::vector<Problem> arena_problems(const ArenaSpec& a) {
                                                       : std::numeric_limits<double>::quiet_NaN();
     c.inside(Rule::StartInside, reach, -1);
   }
+  if (a.goal && sized) c.inside(Rule::GoalInside, beyond(a, a.goal->x, a.goal->x, a.goal->y, a.goal->y), -1);
   check_zones(a, sized, c);
   check_lights(a, sized, c);
   if (c.require(Rule::SweepCell, a.sweep_cell_m, 0.0) && sized) {
@@ -313,6 +340,10 @@ std::vector<Problem> placement_problems(const ArenaSpec& a, const KheperaParams&
   }
   for (std::size_t i = 0; i < a.boxes.size(); ++i)
     if (!c.require(Rule::StartClearOfBlock, distance_to_box(a.boxes[i], p.x_m, p.y_m), r, static_cast<int>(i)))
+      return out;
+  for (std::size_t i = 0; i < a.walls.size(); ++i)
+    if (!c.require(Rule::StartClearOfWall, distance_to_box(wall_box(a.walls[i]), p.x_m, p.y_m), r,
+                   static_cast<int>(i)))
       return out;
   return out;
 }
@@ -343,6 +374,9 @@ std::vector<Problem> robot_problems(const KheperaParams& robot) {
     c.require(Rule::EnergyDischargeMax, robot.energy.discharge_steps, kMaxEnergySteps);
   if (c.require(Rule::EnergyRechargeMin, robot.energy.recharge_steps, 1))
     c.require(Rule::EnergyRechargeMax, robot.energy.recharge_steps, kMaxEnergySteps);
+  c.at_most(Rule::RangefinderCount, robot.rangefinders.angles_rad.size(), kMaxRangefinders);
+  c.require(Rule::RangefinderRange, robot.rangefinders.range_m, 0.0);
+  if (c.require(Rule::RadarsMin, robot.radars, 0)) c.require(Rule::RadarsMax, robot.radars, kMaxRadars);
   if (body && wheels && speed && step && substeps) {
     // Fastest point of the body: centre speed plus rim speed, at most
     // max_speed * max(1, 2 R / wheel_base) for commands in [-1, 1].

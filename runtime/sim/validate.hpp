@@ -39,15 +39,17 @@ inline constexpr int kMaxPhysicsSubsteps = 1000;
 enum class Rule {
   // the arena alone
   ArenaWidth, ArenaHeight, ObstacleCount, BlockSize, BlockInside, CylinderRadius, CylinderInside,
-  StartInside, ZoneCount, ZoneRadius, ZoneSize, ZoneInside, ZoneFits, LightCount, LightHeight,
-  LightIntensity, LightZone, LightInside, SweepCell, SweepGrid, ReachRadius,
+  WallLength, WallThickness, WallInside, StartInside, GoalInside, ZoneCount, ZoneRadius, ZoneSize,
+  ZoneInside, ZoneFits, LightCount, LightHeight, LightIntensity, LightZone, LightInside, SweepCell,
+  SweepGrid, ReachRadius,
   // the robot in the arena
-  RobotFits, StartClearOfWalls, StartClearOfCylinder, StartClearOfBlock,
+  RobotFits, StartClearOfWalls, StartClearOfCylinder, StartClearOfBlock, StartClearOfWall,
   // the robot alone
   BodyRadius, BodyHeight, Mass, WheelBase, WheelBaseWithinBody, MaxSpeed, TimeConstant, MaxAccel, MotorNoise,
   IrRange, IrApertureMin, IrApertureMax, IrRaysMin, IrRaysMax, IrNoise, ControlStep, SubstepsMin,
   SubstepsMax, LightHalfDistance, LightNoise, EnergyDischargeMin, EnergyDischargeMax,
-  EnergyRechargeMin, EnergyRechargeMax, ContactLookAhead,
+  EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
+  ContactLookAhead,
 };
 
 enum class Object { Arena, Placement, Robot };
@@ -63,7 +65,7 @@ struct RuleInfo {
   Object object;
   // What the rule is about, in the script's vocabulary: a robot setting (`ir_aperture`) or a
   // part of an arena (`size`, `sweep_cell`, `reach_radius`, `zone`, `light`, `cylinder`,
-  // `block`, `start`).
+  // `block`, `wall`, `goal`, `start`).
   std::string_view setting;
   // Other settings the value depends on (a problem is best shown at whichever of them the
   // script wrote last), or empty.
@@ -79,7 +81,7 @@ struct RuleInfo {
 // dimension).
 struct Problem {
   Rule rule;
-  int index = -1;   // which zone, light, cylinder or block (in the spec's order), else -1
+  int index = -1;   // which zone, light, cylinder, block or wall (in the spec's order), else -1
   double found = 0.0;
   double limit = 0.0;
 

@@ -12,6 +12,7 @@
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/sim/light_sensor.hpp"
 #include "runtime/sim/motor.hpp"
+#include "runtime/sim/rangefinder.hpp"
 #include "runtime/sim/validate.hpp"
 
 namespace esc::sim {
@@ -32,6 +33,7 @@ struct World::Impl {
   StaticGeometry2D geometry;
   IrModel ir;
   LightModel light;
+  RangefinderModel rangefinders;
   WheelMotor motor;
   DifferentialDrive drive;
   Floor floor;
@@ -45,6 +47,7 @@ struct World::Impl {
         geometry(a),
         ir(r, geometry),
         light(r),
+        rangefinders(r, geometry),
         motor(r.motor, substep_s),
         drive(r.wheel_base_m, substep_s),
         floor(a, r),
@@ -135,6 +138,7 @@ void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
   const std::span<const PlacedLight> lights = impl_->floor.lights();
   impl_->light.read(impl_->state.pose, impl_->geometry, lights.data(), lights.size(), out, rng);
 }
+void World::read_rangefinders(std::span<double> out) const { impl_->rangefinders.read(impl_->state.pose, out); }
 std::span<const Vec2> World::zone_centers() const noexcept { return impl_->floor.zone_centers(); }
 std::span<const Vec2> World::light_positions() const noexcept { return impl_->floor.light_positions(); }
 bool World::in_zone(std::size_t zone, Vec2 p) const noexcept { return impl_->floor.in_zone(zone, p); }

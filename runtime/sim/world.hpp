@@ -78,6 +78,11 @@ class World {
   // draw per sensor, in index order). No allocation.
   void read_light(std::array<double, kLightSensors>& out, Rng& rng) const;
 
+  // Rangefinder readings (rangefinder.hpp), in the order the robot declares them, into
+  // out[0 .. robot().rangefinders.angles_rad.size()); nothing without rangefinders. No noise,
+  // no allocation.
+  void read_rangefinders(std::span<double> out) const;
+
   // Where the zones' centres and the lights' floor positions are this epoch (index as in
   // the ArenaSpec), for replays.
   [[nodiscard]] std::span<const Vec2> zone_centers() const noexcept;

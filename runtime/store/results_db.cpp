@@ -237,8 +237,18 @@ nlohmann::ordered_json arena_json(const sim::ArenaSpec& a) {
     zones.push_back({{"shape", z.shape == sim::ZoneShape::Circle ? "circle" : "rectangle"}, {"x", z.center_m.x},
                      {"y", z.center_m.y}, {"radius", z.radius_m}, {"width", z.size_m.x}, {"height", z.size_m.y},
                      {"visible", z.visible}, {"random_position", z.random_position}, {"recharge", z.recharge}});
-  return {{"width", a.width_m}, {"height", a.height_m}, {"boxes", boxes}, {"cylinders", cylinders},
-          {"lights", lights}, {"zones", zones}};
+  nlohmann::ordered_json out = {{"width", a.width_m}, {"height", a.height_m}, {"boxes", boxes},
+                                 {"cylinders", cylinders}, {"lights", lights}, {"zones", zones}};
+  // Only in arenas that have them: the others are stored as before they existed.
+  if (!a.walls.empty()) {
+    nlohmann::ordered_json walls = nlohmann::ordered_json::array();
+    for (const auto& w : a.walls)
+      walls.push_back({{"x1", w.from_m.x}, {"y1", w.from_m.y}, {"x2", w.to_m.x}, {"y2", w.to_m.y},
+                       {"thickness", w.thickness_m}});
+    out["walls"] = walls;
+  }
+  if (a.goal) out["goal"] = {{"x", a.goal->x}, {"y", a.goal->y}};
+  return out;
 }
 
 // A replay row: the kTraceColumns fixed columns, then the accumulator level, the position

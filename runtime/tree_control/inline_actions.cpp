@@ -114,7 +114,7 @@ class Inliner {
     const bool condition = want == Type::Bool && !is_condition(op);
     if (op == Op::Const) {
       nodes_.emplace_back(constant_, e.in.value);
-    } else if (op == Op::Load && e.in.slot >= expr::slot::param) {
+    } else if (op == Op::Load && e.in.slot >= expr::slot::param && e.in.slot < expr::slot::param + expr::kMaxParams) {
       const std::size_t k = e.in.slot - expr::slot::param;
       if (k >= params.size()) fail("a behavior reads a parameter its action does not pass");
       copy_subtree(params[k]);

@@ -106,7 +106,14 @@ TEST(Observables, EveryNameResolvesToItsSlots) {
   EXPECT_TRUE(find_observable("ir")->indexed);
   EXPECT_FALSE(find_observable("speed")->indexed);
   EXPECT_FALSE(find_observable("irr").has_value());
-  for (const auto& o : kObservables) EXPECT_LE(o.first + o.count, slot::param);
+  // None overlaps the behavior parameters, written into the frame while a behavior runs.
+  for (const auto& o : kObservables)
+    EXPECT_TRUE(o.first + o.count <= slot::param || o.first >= slot::param + kMaxParams) << o.name;
+  EXPECT_EQ(find_observable("x")->first, slot::x);
+  EXPECT_EQ(find_observable("goal_distance")->first, slot::goal_distance);
+  EXPECT_EQ(find_observable("range")->count, kRangeCount);
+  EXPECT_TRUE(find_observable("radar")->indexed);
+  EXPECT_EQ(find_observable("radar")->first + kRadarCount, kFrameSize);
 }
 
 }  // namespace

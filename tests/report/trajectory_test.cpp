@@ -76,6 +76,22 @@ TEST(TrajectorySvg, ClassicalHeadsAreColouredByEpoch) {
   EXPECT_EQ(count(svg, "<path stroke="), 2U);
 }
 
+TEST(TrajectorySvg, DrawsSegmentWallsAsTheirRectanglesAndTheGoal) {
+  TrajectoryFigure f = figure(two_epochs(), {});
+  const std::string without = trajectory_svg(f);
+  EXPECT_EQ(without.find(">goal</text>"), std::string::npos);
+  // A vertical wall 20 cm long, 1 cm thick, centred at (0.5 m, 0.2 m): a 200 x 10 mm rectangle
+  // turned by -90 degrees (SVG's y runs down) about its centre.
+  f.arena.walls.push_back({{0.5, 0.1}, {0.5, 0.3}, 0.01});
+  f.arena.goal = sim::Vec2{0.55, 0.35};
+  const std::string svg = trajectory_svg(f);
+  EXPECT_EQ(count(svg, R"(fill="#8d96a8")"), count(without, R"(fill="#8d96a8")") + 1U);
+  EXPECT_NE(svg.find(R"(width="200.0" height="10.0" fill="#8d96a8" transform="rotate(-90.000)"), std::string::npos)
+      << svg;
+  EXPECT_EQ(count(svg, R"(stroke="#c51b7d")"), 2U) << "the goal, and its legend mark";
+  EXPECT_NE(svg.find(">goal</text>"), std::string::npos);
+}
+
 TEST(TrajectoryCsv, OneRowPerStepCountedFromOne) {
   const auto steps = two_epochs();
   const std::string csv = trajectory_csv(steps, {"forward", "left", "right"}, 0.1);

@@ -1,8 +1,9 @@
 // The world's new state reaches the observable frame (runtime/eval/observe.*), and the
-// frame's layout: slot blocks, parametrised observables, param last.
+// frame's layout: slot blocks, parametrised observables, param, then the navigator's.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <numbers>
 #include <set>
 
 #include "runtime/eval/observe.hpp"
@@ -15,7 +16,11 @@ using expr::Frame;
 namespace slot = expr::slot;
 
 TEST(SimObserve, FrameLayout) {
-  EXPECT_EQ(expr::kFrameSize, slot::param + expr::kMaxParams);
+  // The navigator's observables come after `param`, which kept its slots, and end the frame.
+  EXPECT_EQ(slot::param, 44U);
+  EXPECT_EQ(expr::kFrameSizeBeforeNavigator, slot::param + expr::kMaxParams);
+  EXPECT_EQ(slot::x, expr::kFrameSizeBeforeNavigator);
+  EXPECT_EQ(expr::kFrameSize, slot::radar + expr::kRadarCount);
   // Every slot belongs to exactly one observable, parametrised block or param.
   std::set<expr::Slot> used;
   const auto claim = [&](expr::Slot first, expr::Slot count) {
@@ -43,6 +48,63 @@ TEST(SimObserve, FrameLayout) {
   EXPECT_EQ(expr::find_observable("light")->count, 8U);
   for (const char* n : {"energy", "com_speed", "ground", "new_cell", "cells_visited"})
     EXPECT_TRUE(expr::find_observable(n)) << n;
+  EXPECT_EQ(expr::find_observable("range")->count, static_cast<expr::Slot>(sim::kMaxRangefinders));
+  EXPECT_EQ(expr::find_observable("radar")->count, static_cast<expr::Slot>(sim::kMaxRadars));
+}
+
+// A maze corridor: a wall 20 cm ahead of a robot facing +y, a goal 40 cm to its right.
+TEST(SimObserve, NavigationReachesTheFrame) {
+  constexpr double kDeg = std::numbers::pi / 180;
+  sim::ArenaSpec a = sim::test::empty_arena(1.0, 1.0);
+  a.walls.push_back({{0.2, 0.6}, {0.8, 0.6}, 0.01});
+  a.goal = sim::Vec2{0.9, 0.4};
+  sim::KheperaParams p;
+  p.rangefinders.angles_rad = {0.0, 90 * kDeg, -90 * kDeg, 180 * kDeg};
+  p.rangefinders.range_m = 0.4;
+  p.radars = 4;
+  sim::World w(a, p);
+  w.reset({0.5, 0.4, 90 * kDeg});
+  const std::array<double, sim::kIrSensors> ir{};
+  Frame f{};
+  observe_robot(w, ir, f);
+  const sim::Pose& at = w.state().pose;   // as Bullet holds it
+  EXPECT_NEAR(at.x_m, 0.5, 1e-9);
+  EXPECT_EQ(f[slot::x], at.x_m);
+  EXPECT_EQ(f[slot::y], at.y_m);
+  EXPECT_EQ(f[slot::heading], at.heading_rad);
+  EXPECT_NEAR(f[slot::heading], std::numbers::pi / 2, 1e-9);
+  EXPECT_NEAR(f[slot::goal_distance], 0.4, 1e-9);
+  // Ahead: the wall's near face at y = 0.595, 0.195 away; left and right: the side walls 0.5
+  // away, beyond range; behind: the bottom wall 0.4 away, at the range.
+  EXPECT_NEAR(f[slot::range], 0.195 / 0.4, 1e-9);
+  EXPECT_EQ(f[slot::range + 1], 1.0);
+  EXPECT_EQ(f[slot::range + 2], 1.0);
+  EXPECT_NEAR(f[slot::range + 3], 1.0, 1e-9);
+  for (expr::Slot i = 4; i < expr::kRangeCount; ++i) EXPECT_EQ(f[slot::range + i], 0.0);   // no such rangefinder
+  // The goal lies to the right: slice 3 of front, left, back, right.
+  EXPECT_EQ(f[slot::radar], 0.0);
+  EXPECT_EQ(f[slot::radar + 1], 0.0);
+  EXPECT_EQ(f[slot::radar + 2], 0.0);
+  EXPECT_EQ(f[slot::radar + 3], 1.0);
+  // Turned to face the goal: slice 0, and the slice that fired before is cleared.
+  w.reset({0.5, 0.4, 0.0});
+  observe_robot(w, ir, f);
+  EXPECT_EQ(f[slot::radar], 1.0);
+  EXPECT_EQ(f[slot::radar + 3], 0.0);
+  EXPECT_NEAR(f[slot::range + 1], 0.195 / 0.4, 1e-9);   // the wall is now to the left
+}
+
+// Without a goal, rangefinders or radars, their slots are never written.
+TEST(SimObserve, NavigationSlotsStayZeroWithoutTheirSensors) {
+  sim::ArenaSpec a = sim::test::empty_arena(0.6, 0.6);
+  sim::World w(a, sim::KheperaParams{});
+  w.reset({0.3, 0.2, 1.0});
+  Frame f{};
+  observe_robot(w, std::array<double, sim::kIrSensors>{}, f);
+  EXPECT_NEAR(f[slot::y], 0.2, 1e-9);
+  EXPECT_NEAR(f[slot::heading], 1.0, 1e-9);
+  EXPECT_EQ(f[slot::goal_distance], 0.0);
+  for (expr::Slot s = slot::range; s < expr::kFrameSize; ++s) EXPECT_EQ(f[s], 0.0) << s;
 }
 
 TEST(SimObserve, WorldStateReachesTheFrame) {

@@ -50,8 +50,8 @@ inline KheperaParams robot_with_inertia(bool inertia) {
   return r;
 }
 
-// Smallest signed distance from `p` to the arena's obstacles (not the walls), written
-// independently of the library; a large value when there are none.
+// Smallest signed distance from `p` to the arena's obstacles (not the walled rectangle),
+// written independently of the library; a large value when there are none.
 inline double obstacle_clearance(const ArenaSpec& a, double x, double y) {
   double d = 1e9;
   for (const auto& c : a.cylinders)
@@ -65,6 +65,17 @@ inline double obstacle_clearance(const ArenaSpec& a, double x, double y) {
     const double qy = std::abs(ly) - b.size_m.y / 2;
     const double out = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0));
     d = std::min(d, out + std::min(std::max(qx, qy), 0.0));
+  }
+  // A segment wall: along the segment from its midpoint (u) and across it (v), in units of
+  // its length and of its half thickness.
+  for (const auto& w : a.walls) {
+    const double ex = w.to_m.x - w.from_m.x, ey = w.to_m.y - w.from_m.y;
+    const double length = std::hypot(ex, ey);
+    const double px = x - (w.from_m.x + w.to_m.x) / 2, py = y - (w.from_m.y + w.to_m.y) / 2;
+    const double u = std::abs(px * ex + py * ey) / length - length / 2;
+    const double v = std::abs(px * ey - py * ex) / length - w.thickness_m / 2;
+    const double out = std::hypot(std::max(u, 0.0), std::max(v, 0.0));
+    d = std::min(d, out + std::min(std::max(u, v), 0.0));
   }
   return d;
 }

@@ -39,6 +39,26 @@ TEST(InlineActions, TheInlinedTreeGivesTheActionTreesCommands) {
   }
 }
 
+// The navigator's observables follow the behavior parameters in the frame: a behavior that
+// reads `x` reads the observable, not a parameter.
+TEST(InlineActions, ObservablesAfterTheParametersAreObservables) {
+  const PrimitiveSet set = gp::test::action_set();
+  std::vector<control::Behavior> actions = gp::test::standard_actions();
+  actions.back().left = expr::Program();
+  actions.back().left.push_load(expr::slot::x);
+  const Tree t = gp::test::postfix(set, {"stop"});
+  const InlinedTree in = inline_actions(t, set, actions);
+  const TreeControllerSpec spec{"a", set, actions, {}};
+  const TreeControllerSpec wheels{"w", in.set, actions, {}};
+  TreeController a(spec, t);
+  TreeController w(wheels, in.tree);
+  expr::Frame f{};
+  f[expr::slot::x] = 0.25;
+  expr::Frame g = f;
+  EXPECT_EQ(a.step(f).left, 0.25);
+  EXPECT_EQ(w.step(g).left, 0.25);
+}
+
 TEST(InlineActions, OnlyActionTreesWithTheirBehaviors) {
   Rng rng(2);
   const PrimitiveSet set = gp::test::action_set();

@@ -146,7 +146,7 @@ TEST(TreeDriver, AnEvolvedTreeIsADelegateOfATreeSupervisor) {
   TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"net"}));   // behavior 1, now the tree
   for (expr::Frame f : frames(10)) {
     const WheelCommand cmd = driver.step(f);
-    EXPECT_EQ(cmd.left, f[expr::slot::ir + 1]);
+    EXPECT_EQ(cmd.left, std::clamp(f[expr::slot::ir + 1], -1.0, 1.0));   // wheel commands are clamped
     EXPECT_EQ(cmd.right, -0.5);
   }
   EXPECT_EQ(driver.usage()[1], 10);

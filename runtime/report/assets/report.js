@@ -455,6 +455,19 @@
         ctx.fillRect(-b.width * 500 * scale, -b.height * 500 * scale, b.width * 1000 * scale, b.height * 1000 * scale);
         ctx.restore();
       }
+      // Segment walls (arenas stored before they existed have none): the rectangle of the
+      // segment's length and the wall's thickness, its ends square.
+      for (const w of arena.walls || []) {
+        ctx.strokeStyle = '#8d96a8'; ctx.lineCap = 'butt';
+        ctx.lineWidth = Math.max(1, w.thickness * 1000 * scale);
+        ctx.beginPath(); ctx.moveTo(X(w.x1 * 1000), Y(w.y1 * 1000)); ctx.lineTo(X(w.x2 * 1000), Y(w.y2 * 1000)); ctx.stroke();
+      }
+      if (arena.goal) {
+        const gx = X(arena.goal.x * 1000), gy = Y(arena.goal.y * 1000);
+        ctx.strokeStyle = '#c51b7d'; ctx.fillStyle = '#c51b7d'; ctx.lineWidth = 2;
+        ctx.beginPath(); ctx.arc(gx, gy, 9, 0, 2 * Math.PI); ctx.stroke();
+        ctx.beginPath(); ctx.arc(gx, gy, 3.5, 0, 2 * Math.PI); ctx.fill();
+      }
       // Floor zones where they were in this epoch (random ones move at every epoch start;
       // replays stored by older versions lack their positions, and skip them), and lights.
       const placed = (c.replay.epoch_zones || [])[epoch] || [];

@@ -1,0 +1,100 @@
+#include "compiler/sensor_uses.hpp"
+
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "runtime/evo/gp/primitive_set.hpp"
+
+namespace esc::compiler {
+
+namespace {
+
+// `range[3]`, `goal_distance`: the slot as scripts name it.
+std::string slot_name(expr::Slot slot) {
+  for (const expr::Observable& o : expr::kObservables)
+    if (slot >= o.first && slot < o.first + o.count)
+      return o.indexed ? fmt::format("{}[{}]", o.name, slot - o.first) : std::string(o.name);
+  return fmt::format("slot {}", slot);
+}
+
+// "the robot of experiment `maze`".
+std::string robot_of(const Navigation& n) { return fmt::format("the robot of experiment `{}`", n.experiment); }
+
+// `range[i]` or `radar[i]` beyond the `count` sensors the robot has: what it reads and how many there are.
+RuleMessage beyond(expr::Slot slot, expr::Slot first, int count, const Navigation& n, std::string_view what,
+                   std::string_view array, std::string_view declare) {
+  const expr::Slot i = slot - first;
+  if (count == 0)
+    return {fmt::format("`{}` reads {} {}, but {} has none", slot_name(slot), what, i, robot_of(n)),
+            {fmt::format("declare them in the robot's settings: `{}`", declare)}};
+  return {fmt::format("`{}` reads {} {}, but {} has {} (`{}[0]` .. `{}[{}]`)", slot_name(slot), what, i, robot_of(n),
+                      count, array, array, count - 1),
+          {}};
+}
+
+void add_program(std::set<expr::Slot>& out, const expr::Program& p) {
+  for (const expr::Instr& in : p.code())
+    if (in.op == expr::Op::Load) out.insert(in.slot);
+}
+
+void add_behavior(std::set<expr::Slot>& out, const control::Behavior& b) {
+  add_program(out, b.left);
+  add_program(out, b.right);
+}
+
+}  // namespace
+
+Navigation navigation_of(const eval::ExperimentSpec& x) {
+  return {x.name, x.arena_name, x.arena.goal.has_value(), static_cast<int>(x.robot.rangefinders.angles_rad.size()),
+          x.robot.radars};
+}
+
+std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
+  const bool radar = slot >= expr::slot::radar && slot < expr::slot::radar + expr::kRadarCount;
+  if ((slot == expr::slot::goal_distance || radar) && !n.goal)
+    return RuleMessage{fmt::format("`{}` needs the arena's goal, but arena `{}` has none", slot_name(slot), n.arena),
+                       {fmt::format("add `goal at (X, Y)` to arena `{}`", n.arena)}};
+  if (radar && static_cast<int>(slot - expr::slot::radar) >= n.radars)
+    return beyond(slot, expr::slot::radar, n.radars, n, "goal radar", "radar", "radars 4");
+  if (slot >= expr::slot::range && slot < expr::slot::range + expr::kRangeCount &&
+      static_cast<int>(slot - expr::slot::range) >= n.rangefinders)
+    return beyond(slot, expr::slot::range, n.rangefinders, n, "rangefinder", "range",
+                  "rangefinders [90deg, 45deg, 0deg, -45deg, -90deg, 180deg]");
+  return std::nullopt;
+}
+
+std::set<expr::Slot> slots_read(const eval::FitnessSpec& f) {
+  std::set<expr::Slot> out;
+  add_program(out, f.step);
+  for (const expr::Program& p : f.stop_when) add_program(out, p);
+  for (const auto* end : {&f.epoch_end, &f.evaluation_end})
+    if (*end) add_program(out, **end);
+  return out;
+}
+
+std::set<expr::Slot> slots_read_by_measures(const eval::ExperimentSpec& x) {
+  std::set<expr::Slot> out = slots_read(x.fitness);
+  for (const eval::FitnessSpec& f : x.further) out.merge(slots_read(f));
+  for (const eval::DescriptorSpec& d : x.descriptors) add_program(out, d.program);
+  return out;
+}
+
+std::set<expr::Slot> slots_read(const control::ControllerSpec& c) {
+  std::set<expr::Slot> out(c.mlp.inputs.begin(), c.mlp.inputs.end());
+  for (const control::Behavior& a : c.actions) add_behavior(out, a);
+  for (const control::SupervisedBehavior& b : c.behaviors) {
+    if (const auto* call = std::get_if<control::BehaviorCall>(&b.what)) {
+      add_behavior(out, call->behavior);
+    } else if (const auto& fixed = std::get<control::FixedController>(b.what); fixed.spec != nullptr) {
+      const std::set<expr::Slot> inner = slots_read(*fixed.spec);
+      out.insert(inner.begin(), inner.end());
+    }
+  }
+  if (c.primitives)
+    for (const evo::gp::Primitive& p : c.primitives->primitives())
+      if (p.kind == evo::gp::Kind::Observable) out.insert(p.slot);
+  return out;
+}
+
+}  // namespace esc::compiler

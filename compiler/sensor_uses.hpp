@@ -1,0 +1,41 @@
+#pragma once
+// The observables that exist only where an experiment declares their sensor: `goal_distance`
+// and `radar[i]` need its arena's `goal`; `radar[i]` also the robot's `radars` (i below their
+// count) and `range[i]` its `rangefinders` (i below their count). Reading one without its
+// sensor is an error at the read: an expression of a fitness or behavior (lower_expr.cpp), a
+// network input, a GP terminal or a frozen controller in a supervisor (lower_controller.cpp),
+// and a `--set` that takes a sensor away (setting_keys.cpp).
+#include <optional>
+#include <set>
+#include <string>
+
+#include "compiler/rule_messages.hpp"
+#include "runtime/control/controller_spec.hpp"
+#include "runtime/eval/experiment.hpp"
+#include "runtime/expr/observables.hpp"
+
+namespace esc::compiler {
+
+// What an experiment provides of those sensors.
+struct Navigation {
+  std::string experiment;   // names, for messages
+  std::string arena;
+  bool goal = false;
+  int rangefinders = 0;
+  int radars = 0;
+};
+
+[[nodiscard]] Navigation navigation_of(const eval::ExperimentSpec& x);
+
+// Why frame slot `slot` cannot be read under `n` (message and help), or nullopt when it can.
+[[nodiscard]] std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n);
+
+// The frame slots a fitness reads (its programs), and those a controller reads: its
+// network's inputs, its actions' and behaviors' programs, its tree's observable terminals,
+// and what the controllers frozen in it read.
+[[nodiscard]] std::set<expr::Slot> slots_read(const eval::FitnessSpec& f);
+[[nodiscard]] std::set<expr::Slot> slots_read(const control::ControllerSpec& c);
+// What an experiment's fitness, further objectives and descriptors read.
+[[nodiscard]] std::set<expr::Slot> slots_read_by_measures(const eval::ExperimentSpec& x);
+
+}  // namespace esc::compiler

@@ -1,0 +1,34 @@
+#include "runtime/sim/rangefinder.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace esc::sim {
+
+RangefinderModel::RangefinderModel(const KheperaParams& robot, const StaticGeometry2D& geometry)
+    : range_m_(robot.rangefinders.range_m), geometry_(geometry), near_(geometry.nearby()) {
+  for (const double a : robot.rangefinders.angles_rad) {
+    cos_.push_back(std::cos(a));
+    sin_.push_back(std::sin(a));
+  }
+}
+
+void RangefinderModel::read(const Pose& pose, std::span<double> out) const noexcept {
+  const auto n = cos_.size();
+  if (n == 0) return;
+  const Vec2 centre{pose.x_m, pose.y_m};
+  geometry_.gather(centre, range_m_, near_);
+  const double c = std::cos(pose.heading_rad);
+  const double s = std::sin(pose.heading_rad);
+  std::array<double, kMaxRangefinders> dx, dy, t;
+  for (std::size_t i = 0; i < n; ++i) {
+    dx[i] = c * cos_[i] - s * sin_[i];
+    dy[i] = s * cos_[i] + c * sin_[i];
+    t[i] = range_m_;
+  }
+  geometry_.cast_fan(near_, centre, range_m_, static_cast<int>(n), dx.data(), dy.data(), t.data());
+  for (std::size_t i = 0; i < n; ++i) out[i] = t[i] / range_m_;
+}
+
+}  // namespace esc::sim

@@ -1,0 +1,35 @@
+#pragma once
+// The rangefinders of Lehman & Stanley's (2011) maze navigator, on the Khepera: rays from the
+// body's centre at fixed angles from the heading, each reading the distance to the first wall
+// or obstacle along it over its range, or 1 when none is within range (the navigator's network
+// reads distance / range). Exact ray casts in the arena's 2D geometry; no noise
+// (docs/robot-model.md, "Rangefinders").
+#include <span>
+#include <vector>
+
+#include "runtime/sim/arena.hpp"
+#include "runtime/sim/geometry2d.hpp"
+#include "runtime/sim/khepera_params.hpp"
+
+namespace esc::sim {
+
+class RangefinderModel {
+ public:
+  // `geometry` is the arena's and must outlive the model.
+  RangefinderModel(const KheperaParams& robot, const StaticGeometry2D& geometry);
+
+  // The readings of the robot at `pose`, in the order the robot declares its rangefinders,
+  // into out[0 .. count()); `out` holds at least count() values. Uses scratch owned by the
+  // model: one reader at a time. No allocation; a robot without rangefinders casts nothing.
+  void read(const Pose& pose, std::span<double> out) const noexcept;
+
+  [[nodiscard]] int count() const noexcept { return static_cast<int>(cos_.size()); }
+
+ private:
+  double range_m_;
+  const StaticGeometry2D& geometry_;
+  std::vector<double> cos_, sin_;            // each ray's direction in the body frame
+  mutable StaticGeometry2D::Nearby near_;    // scratch: the shapes within range
+};
+
+}  // namespace esc::sim
