@@ -15,15 +15,15 @@ Rastrigin compares success rates, esc with and without IPOP, DEAP plain. A run w
 restarts ends when a stop fires; DEAP, which has none, gets esc's (sd below 1e-12 of the
 width in every coordinate, condition of C above 1e14, 10 flat generations).
 """
-import argparse
 import datetime
 import math
 import os
-import platform
 import statistics
 import subprocess
 import sys
 from concurrent.futures import ProcessPoolExecutor
+
+from validation_common import arguments, machine  # noqa: E402
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")  # one numpy thread per worker
 import numpy  # noqa: E402
@@ -114,20 +114,8 @@ def fmt(v):
     return "—" if v is None else f"{v:,.0f}"
 
 
-def machine():
-    with open("/proc/cpuinfo") as f:
-        models = [line.split(":", 1)[1].strip() for line in f if line.startswith("model name")]
-    return f"{models[0] if models else platform.processor()}, {len(models)} logical CPUs"
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    here = os.path.dirname(os.path.abspath(__file__))
-    parser.add_argument("--esc", default=os.path.join(here, "..", "build", "tools", "testfn", "esc-testfn"))
-    parser.add_argument("--seeds", type=int, default=15)
-    parser.add_argument("--jobs", type=int, default=os.cpu_count())
-    parser.add_argument("--out")
-    args = parser.parse_args()
+    args = arguments(__doc__)
     seeds = range(1, args.seeds + 1)
     dims = (10, 40)
 

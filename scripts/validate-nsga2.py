@@ -16,7 +16,6 @@ populations' hypervolumes (reference (11, 11)) come from DEAP's hypervolume
 one of those fronts and on random 2-D and 3-D point sets with ties. Exits 1 when a median
 differs by more than 1 % or the two hypervolumes by more than 1e-12 relative.
 """
-import argparse
 import array
 import datetime
 import math
@@ -27,6 +26,8 @@ import subprocess
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor
+
+from validation_common import arguments, machine  # noqa: E402
 
 import numpy
 import scipy.stats
@@ -142,23 +143,8 @@ def quartiles(values):
     return q[0], q[2]
 
 
-def machine():
-    try:
-        fields = dict(line.split(":", 1) for line in subprocess.run(["lscpu"], capture_output=True, text=True,
-                                                                   check=True).stdout.splitlines() if ":" in line)
-        return f"{fields['Model name'].strip()}, {fields['CPU(s)'].strip()} logical CPUs"
-    except (OSError, KeyError, subprocess.CalledProcessError):
-        return f"{os.cpu_count()} logical CPUs"
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    here = os.path.dirname(os.path.abspath(__file__))
-    parser.add_argument("--esc", default=os.path.join(here, "..", "build", "tools", "testfn", "esc-testfn"))
-    parser.add_argument("--seeds", type=int, default=15)
-    parser.add_argument("--jobs", type=int, default=os.cpu_count())
-    parser.add_argument("--out")
-    args = parser.parse_args()
+    args = arguments(__doc__)
     seeds = range(1, args.seeds + 1)
 
     with ProcessPoolExecutor(args.jobs) as pool:

@@ -1,6 +1,8 @@
 #include "python/src/observation.hpp"
 
+#include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace esc::python {
 
@@ -29,8 +31,14 @@ SlotRange slot_range(expr::Slot slot, const eval::ExperimentSpec& spec) {
   if (slot == s::time) return {0.0, last_step * spec.robot.control_step_s};
   if (slot == s::epoch || slot == s::cells_visited) return {0.0, kInf};
   if (slot == s::acting) return {-1.0, static_cast<double>(spec.choice_ids) - 1.0};
-  if (slot >= s::param) return {-kInf, kInf};
-  return {0.0, 1.0};   // speeds, sensors, booleans, energy, noise
+  if (slot >= s::param && slot < s::param + expr::kMaxParams) return {-kInf, kInf};
+  // The navigator's: the body's centre stays in the arena, and no point of it is farther
+  // from the goal than the arena's diagonal.
+  if (slot == s::x) return {0.0, spec.arena.width_m};
+  if (slot == s::y) return {0.0, spec.arena.height_m};
+  if (slot == s::heading) return {-std::numbers::pi, std::numbers::pi};
+  if (slot == s::goal_distance) return {0.0, std::hypot(spec.arena.width_m, spec.arena.height_m)};
+  return {0.0, 1.0};   // speeds, sensors (rangefinders and radars too), booleans, energy, noise
 }
 
 }  // namespace esc::python

@@ -1,7 +1,7 @@
 // Several objectives and behavior descriptors from the command line: NSGA-II
 // (experiments/examples/speed_energy.esc) and MAP-Elites (behavior_map.esc) run, store their
 // metrics every generation, give the same results on any number of threads, and a run
-// killed mid-run resumes to exactly the unbroken run.
+// killed mid-run resumes to exactly the unbroken run, Lehman & Stanley's maze study too.
 #include <map>
 #include <sstream>
 #include <string>
@@ -103,6 +103,24 @@ TEST(MultiObjective, ARunKilledMidRunResumesToTheUnbrokenRun) {
               esc("export " + killed.string() + " --table metrics").output)
         << name;
   }
+}
+
+// Lehman & Stanley's medium maze: one study of CMA-ES, novelty search (alone and with the
+// fitness) and MAP-Elites, killed mid-study, resumes to exactly the unbroken study.
+TEST(MultiObjective, TheMazeStudyKilledMidStudyResumesToTheUnbrokenStudy) {
+  const std::string mazes = std::string(ESC_SOURCE_DIR) + "/experiments/lehman_stanley/mazes.esc";
+  const fs::path reference = scratch("maze-reference"), killed = scratch("maze-killed");
+  ASSERT_EQ(esc("run " + mazes + " --runs 2 --generations 100 --seed 5 --set steps=30 --threads 1 --out " +
+                reference.string())
+                .status,
+            0);
+  // 4 conditions x 2 runs x 100 generations.
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(mazes, killed, 150, 800, "2", {"--runs", "2", "--set", "steps=30"}));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 1");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(results_without_times(reference), results_without_times(killed));
+  EXPECT_EQ(esc("export " + reference.string() + " --table metrics").output,
+            esc("export " + killed.string() + " --table metrics").output);
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "runtime/evo/map_elites/point_tree.hpp"
+#include "runtime/evo/novelty/novelty_optimizer.hpp"
+#include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 #include "runtime/evo/novelty/novelty_archive.hpp"
 
 namespace esc::evo::qd {
@@ -273,6 +275,48 @@ TEST(Novelty, RefusesImpossibleSettingsAndDescriptorsNamingThem) {
   const NoveltyArchive a(NoveltySettings{}, space);
   EXPECT_THROW((void)a.scores(Points{{0.5, 0.5}}), std::invalid_argument);
   EXPECT_THROW((void)a.scores(Points{{std::nan("")}}), std::invalid_argument);
+}
+
+// Novelty search as an optimizer on a toy behavior space: the descriptor is the first two
+// genes mapped to [0, 1], the fitness rewards one corner only. Searching for novelty fills
+// the space and its archive grows; searching for the fitness alone (NSGA-II on one
+// objective) crowds into the corner.
+TEST(NoveltySearch, SpreadsOverTheBehaviorSpaceWhereTheFitnessCrowdsIntoACorner) {
+  const auto cells_reached = [](const std::string& algorithm) {
+    NoveltyRunSettings s;
+    s.population = 20;
+    Problem p;
+    p.genome_size = 4;
+    p.seed = 3;
+    p.objectives = {{-2, 0}};
+    p.descriptors = {{0, 1}, {0, 1}};
+    std::unique_ptr<Optimizer> o;
+    if (algorithm == "novelty") {
+      o = make_novelty(s, p);
+    } else {
+      Nsga2Settings n;
+      n.population = 20;
+      o = make_nsga2(n, p);
+    }
+    std::vector<bool> seen(100, false);
+    for (int g = 0; g < 30; ++g) {
+      const std::vector<Genome> asked = o->ask(g);
+      std::vector<Outcome> outcomes;
+      for (const Genome& x : asked) {
+        const double a = (x[0] + 1) / 2, b = (x[1] + 1) / 2;
+        outcomes.push_back({{-std::hypot(a, b)}, {a, b}});
+        seen[static_cast<std::size_t>(std::min(9.0, a * 10) * 10 + std::min(9.0, b * 10))] = true;
+      }
+      o->tell(outcomes);
+    }
+    if (algorithm == "novelty") {
+      EXPECT_GT(o->metrics().front().value, 0.0) << "the archive grew";
+    }
+    return std::count(seen.begin(), seen.end(), true);
+  };
+  const auto novelty = cells_reached("novelty"), fitness = cells_reached("fitness");
+  EXPECT_GT(novelty, 60) << "of 100 cells";
+  EXPECT_GT(novelty, fitness + 10) << "fitness alone reached " << fitness;
 }
 
 }  // namespace

@@ -247,6 +247,28 @@ TEST(Nsga2, TellKeepsWholeFrontsThenTheLeastCrowded) {
   EXPECT_EQ(nsga.generation(), 2u);
 }
 
+// What novelty search needs: which points survived (to keep their descriptors in step), and
+// parents scored again before they meet the children.
+TEST(Nsga2, TellSaysWhoSurvivedAndRescoredParentsCompeteWithTheirNewScores) {
+  Nsga2Settings s;
+  s.population = 4;
+  Nsga2 nsga(s, 1);
+  Rng init(1);
+  nsga.start(init);
+  Rng g0 = generation_rng(1, 0);
+  (void)nsga.ask(g0);
+  EXPECT_EQ(nsga.tell(ObjectiveRows{{3}, {1}, {5}, {6}}), (std::vector<std::size_t>{0, 1, 2, 3}));
+  Rng g1 = generation_rng(1, 1);
+  const auto children = nsga.ask(g1);
+  // The parents' scores worsen (their behaviors are no longer new): the children win.
+  nsga.rescore(ObjectiveRows{{9}, {9}, {9}, {9}});
+  EXPECT_EQ(nsga.objectives(), (ObjectiveRows{{9}, {9}, {9}, {9}}));
+  EXPECT_EQ(nsga.tell(ObjectiveRows{{2}, {7}, {0}, {8}}), (std::vector<std::size_t>{4, 5, 6, 7}));
+  EXPECT_EQ(nsga.population(), children);
+  EXPECT_THROW(nsga.rescore(ObjectiveRows{{1}, {1}}), std::invalid_argument);
+  EXPECT_THROW(nsga.rescore(ObjectiveRows{{1, 2}, {1, 2}, {1, 2}, {1, 2}}), std::invalid_argument);
+}
+
 TEST(Nsga2, NanObjectivesRankLastAndLoseTheirPlace) {
   Nsga2Settings s;
   s.population = 4;

@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 
 import esc
-from conftest import HOMING, TREES, run_esc
+from conftest import HOMING, SOURCE, TREES, run_esc
 
 # The replay CSV's columns that Env.state() gives, all compared exactly (the CSV writes 17
 # significant digits, read back with pandas' round-trip parser).
@@ -82,6 +82,19 @@ def test_spaces_without_and_with_a_controller(homing_script):
     assert sc.action_space.shape == (6,) and sc.action_space.low.tolist() == [0] * 6
     assert sc.choices == ["forward", "left", "right"]
     assert esc.Env(homing_script, "homing", "SV").action_space.shape == (4,)
+
+
+def test_the_navigators_rangefinders_and_radars_are_observations_in_0_1():
+    script = esc.compile(SOURCE / "examples" / "maze.esc")
+    env = esc.Env(script, "maze_navigation", "navigator_net", seed=1)
+    assert env.observation_names == [f"range[{i}]" for i in range(6)] + [f"radar[{i}]" for i in range(4)]
+    assert env.observation_space.low.tolist() == [0] * 10 and env.observation_space.high.tolist() == [1] * 10
+    observation, _ = env.reset()
+    assert env.observation_space.contains(observation)
+    assert observation[6:].sum() == 1   # the goal lies in exactly one radar slice
+    for _ in range(30):
+        observation, *_ = env.step([1.0, 0.6])
+        assert env.observation_space.contains(observation)
 
 
 def test_driving_the_wheels_by_hand_ends_by_truncation():

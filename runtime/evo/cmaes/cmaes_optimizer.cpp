@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "runtime/evo/run_streams.hpp"
+
 namespace esc::evo {
 
 namespace {
@@ -10,16 +12,11 @@ class CmaesOptimizer final : public Optimizer {
  public:
   CmaesOptimizer(const CmaesSettings& settings, const Problem& problem)
       : cma_(settings, problem.genome_size), seed_(problem.seed) {
-    if (problem.start != nullptr) {
-      cma_.start(*problem.start);
-    } else {
-      Rng init(seed_, {static_cast<std::uint64_t>(Stream::Init)});
-      cma_.start(init);
-    }
+    start_core(cma_, problem);
   }
 
   std::vector<Genome> ask(int generation) override {
-    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(generation)});
+    Rng rng = breed_stream(seed_, generation);
     return cma_.ask(rng);
   }
 

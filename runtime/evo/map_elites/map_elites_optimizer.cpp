@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/evo/run_streams.hpp"
+
 namespace esc::evo {
 
 namespace {
@@ -59,7 +61,7 @@ class MapElitesOptimizer final : public Optimizer {
   }
 
   std::vector<Genome> ask(int generation) override {
-    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(generation)});
+    Rng rng = breed_stream(seed_, generation);
     return core_.ask(rng);
   }
 

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "runtime/evo/run_streams.hpp"
+
 namespace esc::evo {
 
 Nsga2Settings variation_of(const NoveltyRunSettings& s) {
@@ -32,17 +34,12 @@ class NoveltyOptimizer final : public Optimizer {
         archive_(archive_settings(settings), space_of(problem)),
         seed_(problem.seed),
         with_fitness_(settings.with_fitness) {
-    if (problem.start != nullptr) {
-      core_.start(*problem.start);
-    } else {
-      Rng init(seed_, {static_cast<std::uint64_t>(Stream::Init)});
-      core_.start(init);
-    }
+    start_core(core_, problem);
   }
 
   std::vector<Genome> ask(int generation) override {
     generation_ = static_cast<std::uint64_t>(generation);
-    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), generation_});
+    Rng rng = breed_stream(seed_, generation);
     return core_.ask(rng);
   }
 

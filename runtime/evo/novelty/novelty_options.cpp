@@ -2,6 +2,7 @@
 
 #include "runtime/evo/limits.hpp"
 #include "runtime/evo/novelty/novelty_optimizer.hpp"
+#include "runtime/evo/nsga2/nsga2_options.hpp"
 
 namespace esc::evo {
 
@@ -13,12 +14,12 @@ using namespace option;
 
 constexpr double kZero = 0.0;
 constexpr double kOne = 1.0;
-constexpr double kMaxEta = 1e6;
 
 }  // namespace
 
 const std::vector<AlgorithmOption>& novelty_options() {
-  static const std::vector<AlgorithmOption> table = {
+  static const std::vector<AlgorithmOption> table = [] {
+    std::vector<AlgorithmOption> t = {
       {"objectives", F::Word, "novelty alone, or novelty and the fitness as two NSGA-II objectives",
        {"novelty", "novelty_fitness"}, &two_words<S, &S::with_fitness>,
        [](const std::any& s) {
@@ -33,19 +34,10 @@ const std::vector<AlgorithmOption>& novelty_options() {
        {}, &real<S, &S::threshold, &kZero, true, &kMaxGeneBound, false>, &real_text<S, &S::threshold>},
       {"random_probability", F::Number, "probability that a candidate enters the archive (archive random)", {},
        &real<S, &S::random_probability, &kZero, false, &kOne, false>, &real_text<S, &S::random_probability>},
-      {"population", F::Number, "parents kept and children made per generation (even)", {},
-       &whole<S, &S::population, 2, kNsga2MaxPopulation>, &whole_text<S, &S::population>},
-      {"crossover", F::Number, "probability that a pair of tournament winners is crossed (SBX)", {},
-       &real<S, &S::crossover, &kZero, false, &kOne, false>, &real_text<S, &S::crossover>},
-      {"eta_crossover", F::Number, "SBX's distribution index", {},
-       &real<S, &S::eta_crossover, &kZero, false, &kMaxEta, false>, &real_text<S, &S::eta_crossover>},
-      {"eta_mutation", F::Number, "polynomial mutation's distribution index", {},
-       &real<S, &S::eta_mutation, &kZero, false, &kMaxEta, false>, &real_text<S, &S::eta_mutation>},
-      {"mutation", F::Number, "probability that a gene mutates; 0: 1 / (the network's weights)", {},
-       &real<S, &S::mutation, &kZero, false, &kOne, false>, &real_text<S, &S::mutation>},
-      {"bounds", F::Range, "every weight stays in [LO, HI] (LO < HI, both within +-1e6)", {},
-       &bounds<S, &kMaxGeneBound>, &bounds_text<S>},
-  };
+    };
+    for (AlgorithmOption& o : nsga2_variation_options<S>()) t.push_back(std::move(o));
+    return t;
+  }();
   return table;
 }
 

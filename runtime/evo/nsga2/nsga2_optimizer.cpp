@@ -5,6 +5,7 @@
 #include <string>
 
 #include "runtime/evo/pareto/hypervolume.hpp"
+#include "runtime/evo/run_streams.hpp"
 
 namespace esc::evo {
 
@@ -17,16 +18,11 @@ class Nsga2Optimizer final : public Optimizer {
         seed_(problem.seed),
         objectives_(problem.objectives.size()),
         reference_(hypervolume_reference(problem)) {
-    if (problem.start != nullptr) {
-      core_.start(*problem.start);
-    } else {
-      Rng init(seed_, {static_cast<std::uint64_t>(Stream::Init)});
-      core_.start(init);
-    }
+    start_core(core_, problem);
   }
 
   std::vector<Genome> ask(int generation) override {
-    Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), static_cast<std::uint64_t>(generation)});
+    Rng rng = breed_stream(seed_, generation);
     return core_.ask(rng);
   }
 

@@ -2,37 +2,10 @@
 
 #include <stdexcept>
 
-#include "runtime/evo/limits.hpp"
-
 namespace esc::evo {
 
-namespace {
-
-using S = Nsga2Settings;
-using F = OptionForm;
-using namespace option;
-
-constexpr double kZero = 0.0;
-constexpr double kOne = 1.0;
-constexpr double kMaxEta = 1e6;
-
-}  // namespace
-
 const std::vector<AlgorithmOption>& nsga2_options() {
-  static const std::vector<AlgorithmOption> table = {
-      {"population", F::Number, "parents kept and children made per generation (even)", {},
-       &whole<S, &S::population, 2, kNsga2MaxPopulation>, &whole_text<S, &S::population>},
-      {"crossover", F::Number, "probability that a pair of tournament winners is crossed (SBX)", {},
-       &real<S, &S::crossover, &kZero, false, &kOne, false>, &real_text<S, &S::crossover>},
-      {"eta_crossover", F::Number, "SBX's distribution index: larger, children nearer their parents", {},
-       &real<S, &S::eta_crossover, &kZero, false, &kMaxEta, false>, &real_text<S, &S::eta_crossover>},
-      {"eta_mutation", F::Number, "polynomial mutation's distribution index", {},
-       &real<S, &S::eta_mutation, &kZero, false, &kMaxEta, false>, &real_text<S, &S::eta_mutation>},
-      {"mutation", F::Number, "probability that a gene mutates; 0: 1 / (the network's weights)", {},
-       &real<S, &S::mutation, &kZero, false, &kOne, false>, &real_text<S, &S::mutation>},
-      {"bounds", F::Range, "every weight stays in [LO, HI] (LO < HI, both within +-1e6)", {},
-       &bounds<S, &kMaxGeneBound>, &bounds_text<S>},
-  };
+  static const std::vector<AlgorithmOption> table = nsga2_variation_options<Nsga2Settings>();
   return table;
 }
 
