@@ -129,8 +129,8 @@ void resolve_objectives(eval::ExperimentSpec& x, const ObjectiveItems& items) {
   if (!x.objectives.empty()) {
     std::string text;
     for (const eval::ObjectiveSpec& o : x.objectives)
-      text += fmt::format("{}{}{}{}", text.empty() ? "" : "; ", o.name, o.minimize ? " minimize" : "",
-                          o.range ? " " + range_text(*o.range) : "");
+      text += fmt::format("{}{}{}{}{}", text.empty() ? "" : "; ", o.name, o.minimize ? " minimize" : "",
+                          o.range ? " " : "", o.range ? range_text(*o.range) : std::string());
     x.resolved_settings["objectives"] = text;
   }
   std::string text;
@@ -139,7 +139,7 @@ void resolve_objectives(eval::ExperimentSpec& x, const ObjectiveItems& items) {
     text += fmt::format("{}{}: {}{} {}", text.empty() ? "" : "; ", d.name, d.at_evaluation ? "evaluation: " : "",
                         items.descriptors[i]->text, range_text(d.range));
     if (!d.at_evaluation && d.reduce != eval::Reduction::Mean)
-      text += " by " + reduction_names()[static_cast<std::size_t>(d.reduce)];
+      text += fmt::format(" by {}", reduction_names()[static_cast<std::size_t>(d.reduce)]);
   }
   if (!text.empty()) x.resolved_settings["descriptors"] = text;
 }
