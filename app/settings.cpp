@@ -91,8 +91,8 @@ void check_memory(const eval::ExperimentSpec& spec) {
   const std::string problem = eval::memory_problem(spec, true, eval::memory_limit());
   if (!problem.empty())
     throw Error(ErrorKind::Memory, problem,
-                "lower lambda (or the GP population, max_size, runs, epochs x steps), or run on a machine with more "
-                "memory");
+                "lower what the algorithm holds (the ES's lambda, GP's population and max_size, MAP-Elites' bins or "
+                "cells), the runs or epochs x steps, or run on a machine with more memory");
 }
 
 nlohmann::ordered_json to_json(const Overrides& o) {

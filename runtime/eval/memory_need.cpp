@@ -59,11 +59,22 @@ MemoryLimit memory_limit() {
 std::string memory_problem(const ExperimentSpec& spec, bool trace_best, const MemoryLimit& limit) {
   const double need = memory_needed_bytes(spec, trace_best);
   if (need <= limit.bytes) return {};
-  return fmt::format("experiment `{}` needs at least {} of memory at once (lambda {}, {} runs, {} epochs x {} steps{}); "
-                     "{} is {}",
-                     spec.name, bytes_text(need), spec.es.lambda, spec.runs, spec.epochs, spec.steps,
-                     spec.gp ? fmt::format(", GP population {} of up to {} nodes", spec.gp->population, spec.gp->max_size)
-                             : std::string(),
+  // What takes the most: the generation of one run of the hungriest controller.
+  const control::ControllerSpec* hungriest = nullptr;
+  double most = -1.0;
+  for (const control::ControllerSpec& c : spec.controllers)
+    if (const double b = generation_bytes(spec, c); b > most) {
+      most = b;
+      hungriest = &c;
+    }
+  std::string what;
+  if (hungriest != nullptr) {
+    const Evolution e = spec.evolution_of(*hungriest);
+    const std::string algorithm = e.algorithm != nullptr ? std::string(e.algorithm->what) : "its optimizer";
+    what = fmt::format("{} of `{}`: {} per run; ", algorithm, hungriest->name, bytes_text(most));
+  }
+  return fmt::format("experiment `{}` needs at least {} of memory at once ({}{} run{}, {} epochs x {} steps); {} is {}",
+                     spec.name, bytes_text(need), what, spec.runs, spec.runs == 1 ? "" : "s", spec.epochs, spec.steps,
                      limit.what, bytes_text(limit.bytes));
 }
 

@@ -47,9 +47,9 @@ R on(const std::any& settings, const Problem& problem) {
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> table = {
       {"es", 1, true, false, &make<EsSettings, &make_es>, &of<EsSettings, std::size_t, &es_population>,
-       &of<EsSettings, double, &es_memory_bytes>},
+       &of<EsSettings, double, &es_memory_bytes>, "the ES"},
       {"gp", 1, false, true, &make<gp::GpSettings, &gp::make_gp>,
-       &of<gp::GpSettings, std::size_t, &gp::gp_population>, &of<gp::GpSettings, double, &gp::gp_memory_bytes>},
+       &of<gp::GpSettings, std::size_t, &gp::gp_population>, &of<gp::GpSettings, double, &gp::gp_memory_bytes>, "GP"},
       {"cmaes", 1, true, false, &make<CmaesSettings, &make_cmaes>,
        &of<CmaesSettings, std::size_t, &cmaes_population>, &of<CmaesSettings, double, &cmaes_memory_bytes>, "CMA-ES",
        &cmaes_options, &defaults<CmaesSettings>, &of<CmaesSettings, std::string, &cmaes_problem>},

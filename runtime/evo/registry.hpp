@@ -33,7 +33,7 @@ struct Algorithm {
   // `problem` ("" when they can: an archive's cells need declared descriptors, ...). Null
   // for the paper's ES and GP, whose options the compiler keeps in tables of their own
   // (their historic keys).
-  std::string_view what = {};     // in messages: "CMA-ES"
+  std::string_view what = {};     // in messages: "CMA-ES", "the ES"
   const std::vector<AlgorithmOption>& (*options)() = nullptr;
   std::any (*defaults)() = nullptr;
   std::string (*problem)(const std::any& settings, const Problem& problem) = nullptr;

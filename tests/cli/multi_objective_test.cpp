@@ -2,12 +2,15 @@
 // (experiments/examples/speed_energy.esc) and MAP-Elites (behavior_map.esc) run, store their
 // metrics every generation, give the same results on any number of threads, and a run
 // killed mid-run resumes to exactly the unbroken run, Lehman & Stanley's maze study too.
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <sys/resource.h>
 
 #include "tests/cli/esc_process.hpp"
 #include "tests/cli/results_support.hpp"
@@ -52,6 +55,23 @@ TEST(MultiObjective, MapElitesStoresItsArchiveMetricsEveryGeneration) {
     EXPECT_GT(coverage.back(), 0.0);
     EXPECT_LE(coverage.back(), 1.0);
   }
+}
+
+TEST(MultiObjective, AnArchiveLargerThanMemoryIsRefusedBeforeTheRun) {
+  const fs::path out = scratch("map-elites-huge");
+  // 5,000 x 5,000 cells of 18 weights, about 8 GB, under an address-space limit of 4 GB that
+  // esc inherits (so the test does not depend on the machine's memory).
+  rlimit before{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &before), 0);
+  rlimit limited = before;
+  limited.rlim_cur = std::min<rlim_t>(before.rlim_max, rlim_t{4} << 30);
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &limited), 0);
+  const Outcome o = esc("run " + example("behavior_map") + " --set map_elites.bins=5000 --out " + out.string());
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &before), 0);
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("(MAP-Elites of `CC_8_2`: "), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("MAP-Elites' bins or cells"), std::string::npos) << o.output;
+  EXPECT_FALSE(fs::exists(out)) << "refused before the run directory is made";
 }
 
 TEST(MultiObjective, NsgaIiStoresItsFrontAndHypervolumeEveryGeneration) {
