@@ -116,26 +116,25 @@ bool controller_reads(const control::ControllerSpec& c, expr::Slot slot) noexcep
   return false;
 }
 
-}  // namespace
-
-bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& controller, expr::Slot slot) noexcept {
+bool fitness_reads(const FitnessSpec& fitness, expr::Slot slot) noexcept {
   if (program_reads(fitness.step, slot)) return true;
   for (const expr::Program& p : fitness.stop_when)
     if (program_reads(p, slot)) return true;
   // An end term reads the last step's frame.
   for (const auto* end : {&fitness.epoch_end, &fitness.evaluation_end})
     if (*end && program_reads(**end, slot)) return true;
-  return controller_reads(controller, slot);
+  return false;
+}
+
+}  // namespace
+
+bool reads_slot(const FitnessSpec& fitness, const control::ControllerSpec& controller, expr::Slot slot) noexcept {
+  return fitness_reads(fitness, slot) || controller_reads(controller, slot);
 }
 
 bool reads_slot(const ExperimentSpec& spec, const control::ControllerSpec& controller, expr::Slot slot) noexcept {
-  const auto fitness_reads = [&](const FitnessSpec& f) {
-    if (program_reads(f.step, slot)) return true;
-    for (const auto* end : {&f.epoch_end, &f.evaluation_end})
-      if (*end && program_reads(**end, slot)) return true;
-    return false;
-  };
-  if (std::any_of(spec.further.begin(), spec.further.end(), fitness_reads)) return true;
+  for (const FitnessSpec& f : spec.further)
+    if (fitness_reads(f, slot)) return true;
   for (const DescriptorSpec& d : spec.descriptors)
     if (program_reads(d.program, slot)) return true;
   return reads_slot(spec.fitness, controller, slot);
