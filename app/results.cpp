@@ -6,8 +6,10 @@
 
 #include <fmt/format.h>
 
+#include "compiler/names.hpp"
 #include "runtime/report/html_report.hpp"
 #include "runtime/store/export.hpp"
+#include "runtime/store/members_export.hpp"
 #include "runtime/store/metrics_export.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/usage_export.hpp"
@@ -22,14 +24,30 @@ std::vector<store::StoredDirectory> load_all(const std::vector<std::filesystem::
   return all;
 }
 
+// Empty (the default table), or one of kTables; std::invalid_argument otherwise, before any
+// directory is read.
+void check_table(std::string_view table) {
+  if (table.empty() || std::find(std::begin(kTables), std::end(kTables), table) != std::end(kTables)) return;
+  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front or archive",
+                                    table);
+  if (const auto near = compiler::closest(std::string(table), {std::begin(kTables), std::end(kTables)}))
+    message += fmt::format("; did you mean `{}`?", *near);
+  throw std::invalid_argument(message);
+}
+
 }  // namespace
 
 std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv) {
-  if (!table.empty() && std::find(std::begin(kTables), std::end(kTables), table) == std::end(kTables))
-    throw std::invalid_argument(fmt::format("no table `{}`: a directory exports generations, usage or metrics", table));
-  const std::vector<store::StoredDirectory> all = load_all(dirs);
+  check_table(table);
+  return table_text(load_all(dirs), table, csv);
+}
+
+std::string table_text(const std::vector<store::StoredDirectory>& all, std::string_view table, bool csv) {
+  check_table(table);
   if (table == "usage") return csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n";
   if (table == "metrics") return csv ? store::metrics_csv(all) : store::metrics_json(all).dump(2) + "\n";
+  if (table == "front" || table == "archive")
+    return csv ? store::members_csv(all, table) : store::members_json(all, table).dump(2) + "\n";
   return csv ? store::export_csv(all) : store::export_json(all).dump(2) + "\n";
 }
 

@@ -7,16 +7,21 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/store/results_db.hpp"
+
 namespace esc::app {
 
 // The tables a directory exports: "generations" (per-generation statistics; the default),
-// "usage" (steps each behavior acted) and "metrics" (what each run's optimizer reported).
-inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics"};
+// "usage" (steps each behavior acted), "metrics" (what each run's optimizer reported),
+// "front" and "archive" (what NSGA-II, MAP-Elites and novelty search kept, per generation).
+inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics", "front", "archive"};
 
 // Table `table` of every directory in `dirs`, as CSV or (csv false) JSON; JSON without a
 // table named is everything stored. Throws store::StoreError for a directory that is not a
-// run's, std::invalid_argument for an unknown table.
+// run's, std::invalid_argument for an unknown table (naming the tables, and the nearest).
 [[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv);
+// The same of directories already read.
+[[nodiscard]] std::string table_text(const std::vector<store::StoredDirectory>& dirs, std::string_view table, bool csv);
 
 struct ReportFiles {
   std::filesystem::path html;

@@ -1,5 +1,7 @@
 #include "app/stored_run.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "app/compile.hpp"
@@ -8,6 +10,7 @@
 #include "app/settings.hpp"
 #include "app/stored_sources.hpp"
 #include "app/version.hpp"
+#include "runtime/eval/run_optimizer.hpp"
 #include "runtime/eval/settings_history.hpp"
 
 namespace esc::app {
@@ -73,6 +76,32 @@ eval::ExperimentSpec experiment_for_run(const StoredRun& run, const std::filesys
   eval::ExperimentSpec& spec = pick_experiment(compiled, script, experiment);
   apply_settings(settings, spec);
   return for_evaluation(spec, compiled, settings, run, events);
+}
+
+evo::Members final_members(const StoredRun& stored, const eval::ExperimentSpec& spec, const std::string& controller,
+                           int run) {
+  const auto c = std::find_if(stored.stored->controllers.begin(), stored.stored->controllers.end(),
+                              [&](const store::StoredController& x) { return x.name == controller; });
+  const auto compared = std::find_if(spec.controllers.begin(), spec.controllers.end(),
+                                     [&](const control::ControllerSpec& x) { return x.name == controller; });
+  if (c == stored.stored->controllers.end() || compared == spec.controllers.end())
+    throw Error(ErrorKind::Results, fmt::format("the run has no controller `{}`", controller));
+  const auto finished = std::find_if(c->finished.begin(), c->finished.end(),
+                                     [&](const eval::RunResult& r) { return r.run == run; });
+  if (finished == c->finished.end())
+    throw Error(ErrorKind::Results, fmt::format("run {} of {} is not finished", run + 1, controller));
+  evo::Problem problem = spec.problem_of(*compared);
+  problem.seed = finished->seed;
+  try {
+    eval::RunOptimizer made = eval::make_run_optimizer(spec, *compared, problem);
+    eval::load_run_state(made, *compared, store::ResultsDb::open(stored.root, true).load_state(*c, run));
+    if (auto kept = made.optimizer->members(false)) return std::move(*kept);
+  } catch (const std::invalid_argument& e) {
+    throw Error(ErrorKind::Results, e.what());
+  }
+  throw Error(ErrorKind::Results,
+              fmt::format("{} ({}) keeps no front or archive beside each run's best: replay its best instead", controller,
+                          c->algorithm));
 }
 
 }  // namespace esc::app

@@ -30,4 +30,11 @@ struct StoredRun {
                                                       const std::string& experiment,
                                                       const compiler::CompileOptions& options, Events& events);
 
+// What run `run` (from 0) of `controller` kept beside its best after its last generation
+// (evo::Optimizer::members, genomes included): its optimizer rebuilt for `spec` (the
+// experiment the run ran, experiment_of_run) from the state the run stored. Throws Error
+// when the run is not finished or its optimizer keeps no members, or the state is damaged.
+[[nodiscard]] evo::Members final_members(const StoredRun& stored, const eval::ExperimentSpec& spec,
+                                         const std::string& controller, int run);
+
 }  // namespace esc::app

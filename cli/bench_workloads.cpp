@@ -1,4 +1,4 @@
-// `esc bench` without --campaign: the paper's workloads timed with Google Benchmark
+// `esc bench` without --campaign: the paper's workloads and the maze timed with Google Benchmark
 // (built with ESC_WITH_BENCHMARK; bench_workloads_missing.cpp stands in without it).
 #include <map>
 #include <string>
@@ -48,8 +48,9 @@ const control::ControllerSpec* paper_sc(const eval::ExperimentSpec& e) {
 
 // The paper's two workloads: obstacle avoidance with the 8-14-6 symbolic controller, and
 // the energy experiment with the 17-5-2 Elman classical controller (IR and light sensors,
-// the accumulator, a recharge zone drawn at random every epoch).
-struct PaperWorkload {
+// the accumulator, a recharge zone drawn at random every epoch); and Lehman & Stanley's
+// medium maze.
+struct TimedWorkload {
   std::string script;        // under experiments/
   std::string controller;    // empty: the 8-14-6 symbolic controller
   std::string what;          // how the line is labelled
@@ -58,7 +59,7 @@ struct PaperWorkload {
   const control::ControllerSpec* controller_spec = nullptr;
 };
 
-bool load_workload(PaperWorkload& w) {
+bool load_workload(TimedWorkload& w) {
   const std::filesystem::path script = standard_library_dir() / w.script;
   w.compiled = load_script(script);
   if (!w.compiled.ok() || w.compiled.experiments.empty()) return false;
@@ -71,7 +72,7 @@ bool load_workload(PaperWorkload& w) {
   return w.controller_spec != nullptr;
 }
 
-void print_workload(const PaperWorkload& w, const CollectingReporter& reporter, const std::vector<int>& counts) {
+void print_workload(const TimedWorkload& w, const CollectingReporter& reporter, const std::vector<int>& counts) {
   const std::string name = fmt::format("{}/{}", w.experiment->name, w.controller_spec->name);
   const auto one = reporter.values.find("step/" + name);
   if (one != reporter.values.end())
@@ -91,17 +92,22 @@ void print_workload(const PaperWorkload& w, const CollectingReporter& reporter, 
 }  // namespace
 
 int bench_workloads(const BenchOptions& o) {
-  std::vector<PaperWorkload> workloads(2);
+  std::vector<TimedWorkload> workloads(3);
   workloads[0].script = "paper/obstacle_avoidance.esc";
   workloads[0].what = "IR, physics, network, fitness";
   workloads[1].script = "paper/energy.esc";
   workloads[1].controller = "CC";
   workloads[1].what = "IR, light, energy, recharge zone, physics, Elman network, fitness";
-  for (PaperWorkload& w : workloads)
+  // Lehman & Stanley's medium maze (issue 30): the navigator's network in a maze of segment
+  // walls, 400 steps an evaluation.
+  workloads[2].script = "lehman_stanley/mazes.esc";
+  workloads[2].controller = "navigator_net";
+  workloads[2].what = "6 rangefinders, 4 goal radars, 11 walls, physics, network, fitness, 2 descriptors";
+  for (TimedWorkload& w : workloads)
     if (!load_workload(w)) return kExitBadInput;
   const int max_threads = o.max_threads > 0 ? o.max_threads : static_cast<int>(std::thread::hardware_concurrency());
   const std::vector<int> counts = thread_counts(std::max(1, max_threads));
-  for (const PaperWorkload& w : workloads) bench::register_workload({w.experiment, w.controller_spec}, counts);
+  for (const TimedWorkload& w : workloads) bench::register_workload({w.experiment, w.controller_spec}, counts);
 
   std::vector<std::string> args = {"esc bench", fmt::format("--benchmark_min_time={}", o.min_time_s)};
   args.insert(args.end(), o.benchmark_args.begin(), o.benchmark_args.end());
@@ -115,7 +121,7 @@ int bench_workloads(const BenchOptions& o) {
   benchmark::Shutdown();
 
   fmt::print("\nmachine: {}, {} hardware threads\n", cpu_model(), std::thread::hardware_concurrency());
-  for (const PaperWorkload& w : workloads) print_workload(w, reporter, counts);
+  for (const TimedWorkload& w : workloads) print_workload(w, reporter, counts);
   for (const char* size : {"15", "50", "150"}) {
     const auto flat = reporter.values.find(fmt::format("BM_GpFlat/{}", size));
     const auto rec = reporter.values.find(fmt::format("BM_GpRecursive/{}", size));

@@ -1,6 +1,12 @@
 #include "cli/command_line.hpp"
 
+#include <iterator>
+#include <string>
+#include <vector>
+
 #include <fmt/format.h>
+
+#include "app/results.hpp"
 
 #include "runtime/core/seed_text.hpp"
 
@@ -76,8 +82,10 @@ CLI::App* add_export(CLI::App& app, ExportOptions& o) {
       ->check(CLI::IsMember({"csv", "json"}));
   command->add_option("--table", o.table,
                          "usage: the steps each behavior acted, per run, generation and behavior; metrics: what each "
-                         "run's optimizer reported (CMA-ES's sigma, ...) per generation (tidy tables)")
-      ->check(CLI::IsMember({"usage", "metrics"}));
+                         "run's optimizer reported (CMA-ES's sigma, ...) per generation; front: NSGA-II's first front "
+                         "per generation; archive: MAP-Elites' and novelty search's archive changes per generation "
+                         "(tidy tables)")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(app::kTables), std::end(app::kTables))));
   command->add_option("--out", o.out, "output file (default: standard output)");
   return command;
 }
@@ -108,6 +116,10 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
   command->add_option("--experiment", o.experiment, "experiment of --script (default: its first)");
   command->add_option("--seed", o.seed, "evaluation seed (default: that of the stored best evaluation)")
       ->check(kSeed);
+  command->add_option("--member", o.member,
+                         "replay a member of the run's final Pareto front (its position, from 0) or archive (its "
+                         "cell; `esc export --table front|archive` lists them) instead of its best")
+      ->check(CLI::NonNegativeNumber);
   command->add_flag("--animate", o.animate,
                        "also write an animation: MP4 with ffmpeg, else GIF with ImageMagick's convert");
   return command;

@@ -58,6 +58,9 @@ struct ReplayOptions {
   std::filesystem::path script;              // evaluate in this script's experiment instead
   std::string experiment;                    // of `script`; empty: its first
   std::optional<std::uint64_t> seed;         // none: the stored best evaluation's seed
+  // A member of the run's final front (its position, from 0) or archive (its cell) instead
+  // of the run's best.
+  std::optional<std::int64_t> member;
   bool animate = false;                      // also an MP4 or GIF, where a tool for it is present
 };
 

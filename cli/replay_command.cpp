@@ -40,6 +40,8 @@ struct Subject {
   std::uint64_t seed = 0;
   std::optional<double> fitness;              // as stored, to check against
   const store::StoredReplay* stored = nullptr;   // the same evaluation stored in esc.db, if it is
+  std::string member;                         // "cell 17": a member of the final front or archive
+  std::optional<double> member_fitness;       // as stored in its own evaluation
 };
 
 struct Collect final : eval::TraceSink {
@@ -123,6 +125,33 @@ std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, cons
     if (const auto near = compiler::closest(o.controller, names)) complain("help: did you mean `{}`?\n", *near);
   }
   return subjects;
+}
+
+// Makes `s` the member `member` of its run's final front or archive. False after printing
+// an error.
+bool pick_member(Subject& s, const evo::Members& kept, std::int64_t member) {
+  const bool front = kept.kind == evo::MemberKind::Front;
+  const auto it = std::find_if(kept.members.begin(), kept.members.end(),
+                               [&](const evo::Member& m) { return m.cell == member; });
+  if (it == kept.members.end() || it->genome.empty()) {
+    if (!front && it == kept.members.end())
+      complain("esc: error: cell {} of {} run {}'s archive is empty ({} cells filled; esc export --table archive "
+               "lists them)\n", member, s.controller, s.run + 1, kept.members.size());
+    else if (it == kept.members.end())
+      complain("esc: error: {} run {}'s final front has {} members, numbered from 0; {} is not one\n", s.controller,
+               s.run + 1, kept.members.size(), member);
+    else
+      complain("esc: error: {} run {}'s archive keeps behaviors, not the genomes that produced them: there is "
+               "nothing to replay in cell {}\n", s.controller, s.run + 1, member);
+    return false;
+  }
+  s.genome = it->genome;
+  s.member = fmt::format("{} {}", front ? "member" : "cell", member);
+  s.fitness.reset();
+  s.stored = nullptr;
+  // The fitness follows the objectives the optimizer computes itself (novelty).
+  if (kept.own_objectives.size() < it->objectives.size()) s.member_fitness = it->objectives[kept.own_objectives.size()];
+  return true;
 }
 
 // A genome file written by `esc run` (CONTROLLER/run-NN.best.json). Nullopt after printing.
@@ -224,13 +253,15 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   // Named for what was replayed: another experiment's or another seed's files stand beside
   // the faithful replay's, never over them.
   std::string stem = fmt::format("replay-{}-run-{:02}", s.controller, s.run + 1);
+  if (!s.member.empty()) stem += "-" + s.member;
+  std::replace(stem.begin(), stem.end(), ' ', '-');
   if (!o.script.empty()) stem += "-in-" + spec.name;
   if (o.seed) stem += fmt::format("-seed-{}", *o.seed);
   std::error_code ec;
   fs::create_directories(out, ec);
   report::TrajectoryFigure figure;
-  figure.title = fmt::format("{} ({}), run {}, in experiment {}", s.controller, controller->architecture(), s.run + 1,
-                             spec.name);
+  figure.title = fmt::format("{} ({}), run {}{}, in experiment {}", s.controller, controller->architecture(), s.run + 1,
+                             s.member.empty() ? "" : ", " + s.member, spec.name);
   figure.subtitle = fmt::format("fitness {:.2f} over {} epoch{} of {} steps; {} drawn; arena {}; evaluation seed {}",
                                 result.fitness, spec.epochs, spec.epochs == 1 ? "" : "s", spec.steps, epochs_text(epochs, spec.epochs),
                                 spec.arena_name, s.seed);
@@ -240,9 +271,13 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   figure.steps = drawn;
   store::write_atomically(out / (stem + ".svg"), report::trajectory_svg(figure));
   store::write_atomically(out / (stem + ".csv"), report::trajectory_csv(drawn, figure.choices, spec.robot.control_step_s));
-  say("esc: replayed {} run {} in {} (fitness {:.2f}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1, spec.name,
-      result.fitness, faithful && s.stored != nullptr && status == kExitOk ? ", identical to the stored replay" : "",
-      out.string(), stem);
+  // A member's evaluation seed is not stored: it is replayed with its run's best's, which
+  // measures what it measured wherever the evaluation draws nothing (no noise, fixed starts).
+  const std::string stored_member =
+      s.member_fitness ? fmt::format("; {:.17g} in its own evaluation", *s.member_fitness) : std::string();
+  say("esc: replayed {} run {}{} in {} (fitness {:.2f}{}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1,
+      s.member.empty() ? "" : " " + s.member, spec.name, result.fitness, stored_member,
+      faithful && s.stored != nullptr && status == kExitOk ? ", identical to the stored replay" : "", out.string(), stem);
   if (o.animate) {
     const std::optional<fs::path> movie = write_animation(figure, out / stem);
     if (!movie) return kExitBadInput;
@@ -340,6 +375,16 @@ int replay_command(const ReplayOptions& o) {
                        : app::experiment_for_run(run, o.script, o.experiment, default_compile_options(), events);
   const eval::ExperimentSpec* spec = &experiment;
 
+  if (o.member) {
+    if (!stored) {
+      complain("esc: error: --member picks a member of a run directory's front or archive, not of a genome file\n");
+      return kExitUsage;
+    }
+    const eval::ExperimentSpec ran = o.script.empty() ? experiment
+                                                      : app::experiment_of_run(run, default_compile_options(), events);
+    for (Subject& s : subjects)
+      if (!pick_member(s, app::final_members(run, ran, s.controller, s.run), *o.member)) return kExitBadInput;
+  }
   const auto epochs = parse_epochs(o.epochs, spec->epochs);
   if (!epochs) return kExitUsage;
   const fs::path out = !o.out.empty() ? o.out : genome_file ? o.source.parent_path() : dir;

@@ -98,6 +98,13 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
           .notes.emplace_back(it->second->refs[0].where, "first declared here");
       continue;
     }
+    // Exports and the report name a member's values by these names, objectives and
+    // descriptors side by side.
+    if (const auto it = seen.find(name.text); it != seen.end()) {
+      sink.error(name.where, fmt::format("descriptor `{}` has the name of an objective of this experiment", name.text))
+          .notes.emplace_back(it->second->refs[0].where, "the objective");
+      continue;
+    }
     eval::DescriptorSpec d;
     d.name = name.text;
     d.at_evaluation = item->at_evaluation;

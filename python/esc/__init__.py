@@ -18,7 +18,7 @@ a wrong argument (an unknown name, a genome of the wrong length).
 from esc._esc import __version__
 from esc.env import Box, Env, Policy
 from esc.errors import Diagnostic, Error, ScriptError, ScriptWarning
-from esc.evaluation import evaluate, evaluation_seed, run_seed
+from esc.evaluation import evaluate, evaluation_seed, measure, run_seed
 from esc.results import BestEvaluation, Run, open
 from esc.running import Generation, resume, run
 from esc.script import Controller, Script, compile
@@ -27,7 +27,7 @@ __all__ = [
     "__version__",
     "Box", "Env", "Policy",
     "Diagnostic", "Error", "ScriptError", "ScriptWarning",
-    "evaluate", "evaluation_seed", "run_seed",
+    "evaluate", "evaluation_seed", "measure", "run_seed",
     "BestEvaluation", "Run", "open",
     "Generation", "resume", "run",
     "Controller", "Script", "compile",

@@ -1,4 +1,5 @@
-"""Fitness of genomes: esc.evaluate, the function any Python optimizer can call."""
+"""Fitness of genomes: esc.evaluate, the function any Python optimizer can call, and esc.measure,
+every objective and descriptor of them."""
 
 from typing import Optional, Sequence, Union
 
@@ -53,20 +54,43 @@ def evaluate(script: Union[Script, PathOrSource], experiment: str, controller: s
     lengths), or a tree that is not one of the controller's.
     """
     s = as_script(script)
+    rows, count = _genome_rows(s, experiment, controller, genomes)
+    return _esc.evaluate(s._compiled, experiment, controller, rows, epochs, _seeds(seed, count))
+
+
+def measure(script: Union[Script, PathOrSource], experiment: str, controller: str, genomes,
+            epochs: Optional[int] = None, seed: Seeds = 0) -> "pandas.DataFrame":
+    """Every objective and behavior descriptor of each genome, as esc measures them.
+
+    The same arguments and evaluations as esc.evaluate. Returns a pandas DataFrame with one row
+    per genome and one column per value, named as the script names them: the fitness first,
+    then each further objective (`objective G`, as measured: a minimised one is not negated),
+    then each descriptor (`descriptor D: ...`), in the order the experiment declares them.
+    The fitness column equals esc.evaluate's result bit for bit.
+    """
+    import pandas as pd
+
+    s = as_script(script)
+    rows, count = _genome_rows(s, experiment, controller, genomes)
+    names, values = _esc.measure(s._compiled, experiment, controller, rows, epochs, _seeds(seed, count))
+    return pd.DataFrame(values, columns=names)
+
+
+def _genome_rows(s: Script, experiment: str, controller: str, genomes):
+    """The genomes as the module takes them, and how many there are (raising ValueError as
+    esc.evaluate documents)."""
     c = s.controller(experiment, controller)
     if c.is_tree:
         if isinstance(genomes, str) or any(isinstance(g, str) for g in genomes):
             raise ValueError(f"`{controller}` is a tree controller: give its trees encoded, as "
                              "Run.best_genome(controller, run, encoded=True) returns them, not as text")
         rows = [np.asarray(g, dtype=np.float64).ravel() for g in genomes]
-        count = len(rows)
-    else:
-        rows = np.asarray(genomes, dtype=np.float64)
-        if rows.ndim != 2:
-            raise ValueError(f"genomes of `{controller}` are a 2-D array, one genome of {c.genome_size} weights per "
-                             f"row (genome[None, :] for one); got shape {rows.shape}")
-        count = rows.shape[0]
-    return _esc.evaluate(s._compiled, experiment, controller, rows, epochs, _seeds(seed, count))
+        return rows, len(rows)
+    rows = np.asarray(genomes, dtype=np.float64)
+    if rows.ndim != 2:
+        raise ValueError(f"genomes of `{controller}` are a 2-D array, one genome of {c.genome_size} weights per "
+                         f"row (genome[None, :] for one); got shape {rows.shape}")
+    return rows, rows.shape[0]
 
 
 def evaluation_seed(run_seed: int, generation: int, individual: int) -> int:

@@ -80,9 +80,11 @@ class Run:
 
     def table(self, name: str = "generations"):
         """Table `name` as a pandas DataFrame: "generations" (the default export: one row
-        per run and generation), "usage" (behavior usage per run, generation and behavior)
-        or "metrics" (what each optimizer reported per generation). ValueError for another
-        name.
+        per run and generation), "usage" (behavior usage per run, generation and behavior),
+        "metrics" (what each optimizer reported per generation), "front" (NSGA-II's first
+        front per generation) or "archive" (MAP-Elites' and novelty search's archive changes
+        per generation: the archive after generation g is
+        `t[t.generation <= g].groupby(["run", "cell"]).last()`). ValueError for another name.
 
         It is pandas.read_csv of the very text `esc export DIR --table NAME --format csv`
         writes (the `directory` column holds the path as given to esc.open), read with

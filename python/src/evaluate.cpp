@@ -1,4 +1,4 @@
-// The fitness of many genomes of one controller, each evaluated as a run evaluates an
+// The fitness (or every objective and descriptor) of many genomes of one controller, each evaluated as a run evaluates an
 // individual (eval::Evaluator: the same code, so the same doubles), on every thread while
 // Python goes on (the GIL released). Evaluation i draws its start poses and noise from seeds[i]
 // alone, so the result does not depend on the threads or the order.
@@ -62,10 +62,11 @@ std::vector<std::vector<double>> tree_genomes(const control::ControllerSpec& c, 
   return trees;
 }
 
-py::array_t<double> evaluate(const std::shared_ptr<CompiledScript>& script, const std::string& experiment,
-                             const std::string& controller, const py::handle& genomes, std::optional<int> epochs,
-                             const Seeds& seeds) {
-  eval::ExperimentSpec spec = find_experiment(*script, experiment);
+// Each genome's evaluation, as a run's; the experiment it ran in goes to `spec`.
+std::vector<eval::Evaluation> evaluations(const std::shared_ptr<CompiledScript>& script, const std::string& experiment,
+                                          const std::string& controller, const py::handle& genomes,
+                                          std::optional<int> epochs, const Seeds& seeds, eval::ExperimentSpec& spec) {
+  spec = find_experiment(*script, experiment);
   if (epochs)
     if (const std::string error = compiler::apply_setting(spec, "epochs", std::to_string(*epochs)); !error.empty())
       throw py::value_error("epochs=" + std::to_string(*epochs) + ": " + error);
@@ -74,16 +75,47 @@ py::array_t<double> evaluate(const std::shared_ptr<CompiledScript>& script, cons
   if (static_cast<std::size_t>(seeds.size()) != rows.size())
     throw py::value_error(std::to_string(seeds.size()) + " seeds for " + std::to_string(rows.size()) + " genomes");
   const std::span<const std::uint64_t> seed(seeds.data(), rows.size());
-  std::vector<double> fitness(rows.size());
+  std::vector<eval::Evaluation> out(rows.size());
   {
     const py::gil_scoped_release release;
     tbb::enumerable_thread_specific<eval::Evaluator> evaluators([&spec] { return eval::Evaluator(spec); });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size()), [&](const tbb::blocked_range<std::size_t>& r) {
       eval::Evaluator& e = evaluators.local();
-      for (std::size_t i = r.begin(); i != r.end(); ++i) fitness[i] = e.evaluate(c, rows[i], seed[i]).fitness;
+      for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = e.evaluate(c, rows[i], seed[i]);
     });
   }
-  return py::array_t<double>(static_cast<py::ssize_t>(fitness.size()), fitness.data());
+  return out;
+}
+
+py::array_t<double> evaluate(const std::shared_ptr<CompiledScript>& script, const std::string& experiment,
+                             const std::string& controller, const py::handle& genomes, std::optional<int> epochs,
+                             const Seeds& seeds) {
+  eval::ExperimentSpec spec;
+  const std::vector<eval::Evaluation> all = evaluations(script, experiment, controller, genomes, epochs, seeds, spec);
+  py::array_t<double> fitness(static_cast<py::ssize_t>(all.size()));
+  for (std::size_t i = 0; i < all.size(); ++i) fitness.mutable_at(static_cast<py::ssize_t>(i)) = all[i].fitness;
+  return fitness;
+}
+
+// Every objective (the fitness first, as measured) and descriptor of each genome: their
+// names, and a row of values per genome.
+py::tuple measure(const std::shared_ptr<CompiledScript>& script, const std::string& experiment,
+                  const std::string& controller, const py::handle& genomes, std::optional<int> epochs,
+                  const Seeds& seeds) {
+  eval::ExperimentSpec spec;
+  const std::vector<eval::Evaluation> all = evaluations(script, experiment, controller, genomes, epochs, seeds, spec);
+  std::vector<std::string> names{spec.fitness.name};
+  for (const eval::FitnessSpec& f : spec.further) names.push_back(f.name);
+  for (const eval::DescriptorSpec& d : spec.descriptors) names.push_back(d.name);
+  py::array_t<double> values({static_cast<py::ssize_t>(all.size()), static_cast<py::ssize_t>(names.size())});
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const auto row = static_cast<py::ssize_t>(i);
+    py::ssize_t col = 0;
+    values.mutable_at(row, col++) = all[i].fitness;
+    for (const double v : all[i].objectives) values.mutable_at(row, col++) = v;
+    for (const double v : all[i].descriptors) values.mutable_at(row, col++) = v;
+  }
+  return py::make_tuple(names, values);
 }
 
 }  // namespace
@@ -94,6 +126,10 @@ void bind_evaluate(py::module_& m) {
         "The fitness of each genome (rows of a 2-D array for a network, encoded trees for a tree controller), "
         "genome i evaluated with evaluation seed seeds[i] over `epochs` epochs (None: the experiment's), as a run "
         "evaluates an individual. On every thread, the GIL released.");
+  m.def("measure", &measure, py::arg("script"), py::arg("experiment"), py::arg("controller"), py::arg("genomes"),
+        py::arg("epochs"), py::arg("seeds"),
+        "As evaluate, every objective (the fitness first, as measured) and descriptor of each genome: (their names, "
+        "a 2-D array with a row per genome).");
   m.def("evaluation_seed", &eval::evaluation_seed, py::arg("run_seed"), py::arg("generation"), py::arg("individual"),
         "The evaluation seed of offspring `individual` of generation `generation` of the run seeded `run_seed`.");
   m.def("run_seed", &eval::run_seed, py::arg("master_seed"), py::arg("run"),

@@ -11,13 +11,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "app/results.hpp"
 #include "compiler/names.hpp"
 #include "python/src/bindings.hpp"
 #include "runtime/eval/campaign.hpp"
-#include "runtime/store/export.hpp"
-#include "runtime/store/metrics_export.hpp"
 #include "runtime/store/untouched_load.hpp"
-#include "runtime/store/usage_export.hpp"
 
 namespace esc::python {
 
@@ -29,15 +27,9 @@ class StoredRun {
  public:
   explicit StoredRun(const std::filesystem::path& dir) : dir_{dir, store::load_untouched(dir)} {}
 
+  // std::invalid_argument (a ValueError) for an unknown table, naming the nearest.
   [[nodiscard]] std::string table_csv(const std::string& name) const {
-    const std::vector<store::StoredDirectory> dirs{dir_};
-    if (name == "generations") return store::export_csv(dirs);
-    if (name == "usage") return store::usage_csv(dirs);
-    if (name == "metrics") return store::metrics_csv(dirs);
-    std::string message = "no table `" + name + "`; esc export has `generations`, `usage` and `metrics`";
-    if (const auto near = compiler::closest(name, {"generations", "usage", "metrics"}))
-      message += "; did you mean `" + *near + "`?";
-    throw py::value_error(message);
+    return app::table_text({dir_}, name.empty() ? std::string("generations") : name, true);
   }
 
   // The study's name, or "" for a plain experiment.

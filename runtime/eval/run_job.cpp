@@ -2,11 +2,13 @@
 // adds to ask/tell is what every run needs: the run's best and where it happened, the
 // optimizer's state after each generation (what the store keeps to resume and carry on),
 // a stored genome to start from or only evaluate, and the trees' texts at the end.
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "runtime/eval/campaign_parts.hpp"
-#include "runtime/evo/evaluate_only.hpp"
+#include "runtime/eval/run_optimizer.hpp"
 #include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/gp/print.hpp"
 #include "runtime/tree_control/inline_actions.hpp"
@@ -29,27 +31,27 @@ std::string behavior_body(const control::ControllerSpec& controller, const evo::
   }
 }
 
-std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "tree" : "network"; }
-
-// The optimizer of `controller`'s run, and the name and format its state is stored under.
-struct Made {
-  std::unique_ptr<evo::Optimizer> optimizer;
-  OptimizerState empty_state;
-};
-
-Made make_optimizer(const ExperimentSpec& spec, const control::ControllerSpec& controller, const evo::Problem& problem) {
-  if (spec.evaluates_only()) return {evo::make_evaluate_only(problem), {std::string(evo::kEvaluateOnly), 1, {}}};
-  const Evolution evolution = spec.evolution_of(controller);
-  if (evolution.algorithm == nullptr)
-    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name + "': no algorithm `" +
-                                controller.evolved_by + "`");
-  if (!evolution.settings.has_value())
-    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name + "' is compared, but "
-                                "experiment '" + spec.name + "' has no " +
-                                (controller.is_tree() ? std::string("GP") : std::string(evolution.algorithm->name)) +
-                                " settings");
-  const evo::Algorithm& a = *evolution.algorithm;
-  return {a.make(evolution.settings, problem), {std::string(a.name), a.state_format, {}}};
+// The store's names for what `kept` holds: the optimizer's own objectives, then the
+// experiment's first (the fitness first) and its descriptors, as many as each member keeps.
+std::shared_ptr<const MemberLayout> layout_of(const ExperimentSpec& spec, evo::Members kept) {
+  auto layout = std::make_shared<MemberLayout>();
+  layout->kind = kept.kind;
+  for (const std::string& own : kept.own_objectives) {
+    layout->objectives.push_back(own);
+    layout->minimized.push_back(false);
+  }
+  for (std::size_t i = 0; i + kept.own_objectives.size() < kept.objectives; ++i) {
+    layout->objectives.push_back(i == 0 ? spec.fitness.name : spec.further[i - 1].name);
+    layout->minimized.push_back(i < spec.objectives.size() && spec.objectives[i].minimize);
+  }
+  for (std::size_t i = 0; i < kept.descriptors && i < spec.descriptors.size(); ++i) {
+    const DescriptorSpec& d = spec.descriptors[i];
+    layout->descriptors.push_back(d.name);
+    layout->descriptor_ranges.push_back({d.range.lower, d.range.upper});
+  }
+  layout->bins = std::move(kept.bins);
+  layout->centroids = std::move(kept.centroids);
+  return layout;
 }
 
 }  // namespace
@@ -64,27 +66,17 @@ RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& contro
   evo::Problem problem = spec.problem_of(controller);
   problem.seed = state_.seed;
   problem.start = start != nullptr ? &start->genome : nullptr;
-  Made made = make_optimizer(spec, controller, problem);
-  optimizer_ = std::move(made.optimizer);
+  RunOptimizer made = make_run_optimizer(spec, controller, problem);
+  if (auto kept = made.optimizer->members(false)) state_.member_layout = layout_of(spec, std::move(*kept));
   // A run that only evaluates has no state to go on from (and one stored by an esc before
   // schema 6 is its ES's or GP's).
   if (from == nullptr || from->generations.empty() || spec.evaluates_only()) {
     state_.optimizer = std::move(made.empty_state);
-    state_.optimizer.bytes = optimizer_->save();
-    return;
+    state_.optimizer.bytes = made.optimizer->save();
+  } else {
+    load_run_state(made, controller, from->optimizer);
   }
-  const OptimizerState& stored = from->optimizer;
-  if (stored.algorithm != made.empty_state.algorithm || stored.format != made.empty_state.format)
-    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name +
-                                "': the state to resume from was saved by " + stored.algorithm + " (format " +
-                                std::to_string(stored.format) + "), not by " + made.empty_state.algorithm +
-                                " (format " + std::to_string(made.empty_state.format) + ")");
-  try {
-    optimizer_->load(stored.bytes);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name +
-                                "': the state to resume from is not one its optimizer could have saved: " + e.what());
-  }
+  optimizer_ = std::move(made.optimizer);
 }
 
 bool RunJob::finished() const { return generation() >= generations_ || !optimizer_->stopped().empty(); }
@@ -108,6 +100,13 @@ void RunJob::evaluated(std::span<const evo::Outcome> outcomes, const GenerationS
   if (state_.transfer && stats.generation == 0 && !fitness.empty()) state_.transfer->fitness_here = fitness.front();
   if (const auto best = improve_best(state_, stats.generation, fitness)) state_.best_genome = candidates_[*best];
   state_.optimizer.bytes = optimizer_->save();
+  if (state_.member_layout) {
+    state_.members = std::move(optimizer_->members(true)->members);
+    const std::vector<bool>& minimized = state_.member_layout->minimized;
+    for (evo::Member& m : state_.members)
+      for (std::size_t i = 0; i < m.objectives.size() && i < minimized.size(); ++i)
+        if (minimized[i]) m.objectives[i] = -m.objectives[i];
+  }
   candidates_.clear();
 }
 

@@ -3,6 +3,7 @@
 // continue it after the last one. What an algorithm continues from is its own, saved by its
 // optimizer (runtime/evo/optimizer.hpp) as bytes the run loop and the store do not read.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,20 @@ struct OptimizerState {
   friend bool operator==(const OptimizerState&, const OptimizerState&) = default;
 };
 
+// What a run's optimizer keeps beside its best (evo::Optimizer::members), as the store names
+// it: the values each member holds (objectives, fitness first, then descriptors) and, for an
+// archive, its cells. The same for every run of a controller.
+struct MemberLayout {
+  evo::MemberKind kind = evo::MemberKind::Front;
+  std::vector<std::string> objectives;    // names, in the experiment's order
+  std::vector<bool> minimized;            // per objective
+  std::vector<std::string> descriptors;
+  std::vector<evo::Bounds> descriptor_ranges;
+  std::vector<std::size_t> bins;          // as evo::Members holds them
+  std::vector<double> centroids;
+  friend bool operator==(const MemberLayout&, const MemberLayout&) = default;
+};
+
 // Everything needed to continue a run after its last finished generation: restarting
 // generation `generations.size()` from `optimizer` reproduces the uninterrupted run bit for
 // bit, because every random stream is derived from (run seed, generation, individual).
@@ -64,6 +79,12 @@ struct RunState {
   int best_index = 0;
   OptimizerState optimizer;
   std::optional<Transfer> transfer{};         // set when the run starts from a stored genome
+  // What the optimizer keeps beside the best, for optimizers that keep something: its layout,
+  // and the last finished generation's members (a front whole, an archive's changed cells),
+  // objectives as measured (a minimised one not negated). Stored with that generation, never
+  // read back: nothing continues from them.
+  std::shared_ptr<const MemberLayout> member_layout{};
+  std::vector<evo::Member> members{};
 };
 
 }  // namespace esc::eval

@@ -15,6 +15,7 @@
 // exactly what the uninterrupted one would.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -46,6 +47,36 @@ struct Metric {
   std::string name;
   double value = 0.0;
   friend bool operator==(const Metric&, const Metric&) = default;
+};
+
+// One of what an optimizer keeps as its result beside the run's best: a point of NSGA-II's
+// first front, an elite of MAP-Elites' archive, a behavior of novelty search's archive.
+struct Member {
+  // An archive's cell (novelty search: the order the behavior was added in); a front's
+  // position in it.
+  std::int64_t cell = 0;
+  std::vector<double> objectives;    // maximised, as an Outcome's; empty where not kept
+  std::vector<double> descriptors;   // empty where not kept
+  Genome genome;                     // empty where not kept, and in a generation's changes
+  friend bool operator==(const Member&, const Member&) = default;
+};
+
+enum class MemberKind : std::uint8_t { Front, Archive };
+
+struct Members {
+  // A front is replaced whole by each generation; an archive changes cell by cell.
+  MemberKind kind = MemberKind::Front;
+  std::size_t objectives = 0;    // values each member keeps
+  std::size_t descriptors = 0;
+  // The first objectives when the optimizer computes them itself rather than the experiment
+  // (novelty search's "novelty"); the experiment's own objectives follow, the fitness first.
+  std::vector<std::string> own_objectives;
+  std::vector<Member> members;
+  // An archive's cells, for drawing it (filled when all members are asked for): a grid's bins
+  // per descriptor, or a CVT's centroids (cells x descriptors, in unit coordinates, each
+  // descriptor scaled by its range); both empty for a front or an archive of points.
+  std::vector<std::size_t> bins;
+  std::vector<double> centroids;
 };
 
 // The range a value is declared to lie in; infinite ends where the script declares none.
@@ -82,6 +113,11 @@ class Optimizer {
   virtual void tell(std::span<const Outcome> outcomes) = 0;
   // The optimizer's own numbers after the last tell; none by default.
   [[nodiscard]] virtual std::vector<Metric> metrics() const { return {}; }
+  // What it keeps beside the best, or nothing (the ES, CMA-ES and GP keep a population, not
+  // a result): with `changes`, what the last tell changed, without genomes (a front whole,
+  // an archive's changed cells: what a run stores per generation); without, all it keeps
+  // now, with genomes (what a replay picks a member from).
+  [[nodiscard]] virtual std::optional<Members> members(bool /*changes*/) const { return std::nullopt; }
   // Why the search ended before its last generation ("" while it goes on): a run whose
   // optimizer has stopped ends there.
   [[nodiscard]] virtual std::string stopped() const { return {}; }

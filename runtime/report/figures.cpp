@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/report/member_figures.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/svg_plot.hpp"
 #include "runtime/report/usage_figure.hpp"
@@ -260,6 +261,7 @@ std::vector<NamedFigure> experiment_figures(const store::StoredExperiment& e, co
                                   {stem + "-best.svg", box.title, svg::render(box)}};
   for (NamedFigure& f : usage_figures(e, stem)) out.push_back(std::move(f));
   if (const auto metrics = metrics_figure(e)) out.push_back({stem + "-metrics.svg", metrics->title, svg::render(*metrics)});
+  for (NamedFigure& f : member_figures(e, stem)) out.push_back(std::move(f));
   return out;
 }
 

@@ -97,7 +97,7 @@ void draw_line(std::string& out, const Line& l, const Scale& x, const Scale& y) 
     path += fmt::format("{}{},{} ", pen_down ? "L" : "M", px(x(l.x[i])), px(y(l.y[i])));
     pen_down = true;
   }
-  if (!path.empty())
+  if (!path.empty() && l.joined)
     out += fmt::format("<path d=\"{}\" fill=\"none\" {} stroke-linejoin=\"round\"/>\n", path, stroke(s, l.dash, 1.6));
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(l.y[i])) continue;

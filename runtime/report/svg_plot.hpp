@@ -35,6 +35,7 @@ struct Line {
   bool error_bars = false;          // lo/hi drawn as bars at each point rather than a band
   bool markers = false;
   std::string dash;                 // overrides the style's dash when not empty
+  bool joined = true;               // false: the markers alone (a scatter)
 };
 
 // A box per value set: quartiles (linear interpolation between order statistics), the

@@ -47,6 +47,26 @@ json run_json(const StoredController& c, const eval::RunResult& r) {
   return j;
 }
 
+// What the optimizer kept beside the best: its layout, then a row per member and generation.
+json members_json(const StoredMembers& m) {
+  const eval::MemberLayout& l = m.layout;
+  json objectives = json::array(), descriptors = json::array(), rows = json::array();
+  for (std::size_t i = 0; i < l.objectives.size(); ++i)
+    objectives.push_back({{"name", l.objectives[i]}, {"minimize", static_cast<bool>(l.minimized[i])}});
+  for (std::size_t i = 0; i < l.descriptors.size(); ++i)
+    descriptors.push_back({{"name", l.descriptors[i]}, {"lower", l.descriptor_ranges[i].lower},
+                           {"upper", l.descriptor_ranges[i].upper}});
+  for (const StoredMember& r : m.rows)
+    rows.push_back({{"run", r.run + 1}, {"generation", r.generation}, {"cell", r.cell}, {"objectives", r.objectives},
+                    {"descriptors", r.descriptors}});
+  json j = {{"kind", member_kind_name(l.kind)}, {"objectives", objectives},
+            {"descriptors", descriptors}};
+  if (!l.bins.empty()) j["bins"] = l.bins;
+  if (!l.centroids.empty()) j["centroids"] = l.centroids;
+  j["rows"] = rows;
+  return j;
+}
+
 json run_json(const eval::RunState& s) {
   json j = {{"run", s.run + 1}, {"seed", seed_json(s.seed)}, {"status", "running"}};
   if (s.has_best) {
@@ -79,6 +99,7 @@ json export_json(const std::vector<StoredDirectory>& directories) {
         for (const auto& s : c.in_progress) runs.push_back(run_json(s));
         controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size}, {"head", c.head},
                                {"algorithm", c.algorithm}, {"actions", c.actions}, {"runs", runs}};
+        if (c.members) controllers[c.name]["members"] = members_json(*c.members);
       }
       json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
       if (e.condition) {

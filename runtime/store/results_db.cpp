@@ -10,6 +10,7 @@
 #include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/database_snapshot.hpp"
 #include "runtime/store/es_state.hpp"
+#include "runtime/store/member_tables.hpp"
 #include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
@@ -367,6 +368,7 @@ ResultsDb ResultsDb::create_empty(const fs::path& dir, const LaunchInfo& launch)
   sql::Transaction tx(db);
   db.exec(kSchema);
   db.exec(analysis_schema());
+  db.exec(member_schema());
   auto meta = db.prepare("INSERT INTO meta(key, value) VALUES (?, ?)");
   meta.bind(1, "format").bind(2, "esc results").run();
   meta.bind(1, "schema_version").bind(2, std::to_string(kSchemaVersion)).run();
@@ -578,6 +580,7 @@ void ResultsDb::upgrade() {
       seal_table(db_, "runs");
     }
   }
+  if (schema_version_ < kMemberSchemaVersion) db_.exec(member_schema());
   if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
@@ -619,6 +622,7 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   seal_row(db_, "runs", db_.last_insert_rowid());
   save_state(db_, cid, st.run, st.optimizer);
   save_metrics(db_, cid, st.run, g);
+  if (st.member_layout) save_members(db_, cid, st, g.generation);
   save_usage(db_, cid, st.run, g);
   if (st.transfer) save_transfer(db_, cid, st.run, *st.transfer);
   tx.commit();
@@ -810,6 +814,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
         if (rp.step())
           c.replay = StoredReplay{rp.integer(0), parse_u64(rp.text(1), "replay seed"), rp.real(2),
                                   unpack_trace(rp.doubles(3), nlohmann::json::parse(rp.text(4)).get<std::vector<std::string>>())};
+        if (schema_version_ >= kMemberSchemaVersion) c.members = load_members(db_, c.id);
       }
     }
     return out;

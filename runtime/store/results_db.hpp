@@ -20,6 +20,7 @@
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/study.hpp"
 #include "runtime/store/directory_lock.hpp"
+#include "runtime/store/member_tables.hpp"
 #include "runtime/store/sqlite.hpp"
 
 namespace esc::store {
@@ -38,7 +39,8 @@ inline constexpr const char* kDependencyCache = "deps";
 // 5: a checksum on every row (row_checksum.hpp). 6: every optimizer's state in one table,
 // and its metrics per generation (optimizer_tables.hpp). 7: the algorithm that evolves each
 // controller (controllers.algorithm), and why a run's search ended early (runs.stopped).
-inline constexpr int kSchemaVersion = 7;
+// 8: what an optimizer keeps beside the best, per generation (member_tables.hpp).
+inline constexpr int kSchemaVersion = 8;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -109,6 +111,9 @@ struct StoredController {
   std::vector<eval::RunResult> finished;  // in run order
   std::vector<eval::RunState> in_progress;
   std::optional<StoredReplay> replay;     // the best run's best evaluation, if traced
+  // What its optimizer kept beside the best, per run and generation (schema 8); none for an
+  // optimizer that keeps nothing.
+  std::optional<StoredMembers> members;
 };
 
 // The condition of a study an experiment row is (a study's database holds one per
@@ -202,6 +207,12 @@ class ResultsDb {
   // carried on from the state they kept. Throws StoreError when such a run kept none.
   [[nodiscard]] eval::ResumePoint resume_point(const StoredExperiment& stored, const eval::ExperimentSpec& spec);
 
+  // What run `run` of `c` continues from, or (a finished run keeps it) ended with: its
+  // optimizer's state (table optimizer_state; for a run an esc before schema 6 left, its ES
+  // parents or GP population converted). Throws StoreError when there is none or the stored
+  // state is damaged.
+  [[nodiscard]] eval::OptimizerState load_state(const StoredController& c, int run);
+
   [[nodiscard]] std::int64_t experiment_id() const noexcept { return experiment_id_; }
 
  private:
@@ -215,10 +226,6 @@ class ResultsDb {
   // The study condition `e` is, if any.
   void load_condition(StoredExperiment& e);
   std::int64_t controller_id(const std::string& name);
-  // What run `run` of `c` continues from: its optimizer's state (table optimizer_state; for a
-  // run an esc before schema 6 left, its ES parents or GP population converted). Throws
-  // StoreError when there is none or the stored state is damaged.
-  eval::OptimizerState load_state(const StoredController& c, int run);
   // What evolved `c` in a database older than schema 7, which does not say.
   std::string algorithm_before_7(const StoredController& c);
   void upgrade();   // to kSchemaVersion

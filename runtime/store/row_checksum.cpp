@@ -75,6 +75,8 @@ constexpr SealedTable kSealedTables[] = {
     {"tree_state", "the population to continue from (GP trees)"},
     {"optimizer_state", "the optimizer's state to continue from"},
     {"metrics", "the optimizer's metrics of a generation"},
+    {"member_layouts", "what a controller's optimizer keeps beside the best"},
+    {"members", "the front or archive changes of a generation"},
     {"behavior_usage", "the behavior usage"},
     {"replays", "the stored replay"},
     {"studies", "the study's record"},

@@ -59,6 +59,22 @@ TEST(Mpi, ThreeRanksGiveOneProcesssCmaesRuns) {
             esc("export " + three.string() + " --table metrics").output);
 }
 
+// NSGA-II's front, MAP-Elites' and novelty search's archives: the maze study's every method.
+TEST(Mpi, ThreeRanksStoreOneProcesssFrontsAndArchives) {
+  const fs::path one = scratch("mpi-mazes-1");
+  const fs::path three = scratch("mpi-mazes-3");
+  const std::string args = "run " + std::string(ESC_SOURCE_DIR) +
+                           "/experiments/lehman_stanley/mazes.esc --runs 2 --generations 3 --set steps=30 --out ";
+  const Outcome a = esc(args + one.string() + " --threads 1");
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + three.string() + " --threads 1");
+  ASSERT_EQ(b.status, 0) << b.output;
+  for (const std::string table : {"metrics", "front", "archive"})
+    EXPECT_EQ(esc("export " + one.string() + " --table " + table).output,
+              esc("export " + three.string() + " --table " + table).output)
+        << table;
+}
+
 TEST(Mpi, AStudyUnderThreeRanksGivesOneProcesssResults) {
   const fs::path one = scratch("mpi-study-1");
   const fs::path three = scratch("mpi-study-3");

@@ -1,7 +1,8 @@
 // Several objectives and behavior descriptors from the command line: NSGA-II
 // (experiments/examples/speed_energy.esc) and MAP-Elites (behavior_map.esc) run, store their
-// metrics every generation, give the same results on any number of threads, and a run
-// killed mid-run resumes to exactly the unbroken run, Lehman & Stanley's maze study too.
+// metrics, fronts and archives every generation, give the same results on any number of
+// threads, and a run killed mid-run resumes to exactly the unbroken run, Lehman & Stanley's
+// maze study too, whose fronts and archives export, draw and replay.
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -101,9 +102,10 @@ TEST(MultiObjective, AnyNumberOfThreadsGivesTheSameResults) {
     ASSERT_EQ(esc(run + "1 --out " + one.string()).status, 0);
     ASSERT_EQ(esc(run + "2 --runs-at-once 2 --out " + two.string()).status, 0);
     expect_same_results(one, two, {name == "behavior_map" ? "CC_8_2" : "C"}, 2);
-    EXPECT_EQ(esc("export " + one.string() + " --table metrics").output,
-              esc("export " + two.string() + " --table metrics").output)
-        << name;
+    for (const std::string table : {"metrics", "front", "archive"})
+      EXPECT_EQ(esc("export " + one.string() + " --table " + table).output,
+                esc("export " + two.string() + " --table " + table).output)
+          << name << " " << table;
   }
 }
 
@@ -119,9 +121,10 @@ TEST(MultiObjective, ARunKilledMidRunResumesToTheUnbrokenRun) {
     const Outcome resumed = esc("run --resume " + killed.string() + " --threads 1");
     ASSERT_EQ(resumed.status, 0) << resumed.output;
     expect_same_results(reference, killed, {name == "behavior_map" ? "CC_8_2" : "C"}, 3);
-    EXPECT_EQ(esc("export " + reference.string() + " --table metrics").output,
-              esc("export " + killed.string() + " --table metrics").output)
-        << name;
+    for (const std::string table : {"metrics", "front", "archive"})
+      EXPECT_EQ(esc("export " + reference.string() + " --table " + table).output,
+                esc("export " + killed.string() + " --table " + table).output)
+          << name << " " << table;
   }
 }
 
@@ -139,8 +142,103 @@ TEST(MultiObjective, TheMazeStudyKilledMidStudyResumesToTheUnbrokenStudy) {
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 1");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_EQ(results_without_times(reference), results_without_times(killed));
-  EXPECT_EQ(esc("export " + reference.string() + " --table metrics").output,
-            esc("export " + killed.string() + " --table metrics").output);
+  for (const std::string table : {"metrics", "front", "archive"})
+    EXPECT_EQ(esc("export " + reference.string() + " --table " + table).output,
+              esc("export " + killed.string() + " --table " + table).output)
+        << table;
+}
+
+// The rows of a CSV export, each split at its commas, the header first.
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string>& f = rows.emplace_back();
+    std::stringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) f.push_back(c);
+    if (!line.empty() && line.back() == ',') f.emplace_back();
+  }
+  return rows;
+}
+
+// Every method of the maze study at a few generations: MAP-Elites' archive and novelty
+// search's front (novelty and fitness) and archive (novelty alone) are exported per
+// generation, the report draws the archive as a heatmap and the front as a Pareto plot, and
+// an archive's cell or a front's member replays.
+TEST(MultiObjective, TheMazeStudyExportsDrawsAndReplaysItsFrontsAndArchives) {
+  const std::string mazes = std::string(ESC_SOURCE_DIR) + "/experiments/lehman_stanley/mazes.esc";
+  const fs::path dir = scratch("maze-members");
+  ASSERT_EQ(esc("run " + mazes + " --runs 2 --generations 3 --set steps=40 --out " + dir.string()).status, 0);
+
+  const Outcome archive = esc("export " + dir.string() + " --table archive");
+  ASSERT_EQ(archive.status, 0) << archive.output;
+  const auto rows = csv_rows(archive.output);
+  ASSERT_GT(rows.size(), 1u);
+  const std::vector<std::string>& header = rows.front();
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  ASSERT_LT(column("final_y"), header.size()) << archive.output.substr(0, 200);
+  ASSERT_LT(column("reach_goal"), header.size());
+  // MAP-Elites' archive after the last generation (each cell's last row) is as full as its
+  // coverage says; novelty search archived behaviors without fitness.
+  std::map<std::string, std::map<std::string, std::string>> last;   // run -> cell -> generation
+  std::size_t novelty_rows = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    ASSERT_EQ(r.size(), header.size()) << i;
+    if (r[column("algorithm")] == "map_elites") {
+      EXPECT_LT(std::stoi(r[column("cell")]), 400);
+      EXPECT_FALSE(r[column("reach_goal")].empty());
+      last[r[column("run")]][r[column("cell")]] = r[column("generation")];
+    } else {
+      EXPECT_EQ(r[column("algorithm")], "novelty");
+      EXPECT_TRUE(r[column("reach_goal")].empty()) << "novelty search keeps behaviors alone";
+      ++novelty_rows;
+    }
+  }
+  EXPECT_GT(novelty_rows, 0u);
+  const auto metrics = metrics_of(dir);
+  ASSERT_EQ(last.size(), 2u);
+  for (const auto& [run, cells] : last)
+    EXPECT_DOUBLE_EQ(static_cast<double>(cells.size()) / 400.0, metrics.at("coverage").at(run).back()) << run;
+
+  const Outcome front = esc("export " + dir.string() + " --table front");
+  ASSERT_EQ(front.status, 0);
+  const auto front_rows = csv_rows(front.output);
+  ASSERT_GT(front_rows.size(), 1u);
+  EXPECT_EQ(front_rows.front(), (std::vector<std::string>{"experiment", "condition", "controller", "algorithm", "run",
+                                                          "generation", "cell", "novelty", "reach_goal", "final_x",
+                                                          "final_y"}));
+
+  const Outcome report = esc("report " + dir.string());
+  ASSERT_EQ(report.status, 0) << report.output;
+  std::string heatmap, pareto;
+  for (const auto& f : fs::directory_iterator(dir / "figures")) {
+    const std::string name = f.path().filename().string();
+    if (name.ends_with("-archive.svg") && name.find("map_elites") != std::string::npos) heatmap = slurp(f.path());
+    if (name.ends_with("-front.svg")) pareto = slurp(f.path());
+  }
+  EXPECT_NE(heatmap.find("archive (grid)"), std::string::npos);
+  EXPECT_NE(heatmap.find("of 400 cells filled"), std::string::npos);
+  EXPECT_NE(pareto.find("Pareto fronts"), std::string::npos);
+  EXPECT_NE(slurp(dir / "report.html").find("archive (grid)"), std::string::npos);
+
+  const std::string cell = last.at("1").begin()->first;
+  const Outcome replayed = esc("replay " + (dir / "map_elites").string() + " --run 1 --member " + cell);
+  ASSERT_EQ(replayed.status, 0) << replayed.output;
+  EXPECT_NE(replayed.output.find("run 1 cell " + cell), std::string::npos) << replayed.output;
+  EXPECT_TRUE(fs::exists(dir / "map_elites" / ("replay-navigator_net-run-01-cell-" + cell + ".svg")));
+  const Outcome member = esc("replay " + (dir / "novelty_fitness").string() + " --run 2 --member 0");
+  EXPECT_EQ(member.status, 0) << member.output;
+  const Outcome empty = esc("replay " + (dir / "map_elites").string() + " --run 1 --member 399");
+  if (!last.at("1").contains("399")) {
+    EXPECT_EQ(empty.status, 1);
+    EXPECT_NE(empty.output.find("cell 399 of navigator_net run 1's archive is empty"), std::string::npos) << empty.output;
+  }
+  const Outcome behaviors = esc("replay " + (dir / "novelty").string() + " --member 0");
+  EXPECT_EQ(behaviors.status, 1);
+  EXPECT_NE(behaviors.output.find("keeps behaviors, not the genomes"), std::string::npos) << behaviors.output;
 }
 
 }  // namespace

@@ -116,6 +116,9 @@ TEST(Objectives, MistakesAreLocatedAndExplained) {
   EXPECT_NE(errors("fitness f\n descriptor d: epoch in [0, 2]\n descriptor d: time in [0, 1]")
                 .find("descriptor `d` is already declared in this experiment"),
             std::string::npos);
+  EXPECT_NE(errors("fitness f\n descriptor f: epoch in [0, 2]")
+                .find("descriptor `f` has the name of an objective of this experiment"),
+            std::string::npos);
   EXPECT_NE(errors("fitness f\n descriptor d: epoch in [0, 2parsecs]").find("unknown unit `parsecs`"),
             std::string::npos);
   EXPECT_NE(errors("fitness f\n descriptor d: nonsense in [0, 1]").find("nonsense"), std::string::npos);

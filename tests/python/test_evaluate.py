@@ -72,3 +72,19 @@ def test_unknown_names_and_bad_seeds_are_value_errors(homing_script):
         esc.evaluate(homing_script, "homing", "SC", genomes, seed=-1)
     with pytest.raises(ValueError, match="epochs=0"):
         esc.evaluate(homing_script, "homing", "SC", genomes, epochs=0)
+
+
+def test_measure_names_every_objective_and_descriptor_as_the_script_does():
+    from conftest import EXPERIMENTS
+    rng = np.random.default_rng(3)
+    script = esc.compile(EXPERIMENTS / "examples" / "speed_energy.esc")
+    genomes = rng.uniform(-1, 1, size=(4, script.controller("speed_energy", "C").genome_size))
+    table = esc.measure(script, "speed_energy", "C", genomes, epochs=1, seed=9)
+    assert list(table.columns) == ["speed", "effort"]
+    assert table["speed"].tolist() == esc.evaluate(script, "speed_energy", "C", genomes, epochs=1, seed=9).tolist()
+    assert (table["effort"] >= 0).all(), "a minimised objective as measured, not negated"
+    mazes = esc.compile(EXPERIMENTS / "lehman_stanley" / "mazes.esc", {"steps": 40})
+    walkers = rng.uniform(-1, 1, size=(3, 67))
+    positions = esc.measure(mazes, "medium", "navigator_net", walkers)
+    assert list(positions.columns) == ["reach_goal", "final_x", "final_y"]
+    assert ((positions[["final_x", "final_y"]] >= 0) & (positions[["final_x", "final_y"]] <= 1.03125)).all().all()

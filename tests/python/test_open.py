@@ -13,7 +13,7 @@ import pandas as pd
 import pytest
 
 import esc
-from conftest import best_json, run_esc
+from conftest import EXPERIMENTS, best_json, run_esc
 
 
 def export(directory, table: str) -> str:
@@ -34,6 +34,21 @@ def test_a_table_equals_esc_export(homing_run, table):
     if table == "generations":
         assert len(frame) == 3 * 2   # 3 controllers x 1 run x 2 generations
         assert run.table().equals(frame)
+
+
+def test_an_archive_is_a_table_any_generation_of_it_is_read_back_from(tmp_path):
+    directory = tmp_path / "map"
+    run_esc("run", EXPERIMENTS / "examples" / "behavior_map.esc", "--runs", 1, "--generations", 4, "--set", "epochs=1",
+            "--out", directory)
+    run = esc.open(directory)
+    archive = run.table("archive")
+    assert run._stored.table_csv("archive") == export(directory, "archive")
+    assert list(archive.columns[-3:]) == ["forward_avoid", "turning", "explored"]
+    coverage = run.table("metrics").query("metric == 'coverage'").set_index("generation")["value"]
+    for g in range(4):
+        cells = archive[archive.generation <= g].groupby(["run", "cell"]).last()
+        assert len(cells) == round(coverage[g] * 100), g   # 10 x 10 cells
+    assert run.table("front").empty
 
 
 def test_a_studys_table_conditions_and_best(study_run):

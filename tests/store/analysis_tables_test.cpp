@@ -252,8 +252,7 @@ TEST(AnalysisTables, ASchemaFourDatabaseIsSealedWhenUpgraded) {
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
     test::keep_state_as_schema5(raw);
-    for (const std::string_view t : sealed_tables())
-      if (t != "optimizer_state" && t != "metrics") raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    test::drop_checksums(raw);
     raw.exec("ALTER TABLE generations DROP COLUMN saturated; PRAGMA user_version=4;");
   }
   const StoredExperiment old = ResultsDb::open(dir, true).load_single();

@@ -7,16 +7,19 @@
 #include <tuple>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/state_bytes.hpp"
 #include "runtime/store/es_state.hpp"
+#include "runtime/store/row_checksum.hpp"
 #include "runtime/store/sqlite.hpp"
 
 namespace esc::store::test {
 
 // Moves every ES run's state into table run_state, as schema 5 kept it, and drops what
-// schemas 6 and 7 added (tables optimizer_state and metrics, columns controllers.algorithm
-// and runs.stopped).
+// schemas 6 to 8 added (tables optimizer_state, metrics, member_layouts and members, columns
+// controllers.algorithm and runs.stopped).
 inline void keep_state_as_schema5(sql::Database& raw) {
   std::vector<std::tuple<std::int64_t, std::int64_t, std::vector<evo::Individual>>> rows;
   auto q = raw.prepare("SELECT controller_id, run, state FROM optimizer_state WHERE algorithm = 'es'");
@@ -38,8 +41,18 @@ inline void keep_state_as_schema5(sql::Database& raw) {
         .bind(4, static_cast<std::int64_t>(parents.front().genes.size()))
         .bind(5, static_cast<std::int64_t>(parents.front().sigmas.size())).bind_blob(6, pack_parents(parents))
         .run();
-  raw.exec("DROP TABLE optimizer_state; DROP TABLE metrics; ALTER TABLE controllers DROP COLUMN algorithm; "
+  raw.exec("DROP TABLE optimizer_state; DROP TABLE metrics; DROP TABLE member_layouts; DROP TABLE members; "
+           "ALTER TABLE controllers DROP COLUMN algorithm; "
            "ALTER TABLE runs DROP COLUMN stopped;");
+}
+
+// Drops the checksums of every sealed table the database has, as before schema 5 (call
+// keep_state_as_schema5 first: the tables of schema 6 and later are gone then).
+inline void drop_checksums(sql::Database& raw) {
+  for (const std::string_view t : sealed_tables()) {
+    auto exists = raw.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?");
+    if (exists.bind(1, t).step()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+  }
 }
 
 }  // namespace esc::store::test

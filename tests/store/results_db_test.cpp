@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <limits>
+#include <memory>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -166,6 +167,72 @@ TEST(ResultsDb, FinishedRunsKeepUsageAndTheBestReplay) {
   EXPECT_EQ(j["experiments"][0]["controllers"]["SC"]["runs"][0]["behavior_usage"]["forward"], 7);
 }
 
+// A MAP-Elites-like run: a grid archive of 2 x 3 cells whose generations change some cells.
+eval::RunState with_members(int generations) {
+  eval::RunState s = state(generations);
+  auto layout = std::make_shared<eval::MemberLayout>();
+  layout->kind = evo::MemberKind::Archive;
+  layout->objectives = {"f"};
+  layout->minimized = {false};
+  layout->descriptors = {"dx", "dy"};
+  layout->descriptor_ranges = {{0.0, 1.0}, {-2.0, 2.0}};
+  layout->bins = {2, 3};
+  s.member_layout = layout;
+  const double g = generations - 1;
+  s.members = {{static_cast<std::int64_t>(generations), {g + 0.5}, {0.25, -1.0}, {}}, {5, {-g}, {0.75, 1.5}, {}}};
+  return s;
+}
+
+TEST(ResultsDb, MembersRoundTripAndAnyGenerationsArchiveIsReadBack) {
+  const fs::path dir = fresh_dir("members");
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    for (int g = 1; g <= 3; ++g) db.commit_generation("SC", with_members(g));
+  }
+  const StoredController c = ResultsDb::open(dir, true).load_single().controllers.at(0);
+  ASSERT_TRUE(c.members.has_value());
+  EXPECT_EQ(c.members->layout, *with_members(1).member_layout);
+  ASSERT_EQ(c.members->rows.size(), 6U);
+  EXPECT_EQ(c.members->rows[2].generation, 1);
+  EXPECT_EQ(c.members->rows[2].cell, 2);
+  EXPECT_EQ(c.members->rows[2].objectives, (std::vector<double>{1.5}));
+  // Generation 1's archive: cell 1 from generation 0, cells 2 and 5 from generation 1.
+  const std::vector<StoredMember> at1 = members_at(*c.members, 1, 1);
+  ASSERT_EQ(at1.size(), 3U);
+  EXPECT_EQ(at1[0].cell, 1);
+  EXPECT_EQ(at1[2].cell, 5);
+  EXPECT_EQ(at1[2].objectives, (std::vector<double>{-1.0}));
+  EXPECT_EQ(members_at(*c.members, 1, 2).size(), 4U);
+  {  // A bit flipped in a stored member is refused.
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("UPDATE members SET cell = 4 WHERE generation = 2 AND idx = 0");
+  }
+  EXPECT_THROW((void)ResultsDb::open(dir, true).load(), StoreError);
+}
+
+// A database from before schema 8 has no member tables: it reads as it is, and gets them
+// when it is opened for writing (a run carried on stores its members from then on).
+TEST(ResultsDb, ASchemaSevenDatabaseGetsTheMemberTablesWhenWritten) {
+  const fs::path dir = fresh_dir("upgrade-7");
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    db.commit_generation("SC", state(1));
+  }
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("DROP TABLE member_layouts; DROP TABLE members; PRAGMA user_version=7;");
+  }
+  EXPECT_FALSE(ResultsDb::open(dir, true).load_single().controllers.at(0).members.has_value());
+  {
+    ResultsDb db = ResultsDb::open(dir);
+    db.commit_generation("SC", with_members(2));
+  }
+  const StoredController c = ResultsDb::open(dir, true).load_single().controllers.at(0);
+  ASSERT_TRUE(c.members.has_value());
+  EXPECT_EQ(c.members->rows.size(), 2U);
+  EXPECT_EQ(c.members->rows[0].generation, 1);
+}
+
 TEST(ResultsDb, ClearErrorsForForeignDamagedAndNewerDatabases) {
   const fs::path none = fresh_dir("none");
   EXPECT_THROW((void)ResultsDb::open(none), StoreError);
@@ -256,8 +323,7 @@ TEST(ResultsDb, ASchemaThreeDatabaseIsReadThenSealedWhenWritten) {
   {  // What esc wrote before checksums.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
     test::keep_state_as_schema5(raw);
-    for (const std::string_view t : sealed_tables())
-      if (t != "optimizer_state" && t != "metrics") raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    test::drop_checksums(raw);
     raw.exec("ALTER TABLE generations DROP COLUMN saturated; DROP TABLE generation_usage; DROP TABLE choices; "
              "DROP TABLE transfers; PRAGMA user_version=3;");
   }

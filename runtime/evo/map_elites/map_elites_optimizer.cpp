@@ -5,6 +5,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <tuple>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -73,7 +74,25 @@ class MapElitesOptimizer final : public Optimizer {
       descriptors[i] = outcomes[i].descriptors;
     }
     core_.tell(fitness, descriptors);
-    (void)core_.take_changes();
+    changed_.clear();
+    for (const qd::Change& c : core_.take_changes()) changed_.push_back(c.cell);
+  }
+
+  std::optional<Members> members(bool changes) const override {
+    const qd::Archive& archive = core_.archive();
+    Members m{MemberKind::Archive, 1, archive.space().size(), {}, {}, {}, {}};
+    const auto add = [&](std::size_t cell) {
+      const qd::Elite& e = *archive.elite(cell);
+      m.members.push_back({static_cast<std::int64_t>(cell), {e.fitness}, e.descriptor, changes ? Genome{} : e.genome});
+    };
+    if (changes) {
+      for (const std::size_t cell : changed_) add(cell);
+      return m;
+    }
+    for (const std::size_t cell : archive.filled_cells()) add(cell);
+    if (const auto* grid = std::get_if<qd::Grid>(&archive.tessellation())) m.bins = grid->bins();
+    else m.centroids = std::get<qd::Cvt>(archive.tessellation()).centroids();
+    return m;
   }
 
   std::vector<Metric> metrics() const override {
@@ -88,6 +107,7 @@ class MapElitesOptimizer final : public Optimizer {
  private:
   qd::MapElites core_;
   std::uint64_t seed_;
+  std::vector<std::size_t> changed_;   // cells the last tell changed, in cell order
 };
 
 }  // namespace

@@ -61,6 +61,7 @@ class NoveltyOptimizer final : public Optimizer {
     for (std::size_t i = parents; i < descriptors.size(); ++i) candidates.push_back(objectives_of(i));
 
     Rng rng(seed_, {static_cast<std::uint64_t>(Stream::Breed), generation_, 1});
+    archived_before_ = archive_.size();
     archive_.update(std::span(descriptors).subspan(parents), std::span(novelty).subspan(parents), rng);
     core_.rescore(now);
     const std::vector<std::size_t> kept = core_.tell(candidates);
@@ -78,6 +79,28 @@ class NoveltyOptimizer final : public Optimizer {
     return {{"archive", static_cast<double>(archive_.size())},
             {"threshold", archive_.threshold()},
             {"novelty_max", best_novelty_}};
+  }
+
+  // Novelty and fitness: the first front of the two, with each member's behavior. Novelty
+  // alone: its archive of behaviors (where the search has been), which keeps neither genomes
+  // nor fitness; a generation's changes are the behaviors it added.
+  std::optional<Members> members(bool changes) const override {
+    Members m{with_fitness_ ? MemberKind::Front : MemberKind::Archive, with_fitness_ ? 2U : 0U,
+              archive_.space().size(), {}, {}, {}, {}};
+    if (with_fitness_) {
+      m.own_objectives = {"novelty"};
+      const std::vector<std::size_t> front = core_.first_front();
+      for (std::size_t i = 0; i < front.size(); ++i) {
+        const std::vector<double>& f = core_.objectives()[front[i]];
+        m.members.push_back({static_cast<std::int64_t>(i), {-f[0], -f[1]}, parent_descriptors_[front[i]],
+                             changes ? Genome{} : core_.population()[front[i]]});
+      }
+      return m;
+    }
+    const std::vector<std::vector<double>>& points = archive_.points();
+    for (std::size_t i = changes ? archived_before_ : 0; i < points.size(); ++i)
+      m.members.push_back({static_cast<std::int64_t>(i), {}, points[i], {}});
+    return m;
   }
 
   StateBytes save() const override {
@@ -121,6 +144,7 @@ class NoveltyOptimizer final : public Optimizer {
     a.load(std::span(reinterpret_cast<const std::uint8_t*>(archive.data()), archive.size()));
     core_ = std::move(c);
     archive_ = std::move(a);
+    archived_before_ = archive_.size();
     best_novelty_ = best;
     parent_descriptors_ = std::move(descriptors);
     parent_fitness_ = std::move(fitness);
@@ -132,6 +156,8 @@ class NoveltyOptimizer final : public Optimizer {
   std::uint64_t seed_;
   bool with_fitness_;
   std::uint64_t generation_ = 0;
+  // The archive's size before the last tell added to it (after a load: all of it, as told).
+  std::size_t archived_before_ = 0;
   std::vector<std::vector<double>> parent_descriptors_;   // aligned with core_.population()
   std::vector<double> parent_fitness_;
   double best_novelty_ = 0.0;

@@ -48,6 +48,19 @@ class Nsga2Optimizer final : public Optimizer {
     return m;
   }
 
+  // The first front of the parents: its objectives, back in their maximised terms.
+  std::optional<Members> members(bool changes) const override {
+    Members m{MemberKind::Front, objectives_, 0, {}, {}, {}, {}};
+    const std::vector<std::size_t> front = core_.first_front();
+    for (std::size_t i = 0; i < front.size(); ++i) {
+      Member& x = m.members.emplace_back();
+      x.cell = static_cast<std::int64_t>(i);
+      for (const double v : core_.objectives()[front[i]]) x.objectives.push_back(-v);
+      if (!changes) x.genome = core_.population()[front[i]];
+    }
+    return m;
+  }
+
   StateBytes save() const override { return core_.save(); }
   void load(std::span<const std::uint8_t> state) override { core_.load(state); }
 

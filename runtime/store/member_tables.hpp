@@ -1,0 +1,52 @@
+#pragma once
+// What the results database keeps of the members an optimizer holds beside a run's best
+// (schema 8; evo::Optimizer::members): NSGA-II's first front, MAP-Elites' archive, novelty
+// search's archive of behaviors. Per controller its layout (table member_layouts: the
+// values' names, an archive's cells), and per generation of each run its members (table
+// members): a front whole, an archive's changed cells, so that the archive of any
+// generation is the last row of each cell up to it. Genomes are not stored per generation:
+// the final front or archive is in the run's optimizer state (what `esc replay` reads).
+// Written in the generation's transaction, so a resumed run stores exactly what the
+// uninterrupted one would.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "runtime/eval/run_state.hpp"
+#include "runtime/store/sqlite.hpp"
+
+namespace esc::store {
+
+inline constexpr int kMemberSchemaVersion = 8;
+
+// "front" or "archive", as the store and exports name a kind.
+[[nodiscard]] const char* member_kind_name(evo::MemberKind kind);
+
+// The tables, for a new database and for the upgrade to schema 8.
+[[nodiscard]] const char* member_schema();
+
+// One stored member: of run `run` (from 0) at generation `generation`.
+struct StoredMember {
+  int run = 0;
+  int generation = 0;
+  std::int64_t cell = 0;
+  std::vector<double> objectives;    // as measured (a minimised objective not negated)
+  std::vector<double> descriptors;
+};
+
+struct StoredMembers {
+  eval::MemberLayout layout;
+  std::vector<StoredMember> rows;    // by run, generation, then as the optimizer listed them
+};
+
+// Generation `generation`'s members of a run (state.member_layout set), the controller's
+// layout with the first.
+void save_members(sql::Database& db, std::int64_t controller_id, const eval::RunState& state, int generation);
+// What a controller's runs stored, or nullopt when its optimizer keeps no members.
+[[nodiscard]] std::optional<StoredMembers> load_members(sql::Database& db, std::int64_t controller_id);
+
+// The archive of `run` after generation `generation`: each cell's last row up to it, in
+// cell order (for a front: that generation's rows).
+[[nodiscard]] std::vector<StoredMember> members_at(const StoredMembers& members, int run, int generation);
+
+}  // namespace esc::store
