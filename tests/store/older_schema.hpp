@@ -15,8 +15,8 @@
 namespace esc::store::test {
 
 // Moves every ES run's state into table run_state, as schema 5 kept it, and drops what
-// schemas 6 and 7 added (tables optimizer_state and metrics, columns controllers.algorithm
-// and runs.stopped).
+// schemas 6, 7 and 8 added (tables optimizer_state and metrics, columns controllers.algorithm,
+// runs.stopped and runs.success_evaluation).
 inline void keep_state_as_schema5(sql::Database& raw) {
   std::vector<std::tuple<std::int64_t, std::int64_t, std::vector<evo::Individual>>> rows;
   auto q = raw.prepare("SELECT controller_id, run, state FROM optimizer_state WHERE algorithm = 'es'");
@@ -39,7 +39,7 @@ inline void keep_state_as_schema5(sql::Database& raw) {
         .bind(5, static_cast<std::int64_t>(parents.front().sigmas.size())).bind_blob(6, pack_parents(parents))
         .run();
   raw.exec("DROP TABLE optimizer_state; DROP TABLE metrics; ALTER TABLE controllers DROP COLUMN algorithm; "
-           "ALTER TABLE runs DROP COLUMN stopped;");
+           "ALTER TABLE runs DROP COLUMN stopped; ALTER TABLE runs DROP COLUMN success_evaluation;");
 }
 
 }  // namespace esc::store::test
