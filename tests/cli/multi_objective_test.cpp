@@ -141,6 +141,11 @@ TEST(MultiObjective, TheMazeStudyKilledMidStudyResumesToTheUnbrokenStudy) {
   EXPECT_EQ(results_without_times(reference), results_without_times(killed));
   EXPECT_EQ(esc("export " + reference.string() + " --table metrics").output,
             esc("export " + killed.string() + " --table metrics").output);
+  // The mazes declare success: every run's evaluations to success (none reach the goal in 30
+  // steps) and each method's count resume as they were.
+  const std::string summary = slurp(reference / "summary.json");
+  EXPECT_EQ(summary, slurp(killed / "summary.json"));
+  EXPECT_NE(summary.find("\"success\": \"reach_goal > -0.0171875\""), std::string::npos);
 }
 
 }  // namespace
