@@ -4,19 +4,15 @@
 // of their evaluations to success, and per pair of the comparisons' family Fisher's exact
 // test of the success counts and the censored Mann-Whitney test of the evaluations to
 // success (runtime/report/success_comparisons.hpp). Experiments without a test print none of it.
-#include <cstddef>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "cli/end_table.hpp"
+#include "cli/table_text.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/report/success_comparisons.hpp"
 
 namespace esc::cli {
-
-// "A vs B" for the samples a and b of a comparison.
-using PairLabel = std::function<std::string(std::size_t, std::size_t)>;
 
 // An experiment's: its test, then a line per controller.
 void print_success(const eval::CampaignResult& result);

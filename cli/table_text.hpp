@@ -1,7 +1,9 @@
 #pragma once
-// How the end tables of `esc run` write numbers and p-values (end_table.cpp,
-// success_table.cpp): one spelling for "undefined" and one precision per kind.
+// How the end tables of `esc run` write numbers, p-values and the pairs they compare
+// (end_table.cpp, success_table.cpp): one spelling for "undefined" and one precision per kind.
 #include <cmath>
+#include <cstddef>
+#include <functional>
 #include <string>
 
 #include <fmt/format.h>
@@ -18,5 +20,8 @@ namespace esc::cli {
   if (std::isnan(p)) return "n/a";
   return p < 1e-4 ? fmt::format("{:.1e}", p) : fmt::format("{:.4f}", p);
 }
+
+// "A vs B" for the samples a and b of a comparison.
+using PairLabel = std::function<std::string(std::size_t, std::size_t)>;
 
 }  // namespace esc::cli
