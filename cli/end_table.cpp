@@ -8,9 +8,12 @@
 
 #include <fmt/format.h>
 
+#include "cli/success_table.hpp"
+#include "cli/table_text.hpp"
 #include "cli/transfer_table.hpp"
 #include "runtime/report/comparisons.hpp"
 #include "runtime/report/statistics.hpp"
+#include "runtime/report/study_table.hpp"
 
 namespace esc::cli {
 
@@ -19,15 +22,6 @@ namespace {
 // Lines are wrapped at this width (sensitivity.esc's supervisors choose among 24 behaviors;
 // a sweep may have many conditions).
 constexpr std::size_t kWidth = 100;
-
-std::string number_or_na(double x, int decimals) {
-  return std::isnan(x) ? "n/a" : fmt::format("{:.{}f}", x, decimals);
-}
-
-std::string p_text(double p) {
-  if (std::isnan(p)) return "n/a";
-  return p < 1e-4 ? fmt::format("{:.1e}", p) : fmt::format("{:.4f}", p);
-}
 
 std::vector<double> best_fitness(const eval::ControllerResult& c) {
   std::vector<double> best;
@@ -87,14 +81,10 @@ bool has_trees(const eval::ExperimentSpec& spec) {
   return std::any_of(spec.controllers.begin(), spec.controllers.end(), [](const auto& c) { return c.is_tree(); });
 }
 
-// The comparisons of `samples` over `pairs` (one Holm family), each row labelled "A vs B"
-// by `label`, then `family`: what the family holds.
-template <class Label>
-void print_comparisons(const std::vector<std::vector<double>>& samples,
-                       const std::vector<std::pair<std::size_t, std::size_t>>& pairs, const Label& label,
-                       const std::string& family) {
-  if (pairs.empty()) return;
-  const std::vector<report::Comparison> rows = report::compare(samples, pairs);
+// The comparisons of one Holm family, each row labelled "A vs B" by `label`, then `family`:
+// what the family holds.
+void print_comparisons(const std::vector<report::Comparison>& rows, const PairLabel& label, const std::string& family) {
+  if (rows.empty()) return;
   std::size_t width = 26;
   for (const report::Comparison& c : rows) width = std::max(width, label(c.a, c.b).size());
   fmt::print("\n{:<{}} {:>9} {:>7} {:>10} {:>10}  {:>7} {:>10} {:>10}  {:>5}  {:>7} {:>10} {:>10}\n",
@@ -110,6 +100,21 @@ void print_comparisons(const std::vector<std::vector<double>>& samples,
              "at most 8 runs and no ties. A12: chance the first beats the second. B-F: Brown-Forsythe test of equal "
              "spread (Levene's about the medians).\n",
              rows.size(), rows.size() == 1 ? "" : "s", family);
+}
+
+// The study's cells and its one family of comparisons (report/study_table.hpp), as the
+// report shows them.
+report::StudyTable study_table_of(const std::vector<ConditionResult>& conditions) {
+  std::vector<report::ConditionSamples> samples;
+  for (const ConditionResult& c : conditions) {
+    report::ConditionSamples s{c.name, {}};
+    for (const auto& r : c.result.controllers) {
+      s.controllers.emplace_back(r.name, best_fitness(r));
+      if (!c.result.success.empty()) s.success.push_back(report::success_sample(r.runs));
+    }
+    samples.push_back(std::move(s));
+  }
+  return report::study_table(samples);
 }
 
 }  // namespace
@@ -129,6 +134,7 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
     finals.push_back(std::move(best));
   }
   print_transfers(result);
+  print_success(result);
   const auto name = [](const eval::ControllerResult& c) { return c.name; };
   bool header = false;
   print_usage(result, header, name);
@@ -138,30 +144,18 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
   }
   print_stops(result, name);
   const auto& cs = result.controllers;
-  print_comparisons(finals, report::all_pairs(finals.size()),
-                    [&](std::size_t a, std::size_t b) { return fmt::format("{} vs {}", cs[a].name, cs[b].name); }, "");
+  const auto pairs = report::all_pairs(finals.size());
+  const PairLabel label = [&](std::size_t a, std::size_t b) { return fmt::format("{} vs {}", cs[a].name, cs[b].name); };
+  print_comparisons(report::compare(finals, pairs), label, "");
+  if (result.success.empty()) return;
+  std::vector<report::SuccessSample> success;
+  for (const auto& c : cs) success.push_back(report::success_sample(c.runs));
+  print_success_comparisons(report::compare_success(success, pairs), label, "");
 }
 
 void print_study_table(const std::string& study, const std::vector<ConditionResult>& conditions) {
-  // Controllers in the order they first appear; a cell per (condition, controller).
-  std::vector<std::string> controllers;
-  for (const ConditionResult& c : conditions)
-    for (const auto& r : c.result.controllers)
-      if (std::find(controllers.begin(), controllers.end(), r.name) == controllers.end()) controllers.push_back(r.name);
-  std::vector<std::vector<double>> samples;
-  std::vector<std::pair<std::size_t, std::size_t>> cell_of;   // sample -> (condition, controller)
-  const auto sample = [&](std::size_t condition, std::size_t controller) -> const std::vector<double>* {
-    for (std::size_t s = 0; s < cell_of.size(); ++s)
-      if (cell_of[s] == std::pair{condition, controller}) return &samples[s];
-    return nullptr;
-  };
-  for (std::size_t i = 0; i < conditions.size(); ++i)
-    for (const auto& r : conditions[i].result.controllers) {
-      samples.push_back(best_fitness(r));
-      cell_of.emplace_back(i, static_cast<std::size_t>(
-                                  std::find(controllers.begin(), controllers.end(), r.name) - controllers.begin()));
-    }
-
+  const report::StudyTable t = study_table_of(conditions);
+  const std::vector<std::string>& controllers = t.controllers;
   const eval::ExperimentSpec& first = *conditions.front().spec;
   fmt::print("\nstudy {}: {} condition{}, seed {}; best fitness of each run, mean ± sd (median)\n", study,
              conditions.size(), conditions.size() == 1 ? "" : "s", first.seed);
@@ -177,9 +171,9 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
     for (std::size_t i = 0; i < conditions.size(); ++i) {
       std::string line = fmt::format("{:<{}}", conditions[i].name, name_width);
       for (std::size_t j = from; j < to; ++j) {
-        const std::vector<double>* s = sample(i, j);
-        const report::Summary m = s != nullptr ? report::summarise(*s) : report::Summary{};
-        line += fmt::format("  {:>{}}", s == nullptr || s->empty() ? "-"
+        const report::StudyCell* s = t.cell(i, j);
+        const report::Summary m = s != nullptr ? report::summarise(s->best) : report::Summary{};
+        line += fmt::format("  {:>{}}", s == nullptr || s->best.empty() ? "-"
                                             : fmt::format("{:.1f} ± {:.1f} ({:.1f})", m.mean, m.sd, m.median),
                             kCell);
       }
@@ -195,6 +189,7 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
   fmt::print("{} run{} x {}, {} epoch{} x {} steps{}\n", first.runs, first.runs == 1 ? "" : "s",
              app::generations_text(first), first.epochs, first.epochs == 1 ? "" : "s", first.steps,
              conditions.size() > 1 ? " (the first condition)" : "");
+  print_study_success(conditions, controllers);
 
   bool header = false;
   for (const ConditionResult& c : conditions)
@@ -209,25 +204,10 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
   for (const ConditionResult& c : conditions)
     print_stops(c.result, [&](const eval::ControllerResult& r) { return fmt::format("{} {}", r.name, c.name); });
 
-  // One family: within each condition every pair of controllers, then for each controller
-  // every pair of conditions.
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t a = 0; a < cell_of.size(); ++a)
-    for (std::size_t b = a + 1; b < cell_of.size(); ++b)
-      if (cell_of[a].first == cell_of[b].first) pairs.emplace_back(a, b);
-  for (std::size_t j = 0; j < controllers.size(); ++j)
-    for (std::size_t a = 0; a < cell_of.size(); ++a)
-      for (std::size_t b = a + 1; b < cell_of.size(); ++b)
-        if (cell_of[a].second == j && cell_of[b].second == j) pairs.emplace_back(a, b);
-  print_comparisons(
-      samples, pairs,
-      [&](std::size_t a, std::size_t b) {
-        const auto [ca, ka] = cell_of[a];
-        const auto [cb, kb] = cell_of[b];
-        return ca == cb ? fmt::format("{}: {} vs {}", conditions[ca].name, controllers[ka], controllers[kb])
-                        : fmt::format("{}: {} vs {}", controllers[ka], conditions[ca].name, conditions[cb].name);
-      },
-      " (within each condition every pair of controllers, and for each controller every pair of conditions)");
+  const PairLabel label = [&](std::size_t a, std::size_t b) { return t.label(a, b); };
+  const std::string family = fmt::format(" ({})", report::kStudyFamily);
+  print_comparisons(t.comparisons, label, family);
+  print_success_comparisons(t.success_comparisons, label, family);
 }
 
 }  // namespace esc::cli

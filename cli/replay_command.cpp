@@ -115,7 +115,7 @@ std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, cons
     if (r == nullptr) return {};
     Subject s{c.name, r->run, r->best_genome,
               eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index)),
-              r->best_fitness, nullptr};
+              r->best_fitness, nullptr, {}, {}};
     if (c.replay && c.replay->run == r->run && c.replay->seed == s.seed) s.stored = &*c.replay;
     subjects.push_back(std::move(s));
   }

@@ -235,7 +235,9 @@ struct DeclaredRange {
 };
 
 struct ExpItem {
-  enum class Kind { Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Evolve, Runs, Seed, Compare, StartFrom };
+  enum class Kind {
+    Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Success, Evolve, Runs, Seed, Compare, StartFrom
+  };
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword
   std::vector<Name> refs;           // arena/robot/fitness/evolve method/compare list
@@ -245,7 +247,7 @@ struct ExpItem {
   // Compare: the algorithm `by` names for controller `refs[i]`; empty text when none.
   std::vector<Name> algorithms;
   std::vector<Setting> settings;    // robot { ... } overrides
-  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed
+  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed / success's threshold
   std::vector<EsOption> options;    // evolve es(...)
   std::optional<Quantity> generations;
   bool evaluate_only = false;       // StartFrom: `evaluate from ...` rather than `start from ...`
@@ -258,6 +260,9 @@ struct ExpItem {
   std::string text;
   bool at_evaluation = false;
   Name reduce;
+  // Success: `success when refs[0] CMP numbers[0]`; the comparison as written (`<=`) and where.
+  std::string compare;
+  SourceRange compare_where;
 
   // Compare: the name controller `refs[i]` is compared under, its alias or its own.
   [[nodiscard]] const Name& compared_as(std::size_t i) const {

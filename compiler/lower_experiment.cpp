@@ -12,6 +12,7 @@
 #include "compiler/gp_settings.hpp"
 #include "compiler/lower_evolution.hpp"
 #include "compiler/lower_objectives.hpp"
+#include "compiler/lower_success.hpp"
 #include "compiler/names.hpp"
 #include "compiler/setting_keys.hpp"
 #include "compiler/setting_values.hpp"
@@ -31,6 +32,7 @@ std::string_view item_word(const ast::ExpItem& item) {
     case K::Fitness: return "fitness";
     case K::Objective: return "objective";
     case K::Descriptor: return "descriptor";
+    case K::Success: return "success";
     case K::Evolve: return "evolve";
     case K::Runs: return "runs";
     case K::Seed: return "seed";
@@ -153,6 +155,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
         break;
       case K::Objective:
       case K::Descriptor:
+      case K::Success:   // after the objectives and descriptors, below
         break;
       case K::Fitness:
         objective_items.fitness = &item;
@@ -236,6 +239,8 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     if (!lower_objectives(objective_items, d, *arena_decl, choices, navigation, names_, parts_.fitnesses, parts_.arenas,
                           sink_, x))
       ok = false;
+    else if (const auto s = first.find(K::Success); s != first.end() && !lower_success(*s->second, objective_items, sink_, x))
+      ok = false;
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
       if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation)) ok = false;
   }
@@ -259,6 +264,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   if (!fitness->evaluation_text.empty()) x.resolved_settings["fitness.evaluation"] = fitness->evaluation_text;
   resolve_settings(x);
   resolve_objectives(x, objective_items);
+  resolve_success(x);
   slot = std::move(x);
   return slot;
 }

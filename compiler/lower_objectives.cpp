@@ -12,11 +12,7 @@
 
 namespace esc::compiler {
 
-namespace {
-
-// A bound in SI, whatever its unit (an objective or descriptor has the dimension of its
-// expression, which expressions do not track).
-std::optional<double> bound(const ast::Quantity& q, Sink& sink) {
+std::optional<double> value_in_si(const ast::Quantity& q, Sink& sink) {
   if (!q.finite) return std::nullopt;
   if (q.unit.empty()) return q.value;
   const auto u = find_unit(q.unit);
@@ -27,8 +23,10 @@ std::optional<double> bound(const ast::Quantity& q, Sink& sink) {
   return q.value * u->to_si;
 }
 
+namespace {
+
 std::optional<eval::DeclaredRange> declared(const ast::DeclaredRange& r, std::string_view what, Sink& sink) {
-  const auto lo = bound(r.lo, sink), hi = bound(r.hi, sink);
+  const auto lo = value_in_si(r.lo, sink), hi = value_in_si(r.hi, sink);
   if (!lo || !hi) return std::nullopt;
   if (!(*lo < *hi)) {
     sink.error(r.where, fmt::format("the range of {} is empty: {} is not below {}", what, r.lo.text, r.hi.text))

@@ -3,6 +3,7 @@
 // `objective G minimize in [lo, hi]` and `descriptor NAME: EXPR in [lo, hi] by REDUCTION`
 // -> eval::ExperimentSpec's objectives, further and descriptors. Lowered in the experiment's
 // arena and among its controllers' choices, as its fitness is.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ struct ObjectiveItems {
   std::vector<const ast::ExpItem*> objectives;
   std::vector<const ast::ExpItem*> descriptors;
 };
+
+// A value of an objective or a descriptor (a range's bound, a success threshold) in SI,
+// whatever its unit: their dimension is their expression's, which expressions do not track.
+// None when the number overflowed or its unit is unknown (reported).
+[[nodiscard]] std::optional<double> value_in_si(const ast::Quantity& q, Sink& sink);
 
 // The reductions `by` names, in eval::Reduction's order.
 [[nodiscard]] const std::vector<std::string>& reduction_names();

@@ -600,6 +600,14 @@ class Builder {
         item.at_evaluation = de->EVALUATION() != nullptr;
         item.range = range(de->objRange());
         if (de->reduce != nullptr) item.reduce = name(de->reduce);
+      } else if (auto* su = dynamic_cast<P::ExpSuccessContext*>(it)) {
+        item.kind = K::Success;
+        item.refs.push_back(name(su->obj));
+        if (su->cmp != nullptr) {
+          item.compare = su->cmp->getText();
+          item.compare_where = at(su->cmp);
+        }
+        if (su->threshold != nullptr) item.numbers.push_back(quantity(su->threshold));
       } else if (auto* ev = dynamic_cast<P::ExpEvolveContext*>(it)) {
         item.kind = K::Evolve;
         item.refs.push_back(name(ev->ident()));

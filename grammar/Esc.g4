@@ -134,6 +134,9 @@ expItem
   // A behavior descriptor: an end term at each epoch's end (reduced over the epochs, by
   // mean unless `by` says otherwise) or, after `evaluation:`, once over the evaluation.
   | DESCRIPTOR name=ident ':' (EVALUATION ':')? expr objRange (BY reduce=ident)? ';'?   # expDescriptor
+  // When an evaluation counts as a success: a test of the fitness, a further objective or a
+  // descriptor, as measured (`success when reach_goal > -17.1875mm`).
+  | SUCCESS WHEN obj=ident cmp=('<' | '<=' | '>' | '>=') threshold=quantity ';'?    # expSuccess
   | EVOLVE ident ('(' (esOption (',' esOption)*)? ')')? (FOR NUMBER GENERATIONS)? ';'?   # expEvolve
   | RUNS NUMBER ';'?                                                              # expRuns
   | SEED NUMBER ';'?                                                              # expSeed
@@ -198,6 +201,7 @@ ident
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
   | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN | WALL | GOAL | TO | THICKNESS
+  | SUCCESS
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -279,6 +283,7 @@ OBJECTIVE : 'objective' ;
 MAXIMIZE : 'maximize' ;
 MINIMIZE : 'minimize' ;
 DESCRIPTOR : 'descriptor' ;
+SUCCESS : 'success' ;
 IN : 'in' ;
 WALL : 'wall' ;
 GOAL : 'goal' ;

@@ -157,6 +157,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
   CampaignResult result;
   result.experiment = spec.name;
   result.seed = spec.seed;
+  if (spec.success) result.success = spec.success->text();
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   // Honour a thread count above the core count too (results do not depend on it).
   const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,

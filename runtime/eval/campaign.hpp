@@ -54,6 +54,7 @@ struct RunResult {
   // Why its optimizer ended the search before the last generation (CMA-ES's `stop_sigma`,
   // ...); empty when the run went through every generation.
   std::string stopped{};
+  std::optional<std::int64_t> success_evaluation{};   // as RunState's
 };
 
 // Seed of the evaluation of offspring `index` of generation `generation` of a run.
@@ -70,6 +71,9 @@ struct ControllerResult {
 struct CampaignResult {
   std::string experiment;
   std::uint64_t seed = 0;
+  // The experiment's success test as resolved (SuccessSpec::text); empty when it declares
+  // none, and then no run's success is shown.
+  std::string success{};
   std::vector<ControllerResult> controllers;
 };
 

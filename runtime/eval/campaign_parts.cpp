@@ -133,6 +133,7 @@ RunResult close_run(RunState&& st) {
   result.best_generation = st.best_generation;
   result.best_index = st.best_index;
   result.transfer = std::move(st.transfer);
+  result.success_evaluation = st.success_evaluation;
   return result;
 }
 

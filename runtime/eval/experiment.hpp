@@ -3,6 +3,7 @@
 // from a script. Runtime code sees only this, never the parse tree.
 #include <algorithm>
 #include <any>
+#include <charconv>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -64,6 +65,41 @@ struct DescriptorSpec {
   bool at_evaluation = false;
   Reduction reduce = Reduction::Mean;
   DeclaredRange range;
+};
+
+// `success when NAME CMP THRESHOLD`: an evaluation succeeds when the value it measured of an
+// objective or a descriptor passes the test. The value is the one the script declares: a
+// minimised objective's own value (not the negation optimizers are told), a descriptor's
+// value reduced over the epochs. Success rates and evaluations to success compare methods
+// whose fitnesses differ (novelty search has none): eval/success.hpp,
+// report/success_comparisons.hpp.
+struct SuccessSpec {
+  enum class Of { Objective, Descriptor };
+  enum class Test { Below, AtMost, Above, AtLeast };   // <, <=, >, >=
+  std::string name;              // the objective's (fitness declaration's) or descriptor's
+  Of of = Of::Objective;
+  // Objective: 0 is the fitness, i > 0 is further[i - 1] (evo::Outcome::objectives' order);
+  // Descriptor: the index in descriptors.
+  std::size_t index = 0;
+  Test test = Test::Above;
+  double threshold = 0.0;        // in SI, as the measured values
+
+  [[nodiscard]] bool passes(double value) const noexcept {
+    switch (test) {
+      case Test::Below: return value < threshold;
+      case Test::AtMost: return value <= threshold;
+      case Test::Above: return value > threshold;
+      case Test::AtLeast: return value >= threshold;
+    }
+    return false;
+  }
+  // "reach_goal > -0.0171875": the resolved setting `success`, and the label of the tables.
+  [[nodiscard]] std::string text() const {
+    static constexpr const char* kTests[] = {"<", "<=", ">", ">="};
+    char number[32];
+    const auto written = std::to_chars(number, number + sizeof number, threshold);
+    return name + " " + kTests[static_cast<int>(test)] + " " + std::string(number, written.ptr);
+  }
 };
 
 // A supervised behavior that is another experiment's evolved controller
@@ -132,6 +168,7 @@ struct ExperimentSpec {
   std::vector<ObjectiveSpec> objectives;
   std::vector<FitnessSpec> further;
   std::vector<DescriptorSpec> descriptors;
+  std::optional<SuccessSpec> success;   // `success when ...`; none: success is not measured
   int epochs = 10;
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;

@@ -1,7 +1,8 @@
 // A run of one controller by its optimizer: the one loop every algorithm runs in. What it
 // adds to ask/tell is what every run needs: the run's best and where it happened, the
 // optimizer's state after each generation (what the store keeps to resume and carry on),
-// a stored genome to start from or only evaluate, and the trees' texts at the end.
+// the first evaluation that met the experiment's success test, a stored genome to start
+// from or only evaluate, and the trees' texts at the end.
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "runtime/eval/campaign_parts.hpp"
 #include "runtime/eval/run_optimizer.hpp"
+#include "runtime/eval/success.hpp"
 #include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/gp/print.hpp"
 #include "runtime/tree_control/inline_actions.hpp"
@@ -94,6 +96,9 @@ void RunJob::evaluated(std::span<const evo::Outcome> outcomes, const GenerationS
   std::vector<double> fitness(outcomes.size());
   for (std::size_t i = 0; i < outcomes.size(); ++i) fitness[i] = outcomes[i].objectives.front();
   optimizer_->tell(outcomes);
+  if (!state_.success_evaluation)
+    if (const auto first = first_success(*spec_, outcomes))
+      state_.success_evaluation = evaluations_of(state_.generations) + static_cast<std::int64_t>(*first) + 1;
   GenerationStats& g = state_.generations.emplace_back(stats);
   g.metrics = optimizer_->metrics();
   // Candidate 0 of generation 0 is the stored genome unchanged.

@@ -79,6 +79,10 @@ struct RunState {
   int best_index = 0;
   OptimizerState optimizer;
   std::optional<Transfer> transfer{};         // set when the run starts from a stored genome
+  // `success when ...`: the evaluations of the run up to and including the first that
+  // succeeded (generation by generation, candidates in ask order, counted from 1); none
+  // while none has, and always when the experiment declares no test.
+  std::optional<std::int64_t> success_evaluation{};
   // What the optimizer keeps beside the best, for optimizers that keep something: its layout,
   // and the last finished generation's members (a front whole, an archive's changed cells),
   // objectives as measured (a minimised one not negated). Stored with that generation, never
@@ -86,5 +90,12 @@ struct RunState {
   std::shared_ptr<const MemberLayout> member_layout{};
   std::vector<evo::Member> members{};
 };
+
+// The evaluations a run has finished: those of its generations so far.
+[[nodiscard]] inline std::int64_t evaluations_of(const std::vector<GenerationStats>& generations) noexcept {
+  std::int64_t n = 0;
+  for (const GenerationStats& g : generations) n += g.evaluations;
+  return n;
+}
 
 }  // namespace esc::eval

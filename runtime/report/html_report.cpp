@@ -11,7 +11,9 @@
 #include "runtime/report/markup.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/study_table.hpp"
+#include "runtime/report/success_comparisons.hpp"
 #include "runtime/report/usage_figure.hpp"
+#include "runtime/eval/success.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/store/seed_json.hpp"
 
@@ -101,6 +103,42 @@ json pair_json(const std::string& a, const std::string& b, const Comparison& c) 
           {"bf_p", number(c.spread.p_value)}, {"bf_p_holm", number(c.spread_p_holm)}};
 }
 
+json success_count_json(const eval::SuccessCount& s) {
+  return {{"successes", s.successes}, {"runs", s.runs}, {"median_evaluations", number(s.median_evaluations)}};
+}
+
+json success_pair_json(const SuccessComparison& c) {
+  return {{"successes_a", c.successes_a}, {"runs_a", c.runs_a}, {"successes_b", c.successes_b}, {"runs_b", c.runs_b},
+          {"fisher_p", number(c.fisher.p_value)}, {"fisher_p_holm", number(c.fisher_p_holm)},
+          // JSON has no infinity: every run of the second failed and one of the first succeeded.
+          {"odds_ratio", std::isinf(c.fisher.odds_ratio) ? json("inf") : number(c.fisher.odds_ratio)},
+          {"censored_u", number(c.censored.statistic)},
+          {"censored_p", number(c.censored.p_value)}, {"censored_p_holm", number(c.censored_p_holm)},
+          {"censored_at", c.censored_at}};
+}
+
+// The experiment's success test, if it declares one: per controller its runs' successes,
+// and Fisher's and the censored Mann-Whitney test of every pair (one family each).
+json experiment_success_json(const store::StoredExperiment& e) {
+  const auto test = e.settings.find("success");
+  if (test == e.settings.end()) return nullptr;
+  json controllers = json::array();
+  std::vector<SuccessSample> samples;
+  for (const store::StoredController& c : e.controllers) {
+    json row = {{"controller", c.name}};
+    row.update(success_count_json(eval::count_successes(c.finished)));
+    controllers.push_back(std::move(row));
+    samples.push_back(success_sample(c.finished));
+  }
+  json pairs = json::array();
+  for (const SuccessComparison& c : compare_success(samples, all_pairs(samples.size()))) {
+    json p = {{"a", e.controllers[c.a].name}, {"b", e.controllers[c.b].name}};
+    p.update(success_pair_json(c));
+    pairs.push_back(std::move(p));
+  }
+  return {{"test", test->second}, {"controllers", controllers}, {"pairs", pairs}};
+}
+
 json figures_json(const std::vector<NamedFigure>& figures) {
   json list = json::array();
   for (const NamedFigure& f : figures) list.push_back({{"file", f.file}, {"title", f.title}, {"svg", f.svg}});
@@ -182,6 +220,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
         mean.push_back(g.mean);
       }
       runs.push_back({{"run", r.run + 1}, {"best_fitness", r.best_fitness}, {"best", best}, {"mean", mean}});
+      if (r.success_evaluation) runs.back()["success_evaluation"] = *r.success_evaluation;
       if (!r.best_tree.empty()) runs.back()["best_tree"] = r.best_tree;   // tree controllers
       final_best.push_back(r.best_fitness);
       if (!r.action_usage.empty()) usage.push_back(r.action_usage);
@@ -217,6 +256,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
             {"ir_facing_deg", sim::kIrFacingDeg},
             {"controllers", controllers},
             {"stats", {{"summary", summary}, {"pairs", pairs}}}};
+  if (json success = experiment_success_json(e); !success.is_null()) j["success"] = std::move(success);
   if (e.condition) {
     json settings = json::object();
     for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;
@@ -232,10 +272,12 @@ json study_json(const std::vector<const store::StoredExperiment*>& conditions) {
   std::vector<ConditionSamples> samples;
   for (const auto* e : conditions) {
     ConditionSamples s{e->condition->name, {}};
+    const bool declares_success = e->settings.count("success") != 0;
     for (const store::StoredController& c : e->controllers) {
       std::vector<double> best;
       for (const auto& r : c.finished) best.push_back(r.best_fitness);
       s.controllers.emplace_back(c.name, std::move(best));
+      if (declares_success) s.success.push_back(success_sample(c.finished));
     }
     samples.push_back(std::move(s));
   }
@@ -244,6 +286,7 @@ json study_json(const std::vector<const store::StoredExperiment*>& conditions) {
   for (const StudyCell& c : t.cells) {
     json cell = {{"condition", t.conditions[c.condition]}, {"controller", t.controllers[c.controller]}};
     cell.update(summary_json(summarise(c.best)));
+    if (c.success) cell["success"] = success_count_json(eval::count_successes(c.success->evaluations));
     cells.push_back(std::move(cell));
   }
   json pairs = json::array();
@@ -258,15 +301,26 @@ json study_json(const std::vector<const store::StoredExperiment*>& conditions) {
     for (const eval::ConditionSetting& st : e->condition->settings) settings[st.key] = st.value;
     list.push_back({{"name", e->condition->name}, {"experiment", e->name}, {"status", e->status},
                     {"settings", settings}});
+    if (const auto test = e->settings.find("success"); test != e->settings.end()) list.back()["success"] = test->second;
   }
   const store::StoredCondition& first = *conditions.front()->condition;
-  return {{"name", first.study},
-          {"seed", store::seed_json(first.study_seed)},
-          {"conditions", list},
-          {"controllers", t.controllers},
-          {"cells", cells},
-          {"pairs", pairs},
-          {"family", kStudyFamily}};
+  json j = {{"name", first.study},
+            {"seed", store::seed_json(first.study_seed)},
+            {"conditions", list},
+            {"controllers", t.controllers},
+            {"cells", cells},
+            {"pairs", pairs},
+            {"family", kStudyFamily}};
+  if (!t.success_comparisons.empty()) {
+    json success = json::array();
+    for (const SuccessComparison& c : t.success_comparisons) {
+      json p = success_pair_json(c);
+      p["label"] = t.label(c.a, c.b);
+      success.push_back(std::move(p));
+    }
+    j["success_pairs"] = std::move(success);
+  }
+  return j;
 }
 
 // `stem`, or `stem-2`, `stem-3`, ... when taken (reports over several directories).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <boost/math/distributions/fisher_f.hpp>
+#include <boost/math/distributions/hypergeometric.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
@@ -170,6 +171,50 @@ TestResult brown_forsythe(std::span<const double> a, std::span<const double> b) 
   const boost::math::fisher_f dist(1.0, r.df);
   r.p_value = boost::math::cdf(boost::math::complement(dist, r.statistic));
   return r;
+}
+
+FisherResult fisher_exact(std::size_t successes_a, std::size_t failures_a, std::size_t successes_b,
+                          std::size_t failures_b) {
+  const std::size_t row_a = successes_a + failures_a, row_b = successes_b + failures_b;
+  const std::size_t successes = successes_a + successes_b, failures = failures_a + failures_b;
+  if (row_a == 0 || row_b == 0 || successes == 0 || failures == 0) return {kNaN, 1.0};
+  FisherResult r;
+  const auto ad = static_cast<double>(successes_a) * static_cast<double>(failures_b);
+  const auto bc = static_cast<double>(failures_a) * static_cast<double>(successes_b);
+  r.odds_ratio = bc > 0.0 ? ad / bc : std::numeric_limits<double>::infinity();
+  // successes_a given the margins: of the row_a + row_b runs, `successes` succeeded; how many
+  // of them fall in the first sample's row_a is hypergeometric.
+  const boost::math::hypergeometric_distribution<double> h(static_cast<unsigned>(successes),
+                                                            static_cast<unsigned>(row_a),
+                                                            static_cast<unsigned>(row_a + row_b));
+  const double observed =
+      boost::math::pdf(h, static_cast<unsigned>(successes_a)) * (1.0 + kFisherRelativeTolerance);
+  const std::size_t lo = row_a > failures ? row_a - failures : 0, hi = std::min(successes, row_a);
+  double p = 0.0;
+  bool any_more_probable = false;
+  for (std::size_t k = lo; k <= hi; ++k) {
+    const double pk = boost::math::pdf(h, static_cast<unsigned>(k));
+    if (pk <= observed) p += pk;
+    else any_more_probable = true;
+  }
+  // The most probable table has p 1, not a sum that rounds below it.
+  r.p_value = any_more_probable ? std::min(1.0, p) : 1.0;
+  return r;
+}
+
+TestResult censored_mann_whitney(std::span<const std::optional<double>> a, std::span<const std::optional<double>> b,
+                                 double budget) {
+  double top = budget;
+  for (const auto* s : {&a, &b})
+    for (const std::optional<double>& x : *s)
+      if (x) top = std::max(top, *x);
+  const auto censored = [top](std::span<const std::optional<double>> s) {
+    std::vector<double> v;
+    v.reserve(s.size());
+    for (const std::optional<double>& x : s) v.push_back(x ? *x : top + 1.0);
+    return v;
+  };
+  return mann_whitney_u(censored(a), censored(b));
 }
 
 }  // namespace esc::report

@@ -10,10 +10,15 @@
 //   ties, the tie-corrected variance and a continuity correction of 0.5;
 // - the Vargha-Delaney A12 effect size, P(a > b) + P(a = b) / 2;
 // - the Brown-Forsythe test of equal variances (Levene's test centred on the medians:
-//   scipy.stats.levene(a, b, center="median")), p from the F distribution.
+//   scipy.stats.levene(a, b, center="median")), p from the F distribution;
+// - Fisher's exact test of a 2x2 table (success rates: scipy.stats.fisher_exact);
+// - evaluations to success with censoring (a run that never succeeded): Gehan's generalised
+//   Wilcoxon test, which with one censoring point common to both samples is the Mann-Whitney
+//   U test with every censored run tied above every observed value (below).
 // A test that is undefined for its samples (too few values, no variance) gives NaN for its
 // statistic and p-value, which every output prints as `n/a`.
 #include <cstddef>
+#include <optional>
 #include <span>
 
 namespace esc::report {
@@ -55,5 +60,32 @@ inline constexpr double kMaxExactCells = 2e8;
 // Undefined when either sample has fewer than 2 values, or the absolute deviations from the
 // medians are equal within each sample (none differs from its median; two values per sample).
 [[nodiscard]] TestResult brown_forsythe(std::span<const double> a, std::span<const double> b);
+
+// Fisher's exact test of the table [[successes_a, failures_a], [successes_b, failures_b]],
+// two-sided as scipy.stats.fisher_exact: p is the sum of the hypergeometric probabilities
+// (Boost.Math) of every table with the same margins that is at most as probable as the one
+// observed. "At most" has a relative tolerance of 1e-7 (R's fisher.test; SciPy 1.10.1 has
+// 1e-14, which tells apart no table of the sizes checked): tables equally probable in exact
+// arithmetic, as the mirror images of a symmetric one, may differ in their last bits.
+struct FisherResult {
+  // The sample odds ratio (successes_a failures_b) / (failures_a successes_b): infinite when
+  // the denominator is 0, NaN when a row or a column of the table is empty (then p is 1).
+  double odds_ratio = 0.0;
+  double p_value = 1.0;
+};
+[[nodiscard]] FisherResult fisher_exact(std::size_t successes_a, std::size_t failures_a, std::size_t successes_b,
+                                        std::size_t failures_b);
+inline constexpr double kFisherRelativeTolerance = 1e-7;
+
+// Evaluations to success of two samples of runs, a run that never succeeded given as none:
+// it is censored, known only to need more than the `budget` evaluations it was allowed. With
+// one censoring point common to both samples, Gehan's generalised Wilcoxon test is the
+// Mann-Whitney U test with every censored run tied above every observed one, so each counts
+// as budget + 1 and mann_whitney_u (method auto) tests them: the ties of two or more censored
+// runs make it asymptotic with the tie correction, as SciPy does. U is the first sample's:
+// large when it needs more evaluations. `budget` is at least every observed value (a larger
+// observed value raises it). Undefined as mann_whitney_u (every run censored, ...).
+[[nodiscard]] TestResult censored_mann_whitney(std::span<const std::optional<double>> a,
+                                               std::span<const std::optional<double>> b, double budget);
 
 }  // namespace esc::report

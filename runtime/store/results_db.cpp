@@ -88,6 +88,8 @@ CREATE TABLE runs (
   best_tree        TEXT,
   best_behavior    TEXT,
   stopped          TEXT,             -- schema 7: why the optimizer ended the search early
+  -- 8: the run's evaluations up to its first success (`success when`); NULL: none yet
+  success_evaluation INTEGER,
   checksum         INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
 );
@@ -580,7 +582,11 @@ void ResultsDb::upgrade() {
       seal_table(db_, "runs");
     }
   }
-  if (schema_version_ < kMemberSchemaVersion) db_.exec(member_schema());
+  if (schema_version_ < kMemberSchemaVersion) {   // 8: a run's first successful evaluation, members
+    db_.exec("ALTER TABLE runs ADD COLUMN success_evaluation INTEGER;");
+    if (schema_version_ >= 5) seal_table(db_, "runs");   // the rows now hold one more column
+    db_.exec(member_schema());
+  }
   if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
@@ -614,10 +620,11 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   seal_row(db_, "generations", db_.last_insert_rowid());
   auto run = db_.prepare(
       "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
-      "best_generation, best_index, best_genome) VALUES (?, ?, ?, 'running', ?, ?, ?, ?, ?)");
+      "best_generation, best_index, best_genome, success_evaluation) VALUES (?, ?, ?, 'running', ?, ?, ?, ?, ?, ?)");
   run.bind(1, cid).bind(2, st.run).bind(3, std::to_string(st.seed)).bind(4, static_cast<std::int64_t>(st.generations.size()));
   if (st.has_best)
     run.bind(5, st.best_fitness).bind(6, st.best_generation).bind(7, st.best_index).bind_blob(8, st.best_genome);
+  if (st.success_evaluation) run.bind(9, *st.success_evaluation);
   run.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
   save_state(db_, cid, st.run, st.optimizer);
@@ -661,14 +668,15 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
   sql::Transaction tx(db_);
   auto row = db_.prepare(
       "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
-      "best_generation, best_index, best_genome, best_tree, best_behavior, stopped) "
-      "VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?, ?, ?, ?)");
+      "best_generation, best_index, best_genome, best_tree, best_behavior, stopped, success_evaluation) "
+      "VALUES (?, ?, ?, 'finished', ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   row.bind(1, cid).bind(2, run.run).bind(3, std::to_string(run.seed))
       .bind(4, static_cast<std::int64_t>(run.generations.size())).bind(5, run.best_fitness)
       .bind(6, run.best_generation).bind(7, run.best_index).bind_blob(8, run.best_genome);
   if (!run.best_tree.empty()) row.bind(9, run.best_tree);
   if (!run.best_behavior.empty()) row.bind(10, run.best_behavior);
   if (!run.stopped.empty()) row.bind(11, run.stopped);
+  if (run.success_evaluation) row.bind(12, *run.success_evaluation);
   row.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
   // The run's state (optimizer_state) stays: `esc run --resume DIR --generations G`
@@ -748,8 +756,9 @@ std::vector<StoredExperiment> ResultsDb::load() {
       for (StoredController& c : e.controllers) {
         auto runs = db_.prepare(fmt::format(
             "SELECT run, seed, status, generations_done, best_fitness, best_generation, best_index, best_genome, "
-            "best_tree, {}, {} FROM runs WHERE controller_id = ? ORDER BY run",
-            schema_version_ >= 2 ? "best_behavior" : "NULL", schema_version_ >= 7 ? "stopped" : "NULL"));
+            "best_tree, {}, {}, {} FROM runs WHERE controller_id = ? ORDER BY run",
+            schema_version_ >= 2 ? "best_behavior" : "NULL", schema_version_ >= 7 ? "stopped" : "NULL",
+            schema_version_ >= 8 ? "success_evaluation" : "NULL"));
         runs.bind(1, c.id);
         while (runs.step()) {
           const int run = runs.integer(0);
@@ -775,6 +784,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
           }
           if (schema_version_ >= 6) load_metrics(db_, c.id, run, gens, damaged);
           const bool has_best = !runs.is_null(4);
+          const auto success = runs.is_null(11) ? std::nullopt : std::optional<std::int64_t>(runs.int64(11));
           if (runs.text(2) == "finished") {
             eval::RunResult r;
             r.run = run;
@@ -788,6 +798,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
             if (!runs.is_null(9)) r.best_behavior = runs.text(9);
             if (!runs.is_null(10)) r.stopped = runs.text(10);
             r.transfer = std::move(transfer);
+            r.success_evaluation = success;
             auto u = db_.prepare("SELECT steps FROM behavior_usage WHERE controller_id = ? AND run = ? ORDER BY action_idx");
             u.bind(1, c.id).bind(2, run);
             while (u.step()) r.action_usage.push_back(u.int64(0));
@@ -806,6 +817,7 @@ std::vector<StoredExperiment> ResultsDb::load() {
             }
             s.optimizer = load_state(c, run);
             s.transfer = std::move(transfer);
+            s.success_evaluation = success;
             c.in_progress.push_back(std::move(s));
           }
         }
@@ -881,6 +893,7 @@ eval::CampaignResult StoredExperiment::result() const {
   eval::CampaignResult r;
   r.experiment = name;
   r.seed = seed;
+  if (const auto it = settings.find("success"); it != settings.end()) r.success = it->second;
   for (const StoredController& c : controllers) {
     if (c.finished.empty()) continue;
     r.controllers.push_back({c.name, c.architecture, c.genome_size, c.finished, c.actions});
@@ -911,6 +924,7 @@ eval::ResumePoint ResultsDb::resume_point(const StoredExperiment& stored, const 
       s.best_generation = f.best_generation;
       s.best_index = f.best_index;
       s.transfer = f.transfer;
+      s.success_evaluation = f.success_evaluation;
       try {
         s.optimizer = load_state(c, f.run);
       } catch (const StoreError&) {

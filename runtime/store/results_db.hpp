@@ -39,7 +39,9 @@ inline constexpr const char* kDependencyCache = "deps";
 // 5: a checksum on every row (row_checksum.hpp). 6: every optimizer's state in one table,
 // and its metrics per generation (optimizer_tables.hpp). 7: the algorithm that evolves each
 // controller (controllers.algorithm), and why a run's search ended early (runs.stopped).
-// 8: what an optimizer keeps beside the best, per generation (member_tables.hpp).
+// 8: the evaluation of a run that first met the experiment's success test
+// (runs.success_evaluation), and what an optimizer keeps beside the best, per generation
+// (member_tables.hpp).
 inline constexpr int kSchemaVersion = 8;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;

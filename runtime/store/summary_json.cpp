@@ -1,5 +1,8 @@
 #include "runtime/store/summary_json.hpp"
 
+#include <cmath>
+
+#include "runtime/eval/success.hpp"
 #include "runtime/store/seed_json.hpp"
 
 namespace esc::store {
@@ -45,9 +48,16 @@ json transfer_json(const eval::Transfer& t, const eval::RunResult& r) {
   return j;
 }
 
+// How a controller's runs fared against the experiment's success test.
+json success_json(const eval::SuccessCount& s) {
+  return {{"successes", s.successes}, {"runs", s.runs},
+          {"median_evaluations", std::isnan(s.median_evaluations) ? json(nullptr) : json(s.median_evaluations)}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
+  const bool declares_success = !result.success.empty();
   nlohmann::ordered_json controllers = nlohmann::ordered_json::object();
   for (const auto& c : result.controllers) {
     nlohmann::ordered_json runs = nlohmann::ordered_json::array();
@@ -76,12 +86,17 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
       }
       if (json u = usage_over_generations(c.choices, r); !u.is_null()) run["usage"] = std::move(u);
       if (r.transfer) run["transfer"] = transfer_json(*r.transfer, r);
+      if (declares_success) run["success_evaluation"] = r.success_evaluation ? json(*r.success_evaluation) : json(nullptr);
       runs.push_back(run);
     }
     controllers[c.name] = {{"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"runs", runs}};
+    if (declares_success) controllers[c.name]["success"] = success_json(eval::count_successes(c.runs));
   }
-  return {{"experiment", result.experiment}, {"seed", seed_json(result.seed)}, {"controllers", controllers}};
+  json summary = {{"experiment", result.experiment}, {"seed", seed_json(result.seed)}};
+  if (declares_success) summary["success"] = result.success;
+  summary["controllers"] = std::move(controllers);
+  return summary;
 }
 
 nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_t seed,
@@ -90,10 +105,10 @@ nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_
   for (const ConditionSummary& c : conditions) {
     nlohmann::ordered_json settings = nlohmann::ordered_json::object();
     for (const eval::ConditionSetting& s : c.settings) settings[s.key] = s.value;
-    list.push_back({{"name", c.name},
-                    {"experiment", c.result.experiment},
-                    {"settings", settings},
-                    {"controllers", summary_json(c.result)["controllers"]}});
+    json condition = {{"name", c.name}, {"experiment", c.result.experiment}, {"settings", settings}};
+    if (!c.result.success.empty()) condition["success"] = c.result.success;
+    condition["controllers"] = summary_json(c.result)["controllers"];
+    list.push_back(std::move(condition));
   }
   return {{"study", study}, {"seed", seed_json(seed)}, {"conditions", list}};
 }

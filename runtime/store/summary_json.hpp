@@ -8,11 +8,16 @@
 //   "usage": {"behaviors": [names], "best_steps": [[per behavior] per generation],
 //             "mean_steps": [[...] per generation], "steps_total": [per generation]},
 //   "transfer": {"experiment", "origin_run", "origin_fitness", "fitness_here", "change_percent",
-//                "regained_at_generation" (start from only)} (runs that start from a stored genome)}]}}}
+//                "regained_at_generation" (start from only)} (runs that start from a stored genome),
+//   "success_evaluation": the run's evaluations up to its first success, or null}],
+//   "success": {"successes", "runs", "median_evaluations" (over the runs that succeeded, or
+//               null)}}}}
+// "success" (the test, SuccessSpec::text) and the two success entries only when the experiment
+// declares `success when`.
 // Runs are numbered from 1 (as in file names, the console and the report); the per-generation
 // arrays start at generation 0, the initial population.
 // A study's: {"study": name, "seed": master seed, "conditions": [{"name": ..., "experiment":
-//   ..., "settings": {KEY: VALUE as written}, "controllers": {as above}}]}.
+//   ..., "settings": {KEY: VALUE as written}, "success" (when declared), "controllers": {as above}}]}.
 #include <string>
 #include <vector>
 

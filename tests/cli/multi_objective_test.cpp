@@ -146,6 +146,11 @@ TEST(MultiObjective, TheMazeStudyKilledMidStudyResumesToTheUnbrokenStudy) {
     EXPECT_EQ(esc("export " + reference.string() + " --table " + table).output,
               esc("export " + killed.string() + " --table " + table).output)
         << table;
+  // The mazes declare success: every run's evaluations to success (none reach the goal in 30
+  // steps) and each method's count resume as they were.
+  const std::string summary = slurp(reference / "summary.json");
+  EXPECT_EQ(summary, slurp(killed / "summary.json"));
+  EXPECT_NE(summary.find("\"success\": \"reach_goal > -0.0171875\""), std::string::npos);
 }
 
 // The rows of a CSV export, each split at its commas, the header first.

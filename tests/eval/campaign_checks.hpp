@@ -39,6 +39,7 @@ inline void expect_same(const eval::CampaignResult& a, const eval::CampaignResul
       EXPECT_EQ(x.best_generation, y.best_generation);
       EXPECT_EQ(x.best_index, y.best_index);
       EXPECT_EQ(x.action_usage, y.action_usage);
+      EXPECT_EQ(x.success_evaluation, y.success_evaluation);
       ASSERT_EQ(x.generations.size(), y.generations.size());
       for (std::size_t g = 0; g < x.generations.size(); ++g) {
         EXPECT_EQ(x.generations[g].best, y.generations[g].best);

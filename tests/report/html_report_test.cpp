@@ -65,6 +65,28 @@ TEST(HtmlReport, DataHoldsCurvesStatisticsUsageAndReplay) {
   EXPECT_DOUBLE_EQ(pair["mwu_u"].get<double>(), 0.0);
 }
 
+// Success only where the experiment declares a test: each controller's count and both tests
+// per pair; the data of an experiment without one is as before.
+TEST(HtmlReport, SuccessIsShownOnlyWhenDeclared) {
+  EXPECT_FALSE(report_data({experiment()}, {})["experiments"][0].contains("success"));
+  store::StoredExperiment e = experiment();
+  e.settings["success"] = "f > 3";
+  for (store::StoredController& c : e.controllers)
+    for (eval::RunResult& r : c.finished)
+      if (r.best_fitness > 3) r.success_evaluation = 10 + r.run;   // SC's three runs, CC's last
+  const auto d = report_data({e}, {})["experiments"][0];
+  ASSERT_TRUE(d.contains("success"));
+  EXPECT_EQ(d["success"]["test"], "f > 3");
+  EXPECT_EQ(d["success"]["controllers"][0]["successes"], 1);
+  EXPECT_EQ(d["success"]["controllers"][1]["successes"], 3);
+  EXPECT_DOUBLE_EQ(d["success"]["controllers"][1]["median_evaluations"].get<double>(), 11.0);
+  const auto& pair = d["success"]["pairs"][0];
+  EXPECT_EQ(pair["a"], "CC");
+  EXPECT_DOUBLE_EQ(pair["fisher_p"].get<double>(), 0.4);   // [[1, 2], [3, 0]]: scipy.stats.fisher_exact
+  EXPECT_DOUBLE_EQ(pair["censored_at"].get<double>(), 21.0);   // 2 generations of 10 evaluations, + 1
+  EXPECT_EQ(d["controllers"][1]["runs"][0]["success_evaluation"], 10);
+}
+
 TEST(HtmlReport, PageIsSelfContained) {
   const std::string page = html_report({experiment()});
   EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0U);

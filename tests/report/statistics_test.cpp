@@ -1,8 +1,10 @@
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/comparisons.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -218,6 +220,90 @@ TEST(Statistics, UndefinedTestsGiveNaN) {
   const std::vector<double> x = {1, 2, 3, 4};
   EXPECT_NEAR(welch_t_test(x, x).p_value, 1.0, 1e-12);
   EXPECT_NEAR(mann_whitney_u(x, x).p_value, 1.0, 1e-12);
+}
+
+
+// Fisher's exact test and the censored Mann-Whitney test of evaluations to success, against
+// SciPy 1.10.1:
+//   stats.fisher_exact([[sa, fa], [sb, fb]])                             odds ratio, p
+//   stats.mannwhitneyu(a', b', alternative="two-sided", method="auto")   U, p
+// where a' and b' hold every run that never succeeded as budget + 1 (Gehan's test with one
+// censoring point).
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double p_tolerance(double v) { return 1e-15 + 1e-9 * std::fabs(v); }
+
+struct FisherReference {
+  std::size_t sa, fa, sb, fb;
+  double odds_ratio, p;
+};
+
+TEST(SuccessStatistics, FisherMatchesScipy) {
+  const std::vector<FisherReference> references = {
+      {3, 37, 15, 25, 0.13513513513513514, 0.0025343227490509683},
+      {39, 1, 3, 37, 481.0, 8.131566341457106e-18},   // the paper's hard maze: novelty vs fitness
+      {0, 10, 10, 0, 0.0, 1.082508822446903e-05},
+      {1, 9, 11, 3, 0.030303030303030304, 0.0027594561852200836},
+      {5, 5, 5, 5, 1.0, 1.0},
+      {2, 8, 8, 2, 0.0625, 0.023014137565221155},     // symmetric: its mirror table ties it
+      {0, 5, 0, 5, kNaN, 1.0},                        // nobody succeeded: an empty column
+      {7, 0, 3, 4, kInf, 0.06993006993006992},
+      {12, 28, 11, 29, 1.12987012987013, 1.0},
+      {20, 20, 20, 20, 1.0, 1.0},
+      {1, 39, 0, 40, kInf, 1.0},
+      {40, 0, 36, 4, kInf, 0.11556797632746997},
+  };
+  for (const FisherReference& r : references) {
+    const FisherResult f = fisher_exact(r.sa, r.fa, r.sb, r.fb);
+    SCOPED_TRACE(::testing::Message() << r.sa << " " << r.fa << " " << r.sb << " " << r.fb);
+    EXPECT_NEAR(f.p_value, r.p, p_tolerance(r.p));
+    if (std::isnan(r.odds_ratio)) EXPECT_TRUE(std::isnan(f.odds_ratio));
+    else if (std::isinf(r.odds_ratio)) EXPECT_EQ(f.odds_ratio, kInf);
+    else EXPECT_NEAR(f.odds_ratio, r.odds_ratio, p_tolerance(r.odds_ratio));
+  }
+}
+
+TEST(SuccessStatistics, FisherIsTheSameWhicheverSampleComesFirst) {
+  for (const auto& [sa, fa, sb, fb] : std::vector<std::array<std::size_t, 4>>{{3, 37, 15, 25}, {7, 0, 3, 4}}) {
+    EXPECT_NEAR(fisher_exact(sa, fa, sb, fb).p_value, fisher_exact(sb, fb, sa, fa).p_value, 1e-15);
+    EXPECT_NEAR(fisher_exact(sa, fa, sb, fb).p_value, fisher_exact(fa, sa, fb, sb).p_value, 1e-15);
+  }
+}
+
+struct CensoredReference {
+  std::vector<std::optional<double>> a, b;
+  double budget, u, p;
+};
+
+TEST(SuccessStatistics, CensoredMannWhitneyMatchesScipyWithUnsolvedRunsAtTheBudgetPlusOne) {
+  const auto none = std::nullopt;
+  const std::vector<CensoredReference> references = {
+      {{1200, 3400, none, 560, none, 8800, 2100, none}, {none, none, 9100, none, 7700, none, none, none}, 10000,
+       16.0, 0.07284885832099199},
+      // Every run succeeded, no ties: SciPy's "auto" is exact here, and so is esc.
+      {{250, 500, 750, 1000, 1250}, {1500, 1750, 2000, 2250, 2500, 2750}, 3000, 0.0, 0.004329004329004329},
+      // 40-run-sized samples in the paper's budget: 10 of 13 and 2 of 13 unsolved.
+      {{none, none, none, none, none, none, none, none, none, none, 120000, 64000, 230000},
+       {35109, 12000, 88000, none, 41000, 230500, 77000, 150000, 9000, none, 190000, 61000, 100000}, 250000, 143.0,
+       0.0017398324714854186},
+      {{100, none}, {200, 300, none, none, 400}, 450, 4.0, 0.8407304470798855},
+  };
+  for (const CensoredReference& r : references) {
+    const TestResult t = censored_mann_whitney(r.a, r.b, r.budget);
+    EXPECT_EQ(t.statistic, r.u);
+    EXPECT_NEAR(t.p_value, r.p, p_tolerance(r.p));
+  }
+  // Nobody succeeded: every value tied, no p (SciPy says 1; esc's Mann-Whitney has no
+  // variance to divide by, as for any all-equal samples).
+  const std::vector<std::optional<double>> unsolved(3), unsolved_too(4);
+  EXPECT_TRUE(std::isnan(censored_mann_whitney(unsolved, unsolved_too, 5000).p_value));
+}
+
+TEST(SuccessStatistics, ARunNeverCountsBelowAnObservedSuccess) {
+  // A budget below an observed value (none is made so) is raised: the unsolved run stays last.
+  const std::vector<std::optional<double>> a{std::nullopt}, b{700.0};
+  EXPECT_EQ(censored_mann_whitney(a, b, 500).statistic, 1.0);   // a's unsolved run beats b's
 }
 
 }  // namespace

@@ -36,5 +36,28 @@ TEST(StudyTable, OneFamilyWithinThenAcrossConditions) {
   EXPECT_EQ(t.comparisons[4].a12, 1.0);
 }
 
+// Success is compared over the family's pairs whose cells both declare a test: a condition
+// without one drops out of those comparisons, and nothing else changes.
+TEST(StudyTable, SuccessOverThePairsThatDeclareIt) {
+  const SuccessSample solved{{10.0, 20.0, std::nullopt}, 60.0}, unsolved{{std::nullopt, std::nullopt, 50.0}, 60.0};
+  ConditionSamples off{"off", {{"SC", {10, 11, 12}}, {"CC", {5, 6, 7}}}, {solved, unsolved}};
+  ConditionSamples on{"on", {{"SC", {3, 4, 5}}, {"CC", {5, 6, 8}}}, {unsolved, solved}};
+  ConditionSamples none{"none", {{"SC", {1, 2, 3}}, {"CC", {2, 3, 4}}}};
+  const StudyTable t = study_table({off, on, none});
+  const StudyTable plain = study_table({ConditionSamples{"off", off.controllers}, ConditionSamples{"on", on.controllers},
+                                        none});
+  ASSERT_EQ(t.comparisons.size(), plain.comparisons.size());
+  for (std::size_t k = 0; k < t.comparisons.size(); ++k)
+    EXPECT_EQ(t.comparisons[k].welch_p_holm, plain.comparisons[k].welch_p_holm);
+  EXPECT_TRUE(plain.success_comparisons.empty());
+  EXPECT_FALSE(t.cell(2, 0)->success.has_value());
+  std::vector<std::string> labels;
+  for (const SuccessComparison& c : t.success_comparisons) labels.push_back(t.label(c.a, c.b));
+  EXPECT_EQ(labels, (std::vector<std::string>{"off: SC vs CC", "on: SC vs CC", "SC: off vs on", "CC: off vs on"}));
+  EXPECT_EQ(t.success_comparisons[0].successes_a, 2u);
+  EXPECT_EQ(t.success_comparisons[0].successes_b, 1u);
+  EXPECT_EQ(t.success_comparisons[0].censored_at, 61.0);
+}
+
 }  // namespace
 }  // namespace esc::report

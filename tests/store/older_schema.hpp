@@ -19,7 +19,7 @@ namespace esc::store::test {
 
 // Moves every ES run's state into table run_state, as schema 5 kept it, and drops what
 // schemas 6 to 8 added (tables optimizer_state, metrics, member_layouts and members, columns
-// controllers.algorithm and runs.stopped).
+// controllers.algorithm, runs.stopped and runs.success_evaluation).
 inline void keep_state_as_schema5(sql::Database& raw) {
   std::vector<std::tuple<std::int64_t, std::int64_t, std::vector<evo::Individual>>> rows;
   auto q = raw.prepare("SELECT controller_id, run, state FROM optimizer_state WHERE algorithm = 'es'");
@@ -43,7 +43,15 @@ inline void keep_state_as_schema5(sql::Database& raw) {
         .run();
   raw.exec("DROP TABLE optimizer_state; DROP TABLE metrics; DROP TABLE member_layouts; DROP TABLE members; "
            "ALTER TABLE controllers DROP COLUMN algorithm; "
-           "ALTER TABLE runs DROP COLUMN stopped;");
+           "ALTER TABLE runs DROP COLUMN stopped; ALTER TABLE runs DROP COLUMN success_evaluation;");
+}
+
+// As schema 7 wrote it: without schema 8's column runs.success_evaluation (the runs sealed
+// again without it) and tables member_layouts and members.
+inline void as_schema7(sql::Database& raw) {
+  raw.exec("ALTER TABLE runs DROP COLUMN success_evaluation; DROP TABLE member_layouts; DROP TABLE members; "
+           "PRAGMA user_version=7;");
+  seal_table(raw, "runs");
 }
 
 // Drops the checksums of every sealed table the database has, as before schema 5 (call

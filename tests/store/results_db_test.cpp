@@ -220,7 +220,7 @@ TEST(ResultsDb, ASchemaSevenDatabaseGetsTheMemberTablesWhenWritten) {
   }
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("DROP TABLE member_layouts; DROP TABLE members; PRAGMA user_version=7;");
+    test::as_schema7(raw);
   }
   EXPECT_FALSE(ResultsDb::open(dir, true).load_single().controllers.at(0).members.has_value());
   {
@@ -231,6 +231,58 @@ TEST(ResultsDb, ASchemaSevenDatabaseGetsTheMemberTablesWhenWritten) {
   ASSERT_TRUE(c.members.has_value());
   EXPECT_EQ(c.members->rows.size(), 2U);
   EXPECT_EQ(c.members->rows[0].generation, 1);
+}
+
+// Schema 8: the evaluation of a run's first success, in a run in progress and a finished
+// one, and carried into a run carried on; a schema-7 database (no such column, its rows
+// sealed as they were) reads as it is and gets the column when opened for writing.
+TEST(ResultsDb, ARunsFirstSuccessIsStoredAndASchemaSevenDatabaseGetsTheColumn) {
+  const fs::path dir = fresh_dir("success");
+  eval::RunState met = state(2);
+  met.success_evaluation = 27;
+  eval::RunResult finished{0, 5, {{0, 2.0, 1.0, 0.5, 10, 100, 0.1}}, 2.0, {0.1}, 0, 3, {7, 3}};
+  finished.success_evaluation = 4;
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    db.commit_generation("SC", state(1));
+    EXPECT_FALSE(db.load_single().controllers[0].in_progress[0].success_evaluation.has_value());
+    db.commit_generation("SC", met);
+    db.commit_generation("SC", {0, 5, finished.generations, true, 2.0, {0.1}, 0, 3,
+                                eval::OptimizerState{"es", 1, {1, 2, 3}}});
+    db.commit_run("SC", finished);
+  }
+  {
+    ResultsDb db = ResultsDb::open(dir, true);
+    const StoredExperiment s = db.load_single();
+    const StoredController& c = s.controllers[0];
+    ASSERT_EQ(c.in_progress.size(), 1u);
+    EXPECT_EQ(c.in_progress[0].success_evaluation, 27);
+    ASSERT_EQ(c.finished.size(), 1u);
+    EXPECT_EQ(c.finished[0].success_evaluation, 4);
+    eval::ExperimentSpec longer = spec();
+    longer.es.generations = 5;   // carried on: the finished run continues with its success
+    const eval::ResumePoint p = db.resume_point(s, longer);
+    ASSERT_EQ(p.in_progress.size(), 2u);
+    EXPECT_EQ(p.in_progress[0].state.success_evaluation, 4);
+  }
+  {  // As schema 7 wrote it: the rows sealed without the column.
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    test::as_schema7(raw);
+  }
+  for (const StoredController& c : ResultsDb::open(dir, true).load_single().controllers) {
+    EXPECT_FALSE(c.finished.at(0).success_evaluation.has_value());
+    EXPECT_FALSE(c.in_progress.at(0).success_evaluation.has_value());
+  }
+  {
+    ResultsDb db = ResultsDb::open(dir);   // upgraded, its rows sealed again with the column
+    EXPECT_FALSE(db.load_single().controllers[0].finished[0].success_evaluation.has_value());
+    db.commit_run("SC", finished);
+  }
+  sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+  auto version = raw.prepare("PRAGMA user_version");
+  ASSERT_TRUE(version.step());
+  EXPECT_EQ(version.int64(0), kSchemaVersion);
+  EXPECT_EQ(ResultsDb::open(dir, true).load_single().controllers[0].finished[0].success_evaluation, 4);
 }
 
 TEST(ResultsDb, ClearErrorsForForeignDamagedAndNewerDatabases) {

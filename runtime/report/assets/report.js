@@ -155,7 +155,50 @@
                                   fmt(s.best, 2), fmt(s.worst, 2)].map(v => el('td', {text: v}))));
     card.appendChild(t);
     pairsTable(card, exp.stats.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
+    if (exp.success) {
+      card.appendChild(el('h3', {text: `Success: ${exp.success.test}`}));
+      const s = el('table');
+      s.appendChild(el('tr', {}, ['controller', 'successes', 'runs', 'median evaluations to success']
+        .map(h => el('th', {text: h}))));
+      for (const c of exp.success.controllers)
+        s.appendChild(el('tr', {}, [c.controller, String(c.successes), String(c.runs), fmt(c.median_evaluations, 1)]
+          .map(v => el('td', {text: v}))));
+      card.appendChild(s);
+      successPairsTable(card, exp.success.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
+    }
     parent.appendChild(card);
+  }
+
+  // "3/40 (1250)": runs that succeeded, of all, and the median of their evaluations to success.
+  function successText(s) {
+    return `${s.successes}/${s.runs} (${s.median_evaluations === null ? '–' : fmt(s.median_evaluations, 1)})`;
+  }
+
+  // Success compared, pair by pair: Fisher's exact test of the counts, the censored
+  // Mann-Whitney test of the evaluations to success; each one Holm family.
+  function successPairsTable(card, pairs, label, family) {
+    if (!pairs || pairs.length === 0) return;
+    card.appendChild(el('h3', {text: 'Success compared (two-sided)'}));
+    const p = el('table');
+    p.appendChild(el('tr', {}, ['pair', 'successes', 'Fisher p', 'p Holm', 'odds ratio', 'Mann-Whitney U (censored)',
+                                'p', 'p Holm', 'censored at'].map(h => el('th', {text: h}))));
+    for (const r of pairs) {
+      const row = el('tr', {}, [label(r), `${r.successes_a}/${r.runs_a} vs ${r.successes_b}/${r.runs_b}`,
+                                fmtP(r.fisher_p), fmtP(r.fisher_p_holm),
+                                r.odds_ratio === 'inf' ? '∞' : fmt(r.odds_ratio, 2), fmt(r.censored_u, 1),
+                                fmtP(r.censored_p), fmtP(r.censored_p_holm), fmt(r.censored_at, 0)]
+        .map(v => el('td', {text: v})));
+      if (r.fisher_p_holm !== null && r.fisher_p_holm < 0.05) row.children[3].className = 'significant';
+      if (r.censored_p_holm !== null && r.censored_p_holm < 0.05) row.children[7].className = 'significant';
+      p.appendChild(row);
+    }
+    card.appendChild(p);
+    card.appendChild(el('p', {class: 'note', text:
+      'Fisher: Fisher\'s exact test of the success counts; odds ratio: the odds of success of the first over the ' +
+      'second. Mann-Whitney U (censored): the evaluations up to the first success, where a run that never ' +
+      'succeeded counts as more than the budget, tied above every success (Gehan\'s test); censored at: what such ' +
+      `a run counts as, the pair's largest budget + 1. Holm: p adjusted over ${family}, for each test; bold: ` +
+      'adjusted p < 0.05. n/a: the test is undefined for these samples.'}));
   }
 
   // Pairwise comparisons, one Holm family: `label` names each row, `family` what it holds.
@@ -222,6 +265,23 @@
       })).map(v => el('td', {text: v}))));
     card.appendChild(t);
     pairsTable(card, study.pairs, r => r.label, `the ${study.pairs.length} comparisons of this table (${study.family})`);
+    if (study.cells.some(x => x.success)) {
+      const tests = [...new Set(study.conditions.filter(c => c.success).map(c => c.success))];
+      card.appendChild(el('h3', {text: tests.length === 1 ? `Success: ${tests[0]}` : 'Success (each condition\'s test)'}));
+      card.appendChild(el('p', {class: 'note', text:
+        'Runs that succeeded, of all, and the median of their evaluations up to the first success.'}));
+      const s = el('table');
+      s.appendChild(el('tr', {}, ['condition'].concat(study.controllers).map(h => el('th', {text: h}))));
+      for (const c of study.conditions)
+        s.appendChild(el('tr', {}, [tests.length === 1 || !c.success ? c.name : `${c.name} (${c.success})`]
+          .concat(study.controllers.map(k => {
+            const cell = study.cells.find(x => x.condition === c.name && x.controller === k);
+            return cell && cell.success ? successText(cell.success) : '–';
+          })).map(v => el('td', {text: v}))));
+      card.appendChild(s);
+      successPairsTable(card, study.success_pairs, r => r.label,
+                        `the ${(study.success_pairs || []).length} comparisons of this table (${study.family})`);
+    }
     section.appendChild(card);
     section.appendChild(el('h2', {text: 'Figures'}));
     const grid = el('div', {class: 'figures'});

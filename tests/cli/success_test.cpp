@@ -1,0 +1,119 @@
+// `success when ...` end to end (tests/cli/data/success_study.esc): a study's summary.json
+// holds every run's evaluations to success and each controller's count, its end table adds
+// the successes and, per pair of the family, Fisher's exact test and the censored
+// Mann-Whitney test; the report shows them; a study killed mid-run resumes to the same
+// summary, byte for byte.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
+
+namespace {
+
+using namespace cli_test;
+using nlohmann::json;
+
+std::string study() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/success_study.esc"; }
+
+constexpr int kGenerations = 12;
+constexpr int kLambda = 20;
+
+TEST(Success, AStudyCountsComparesAndReportsSuccess) {
+  const fs::path out = scratch("success-study");
+  const Outcome o = esc("run " + study() + " --generations " + std::to_string(kGenerations) + " --threads 2 --out " +
+                        out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const json s = read_json(out / "summary.json");
+  int successes = 0, failures = 0;
+  for (const json& c : s.at("conditions")) {
+    EXPECT_EQ(c.at("success"), "avoid > 120") << c.dump();
+    for (const auto& [name, controller] : c.at("controllers").items()) {
+      int counted = 0;
+      for (const json& r : controller.at("runs")) {
+        const json& e = r.at("success_evaluation");
+        if (e.is_null()) {
+          ++failures;
+          continue;
+        }
+        ++counted;
+        ++successes;
+        // Within the run's budget, and at or after the first generation whose best passed.
+        EXPECT_GE(e.get<int>(), 1);
+        EXPECT_LE(e.get<int>(), kGenerations * kLambda);
+        std::size_t first = 0;
+        while (r.at("best")[first].get<double>() <= 120.0) ++first;
+        EXPECT_GT(e.get<int>(), static_cast<int>(first) * kLambda) << name << " " << r.dump();
+        EXPECT_LE(e.get<int>(), static_cast<int>(first + 1) * kLambda) << name << " " << r.dump();
+      }
+      EXPECT_EQ(controller.at("success").at("successes"), counted);
+      EXPECT_EQ(controller.at("success").at("runs"), 4);
+    }
+  }
+  // The level is chosen so that the study has both (else the tests below test little).
+  EXPECT_GT(successes, 0);
+  EXPECT_GT(failures, 0);
+
+  // The end table: successes per condition and controller, then both tests per pair.
+  EXPECT_NE(o.output.find("success when avoid > 120: runs that succeeded"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("success (two-sided)"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("Fisher p"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("censored at"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("a run that never succeeded counts as more than the budget"), std::string::npos)
+      << o.output;
+  // The fitness's family and the success tests' hold the same 4 pairs.
+  const std::string family = "Holm: p adjusted over the 4 comparisons shown (within each condition";
+  const std::size_t first = o.output.find(family);
+  ASSERT_NE(first, std::string::npos) << o.output;
+  EXPECT_NE(o.output.find(family, first + 1), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("CC: inertia vs no_inertia"), std::string::npos) << o.output;
+  // 241: a run that never succeeded counts as more than 12 x 20 evaluations.
+  EXPECT_NE(o.output.find(" 241\n"), std::string::npos) << o.output;
+
+  // The report: the same numbers in the page's data, drawn without a script error.
+  ASSERT_EQ(esc("report " + out.string()).status, 0);
+  const std::string html = slurp(out / "report.html");
+  EXPECT_NE(html.find("\"success_pairs\""), std::string::npos);
+  EXPECT_NE(html.find("\"success_evaluation\""), std::string::npos);
+  if (std::string(ESC_CHROMIUM).empty())
+    GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
+  const Outcome dom = shell("timeout 60 " + std::string(ESC_CHROMIUM) +
+                            " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --user-data-dir=" +
+                            (out / "profile").string() + " --virtual-time-budget=3000 --dump-dom file://" +
+                            (out / "report.html").string() + " 2>/dev/null");
+  ASSERT_EQ(dom.status, 0);
+  EXPECT_NE(dom.output.find("(ready)</title>"), std::string::npos) << dom.output.substr(0, 600);
+  EXPECT_EQ(dom.output.find("class=\"esc-error\""), std::string::npos) << "script error in the page";
+  EXPECT_NE(dom.output.find("Success compared (two-sided)"), std::string::npos);
+  EXPECT_NE(dom.output.find("Success: avoid &gt; 120"), std::string::npos);
+}
+
+TEST(Success, AStudyKilledMidRunResumesToTheSameSuccesses) {
+  const fs::path whole = scratch("success-whole"), killed = scratch("success-killed");
+  const std::vector<std::string> args{"run", study(), "--generations", "40", "--seed", "5", "--threads", "1"};
+  std::string line;
+  for (const std::string& a : args) line += a + " ";
+  ASSERT_EQ(esc(line + "--out " + whole.string()).status, 0);
+  // 2 conditions x 2 controllers x 4 runs x 40 generations: stopped in the first condition,
+  // before most runs succeeded (their first successes lie between generations 2 and 38).
+  std::vector<std::string> k = args;
+  k.insert(k.end(), {"--out", killed.string()});
+  const pid_t child = spawn_esc(k);
+  ASSERT_GE(child, 0);
+  const Killed stop = kill_when_committed(child, killed, 100);
+  ASSERT_TRUE(stop.still_running) << "the study finished before it could be killed";
+  ASSERT_LT(committed_generations(killed), 640) << "nothing left to resume";
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(slurp(whole / "summary.json"), slurp(killed / "summary.json"));
+  const json s = read_json(whole / "summary.json");
+  int successes = 0;
+  for (const json& c : s.at("conditions"))
+    for (const auto& [name, controller] : c.at("controllers").items())
+      successes += controller.at("success").at("successes").get<int>();
+  EXPECT_GT(successes, 0) << "a study without a success tests little here";
+}
+
+}  // namespace
