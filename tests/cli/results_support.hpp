@@ -59,19 +59,25 @@ inline Killed kill_when_committed(pid_t child, const fs::path& dir, int at_least
   return k;
 }
 
-// `esc run SCRIPT --generations 100 --seed 5 --threads 1 --out DIR EXTRA...`, killed once
-// `at_least` generations are committed and before all `total` are; wrap in ASSERT_NO_FATAL_FAILURE.
-inline void run_killed_halfway(const std::string& script, const fs::path& dir, int at_least, int total,
-                               const std::string& threads = "1", const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> args{"run", script, "--generations", "100", "--seed", "5", "--threads", threads, "--out",
-                                dir.string()};
-  args.insert(args.end(), extra.begin(), extra.end());
+// `esc ARGS... --out DIR`, killed once `at_least` generations are committed and before all
+// `total` are; wrap in ASSERT_NO_FATAL_FAILURE.
+inline void run_killed(std::vector<std::string> args, const fs::path& dir, int at_least, int total) {
+  args.insert(args.end(), {"--out", dir.string()});
   const pid_t child = spawn_esc(args);
   ASSERT_GE(child, 0);
   const Killed k = kill_when_committed(child, dir, at_least);
   ASSERT_TRUE(k.still_running) << "the run finished before it could be killed";
   ASSERT_GE(k.seen, at_least);
   ASSERT_LT(committed_generations(dir), total) << "nothing left to resume";
+}
+
+// `esc run SCRIPT --generations 100 --seed 5 --threads 1 EXTRA... --out DIR`, killed as
+// run_killed says.
+inline void run_killed_halfway(const std::string& script, const fs::path& dir, int at_least, int total,
+                               const std::string& threads = "1", const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{"run", script, "--generations", "100", "--seed", "5", "--threads", threads};
+  args.insert(args.end(), extra.begin(), extra.end());
+  run_killed(args, dir, at_least, total);
 }
 
 // Same experiment, same seed: summary.json equal in everything but nothing else.

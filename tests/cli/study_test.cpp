@@ -145,13 +145,7 @@ TEST(Study, KilledHalfwayResumesBitIdentical) {
   for (const auto& a : w) line += " " + a;
   ASSERT_EQ(esc(line.substr(1)).status, 0);
   // 3 conditions x 2 controllers x 2 runs x 30 generations: stopped in the second condition.
-  std::vector<std::string> k = args;
-  k.insert(k.end(), {"--out", killed.string()});
-  const pid_t child = spawn_esc(k);
-  ASSERT_GE(child, 0);
-  const Killed stop = kill_when_committed(child, killed, 150);
-  ASSERT_TRUE(stop.still_running) << "the study finished before it could be killed";
-  ASSERT_LT(committed_generations(killed), 360) << "nothing left to resume";
+  ASSERT_NO_FATAL_FAILURE(run_killed(args, killed, 150, 360));
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resuming study tiny_study_fewer"), std::string::npos) << resumed.output;

@@ -98,13 +98,7 @@ TEST(Success, AStudyKilledMidRunResumesToTheSameSuccesses) {
   ASSERT_EQ(esc(line + "--out " + whole.string()).status, 0);
   // 2 conditions x 2 controllers x 4 runs x 40 generations: stopped in the first condition,
   // before most runs succeeded (their first successes lie between generations 2 and 38).
-  std::vector<std::string> k = args;
-  k.insert(k.end(), {"--out", killed.string()});
-  const pid_t child = spawn_esc(k);
-  ASSERT_GE(child, 0);
-  const Killed stop = kill_when_committed(child, killed, 100);
-  ASSERT_TRUE(stop.still_running) << "the study finished before it could be killed";
-  ASSERT_LT(committed_generations(killed), 640) << "nothing left to resume";
+  ASSERT_NO_FATAL_FAILURE(run_killed(args, killed, 100, 640));
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_EQ(slurp(whole / "summary.json"), slurp(killed / "summary.json"));
