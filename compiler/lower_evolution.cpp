@@ -167,6 +167,8 @@ void check_further_settings(const X& x, const SourceRange& where, Sink& sink, st
     const AlgorithmOptions* o = find_further_algorithm(a);
     const auto s = x.algorithm_settings.find(a);
     if (o == nullptr || s == x.algorithm_settings.end()) continue;
+    // A tree without `evolve gp` is reported at its name in `compare` (choose_algorithms).
+    if (x.controllers[i].is_tree() && !x.gp) continue;
     if (std::string m = o->problem(s->second, x.problem_of(x.controllers[i])); !m.empty()) {
       sink.error(where, fmt::format("impossible {} settings for `{}`: {}", o->what, x.controllers[i].name, m));
       return;
