@@ -47,7 +47,7 @@ TEST(TreeSearchCli, EachAlgorithmEvolvesTreesExportsAndReplaysItsMembers) {
   EXPECT_GT(rows_of(archive.output, "map_elites"), 0) << archive.output;
 
   for (const std::string& c : {std::string("TN"), std::string("TV")}) {
-    const Outcome member = esc("replay " + (dir / c).string() + " --run 1 --member 0");
+    const Outcome member = esc("replay " + dir.string() + " --controller " + c + " --run 1 --member 0");
     EXPECT_EQ(member.status, 0) << c << ": " << member.output;
   }
   // The first archived cell of TM's first run.
@@ -59,7 +59,7 @@ TEST(TreeSearchCli, EachAlgorithmEvolvesTreesExportsAndReplaysItsMembers) {
   for (std::size_t from = 0, comma; (comma = line.find(',', from)) != std::string::npos; from = comma + 1)
     cells.push_back(line.substr(from, comma - from));
   ASSERT_GE(cells.size(), 6u) << line;
-  const Outcome elite = esc("replay " + (dir / "TM").string() + " --run 1 --member " + cells[5]);
+  const Outcome elite = esc("replay " + dir.string() + " --controller TM --run 1 --member " + cells[5]);
   EXPECT_EQ(elite.status, 0) << line << "\n" << elite.output;
 }
 
