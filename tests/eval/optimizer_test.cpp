@@ -179,8 +179,11 @@ TEST(Optimizer, TreeCandidatesAndMembersAreTreesWithinTheGpLimits) {
     }
     const auto members = o->members(false);
     ASSERT_TRUE(members.has_value()) << k.name;
-    for (const evo::Member& m : members->members)
-      if (!m.genome.empty()) EXPECT_NO_THROW((void)evo::gp::decode(m.genome, *c.primitives)) << k.name;
+    for (const evo::Member& m : members->members) {
+      if (!m.genome.empty()) {
+        EXPECT_NO_THROW((void)evo::gp::decode(m.genome, *c.primitives)) << k.name;
+      }
+    }
   }
 }
 
