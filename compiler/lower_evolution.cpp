@@ -143,6 +143,12 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
       sink.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
                                                  "`evolve gp(...)` to evolve it", c.name, d.name.text))
           .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
+    } else if (c.is_tree() && items.gp == nullptr) {
+      // Every algorithm varies trees with the GP's operators (runtime/evo/gp/tree_variation.hpp).
+      sink.error(compared[i]->where, fmt::format("`{}` is a tree controller evolved by `{}`, but experiment `{}` has no "
+                                                 "`evolve gp(...)` to give its tree operators", c.name, a, d.name.text))
+          .help.push_back(fmt::format("add `evolve gp(max_depth 12, max_size 100) for 50 generations`: `{}` selects, "
+                                      "the GP's crossover and mutations vary, for the GP's generations", a));
     } else if (!c.is_tree() && a == X::kEs && items.gp != nullptr && items.es == nullptr) {
       sink.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
                                                  "(`evolve gp`)", c.name, d.name.text))
@@ -161,6 +167,8 @@ void check_further_settings(const X& x, const SourceRange& where, Sink& sink, st
     const AlgorithmOptions* o = find_further_algorithm(a);
     const auto s = x.algorithm_settings.find(a);
     if (o == nullptr || s == x.algorithm_settings.end()) continue;
+    // A tree without `evolve gp` is reported at its name in `compare` (choose_algorithms).
+    if (x.controllers[i].is_tree() && !x.gp) continue;
     if (std::string m = o->problem(s->second, x.problem_of(x.controllers[i])); !m.empty()) {
       sink.error(where, fmt::format("impossible {} settings for `{}`: {}", o->what, x.controllers[i].name, m));
       return;

@@ -27,6 +27,7 @@ namespace esc::evo {
 
 namespace gp {
 class PrimitiveSet;
+struct GpSettings;
 }
 
 // A candidate as the run loop, the store and the evaluator see it: a network's weights, or
@@ -87,7 +88,9 @@ struct Bounds {
 };
 
 // What one run evolves: genomes of `genome_size` weights (a network) or trees over
-// `primitives` (null for a network), from the run's `seed`; `start` is the genome a run
+// `primitives` (null for a network), from the run's `seed`; `tree_operators`, the GP's
+// settings (the experiment's `evolve gp(...)`), are what any algorithm that evolves trees
+// varies them with (null when the experiment has none); `start` is the genome a run
 // that starts from a stored controller (`start from`) begins with, or null.
 // `objectives` holds one range per objective of an Outcome, in its maximised form (a
 // minimised objective declared in [0, 300] is [-300, 0] here); `descriptors` one per
@@ -99,6 +102,7 @@ struct Problem {
   const Genome* start = nullptr;
   std::vector<Bounds> objectives;
   std::vector<Bounds> descriptors;
+  const gp::GpSettings* tree_operators = nullptr;
 };
 
 class Optimizer {

@@ -4,11 +4,13 @@
 // algorithm once with what it evolves.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
 #include "runtime/eval/experiment.hpp"
 #include "runtime/evo/evaluate_only.hpp"
+#include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/registry.hpp"
 #include "tests/eval/gp_experiment.hpp"
 
@@ -37,27 +39,33 @@ void declare_objectives(ExperimentSpec& x) {
 }
 
 struct Case {
-  std::string name;
+  std::string name;        // the algorithm's, and " (trees)" for one that evolves both
+  std::string algorithm;
   ExperimentSpec spec;
   std::size_t controller;
 };
 
-// Every registered algorithm on a controller it evolves: a network of the small experiment,
-// or the GP experiment's Action tree.
+// Every registered algorithm on each kind of controller it evolves: a network of the small
+// experiment, the GP experiment's Action tree.
 std::vector<Case> cases() {
   std::vector<Case> v;
   for (const evo::Algorithm& a : evo::algorithms()) {
+    const std::string name(a.name);
     if (a.trees) {
       ExperimentSpec x = testing::gp_experiment();
       declare_objectives(x);
-      v.push_back({std::string(a.name), std::move(x), 1});
-      continue;
+      if (a.defaults != nullptr) {
+        x.controllers[1].evolved_by = name;
+        x.algorithm_settings[name] = a.defaults();
+      }
+      v.push_back({a.networks ? name + " (trees)" : name, name, std::move(x), 1});
     }
+    if (!a.networks) continue;
     ExperimentSpec x = testing::small_experiment();
     declare_objectives(x);
-    x.networks = std::string(a.name);
+    x.networks = name;
     if (a.defaults != nullptr) x.algorithm_settings[x.networks] = a.defaults();
-    v.push_back({std::string(a.name), std::move(x), 0});
+    v.push_back({name, name, std::move(x), 0});
   }
   return v;
 }
@@ -74,7 +82,7 @@ std::unique_ptr<evo::Optimizer> make(const ExperimentSpec& spec, const control::
 TEST(Optimizer, EveryAlgorithmLoadedAfterAnyGenerationContinuesAsTheUnstoppedOne) {
   for (const Case& k : cases()) {
     const control::ControllerSpec& c = k.spec.controllers[k.controller];
-    ASSERT_EQ(k.spec.evolution_of(c).algorithm->name, k.name);
+    ASSERT_EQ(k.spec.evolution_of(c).algorithm->name, k.algorithm);
     auto whole = make(k.spec, c);
     std::vector<std::vector<evo::Genome>> asked;
     for (int g = 0; g < 4; ++g) {
@@ -124,6 +132,61 @@ TEST(Optimizer, AStateItCouldNotHaveSavedIsRefused) {
                std::invalid_argument);
 }
 
+// A state of one representation loaded by the same algorithm over the other is refused by
+// name, not misread: a tree is never read as weights, nor weights as a tree.
+TEST(Optimizer, AStateOfTheOtherRepresentationIsRefusedByName) {
+  const std::vector<Case> all = cases();
+  for (const Case& trees : all) {
+    if (trees.name.find("(trees)") == std::string::npos) continue;
+    const auto network = std::find_if(all.begin(), all.end(), [&](const Case& k) { return k.name == trees.algorithm; });
+    ASSERT_NE(network, all.end());
+    auto t = make(trees.spec, trees.spec.controllers[trees.controller]);
+    t->tell(measure(t->ask(0)));
+    auto n = make(network->spec, network->spec.controllers[network->controller]);
+    n->tell(measure(n->ask(0)));
+    try {
+      make(network->spec, network->spec.controllers[network->controller])->load(t->save());
+      ADD_FAILURE() << trees.name << ": a tree state loaded over a network";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("over trees (this one evolves a network's weights)"), std::string::npos)
+          << e.what();
+    }
+    try {
+      make(trees.spec, trees.spec.controllers[trees.controller])->load(n->save());
+      ADD_FAILURE() << trees.name << ": a network state loaded over trees";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("over a network's weights (this one evolves trees)"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+// What a tree controller's NSGA-II, novelty search and MAP-Elites ask for are trees of its
+// primitive set within the GP's limits, and what they keep (members) are such trees too.
+TEST(Optimizer, TreeCandidatesAndMembersAreTreesWithinTheGpLimits) {
+  for (const Case& k : cases()) {
+    if (k.name.find("(trees)") == std::string::npos) continue;
+    const control::ControllerSpec& c = k.spec.controllers[k.controller];
+    auto o = make(k.spec, c);
+    for (int g = 0; g < 3; ++g) {
+      const std::vector<evo::Genome> asked = o->ask(g);
+      for (const evo::Genome& x : asked) {
+        const evo::gp::Tree t = evo::gp::decode(x, *c.primitives);
+        EXPECT_LE(static_cast<int>(t.size()), k.spec.gp->max_size) << k.name;
+        EXPECT_LE(evo::gp::depth(t), k.spec.gp->max_depth) << k.name;
+      }
+      o->tell(measure(asked));
+    }
+    const auto members = o->members(false);
+    ASSERT_TRUE(members.has_value()) << k.name;
+    for (const evo::Member& m : members->members) {
+      if (!m.genome.empty()) {
+        EXPECT_NO_THROW((void)evo::gp::decode(m.genome, *c.primitives)) << k.name;
+      }
+    }
+  }
+}
+
 TEST(Optimizer, AStartGenomeIsCandidateZeroOfGenerationZero) {
   for (const Case& k : cases()) {
     const control::ControllerSpec& c = k.spec.controllers[k.controller];
@@ -157,6 +220,8 @@ TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
   EXPECT_FALSE(evo::find_algorithm("es")->trees);
   ASSERT_NE(evo::find_algorithm("gp"), nullptr);
   EXPECT_TRUE(evo::find_algorithm("gp")->trees);
+  for (const char* both : {"nsga2", "novelty", "map_elites", "cvt_map_elites"})
+    EXPECT_TRUE(evo::find_algorithm(both)->trees && evo::find_algorithm(both)->networks) << both;
   EXPECT_EQ(evo::find_algorithm("nsga3"), nullptr);
 }
 

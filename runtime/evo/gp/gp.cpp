@@ -76,21 +76,22 @@ Individual GeneticProgramming::offspring(std::span<const Individual> population,
   Rng rng(base, {static_cast<std::uint64_t>(i)});
   const Tree& a = population[tournament(population, s_.tournament, rng)].tree;
   const double u = rng.uniform();
-  double edge = s_.crossover;
+  const double edge = s_.crossover;
   Individual child;
   if (u < edge) {
     const Tree& b = population[tournament(population, s_.tournament, rng)].tree;
     child.tree = crossover(a, b, set_, limits(), s_.internal_bias, rng);
-  } else if (u < (edge += s_.subtree_mutation)) {
-    child.tree = subtree_mutation(a, set_, limits(), s_.mutation_depth, rng);
-  } else if (u < (edge += s_.point_mutation)) {
-    child.tree = point_mutation(a, set_, s_.erc_sigma, rng);
-  } else if (u < (edge += s_.hoist_mutation)) {
-    child.tree = hoist_mutation(a, set_, rng);
   } else {
-    child.tree = a;
+    child.tree = mutate(a, u, edge, rng);
   }
   return child;
+}
+
+Tree GeneticProgramming::mutate(const Tree& a, double u, double edge, Rng& rng) const {
+  if (u < (edge += s_.subtree_mutation)) return subtree_mutation(a, set_, limits(), s_.mutation_depth, rng);
+  if (u < (edge += s_.point_mutation)) return point_mutation(a, set_, s_.erc_sigma, rng);
+  if (u < (edge += s_.hoist_mutation)) return hoist_mutation(a, set_, rng);
+  return a;
 }
 
 std::vector<Individual> GeneticProgramming::breed(std::span<const Individual> population,

@@ -71,6 +71,13 @@ class GeneticProgramming {
   [[nodiscard]] Individual offspring(std::span<const Individual> population, std::uint64_t base,
                                      std::size_t i) const;
 
+  // The GP's mutation mix on `a` for a uniform draw u: subtree mutation when u < edge +
+  // subtree_mutation, point mutation below that plus point_mutation, hoist mutation below
+  // that plus hoist_mutation, else a copy. `edge` is the part of [0, 1) taken before the
+  // mutations (offspring's crossover), so that every algorithm that mutates trees applies
+  // exactly the GP's operators and probabilities.
+  [[nodiscard]] Tree mutate(const Tree& a, double u, double edge, Rng& rng) const;
+
   // Tournament selection with parsimony ties (selection.hpp).
   [[nodiscard]] std::size_t select(std::span<const Individual> population, Rng& rng) const;
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "runtime/evo/box.hpp"
 #include "runtime/evo/limits.hpp"
 #include "runtime/evo/map_elites/iso_line_dd.hpp"
 #include "runtime/evo/map_elites/selection.hpp"
@@ -20,46 +21,52 @@ void require(bool ok, const std::string& message) {
   if (!ok) throw std::invalid_argument("MAP-Elites: " + message);
 }
 
+MapElitesGenomes iso_line_dd_genomes(const MapElitesSettings& s, std::size_t n) {
+  const IsoLineDd op{s.sigma_iso * (s.upper - s.lower), s.sigma_line, s.lower, s.upper};
+  return {std::make_shared<Box>(n, s.lower, s.upper), [op](const Archive& archive, Rng& rng) {
+            const Elite& x = select_uniform(archive, rng);
+            const Elite& y = select_uniform(archive, rng);
+            return iso_line_dd(x.genome, y.genome, op, rng);
+          }};
+}
+
 }  // namespace
 
 MapElites::MapElites(const MapElitesSettings& settings, std::size_t genome_size, Archive archive)
-    : s_(settings), n_(genome_size), archive_(std::move(archive)) {
+    : MapElites(settings, iso_line_dd_genomes(settings, genome_size), std::move(archive)) {
+  require(n_ >= 1, "genome size must be at least 1");
+}
+
+MapElites::MapElites(const MapElitesSettings& settings, MapElitesGenomes genomes, Archive archive)
+    : s_(settings), g_(std::move(genomes)), n_(g_.representation->genes()), archive_(std::move(archive)) {
   require(s_.batch >= 1 && s_.batch <= kMaxMapElitesBatch, "batch must be 1 to 1,000,000");
   require(s_.initial >= 1 && s_.initial <= kMaxMapElitesBatch, "initial must be 1 to 1,000,000");
   require(s_.sigma_iso >= 0.0 && s_.sigma_iso <= kMaxStepSize, "sigma_iso must be in [0, 1000]");
   require(s_.sigma_line >= 0.0 && s_.sigma_line <= kMaxStepSize, "sigma_line must be in [0, 1000]");
   require(std::abs(s_.lower) <= kMaxGeneBound, "lower must lie within +-1e6");
   require(std::abs(s_.upper) <= kMaxGeneBound && s_.lower < s_.upper, "upper must lie within +-1e6, above lower");
-  require(n_ >= 1, "genome size must be at least 1");
-  for (const std::size_t cell : archive_.filled_cells())
-    require(archive_.elite(cell)->genome.size() == n_, "the archive holds a genome of another size");
+  if (const std::string why = misfit_elite(archive_); !why.empty()) require(false, "the archive holds " + why);
+}
+
+std::string MapElites::misfit_elite(const Archive& archive) const {
+  for (const std::size_t cell : archive.filled_cells())
+    if (std::string why = g_.representation->misfit(archive.elite(cell)->genome); !why.empty()) return why;
+  return {};
 }
 
 void MapElites::start(std::span<const double> genome) {
-  require(genome.size() == n_, "the start genome has " + std::to_string(genome.size()) + " values, not " + std::to_string(n_));
-  for (const double v : genome) require(v >= s_.lower && v <= s_.upper, "the start genome lies outside [lower, upper]");
+  const std::string why = g_.representation->misfit(genome);
+  require(why.empty(), "the start genome: " + why);
   first_.assign(genome.begin(), genome.end());
-}
-
-Genome MapElites::uniform(Rng& rng) const {
-  Genome g(n_);
-  for (double& v : g) v = rng.uniform(s_.lower, s_.upper);
-  return g;
 }
 
 std::vector<Genome> MapElites::ask(Rng& rng) {
   std::vector<Genome> out;
   if (archive_.filled() == 0) {
-    out.reserve(s_.initial);
-    while (out.size() < s_.initial) out.push_back(uniform(rng));
+    out = g_.representation->first(s_.initial, rng);
   } else {
-    const IsoLineDd op{s_.sigma_iso * (s_.upper - s_.lower), s_.sigma_line, s_.lower, s_.upper};
     out.reserve(s_.batch);
-    while (out.size() < s_.batch) {
-      const Elite& x = select_uniform(archive_, rng);
-      const Elite& y = select_uniform(archive_, rng);
-      out.push_back(iso_line_dd(x.genome, y.genome, op, rng));
-    }
+    while (out.size() < s_.batch) out.push_back(g_.child(archive_, rng));
   }
   if (!first_.empty()) {
     out.front() = std::move(first_);
@@ -84,15 +91,14 @@ void MapElites::tell(std::span<const double> fitness, std::span<const std::vecto
 }
 
 void MapElites::write(StateWriter& w) const {
-  w.put(std::string(kFormat));
+  w.put(std::string(kFormat) + std::string(g_.representation->tag()));
   w.put(kVersion);
   w.put(static_cast<std::uint64_t>(n_));
   w.put(static_cast<std::uint64_t>(s_.batch));
   w.put(static_cast<std::uint64_t>(s_.initial));
   w.put(s_.sigma_iso);
   w.put(s_.sigma_line);
-  w.put(s_.lower);
-  w.put(s_.upper);
+  put_fixed(w, *g_.representation);
   w.put(generation_);
   w.put(std::span<const double>(first_));
   archive_.write(w);
@@ -107,7 +113,8 @@ StateBytes MapElites::save() const {
 void MapElites::load(std::span<const std::uint8_t> bytes) {
   StateReader r(bytes);
   const auto fail = [](const std::string& why) { throw std::invalid_argument("MAP-Elites state: " + why); };
-  if (r.text() != kFormat) fail("not a MAP-Elites state");
+  if (const std::string why = format_mismatch(r.text(), kFormat, "a MAP-Elites", *g_.representation); !why.empty())
+    fail(why);
   if (const auto v = r.get<std::uint32_t>(); v != kVersion) fail("format version " + std::to_string(v) + ", expected 1");
   if (const auto n = r.get<std::uint64_t>(); n != n_)
     fail("saved for a genome of " + std::to_string(n) + " values, this one has " + std::to_string(n_));
@@ -115,18 +122,14 @@ void MapElites::load(std::span<const std::uint8_t> bytes) {
   if (r.get<std::uint64_t>() != s_.initial) fail("initial differs from the saved one");
   if (r.get<double>() != s_.sigma_iso) fail("sigma_iso differs from the saved one");
   if (r.get<double>() != s_.sigma_line) fail("sigma_line differs from the saved one");
-  if (r.get<double>() != s_.lower) fail("lower differs from the saved one");
-  if (r.get<double>() != s_.upper) fail("upper differs from the saved one");
+  if (const std::string why = fixed_differs(r, *g_.representation); !why.empty()) fail(why);
   const auto generation = r.get<std::uint64_t>();
   Genome first = r.doubles();
-  if (!first.empty() && (first.size() != n_ || std::any_of(first.begin(), first.end(), [&](double v) {
-                           return !(v >= s_.lower && v <= s_.upper);
-                         })))
-    fail("the start genome does not fit the genome size and box");
+  if (!first.empty())
+    if (const std::string why = g_.representation->misfit(first); !why.empty()) fail("the start genome: " + why);
   Archive archive = archive_.read_like(r);
   r.finish();
-  for (const std::size_t cell : archive.filled_cells())
-    if (archive.elite(cell)->genome.size() != n_) fail("an elite has another genome size");
+  if (const std::string why = misfit_elite(archive); !why.empty()) fail("an elite: " + why);
   generation_ = generation;
   first_ = std::move(first);
   archive_ = std::move(archive);

@@ -7,12 +7,18 @@
 // the archive is still empty (every candidate so far rejected) a generation is `initial`
 // uniform genomes again.
 //
+// Over trees (MapElitesGenomes from gp/tree_variation.hpp) the first generation is
+// `initial` trees by ramped half-and-half and every child one elite drawn uniformly, then
+// one of the GP's mutations; sigma_iso, sigma_line and the box are not used.
+//
 // Every random draw comes from the Rng given to ask(), in a fixed order: uniform genomes
 // coordinate by coordinate; or per child, the two parents' draws, then Iso+LineDD's. A caller
 // gives ask() the generation's own stream, so a state saved after a tell and loaded into a
 // fresh MapElites of the same settings asks for what the uninterrupted one would.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -20,6 +26,7 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/evo/map_elites/archive.hpp"
 #include "runtime/evo/optimizer.hpp"
+#include "runtime/evo/representation.hpp"
 #include "runtime/evo/state_bytes.hpp"
 
 namespace esc::evo::qd {
@@ -42,12 +49,21 @@ struct MapElitesSettings {
   double upper = 1.0;
 };
 
+// What MAP-Elites' genomes are: the first ones and the check of a stored one, and how a
+// child is made from the archive (drawing from the Rng given).
+struct MapElitesGenomes {
+  std::shared_ptr<const Representation> representation;
+  std::function<Genome(const Archive&, Rng&)> child;
+};
+
 class MapElites {
  public:
   // The archive may hold elites already (a seeded run), of genome_size each. Throws
   // std::invalid_argument naming the setting out of range ("batch", "initial", "sigma_iso",
   // "sigma_line", "lower", "upper", "genome size") or for an elite of another size.
   MapElites(const MapElitesSettings& settings, std::size_t genome_size, Archive archive);
+  // Over other genomes (trees); an elite that is not one of them is refused.
+  MapElites(const MapElitesSettings& settings, MapElitesGenomes genomes, Archive archive);
 
   // A given genome (`start from`) becomes candidate 0 of the next ask, unchanged. Throws
   // std::invalid_argument for another size or a value outside [lower, upper].
@@ -72,15 +88,19 @@ class MapElites {
   // Everything between generations (after a tell, or as made): settings to check, the
   // generation count, a start genome not yet asked, the archive. load() refuses, with
   // std::invalid_argument, another genome size or setting, another archive (Archive::load)
-  // and bytes it could not have written, and then leaves this object as it was.
+  // and bytes it could not have written, and then leaves this object as it was. Over trees
+  // the format is "esc-map-elites-trees" (genome size 0, no box) and every elite is checked
+  // against the primitive set and the GP's limits; a state of the other representation is
+  // refused by name.
   [[nodiscard]] StateBytes save() const;
   void load(std::span<const std::uint8_t> bytes);
 
  private:
-  [[nodiscard]] Genome uniform(Rng& rng) const;
   void write(StateWriter& w) const;
+  [[nodiscard]] std::string misfit_elite(const Archive& archive) const;
 
   MapElitesSettings s_;
+  MapElitesGenomes g_;
   std::size_t n_;
   Archive archive_;
   std::uint64_t generation_ = 0;

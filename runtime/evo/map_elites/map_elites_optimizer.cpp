@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/evo/map_elites/selection.hpp"
 #include "runtime/evo/run_streams.hpp"
 
 namespace esc::evo {
@@ -54,10 +56,20 @@ qd::MapElitesSettings core_settings(const MapElitesRunSettings& s) {
   return c;
 }
 
+// Over trees: one elite drawn uniformly, then one of the GP's mutations.
+qd::MapElites core_for(const MapElitesRunSettings& s, const Problem& p) {
+  if (p.primitives == nullptr) return {core_settings(s), p.genome_size, archive_for(s, p)};
+  auto trees = std::make_shared<const gp::TreeVariation>(*p.tree_operators, *p.primitives);
+  qd::MapElitesGenomes genomes{trees, [trees](const qd::Archive& archive, Rng& rng) {
+                                 return trees->mutate_one(qd::select_uniform(archive, rng).genome, rng);
+                               }};
+  return {core_settings(s), std::move(genomes), archive_for(s, p)};
+}
+
 class MapElitesOptimizer final : public Optimizer {
  public:
   MapElitesOptimizer(const MapElitesRunSettings& settings, const Problem& problem)
-      : core_(core_settings(settings), problem.genome_size, archive_for(settings, problem)), seed_(problem.seed) {
+      : core_(core_for(settings, problem)), seed_(problem.seed) {
     if (problem.start != nullptr) core_.start(*problem.start);
   }
 
@@ -114,7 +126,10 @@ class MapElitesOptimizer final : public Optimizer {
 
 std::string map_elites_problem(const MapElitesRunSettings& s, const Problem& p) {
   const std::string what = s.cvt ? "CVT-MAP-Elites" : "MAP-Elites";
-  if (p.primitives != nullptr) return what + " evolves a network's weights here, not trees";
+  if (std::string why = gp::tree_problem(p, what); !why.empty()) return why;
+  if (p.primitives != nullptr && gp::TreeVariation(*p.tree_operators, *p.primitives).mutation_sum() <= 0.0)
+    return what + " varies a tree by one of the GP's mutations: subtree_mutation, point_mutation and hoist_mutation "
+                  "of `evolve gp` are all 0";
   if (p.descriptors.empty())
     return what + " places each controller by its behavior descriptors: declare some (`descriptor NAME: EXPR in "
                   "[lo, hi]`)";
@@ -145,8 +160,9 @@ std::size_t map_elites_population(const MapElitesRunSettings& settings, const Pr
 double map_elites_run_memory_bytes(const MapElitesRunSettings& settings, const Problem& problem) {
   const double cells = cells_of(settings, problem.descriptors.size());
   // Refused by map_elites_problem anyway; the estimate must not wrap around.
-  if (cells > static_cast<double>(qd::kMaxGridCells)) return cells * static_cast<double>(problem.genome_size) * 8.0;
-  return qd::map_elites_memory_bytes(core_settings(settings), problem.genome_size, static_cast<std::size_t>(cells),
+  const std::size_t genes = gp::genes_at_most(problem);
+  if (cells > static_cast<double>(qd::kMaxGridCells)) return cells * static_cast<double>(genes) * 8.0;
+  return qd::map_elites_memory_bytes(core_settings(settings), genes, static_cast<std::size_t>(cells),
                                      problem.descriptors.size());
 }
 

@@ -1,5 +1,7 @@
 #pragma once
-// MAP-Elites (map_elites.hpp) as an Optimizer of a network's weights, registered twice:
+// MAP-Elites (map_elites.hpp) as an Optimizer of a network's weights, or of trees with the
+// GP's mutations (gp/tree_variation.hpp, settings from problem.tree_operators; genomes
+// encoded), registered twice:
 // `map_elites` over a grid of `bins` cells per descriptor (1 to 3 descriptors), and
 // `cvt_map_elites` over `cells` centroids of a CVT of the descriptor space (any number of
 // descriptors). The fitness is the Outcome's first objective, the cell its descriptors

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 #include "runtime/evo/run_streams.hpp"
 
 namespace esc::evo {
@@ -30,7 +32,7 @@ qd::DescriptorSpace space_of(const Problem& p) {
 class NoveltyOptimizer final : public Optimizer {
  public:
   NoveltyOptimizer(const NoveltyRunSettings& settings, const Problem& problem)
-      : core_(variation_of(settings), problem.genome_size),
+      : core_(nsga2_core(variation_of(settings), problem)),
         archive_(archive_settings(settings), space_of(problem)),
         seed_(problem.seed),
         with_fitness_(settings.with_fitness) {
@@ -166,7 +168,7 @@ class NoveltyOptimizer final : public Optimizer {
 }  // namespace
 
 std::string novelty_problem(const NoveltyRunSettings& settings, const Problem& problem) {
-  if (problem.primitives != nullptr) return "novelty search evolves a network's weights here, not trees";
+  if (std::string why = gp::tree_problem(problem, "novelty search"); !why.empty()) return why;
   if (problem.descriptors.empty())
     return "novelty is measured between behavior descriptors: declare some (`descriptor NAME: EXPR in [lo, hi]`)";
   try {
@@ -189,7 +191,7 @@ std::size_t novelty_population(const NoveltyRunSettings& settings, const Problem
 
 double novelty_memory_bytes(const NoveltyRunSettings& settings, const Problem& problem) {
   const double points = 100.0 * settings.population;
-  return nsga2_memory_bytes(variation_of(settings), problem.genome_size) +
+  return nsga2_memory_bytes(variation_of(settings), gp::genes_at_most(problem)) +
          points * static_cast<double>(problem.descriptors.size() + 1) * sizeof(double);
 }
 

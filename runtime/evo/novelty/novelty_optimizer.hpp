@@ -1,5 +1,6 @@
 #pragma once
-// Novelty search (Lehman & Stanley 2011) as an Optimizer of a network's weights: NSGA-II's
+// Novelty search (Lehman & Stanley 2011) as an Optimizer of a network's weights or of trees
+// (with the GP's operators, as NSGA-II breeds them: nsga2_optimizer.hpp): NSGA-II's
 // selection and variation (nsga2.hpp) on one objective, the novelty of each controller's
 // descriptors (novelty_archive.hpp), or on two, novelty and the fitness (Mouret's
 // "novelty-based multiobjectivization", as the issue asks: `objectives novelty_fitness`).

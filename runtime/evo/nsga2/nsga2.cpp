@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "runtime/evo/box.hpp"
 #include "runtime/evo/limits.hpp"
 #include "runtime/evo/nsga2/variation.hpp"
 
@@ -22,10 +23,6 @@ void require(bool ok, const std::string& message) {
 
 std::string text(double v) { return std::to_string(v); }
 std::string text(std::size_t v) { return std::to_string(v); }
-
-bool in_box(const std::vector<double>& x, double lower, double upper) {
-  return std::all_of(x.begin(), x.end(), [&](double v) { return v >= lower && v <= upper; });  // false for NaN
-}
 
 void put_rows(StateWriter& w, const std::vector<std::vector<double>>& rows) {
   w.put(static_cast<std::uint64_t>(rows.size()));
@@ -62,36 +59,42 @@ double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n) {
   return (genes + per_point) * sizeof(double);
 }
 
+Nsga2Genomes box_genomes(const Nsga2Settings& s, std::size_t n) {
+  const double p_mutation = s.mutation > 0.0 ? s.mutation : 1.0 / static_cast<double>(n);
+  return {std::make_shared<Box>(n, s.lower, s.upper), [s, p_mutation](Genome& a, Genome& b, Rng& rng) {
+            if (rng.uniform() < s.crossover) simulated_binary_crossover(a, b, s.eta_crossover, s.lower, s.upper, rng);
+            polynomial_mutation(a, s.eta_mutation, p_mutation, s.lower, s.upper, rng);
+            polynomial_mutation(b, s.eta_mutation, p_mutation, s.lower, s.upper, rng);
+          }};
+}
+
 Nsga2::Nsga2(const Nsga2Settings& settings, std::size_t n) : s_(settings), n_(n) {
   check_nsga2_settings(s_);
   require(n_ >= 1, "the number of genes n must be at least 1, got 0");
+  g_ = box_genomes(s_, n_);
+}
+
+Nsga2::Nsga2(const Nsga2Settings& settings, Nsga2Genomes genomes)
+    : s_(settings), g_(std::move(genomes)), n_(g_.representation->genes()) {
+  check_nsga2_settings(s_);
 }
 
 double Nsga2::mutation_probability() const noexcept {
   return s_.mutation > 0.0 ? s_.mutation : 1.0 / static_cast<double>(n_);
 }
 
-std::vector<double> Nsga2::uniform_point(Rng& rng) const {
-  std::vector<double> x(n_);
-  for (double& v : x) v = rng.uniform(s_.lower, s_.upper);
-  return x;
-}
-
 void Nsga2::start(Rng& rng) {
-  std::vector<std::vector<double>> first(population_size());
-  for (auto& x : first) x = uniform_point(rng);
-  *this = Nsga2(s_, n_);
+  std::vector<std::vector<double>> first = g_.representation->first(population_size(), rng);
+  *this = Nsga2(s_, g_);
   initial_ = std::move(first);
   started_ = true;
 }
 
 void Nsga2::start(std::span<const double> point) {
-  require(point.size() == n_, "the start point must have " + text(n_) + " genes, got " + text(point.size()));
-  std::vector<double> x(point.begin(), point.end());
-  require(in_box(x, s_.lower, s_.upper), "the start point must lie within [lower, upper] = [" + text(s_.lower) + ", " +
-                                             text(s_.upper) + "]");
-  *this = Nsga2(s_, n_);
-  initial_.push_back(std::move(x));
+  const std::string why = g_.representation->misfit(point);
+  require(why.empty(), "the start point: " + why);
+  *this = Nsga2(s_, g_);
+  initial_.emplace_back(point.begin(), point.end());
   started_ = true;
 }
 
@@ -100,17 +103,14 @@ std::vector<std::vector<double>> Nsga2::ask(Rng& rng) {
   const std::size_t big_n = population_size();
   if (generation_ == 0) {
     children_ = initial_;
-    while (children_.size() < big_n) children_.push_back(uniform_point(rng));
+    for (auto& x : g_.representation->first(big_n - children_.size(), rng)) children_.push_back(std::move(x));
   } else {
     const std::vector<std::size_t> winners = crowded_tournament_winners(ranking_, rng);
-    const double p_mutation = mutation_probability();
     children_.clear();
     for (std::size_t t = 0; t < big_n; t += 2) {
       std::vector<double> a = parents_[winners[t]];
       std::vector<double> b = parents_[winners[t + 1]];
-      if (rng.uniform() < s_.crossover) simulated_binary_crossover(a, b, s_.eta_crossover, s_.lower, s_.upper, rng);
-      polynomial_mutation(a, s_.eta_mutation, p_mutation, s_.lower, s_.upper, rng);
-      polynomial_mutation(b, s_.eta_mutation, p_mutation, s_.lower, s_.upper, rng);
+      g_.vary(a, b, rng);
       children_.push_back(std::move(a));
       children_.push_back(std::move(b));
     }
@@ -172,12 +172,11 @@ std::vector<std::size_t> Nsga2::first_front() const {
 
 StateBytes Nsga2::save() const {
   StateWriter w;
-  w.put(std::string(kFormat));
+  w.put(std::string(kFormat) + std::string(g_.representation->tag()));
   w.put(kVersion);
   w.put(static_cast<std::uint64_t>(n_));
   w.put(static_cast<std::int32_t>(s_.population));
-  w.put(s_.lower);
-  w.put(s_.upper);
+  put_fixed(w, *g_.representation);
   w.put(static_cast<std::uint8_t>(started_));
   w.put(generation_);
   w.put(static_cast<std::uint64_t>(objective_count_));
@@ -191,16 +190,16 @@ StateBytes Nsga2::save() const {
 void Nsga2::load(std::span<const std::uint8_t> bytes) {
   StateReader r(bytes);
   const auto fail = [](const std::string& why) { throw std::invalid_argument("NSGA-II state: " + why); };
-  if (r.text() != kFormat) fail("not an NSGA-II state");
+  if (const std::string why = format_mismatch(r.text(), kFormat, "an NSGA-II", *g_.representation); !why.empty())
+    fail(why);
   if (const auto v = r.get<std::uint32_t>(); v != kVersion) fail("format version " + std::to_string(v) + ", expected 1");
   if (const auto n = r.get<std::uint64_t>(); n != n_)
     fail("saved for n = " + std::to_string(n) + ", this optimizer has n = " + text(n_));
   if (const auto p = r.get<std::int32_t>(); p != s_.population)
     fail("saved for a population of " + std::to_string(p) + ", this optimizer has " + std::to_string(s_.population));
-  if (r.get<double>() != s_.lower) fail("lower differs from the saved one");
-  if (r.get<double>() != s_.upper) fail("upper differs from the saved one");
+  if (const std::string why = fixed_differs(r, *g_.representation); !why.empty()) fail(why);
 
-  Nsga2 next(s_, n_);
+  Nsga2 next(s_, g_);
   const auto started = r.get<std::uint8_t>();
   if (started > 1) fail("a flag is neither 0 nor 1");
   next.started_ = started == 1;
@@ -224,7 +223,7 @@ void Nsga2::load(std::span<const std::uint8_t> bytes) {
   if (told != (next.objective_count_ > 0)) fail("the number of objectives does not match the generation");
   for (const auto* rows : {&next.initial_, &next.parents_})
     for (const auto& x : *rows)
-      if (x.size() != n_ || !in_box(x, s_.lower, s_.upper)) fail("a candidate that is not n genes within the box");
+      if (const std::string why = g_.representation->misfit(x); !why.empty()) fail("a candidate: " + why);
   for (const auto& f : next.objectives_)
     if (f.size() != next.objective_count_) fail("a point with another number of objectives");
   for (const double d : next.ranking_.crowding)

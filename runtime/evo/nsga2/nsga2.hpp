@@ -28,6 +28,11 @@
 // - The survivors keep the order of parents then children (ascending index in the merged
 //   set), not DEAP's front order; only the index tie-break of the tournament sees it.
 //
+// What the genes are is the Nsga2Genomes given (a Representation and a variation of two
+// winners): a network's weights in a box with SBX and polynomial mutation, as above, by
+// default; trees with the GP's crossover and mutations (gp/tree_variation.hpp). Ranking,
+// tournaments and survival are the same code for both.
+//
 // Random draws come from the Rng given, in a fixed order. start(Rng&) draws N x n uniforms
 // (candidate by candidate, gene by gene) for the first generation. start(point) draws
 // nothing: the point is candidate 0 of the first ask, unchanged, and that ask draws the other
@@ -37,11 +42,14 @@
 // from save() draws what it would have drawn: no Rng state is stored.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/evo/pareto/selection.hpp"
+#include "runtime/evo/representation.hpp"
 #include "runtime/evo/state_bytes.hpp"
 
 namespace esc::evo {
@@ -68,10 +76,22 @@ void check_nsga2_settings(const Nsga2Settings& settings);
 // crowding distance. Each further objective adds 16 N bytes, little beside the genes.
 [[nodiscard]] double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n);
 
+// What NSGA-II's genes are: the first candidates and the check of a stored one, and how two
+// tournament winners become two children (in place, drawing from the Rng given).
+struct Nsga2Genomes {
+  std::shared_ptr<const Representation> representation;
+  std::function<void(Genome&, Genome&, Rng&)> vary;
+};
+
+// n genes in the settings' box, varied by SBX and polynomial mutation (variation.hpp).
+[[nodiscard]] Nsga2Genomes box_genomes(const Nsga2Settings& settings, std::size_t n);
+
 class Nsga2 {
  public:
   // Throws std::invalid_argument for settings out of range (check_nsga2_settings) or n = 0.
   Nsga2(const Nsga2Settings& settings, std::size_t n);
+  // Over other genes (trees): of `settings`, only the population is used.
+  Nsga2(const Nsga2Settings& settings, Nsga2Genomes genomes);
 
   // Starts (again) from N points drawn uniformly in the box, or from a given point in it
   // (std::invalid_argument otherwise), candidate 0 of the first ask.
@@ -107,6 +127,7 @@ class Nsga2 {
   [[nodiscard]] std::size_t dimension() const noexcept { return n_; }
   // The per-gene mutation probability in use (1 / n when the setting is 0).
   [[nodiscard]] double mutation_probability() const noexcept;
+  [[nodiscard]] const Representation& representation() const noexcept { return *g_.representation; }
   [[nodiscard]] const Nsga2Settings& settings() const noexcept { return s_; }
 
   // The whole state between generations (after start or tell; a pending ask is not part of
@@ -114,14 +135,15 @@ class Nsga2 {
   // continues bit for bit; anything else (another size, truncated or longer bytes, genes
   // outside the box or not finite, a NaN or negative crowding distance) throws
   // std::invalid_argument and leaves this object unchanged. The variation settings are this
-  // object's, so a run can be carried on with others.
+  // object's, so a run can be carried on with others. Over trees the format is
+  // "esc-nsga2-trees" (n 0, no box; every tree checked against the primitive set and the
+  // GP's limits), and a state of the other representation is refused by name.
   [[nodiscard]] StateBytes save() const;
   void load(std::span<const std::uint8_t> bytes);
 
  private:
-  [[nodiscard]] std::vector<double> uniform_point(Rng& rng) const;
-
   Nsga2Settings s_;
+  Nsga2Genomes g_;
   std::size_t n_;
   bool started_ = false;
   std::uint64_t generation_ = 0;

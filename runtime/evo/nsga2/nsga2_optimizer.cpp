@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "runtime/evo/gp/tree_variation.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
 #include "runtime/evo/run_streams.hpp"
 
@@ -14,7 +15,7 @@ namespace {
 class Nsga2Optimizer final : public Optimizer {
  public:
   Nsga2Optimizer(const Nsga2Settings& settings, const Problem& problem)
-      : core_(settings, problem.genome_size),
+      : core_(nsga2_core(settings, problem)),
         seed_(problem.seed),
         objectives_(problem.objectives.size()),
         reference_(hypervolume_reference(problem)) {
@@ -84,8 +85,14 @@ std::vector<double> hypervolume_reference(const Problem& problem) {
   return r;
 }
 
+Nsga2 nsga2_core(const Nsga2Settings& settings, const Problem& problem) {
+  if (problem.primitives == nullptr) return {settings, problem.genome_size};
+  if (const std::string why = gp::tree_problem(problem, "NSGA-II"); !why.empty()) throw std::invalid_argument(why);
+  auto trees = std::make_shared<const gp::TreeVariation>(*problem.tree_operators, *problem.primitives);
+  return {settings, Nsga2Genomes{trees, [trees](Genome& a, Genome& b, Rng& rng) { trees->cross_and_mutate(a, b, rng); }}};
+}
+
 std::unique_ptr<Optimizer> make_nsga2(const Nsga2Settings& settings, const Problem& problem) {
-  if (problem.primitives != nullptr) throw std::invalid_argument("NSGA-II evolves a network's weights, not trees");
   return std::make_unique<Nsga2Optimizer>(settings, problem);
 }
 
@@ -96,7 +103,7 @@ std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& /*pro
 double nsga2_run_memory_bytes(const Nsga2Settings& settings, const Problem& problem) {
   // nsga2_memory_bytes counts 2 objectives for each point of parents and children.
   const double further = problem.objectives.size() > 2 ? static_cast<double>(problem.objectives.size() - 2) : 0.0;
-  return nsga2_memory_bytes(settings, problem.genome_size) +
+  return nsga2_memory_bytes(settings, gp::genes_at_most(problem)) +
          further * 2.0 * static_cast<double>(settings.population) * sizeof(double);
 }
 

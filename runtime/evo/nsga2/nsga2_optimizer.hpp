@@ -1,20 +1,27 @@
 #pragma once
-// NSGA-II (nsga2.hpp) as an Optimizer of a network's weights over every objective of an
-// Outcome: it starts from Rng(seed, Init) (or the start genome, then candidate 0 of
+// NSGA-II (nsga2.hpp) as an Optimizer of a network's weights, or of trees with the GP's
+// operators (gp/tree_variation.hpp, settings from problem.tree_operators; candidates go out
+// encoded), over every objective of an Outcome: it starts from Rng(seed, Init) (or the start genome, then candidate 0 of
 // generation 0), breeds generation g from Rng(seed, Breed, g) and minimises the negated
 // objectives. Its metrics: the size of the first front and, for 2 or 3 objectives whose
 // ranges are all declared, the front's hypervolume with the declared worst values as the
 // reference point (in the objectives' maximised terms, a minimised one counted negated).
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "runtime/evo/nsga2/nsga2.hpp"
 #include "runtime/evo/optimizer.hpp"
 
 namespace esc::evo {
 
-// Throws std::invalid_argument on impossible settings (check_nsga2_settings) or a tree.
+// Throws std::invalid_argument on impossible settings (check_nsga2_settings, the GP's for a
+// tree) or a tree without the GP's settings.
 [[nodiscard]] std::unique_ptr<Optimizer> make_nsga2(const Nsga2Settings& settings, const Problem& problem);
+
+// NSGA-II's core for `problem`: over its network's weights in the settings' box, or over
+// its trees. What NSGA-II and novelty search, which breeds as NSGA-II does, start from.
+[[nodiscard]] Nsga2 nsga2_core(const Nsga2Settings& settings, const Problem& problem);
 
 // Candidates per generation: the population.
 [[nodiscard]] std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& problem);

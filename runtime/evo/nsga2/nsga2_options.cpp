@@ -2,6 +2,9 @@
 
 #include <stdexcept>
 
+#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/evo/nsga2/nsga2_optimizer.hpp"
+
 namespace esc::evo {
 
 const std::vector<AlgorithmOption>& nsga2_options() {
@@ -9,7 +12,8 @@ const std::vector<AlgorithmOption>& nsga2_options() {
   return table;
 }
 
-std::string nsga2_problem(const Nsga2Settings& settings, const Problem& /*problem*/) {
+std::string nsga2_problem(const Nsga2Settings& settings, const Problem& problem) {
+  if (std::string why = gp::tree_problem(problem, "NSGA-II"); !why.empty()) return why;
   try {
     check_nsga2_settings(settings);
   } catch (const std::invalid_argument& e) {
