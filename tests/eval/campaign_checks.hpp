@@ -4,6 +4,7 @@
 // every best evaluation replayed.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -48,6 +49,23 @@ inline void expect_same(const eval::CampaignResult& a, const eval::CampaignResul
         EXPECT_EQ(x.generations[g].steps, y.generations[g].steps);
       }
     }
+  }
+}
+
+// `spec` resumed after each of `generations` (its first run finished, taken from `whole`, its
+// second in progress from a state kept after that generation) gives `whole` bit for bit.
+inline void expect_resumes_to(const eval::ExperimentSpec& spec, const eval::CampaignResult& whole,
+                              std::initializer_list<int> generations) {
+  for (const int at : generations) {
+    Snapshotter snap;
+    snap.at = at;
+    (void)eval::run_campaign(spec, {1}, snap);
+    ASSERT_EQ(snap.states.size(), static_cast<std::size_t>(spec.runs));
+    eval::ResumePoint point;
+    point.finished.push_back({spec.controllers[0].name, whole.controllers[0].runs[0]});
+    point.in_progress.push_back(snap.states[1]);
+    eval::CampaignListener quiet;
+    expect_same(whole, eval::run_campaign(spec, {2, &point}, quiet));
   }
 }
 

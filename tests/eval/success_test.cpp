@@ -96,17 +96,7 @@ TEST(Success, AResumedRunCountsOnWhereItStopped) {
   ASSERT_TRUE(met.has_value());
   EXPECT_GT(*met, 20);   // not in generation 0: the count crosses generations
   EXPECT_LE(*met, 4 * 20);
-  for (int at : {0, 2, 4}) {
-    testing::Snapshotter snap;
-    snap.at = at;
-    (void)run_campaign(spec, {1}, snap);
-    ASSERT_EQ(snap.states.size(), static_cast<std::size_t>(spec.runs));
-    ResumePoint point;
-    point.finished.push_back({spec.controllers[0].name, whole.controllers[0].runs[0]});
-    point.in_progress.push_back(snap.states[1]);
-    const CampaignResult resumed = run_campaign(spec, {2, &point}, quiet);
-    testing::expect_same(whole, resumed);
-  }
+  testing::expect_resumes_to(spec, whole, {0, 2, 4});
 }
 
 }  // namespace
