@@ -96,12 +96,14 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
   Progress::generation_done(controller, run, g);
   ++generations_done_;
   ++done_here_;
-  // Generations are numbered from 0 (generation 0 is the initial population), runs from 1.
-  const int last_generation = spec_->generations_for(controller) - 1;
+  // Counted as the end message and `esc run --resume` count them ("3 of 16 generations"): the
+  // generation stored as 0 (the initial population) is the first. Runs count from 1.
+  const int generation = g.generation + 1;
+  const int generations = spec_->generations_for(controller);
   if (live_) {
     const double percent = 100.0 * static_cast<double>(generations_done_) / static_cast<double>(generations_total_);
     const std::string where = fmt::format(" {:>3.0f}%  {} run {}/{} gen {}/{}  best {:.2f}", percent, controller.name,
-                                          run + 1, spec_->runs, g.generation, last_generation, g.best);
+                                          run + 1, spec_->runs, generation, generations, g.best);
     const std::string eta = fmt::format("ETA {}", format_duration(eta_seconds_));
     // What a narrow terminal leaves out first: the rate, then the mean.
     redraw_status({fmt::format("{}  mean {:.2f}  {:.0f} eval/s  {}", where, g.mean, evaluations_per_second_, eta),
@@ -109,14 +111,14 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
   } else {
     fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}/{:<4} best {:>9.2f}  mean {:>9.2f}  {:>6.0f} eval/s  "
                "{:>5.0f}k steps/s  ETA {}\n",
-               controller.name, run + 1, spec_->runs, g.generation, last_generation, g.best, g.mean,
+               controller.name, run + 1, spec_->runs, generation, generations, g.best, g.mean,
                evaluations_per_second_, steps_per_second_ / 1000.0, format_duration(eta_seconds_));
   }
   if (g.saturated > 0) {
     // Shown on its own line, live or piped: a fitness term overflows (docs/language.md).
     close();
-    fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}: {} of {} evaluations saturated at +-1e300\n", controller.name, run + 1,
-               spec_->runs, g.generation, g.saturated, g.evaluations);
+    fmt::print("{:<8} run {:>2}/{:<2} gen {:>4}/{:<4}: {} of {} evaluations saturated at +-1e300\n", controller.name,
+               run + 1, spec_->runs, generation, generations, g.saturated, g.evaluations);
   }
   std::fflush(stdout);
 }

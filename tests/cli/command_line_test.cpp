@@ -131,14 +131,16 @@ TEST(CommandLine, LiveBarFitsEightyColumnsOfAPseudoTerminal) {
   EXPECT_GE(widest_bar_line, 60U) << o.output;
 }
 
-TEST(CommandLine, RunsFromOneGenerationsFromZeroInEveryOutput) {
+TEST(CommandLine, ConsoleCountsGenerationsTablesIndexThemFromZero) {
   const fs::path out = scratch("numbering");
   const Outcome o = esc("run " + tiny() + " --generations 3 --set epochs=1 --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  // Console (piped: one line per generation): first generation 0, last 2 of 0..2.
-  EXPECT_NE(o.output.find("CC       run  1/2  gen    0/2"), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find("CC       run  2/2  gen    2/2"), std::string::npos) << o.output;
-  EXPECT_EQ(o.output.find("gen    3/"), std::string::npos) << o.output;
+  // Console (piped: one line per generation): generations counted as the end message counts
+  // them, 1 to 3 of "3 generations".
+  EXPECT_NE(o.output.find("CC       run  1/2  gen    1/3"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("CC       run  2/2  gen    3/3"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("gen    0/"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("2 runs x 3 generations"), std::string::npos) << o.output;
   // summary.json and the genome files: runs from 1, as in the file names.
   const auto s = read_json(out / "summary.json");
   EXPECT_EQ(s["controllers"]["CC"]["runs"][0]["run"], 1);
