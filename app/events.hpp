@@ -35,6 +35,10 @@ class Progress : public eval::CampaignListener {
   explicit Progress(eval::CampaignListener& next) : next_(&next) {}
   void round_progress(const eval::RoundProgress& p) override { next_->round_progress(p); }
   void round_evaluated(const eval::RoundStats& round) override { next_->round_evaluated(round); }
+  void candidates_evaluated(const control::ControllerSpec& c, int run, int generation,
+                            std::span<const evo::Outcome> outcomes) override {
+    next_->candidates_evaluated(c, run, generation, outcomes);
+  }
   void generation_done(const control::ControllerSpec& c, int run, const eval::GenerationStats& g) override {
     next_->generation_done(c, run, g);
   }

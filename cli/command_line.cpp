@@ -122,6 +122,14 @@ CLI::App* add_replay(CLI::App& app, ReplayOptions& o) {
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--animate", o.animate,
                        "also write an animation: MP4 with ffmpeg, else GIF with ImageMagick's convert");
+  command->add_flag("--evaluations", o.evaluations,
+                    "make the whole run again from its seed (checked against the stored one) and write every "
+                    "evaluation's objectives and descriptors (CSV) and where they fall over the first two "
+                    "descriptors (SVG)");
+  command->add_flag("--arena", o.over_arena,
+                    "with --evaluations: draw the arena over the first two descriptors, read as the robot's x and y");
+  command->add_option("--threads", o.threads, "with --evaluations: worker threads (default: all cores)")
+      ->check(kThreads);
   return command;
 }
 

@@ -62,6 +62,11 @@ struct ReplayOptions {
   // of the run's best.
   std::optional<std::int64_t> member;
   bool animate = false;                      // also an MP4 or GIF, where a tool for it is present
+  // Make the whole run again and write every evaluation's objectives and descriptors
+  // (cli/replay_evaluations.hpp), drawn over the arena with `over_arena`.
+  bool evaluations = false;
+  bool over_arena = false;
+  int threads = 0;                           // for `evaluations`; 0: all cores
 };
 
 int replay_command(const ReplayOptions& options);

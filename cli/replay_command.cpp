@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
 #include "cli/replay_animation.hpp"
+#include "cli/replay_evaluations.hpp"
 #include "cli/terminal_events.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
@@ -344,6 +345,15 @@ int replay_command(const ReplayOptions& o) {
              "[--experiment NAME]\n", o.source.string());
     return kExitUsage;
   }
+  if (o.evaluations && (genome_file || !o.script.empty() || o.seed || o.member || o.animate || !o.epochs.empty())) {
+    complain("esc: error: --evaluations makes a stored run again as it ran: give a run directory, without --script, "
+             "--seed, --member, --epochs or --animate\n");
+    return kExitUsage;
+  }
+  if (o.over_arena && !o.evaluations) {
+    complain("esc: error: --arena draws a run's evaluations (--evaluations) over its arena; give --evaluations too\n");
+    return kExitUsage;
+  }
   if (!o.experiment.empty() && o.script.empty()) {
     complain("esc: error: --experiment names an experiment of --script FILE; give the script too\n");
     return kExitUsage;
@@ -389,6 +399,11 @@ int replay_command(const ReplayOptions& o) {
   if (!epochs) return kExitUsage;
   const fs::path out = !o.out.empty() ? o.out : genome_file ? o.source.parent_path() : dir;
   int status = kExitOk;
+  if (o.evaluations) {
+    for (const Subject& s : subjects)
+      status = std::max(status, replay_evaluations(run, experiment, s.controller, s.run, o, out));
+    return status;
+  }
   for (const Subject& s : subjects) status = std::max(status, replay_one(*spec, s, o, *epochs, out));
   return status;
 }

@@ -103,7 +103,9 @@ void advance(std::vector<std::unique_ptr<RunJob>>& active, Evaluators& ev, Campa
     const std::span<const double> rows(results.data() + pool.first[j] * width,
                                        (pool.first[j + 1] - pool.first[j]) * width);
     stats.usage = detail::summarise_usage(rows, width, choices[j]);
-    job.evaluated(detail::outcomes_of(job.spec(), rows, columns), stats);
+    const std::vector<evo::Outcome> outcomes = detail::outcomes_of(job.spec(), rows, columns);
+    listener.candidates_evaluated(job.controller(), job.state().run, job.generation(), outcomes);
+    job.evaluated(outcomes, stats);
     listener.generation_done(job.controller(), job.state().run, job.state().generations.back());
     listener.checkpoint(job.controller(), job.state());
   }
@@ -183,6 +185,8 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
     cr.choices = c.choice_names();
     cr.runs.resize(static_cast<std::size_t>(spec.runs));
     for (int run = 0; run < spec.runs; ++run) {
+      const auto& only = options.only_runs;
+      if (!only.empty() && std::find(only.begin(), only.end(), run) == only.end()) continue;
       if (const RunResult* done = find_finished(options.resume, c.name, run))
         cr.runs[static_cast<std::size_t>(run)] = *done;
       else

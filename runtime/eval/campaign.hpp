@@ -14,6 +14,7 @@
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/eval/experiment.hpp"
 #include "runtime/eval/run_state.hpp"
+#include "runtime/evo/optimizer.hpp"
 
 namespace esc::eval {
 
@@ -92,6 +93,11 @@ class CampaignListener {
   virtual void round_progress(const RoundProgress& /*progress*/) {}
   // Once a round's pool is evaluated, before the generation_done of each of its runs.
   virtual void round_evaluated(const RoundStats& /*round*/) {}
+  // Once a generation of a run is evaluated, before its generation_done: what each candidate
+  // measured, in candidate order, as its optimizer is told (the fitness first, then the
+  // further objectives, each maximised: a minimised one negated; then the descriptors).
+  virtual void candidates_evaluated(const control::ControllerSpec& /*controller*/, int /*run*/, int /*generation*/,
+                                    std::span<const evo::Outcome> /*outcomes*/) {}
   virtual void generation_done(const control::ControllerSpec& /*controller*/, int /*run*/,
                                const GenerationStats& /*stats*/) {}
   // After generation_done, with the whole state of the run: what a store commits to be
@@ -128,6 +134,9 @@ struct CampaignOptions {
   // 0: as many as keep every worker of every rank busy (campaign.cpp). Results do not
   // depend on it; the order in which the listener hears of runs does.
   int runs_at_once = 0;
+  // The runs to make (from 0), each as in the whole campaign (its seed depends on its index
+  // alone); the others are left empty (RunResult{}) in the result. Empty: every run.
+  std::vector<int> only_runs{};
 };
 
 [[nodiscard]] std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept;

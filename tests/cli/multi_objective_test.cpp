@@ -153,19 +153,6 @@ TEST(MultiObjective, TheMazeStudyKilledMidStudyResumesToTheUnbrokenStudy) {
   EXPECT_NE(summary.find("\"success\": \"reach_goal > -0.0171875\""), std::string::npos);
 }
 
-// The rows of a CSV export, each split at its commas, the header first.
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string>& f = rows.emplace_back();
-    std::stringstream cells(line);
-    for (std::string c; std::getline(cells, c, ',');) f.push_back(c);
-    if (!line.empty() && line.back() == ',') f.emplace_back();
-  }
-  return rows;
-}
-
 // Every method of the maze study at a few generations: MAP-Elites' archive and novelty
 // search's front (novelty and fitness) and archive (novelty alone) are exported per
 // generation, the report draws the archive as a heatmap and the front as a Pareto plot, and

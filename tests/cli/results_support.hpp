@@ -1,7 +1,7 @@
 #pragma once
 // What the end-to-end tests of stored results share: an `esc run` started in the
-// background (to be killed), the generations a run directory has committed so far, and
-// the comparison of two runs' summaries and results.
+// background (to be killed), the rows of a CSV export, the generations a run directory has
+// committed so far, and the comparison of two runs' summaries and results.
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -30,6 +30,19 @@ inline pid_t spawn_esc(const std::vector<std::string>& args) {
   argv.push_back(nullptr);
   execv(ESC_BINARY, argv.data());
   std::_Exit(127);
+}
+
+// The rows of a CSV export, each split at its commas, the header first.
+inline std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string>& f = rows.emplace_back();
+    std::stringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) f.push_back(c);
+    if (!line.empty() && line.back() == ',') f.emplace_back();
+  }
+  return rows;
 }
 
 // Generations committed so far, read through `esc export` while the run writes.

@@ -1,5 +1,9 @@
 #include "runtime/eval/campaign.hpp"
 
+#include <algorithm>
+#include <span>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "tests/eval/test_experiment.hpp"
@@ -69,6 +73,39 @@ TEST(Campaign, MeanFitnessImproves) {
     last += r.generations.back().mean;
   }
   EXPECT_GT(last, first * 1.2) << "mean fitness " << first << " -> " << last;
+}
+
+// What `esc replay --evaluations` builds on: one run made alone is the run made in the whole
+// campaign, and the candidates' outcomes are what each generation's statistics summarise.
+TEST(Campaign, OneRunMadeAloneIsTheRunOfTheWholeCampaignCandidateByCandidate) {
+  const ExperimentSpec spec = testing::small_experiment();
+  const CampaignResult whole = run_with_threads(spec, 2);
+  struct Outcomes final : CampaignListener {
+    std::vector<std::vector<evo::Outcome>> generations;
+    void candidates_evaluated(const control::ControllerSpec&, int run, int generation,
+                              std::span<const evo::Outcome> outcomes) override {
+      EXPECT_EQ(run, 1);
+      EXPECT_EQ(generation, static_cast<int>(generations.size()));
+      generations.emplace_back(outcomes.begin(), outcomes.end());
+    }
+  } seen;
+  CampaignOptions options{2};
+  options.only_runs = {1};
+  const CampaignResult alone = run_campaign(spec, options, seen);
+  const RunResult& a = alone.controllers.front().runs[1];
+  const RunResult& w = whole.controllers.front().runs[1];
+  EXPECT_TRUE(alone.controllers.front().runs[0].generations.empty()) << "run 0 was not asked for";
+  EXPECT_EQ(a.best_genome, w.best_genome);
+  ASSERT_EQ(a.generations.size(), w.generations.size());
+  ASSERT_EQ(seen.generations.size(), w.generations.size());
+  for (std::size_t g = 0; g < w.generations.size(); ++g) {
+    EXPECT_EQ(a.generations[g].best, w.generations[g].best);
+    EXPECT_EQ(a.generations[g].mean, w.generations[g].mean);
+    ASSERT_EQ(seen.generations[g].size(), static_cast<std::size_t>(w.generations[g].evaluations));
+    double best = -1e300;
+    for (const evo::Outcome& o : seen.generations[g]) best = std::max(best, o.objectives.front());
+    EXPECT_EQ(best, w.generations[g].best) << g;
+  }
 }
 
 }  // namespace
