@@ -1,10 +1,13 @@
 #include "compiler/setting_keys.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 
 #include <optional>
 #include <set>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -170,7 +173,19 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     if (v) spec.arena.*s->value = *v;
     return v.has_value();
   }
-  unknown(sink, key, "setting", k, "", setting_keys(), scope);
+  // Every key may be the one meant, but the help line names the plain keys and the groups
+  // only: the hundred keys in full made a message no one reads (a mistyped key of a group
+  // lists that group's keys, above).
+  std::vector<std::string> plain, groups;
+  for (const std::string& s : setting_keys()) {
+    const std::size_t dot = s.find('.');
+    if (dot == std::string::npos) plain.push_back(s);
+    else if (const std::string g = s.substr(0, dot + 1) + "*"; std::find(groups.begin(), groups.end(), g) == groups.end())
+      groups.push_back(g);
+  }
+  suggest(sink.error(key.where, fmt::format("unknown setting `{}{}`", scope, k)), k, setting_keys(),
+          {.prefix = scope,
+           .otherwise = fmt::format("settings: {}; and the groups {}", fmt::join(plain, ", "), fmt::join(groups, ", "))});
   return false;
 }
 

@@ -125,6 +125,15 @@ TEST(Study, SettingAVariedKeyIsRefusedOtherSettingsApplyToEveryCondition) {
   EXPECT_EQ(typo.output.rfind("esc: error: epocs=2: unknown setting `epocs`; did you mean `epochs`?", 0), 0U)
       << typo.output;
   EXPECT_EQ(typo.output.find("condition `"), std::string::npos) << typo.output;
+  // One line: with a suggestion, not the hundred keys besides.
+  EXPECT_EQ(typo.output, "esc: error: epocs=2: unknown setting `epocs`; did you mean `epochs`?\n");
+  // Without one, the plain keys and the groups, not every key of every group.
+  const Outcome far = esc("run " + studies() + " --set zzzz=2 --out " + scratch("study-far").string());
+  EXPECT_EQ(far.status, 1);
+  EXPECT_NE(far.output.find("epochs, steps, runs"), std::string::npos) << far.output;
+  EXPECT_NE(far.output.find("robot.*"), std::string::npos) << far.output;
+  EXPECT_EQ(far.output.find("robot.max_speed"), std::string::npos) << far.output;
+  EXPECT_LT(far.output.size(), 600U) << far.output;
 }
 
 TEST(Study, AnUnknownNameListsExperimentsAndStudies) {

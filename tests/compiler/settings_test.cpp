@@ -50,7 +50,10 @@ TEST(ApplySetting, BadKeysAndValuesAreRefusedWithoutChange) {
   const eval::ExperimentSpec before = x;
   std::string m = apply_setting(x, "mu_", "3");
   EXPECT_NE(m.find("did you mean `mu`?"), std::string::npos) << m;
-  EXPECT_NE(m.find("epochs"), std::string::npos) << m;   // lists the keys
+  EXPECT_EQ(m.find("epochs"), std::string::npos) << m;   // the suggestion alone
+  m = apply_setting(x, "zzzz", "3");
+  EXPECT_NE(m.find("epochs"), std::string::npos) << m;   // no suggestion: the keys and groups
+  EXPECT_NE(m.find("gp.*"), std::string::npos) << m;
   m = apply_setting(x, "robot.inertai", "off");
   EXPECT_NE(m.find("did you mean `robot.inertia`?"), std::string::npos) << m;
   m = apply_setting(x, "mu", "200");   // comma with lambda 150
