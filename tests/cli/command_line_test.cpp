@@ -51,6 +51,21 @@ TEST(CommandLine, UnknownCommandGetsDidYouMean) {
   EXPECT_EQ(o.output.find("A subcommand is required"), std::string::npos) << o.output;
 }
 
+// The README shows an error as esc prints it, from a script it ships: the sample follows
+// whatever the compiler's messages become.
+TEST(CommandLine, TheReadmesSampleErrorIsWhatEscPrints) {
+  const std::string readme = slurp(fs::path(ESC_SOURCE_DIR) / "README.md");
+  const std::string command = "$ esc check examples/typo.esc\n";
+  const std::size_t begin = readme.find(command);
+  ASSERT_NE(begin, std::string::npos) << "the README has no sample error";
+  const std::size_t end = readme.find("```", begin);
+  ASSERT_NE(end, std::string::npos);
+  const Outcome o =
+      shell("cd " + std::string(ESC_SOURCE_DIR) + " && " + std::string(ESC_BINARY) + " check examples/typo.esc");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.output, readme.substr(begin + command.size(), end - begin - command.size()));
+}
+
 TEST(CommandLine, MisspelledOptionsGetDidYouMean) {
   Outcome o = esc("run " + tiny() + " --generatons 3");
   EXPECT_EQ(o.status, 2) << o.output;
