@@ -277,11 +277,16 @@ ChoiceNames ExperimentLowering::number_choices(eval::ExperimentSpec& x) {
     if (std::find(v.begin(), v.end(), id) == v.end()) v.push_back(id);
   };
   for (control::ControllerSpec& c : x.controllers)
-    for (control::Choice& choice : c.choices) {
+    for (std::size_t j = 0; j < c.choices.size(); ++j) {
+      control::Choice& choice = c.choices[j];
       choice.id = ids.try_emplace({choice.name, choice.behavior}, static_cast<int>(ids.size())).first->second;
       add(choice.name, choice.id);
       // `library.member` names every listing of the member (`crash`, `crash_2`, ...).
       if (!choice.library.empty()) add(choice.behavior, choice.id);
+      // A supervisor's behavior listed with arguments also by the name usage tables print,
+      // `forward_2(0.3)`: one name, copied from a table, reads the same choice.
+      if (c.head == control::Head::Supervisor && j < c.behaviors.size() && c.behaviors[j].name != choice.name)
+        add(c.behaviors[j].name, choice.id);
     }
   x.choice_ids = ids.size();
   return names;

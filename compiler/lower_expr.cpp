@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "compiler/names.hpp"
+#include "compiler/quantities.hpp"
 #include "compiler/units.hpp"
 #include "runtime/expr/observables.hpp"
 
@@ -183,16 +184,37 @@ class Lowerer {
           .help.push_back(kEndTermHelp);
       return failed();
     }
-    if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
+    const auto named = [](const ast::Expr* a) {
+      return a != nullptr && (a->kind == ast::Expr::Kind::Name || a->kind == ast::Expr::Kind::Call);
+    };
+    if (e.args.size() != 1 || !named(e.args[0].get())) {
       sink_.error(e.where, fmt::format("`{}` takes the name of an action or behavior of the compared controllers, "
                                        "as in `{}(avoid)` or `{}(library.avoid)`",
                                        f.name, f.name, f.name));
       return failed();
     }
     const ast::Expr& arg = *e.args[0];
+    // The name usage tables print: `forward` or, for a behavior listed with arguments, also
+    // `forward(0.5)` (as copied from a table; constants printed as the tables print them).
+    std::string key = arg.text;
+    if (arg.kind == ast::Expr::Kind::Call) {
+      std::vector<std::string> shown;
+      for (const auto& a : arg.args) {
+        const Node v = a ? lower(*a) : failed();
+        if (!v.ok) return failed();
+        if (!v.constant) {
+          sink_.error(a->where, fmt::format("`{}({}(...))` takes the arguments the behavior was listed with: "
+                                            "constants, as usage tables print them",
+                                            f.name, arg.text));
+          return failed();
+        }
+        shown.push_back(number_text(*v.constant));
+      }
+      key = fmt::format("{}({})", arg.text, fmt::join(shown, ", "));
+    }
     std::vector<int> ids;
     if (scope_.choices != nullptr) {
-      const auto it = scope_.choices->ids.find(arg.text);
+      const auto it = scope_.choices->ids.find(key);
       if (it == scope_.choices->ids.end()) {
         std::vector<std::string> names;
         for (const auto& [n, _] : scope_.choices->ids) names.push_back(n);
@@ -204,8 +226,8 @@ class Lowerer {
                                         quoted_list(names, ", "));
         suggest(sink_.error(arg.where, fmt::format("`{}` is not an action or behavior of the controllers compared by "
                                                    "experiment `{}`",
-                                                   arg.text, scope_.choices->experiment)),
-                arg.text, names, {.otherwise = otherwise, .always = names.size() <= 12});
+                                                   key, scope_.choices->experiment)),
+                key, names, {.otherwise = otherwise, .always = names.size() <= 12});
         return failed();
       }
       ids = it->second;

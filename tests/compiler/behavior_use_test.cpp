@@ -100,6 +100,23 @@ TEST(BehaviorUse, UsingNamesASupervisorsListingAndATreesAction) {
   EXPECT_EQ(t.fitness, 100.0 * static_cast<double>(t.usage[0]));   // a tree's forward; it has no forward_2
 }
 
+TEST(BehaviorUse, TheNameAUsageTablePrintsIsTheSameChoice) {
+  // SV's usage table prints `forward(0.8)`, `left(0.5)`, `forward_2(0.3)`: copied into
+  // using(), each reads what its name without arguments reads.
+  const eval::ExperimentSpec printed = compiled("step: using(left)");
+  ASSERT_EQ(printed.controllers.at(1).choice_names(), (std::vector<std::string>{"forward(0.8)", "left(0.5)", "forward_2(0.3)"}));
+  eval::ExperimentSpec plain = compiled("step: 100 * using(forward) + using(forward_2)");
+  eval::ExperimentSpec table = compiled("step: 100 * using(forward(0.8)) + using(forward_2(0.3))");
+  eval::Evaluator a(plain), b(table);
+  for (int k = 0; k < 4; ++k) {
+    const control::ControllerSpec& sv = plain.controllers[1];
+    const eval::Evaluation x = a.evaluate(sv, genome(sv, k), 77 + static_cast<std::uint64_t>(k));
+    const eval::Evaluation y = b.evaluate(table.controllers[1], genome(sv, k), 77 + static_cast<std::uint64_t>(k));
+    EXPECT_EQ(x.fitness, y.fitness) << k;
+    EXPECT_GT(x.fitness, 0.0) << k;
+  }
+}
+
 TEST(BehaviorUse, AnEpochTermAddsExactlyItsValuesOnAFixedTrajectory) {
   // Integer terms: every sum is exact, so with - without is the terms' sum itself.
   eval::ExperimentSpec without = compiled("step: using(forward)  stop epoch when collision");
@@ -277,6 +294,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadUse{"step: 1  epoch: count(2)", "error: `count` takes the name of an action or behavior"},
         BadUse{"step: 1  epoch: 1  epoch: 2", "error: the fitness already has an `epoch:` term"},
         BadUse{"step: 1  evaluation: sahre(left)", "error: unknown function `sahre`; did you mean `share`?"},
+        BadUse{"step: using(forward(0.5))",
+               "bad.esc:3:25: error: `forward(0.5)` is not an action or behavior of the controllers compared by "
+               "experiment `e`; did you mean `forward(0.8)`?"},
+        BadUse{"step: using(forward(speed))", "bad.esc:3:33: error: `using(forward(...))` takes the arguments the "
+                                              "behavior was listed with: constants"},
         BadUse{"step: using(useless.crash)",
                "error: `useless.crash` is not an action or behavior of the controllers compared by experiment `e`"}));
 
