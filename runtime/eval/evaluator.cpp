@@ -1,6 +1,7 @@
 #include "runtime/eval/evaluator.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -86,6 +87,16 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
   Evaluation result;
   result.objectives.assign(s.further.size(), 0.0);
   result.descriptors.assign(s.descriptors.size(), 0.0);
+  // A trace's running fitness counts every term where it applies: an epoch's last step is
+  // told after the epoch's end terms, the evaluation's after its own, so that the last step
+  // holds the evaluation's fitness.
+  std::optional<TraceStep> last_step;
+  const auto tell_last_step = [&] {
+    if (!last_step) return;
+    last_step->fitness = result.fitness;
+    trace->on_step(*last_step);
+    last_step.reset();
+  };
   for (int e = 0; e < s.epochs; ++e) {
     epoch.begin(seed, e);
     ctl.reset();
@@ -99,8 +110,10 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
       result.fitness = add_fitness(result.fitness, outcome.term);
       for (std::size_t k = 0; k < s.further.size(); ++k)
         result.objectives[k] = add_fitness(result.objectives[k], s.further[k].step.eval(epoch.frame()));
-      if (trace != nullptr) [[unlikely]]
-        trace->on_step(epoch.traced(cmd, ctl.last_action(), result.fitness));
+      if (trace != nullptr) [[unlikely]] {
+        if (last_step) trace->on_step(*last_step);
+        last_step = epoch.traced(cmd, ctl.last_action(), result.fitness);
+      }
       if (outcome.stop) break;
     }
     const std::int64_t epoch_steps = result.steps - steps_before;
@@ -112,9 +125,11 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
             end_term(*s.further[k].epoch_end, controller, epoch.frame(), epoch_steps, ctl.usage(), epoch_start_);
     if (!s.descriptors.empty())
       reduce_descriptors(controller, epoch.frame(), epoch_steps, ctl.usage(), epoch_start_, e, result.descriptors);
+    if (e + 1 < s.epochs) tell_last_step();
   }
   if (s.fitness.evaluation_end)
     result.fitness += end_term(*s.fitness.evaluation_end, controller, epoch.frame(), result.steps, ctl.usage(), {});
+  tell_last_step();
   for (std::size_t k = 0; k < s.further.size(); ++k)
     if (s.further[k].evaluation_end)
       result.objectives[k] += end_term(*s.further[k].evaluation_end, controller, epoch.frame(), result.steps, ctl.usage(), {});

@@ -42,7 +42,10 @@ struct TraceStep {
   double left_speed_mps = 0.0;                // measured wheel speeds after the step
   double right_speed_mps = 0.0;
   int action = -1;                            // symbolic head: index of the acting action
-  double fitness = 0.0;                       // accumulated over the evaluation so far
+  // The evaluation's fitness so far, every term counted where it applies: an epoch's last
+  // step counts the epoch's end terms, the evaluation's last step its own (it is the
+  // evaluation's fitness).
+  double fitness = 0.0;
   bool collided = false;
   double energy = 1.0;                        // accumulator level after the step
   // Where the arena's zones are this epoch (random ones move at every epoch start); the

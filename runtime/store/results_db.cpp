@@ -331,7 +331,8 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const st
 std::vector<std::string> trace_column_names(std::size_t zones) {
   std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
   for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
-  for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", "fitness", "collided"})
+  for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", kRunningFitness,
+                        "collided"})
     c.emplace_back(n);
   c.emplace_back("energy");
   for (std::size_t z = 0; z < zones; ++z) {
@@ -823,9 +824,12 @@ std::vector<StoredExperiment> ResultsDb::load() {
         }
         auto rp = db_.prepare("SELECT run, seed, fitness, trace, columns FROM replays WHERE controller_id = ?");
         rp.bind(1, c.id);
-        if (rp.step())
+        if (rp.step()) {
+          const auto columns = nlohmann::json::parse(rp.text(4)).get<std::vector<std::string>>();
           c.replay = StoredReplay{rp.integer(0), parse_u64(rp.text(1), "replay seed"), rp.real(2),
-                                  unpack_trace(rp.doubles(3), nlohmann::json::parse(rp.text(4)).get<std::vector<std::string>>())};
+                                  unpack_trace(rp.doubles(3), columns),
+                                  std::find(columns.begin(), columns.end(), kRunningFitness) != columns.end()};
+        }
         if (schema_version_ >= kMemberSchemaVersion) c.members = load_members(db_, c.id);
       }
     }

@@ -90,6 +90,7 @@ struct LaunchInfo {
 // fixed ones, then (since replays record them) the accumulator, x, y of each of the arena's
 // `zones` in that epoch, and the light sensors light0..light7.
 inline constexpr std::size_t kTraceColumns = 20;
+inline constexpr const char* kRunningFitness = "running_fitness";
 [[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones);
 
 struct StoredReplay {
@@ -97,6 +98,10 @@ struct StoredReplay {
   std::uint64_t seed = 0;       // the evaluation's seed
   double fitness = 0.0;
   std::vector<eval::TraceStep> steps;
+  // Each epoch's last step counts the epoch's end terms (and the last one the evaluation's),
+  // as eval::TraceStep::fitness does now; an esc before that stored the running fitness
+  // without them (its column is named `fitness`, not kRunningFitness).
+  bool end_terms_counted = true;
 };
 
 struct StoredController {

@@ -132,6 +132,29 @@ TEST(Replay, ChosenRunAndEpochs) {
   EXPECT_NE(svg.find("epochs 2,3 of 3 drawn"), std::string::npos);
 }
 
+// The running fitness counts an epoch's end terms on its last step, so the last row is the
+// evaluation's fitness here too, where an `epoch:` term adds -100 * |share(left) - 0.1|.
+TEST(Replay, TheRunningFitnessCountsTheEndTermsWhereTheyApply) {
+  const fs::path dir = scratch("replay-end-terms");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/behavior_use.esc";
+  ASSERT_EQ(esc_command("run " + script + " --experiment constrained_use --generations 2 --out " + dir.string()).status,
+            0);
+  const auto summary = read_json(dir / "summary.json");
+  int stored = 0;   // the controller's replay stored in esc.db: the same, value for value
+  for (const int run : {1, 2}) {
+    const Outcome o = esc_command("replay " + dir.string() + " --controller SV --run " + std::to_string(run));
+    ASSERT_EQ(o.status, 0) << o.output;
+    stored += o.output.find("identical to the stored replay") != std::string::npos ? 1 : 0;
+    const auto rows = read_csv(dir / ("replay-SV-run-0" + std::to_string(run) + ".csv"));
+    ASSERT_GT(rows.size(), 2U);
+    const std::size_t fitness = rows.front().size() - 2;
+    ASSERT_EQ(rows.front()[fitness], "fitness");
+    EXPECT_EQ(number(rows.back()[fitness]),
+              summary["controllers"]["SV"]["runs"][run - 1]["best_fitness"].get<double>()) << run;
+  }
+  EXPECT_EQ(stored, 1);
+}
+
 TEST(Replay, AGenomeFileInAnotherArena) {
   const fs::path dir = tiny_run();
   const fs::path out = scratch("replay-elsewhere");
