@@ -130,23 +130,36 @@ void draw_zones_and_lights(std::string& svg, const TrajectoryFigure& f, const Fr
   }
 }
 
+// Where colours name behaviors, epochs drawn from one fixed start would lie on each other
+// indistinguishably: each epoch has its own dash pattern (solid for the first), in the legend.
+constexpr std::array<const char*, 4> kEpochDashes = {"", "9 4", "2 4", "12 4 2 4"};
+
+bool dashed_epochs(const TrajectoryFigure& f) { return !f.choices.empty() && epoch_ranges(f.steps).size() > 1; }
+
+std::string dash_of(const TrajectoryFigure& f, int epoch) {
+  const char* dash = kEpochDashes[static_cast<std::size_t>(epoch) % kEpochDashes.size()];
+  return dashed_epochs(f) && *dash != '\0' ? fmt::format(R"~( stroke-dasharray="{}")~", dash) : std::string();
+}
+
 // Each epoch's path, one <path> per stretch with the same colour; its start (a small circle
-// numbered with the epoch), its end (the robot, with its heading) and its collisions.
+// numbered with the epoch), its end (the robot, with its heading, numbered too) and its
+// collisions.
 void draw_paths(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
   svg += R"~(<g fill="none" stroke-width="2" stroke-linejoin="round" stroke-linecap="round">)~" "\n";
   for (const auto& [begin, end] : epoch_ranges(f.steps)) {
     std::string d;
     std::string colour;
+    const std::string dash = dash_of(f, f.steps[begin].epoch);
     for (std::size_t i = begin + 1; i < end; ++i) {
       const std::string c = colour_of(f, f.steps[i]);
       if (c != colour) {
-        if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}" d="{}"/>)~" "\n", colour, d);
+        if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}"{} d="{}"/>)~" "\n", colour, dash, d);
         colour = c;
         d = fmt::format("M{:.1f} {:.1f}", at.x(f.steps[i - 1].pose.x_m), at.y(f.steps[i - 1].pose.y_m));
       }
       d += fmt::format(" L{:.1f} {:.1f}", at.x(f.steps[i].pose.x_m), at.y(f.steps[i].pose.y_m));
     }
-    if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}" d="{}"/>)~" "\n", colour, d);
+    if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}"{} d="{}"/>)~" "\n", colour, dash, d);
   }
   svg += "</g>\n";
   for (const eval::TraceStep& t : f.steps)
@@ -164,10 +177,29 @@ void draw_paths(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
     const double x = at.x(last.pose.x_m);
     const double y = at.y(last.pose.y_m);
     svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5"/>)~"
-                       "\n" R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="1.5"/>)~" "\n",
+                       "\n" R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="1.5"/>)~" "\n"
+                       R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
                        x, y, r_mm, x, y, x + r_mm * std::cos(last.pose.heading_rad),
-                       y - r_mm * std::sin(last.pose.heading_rad));
+                       y - r_mm * std::sin(last.pose.heading_rad), x + r_mm + 3.0, y + r_mm + 8.0, last.epoch + 1);
   }
+}
+
+// A bar of a round length under the arena's lower left corner: the drawing is to scale.
+// Returns the height it takes.
+double draw_scale_bar(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
+  const double width_mm = f.arena.width_m * 1000.0;
+  double length_mm = 1.0;
+  for (const double step : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0, 10000.0})
+    if (step <= width_mm / 4.0) length_mm = step;
+  const double x = at.x(0.0), y = at.y(0.0) + 14.0;
+  svg += fmt::format(R"~(<g stroke="#1d2330" stroke-width="1.5"><line x1="{0:.1f}" y1="{1:.1f}" x2="{2:.1f}" y2="{1:.1f}"/>)~"
+                     R"~(<line x1="{0:.1f}" y1="{3:.1f}" x2="{0:.1f}" y2="{4:.1f}"/><line x1="{2:.1f}" y1="{3:.1f}" x2="{2:.1f}" y2="{4:.1f}"/></g>)~"
+                     "\n" R"~(<text x="{5:.1f}" y="{6:.1f}" font-size="11" fill="#1d2330">{7}</text>)~" "\n",
+                     x, y, x + length_mm, y - 4.0, y + 4.0, x + length_mm + 6.0, y + 4.0,
+                     length_mm >= 1000.0 ? fmt::format("{:g} m", length_mm / 1000.0)
+                                         : length_mm >= 10.0 ? fmt::format("{:g} cm", length_mm / 10.0)
+                                                             : fmt::format("{:g} mm", length_mm));
+  return 24.0;
 }
 
 // What each colour and mark means; returns the legend's height.
@@ -197,6 +229,17 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
                        R"~(<text x="{:.1f}" y="{:.1f}">{}</text>)~" "\n",
                        left, y - 4.0, left + 24.0, y - 4.0, colour, left + 32.0, y, escape_markup(label));
   }
+  if (dashed_epochs(f)) {
+    y += kLegendLine * 1.5;
+    svg += fmt::format(R"~(<text x="{:.1f}" y="{:.1f}" font-weight="bold">path, by epoch</text>)~" "\n", left, y);
+    for (const auto& [begin, end] : epoch_ranges(f.steps)) {
+      y += kLegendLine;
+      const int epoch = f.steps[begin].epoch;
+      svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="2"{}/>)~"
+                         R"~(<text x="{:.1f}" y="{:.1f}">epoch {} ({} steps)</text>)~" "\n",
+                         left, y - 4.0, left + 24.0, y - 4.0, dash_of(f, epoch), left + 32.0, y, epoch + 1, end - begin);
+    }
+  }
   y += kLegendLine * 1.5;
   const auto mark = [&](const std::string& symbol, std::string_view label) {
     svg += symbol + fmt::format(R"~(<text x="{:.1f}" y="{:.1f}">{}</text>)~" "\n", left + 32.0, y, label);
@@ -206,7 +249,7 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
   mark(fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="4" fill="#fff" stroke="#1d2330" stroke-width="1.5"/>)~", cx, y - 4.0),
        "start of an epoch (its number)");
   mark(fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="7" fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5"/>)~",
-                   cx, y - 4.0), "robot at the end, and its heading");
+                   cx, y - 4.0), "robot at the end, heading, epoch");
   mark(fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="3" fill="{}"/>)~", cx, y - 4.0, kCollision), "collision");
   mark(fmt::format(R"~(<rect x="{:.1f}" y="{:.1f}" width="14" height="10" fill="{}"/>)~", cx - 7.0, y - 9.0, kObstacle),
        "wall or obstacle");
@@ -233,10 +276,11 @@ std::string trajectory_svg(const TrajectoryFigure& f) {
   draw_arena(body, f, at);
   draw_zones_and_lights(body, f, at);
   draw_paths(body, f, at);
+  const double scale_bar = draw_scale_bar(body, f, at);
   const double legend_left = at.x(f.arena.width_m) + 2.0 * kMargin;
   const double legend_height = draw_legend(body, f, legend_left, at.top + 10.0);
   const double width = legend_left + kLegendWidth + kMargin;
-  const double height = std::max(at.top + at.height_mm, at.top + 10.0 + legend_height) + kMargin;
+  const double height = std::max(at.top + at.height_mm + scale_bar, at.top + 10.0 + legend_height) + kMargin;
   return fmt::format(R"~(<?xml version="1.0" encoding="UTF-8"?>)~" "\n"
                      R"~(<svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="{0:.0f}" height="{1:.0f}" viewBox="0 0 {0:.0f} {1:.0f}" font-family="sans-serif">)~" "\n"
                      R"~(<rect width="100%" height="100%" fill="#fff"/>)~" "\n"

@@ -8,7 +8,6 @@
 
 #include <fmt/format.h>
 
-#include "runtime/report/statistics.hpp"
 #include "runtime/report/svg_plot.hpp"
 
 namespace esc::report {
@@ -32,7 +31,9 @@ double calls(const eval::GenerationStats& g, const std::vector<std::size_t>& ind
   return kStepsScale * static_cast<double>(steps) / static_cast<double>(g.usage.steps_total);
 }
 
-// Mean over the finished runs of a line's calls, generation by generation, with ± one sd.
+// The median over the finished runs of a line's calls, generation by generation, with the
+// band between the quartiles: calls are skewed (a behavior most runs never call and one run
+// calls all the time), which a mean with ± one sd drew as a band below zero, cut off.
 svg::Line curve(const store::StoredController& c, const UsageLine& line, std::size_t style) {
   svg::Line out{line.label, style, {}, {}, {}, {}, false, false, {}};
   std::size_t length = 0;
@@ -44,11 +45,11 @@ svg::Line curve(const store::StoredController& c, const UsageLine& line, std::si
       const double v = calls(r.generations[g], line.indices);
       if (!std::isnan(v)) values.push_back(v);
     }
-    const Summary s = summarise(values);
+    std::sort(values.begin(), values.end());
     out.x.push_back(static_cast<double>(g));
-    out.y.push_back(values.empty() ? kNaN : s.mean);
-    out.lo.push_back(values.empty() ? kNaN : std::max(0.0, s.mean - s.sd));   // calls are never negative
-    out.hi.push_back(values.empty() ? kNaN : std::min(kStepsScale, s.mean + s.sd));
+    out.y.push_back(values.empty() ? kNaN : svg::quantile(values, 0.5));
+    out.lo.push_back(values.empty() ? kNaN : svg::quantile(values, 0.25));
+    out.hi.push_back(values.empty() ? kNaN : svg::quantile(values, 0.75));
   }
   return out;
 }
@@ -114,8 +115,8 @@ std::vector<NamedFigure> usage_figures(const store::StoredExperiment& e, const s
       }
       f.panels.push_back(std::move(panel));
     }
-    f.note = "In each generation's best evaluation; line: mean over the finished runs; band: ± one standard "
-             "deviation across runs.";
+    f.note = "In each generation's best evaluation; line: median over the finished runs; band: from the first "
+             "to the third quartile across runs.";
     out.push_back({fmt::format("{}-usage-{}.svg", stem, c.name), f.title, svg::render(f)});
   }
   return out;

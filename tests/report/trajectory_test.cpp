@@ -76,6 +76,20 @@ TEST(TrajectorySvg, ClassicalHeadsAreColouredByEpoch) {
   EXPECT_EQ(count(svg, "<path stroke="), 2U);
 }
 
+// Coloured by behavior, epochs from one fixed start would lie on each other: each has its
+// dash pattern, in the legend; a scale bar says how large the arena is.
+TEST(TrajectorySvg, EpochsColouredByBehaviorAreDashedApartOverAScaleBar) {
+  const std::string svg = trajectory_svg(figure(two_epochs(), {"forward", "left", "right"}));
+  EXPECT_EQ(count(svg, R"(stroke-dasharray="9 4" d=)"), 2U) << "epoch 2's two stretches";
+  EXPECT_NE(svg.find("path, by epoch"), std::string::npos);
+  EXPECT_NE(svg.find("epoch 2 (4 steps)"), std::string::npos);
+  EXPECT_NE(svg.find(">10 cm</text>"), std::string::npos) << "a 60 cm arena's bar";
+  std::vector<eval::TraceStep> classical = two_epochs();
+  for (auto& t : classical) t.action = -1;
+  EXPECT_EQ(trajectory_svg(figure(classical, {})).find("stroke-dasharray=\"9 4\""), std::string::npos)
+      << "colours tell a classical head's epochs apart already";
+}
+
 TEST(TrajectorySvg, DrawsSegmentWallsAsTheirRectanglesAndTheGoal) {
   TrajectoryFigure f = figure(two_epochs(), {});
   const std::string without = trajectory_svg(f);

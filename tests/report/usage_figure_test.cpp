@@ -2,7 +2,8 @@
 // useless behaviors (their library marked) in a panel of their own, one line per library
 // when a panel would hold more than 8, nothing for a classical controller or for usage not
 // stored (a database older than schema 4); the panels the report's chart draws are the same
-// ones, and the band of ± one sd never leaves [0, 10,000] calls.
+// ones, and the line is the median over runs, the band between the quartiles (inside
+// [0, 10,000] calls, where a mean ± one sd fell below zero).
 #include "runtime/report/usage_figure.hpp"
 
 #include <gtest/gtest.h>
@@ -94,12 +95,15 @@ TEST(UsageFigure, ThePanelsAreWhatTheReportDraws) {
   EXPECT_EQ(few[0].lines.size(), 5u);
 }
 
-// A line whose runs differ more than its mean: the band stops at 0 calls.
-TEST(UsageFigure, TheBandNeverGoesBelowZero) {
+// A line whose runs differ more than its mean (a mean ± one sd would reach below 0): the
+// median and the quartiles stay among the runs' values.
+TEST(UsageFigure, MedianAndQuartilesNeverGoBelowZero) {
   store::StoredController c = supervisor(1, false);
   c.finished[1].generations[0].usage.best = {0, 100};   // `go` 25 and 0: mean 12.5, sd 17.7
   const std::vector<NamedFigure> f = usage_figures(experiment(c), "e");
   ASSERT_EQ(f.size(), 1u);
+  EXPECT_NE(f[0].svg.find("line: median over the finished runs; band: from the first to the third quartile"),
+            std::string::npos);
   // The axis covers the bands: no tick below 0.
   EXPECT_EQ(f[0].svg.find(">-"), std::string::npos);
   EXPECT_EQ(f[0].svg.find(">\u2212"), std::string::npos);

@@ -319,20 +319,21 @@
     }));
   }
 
-  // Mean over runs, per generation, of a line's calls per 10,000 steps, with +-sd.
+  // The median over runs, per generation, of a line's calls per 10,000 steps, with the
+  // quartiles (as usage_figure.cpp: calls are skewed, a mean +-sd band was not readable).
   function usageCurve(c, line, key) {
     const runs = c.usage_generations;
     const length = Math.max(0, ...runs.map(r => r[key].length));
-    const mean = [], lo = [], hi = [];
+    const median = [], lo = [], hi = [];
     for (let g = 0; g < length; ++g) {
       const values = runs.filter(r => g < r[key].length && r[key][g] !== null)
-                         .map(r => line.indices.reduce((sum, i) => sum + r[key][g][i], 0));
-      const [m, sd] = meanSd(values);
-      // Calls are never negative, nor more than every step.
-      mean.push(values.length ? m : null); lo.push(values.length ? Math.max(0, m - sd) : null);
-      hi.push(values.length ? Math.min(1e4, m + sd) : null);
+                         .map(r => line.indices.reduce((sum, i) => sum + r[key][g][i], 0))
+                         .sort((a, b) => a - b);
+      median.push(values.length ? quantile(values, 0.5) : null);
+      lo.push(values.length ? quantile(values, 0.25) : null);
+      hi.push(values.length ? quantile(values, 0.75) : null);
     }
-    return {mean, lo, hi, length};
+    return {median, lo, hi, length};
   }
 
   // Figure 2: how often each behavior is called (per 10,000 steps) as generations go by.
@@ -346,10 +347,10 @@
       const datasets = [];
       for (const line of panel.lines) {
         const cv = usageCurve(c, line, key);
-        datasets.push({label: `${line.label} +sd`, data: cv.hi, borderWidth: 0, pointRadius: 0, fill: '+1',
+        datasets.push({label: `${line.label} q3`, data: cv.hi, borderWidth: 0, pointRadius: 0, fill: '+1',
                        backgroundColor: alpha(line.colour, 0.15), escBand: true});
-        datasets.push({label: `${line.label} -sd`, data: cv.lo, borderWidth: 0, pointRadius: 0, fill: false, escBand: true});
-        datasets.push({label: line.label, data: cv.mean, borderColor: line.colour, backgroundColor: line.colour,
+        datasets.push({label: `${line.label} q1`, data: cv.lo, borderWidth: 0, pointRadius: 0, fill: false, escBand: true});
+        datasets.push({label: line.label, data: cv.median, borderColor: line.colour, backgroundColor: line.colour,
                        borderWidth: 2, pointRadius: 0, fill: false});
       }
       return datasets;
@@ -358,7 +359,7 @@
       const datasets = datasetsOf(panel, 'best');
       const length = Math.max(0, ...c.usage_generations.map(r => r.best.length));
       const canvas = chartCard(parent, `Calls per 10,000 steps: ${c.name}, ${panel.title}`,
-                               'Line: mean over runs; band: ± one standard deviation across runs. ' +
+                               'Line: median over runs; band: from the first to the third quartile. ' +
                                'Calls: steps on which the behavior acted, scaled to 10,000 steps.');
       if (k === 0) canvas.parentElement.parentElement.insertBefore(
         el('div', {class: 'controls'}, [el('span', {text: 'usage in the'}), which]), canvas.parentElement);
@@ -367,7 +368,7 @@
         data: {labels: Array.from({length}, (_, g) => g), datasets},
         options: {
           interaction: {mode: 'index', intersect: false},
-          plugins: {legend: {labels: {filter: item => !item.text.endsWith('sd')}},
+          plugins: {legend: {labels: {filter: (item, data) => !data.datasets[item.datasetIndex].escBand}},
                     tooltip: {filter: item => !item.dataset.escBand}},
           scales: {x: {title: {display: true, text: 'generation'}},
                    y: {min: 0, title: {display: true, text: 'calls per 10,000 steps'}}},
