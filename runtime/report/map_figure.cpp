@@ -33,8 +33,7 @@ std::string viridis(double t) {
 
 std::string render_map(const MapFigure& m) {
   constexpr double left = 62, top = 34, side = 360, bar = 14, gap = 18, right = 70, bottom = 64;
-  // Wide enough for the title (13-pixel bold text, about 7.5 pixels a character).
-  const double width = std::max(left + side + gap + bar + right, 16.0 + 7.5 * static_cast<double>(m.title.size()));
+  const double width = std::max(left + side + gap + bar + right, svg::title_width(m.title.size()));
   const double height = top + side + bottom;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const Tile& t : m.tiles)

@@ -19,7 +19,7 @@ constexpr const char* kDashes[] = {"", "6 3", "2 2"};
 constexpr std::size_t kColourCount = std::size(kColours);
 
 constexpr double kLeft = 58.0, kRight = 12.0, kTop = 26.0, kBottom = 42.0;
-constexpr double kCharWidth = 6.2;   // of the 11-pixel sans-serif text, roughly
+constexpr double kCharWidth = 7.0;   // of the 11-pixel DejaVu Sans text (0.63 em), roughly
 constexpr double kTitleHeight = 26.0, kNoteHeight = 20.0, kLegendRow = 16.0;
 
 std::string px(double v) { return fmt::format("{:.1f}", v); }
@@ -243,8 +243,7 @@ std::string render(const Figure& f) {
   const double top = f.title.empty() ? 4.0 : kTitleHeight;
   const double panels_height = static_cast<double>(rows) * cell_height;
   const double legend_height = static_cast<double>(f.legend.size()) * kLegendRow + 8.0;
-  const double width = std::max(static_cast<double>(columns) * f.panel_width + legend_width,
-                                static_cast<double>(f.title.size()) * 7.4 + 16.0);
+  const double width = std::max(static_cast<double>(columns) * f.panel_width + legend_width, title_width(f.title.size()));
   const double height = top + std::max(panels_height, legend_height) + (f.note.empty() ? 4.0 : kNoteHeight);
 
   std::string out = fmt::format(

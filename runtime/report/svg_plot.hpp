@@ -76,6 +76,12 @@ struct Figure {
 
 [[nodiscard]] std::string render(const Figure& figure);
 
+// How wide a figure's title is drawn (13-pixel bold DejaVu Sans, the widest of the fonts
+// the figures name: about 0.66 em a character), so that a figure is made wide enough for it.
+[[nodiscard]] constexpr double title_width(std::size_t characters) noexcept {
+  return 8.6 * static_cast<double>(characters) + 16.0;
+}
+
 // The q-quantile of sorted values, interpolated linearly (NumPy's default).
 [[nodiscard]] double quantile(const std::vector<double>& sorted, double q);
 

@@ -51,6 +51,8 @@
     const v = n > 1 ? values.reduce((a, b) => a + (b - m) * (b - m), 0) / (n - 1) : 0;
     return [m, Math.sqrt(v)];
   }
+  // "1 epoch", "3 epochs".
+  function counted(n, noun) { return `${n} ${noun}${n === 1 ? '' : 's'}`; }
   function quantile(sorted, q) {            // linear interpolation (numpy's default)
     if (sorted.length === 0) return NaN;
     const pos = (sorted.length - 1) * q;
@@ -488,7 +490,11 @@
       rows = c.replay.rows;
       index = 0;
       slider.max = String(rows.length - 1);
-      const shown = rows.length < c.replay.total_steps ? `the first ${rows[rows.length - 1][0] + 1} of ${c.replay.total_epochs} epochs (${rows.length} of ${c.replay.total_steps} steps)` : `all ${c.replay.total_epochs} epochs (${rows.length} steps)`;
+      const shown = rows.length < c.replay.total_steps
+        ? `the first ${rows[rows.length - 1][0] + 1} of ${counted(c.replay.total_epochs, 'epoch')} ` +
+          `(${rows.length} of ${counted(c.replay.total_steps, 'step')})`
+        : c.replay.total_epochs === 1 ? `its one epoch (${counted(rows.length, 'step')})`
+                                      : `all ${c.replay.total_epochs} epochs (${counted(rows.length, 'step')})`;
       note.textContent = `Run ${c.replay.run}, evaluation seed ${c.replay.seed}: ${shown}. ` +
         'Trajectory coloured by the acting action or behavior (symbolic heads, supervisors); black dots: collisions.';
       legend.innerHTML = '';
@@ -626,9 +632,10 @@
       const finished = exp.controllers.reduce((n, c) => n + c.runs.length, 0);
       const unfinished = exp.controllers.reduce((n, c) => n + c.unfinished_runs, 0);
       section.appendChild(el('p', {class: 'meta', text:
-        `${exp.controllers.length} controllers × ${exp.runs} runs × ${exp.generations} generations, ` +
-        `${exp.epochs} epochs × ${exp.steps} steps; seed ${exp.seed}; ${exp.status}` +
-        (exp.status !== 'finished' ? ` (${finished} runs finished, ${unfinished} in progress)` : '') +
+        `${counted(exp.controllers.length, 'controller')} × ${counted(exp.runs, 'run')} × ` +
+        `${counted(exp.generations, 'generation')}, ${counted(exp.epochs, 'epoch')} × ${counted(exp.steps, 'step')}; ` +
+        `seed ${exp.seed}; ${exp.status}` +
+        (exp.status !== 'finished' ? ` (${counted(finished, 'run')} finished, ${unfinished} in progress)` : '') +
         `; script ${exp.script} (hash ${exp.content_hash}); esc ${exp.software_version}; started ${exp.created}` +
         (exp.directory ? `; directory ${exp.directory}` : '')}));
       section.appendChild(el('h2', {text: 'Fitness over generations'}));
