@@ -29,11 +29,20 @@ install_missing() {
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
-  echo "esc-setup: installing ${missing[*]}"
-  local sudo=()
+  echo "esc-setup: installing with apt what is missing: ${missing[*]}"
+  local sudo=() log start=$SECONDS
   [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  # apt's own output (hundreds of lines) goes to a log; its end is shown if it fails.
+  log=$(mktemp /tmp/esc-setup-apt.XXXXXX)
+  if ! { "${sudo[@]}" apt-get update -qq &&
+         DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+       } >"$log" 2>&1; then
+    tail -n 25 "$log" >&2
+    echo "esc-setup: error: apt-get failed (its whole output: $log)" >&2
+    exit 1
+  fi
+  echo "esc-setup: installed ${#missing[@]} of the packages named and what they need," \
+       "$(grep -c '^Setting up ' "$log" || true) in all, in $((SECONDS - start)) s; apt's output: $log"
 }
 
 # `demo` builds esc alone (the tests, benchmarks and fuzz targets are for `test`).
