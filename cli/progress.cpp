@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/interrupt.hpp"
 #include "cli/terminal.hpp"
 
 namespace esc::cli {
@@ -63,7 +64,9 @@ ProgressPrinter::ProgressPrinter(const eval::ExperimentSpec& spec, eval::Campaig
       live_(live),
       generations_total_(spec.total_generations()),
       generations_done_(already_done),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()) {
+  on_interrupt_count(generations_done_, generations_total_);
+}
 
 void ProgressPrinter::round_progress(const eval::RoundProgress& p) {
   Progress::round_progress(p);
@@ -96,6 +99,7 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
   Progress::generation_done(controller, run, g);
   ++generations_done_;
   ++done_here_;
+  on_interrupt_count(generations_done_, generations_total_);
   // Counted as the end message and `esc run --resume` count them ("3 of 16 generations"): the
   // generation stored as 0 (the initial population) is the first. Runs count from 1.
   const int generation = g.generation + 1;

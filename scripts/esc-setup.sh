@@ -12,16 +12,20 @@ case "$mode" in demo|test) ;; *) echo "usage: $0 demo|test" >&2; exit 2;; esac
 
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
-# The full variant, every optional part built in (docs/install.md says what each needs).
-PACKAGES=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev   # required
+# What esc needs to build and run: all `demo` installs.
+REQUIRED=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev
           libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev libnanoflann-dev
-          libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev   # uuid-dev: the ANTLR runtime links -luuid
-          libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
+          libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev)   # uuid-dev: the ANTLR runtime links -luuid
+# `test` builds the full variant, every optional part in (docs/install.md says what each needs).
+OPTIONAL=(libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK
           pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest                 # ESC_WITH_PYTHON (pytest: its tests)
           python3-matplotlib python3-deap                                                      # examples/python, run by ctest
           libgtest-dev python3 chromium file                                                   # tests (file: cpack -G DEB)
           clang libclang-rt-14-dev)                                                            # ESC_WITH_FUZZ
+PACKAGES=("${REQUIRED[@]}")
+if [ "$mode" = test ]; then PACKAGES+=("${OPTIONAL[@]}"); fi
+installed_now=0
 
 install_missing() {
   local missing=()
@@ -43,11 +47,16 @@ install_missing() {
   fi
   echo "esc-setup: installed ${#missing[@]} of the packages named and what they need," \
        "$(grep -c '^Setting up ' "$log" || true) in all, in $((SECONDS - start)) s; apt's output: $log"
+  installed_now=1
 }
 
 # `demo` builds esc alone (the tests, benchmarks and fuzz targets are for `test`).
 build() {
-  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  # New packages (a `test` after a `demo`): configure afresh, so that the optional parts they
+  # bring are found (the object files are kept).
+  if [ "$installed_now" = 1 ]; then rm -f "$BUILD_DIR/CMakeCache.txt"; fi
+  # The tests need GoogleTest, which `demo` does not install; `test` turns them on again.
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DESC_BUILD_TESTS="$([ "$mode" = test ] && echo ON || echo OFF)"
   if [ "$mode" = demo ]; then
     cmake --build "$BUILD_DIR" -j "$JOBS" --target esc
   else

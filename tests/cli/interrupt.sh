@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# SIGINT and SIGTERM during `esc run`: one line naming the directory and how to resume it,
+# SIGINT and SIGTERM during `esc run`: one line saying after how many generations it stopped,
+# naming the directory and how to resume it,
 # the status of the signal (130, 143), and a directory that reads (resuming a stopped run is
 # tested with kill -9 in the cli tests).
 # Usage: interrupt.sh ESC WORK
@@ -21,7 +22,7 @@ for signal in INT TERM; do
   status=$?
   expected=$([ "$signal" = INT ] && echo 130 || echo 143)
   [ "$status" -eq "$expected" ] || { echo "FAIL: SIG$signal: status $status, not $expected"; exit 1; }
-  grep -qx "esc: stopped; $dir holds every generation finished so far: \`esc run --resume $dir\` continues it" \
+  grep -qxE "esc: stopped after [1-9][0-9]* of 400000 generations \(all runs together\); $dir holds every generation finished: \`esc run --resume $dir\` continues it" \
       "$work/err-$signal" || { echo "FAIL: SIG$signal: no resume line"; cat "$work/err-$signal"; exit 1; }
 done
 "$esc" export "$work/run-INT" >/dev/null || { echo "FAIL: the stopped run does not read"; exit 1; }
