@@ -223,7 +223,7 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
 }  // namespace
 
 Outcome resume(const ResumeRequest& r, const compiler::CompileOptions& options, Events& events) {
-  return store_errors_typed([&] { return resume_typed(r, options, events); });
+  return store_errors_typed([&] { return disk_full_typed(r.dir, [&] { return resume_typed(r, options, events); }); });
 }
 
 }  // namespace esc::app

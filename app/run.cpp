@@ -17,9 +17,8 @@ namespace esc::app {
 namespace {
 
 Outcome run_study(const RunRequest& r, const compiler::CompileResult& compiled, eval::StudySpec& study,
-                  Events& events) {
+                  const std::filesystem::path& out, Events& events) {
   apply_to_study(r.overrides, study);
-  const std::filesystem::path out = r.out.empty() ? default_out(study.name) : r.out;
   // Dependencies shared by several conditions are run once: the second finds it in the cache.
   const DependencyContext deps =
       dependency_context(compiled, r.overrides, r.execution, run_cache(r.overrides, out), r.script, events);
@@ -42,9 +41,8 @@ Outcome run_study(const RunRequest& r, const compiler::CompileResult& compiled, 
 }
 
 Outcome run_one(const RunRequest& r, const compiler::CompileResult& compiled, eval::ExperimentSpec& spec,
-                Events& events) {
+                const std::filesystem::path& out, Events& events) {
   apply_to_experiment(r.overrides, spec);
-  const std::filesystem::path out = r.out.empty() ? default_out(spec.name) : r.out;
   prepare_dependencies(spec, dependency_context(compiled, r.overrides, r.execution, run_cache(r.overrides, out),
                                                 r.script, events));
   const store::LaunchInfo launch = launch_info(r.overrides, r.script, &spec);
@@ -67,8 +65,13 @@ Outcome run(const RunRequest& request, const compiler::CompileOptions& options, 
   return store_errors_typed([&] {
     compiler::CompileResult compiled = compile(request.script, options, events);
     const Target target = pick_target(compiled, request.script, request.experiment);
-    if (auto* const* study = std::get_if<eval::StudySpec*>(&target)) return run_study(request, compiled, **study, events);
-    return run_one(request, compiled, *std::get<eval::ExperimentSpec*>(target), events);
+    auto* const* study = std::get_if<eval::StudySpec*>(&target);
+    const std::string& name = study != nullptr ? (*study)->name : std::get<eval::ExperimentSpec*>(target)->name;
+    const std::filesystem::path out = request.out.empty() ? default_out(name) : request.out;
+    return disk_full_typed(out, [&] {
+      return study != nullptr ? run_study(request, compiled, **study, out, events)
+                              : run_one(request, compiled, *std::get<eval::ExperimentSpec*>(target), out, events);
+    });
   });
 }
 

@@ -1,5 +1,8 @@
 #pragma once
+#include <filesystem>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "app/error.hpp"
 #include "app/ranks.hpp"
@@ -18,6 +21,28 @@ auto store_errors_typed(F&& act) -> decltype(act()) {
   } catch (const store::StoreError& e) {
     if (job() != nullptr && job()->size() > 1) throw;
     throw Error(ErrorKind::Results, e.what());
+  }
+}
+
+// Whether the file system holding `dir` (or its nearest existing parent) has no room left
+// for another generation: less than 1 MiB available.
+[[nodiscard]] bool no_room_left(const std::filesystem::path& dir) noexcept;
+
+// What `act` returns; an exception it throws while the disk holding `dir` is full (SQLite
+// says only "database or disk is full", a stream only that it cannot write) becomes an
+// Error of kind Results that names the directory and how to continue: every generation
+// stored before is kept, as after a kill.
+template <typename F>
+auto disk_full_typed(const std::filesystem::path& dir, F&& act) -> decltype(act()) {
+  try {
+    return std::forward<F>(act)();
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    if (!no_room_left(dir)) throw;
+    throw Error(ErrorKind::Results, fmt::format("the disk holding {} is full ({})", dir.string(), e.what()),
+                fmt::format("free some space: `esc run --resume {}` continues from the last generation stored",
+                            dir.string()));
   }
 }
 

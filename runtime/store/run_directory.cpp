@@ -114,11 +114,19 @@ std::string genome_checksum(std::string_view controller, int run, const std::vec
 
 void write_atomically(const fs::path& file, std::string_view text) {
   const fs::path tmp = fs::path(file).concat(".tmp");
+  bool written = false;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp.string()));
+    out.close();
+    written = !out.fail();
+  }
+  // A partial file (a full disk) is not left behind: the old file, if any, is as it was.
+  std::error_code ec;
+  if (!written) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error(fmt::format("cannot write {}", file.string()));
   }
   fs::rename(tmp, file);
 }

@@ -131,6 +131,15 @@ TEST(DependencyCache, TwoProcessesMayShareACache) {
   }
   EXPECT_EQ(entries, 1);
   EXPECT_EQ(read_json(dir / "a" / "summary.json")["controllers"], read_json(dir / "b" / "summary.json")["controllers"]);
+  // Prepared once: one process ran the dependency, the other waited for it and reused it.
+  const std::string logs = slurp(dir / "a.log") + slurp(dir / "b.log");
+  const auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = logs.find(what); at != std::string::npos; at = logs.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("dependency basic: running into"), 1u) << logs;
+  EXPECT_EQ(count("dependency basic: reused"), 1u) << logs;
 }
 
 TEST(DependencyCache, ARunKilledInADependencyContinuesIt) {
