@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "app/store_errors.hpp"
 #include "compiler/names.hpp"
 #include "runtime/report/html_report.hpp"
 #include "runtime/store/export.hpp"
@@ -54,6 +55,8 @@ std::string table_text(const std::vector<store::StoredDirectory>& all, std::stri
 ReportFiles write_report(const std::vector<std::filesystem::path>& dirs, std::filesystem::path out) {
   const report::Report r = report::make_report(load_all(dirs));
   if (out.empty()) out = dirs.front() / "report.html";
+  require_writable(out.parent_path(), "the report and its figures cannot be written there",
+                   fmt::format("write them elsewhere: esc report {} --out DIR2/report.html", dirs.front().string()));
   const std::filesystem::path figures = out.parent_path() / "figures";
   std::filesystem::create_directories(figures);
   for (const report::NamedFigure& f : r.figures) store::write_atomically(figures / f.file, f.svg);

@@ -109,6 +109,9 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
   std::shared_ptr<const store::DirectoryLock> lock;
   std::error_code ec;
   if (!follower_rank() && std::filesystem::is_directory(r.dir, ec)) {
+    require_writable(r.dir, "a resume writes the generations it runs into the run's directory",
+                     fmt::format("copy it where you may write and resume the copy: cp -r {} COPY && esc run --resume "
+                                 "COPY", r.dir.string()));
     try {
       lock = store::DirectoryLock::acquire(r.dir);
     } catch (const store::StoreError& e) {

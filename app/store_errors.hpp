@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -23,6 +24,12 @@ auto store_errors_typed(F&& act) -> decltype(act()) {
     throw Error(ErrorKind::Results, e.what());
   }
 }
+
+// Throws an Error (ErrorKind::Results) saying that `dir` (or, where it does not exist yet,
+// its nearest existing parent) is read-only for this process (a read-only mount, an archive,
+// a colleague's results), with `help`: said before anything is written, instead of what the
+// first write would say ("attempt to write a readonly database", "Permission denied").
+void require_writable(const std::filesystem::path& dir, const std::string& what, const std::string& help);
 
 // Whether the file system holding `dir` (or its nearest existing parent) has no room left
 // for another generation: less than 1 MiB available.

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/store_errors.hpp"
 #include "app/stored_run.hpp"
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
@@ -401,6 +402,8 @@ int replay_command(const ReplayOptions& o) {
   const auto epochs = parse_epochs(o.epochs, spec->epochs);
   if (!epochs) return kExitUsage;
   const fs::path out = !o.out.empty() ? o.out : genome_file ? o.source.parent_path() : dir;
+  app::require_writable(out, "the replay's files cannot be written there",
+                        fmt::format("write them elsewhere: esc replay {} --out DIR2", o.source.string()));
   int status = kExitOk;
   if (o.evaluations) {
     for (const Subject& s : subjects)

@@ -2,7 +2,8 @@
 # Reading a run leaves it as it was and needs no write access: export, report (to another
 # directory) and replay (to another directory) of a run directory whose files and bytes
 # must not change, then (mode `mount`, as root where a
-# read-only bind mount can be made; else skipped, 77) on that directory mounted read-only.
+# read-only bind mount can be made; else skipped, 77) on that directory mounted read-only,
+# where a report or replay into it and a resume of it are refused as read-only.
 # Usage: read_only.sh files|mount ESC WORK
 set -euo pipefail
 mode=$1 esc=$2 work=$3
@@ -26,4 +27,18 @@ before=$(snapshot)
 "$esc" replay "$dir" --out "$work/replay" >/dev/null
 [ "$(wc -l <"$work/export.csv")" -eq 5 ] || { echo "FAIL: export has $(wc -l <"$work/export.csv") lines"; exit 1; }
 [ "$(snapshot)" = "$before" ] || { echo "FAIL: reading changed the run directory"; diff <(echo "$before") <(snapshot); exit 1; }
+if [ "$mode" = mount ]; then
+  # What must write there says "read-only" and where to write instead, in two lines.
+  expect_refusal() {   # expected first line, then the command
+    local want=$1; shift
+    if "$esc" "$@" >"$work/refusal" 2>&1; then echo "FAIL: esc $* wrote into a read-only directory"; exit 1; fi
+    [ "$(head -n 1 "$work/refusal")" = "$want" ] || { echo "FAIL: esc $*:"; cat "$work/refusal"; exit 1; }
+    [ "$(wc -l <"$work/refusal")" -eq 2 ] || { echo "FAIL: esc $*: not two lines"; cat "$work/refusal"; exit 1; }
+  }
+  expect_refusal "esc: error: $dir is read-only: the report and its figures cannot be written there" report "$dir"
+  expect_refusal "esc: error: $dir is read-only: the replay's files cannot be written there" replay "$dir"
+  expect_refusal "esc: error: $dir is read-only: a resume writes the generations it runs into the run's directory" \
+      run --resume "$dir" --generations 4
+  [ "$(snapshot)" = "$before" ] || { echo "FAIL: a refusal changed the run directory"; exit 1; }
+fi
 echo "export, report and replay read $dir and left it as it was"
