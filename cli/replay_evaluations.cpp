@@ -1,6 +1,7 @@
 #include "cli/replay_evaluations.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,8 +26,10 @@ class Tenths final : public eval::CampaignListener {
   void generation_done(const control::ControllerSpec& /*controller*/, int /*run*/,
                        const eval::GenerationStats& g) override {
     const int done = g.generation + 1;
-    if (done * 10 / generations_ != (done - 1) * 10 / generations_ || done == generations_)
+    if (done * 10 / generations_ != (done - 1) * 10 / generations_ || done == generations_) {
       say("esc: {} made again: {} of {} generations\n", who_, done, generations_);
+      std::fflush(stdout);
+    }
   }
 
  private:
