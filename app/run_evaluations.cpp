@@ -65,14 +65,7 @@ std::string first_difference(const eval::RunResult& again, const eval::RunResult
 
 RunEvaluations run_evaluations(const StoredRun& stored, const eval::ExperimentSpec& ran, const std::string& controller,
                                int run, int threads, eval::CampaignListener* progress) {
-  const auto c = std::find_if(stored.stored->controllers.begin(), stored.stored->controllers.end(),
-                              [&](const store::StoredController& x) { return x.name == controller; });
-  if (c == stored.stored->controllers.end())
-    throw Error(ErrorKind::Results, fmt::format("the run has no controller `{}`", controller));
-  const auto finished = std::find_if(c->finished.begin(), c->finished.end(),
-                                     [&](const eval::RunResult& r) { return r.run == run; });
-  if (finished == c->finished.end())
-    throw Error(ErrorKind::Results, fmt::format("run {} of {} is not finished", run + 1, controller));
+  const eval::RunResult& finished = *finished_run(stored, controller, run).run;
   // The one controller: each run's seed depends on its index alone, not on what else runs.
   eval::ExperimentSpec spec = ran;
   std::erase_if(spec.controllers, [&](const control::ControllerSpec& x) { return x.name != controller; });
@@ -97,7 +90,7 @@ RunEvaluations run_evaluations(const StoredRun& stored, const eval::ExperimentSp
     throw Error(ErrorKind::Results, e.what());
   }
   const std::string difference =
-      first_difference(again.controllers.front().runs[static_cast<std::size_t>(run)], *finished);
+      first_difference(again.controllers.front().runs[static_cast<std::size_t>(run)], finished);
   if (!difference.empty())
     throw Error(ErrorKind::Results,
                 fmt::format("run {} of {} made again is not the stored run: {}", run + 1, controller, difference),

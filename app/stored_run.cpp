@@ -78,18 +78,25 @@ eval::ExperimentSpec experiment_for_run(const StoredRun& run, const std::filesys
   return for_evaluation(spec, compiled, settings, run, events);
 }
 
-evo::Members final_members(const StoredRun& stored, const eval::ExperimentSpec& spec, const std::string& controller,
-                           int run) {
+FinishedRun finished_run(const StoredRun& stored, const std::string& controller, int run) {
   const auto c = std::find_if(stored.stored->controllers.begin(), stored.stored->controllers.end(),
                               [&](const store::StoredController& x) { return x.name == controller; });
-  const auto compared = std::find_if(spec.controllers.begin(), spec.controllers.end(),
-                                     [&](const control::ControllerSpec& x) { return x.name == controller; });
-  if (c == stored.stored->controllers.end() || compared == spec.controllers.end())
+  if (c == stored.stored->controllers.end())
     throw Error(ErrorKind::Results, fmt::format("the run has no controller `{}`", controller));
   const auto finished = std::find_if(c->finished.begin(), c->finished.end(),
                                      [&](const eval::RunResult& r) { return r.run == run; });
   if (finished == c->finished.end())
     throw Error(ErrorKind::Results, fmt::format("run {} of {} is not finished", run + 1, controller));
+  return {&*c, &*finished};
+}
+
+evo::Members final_members(const StoredRun& stored, const eval::ExperimentSpec& spec, const std::string& controller,
+                           int run) {
+  const auto compared = std::find_if(spec.controllers.begin(), spec.controllers.end(),
+                                     [&](const control::ControllerSpec& x) { return x.name == controller; });
+  if (compared == spec.controllers.end())
+    throw Error(ErrorKind::Results, fmt::format("the run has no controller `{}`", controller));
+  const auto [c, finished] = finished_run(stored, controller, run);
   evo::Problem problem = spec.problem_of(*compared);
   problem.seed = finished->seed;
   try {

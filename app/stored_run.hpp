@@ -30,6 +30,14 @@ struct StoredRun {
                                                       const std::string& experiment,
                                                       const compiler::CompileOptions& options, Events& events);
 
+// Stored controller `controller` and its finished run `run` (from 0). Throws Error when the
+// run has no such controller or that run is not finished.
+struct FinishedRun {
+  const store::StoredController* controller;
+  const eval::RunResult* run;
+};
+[[nodiscard]] FinishedRun finished_run(const StoredRun& stored, const std::string& controller, int run);
+
 // What run `run` (from 0) of `controller` kept beside its best after its last generation
 // (evo::Optimizer::members, genomes included): its optimizer rebuilt for `spec` (the
 // experiment the run ran, experiment_of_run) from the state the run stored. Throws Error
