@@ -114,7 +114,7 @@ std::string shorten_names(std::string_view text) {
     const std::string_view name = text.substr(open + 1, close - open - 1);
     out += text.substr(i, open + 1 - i);
     const int length = utf8_length(name);
-    if (length <= kLongName) {
+    if (length <= kLongName || name.starts_with("esc ")) {
       out += name;
       out += '`';
     } else {

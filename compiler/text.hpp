@@ -25,7 +25,8 @@ struct CleanText {
 
 // `text` with every backquoted name longer than kLongName characters shortened to its
 // start and end around `…`, followed by its length: "`abcdefgh…uvwxyz` (3000000
-// characters)". A message never echoes a pasted megabyte whole.
+// characters)". A message never echoes a pasted megabyte whole. A backquoted command
+// (`esc ...`) is kept whole however long: it is advice to paste, and a cut one would not run.
 inline constexpr int kLongName = 64;
 [[nodiscard]] std::string shorten_names(std::string_view text);
 

@@ -80,6 +80,9 @@ TEST(LongNames, AreShortenedToTheirEndsAndLength) {
   const std::string cut = shorten_names("`" + accents + "`");
   EXPECT_NE(cut.find("(100 characters)"), std::string::npos) << cut;
   EXPECT_EQ(clean_utf8(cut).invalid.size(), 0u) << cut;
+  // A command to paste keeps its long path: cut, it would name no directory.
+  const std::string resume = "help: `esc run --resume /" + std::string(120, 'd') + "/run` continues it";
+  EXPECT_EQ(shorten_names(resume), resume);
 
   const auto r = compile_source(script_with("") + "experiment g { arena " + name + " }\n", "s.esc", options());
   const std::string out = rendered(r);
