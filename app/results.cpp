@@ -19,9 +19,29 @@ namespace esc::app {
 
 namespace {
 
-std::vector<store::StoredDirectory> load_all(const std::vector<std::filesystem::path>& dirs) {
+namespace fs = std::filesystem;
+
+// A run directory, or one condition of a study named by its directory (STUDY/CONDITION, as
+// `esc replay` takes it): that condition's experiment alone, under the study's directory.
+store::StoredDirectory load(const fs::path& named) {
+  const fs::path dir = named.filename().empty() ? named.parent_path() : named;   // "DIR/"
+  const fs::path root = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  std::error_code ec;
+  if (fs::exists(dir / store::kDatabaseFile, ec) || !fs::exists(root / store::kDatabaseFile, ec))
+    return {named, store::ResultsDb::open(named, true).load()};
+  std::vector<store::StoredExperiment> all = store::ResultsDb::open(root, true).load();
+  std::vector<store::StoredExperiment> condition;
+  for (store::StoredExperiment& e : all)
+    if (e.condition && e.condition->directory == dir.filename().string()) condition.push_back(std::move(e));
+  if (condition.empty())
+    throw store::StoreError(fmt::format("`{}` is a directory of run `{}`, not a run or a study's condition: "
+                                        "name the run, `{}`", named.string(), root.string(), root.string()));
+  return {root, std::move(condition)};
+}
+
+std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs) {
   std::vector<store::StoredDirectory> all;
-  for (const std::filesystem::path& d : dirs) all.push_back({d, store::ResultsDb::open(d, true).load()});
+  for (const fs::path& d : dirs) all.push_back(load(d));
   return all;
 }
 

@@ -17,7 +17,8 @@ namespace esc::app {
 inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics", "front", "archive"};
 
 // Table `table` of every directory in `dirs`, as CSV or (csv false) JSON; JSON without a
-// table named is everything stored. Throws store::StoreError for a directory that is not a
+// table named is everything stored. A study's condition directory (STUDY/CONDITION) stands
+// for that condition alone, here and in write_report. Throws store::StoreError for a directory that is not a
 // run's, std::invalid_argument for an unknown table (naming the tables, and the nearest).
 [[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv);
 // The same of directories already read.

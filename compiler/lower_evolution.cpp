@@ -118,6 +118,13 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
         .notes.emplace_back(*first, "first given here");
   }
   if (x.evaluates_only()) return;
+  // Those generations are the networks'; trees, whatever selects them, run for the GP's.
+  bool any_network = false;
+  for (const control::ControllerSpec& c : x.controllers) any_network = any_network || !c.is_tree();
+  if (first != nullptr && !any_network && items.gp != nullptr && !x.controllers.empty())
+    sink.error(*first, fmt::format("these generations are the networks', and experiment `{}` compares only trees",
+                                   d.name.text))
+        .help.push_back("trees run for the GP's generations: `evolve gp(...) for N generations`");
   // Every algorithm in use has its settings (its defaults when no `evolve` gives them); an
   // `evolve` of another algorithm that evolves none of the compared controllers is a mistake.
   for (std::size_t i = 0; i < x.controllers.size(); ++i)
@@ -128,8 +135,6 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
     const evo::Algorithm& a = *evo::find_algorithm(name);
     Diagnostic& diag = sink.error(item.refs[0].where, fmt::format("`evolve {}` evolves none of the controllers "
                                                                   "experiment `{}` compares", name, d.name.text));
-    bool any_network = false;
-    for (const control::ControllerSpec& c : x.controllers) any_network = any_network || !c.is_tree();
     if (a.networks && !a.trees && !any_network)
       diag.help.push_back(fmt::format("`{}` evolves networks; the compared controllers are trees, evolved by {}", name,
                                       quoted_list(algorithms_for(true))));

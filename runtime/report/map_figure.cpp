@@ -79,14 +79,15 @@ std::string render_map(const MapFigure& m) {
                      px(top), px(side), px(side));
   // Ticks at the declared ranges' nice values.
   const auto axis_ticks = [&](const evo::Bounds& r, bool x) {
-    for (const double v : svg::nice_ticks(r.lower, r.upper)) {
+    const std::vector<double> ticks = svg::nice_ticks(r.lower, r.upper);
+    for (const double v : ticks) {
       if (v < r.lower - 1e-12 * std::abs(r.upper - r.lower) || v > r.upper + 1e-12 * std::abs(r.upper - r.lower))
         continue;
       const double u = (v - r.lower) / (r.upper - r.lower) * side;
       out += x ? fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", px(left + u),
-                             px(top + side + 15), svg::tick_label(v))
+                             px(top + side + 15), svg::tick_label(v, svg::tick_step(ticks)))
                : fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n", px(left - 5),
-                             px(top + side - u + 4), svg::tick_label(v));
+                             px(top + side - u + 4), svg::tick_label(v, svg::tick_step(ticks)));
     }
   };
   axis_ticks(m.x_range, true);

@@ -163,7 +163,7 @@ void draw_panel(std::string& out, const Panel& p, double left, double top, doubl
   for (const double t : yt) {
     out += fmt::format("<line x1=\"{0}\" x2=\"{1}\" y1=\"{2}\" y2=\"{2}\" stroke=\"#e4e4e4\"/>\n", px(x0), px(x1), px(y(t)));
     out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n", px(x0 - 4), px(y(t) + 4),
-                       tick_label(t));
+                       tick_label(t, tick_step(yt)));
   }
   if (categorical) {
     const bool turn = rotated(p, x1 - x0);
@@ -179,7 +179,7 @@ void draw_panel(std::string& out, const Panel& p, double left, double top, doubl
       out += fmt::format("<line x1=\"{0}\" x2=\"{0}\" y1=\"{1}\" y2=\"{2}\" stroke=\"#888\"/>\n", px(x(t)), px(y0),
                          px(y0 + 4));
       out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", px(x(t)), px(y0 + 15),
-                         tick_label(t));
+                         tick_label(t, tick_step(xt)));
     }
   }
   out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", px((x0 + x1) / 2),
@@ -220,9 +220,15 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
   return t;
 }
 
-std::string tick_label(double v) {
-  return std::abs(v) < 1e-12 ? std::string("0") : fmt::format("{:.6g}", v);
+std::string tick_label(double v, double step) {
+  if (std::abs(v) < (step > 0.0 ? 1e-6 * step : 1e-12)) return "0";
+  int digits = 6;
+  if (step > 0.0 && std::abs(v) > step)
+    digits = std::clamp(static_cast<int>(std::floor(std::log10(std::abs(v))) - std::floor(std::log10(step))) + 1, 6, 17);
+  return fmt::format("{:.{}g}", v, digits);
 }
+
+double tick_step(const std::vector<double>& ticks) { return ticks.size() < 2 ? 0.0 : ticks[1] - ticks[0]; }
 
 double quantile(const std::vector<double>& sorted, double q) {
   if (sorted.empty()) return std::numeric_limits<double>::quiet_NaN();

@@ -24,8 +24,12 @@ struct Style {
 // intervals; the first tick is at or below lo and the last at or above hi.
 [[nodiscard]] std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 
-// A tick's label: the shortest decimal that names it (no trailing zeros, no `-0`).
-[[nodiscard]] std::string tick_label(double v);
+// A tick's label: the shortest decimal that names it (no trailing zeros, no `-0`), with
+// digits enough to tell it from its neighbours `step` away (a narrow range far from zero).
+[[nodiscard]] std::string tick_label(double v, double step = 0.0);
+
+// The step between consecutive ticks, 0 for fewer than two.
+[[nodiscard]] double tick_step(const std::vector<double>& ticks);
 
 struct Line {
   std::string label;

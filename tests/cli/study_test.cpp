@@ -198,6 +198,16 @@ TEST(Study, ExportAndReportTakeSeveralDirectories) {
   ASSERT_EQ(esc("report " + study.string()).status, 0);
   EXPECT_TRUE(fs::exists(study / "report.html"));
   EXPECT_TRUE(fs::exists(study / "figures" / "tiny_study_fewer-sweep.svg"));
+
+  // A condition's directory, as `esc replay` takes it, exports that condition alone; a
+  // directory of a run that is no condition is refused, naming the run.
+  const Outcome one = esc("export " + (study / "time_constant=200ms").string() + " --format csv");
+  ASSERT_EQ(one.status, 0) << one.output;
+  EXPECT_EQ(std::count(one.output.begin(), one.output.end(), '\n'), 1 + 8);
+  EXPECT_NE(one.output.find(",time_constant=200ms,tiny_study_fewer," + study.string() + ",es\n"), std::string::npos);
+  const Outcome no = esc("export " + (plain / "CC").string());
+  EXPECT_NE(no.status, 0);
+  EXPECT_NE(no.output.find("is a directory of run `" + plain.string() + "`"), std::string::npos) << no.output;
 }
 
 // A condition's setting of an experiment it depends on (`basic.generations 2`) runs that

@@ -38,6 +38,18 @@ TEST(SvgPlot, TickLabelsAreShort) {
   EXPECT_EQ(tick_label(-2.5), "-2.5");
 }
 
+// A narrow range far from zero (a fitness that barely moves) labelled each tick the same.
+TEST(SvgPlot, TickLabelsOfANarrowRangeDiffer) {
+  const std::vector<double> t = nice_ticks(1234.56701, 1234.56723);
+  ASSERT_GE(t.size(), 3u);
+  std::set<std::string> labels;
+  for (const double v : t) labels.insert(tick_label(v, tick_step(t)));
+  EXPECT_EQ(labels.size(), t.size());
+  EXPECT_EQ(tick_label(1234.5671, 5e-5), "1234.5671");
+  EXPECT_EQ(tick_label(250, 50), "250");
+  EXPECT_EQ(tick_label(1e-20, 0.5), "0");
+}
+
 TEST(SvgPlot, TwentyFourSeriesHaveDistinctStyles) {
   std::set<std::pair<std::string, std::string>> seen;
   for (std::size_t i = 0; i < 24; ++i) seen.insert({series_style(i).colour, series_style(i).dash});
