@@ -28,10 +28,7 @@ class Recorder final : public eval::CampaignListener {
       const evo::Outcome& o = outcomes[k];
       into_->generation.push_back(generation);
       into_->candidate.push_back(static_cast<int>(k));
-      for (std::size_t i = 0; i < o.objectives.size(); ++i) {
-        const bool minimized = i < spec_->objectives.size() && spec_->objectives[i].minimize;
-        into_->values.push_back(minimized ? -o.objectives[i] : o.objectives[i]);
-      }
+      for (std::size_t i = 0; i < o.objectives.size(); ++i) into_->values.push_back(spec_->as_declared(i, o.objectives[i]));
       into_->values.insert(into_->values.end(), o.descriptors.begin(), o.descriptors.end());
     }
     if (next_ != nullptr) next_->candidates_evaluated(c, run, generation, outcomes);

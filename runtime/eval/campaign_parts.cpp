@@ -81,8 +81,7 @@ std::vector<evo::Outcome> outcomes_of(const ExperimentSpec& spec, std::span<cons
     o.objectives.reserve(1 + spec.further.size());
     o.objectives.push_back(row[kResultFitness]);
     for (std::size_t k = 0; k < spec.further.size(); ++k) {
-      const double v = row[columns.objectives + k];
-      o.objectives.push_back(k + 1 < spec.objectives.size() && spec.objectives[k + 1].minimize ? -v : v);
+      o.objectives.push_back(spec.as_declared(k + 1, row[columns.objectives + k]));
     }
     o.descriptors.assign(row + columns.descriptors, row + columns.width);
   }

@@ -234,6 +234,11 @@ struct ExperimentSpec {
   }
 
   [[nodiscard]] bool evaluates_only() const noexcept { return start_from && start_from->evaluate_only; }
+  // Whether objective i (0: the fitness) is declared `minimize`: optimizers maximise, so they
+  // see it negated (problem_of), and as_declared turns what they saw back.
+  [[nodiscard]] bool minimized(std::size_t i) const noexcept { return i < objectives.size() && objectives[i].minimize; }
+  // Objective i's value as optimizers see it from the value as declared, and back.
+  [[nodiscard]] double as_declared(std::size_t i, double v) const noexcept { return minimized(i) ? -v : v; }
   // Generations the networks evolve for: 1 when only evaluating stored controllers.
   [[nodiscard]] int es_generations() const noexcept { return evaluates_only() ? 1 : es.generations; }
   // Generations a compared controller evolves for: the GP's for a tree, else es_generations().
@@ -263,7 +268,7 @@ struct ExperimentSpec {
     for (std::size_t i = 0; i < objectives.size() && i < p.objectives.size(); ++i) {
       const ObjectiveSpec& o = objectives[i];
       if (!o.range) continue;
-      p.objectives[i] = o.minimize ? evo::Bounds{-o.range->upper, -o.range->lower}
+      p.objectives[i] = minimized(i) ? evo::Bounds{-o.range->upper, -o.range->lower}
                                    : evo::Bounds{o.range->lower, o.range->upper};
     }
     for (const DescriptorSpec& d : descriptors) p.descriptors.push_back({d.range.lower, d.range.upper});

@@ -44,7 +44,7 @@ std::shared_ptr<const MemberLayout> layout_of(const ExperimentSpec& spec, evo::M
   }
   for (std::size_t i = 0; i + kept.own_objectives.size() < kept.objectives; ++i) {
     layout->objectives.push_back(i == 0 ? spec.fitness.name : spec.further[i - 1].name);
-    layout->minimized.push_back(i < spec.objectives.size() && spec.objectives[i].minimize);
+    layout->minimized.push_back(spec.minimized(i));
   }
   for (std::size_t i = 0; i < kept.descriptors && i < spec.descriptors.size(); ++i) {
     const DescriptorSpec& d = spec.descriptors[i];

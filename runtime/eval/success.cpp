@@ -11,10 +11,8 @@ double tested_value(const ExperimentSpec& spec, const SuccessSpec& test, const e
       test.of == SuccessSpec::Of::Objective ? std::span<const double>(outcome.objectives) : outcome.descriptors;
   // An outcome without the value (none is made so) fails every test.
   if (test.index >= values.size()) return std::numeric_limits<double>::quiet_NaN();
-  const double v = values[test.index];
-  const bool negated = test.of == SuccessSpec::Of::Objective && test.index < spec.objectives.size() &&
-                       spec.objectives[test.index].minimize;
-  return negated ? -v : v;
+  return test.of == SuccessSpec::Of::Objective ? spec.as_declared(test.index, values[test.index])
+                                               : values[test.index];
 }
 
 std::optional<std::size_t> first_success(const ExperimentSpec& spec, std::span<const evo::Outcome> outcomes) {
