@@ -329,6 +329,11 @@ std::optional<store::StoredExperiment> load_stored(const RunLocation& at) {
     complain("esc: error: {} holds study `{}`: replay one of its conditions, e.g. esc replay {} (its conditions: {})\n",
              at.root.string(), all.front().condition->study, (at.root / directories.front()).string(),
              compiler::quoted_list(directories, ", "));
+  else if (const auto c = std::find_if(all.front().controllers.begin(), all.front().controllers.end(),
+                                        [&](const store::StoredController& k) { return k.name == at.condition; });
+           !study && c != all.front().controllers.end())
+    complain("esc: error: {} holds controller {}'s files: esc replay {} --controller {}\n",
+             (at.root / at.condition).string(), c->name, at.root.string(), c->name);
   else
     complain("esc: error: {} is not a condition of the {} in {} (its conditions: {})\n", at.condition,
              study ? fmt::format("study `{}`", all.front().condition->study) : "run", at.root.string(),

@@ -285,6 +285,17 @@ TEST(Replay, AStudysConditionFromItsDirectory) {
       << o.output;
 }
 
+// A controller's directory of a plain run is not a condition: the message says how to
+// replay that controller.
+TEST(Replay, AControllersDirectoryNamesTheControllerOption) {
+  const fs::path dir = tiny_run();
+  const Outcome o = esc_command("replay " + (dir / "SC").string());
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("holds controller SC's files: esc replay " + dir.string() + " --controller SC"),
+            std::string::npos)
+      << o.output;
+}
+
 // A genome file carries a checksum of what a replay uses: a gene changed in the last digit
 // is refused, never replayed as if it were the run's.
 TEST(Replay, ADamagedGenomeFileIsRefused) {
