@@ -18,8 +18,9 @@ inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics"
 
 // Table `table` of every directory in `dirs`, as CSV or (csv false) JSON; JSON without a
 // table named is everything stored. A study's condition directory (STUDY/CONDITION) stands
-// for that condition alone, here and in write_report. Throws store::StoreError for a directory that is not a
-// run's, std::invalid_argument for an unknown table (naming the tables, and the nearest).
+// for that condition alone, here and in write_report. Throws store::StoreError for a
+// directory that is not a run's, std::invalid_argument for an unknown table (naming the
+// tables, and the nearest).
 [[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv);
 // The same of directories already read.
 [[nodiscard]] std::string table_text(const std::vector<store::StoredDirectory>& dirs, std::string_view table, bool csv);
