@@ -129,8 +129,9 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
   for (const auto& c : result.controllers) {
     std::vector<double> best = best_fitness(c);
     const report::Summary s = report::summarise(best);
-    fmt::print("{:<12} {:<14} {:>6}  {:>12.1f} ± {:<7.1f}  {:>10.1f}  {:>10.1f}\n", c.name, c.architecture,
-               c.genome_size, s.mean, s.sd, s.median, s.max);
+    const int d = fitness_decimals(std::max({std::abs(s.min), std::abs(s.max), s.sd}));
+    fmt::print("{:<12} {:<14} {:>6}  {:>12.{}f} ± {:<7.{}f}  {:>10.{}f}  {:>10.{}f}\n", c.name, c.architecture,
+               c.genome_size, s.mean, d, s.sd, d, s.median, d, s.max, d);
     finals.push_back(std::move(best));
   }
   print_transfers(result);
@@ -173,8 +174,9 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
       for (std::size_t j = from; j < to; ++j) {
         const report::StudyCell* s = t.cell(i, j);
         const report::Summary m = s != nullptr ? report::summarise(s->best) : report::Summary{};
+        const int d = fitness_decimals(std::max({std::abs(m.min), std::abs(m.max), m.sd}));
         line += fmt::format("  {:>{}}", s == nullptr || s->best.empty() ? "-"
-                                            : fmt::format("{:.1f} ± {:.1f} ({:.1f})", m.mean, m.sd, m.median),
+                                            : fmt::format("{:.{}f} ± {:.{}f} ({:.{}f})", m.mean, d, m.sd, d, m.median, d),
                             kCell);
       }
       fmt::print("{}\n", line);

@@ -1,6 +1,7 @@
 #pragma once
 // How the end tables of `esc run` write numbers, p-values and the pairs they compare
 // (end_table.cpp, success_table.cpp): one spelling for "undefined" and one precision per kind.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -13,6 +14,14 @@ namespace esc::cli {
 // "n/a" for an undefined value (NaN), else `decimals` decimals.
 [[nodiscard]] inline std::string number_or_na(double x, int decimals) {
   return std::isnan(x) ? "n/a" : fmt::format("{:.{}f}", x, decimals);
+}
+
+// Decimals for fitness values whose largest magnitude is `largest`: one, as the paper
+// prints, down to 1; below it three significant digits (a maze's -0.0123 m, not -0.0).
+[[nodiscard]] inline int fitness_decimals(double largest) {
+  largest = std::abs(largest);
+  if (!(largest < 1.0) || largest == 0.0) return 1;   // NaN and infinities too
+  return std::min(10, 2 - static_cast<int>(std::floor(std::log10(largest))));
 }
 
 // Four decimals, or two significant digits below 1e-4.

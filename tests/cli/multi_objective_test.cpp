@@ -5,6 +5,7 @@
 // maze study too, whose fronts and archives export, draw and replay.
 #include <algorithm>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -160,7 +161,11 @@ TEST(MultiObjective, TheMazeStudyKilledMidStudyResumesToTheUnbrokenStudy) {
 TEST(MultiObjective, TheMazeStudyExportsDrawsAndReplaysItsFrontsAndArchives) {
   const std::string mazes = std::string(ESC_SOURCE_DIR) + "/experiments/lehman_stanley/mazes.esc";
   const fs::path dir = scratch("maze-members");
-  ASSERT_EQ(esc("run " + mazes + " --runs 2 --generations 3 --set steps=40 --out " + dir.string()).status, 0);
+  const Outcome ran = esc("run " + mazes + " --runs 2 --generations 3 --set steps=40 --out " + dir.string());
+  ASSERT_EQ(ran.status, 0) << ran.output;
+  // Fitness in metres below 1 keeps three significant digits in the end table (not -0.5 ± 0.0).
+  const std::regex three_digits(R"(\nfitness_based +-0\.\d{3} ± 0\.\d{3} \(-0\.\d{3}\)\n)");
+  EXPECT_TRUE(std::regex_search(ran.output, three_digits)) << ran.output;
 
   const Outcome archive = esc("export " + dir.string() + " --table archive");
   ASSERT_EQ(archive.status, 0) << archive.output;

@@ -39,6 +39,12 @@
     return `rgba(${(n >> 16) & 255},${(n >> 8) & 255},${n & 255},${a})`;
   }
   function fmt(x, d) { return x === null || x === undefined || Number.isNaN(x) ? 'n/a' : Number(x).toFixed(d); }
+  // Decimals for fitness values whose largest magnitude is `largest`: `least` down to 1, below
+  // it three significant digits (a maze's -0.0123 m, not -0.0), as the end table's.
+  function fitnessDecimals(largest, least) {
+    const m = Math.abs(largest);
+    return !(m < 1) || m === 0 ? least : Math.min(10, 2 - Math.floor(Math.log10(m)));
+  }
   function percent(x) { const t = fmt(x, 0); return t === 'n/a' ? t : `${t}%`; }
   function fmtP(p) {
     if (p === null || p === undefined) return 'n/a';
@@ -152,9 +158,11 @@
     const t = el('table');
     t.appendChild(el('tr', {}, ['controller', 'runs', 'mean', 'sd', 'median', 'best', 'worst']
       .map(h => el('th', {text: h}))));
-    for (const s of exp.stats.summary)
-      t.appendChild(el('tr', {}, [s.controller, String(s.n), fmt(s.mean, 2), fmt(s.sd, 2), fmt(s.median, 2),
-                                  fmt(s.best, 2), fmt(s.worst, 2)].map(v => el('td', {text: v}))));
+    for (const s of exp.stats.summary) {
+      const d = fitnessDecimals(Math.max(Math.abs(s.best), Math.abs(s.worst), s.sd), 2);
+      t.appendChild(el('tr', {}, [s.controller, String(s.n), fmt(s.mean, d), fmt(s.sd, d), fmt(s.median, d),
+                                  fmt(s.best, d), fmt(s.worst, d)].map(v => el('td', {text: v}))));
+    }
     card.appendChild(t);
     pairsTable(card, exp.stats.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
     if (exp.success) {
@@ -263,7 +271,9 @@
     for (const c of study.conditions)
       t.appendChild(el('tr', {}, [c.name].concat(study.controllers.map(k => {
         const cell = study.cells.find(x => x.condition === c.name && x.controller === k);
-        return cell && cell.n > 0 ? `${fmt(cell.mean, 1)} ± ${fmt(cell.sd, 1)} (${fmt(cell.median, 1)})` : '–';
+        if (!cell || cell.n === 0) return '–';
+        const d = fitnessDecimals(Math.max(Math.abs(cell.mean), Math.abs(cell.median), cell.sd), 1);
+        return `${fmt(cell.mean, d)} ± ${fmt(cell.sd, d)} (${fmt(cell.median, d)})`;
       })).map(v => el('td', {text: v}))));
     card.appendChild(t);
     pairsTable(card, study.pairs, r => r.label, `the ${study.pairs.length} comparisons of this table (${study.family})`);
