@@ -64,7 +64,8 @@ void print_trees(const eval::CampaignResult& result, const Label& label) {
   for (const auto& c : result.controllers)
     for (const auto& r : c.runs)
       if (!r.best_tree.empty())
-        fmt::print("{:<12} run {} best tree (fitness {:.1f}): {}\n", label(c), r.run + 1, r.best_fitness, r.best_tree);
+        fmt::print("{:<12} run {} best tree (fitness {:.{}f}): {}\n", label(c), r.run + 1, r.best_fitness,
+                   fitness_decimals(r.best_fitness), r.best_tree);
 }
 
 // Each run whose optimizer ended the search early, and why.
@@ -73,8 +74,8 @@ void print_stops(const eval::CampaignResult& result, const Label& label) {
   for (const auto& c : result.controllers)
     for (const auto& r : c.runs)
       if (!r.stopped.empty())
-        fmt::print("{:<12} run {} stopped its search after generation {} ({}): best fitness {:.1f}\n", label(c),
-                   r.run + 1, r.generations.size() - 1, r.stopped, r.best_fitness);
+        fmt::print("{:<12} run {} stopped its search after generation {} ({}): best fitness {:.{}f}\n", label(c),
+                   r.run + 1, r.generations.size() - 1, r.stopped, r.best_fitness, fitness_decimals(r.best_fitness));
 }
 
 bool has_trees(const eval::ExperimentSpec& spec) {

@@ -19,6 +19,7 @@
 #include "cli/load.hpp"
 #include "cli/replay_animation.hpp"
 #include "cli/replay_evaluations.hpp"
+#include "cli/table_text.hpp"
 #include "cli/terminal_events.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
@@ -267,8 +268,9 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   report::TrajectoryFigure figure;
   figure.title = fmt::format("{} ({}), run {}{}, in experiment {}", s.controller, controller->architecture(), s.run + 1,
                              s.member.empty() ? "" : ", " + s.member, spec.name);
-  figure.subtitle = fmt::format("fitness {:.2f} over {} epoch{} of {} steps; {} drawn; arena {}; evaluation seed {}",
-                                result.fitness, spec.epochs, spec.epochs == 1 ? "" : "s", spec.steps, epochs_text(epochs, spec.epochs),
+  const int decimals = fitness_decimals(result.fitness, 2);
+  figure.subtitle = fmt::format("fitness {:.{}f} over {} epoch{} of {} steps; {} drawn; arena {}; evaluation seed {}",
+                                result.fitness, decimals, spec.epochs, spec.epochs == 1 ? "" : "s", spec.steps, epochs_text(epochs, spec.epochs),
                                 spec.arena_name, s.seed);
   figure.arena = spec.arena;
   figure.robot_radius_m = spec.robot.body_radius_m;
@@ -280,8 +282,8 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   // measures what it measured wherever the evaluation draws nothing (no noise, fixed starts).
   const std::string stored_member =
       s.member_fitness ? fmt::format("; {:.17g} in its own evaluation", *s.member_fitness) : std::string();
-  say("esc: replayed {} run {}{} in {} (fitness {:.2f}{}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1,
-      s.member.empty() ? "" : " " + s.member, spec.name, result.fitness, stored_member,
+  say("esc: replayed {} run {}{} in {} (fitness {:.{}f}{}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1,
+      s.member.empty() ? "" : " " + s.member, spec.name, result.fitness, decimals, stored_member,
       faithful && s.stored != nullptr && status == kExitOk ? ", identical to the stored replay" : "", out.string(), stem);
   if (o.animate) {
     const std::optional<fs::path> movie = write_animation(figure, out / stem);

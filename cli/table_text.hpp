@@ -16,12 +16,13 @@ namespace esc::cli {
   return std::isnan(x) ? "n/a" : fmt::format("{:.{}f}", x, decimals);
 }
 
-// Decimals for fitness values whose largest magnitude is `largest`: one, as the paper
-// prints, down to 1; below it three significant digits (a maze's -0.0123 m, not -0.0).
-[[nodiscard]] inline int fitness_decimals(double largest) {
+// Decimals for fitness values whose largest magnitude is `largest`: `least` (one in the end
+// tables, as the paper prints) down to 1; below it three significant digits (a maze's
+// -0.0123 m, not -0.0).
+[[nodiscard]] inline int fitness_decimals(double largest, int least = 1) {
   largest = std::abs(largest);
-  if (!(largest < 1.0) || largest == 0.0) return 1;   // NaN and infinities too
-  return std::min(10, 2 - static_cast<int>(std::floor(std::log10(largest))));
+  if (!(largest < 1.0) || largest == 0.0) return least;   // NaN and infinities too
+  return std::clamp(2 - static_cast<int>(std::floor(std::log10(largest))), least, 10);
 }
 
 // Four decimals, or two significant digits below 1e-4.

@@ -43,7 +43,7 @@
   // it three significant digits (a maze's -0.0123 m, not -0.0), as the end table's.
   function fitnessDecimals(largest, least) {
     const m = Math.abs(largest);
-    return !(m < 1) || m === 0 ? least : Math.min(10, 2 - Math.floor(Math.log10(m)));
+    return !(m < 1) || m === 0 ? least : Math.max(least, Math.min(10, 2 - Math.floor(Math.log10(m))));
   }
   function percent(x) { const t = fmt(x, 0); return t === 'n/a' ? t : `${t}%`; }
   function fmtP(p) {
@@ -449,7 +449,7 @@
     const card = el('div', {class: 'card'});
     card.appendChild(el('h3', {text: 'Replay of the best controllers'}));
     const select = el('select');
-    withReplay.forEach((c, i) => select.appendChild(el('option', {value: String(i), text: `${c.name} (run ${c.replay.run}, fitness ${fmt(c.replay.fitness, 2)})`})));
+    withReplay.forEach((c, i) => select.appendChild(el('option', {value: String(i), text: `${c.name} (run ${c.replay.run}, fitness ${fmt(c.replay.fitness, fitnessDecimals(c.replay.fitness, 2))})`})));
     const play = el('button', {text: 'Pause'});
     const slider = el('input', {type: 'range', min: '0', max: '0', value: '0'});
     const speed = el('select');
@@ -687,7 +687,7 @@
         for (const c of trees) {
           card.appendChild(el('h3', {text: `${c.name} (${c.architecture})`}));
           for (const r of c.runs)
-            card.appendChild(el('p', {class: 'tree', text: `run ${r.run}, fitness ${fmt(r.best_fitness, 1)}: ${r.best_tree}`}));
+            card.appendChild(el('p', {class: 'tree', text: `run ${r.run}, fitness ${fmt(r.best_fitness, fitnessDecimals(r.best_fitness, 1))}: ${r.best_tree}`}));
         }
       }
       section.appendChild(el('h2', {text: 'Replay'}));
