@@ -171,7 +171,7 @@
       s.appendChild(el('tr', {}, ['controller', 'successes', 'runs', 'median evaluations to success']
         .map(h => el('th', {text: h}))));
       for (const c of exp.success.controllers)
-        s.appendChild(el('tr', {}, [c.controller, String(c.successes), String(c.runs), fmt(c.median_evaluations, 1)]
+        s.appendChild(el('tr', {}, [c.controller, String(c.successes), String(c.runs), evaluations(c.median_evaluations)]
           .map(v => el('td', {text: v}))));
       card.appendChild(s);
       successPairsTable(card, exp.success.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
@@ -181,8 +181,11 @@
 
   // "3/40 (1250)": runs that succeeded, of all, and the median of their evaluations to success.
   function successText(s) {
-    return `${s.successes}/${s.runs} (${s.median_evaluations === null ? '–' : fmt(s.median_evaluations, 1)})`;
+    return `${s.successes}/${s.runs} (${s.median_evaluations === null ? '–' : evaluations(s.median_evaluations)})`;
   }
+
+  // A count of evaluations, or a median of them (7950, 3945.5), as the end table prints it.
+  function evaluations(x) { return x === null || x === undefined || Number.isNaN(x) ? 'n/a' : String(x); }
 
   // Success compared, pair by pair: Fisher's exact test of the counts, the censored
   // Mann-Whitney test of the evaluations to success; each one Holm family.
@@ -196,7 +199,8 @@
       const row = el('tr', {}, [label(r), `${r.successes_a}/${r.runs_a} vs ${r.successes_b}/${r.runs_b}`,
                                 fmtP(r.fisher_p), fmtP(r.fisher_p_holm),
                                 r.odds_ratio === 'inf' ? '∞' : fmt(r.odds_ratio, 2), fmt(r.censored_u, 1),
-                                fmtP(r.censored_p), fmtP(r.censored_p_holm), fmt(r.censored_at, 0)]
+                                fmtP(r.censored_p), fmtP(r.censored_p_holm),
+                                r.runs_a + r.runs_b === 0 ? 'n/a' : fmt(r.censored_at, 0)]
         .map(v => el('td', {text: v})));
       if (r.fisher_p_holm !== null && r.fisher_p_holm < 0.05) row.children[3].className = 'significant';
       if (r.censored_p_holm !== null && r.censored_p_holm < 0.05) row.children[7].className = 'significant';
