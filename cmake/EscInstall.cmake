@@ -39,7 +39,7 @@ function(esc_install_program target)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/experiments/ DESTINATION ${ESC_INSTALL_STDLIB_DIR} COMPONENT runtime)
   install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime
-          FILES_MATCHING PATTERN "*.md")
+          FILES_MATCHING PATTERN "*.md" PATTERN "*.svg")
   install(FILES ${PROJECT_SOURCE_DIR}/docs/esc.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT runtime)
   install(FILES ${PROJECT_SOURCE_DIR}/scripts/esc-completion.bash DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
           RENAME esc COMPONENT runtime)

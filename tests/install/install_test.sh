@@ -31,6 +31,10 @@ installed)
   done
   [ -f "$prefix/share/man/man1/esc.1" ] || fail "no man page"
   [ -f "$prefix/share/doc/esc/language.md" ] || fail "no docs"
+  # Every figure an installed page links to is installed beside it.
+  for f in $(cd "$prefix/share/doc/esc" && grep -oh '(figures/[^)]*\.svg)' *.md | tr -d '()' | sort -u); do
+    [ -f "$prefix/share/doc/esc/$f" ] || fail "docs link to $f, which is not installed"
+  done
   bash -n "$prefix/share/bash-completion/completions/esc" || fail "bash completion does not parse"
   # No path of the machine that built it.
   if strings "$esc" | grep -F -e "$source_dir" -e "$build_dir"; then fail "esc holds a build path"; fi
