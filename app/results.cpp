@@ -24,19 +24,16 @@ namespace fs = std::filesystem;
 // A run directory, or one condition of a study named by its directory (STUDY/CONDITION, as
 // `esc replay` takes it): that condition's experiment alone, under the study's directory.
 store::StoredDirectory load(const fs::path& named) {
-  const fs::path dir = named.filename().empty() ? named.parent_path() : named;   // "DIR/"
-  const fs::path root = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
-  std::error_code ec;
-  if (fs::exists(dir / store::kDatabaseFile, ec) || !fs::exists(root / store::kDatabaseFile, ec))
-    return {named, store::ResultsDb::open(named, true).load()};
-  std::vector<store::StoredExperiment> all = store::ResultsDb::open(root, true).load();
+  const RunLocation at = locate_run(named);
+  if (at.condition.empty()) return {named, store::ResultsDb::open(named, true).load()};
+  std::vector<store::StoredExperiment> all = store::ResultsDb::open(at.root, true).load();
   std::vector<store::StoredExperiment> condition;
   for (store::StoredExperiment& e : all)
-    if (e.condition && e.condition->directory == dir.filename().string()) condition.push_back(std::move(e));
+    if (e.condition && e.condition->directory == at.condition) condition.push_back(std::move(e));
   if (condition.empty())
     throw store::StoreError(fmt::format("`{}` is a directory of run `{}`, not a run or a study's condition: "
-                                        "name the run, `{}`", named.string(), root.string(), root.string()));
-  return {root, std::move(condition)};
+                                        "name the run, `{}`", named.string(), at.root.string(), at.root.string()));
+  return {at.root, std::move(condition)};
 }
 
 std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs) {
@@ -57,6 +54,16 @@ void check_table(std::string_view table) {
 }
 
 }  // namespace
+
+RunLocation locate_run(fs::path dir) {
+  std::error_code ec;
+  if (dir.filename().empty()) dir = dir.parent_path();   // "DIR/"
+  if (fs::exists(dir / store::kDatabaseFile, ec)) return {dir, {}, true};
+  const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  if (!dir.filename().empty() && fs::exists(parent / store::kDatabaseFile, ec))
+    return {parent, dir.filename().string(), true};
+  return {dir, {}, false};
+}
 
 std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv) {
   check_table(table);

@@ -16,6 +16,17 @@ namespace esc::app {
 // "front" and "archive" (what NSGA-II, MAP-Elites and novelty search kept, per generation).
 inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics", "front", "archive"};
 
+// Where a directory's stored run is: the directory itself when it holds esc.db, else its
+// parent when that does (a study's STUDY/CONDITION, or a controller's files), `condition`
+// naming the directory under it; `found` is false when neither does. "DIR/" reads as DIR,
+// and paths keep the spelling they were given.
+struct RunLocation {
+  std::filesystem::path root;
+  std::string condition;
+  bool found = false;
+};
+[[nodiscard]] RunLocation locate_run(std::filesystem::path dir);
+
 // Table `table` of every directory in `dirs`, as CSV or (csv false) JSON; JSON without a
 // table named is everything stored. A study's condition directory (STUDY/CONDITION) stands
 // for that condition alone, here and in write_report. Throws store::StoreError for a

@@ -78,6 +78,11 @@ void print_stops(const eval::CampaignResult& result, const Label& label) {
                    r.run + 1, r.generations.size() - 1, r.stopped, r.best_fitness, fitness_decimals(r.best_fitness));
 }
 
+// Decimals of a summary of fitness values: as many as its largest value or spread needs.
+int summary_decimals(const report::Summary& s) {
+  return fitness_decimals(std::max({std::abs(s.min), std::abs(s.max), s.sd}));
+}
+
 bool has_trees(const eval::ExperimentSpec& spec) {
   return std::any_of(spec.controllers.begin(), spec.controllers.end(), [](const auto& c) { return c.is_tree(); });
 }
@@ -130,7 +135,7 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
   for (const auto& c : result.controllers) {
     std::vector<double> best = best_fitness(c);
     const report::Summary s = report::summarise(best);
-    const int d = fitness_decimals(std::max({std::abs(s.min), std::abs(s.max), s.sd}));
+    const int d = summary_decimals(s);
     fmt::print("{:<12} {:<14} {:>6}  {:>12.{}f} ± {:<7.{}f}  {:>10.{}f}  {:>10.{}f}\n", c.name, c.architecture,
                c.genome_size, s.mean, d, s.sd, d, s.median, d, s.max, d);
     finals.push_back(std::move(best));
@@ -175,7 +180,7 @@ void print_study_table(const std::string& study, const std::vector<ConditionResu
       for (std::size_t j = from; j < to; ++j) {
         const report::StudyCell* s = t.cell(i, j);
         const report::Summary m = s != nullptr ? report::summarise(s->best) : report::Summary{};
-        const int d = fitness_decimals(std::max({std::abs(m.min), std::abs(m.max), m.sd}));
+        const int d = summary_decimals(m);
         line += fmt::format("  {:>{}}", s == nullptr || s->best.empty() ? "-"
                                             : fmt::format("{:.{}f} ± {:.{}f} ({:.{}f})", m.mean, d, m.sd, d, m.median, d),
                             kCell);

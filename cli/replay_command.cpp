@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/results.hpp"
 #include "app/store_errors.hpp"
 #include "app/stored_run.hpp"
 #include "cli/commands.hpp"
@@ -293,28 +294,16 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   return status;
 }
 
-// Where a source's stored run is: the directory holding esc.db and, for a condition of a
-// study (the source is, or a genome file lies in, STUDY/CONDITION), the condition's
-// directory under it.
-struct RunLocation {
-  fs::path root;
-  std::string condition;
-  bool found = false;
-};
-
-RunLocation locate(fs::path dir) {
+// Where a source's stored run is (app::locate_run), as an absolute path: `.` given from
+// inside a run's directory has one above it.
+app::RunLocation locate(const fs::path& dir) {
   std::error_code ec;
-  dir = fs::absolute(dir, ec).lexically_normal();   // `.` and `run-01.best.json` from inside
-  if (dir.filename().empty()) dir = dir.parent_path();   // "DIR/"
-  if (fs::exists(dir / store::kDatabaseFile, ec)) return {dir, {}, true};
-  if (!dir.filename().empty() && fs::exists(dir.parent_path() / store::kDatabaseFile, ec))
-    return {dir.parent_path(), dir.filename().string(), true};
-  return {dir, {}, false};
+  return app::locate_run(fs::absolute(dir, ec).lexically_normal());
 }
 
 // The stored experiment to replay: the run's one experiment, or the study condition
 // `at.condition`. Nullopt after printing an error (a study's directory names no condition).
-std::optional<store::StoredExperiment> load_stored(const RunLocation& at) {
+std::optional<store::StoredExperiment> load_stored(const app::RunLocation& at) {
   std::vector<store::StoredExperiment> all = store::ResultsDb::open(at.root, true).load();
   const bool study = !all.empty() && all.front().condition;
   if (!study && at.condition.empty()) {
@@ -350,7 +339,7 @@ int replay_command(const ReplayOptions& o) {
   const bool genome_file = fs::is_regular_file(o.source, ec);
   // The run directory: SOURCE itself, or the one a genome file was written into.
   const fs::path dir = genome_file ? o.source.parent_path().parent_path() : o.source;
-  const RunLocation at = locate(dir);
+  const app::RunLocation at = locate(dir);
   if (genome_file && !at.found && o.script.empty()) {
     complain("esc: error: {} is not inside a run directory: give the experiment to replay it in with --script FILE "
              "[--experiment NAME]\n", o.source.string());
