@@ -337,8 +337,9 @@ std::optional<store::StoredExperiment> load_stored(const app::RunLocation& at) {
 int replay_command(const ReplayOptions& o) {
   std::error_code ec;
   const bool genome_file = fs::is_regular_file(o.source, ec);
-  // The run directory: SOURCE itself, or the one a genome file was written into.
-  const fs::path dir = genome_file ? o.source.parent_path().parent_path() : o.source;
+  // The run directory: SOURCE itself, or the one a genome file was written into (absolute
+  // first: a bare `run-01.best.json` has no parents to climb).
+  const fs::path dir = genome_file ? fs::absolute(o.source, ec).parent_path().parent_path() : o.source;
   const app::RunLocation at = locate(dir);
   if (genome_file && !at.found && o.script.empty()) {
     complain("esc: error: {} is not inside a run directory: give the experiment to replay it in with --script FILE "

@@ -296,6 +296,22 @@ TEST(Replay, AControllersDirectoryNamesTheControllerOption) {
       << o.output;
 }
 
+// A genome file named relative to where esc runs, from the run's directory and from the
+// controller's, replays as from anywhere (both were refused: the relative path had no
+// directories to climb).
+TEST(Replay, AGenomeFileNamedFromInsideTheRun) {
+  const fs::path dir = tiny_run();
+  for (const auto& [where, file] : {std::pair{dir, std::string("SC/run-01.best.json")},
+                                    std::pair{dir / "SC", std::string("run-01.best.json")}}) {
+    const fs::path out = scratch("replay-inside-" + where.filename().string());
+    const Outcome o = cli_test::shell("cd " + where.string() + " && " + std::string(ESC_BINARY) + " replay " + file +
+                                      " --out " + out.string());
+    EXPECT_EQ(o.status, 0) << o.output;
+    EXPECT_NE(o.output.find("esc: replayed SC run 1 in tiny (fitness "), std::string::npos) << o.output;
+    EXPECT_TRUE(fs::exists(out / "replay-SC-run-01.svg"));
+  }
+}
+
 // A genome file carries a checksum of what a replay uses: a gene changed in the last digit
 // is refused, never replayed as if it were the run's.
 TEST(Replay, ADamagedGenomeFileIsRefused) {
