@@ -50,7 +50,8 @@ class Env:
     which need the whole epoch, are not in the rewards: esc.evaluate gives the whole fitness).
 
     Without `controller`, an action is the two wheel commands (left, right) in [-1, 1] and an
-    observation the robot's senses: ir[0..7], light[0..7] and energy (observation_names).
+    observation the robot's senses: ir[0..7], light[0..7], the rangefinders range[i] and goal
+    radars radar[i] the robot declares (the maze navigator's), and energy (observation_names).
     With a network controller, an observation is its network's inputs and an action its
     network's activated outputs, which its head turns into wheel commands as in a run: two
     commands (classical), one score per action then the actions' parameters (symbolic: the
@@ -119,6 +120,7 @@ class Env:
     def state(self) -> dict:
         """The robot after the last step, as `esc replay` writes a row of its CSV: x, y
         (metres), heading (radians), left/right_command, left/right_speed (m/s), ir, light,
+        range and radar (the robot's rangefinders and goal radars; empty without them),
         energy, collided, with info's epoch, step, fitness and action."""
         return self._env.state()
 

@@ -17,11 +17,17 @@ namespace {
 
 using Action = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// What the robot senses, the observation without a controller.
-std::vector<expr::Slot> senses() {
+// What the robot senses, the observation without a controller: its IR and light sensors,
+// the rangefinders and goal radars it declares, and the accumulator.
+std::vector<expr::Slot> senses(const sim::KheperaParams& robot) {
   std::vector<expr::Slot> slots;
-  for (expr::Slot i = 0; i < expr::kIrCount; ++i) slots.push_back(expr::slot::ir + i);
-  for (expr::Slot i = 0; i < expr::kLightCount; ++i) slots.push_back(expr::slot::light + i);
+  const auto add = [&](expr::Slot first, std::size_t count) {
+    for (expr::Slot i = 0; i < count; ++i) slots.push_back(first + i);
+  };
+  add(expr::slot::ir, expr::kIrCount);
+  add(expr::slot::light, expr::kLightCount);
+  add(expr::slot::range, robot.rangefinders.angles_rad.size());
+  add(expr::slot::radar, static_cast<std::size_t>(robot.radars));
   slots.push_back(expr::slot::energy);
   return slots;
 }
@@ -53,7 +59,7 @@ Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& exper
     : script_(script),
       spec_(&find_experiment(*script, experiment)),
       controller_(network_controller(*spec_, controller)),
-      observed_(controller_ != nullptr ? controller_->mlp.inputs : senses()),
+      observed_(controller_ != nullptr ? controller_->mlp.inputs : senses(spec_->robot)),
       world_(spec_->arena, spec_->robot),
       stepper_(*spec_, world_, reads_noise(*spec_, controller_)),
       seed_(seed) {
@@ -132,6 +138,8 @@ py::dict Env::state() const {
   d["right_speed"] = t.right_speed_mps;
   d["ir"] = array_of({t.ir.begin(), t.ir.end()});
   d["light"] = array_of({t.light.begin(), t.light.end()});
+  d["range"] = array_of({t.range.begin(), t.range.begin() + static_cast<std::ptrdiff_t>(t.range_count)});
+  d["radar"] = array_of({t.radar.begin(), t.radar.begin() + static_cast<std::ptrdiff_t>(t.radar_count)});
   d["energy"] = t.energy;
   d["collided"] = t.collided;
   return d;

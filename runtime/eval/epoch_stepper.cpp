@@ -26,6 +26,11 @@ TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, dou
   t.pose = state.pose;
   t.ir = ir_;
   t.light = light_;
+  // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal).
+  t.range_count = world_->robot().rangefinders.angles_rad.size();
+  t.radar_count = static_cast<std::size_t>(world_->robot().radars);
+  std::copy_n(frame_.begin() + expr::slot::range, t.range_count, t.range.begin());
+  std::copy_n(frame_.begin() + expr::slot::radar, t.radar_count, t.radar.begin());
   t.left_command = cmd.left;
   t.right_command = cmd.right;
   t.left_speed_mps = state.wheel_speed_mps[0];

@@ -37,6 +37,12 @@ struct TraceStep {
   sim::Pose pose;                             // after the step
   std::array<double, sim::kIrSensors> ir{};   // read after the step (the next step's input)
   std::array<double, sim::kLightSensors> light{};   // ambient light, read with the IR
+  // The rangefinders' and goal radars' readings, as the `range` and `radar` observables hold
+  // them: the first `range_count` / `radar_count` entries, those the robot declares.
+  std::array<double, sim::kMaxRangefinders> range{};
+  std::size_t range_count = 0;
+  std::array<double, sim::kMaxRadars> radar{};
+  std::size_t radar_count = 0;
   double left_command = 0.0;                  // commands in [-1, 1] chosen by the controller
   double right_command = 0.0;
   double left_speed_mps = 0.0;                // measured wheel speeds after the step

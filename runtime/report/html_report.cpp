@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <set>
+#include <span>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -54,16 +55,32 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
     while (cut > 0 && steps[cut - 1].epoch == last_epoch) --cut;
     if (cut > 0) keep = cut;
   }
+  const auto readings = [](std::span<const double> values) {
+    json a = json::array();
+    for (double v : values) a.push_back(round_to(v, 3));
+    return a;
+  };
+  // A robot with rangefinders or goal radars (the maze navigator) adds their readings to
+  // each row; the paper's robots have neither, and their rows stay as they were.
+  const bool navigation = !steps.empty() && (steps.front().range_count > 0 || steps.front().radar_count > 0);
   json rows = json::array();
   for (std::size_t i = 0; i < keep; ++i) {
     const eval::TraceStep& t = steps[i];
-    json ir = json::array();
-    for (double v : t.ir) ir.push_back(round_to(v, 3));
-    json light = json::array();
-    for (double v : t.light) light.push_back(round_to(v, 3));
-    rows.push_back({t.epoch, t.step, round_to(t.pose.x_m * 1000.0, 1), round_to(t.pose.y_m * 1000.0, 1),
-                    round_to(t.pose.heading_rad, 3), ir, round_to(t.left_command, 3), round_to(t.right_command, 3),
-                    t.action, round_to(t.fitness, 4), t.collided ? 1 : 0, round_to(t.energy, 3), light});
+    json row = {t.epoch, t.step, round_to(t.pose.x_m * 1000.0, 1), round_to(t.pose.y_m * 1000.0, 1),
+                round_to(t.pose.heading_rad, 3), readings(t.ir), round_to(t.left_command, 3),
+                round_to(t.right_command, 3), t.action, round_to(t.fitness, 4), t.collided ? 1 : 0,
+                round_to(t.energy, 3), readings(t.light)};
+    if (navigation) {
+      row.push_back(readings(std::span(t.range).first(t.range_count)));
+      row.push_back(readings(std::span(t.radar).first(t.radar_count)));
+    }
+    rows.push_back(std::move(row));
+  }
+  json columns = {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided",
+                  "energy", "light"};
+  if (navigation) {
+    columns.push_back("range");
+    columns.push_back("radar");
   }
   int epochs = steps.empty() ? 0 : steps.back().epoch + 1;
   // Where the zones were in each epoch (random zones move at every epoch start), in mm.
@@ -81,9 +98,7 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
           {"fitness", c.replay->fitness},
           {"total_steps", steps.size()},
           {"total_epochs", epochs},
-          {"columns",
-           {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided", "energy",
-            "light"}},
+          {"columns", columns},
           {"epoch_zones", epoch_zones},
           {"rows", rows}};
 }

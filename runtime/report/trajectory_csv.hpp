@@ -12,8 +12,10 @@
 
 namespace esc::report {
 
-// The header line, without its newline.
-[[nodiscard]] std::string trajectory_csv_header();
+// The header line, without its newline: the robot's `ranges` rangefinders (range0, ...) and
+// `radars` goal radars (radar0, ...) follow the light sensors; a robot without either has no
+// such columns.
+[[nodiscard]] std::string trajectory_csv_header(std::size_t ranges, std::size_t radars);
 
 // `choices`: the controller's action or behavior names (empty for a classical head, whose
 // `behavior` column stays empty).

@@ -255,17 +255,54 @@ nlohmann::ordered_json arena_json(const sim::ArenaSpec& a) {
 }
 
 // A replay row: the kTraceColumns fixed columns, then the accumulator level, the position
-// of each of the arena's zones in this epoch (x, y), and the light sensors. Traces stored
-// before these columns existed have exactly kTraceColumns per row, or no light columns; the
-// stored column names say which.
-std::size_t trace_width(std::size_t zones, bool lights) {
-  return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0);
+// of each of the arena's zones in this epoch (x, y), the light sensors, and the rangefinders
+// and goal radars the robot declares. Traces stored before these columns existed have
+// exactly kTraceColumns per row, or no light, range or radar columns: the stored column
+// names say which, so that a trace is read back as it was written.
+struct TraceLayout {
+  bool extended = true;   // the accumulator and zones follow the fixed columns
+  std::size_t zones = 0;
+  bool lights = true;
+  std::size_t ranges = 0;
+  std::size_t radars = 0;
+
+  [[nodiscard]] std::size_t width() const noexcept {
+    if (!extended) return kTraceColumns;
+    return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0) + ranges +
+           radars;
+  }
+};
+
+TraceLayout layout_of(std::span<const eval::TraceStep> trace) {
+  if (trace.empty()) return {};
+  const eval::TraceStep& t = trace.front();
+  return {true, t.zone_count, true, t.range_count, t.radar_count};
+}
+
+std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_view prefix) {
+  return static_cast<std::size_t>(std::count_if(columns.begin(), columns.end(), [&](const std::string& c) {
+    return c.size() > prefix.size() && c.starts_with(prefix) &&
+           std::all_of(c.begin() + static_cast<std::ptrdiff_t>(prefix.size()), c.end(),
+                       [](char ch) { return ch >= '0' && ch <= '9'; });
+  }));
+}
+
+TraceLayout layout_of(const std::vector<std::string>& columns) {
+  TraceLayout l;
+  l.extended = columns.size() > kTraceColumns;
+  l.zones = static_cast<std::size_t>(std::count_if(columns.begin(), columns.end(), [](const std::string& c) {
+    return c.starts_with("zone") && c.ends_with("_x");
+  }));
+  l.lights = count_prefixed(columns, "light") != 0;
+  l.ranges = count_prefixed(columns, "range");
+  l.radars = count_prefixed(columns, "radar");
+  return l;
 }
 
 std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
-  const std::size_t zones = trace.empty() ? 0 : trace.front().zone_count;
+  const TraceLayout layout = layout_of(trace);
   std::vector<double> v;
-  v.reserve(trace.size() * trace_width(zones, true));
+  v.reserve(trace.size() * layout.width());
   for (const auto& t : trace) {
     v.push_back(t.epoch);
     v.push_back(t.step);
@@ -281,24 +318,23 @@ std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
     v.push_back(t.fitness);
     v.push_back(t.collided ? 1.0 : 0.0);
     v.push_back(t.energy);
-    for (std::size_t z = 0; z < zones; ++z) {
+    for (std::size_t z = 0; z < layout.zones; ++z) {
       v.push_back(t.zones[z].x);
       v.push_back(t.zones[z].y);
     }
     v.insert(v.end(), t.light.begin(), t.light.end());
+    v.insert(v.end(), t.range.begin(), t.range.begin() + static_cast<std::ptrdiff_t>(layout.ranges));
+    v.insert(v.end(), t.radar.begin(), t.radar.begin() + static_cast<std::ptrdiff_t>(layout.radars));
   }
   return v;
 }
 
 std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const std::vector<std::string>& columns) {
   const std::size_t width = columns.size();
-  const bool extended = width > kTraceColumns;
-  const bool lights = std::find(columns.begin(), columns.end(), "light0") != columns.end();
-  const std::size_t light_columns = lights ? static_cast<std::size_t>(sim::kLightSensors) : 0;
-  const std::size_t zones = extended && width >= kTraceColumns + 1 + light_columns
-                                ? (width - kTraceColumns - 1 - light_columns) / 2
-                                : 0;
-  if (width < kTraceColumns || (extended && trace_width(zones, lights) != width) || zones > sim::kMaxZones)
+  const TraceLayout layout = layout_of(columns);
+  if (width < kTraceColumns || layout.width() != width || layout.zones > sim::kMaxZones ||
+      layout.ranges > static_cast<std::size_t>(sim::kMaxRangefinders) ||
+      layout.radars > static_cast<std::size_t>(sim::kMaxRadars))
     throw StoreError(fmt::format("the database is damaged: a replay trace has {} columns", width));
   if (v.size() % width != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
   std::vector<eval::TraceStep> out(v.size() / width);
@@ -316,19 +352,24 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const st
     t.action = static_cast<int>(r[17]);
     t.fitness = r[18];
     t.collided = r[19] != 0.0;
-    if (!extended) continue;
-    t.energy = r[kTraceColumns];
-    t.zone_count = zones;
-    for (std::size_t z = 0; z < zones; ++z) t.zones[z] = {r[kTraceColumns + 1 + 2 * z], r[kTraceColumns + 2 + 2 * z]};
-    if (lights)
-      for (std::size_t k = 0; k < t.light.size(); ++k) t.light[k] = r[kTraceColumns + 1 + 2 * zones + k];
+    if (!layout.extended) continue;
+    const double* c = r + kTraceColumns;
+    t.energy = *c++;
+    t.zone_count = layout.zones;
+    for (std::size_t z = 0; z < layout.zones; ++z, c += 2) t.zones[z] = {c[0], c[1]};
+    if (layout.lights)
+      for (double& l : t.light) l = *c++;
+    t.range_count = layout.ranges;
+    for (std::size_t k = 0; k < layout.ranges; ++k) t.range[k] = *c++;
+    t.radar_count = layout.radars;
+    for (std::size_t k = 0; k < layout.radars; ++k) t.radar[k] = *c++;
   }
   return out;
 }
 
 }  // namespace
 
-std::vector<std::string> trace_column_names(std::size_t zones) {
+std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars) {
   std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
   for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
   for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", kRunningFitness,
@@ -340,6 +381,8 @@ std::vector<std::string> trace_column_names(std::size_t zones) {
     c.push_back(fmt::format("zone{}_y", z));
   }
   for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
+  for (std::size_t i = 0; i < ranges; ++i) c.push_back(fmt::format("range{}", i));
+  for (std::size_t i = 0; i < radars; ++i) c.push_back(fmt::format("radar{}", i));
   return c;
 }
 
@@ -640,7 +683,9 @@ void ResultsDb::commit_replay(const std::string& controller, const eval::RunResu
                               std::span<const eval::TraceStep> trace) {
   const std::int64_t cid = controller_id(controller);
   const std::uint64_t seed = eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
-  const nlohmann::json columns = trace_column_names(trace.empty() ? 0 : trace.front().zone_count);
+  const eval::TraceStep none;
+  const eval::TraceStep& first = trace.empty() ? none : trace.front();
+  const nlohmann::json columns = trace_column_names(first.zone_count, first.range_count, first.radar_count);
   sql::Transaction tx(db_);
   // One replay per controller: its best run's (the earliest run on a tie, whichever order
   // the runs finish in). Replaying the same run again (after a resume, or when the run was

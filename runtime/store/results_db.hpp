@@ -88,10 +88,11 @@ struct LaunchInfo {
 
 // Columns of a stored replay trace, one row of doubles per control step: kTraceColumns
 // fixed ones, then (since replays record them) the accumulator, x, y of each of the arena's
-// `zones` in that epoch, and the light sensors light0..light7.
+// `zones` in that epoch, the light sensors light0..light7, and the robot's `ranges`
+// rangefinders (range0...) and `radars` goal radars (radar0...).
 inline constexpr std::size_t kTraceColumns = 20;
 inline constexpr const char* kRunningFitness = "running_fitness";
-[[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones);
+[[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars);
 
 struct StoredReplay {
   int run = 0;

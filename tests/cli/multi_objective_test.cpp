@@ -226,6 +226,12 @@ TEST(MultiObjective, TheMazeStudyExportsDrawsAndReplaysItsFrontsAndArchives) {
   ASSERT_EQ(replayed.status, 0) << replayed.output;
   EXPECT_NE(replayed.output.find("run 1 cell " + cell), std::string::npos) << replayed.output;
   EXPECT_TRUE(fs::exists(dir / "map_elites" / ("replay-navigator_net-run-01-cell-" + cell + ".svg")));
+  // What the navigator senses is in its replay: the CSV's and the report's rangefinders and radars.
+  const std::string csv = slurp(dir / "map_elites" / ("replay-navigator_net-run-01-cell-" + cell + ".csv"));
+  EXPECT_NE(csv.find(",light7,range0,range1,range2,range3,range4,range5,radar0,radar1,radar2,radar3,energy,"),
+            std::string::npos)
+      << csv.substr(0, 300);
+  EXPECT_NE(slurp(dir / "report.html").find(R"("light","range","radar"])"), std::string::npos);
   const Outcome member = esc("replay " + (dir / "novelty_fitness").string() + " --run 2 --member 0");
   EXPECT_EQ(member.status, 0) << member.output;
   const Outcome empty = esc("replay " + (dir / "map_elites").string() + " --run 1 --member 399");

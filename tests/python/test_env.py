@@ -42,6 +42,7 @@ def test_a_stored_genome_in_env_reproduces_the_replay_csv(homing_run, homing_scr
             assert state[key] == row[column], (column, row["step"])
         assert state["ir"].tolist() == [row[f"ir{i}"] for i in range(8)]
         assert state["light"].tolist() == [row[f"light{i}"] for i in range(8)]
+        assert state["range"].size == 0 and state["radar"].size == 0   # the Khepera's own senses
         assert int(state["collided"]) == row["collided"]
         assert (env.choices[info["action"]] if info["action"] >= 0 else "") == row["behavior"]
         assert row["time_s"] == pytest.approx(info["step"] * 0.1)
@@ -95,6 +96,15 @@ def test_the_navigators_rangefinders_and_radars_are_observations_in_0_1():
     for _ in range(30):
         observation, *_ = env.step([1.0, 0.6])
         assert env.observation_space.contains(observation)
+        state = env.state()
+        assert state["range"].tolist() == observation[:6].tolist()
+        assert state["radar"].tolist() == observation[6:].tolist()
+    bare = esc.Env(script, "maze_navigation", seed=1)   # its senses: the navigator's too
+    assert bare.observation_names == ([f"ir[{i}]" for i in range(8)] + [f"light[{i}]" for i in range(8)] +
+                                      [f"range[{i}]" for i in range(6)] + [f"radar[{i}]" for i in range(4)] +
+                                      ["energy"])
+    observation, _ = bare.reset()
+    assert observation[16:22].tolist() == bare.state()["range"].tolist()
 
 
 def test_driving_the_wheels_by_hand_ends_by_truncation():

@@ -110,12 +110,29 @@ TEST(TrajectoryCsv, OneRowPerStepCountedFromOne) {
   const auto steps = two_epochs();
   const std::string csv = trajectory_csv(steps, {"forward", "left", "right"}, 0.1);
   EXPECT_EQ(count(csv, "\n"), 1U + steps.size());
-  const std::size_t columns = count(trajectory_csv_header(), ",") + 1;
+  const std::size_t columns = count(trajectory_csv_header(0, 0), ",") + 1;
   EXPECT_EQ(columns, 30U);
   const std::string second = csv.substr(csv.find('\n') + 1);
   EXPECT_EQ(second.rfind("1,1,0.1,0.10000000000000001,", 0), 0U) << second.substr(0, 60);
   EXPECT_NE(csv.find(",right,"), std::string::npos);
   EXPECT_NE(csv.find("\n2,4,0.4,"), std::string::npos);
+}
+
+TEST(TrajectoryCsv, RangefindersAndRadarsFollowTheLightsWhereTheRobotHasThem) {
+  auto steps = two_epochs();
+  for (eval::TraceStep& t : steps) {
+    t.range_count = 2;
+    t.range = {0.25, 1.0};
+    t.radar_count = 4;
+    t.radar = {0.0, 0.0, 1.0, 0.0};
+  }
+  const std::string csv = trajectory_csv(steps, {}, 0.1);
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header, trajectory_csv_header(2, 4));
+  EXPECT_EQ(count(header, ",") + 1, 30U + 6U);
+  EXPECT_NE(header.find(",light7,range0,range1,radar0,radar1,radar2,radar3,energy,"), std::string::npos) << header;
+  const std::string first = csv.substr(header.size() + 1, csv.find('\n', header.size() + 1) - header.size() - 1);
+  EXPECT_NE(first.find(",0.25,1,0,0,1,0,1,,"), std::string::npos) << "ranges, radars, then energy 1 " << first;
 }
 
 }  // namespace

@@ -181,6 +181,35 @@ TEST(AnalysisTables, TheReplayIsTheEarliestBestRunWhateverTheOrder) {
   // The light sensors travel with the replay, after the zones.
   EXPECT_EQ(s.controllers[0].replay->steps.at(0).light[6], 0.625);
   EXPECT_EQ(s.controllers[0].replay->steps.at(0).zones[0].x, 0.3);
+  EXPECT_EQ(s.controllers[0].replay->steps.at(0).range_count, 0u);
+}
+
+TEST(AnalysisTables, TheNavigatorsRangefindersAndRadarsTravelWithTheReplay) {
+  const fs::path dir = test::fresh_dir("replay-navigation");
+  fs::create_directories(dir);
+  ResultsDb db = ResultsDb::create(dir, spec(1), {}, {});
+  eval::TraceStep t;
+  t.light[7] = 0.5;
+  t.range_count = 3;
+  t.range = {0.25, 1.0, 0.75};
+  t.radar_count = 4;
+  t.radar = {0.0, 1.0, 0.0, 0.0};
+  eval::TraceStep u = t;
+  u.step = 1;
+  u.radar = {1.0, 0.0, 0.0, 0.0};
+  db.commit_replay("SV", finished(run_state(0, 1)), std::vector<eval::TraceStep>{t, u});
+  const StoredExperiment s = ResultsDb::open(dir, true).load_single();
+  ASSERT_TRUE(s.controllers[0].replay.has_value());
+  const auto& steps = s.controllers[0].replay->steps;
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[0].light[7], 0.5);
+  EXPECT_EQ(steps[0].range_count, 3u);
+  EXPECT_EQ(steps[0].range[0], 0.25);
+  EXPECT_EQ(steps[0].range[2], 0.75);
+  EXPECT_EQ(steps[0].radar_count, 4u);
+  EXPECT_EQ(steps[0].radar[1], 1.0);
+  EXPECT_EQ(steps[1].radar[0], 1.0);
+  EXPECT_EQ(steps[1].radar[1], 0.0);
 }
 
 TEST(AnalysisTables, ASchemaThreeDatabaseReadsWithoutUsageAndIsUpgradedForWriting) {

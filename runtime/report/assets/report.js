@@ -480,12 +480,29 @@
     const irs = bars([0, 1, 2, 3, 4, 5, 6, 7].map(i => `IR ${i}`), 'ir');
     const lights = bars([0, 1, 2, 3, 4, 5, 6, 7].map(i => `light ${i}`), 'light');
     const accumulator = bars(['energy'], 'energy');
+    // The maze navigator's rangefinders and goal radars, where the robot has them (their
+    // readings follow the lights in each row). The angles are the stored setting's, as
+    // `esc` prints it ("[-1.5707963267948966 rad, ...]"); without it, no rays are drawn.
+    const columns = withReplay[0].replay.columns;
+    const rangeAt = columns.indexOf('range'), radarAt = columns.indexOf('radar');
+    const first = withReplay[0].replay.rows[0];
+    const rangeCount = rangeAt >= 0 ? first[rangeAt].length : 0, radarCount = radarAt >= 0 ? first[radarAt].length : 0;
+    const rangeAngles = ((exp.settings || {})['robot.rangefinders'] || '').match(/-?[0-9.]+(e[-+]?[0-9]+)?(?= rad)/g);
+    const rangeMm = parseFloat((exp.settings || {})['robot.rangefinder_range']) * 1000;
+    const rangeLabel = i => rangeAngles && rangeAngles.length === rangeCount
+      ? `${Math.round(parseFloat(rangeAngles[i]) * 180 / Math.PI)}°` : `range ${i}`;
+    const ranges = bars([...Array(rangeCount).keys()].map(rangeLabel), 'range');
+    const radars = bars([...Array(radarCount).keys()].map(i => `${Math.round(360 * i / radarCount)}°`), 'radar');
     const legend = el('div', {class: 'legend'});
     card.appendChild(el('div', {class: 'controls'}, [select, play, el('span', {text: 'speed'}), speed, slider]));
+    const navigation = [];
+    if (rangeCount > 0) navigation.push(el('h3', {text: 'Rangefinders (distance / range, by angle from the heading)'}), ranges.box);
+    if (radarCount > 0) navigation.push(el('h3', {text: 'Goal radars (by slice centre, counter-clockwise from ahead)'}), radars.box);
+    // Light sensors read 0 in an arena without lights: their bars only where there are some.
+    const lit = (exp.arena.lights || []).length > 0 ? [el('h3', {text: 'Light sensors'}), lights.box] : [];
     card.appendChild(el('div', {class: 'replay'}, [el('div', {}, [canvas, legend]), el('div', {}, [
-      el('div', {}, [el('span', {text: 'acting: '}), action]), el('h3', {text: 'IR sensors'}), irs.box,
-      el('h3', {text: 'Light sensors'}), lights.box, el('h3', {text: 'Accumulator'}), accumulator.box,
-      el('h3', {text: 'State'}), readout])]));
+      el('div', {}, [el('span', {text: 'acting: '}), action]), ...navigation, el('h3', {text: 'IR sensors'}), irs.box,
+      ...lit, el('h3', {text: 'Accumulator'}), accumulator.box, el('h3', {text: 'State'}), readout])]));
     const note = el('p', {class: 'note'});
     card.appendChild(note);
     parent.appendChild(card);
@@ -606,6 +623,27 @@
         ctx.strokeStyle = alpha('#d9822b', 0.25 + 0.75 * ir[i]); ctx.lineWidth = 2;
         ctx.beginPath(); ctx.moveTo(X(sx), Y(sy));
         ctx.lineTo(X(sx + len * Math.cos(f)), Y(sy + len * Math.sin(f))); ctx.stroke();
+      }
+      // The radar slice holding the goal, as a faint wedge, and each rangefinder's ray up to
+      // what it reads (its full range, fainter, when nothing is within it).
+      if (radarCount > 0) {
+        const slice = r[radarAt].indexOf(1), half = Math.PI / radarCount;
+        if (slice >= 0) {
+          const mid = heading + 2 * half * slice;
+          ctx.fillStyle = 'rgba(197,27,125,0.12)';
+          ctx.beginPath(); ctx.moveTo(X(x), Y(y));
+          ctx.arc(X(x), Y(y), 3 * rr * scale, -(mid + half), -(mid - half)); ctx.closePath(); ctx.fill();
+        }
+        radars.show(r[radarAt]);
+      }
+      if (rangeCount > 0) {
+        if (rangeAngles && rangeAngles.length === rangeCount && rangeMm > 0)
+          r[rangeAt].forEach((v, i) => {
+            const a = heading + parseFloat(rangeAngles[i]), len = v * rangeMm;
+            ctx.strokeStyle = alpha('#17becf', v < 1 ? 0.9 : 0.3); ctx.lineWidth = 1.5;
+            ctx.beginPath(); ctx.moveTo(X(x), Y(y)); ctx.lineTo(X(x + len * Math.cos(a)), Y(y + len * Math.sin(a))); ctx.stroke();
+          });
+        ranges.show(r[rangeAt]);
       }
       irs.show(ir);
       // Replays stored before the light sensors were traced have none.
