@@ -40,6 +40,7 @@ namespace fs = std::filesystem;
 struct Subject {
   std::string controller;
   int run = 0;                                // from 0
+  std::uint64_t run_seed = 0;
   std::vector<double> genome;
   std::uint64_t seed = 0;
   std::optional<double> fitness;              // as stored, to check against
@@ -117,7 +118,7 @@ std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, cons
     if (!o.controller.empty() && c.name != o.controller) continue;
     const eval::RunResult* r = pick_run(c, o.run);
     if (r == nullptr) return {};
-    Subject s{c.name, r->run, r->best_genome,
+    Subject s{c.name, r->run, r->seed, r->best_genome,
               eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index)),
               r->best_fitness, nullptr, {}, {}};
     if (c.replay && c.replay->run == r->run && c.replay->seed == s.seed) s.stored = &*c.replay;
@@ -155,6 +156,14 @@ bool pick_member(Subject& s, const evo::Members& kept, std::int64_t member) {
   s.stored = nullptr;
   // The fitness follows the objectives the optimizer computes itself (novelty).
   if (kept.own_objectives.size() < it->objectives.size()) s.member_fitness = it->objectives[kept.own_objectives.size()];
+  // Its own evaluation, where the state says which it was; a state saved before origins were
+  // kept leaves the run's best's seed, exact wherever evaluations draw nothing.
+  if (it->measured.known()) {
+    s.seed = eval::evaluation_seed(s.run_seed, static_cast<int>(it->measured.generation),
+                                   static_cast<std::size_t>(it->measured.candidate));
+    s.fitness = s.member_fitness;
+    s.member_fitness.reset();
+  }
   return true;
 }
 
@@ -279,13 +288,16 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   figure.steps = drawn;
   store::write_atomically(out / (stem + ".svg"), report::trajectory_svg(figure));
   store::write_atomically(out / (stem + ".csv"), report::trajectory_csv(drawn, figure.choices, spec.robot.control_step_s));
-  // A member's evaluation seed is not stored: it is replayed with its run's best's, which
-  // measures what it measured wherever the evaluation draws nothing (no noise, fixed starts).
+  // A member whose evaluation is not known (a state saved before origins were kept) is
+  // replayed with its run's best's seed: its stored value is printed beside.
   const std::string stored_member =
       s.member_fitness ? fmt::format("; {:.17g} in its own evaluation", *s.member_fitness) : std::string();
+  std::string agrees;
+  if (faithful && status == kExitOk && s.stored != nullptr) agrees = ", identical to the stored replay";
+  else if (faithful && status == kExitOk && !s.member.empty() && s.fitness) agrees = ", as in its own evaluation";
   say("esc: replayed {} run {}{} in {} (fitness {:.{}f}{}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1,
-      s.member.empty() ? "" : " " + s.member, spec.name, result.fitness, decimals, stored_member,
-      faithful && s.stored != nullptr && status == kExitOk ? ", identical to the stored replay" : "", out.string(), stem);
+      s.member.empty() ? "" : " " + s.member, spec.name, result.fitness, decimals, stored_member, agrees, out.string(),
+      stem);
   if (o.animate) {
     const std::optional<fs::path> movie = write_animation(figure, out / stem);
     if (!movie) return kExitBadInput;
@@ -373,8 +385,6 @@ int replay_command(const ReplayOptions& o) {
   } else {
     subjects = stored_subjects(*stored, o);
     if (subjects.empty()) return kExitBadInput;
-    if (o.seed)
-      for (Subject& s : subjects) s.seed = *o.seed;
   }
 
   // The experiment: the stored one, compiled from the sources the run stored (whatever has
@@ -396,6 +406,8 @@ int replay_command(const ReplayOptions& o) {
     for (Subject& s : subjects)
       if (!pick_member(s, app::final_members(run, ran, s.controller, s.run), *o.member)) return kExitBadInput;
   }
+  if (o.seed)   // over the stored evaluation's, a member's too
+    for (Subject& s : subjects) s.seed = *o.seed;
   const auto epochs = parse_epochs(o.epochs, spec->epochs);
   if (!epochs) return kExitUsage;
   const fs::path out = !o.out.empty() ? o.out : genome_file ? o.source.parent_path() : dir;

@@ -50,6 +50,17 @@ struct Metric {
   friend bool operator==(const Metric&, const Metric&) = default;
 };
 
+// Which evaluation measured a candidate: the generation that asked for it and its index
+// among that generation's candidates, from which the run loop derives its evaluation's seed
+// (eval::evaluation_seed), so that a replay measures it again in its own evaluation.
+// `generation` -1: not known (a state saved by an esc before optimizers kept it).
+struct Measured {
+  std::int64_t generation = -1;
+  std::uint64_t candidate = 0;
+  [[nodiscard]] bool known() const noexcept { return generation >= 0; }
+  friend bool operator==(const Measured&, const Measured&) = default;
+};
+
 // One of what an optimizer keeps as its result beside the run's best: a point of NSGA-II's
 // first front, an elite of MAP-Elites' archive, a behavior of novelty search's archive.
 struct Member {
@@ -59,6 +70,7 @@ struct Member {
   std::vector<double> objectives;    // maximised, as an Outcome's; empty where not kept
   std::vector<double> descriptors;   // empty where not kept
   Genome genome;                     // empty where not kept, and in a generation's changes
+  Measured measured;                 // known where a genome is kept
   friend bool operator==(const Member&, const Member&) = default;
 };
 

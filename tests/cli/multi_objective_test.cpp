@@ -96,6 +96,32 @@ TEST(MultiObjective, NsgaIiStoresItsFrontAndHypervolumeEveryGeneration) {
   }
 }
 
+// Random start poses: an archive cell or a front member measures what it measured only in
+// its own evaluation, whose seed the replay derives from where the optimizer's state says it
+// was evaluated (not the run's best's, which starts elsewhere).
+TEST(MultiObjective, AMemberReplaysInItsOwnEvaluation) {
+  for (const auto& [name, member] : {std::pair<std::string, std::string>{"behavior_map", ""}, {"speed_energy", "0"}}) {
+    const fs::path dir = scratch("member-seed-" + name);
+    ASSERT_EQ(esc("run " + example(name) + " --runs 1 --generations 4 --set epochs=1 --out " + dir.string()).status, 0);
+    std::string pick = member;
+    if (pick.empty()) {   // the archive's first filled cell
+      const Outcome archive = esc("export " + dir.string() + " --table archive");
+      const auto rows = csv_rows(archive.output);
+      ASSERT_GT(rows.size(), 1u) << archive.output;
+      const auto cell = std::find(rows.front().begin(), rows.front().end(), "cell") - rows.front().begin();
+      pick = rows[1][static_cast<std::size_t>(cell)];
+    }
+    const Outcome replayed = esc("replay " + dir.string() + " --member " + pick);
+    EXPECT_EQ(replayed.status, 0) << replayed.output;
+    EXPECT_NE(replayed.output.find(", as in its own evaluation)"), std::string::npos) << replayed.output;
+    EXPECT_EQ(replayed.output.find("in its own evaluation;"), std::string::npos) << replayed.output;
+    // Another seed is another evaluation: no claim to match it.
+    const Outcome elsewhere = esc("replay " + dir.string() + " --member " + pick + " --seed 12345");
+    EXPECT_EQ(elsewhere.status, 0) << elsewhere.output;
+    EXPECT_EQ(elsewhere.output.find("as in its own evaluation"), std::string::npos) << elsewhere.output;
+  }
+}
+
 TEST(MultiObjective, AnyNumberOfThreadsGivesTheSameResults) {
   for (const std::string name : {"behavior_map", "speed_energy"}) {
     const fs::path one = scratch(name + "-1"), two = scratch(name + "-2");

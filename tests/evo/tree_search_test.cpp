@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <any>
 #include <cstdio>
+#include <cstring>
 #include <utility>
 #include <set>
 #include <string>
@@ -15,6 +16,7 @@
 #include "runtime/evo/gp/codec.hpp"
 #include "runtime/evo/gp/tree_variation.hpp"
 #include "runtime/evo/map_elites/map_elites_optimizer.hpp"
+#include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/novelty/novelty_optimizer.hpp"
 #include "runtime/evo/nsga2/nsga2.hpp"
 #include "runtime/evo/registry.hpp"
@@ -209,6 +211,69 @@ TEST(TreeSearch, NeedsTheGpSettingsAndCountsTreesInItsMemory) {
   still.subtree_mutation = still.point_mutation = still.hoist_mutation = 0.0;
   p.tree_operators = &still;
   EXPECT_NE(find_algorithm("map_elites")->problem(map_elites_settings(), p).find("are all 0"), std::string::npos);
+}
+
+// Every member of a front or an archive knows the evaluation that measured it (the
+// generation and its index among that generation's candidates: what a replay derives its
+// evaluation's seed from), across a save and load; a state saved before origins were kept
+// (the core's bytes alone; novelty search's version 1) loads with them unknown.
+TEST(TreeSearch, EveryMemberKnowsTheEvaluationThatMeasuredIt) {
+  const Shapes shapes;
+  for (const Named& a : all_three()) {
+    SCOPED_TRACE(a.name);
+    auto o = make(a.name, a.settings, shapes.problem());
+    std::vector<std::vector<Genome>> asked;
+    for (int g = 0; g < 8; ++g) {
+      asked.push_back(o->ask(g));
+      o->tell(shapes.measure(asked.back()));
+    }
+    const Members kept = *o->members(false);
+    ASSERT_FALSE(kept.members.empty());
+    std::set<std::int64_t> generations;
+    for (const Member& m : kept.members) {
+      ASSERT_TRUE(m.measured.known());
+      const auto g = static_cast<std::size_t>(m.measured.generation);
+      ASSERT_LT(g, asked.size());
+      ASSERT_LT(m.measured.candidate, asked[g].size());
+      EXPECT_EQ(asked[g][m.measured.candidate], m.genome);
+      generations.insert(m.measured.generation);
+    }
+    EXPECT_GT(generations.size(), 1u) << "members of several generations";
+
+    const StateBytes state = o->save();
+    auto again = make(a.name, a.settings, shapes.problem());
+    again->load(state);
+    EXPECT_EQ(again->members(false)->members, kept.members);
+
+    // The state an esc before wrote: origins unknown, everything else as it was.
+    StateBytes older;
+    if (a.name == "novelty") {
+      const std::size_t trailer = sizeof(std::uint64_t) + 40 * 2 * sizeof(std::uint64_t);   // 40 parents
+      older.assign(state.begin(), state.end() - static_cast<std::ptrdiff_t>(trailer));
+      const std::uint32_t one = 1;
+      std::memcpy(older.data() + sizeof(std::uint64_t) + std::string_view("esc-novelty").size(), &one, sizeof one);
+    } else {
+      older = read_with_measured(a.name == "nsga2" ? "esc-nsga2-run" : "esc-map-elites-run", state).core;
+    }
+    auto old = make(a.name, a.settings, shapes.problem());
+    old->load(older);
+    const Members was = *old->members(false);
+    ASSERT_EQ(was.members.size(), kept.members.size());
+    for (std::size_t i = 0; i < was.members.size(); ++i) {
+      EXPECT_FALSE(was.members[i].measured.known());
+      EXPECT_EQ(was.members[i].genome, kept.members[i].genome);
+    }
+    // It carries on, and what it measures from then on is known.
+    old->tell(shapes.measure(old->ask(8)));
+    std::size_t known = 0;
+    const Members now = *old->members(false);
+    for (const Member& m : now.members)
+      if (m.measured.known()) {
+        EXPECT_EQ(m.measured.generation, 8);
+        ++known;
+      }
+    EXPECT_GT(known, 0u);
+  }
 }
 
 }  // namespace

@@ -179,7 +179,8 @@ eval::RunState with_members(int generations) {
   layout->bins = {2, 3};
   s.member_layout = layout;
   const double g = generations - 1;
-  s.members = {{static_cast<std::int64_t>(generations), {g + 0.5}, {0.25, -1.0}, {}}, {5, {-g}, {0.75, 1.5}, {}}};
+  s.members = {{static_cast<std::int64_t>(generations), {g + 0.5}, {0.25, -1.0}, {}, {}},
+               {5, {-g}, {0.75, 1.5}, {}, {}}};
   return s;
 }
 

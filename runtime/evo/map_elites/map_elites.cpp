@@ -77,17 +77,22 @@ std::vector<Genome> MapElites::ask(Rng& rng) {
   return out;
 }
 
-void MapElites::tell(std::span<const double> fitness, std::span<const std::vector<double>> descriptors) {
+std::vector<InsertResult> MapElites::tell(std::span<const double> fitness,
+                                          std::span<const std::vector<double>> descriptors) {
   if (!asked_) throw std::logic_error("MAP-Elites: tell without an ask");
   require(fitness.size() == pending_.size() && descriptors.size() == pending_.size(),
           std::to_string(pending_.size()) + " fitness values and descriptors expected");
   for (const auto& d : descriptors)
     require(d.size() == archive_.space().size() && std::all_of(d.begin(), d.end(), [](double v) { return std::isfinite(v); }),
             "every descriptor needs " + std::to_string(archive_.space().size()) + " finite numbers");
-  for (std::size_t i = 0; i < pending_.size(); ++i) (void)archive_.insert(std::move(pending_[i]), fitness[i], descriptors[i]);
+  std::vector<InsertResult> results;
+  results.reserve(pending_.size());
+  for (std::size_t i = 0; i < pending_.size(); ++i)
+    results.push_back(archive_.insert(std::move(pending_[i]), fitness[i], descriptors[i]));
   pending_.clear();
   asked_ = false;
   ++generation_;
+  return results;
 }
 
 void MapElites::write(StateWriter& w) const {

@@ -73,8 +73,9 @@ class MapElites {
   [[nodiscard]] std::vector<Genome> ask(Rng& rng);
   // What the last ask's candidates measured, in their order: each goes into the archive.
   // std::logic_error without an ask; std::invalid_argument for other counts or a descriptor
-  // of another size or not finite (checked before anything is inserted).
-  void tell(std::span<const double> fitness, std::span<const std::vector<double>> descriptors);
+  // of another size or not finite (checked before anything is inserted). Returns what became
+  // of each candidate, in their order.
+  std::vector<InsertResult> tell(std::span<const double> fitness, std::span<const std::vector<double>> descriptors);
 
   [[nodiscard]] double qd_score() const { return archive_.qd_score(); }
   [[nodiscard]] double coverage() const noexcept { return archive_.coverage(); }

@@ -4,13 +4,16 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <tuple>
+#include <unordered_map>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "runtime/evo/gp/tree_variation.hpp"
 #include "runtime/evo/map_elites/selection.hpp"
+#include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/run_streams.hpp"
 
 namespace esc::evo {
@@ -66,6 +69,14 @@ qd::MapElites core_for(const MapElitesRunSettings& s, const Problem& p) {
   return {core_settings(s), std::move(genomes), archive_for(s, p)};
 }
 
+// The run-level state's tag (measured_state.hpp): the core's state and, per filled cell in
+// increasing order, where its elite was measured.
+constexpr std::string_view kRunTag = "esc-map-elites-run";
+
+// A filled cell's origin entry, beside the archive's elites (an unordered_map node and its
+// bucket), counted in the run's memory estimate.
+constexpr double kMeasuredBytesPerCell = 64.0;
+
 class MapElitesOptimizer final : public Optimizer {
  public:
   MapElitesOptimizer(const MapElitesRunSettings& settings, const Problem& problem)
@@ -74,6 +85,7 @@ class MapElitesOptimizer final : public Optimizer {
   }
 
   std::vector<Genome> ask(int generation) override {
+    generation_ = generation;
     Rng rng = breed_stream(seed_, generation);
     return core_.ask(rng);
   }
@@ -85,7 +97,11 @@ class MapElitesOptimizer final : public Optimizer {
       fitness[i] = outcomes[i].objectives.front();
       descriptors[i] = outcomes[i].descriptors;
     }
-    core_.tell(fitness, descriptors);
+    // A cell's elite is the last candidate that entered it: a later one is strictly fitter.
+    const std::vector<qd::InsertResult> placed = core_.tell(fitness, descriptors);
+    for (std::size_t i = 0; i < placed.size(); ++i)
+      if (placed[i].status != qd::Insertion::Rejected)
+        measured_[placed[i].cell] = {generation_, static_cast<std::uint64_t>(i)};
     changed_.clear();
     for (const qd::Change& c : core_.take_changes()) changed_.push_back(c.cell);
   }
@@ -95,7 +111,8 @@ class MapElitesOptimizer final : public Optimizer {
     Members m{MemberKind::Archive, 1, archive.space().size(), {}, {}, {}, {}};
     const auto add = [&](std::size_t cell) {
       const qd::Elite& e = *archive.elite(cell);
-      m.members.push_back({static_cast<std::int64_t>(cell), {e.fitness}, e.descriptor, changes ? Genome{} : e.genome});
+      m.members.push_back(
+          {static_cast<std::int64_t>(cell), {e.fitness}, e.descriptor, changes ? Genome{} : e.genome, measured(cell)});
     };
     if (changes) {
       for (const std::size_t cell : changed_) add(cell);
@@ -113,12 +130,39 @@ class MapElitesOptimizer final : public Optimizer {
     return m;
   }
 
-  StateBytes save() const override { return core_.save(); }
-  void load(std::span<const std::uint8_t> state) override { core_.load(state); }
+  StateBytes save() const override {
+    std::vector<Measured> filled;
+    for (const std::size_t cell : core_.archive().filled_cells()) filled.push_back(measured(cell));
+    return save_with_measured(kRunTag, core_.save(), filled);
+  }
+
+  void load(std::span<const std::uint8_t> state) override {
+    auto [bytes, stored] = read_with_measured(kRunTag, state);
+    qd::MapElites core = core_;
+    core.load(bytes);
+    const std::span<const std::size_t> cells = core.archive().filled_cells();
+    if (stored && stored->size() != cells.size())
+      throw std::invalid_argument("MAP-Elites state: " + std::to_string(stored->size()) + " origins for " +
+                                  std::to_string(cells.size()) + " filled cells");
+    std::unordered_map<std::size_t, Measured> measured;
+    if (stored)
+      for (std::size_t i = 0; i < cells.size(); ++i) measured[cells[i]] = (*stored)[i];
+    core_ = std::move(core);
+    measured_ = std::move(measured);
+    changed_.clear();
+  }
 
  private:
+  // Unknown for a cell filled by a state saved before origins were kept.
+  [[nodiscard]] Measured measured(std::size_t cell) const {
+    const auto it = measured_.find(cell);
+    return it == measured_.end() ? Measured{} : it->second;
+  }
+
   qd::MapElites core_;
   std::uint64_t seed_;
+  int generation_ = 0;                                  // of the last ask
+  std::unordered_map<std::size_t, Measured> measured_;  // per filled cell
   std::vector<std::size_t> changed_;   // cells the last tell changed, in cell order
 };
 
@@ -163,7 +207,8 @@ double map_elites_run_memory_bytes(const MapElitesRunSettings& settings, const P
   const std::size_t genes = gp::genes_at_most(problem);
   if (cells > static_cast<double>(qd::kMaxGridCells)) return cells * static_cast<double>(genes) * 8.0;
   return qd::map_elites_memory_bytes(core_settings(settings), genes, static_cast<std::size_t>(cells),
-                                     problem.descriptors.size());
+                                     problem.descriptors.size()) +
+         cells * kMeasuredBytesPerCell;
 }
 
 }  // namespace esc::evo

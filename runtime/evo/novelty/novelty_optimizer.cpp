@@ -1,8 +1,11 @@
 #include "runtime/evo/novelty/novelty_optimizer.hpp"
 
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 #include "runtime/evo/run_streams.hpp"
 
@@ -28,6 +31,9 @@ qd::DescriptorSpace space_of(const Problem& p) {
   for (const Bounds& b : p.descriptors) ranges.push_back({b.lower, b.upper});
   return qd::DescriptorSpace(std::move(ranges));
 }
+
+// 2: each parent's origin (Measured) follows the parents.
+constexpr std::uint32_t kVersion = 2;
 
 class NoveltyOptimizer final : public Optimizer {
  public:
@@ -67,6 +73,7 @@ class NoveltyOptimizer final : public Optimizer {
     archive_.update(std::span(descriptors).subspan(parents), std::span(novelty).subspan(parents), rng);
     core_.rescore(now);
     const std::vector<std::size_t> kept = core_.tell(candidates);
+    measured_ = survivors_measured(measured_, static_cast<int>(generation_), kept);
     parent_descriptors_.clear();
     parent_fitness_.clear();
     best_novelty_ = 0.0;
@@ -95,20 +102,20 @@ class NoveltyOptimizer final : public Optimizer {
       for (std::size_t i = 0; i < front.size(); ++i) {
         const std::vector<double>& f = core_.objectives()[front[i]];
         m.members.push_back({static_cast<std::int64_t>(i), {-f[0], -f[1]}, parent_descriptors_[front[i]],
-                             changes ? Genome{} : core_.population()[front[i]]});
+                             changes ? Genome{} : core_.population()[front[i]], measured_[front[i]]});
       }
       return m;
     }
     const std::vector<std::vector<double>>& points = archive_.points();
     for (std::size_t i = changes ? archived_before_ : 0; i < points.size(); ++i)
-      m.members.push_back({static_cast<std::int64_t>(i), {}, points[i], {}});
+      m.members.push_back({static_cast<std::int64_t>(i), {}, points[i], {}, {}});
     return m;
   }
 
   StateBytes save() const override {
     StateWriter w;
     w.put(std::string("esc-novelty"));
-    w.put(std::uint32_t{1});
+    w.put(kVersion);
     const StateBytes core = core_.save(), archive = archive_.save();
     w.put(std::string(core.begin(), core.end()));
     w.put(std::string(archive.begin(), archive.end()));
@@ -118,6 +125,7 @@ class NoveltyOptimizer final : public Optimizer {
       w.put(parent_fitness_[i]);
       w.put(std::span<const double>(parent_descriptors_[i]));
     }
+    put_measured(w, measured_);
     return std::move(w).take();
   }
 
@@ -125,8 +133,12 @@ class NoveltyOptimizer final : public Optimizer {
   // optimizer as it was.
   void load(std::span<const std::uint8_t> state) override {
     StateReader r(state);
-    if (r.text() != "esc-novelty" || r.get<std::uint32_t>() != 1)
-      throw std::invalid_argument("novelty search: not a state of novelty search's format 1");
+    // Version 1 kept no origins (measured_state.hpp): its members' are unknown.
+    if (r.text() != "esc-novelty")
+      throw std::invalid_argument("novelty search: not a state of novelty search");
+    const auto version = r.get<std::uint32_t>();
+    if (version != 1 && version != kVersion)
+      throw std::invalid_argument("novelty search: format version " + std::to_string(version) + ", expected 1 or 2");
     const std::string core = r.text(), archive = r.text();
     const double best = r.get<double>();
     std::vector<std::vector<double>> descriptors(r.count(2 * sizeof(double)));
@@ -137,11 +149,14 @@ class NoveltyOptimizer final : public Optimizer {
       if (descriptors[i].size() != archive_.space().size())
         throw std::invalid_argument("novelty search: a parent's descriptors are of another size");
     }
+    std::optional<std::vector<Measured>> measured;
+    if (version == kVersion) measured = get_measured(r);
     r.finish();
     Nsga2 c = core_;
     c.load(std::span(reinterpret_cast<const std::uint8_t*>(core.data()), core.size()));
     if (c.population().size() != descriptors.size())
       throw std::invalid_argument("novelty search: the state's parents and their descriptors differ in number");
+    std::vector<Measured> origins = parents_measured(std::move(measured), descriptors.size(), "novelty search");
     qd::NoveltyArchive a = archive_;
     a.load(std::span(reinterpret_cast<const std::uint8_t*>(archive.data()), archive.size()));
     core_ = std::move(c);
@@ -150,6 +165,7 @@ class NoveltyOptimizer final : public Optimizer {
     best_novelty_ = best;
     parent_descriptors_ = std::move(descriptors);
     parent_fitness_ = std::move(fitness);
+    measured_ = std::move(origins);
   }
 
  private:
@@ -162,6 +178,7 @@ class NoveltyOptimizer final : public Optimizer {
   std::size_t archived_before_ = 0;
   std::vector<std::vector<double>> parent_descriptors_;   // aligned with core_.population()
   std::vector<double> parent_fitness_;
+  std::vector<Measured> measured_;   // aligned with core_.population()
   double best_novelty_ = 0.0;
 };
 

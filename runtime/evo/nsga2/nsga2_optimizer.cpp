@@ -5,12 +5,16 @@
 #include <string>
 
 #include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
 #include "runtime/evo/run_streams.hpp"
 
 namespace esc::evo {
 
 namespace {
+
+// The run-level state's tag (measured_state.hpp): the core's state and the parents' origins.
+constexpr std::string_view kRunTag = "esc-nsga2-run";
 
 class Nsga2Optimizer final : public Optimizer {
  public:
@@ -23,6 +27,7 @@ class Nsga2Optimizer final : public Optimizer {
   }
 
   std::vector<Genome> ask(int generation) override {
+    generation_ = generation;
     Rng rng = breed_stream(seed_, generation);
     return core_.ask(rng);
   }
@@ -35,7 +40,7 @@ class Nsga2Optimizer final : public Optimizer {
                                     " objectives for a problem of " + std::to_string(objectives_));
       for (const double v : outcomes[i].objectives) f[i].push_back(-v);
     }
-    core_.tell(f);
+    measured_ = survivors_measured(measured_, generation_, core_.tell(f));
   }
 
   std::vector<Metric> metrics() const override {
@@ -58,21 +63,49 @@ class Nsga2Optimizer final : public Optimizer {
       x.cell = static_cast<std::int64_t>(i);
       for (const double v : core_.objectives()[front[i]]) x.objectives.push_back(-v);
       if (!changes) x.genome = core_.population()[front[i]];
+      x.measured = measured_[front[i]];
     }
     return m;
   }
 
-  StateBytes save() const override { return core_.save(); }
-  void load(std::span<const std::uint8_t> state) override { core_.load(state); }
+  StateBytes save() const override { return save_with_measured(kRunTag, core_.save(), measured_); }
+  void load(std::span<const std::uint8_t> state) override {
+    auto [core, measured] = read_with_measured(kRunTag, state);
+    Nsga2 c = core_;
+    c.load(core);
+    measured_ = parents_measured(std::move(measured), c.population().size(), "NSGA-II");
+    core_ = std::move(c);
+  }
 
  private:
   Nsga2 core_;
   std::uint64_t seed_;
   std::size_t objectives_;
   std::vector<double> reference_;
+  int generation_ = 0;                 // of the last ask
+  std::vector<Measured> measured_;     // aligned with core_.population()
 };
 
 }  // namespace
+
+std::vector<Measured> survivors_measured(const std::vector<Measured>& parents, int generation,
+                                         std::span<const std::size_t> kept) {
+  std::vector<Measured> out;
+  out.reserve(kept.size());
+  for (const std::size_t i : kept)
+    out.push_back(i < parents.size() ? parents[i]
+                                     : Measured{generation, static_cast<std::uint64_t>(i - parents.size())});
+  return out;
+}
+
+std::vector<Measured> parents_measured(std::optional<std::vector<Measured>> stored, std::size_t parents,
+                                       const std::string& what) {
+  if (!stored) return std::vector<Measured>(parents);
+  if (stored->size() != parents)
+    throw std::invalid_argument(what + " state: " + std::to_string(stored->size()) + " origins for " +
+                                std::to_string(parents) + " parents");
+  return std::move(*stored);
+}
 
 std::vector<double> hypervolume_reference(const Problem& problem) {
   const std::size_t n = problem.objectives.size();

@@ -8,6 +8,9 @@
 // reference point (in the objectives' maximised terms, a minimised one counted negated).
 #include <cstddef>
 #include <memory>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "runtime/evo/nsga2/nsga2.hpp"
@@ -32,5 +35,14 @@ namespace esc::evo {
 // The hypervolume's reference point in the core's minimised terms (each objective's declared
 // worst value, negated), or empty when there are not 2 or 3 objectives or one has no range.
 [[nodiscard]] std::vector<double> hypervolume_reference(const Problem& problem);
+
+// Where the survivors of a tell were measured: `kept` as Nsga2::tell returns it (indices into
+// the parents, then the candidates of `generation`'s ask), `parents` aligned with the parents.
+[[nodiscard]] std::vector<Measured> survivors_measured(const std::vector<Measured>& parents, int generation,
+                                                       std::span<const std::size_t> kept);
+// The parents' origins read from a state (measured_state.hpp), unknown for a state saved
+// before they were kept; std::invalid_argument (naming `what`) when they are not one per parent.
+[[nodiscard]] std::vector<Measured> parents_measured(std::optional<std::vector<Measured>> stored, std::size_t parents,
+                                                     const std::string& what);
 
 }  // namespace esc::evo
