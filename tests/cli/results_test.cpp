@@ -197,31 +197,35 @@ TEST(Results, ReportRendersInHeadlessChromium) {
 }
 
 // The report of a study of four optimizers (the widest figures: three panels and a legend)
-// fits a window 1280 pixels wide: neither the page nor any figure, table or card scrolls
+// and of an experiment of three controllers (the widest table: their pairwise comparisons)
+// fit a window 1280 pixels wide: neither the page nor any figure, table or card scrolls
 // sideways. Measured in the page itself, loaded in a frame of that width.
 TEST(Results, AReportFitsAWindow1280PixelsWide) {
   if (std::string(ESC_CHROMIUM).empty())
     GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
-  const fs::path out = scratch("report-width");
-  const std::string mazes = std::string(ESC_SOURCE_DIR) + "/experiments/lehman_stanley/mazes.esc";
-  ASSERT_EQ(esc("run " + mazes + " --runs 2 --generations 3 --set steps=20 --out " + out.string()).status, 0);
-  ASSERT_EQ(esc("report " + out.string()).status, 0);
-  std::ofstream(out / "probe.html")
-      << "<!DOCTYPE html><html><body><iframe id=\"f\" src=\"report.html\" style=\"width:1280px;height:3000px\">"
-         "</iframe><script>document.getElementById('f').onload = () => setTimeout(() => {"
-         "const d = document.getElementById('f').contentDocument, de = d.documentElement;"
-         "const wide = [...d.querySelectorAll('.figure .svg, .card, table, section')]"
-         ".filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.className + ' ' + e.scrollWidth);"
-         "document.body.setAttribute('data-probe', (de.scrollWidth > de.clientWidth ? 'page ' : '') + wide.join(', ') + "
-         "'|measured');}, 1500);</script></body></html>";
-  const Outcome dom = shell("timeout 90 " + std::string(ESC_CHROMIUM) +
-                            " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --allow-file-access-from-files "
-                            "--user-data-dir=" + (out / "profile").string() +
-                            " --virtual-time-budget=8000 --dump-dom file://" + (out / "probe.html").string() +
-                            " 2>/dev/null");
-  ASSERT_EQ(dom.status, 0) << dom.output.substr(0, 2000);
-  EXPECT_NE(dom.output.find("data-probe=\"|measured\""), std::string::npos)
-      << "wider than 1280 pixels: " << dom.output.substr(std::min(dom.output.find("data-probe"), dom.output.size()), 300);
+  for (const std::string script : {"lehman_stanley/mazes.esc", "examples/homing.esc"}) {
+    SCOPED_TRACE(script);
+    const fs::path out = scratch("report-width-" + fs::path(script).stem().string());
+    ASSERT_EQ(esc("run " + std::string(ESC_SOURCE_DIR) + "/experiments/" + script +
+                  " --runs 2 --generations 3 --set steps=20 --out " + out.string()).status, 0);
+    ASSERT_EQ(esc("report " + out.string()).status, 0);
+    std::ofstream(out / "probe.html")
+        << "<!DOCTYPE html><html><body><iframe id=\"f\" src=\"report.html\" style=\"width:1280px;height:3000px\">"
+           "</iframe><script>document.getElementById('f').onload = () => setTimeout(() => {"
+           "const d = document.getElementById('f').contentDocument, de = d.documentElement;"
+           "const wide = [...d.querySelectorAll('.figure .svg, .card, table, section')]"
+           ".filter(e => e.scrollWidth > e.clientWidth + 1).map(e => e.className + ' ' + e.scrollWidth);"
+           "document.body.setAttribute('data-probe', (de.scrollWidth > de.clientWidth ? 'page ' : '') + wide.join(', ') + "
+           "'|measured');}, 1500);</script></body></html>";
+    const Outcome dom = shell("timeout 90 " + std::string(ESC_CHROMIUM) +
+                              " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --allow-file-access-from-files "
+                              "--user-data-dir=" + (out / "profile").string() +
+                              " --virtual-time-budget=8000 --dump-dom file://" + (out / "probe.html").string() +
+                              " 2>/dev/null");
+    ASSERT_EQ(dom.status, 0) << dom.output.substr(0, 2000);
+    EXPECT_NE(dom.output.find("data-probe=\"|measured\""), std::string::npos)
+        << "wider than 1280 pixels: " << dom.output.substr(std::min(dom.output.find("data-probe"), dom.output.size()), 300);
+  }
 }
 
 }  // namespace

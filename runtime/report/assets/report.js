@@ -164,19 +164,22 @@
                                   fmt(s.best, d), fmt(s.worst, d)].map(v => el('td', {text: v}))));
     }
     card.appendChild(t);
-    pairsTable(card, exp.stats.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
+    parent.appendChild(card);
+    // The comparisons' tables are wider than half a window: a card across the grid's row.
+    const compared = el('div', {class: 'card wide'});
+    pairsTable(compared, exp.stats.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
     if (exp.success) {
-      card.appendChild(el('h3', {text: `Success: ${exp.success.test}`}));
+      compared.appendChild(el('h3', {text: `Success: ${exp.success.test}`}));
       const s = el('table');
       s.appendChild(el('tr', {}, ['controller', 'successes', 'runs', 'median evaluations to success']
         .map(h => el('th', {text: h}))));
       for (const c of exp.success.controllers)
         s.appendChild(el('tr', {}, [c.controller, String(c.successes), String(c.runs), evaluations(c.median_evaluations)]
           .map(v => el('td', {text: v}))));
-      card.appendChild(s);
-      successPairsTable(card, exp.success.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
+      compared.appendChild(s);
+      successPairsTable(compared, exp.success.pairs, r => `${r.a} vs ${r.b}`, 'the pairs of this table');
     }
-    parent.appendChild(card);
+    if (compared.children.length > 0) parent.appendChild(compared);
   }
 
   // "3/40 (1250)": runs that succeeded, of all, and the median of their evaluations to success.
