@@ -19,7 +19,7 @@ from esc._esc import __version__
 from esc.env import Box, Env, Policy
 from esc.errors import Diagnostic, Error, ScriptError, ScriptWarning
 from esc.evaluation import evaluate, evaluation_seed, measure, run_seed
-from esc.results import BestEvaluation, Run, open
+from esc.results import BestEvaluation, Member, Run, open
 from esc.running import Generation, resume, run
 from esc.script import Controller, Script, compile
 
@@ -28,7 +28,7 @@ __all__ = [
     "Box", "Env", "Policy",
     "Diagnostic", "Error", "ScriptError", "ScriptWarning",
     "evaluate", "evaluation_seed", "measure", "run_seed",
-    "BestEvaluation", "Run", "open",
+    "BestEvaluation", "Member", "Run", "open",
     "Generation", "resume", "run",
     "Controller", "Script", "compile",
 ]

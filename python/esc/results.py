@@ -10,9 +10,8 @@ from typing import List, Optional, Union
 import numpy as np
 
 from esc import _esc
+from esc._library import standard_library
 from esc.errors import Error
-
-TABLES = ("generations", "usage", "metrics")
 
 
 @dataclass(frozen=True)
@@ -31,6 +30,27 @@ class BestEvaluation:
     evaluation_seed: int
     genome: np.ndarray
     tree: Optional[str]
+
+
+@dataclass(frozen=True)
+class Member:
+    """A member of a run's final Pareto front (NSGA-II; novelty and fitness) or an elite of
+    its final archive (MAP-Elites): `kind` "front" or "archive", `cell` its position in the
+    front or its archive cell, `objectives` by name as the front and archive tables hold them
+    (the optimizer's own, such as novelty, first; then the experiment's as declared),
+    `descriptors` in the experiment's order, and `genome`. `generation` and `candidate` (from
+    0) say which evaluation measured it and `evaluation_seed` that evaluation's seed:
+    esc.evaluate of `genome` with that seed and the run's settings gives its fitness exactly.
+    All three are None for a run stored by an esc that did not record them."""
+
+    kind: str
+    cell: int
+    objectives: dict
+    descriptors: np.ndarray
+    genome: np.ndarray
+    generation: Optional[int]
+    candidate: Optional[int]
+    evaluation_seed: Optional[int]
 
 
 class Run:
@@ -102,6 +122,16 @@ class Run:
         d = self._stored.best(controller, run, condition or "")
         return BestEvaluation(d["run"], d["run_seed"], d["fitness"], d["generation"], d["individual"],
                               d["evaluation_seed"], d["genome"], d["tree"])
+
+    def members(self, controller: str, run: int, condition: Optional[str] = None) -> List[Member]:
+        """What finished run `run` (from 1) of `controller` kept beside its best: its final
+        front or archive, genomes included, rebuilt from the optimizer's stored state with the
+        experiment compiled from the run's stored sources. Novelty search without the fitness
+        keeps behaviors alone: its members are the archived descriptors, without objectives or
+        genome. esc.Error when the optimizer keeps no members (the ES, CMA-ES, GP) or the run
+        is not finished; ValueError for a controller or condition the directory does not hold."""
+        found = self._stored.members(controller, run, condition or "", os.fspath(standard_library()))
+        return [Member(**d) for d in found]
 
     def best_genome(self, controller: str, run: int, condition: Optional[str] = None,
                     encoded: bool = False) -> Union[np.ndarray, str]:

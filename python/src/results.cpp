@@ -11,7 +11,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "app/import_path.hpp"
 #include "app/results.hpp"
+#include "app/stored_run.hpp"
 #include "compiler/names.hpp"
 #include "python/src/bindings.hpp"
 #include "runtime/eval/campaign.hpp"
@@ -58,6 +60,47 @@ class StoredRun {
       for (const store::StoredController& c : e.controllers)
         if (std::find(names.begin(), names.end(), c.name) == names.end()) names.push_back(c.name);
     return names;
+  }
+
+  // What run `run` (from 1) of `controller` kept beside its best after its last generation:
+  // its front or archive, each member with its genome and, where the state records it, the
+  // evaluation that measured it. The experiment is compiled from the run's stored sources.
+  [[nodiscard]] py::list members(const std::string& controller, int run, const std::string& condition,
+                                 const std::filesystem::path& standard_library) const {
+    const store::StoredExperiment& e = find_experiment(condition);
+    const store::StoredController& c = find_controller(e, controller);
+    const app::StoredRun stored{&e, dir_.path, dir_.path};
+    app::Events quiet;   // the script's warnings were the run's, given when it ran
+    const eval::ExperimentSpec spec = app::experiment_of_run(stored, app::compile_options(standard_library), quiet);
+    const evo::Members kept = app::final_members(stored, spec, c.name, run - 1);
+    const eval::RunResult& result = *app::finished_run(stored, c.name, run - 1).run;
+    py::list out;
+    for (const evo::Member& m : kept.members) {
+      // As the front and archive tables hold them: the optimizer's own objectives, then the
+      // experiment's as declared (a minimised one not negated).
+      py::dict objectives;
+      for (std::size_t i = 0; i < m.objectives.size(); ++i) {
+        const std::size_t own = kept.own_objectives.size();
+        if (i < own) objectives[py::str(kept.own_objectives[i])] = m.objectives[i];
+        else objectives[py::str(i == own ? spec.fitness.name : spec.further[i - own - 1].name)] =
+            spec.as_declared(i - own, m.objectives[i]);
+      }
+      py::dict d;
+      d["kind"] = kept.kind == evo::MemberKind::Front ? "front" : "archive";
+      d["cell"] = m.cell;
+      d["objectives"] = objectives;
+      d["descriptors"] = py::array_t<double>(static_cast<py::ssize_t>(m.descriptors.size()), m.descriptors.data());
+      d["genome"] = py::array_t<double>(static_cast<py::ssize_t>(m.genome.size()), m.genome.data());
+      const bool known = m.measured.known();
+      d["generation"] = known ? py::object(py::int_(m.measured.generation)) : py::object(py::none());
+      d["candidate"] = known ? py::object(py::int_(m.measured.candidate)) : py::object(py::none());
+      d["evaluation_seed"] = known ? py::object(py::int_(eval::evaluation_seed(
+                                         result.seed, static_cast<int>(m.measured.generation),
+                                         static_cast<std::size_t>(m.measured.candidate))))
+                                   : py::object(py::none());
+      out.append(d);
+    }
+    return out;
   }
 
   // Run `run` (from 1) of `controller`: its best genome and where its best evaluation happened.
@@ -131,7 +174,12 @@ void bind_results(py::module_& m) {
       .def_property_readonly("controllers", &StoredRun::controllers, "The controllers compared, in order.")
       .def("best", &StoredRun::best, py::arg("controller"), py::arg("run"), py::arg("condition") = "",
            "Finished run `run` (from 1) of `controller`: a dict of run, run_seed, fitness, generation, individual, "
-           "evaluation_seed, genome (network weights, or a tree encoded) and tree (a tree's text, else None).");
+           "evaluation_seed, genome (network weights, or a tree encoded) and tree (a tree's text, else None).")
+      .def("members", &StoredRun::members, py::arg("controller"), py::arg("run"), py::arg("condition"),
+           py::arg("standard_library"),
+           "The final front or archive of finished run `run` (from 1) of `controller`: a list of dicts of kind, "
+           "cell, objectives, descriptors, genome, generation, candidate and evaluation_seed (None where the "
+           "state does not record them).");
 }
 
 }  // namespace esc::python

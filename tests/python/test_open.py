@@ -51,6 +51,31 @@ def test_an_archive_is_a_table_any_generation_of_it_is_read_back_from(tmp_path):
     assert run.table("front").empty
 
 
+@pytest.mark.parametrize("example", ["behavior_map", "speed_energy"])
+def test_members_are_measured_again_in_their_own_evaluations(tmp_path, example):
+    """A final archive's elites (MAP-Elites) and a final front's members (NSGA-II), random
+    starts both: their genomes, measured again with the seeds of the evaluations that measured
+    them, give back every stored objective and descriptor bit for bit."""
+    script = EXPERIMENTS / "examples" / f"{example}.esc"
+    directory = tmp_path / example
+    run_esc("run", script, "--runs", 1, "--generations", 3, "--set", "epochs=1", "--out", directory)
+    run = esc.open(directory)
+    controller = run.controllers[0]
+    members = run.members(controller, 1)
+    assert members and {m.kind for m in members} == {"archive" if example == "behavior_map" else "front"}
+    assert all(m.evaluation_seed is not None and 0 <= m.generation < 3 for m in members)
+    measured = esc.measure(esc.compile(script, {"epochs": 1}), run.experiments[0], controller,
+                           np.array([m.genome for m in members]), seed=[m.evaluation_seed for m in members])
+    for m, (_, row) in zip(members, measured.iterrows()):
+        assert m.objectives and all(row[name] == value for name, value in m.objectives.items()), m.cell
+        assert m.descriptors.tolist() == row.iloc[len(row) - len(m.descriptors):].tolist(), m.cell
+
+
+def test_an_optimizer_without_members_is_an_error(homing_run):
+    with pytest.raises(esc.Error, match="keeps no front or archive"):
+        esc.open(homing_run).members("SC", 1)
+
+
 def test_a_studys_table_conditions_and_best(study_run):
     run = esc.open(study_run)
     assert run.study == "tiny"
