@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -20,7 +23,23 @@ constexpr std::size_t kColourCount = std::size(kColours);
 
 constexpr double kLeft = 58.0, kRight = 12.0, kTop = 26.0, kBottom = 42.0;
 constexpr double kCharWidth = 7.0;   // of the 11-pixel DejaVu Sans text (0.63 em), roughly
-constexpr double kTitleHeight = 26.0, kNoteHeight = 20.0, kLegendRow = 16.0;
+constexpr double kTitleHeight = 26.0, kNoteHeight = 20.0, kNoteLine = 13.0, kLegendRow = 16.0;
+constexpr double kNoteCharWidth = kCharWidth * 10.0 / 11.0;   // the note is 10-pixel text
+
+// `text` in lines of at most `chars` characters, broken at spaces (a longer word stands alone).
+std::vector<std::string> wrapped(const std::string& text, std::size_t chars) {
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t space = std::min(text.find(' ', at), text.size());
+    const std::string word = text.substr(at, space - at);
+    if (!line.empty() && line.size() + 1 + word.size() > chars) lines.push_back(std::exchange(line, {}));
+    line += (line.empty() ? "" : " ") + word;
+    at = space + 1;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
 
 std::string px(double v) { return fmt::format("{:.1f}", v); }
 
@@ -250,7 +269,11 @@ std::string render(const Figure& f) {
   const double panels_height = static_cast<double>(rows) * cell_height;
   const double legend_height = static_cast<double>(f.legend.size()) * kLegendRow + 8.0;
   const double width = std::max(static_cast<double>(columns) * f.panel_width + legend_width, title_width(f.title.size()));
-  const double height = top + std::max(panels_height, legend_height) + (f.note.empty() ? 4.0 : kNoteHeight);
+  // The note under the figure, in as many lines as its width needs.
+  const std::vector<std::string> note =
+      wrapped(f.note, static_cast<std::size_t>(std::max(20.0, (width - 16.0) / kNoteCharWidth)));
+  const double note_height = note.empty() ? 4.0 : kNoteHeight + kNoteLine * static_cast<double>(note.size() - 1);
+  const double height = top + std::max(panels_height, legend_height) + note_height;
 
   std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
@@ -270,9 +293,9 @@ std::string render(const Figure& f) {
                        stroke(series_style(e.style), e.dash, 2.0));
     out += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", px(lx + 34), px(ly), escape_markup(e.label));
   }
-  if (!f.note.empty())
-    out += fmt::format("<text x=\"8\" y=\"{}\" font-size=\"10\" fill=\"#555\">{}</text>\n", px(height - 6),
-                       escape_markup(f.note));
+  for (std::size_t i = 0; i < note.size(); ++i)
+    out += fmt::format("<text x=\"8\" y=\"{}\" font-size=\"10\" fill=\"#555\">{}</text>\n",
+                       px(height - 6 - kNoteLine * static_cast<double>(note.size() - 1 - i)), escape_markup(note[i]));
   out += "</svg>\n";
   return out;
 }

@@ -89,6 +89,34 @@ TEST(SvgPlot, LinesBreakAtNaNAndEscapeTheirText) {
   EXPECT_EQ(svg.find(">0.5</text>"), std::string::npos);
 }
 
+// A note longer than the figure is wide goes on as many lines as it needs, every word kept;
+// a short one stays one line, where it always was.
+TEST(SvgPlot, ALongNoteWrapsWithinTheFigure) {
+  Figure f;
+  Panel p{"t", "generation", "fitness", {}, {}, {}, true};
+  p.lines.push_back({"one", 0, {0, 1}, {1, 2}, {}, {}, false, false, {}});
+  f.panels = {p};
+  f.note = "short";
+  const std::string one = render(f);
+  EXPECT_EQ(count(one, "font-size=\"10\" fill=\"#555\""), 1u);
+  std::string words = "quartile";
+  for (int i = 1; i < 40; ++i) words.append(" quartile");
+  f.note = words;
+  const std::string svg = render(f);
+  const std::size_t lines = count(svg, "font-size=\"10\" fill=\"#555\"");
+  EXPECT_GE(lines, 3u) << "360 characters under one panel of " << f.panel_width << " pixels";
+  EXPECT_EQ(count(svg, "quartile"), 40u);
+  const double width = std::stod(svg.substr(svg.find("width=\"") + 7));
+  for (std::size_t at = svg.find("fill=\"#555\">"); at != std::string::npos; at = svg.find("fill=\"#555\">", at + 1)) {
+    const std::size_t from = at + 13, to = svg.find("</text>", from);
+    EXPECT_LE(8.0 + static_cast<double>(to - from) * 7.0 * 10.0 / 11.0, width) << svg.substr(from, to - from);
+  }
+  // The figure grows by the lines it added.
+  const double height = std::stod(svg.substr(svg.find("height=\"") + 8));
+  const double short_height = std::stod(one.substr(one.find("height=\"") + 8));
+  EXPECT_DOUBLE_EQ(height - short_height, 13.0 * static_cast<double>(lines - 1));
+}
+
 TEST(SvgPlot, ManyCategoriesTurnTheirLabelsAndTheLegendGrows) {
   Figure f;
   Panel p{"", "condition", "best", {}, {}, {}, false};

@@ -102,8 +102,9 @@ TEST(UsageFigure, MedianAndQuartilesNeverGoBelowZero) {
   c.finished[1].generations[0].usage.best = {0, 100};   // `go` 25 and 0: mean 12.5, sd 17.7
   const std::vector<NamedFigure> f = usage_figures(experiment(c), "e");
   ASSERT_EQ(f.size(), 1u);
-  EXPECT_NE(f[0].svg.find("line: median over the finished runs; band: from the first to the third quartile"),
-            std::string::npos);
+  // The note, wrapped to the figure's width.
+  EXPECT_NE(f[0].svg.find("line: median over the finished runs; band: from the"), std::string::npos);
+  EXPECT_NE(f[0].svg.find(">first to the third quartile across runs.<"), std::string::npos);
   // The axis covers the bands: no tick below 0.
   EXPECT_EQ(f[0].svg.find(">-"), std::string::npos);
   EXPECT_EQ(f[0].svg.find(">\u2212"), std::string::npos);
