@@ -159,8 +159,7 @@ bool pick_member(Subject& s, const evo::Members& kept, std::int64_t member) {
   // Its own evaluation, where the state says which it was; a state saved before origins were
   // kept leaves the run's best's seed, exact wherever evaluations draw nothing.
   if (it->measured.known()) {
-    s.seed = eval::evaluation_seed(s.run_seed, static_cast<int>(it->measured.generation),
-                                   static_cast<std::size_t>(it->measured.candidate));
+    s.seed = eval::evaluation_seed_of(s.run_seed, it->measured);
     s.fitness = s.member_fitness;
     s.member_fitness.reset();
   }

@@ -74,17 +74,13 @@ class StoredRun {
     const eval::ExperimentSpec spec = app::experiment_of_run(stored, app::compile_options(standard_library), quiet);
     const evo::Members kept = app::final_members(stored, spec, c.name, run - 1);
     const eval::RunResult& result = *app::finished_run(stored, c.name, run - 1).run;
+    // Named as the front and archive tables name them, a minimised objective not negated.
+    const auto layout = eval::member_layout(spec, kept);
     py::list out;
     for (const evo::Member& m : kept.members) {
-      // As the front and archive tables hold them: the optimizer's own objectives, then the
-      // experiment's as declared (a minimised one not negated).
       py::dict objectives;
-      for (std::size_t i = 0; i < m.objectives.size(); ++i) {
-        const std::size_t own = kept.own_objectives.size();
-        if (i < own) objectives[py::str(kept.own_objectives[i])] = m.objectives[i];
-        else objectives[py::str(i == own ? spec.fitness.name : spec.further[i - own - 1].name)] =
-            spec.as_declared(i - own, m.objectives[i]);
-      }
+      for (std::size_t i = 0; i < m.objectives.size() && i < layout->objectives.size(); ++i)
+        objectives[py::str(layout->objectives[i])] = layout->minimized[i] ? -m.objectives[i] : m.objectives[i];
       py::dict d;
       d["kind"] = kept.kind == evo::MemberKind::Front ? "front" : "archive";
       d["cell"] = m.cell;
@@ -94,10 +90,8 @@ class StoredRun {
       const bool known = m.measured.known();
       d["generation"] = known ? py::object(py::int_(m.measured.generation)) : py::object(py::none());
       d["candidate"] = known ? py::object(py::int_(m.measured.candidate)) : py::object(py::none());
-      d["evaluation_seed"] = known ? py::object(py::int_(eval::evaluation_seed(
-                                         result.seed, static_cast<int>(m.measured.generation),
-                                         static_cast<std::size_t>(m.measured.candidate))))
-                                   : py::object(py::none());
+      d["evaluation_seed"] =
+          known ? py::object(py::int_(eval::evaluation_seed_of(result.seed, m.measured))) : py::object(py::none());
       out.append(d);
     }
     return out;

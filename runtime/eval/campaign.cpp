@@ -132,6 +132,28 @@ std::uint64_t evaluation_seed(std::uint64_t run_seed, int generation, std::size_
                                 static_cast<std::uint64_t>(index)});
 }
 
+// As many objectives and descriptors as each member keeps.
+std::shared_ptr<const MemberLayout> member_layout(const ExperimentSpec& spec, evo::Members kept) {
+  auto layout = std::make_shared<MemberLayout>();
+  layout->kind = kept.kind;
+  for (const std::string& own : kept.own_objectives) {
+    layout->objectives.push_back(own);
+    layout->minimized.push_back(false);
+  }
+  for (std::size_t i = 0; i + kept.own_objectives.size() < kept.objectives; ++i) {
+    layout->objectives.push_back(i == 0 ? spec.fitness.name : spec.further[i - 1].name);
+    layout->minimized.push_back(spec.minimized(i));
+  }
+  for (std::size_t i = 0; i < kept.descriptors && i < spec.descriptors.size(); ++i) {
+    const DescriptorSpec& d = spec.descriptors[i];
+    layout->descriptors.push_back(d.name);
+    layout->descriptor_ranges.push_back({d.range.lower, d.range.upper});
+  }
+  layout->bins = std::move(kept.bins);
+  layout->centroids = std::move(kept.centroids);
+  return layout;
+}
+
 std::uint64_t run_seed(std::uint64_t master_seed, int run) noexcept {
   return derive_seed(master_seed, {static_cast<std::uint64_t>(Stream::RunSeed), static_cast<std::uint64_t>(run)});
 }

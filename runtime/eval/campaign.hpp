@@ -6,6 +6,7 @@
 // evaluation's stream is derived from (run seed, generation, individual), so results are
 // bit-identical for any thread count.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -60,6 +61,15 @@ struct RunResult {
 
 // Seed of the evaluation of offspring `index` of generation `generation` of a run.
 [[nodiscard]] std::uint64_t evaluation_seed(std::uint64_t run_seed, int generation, std::size_t index) noexcept;
+// Seed of the evaluation that measured a front member or archive elite (`measured` known).
+[[nodiscard]] inline std::uint64_t evaluation_seed_of(std::uint64_t run_seed, const evo::Measured& measured) noexcept {
+  return evaluation_seed(run_seed, static_cast<int>(measured.generation), static_cast<std::size_t>(measured.candidate));
+}
+
+// What the store names the values and cells `kept` holds (each run's first generation makes
+// it): the optimizer's own objectives, then the experiment's (the fitness first) with which
+// are minimised, and its descriptors.
+[[nodiscard]] std::shared_ptr<const MemberLayout> member_layout(const ExperimentSpec& spec, evo::Members kept);
 
 struct ControllerResult {
   std::string name;

@@ -33,29 +33,6 @@ std::string behavior_body(const control::ControllerSpec& controller, const evo::
   }
 }
 
-// The store's names for what `kept` holds: the optimizer's own objectives, then the
-// experiment's first (the fitness first) and its descriptors, as many as each member keeps.
-std::shared_ptr<const MemberLayout> layout_of(const ExperimentSpec& spec, evo::Members kept) {
-  auto layout = std::make_shared<MemberLayout>();
-  layout->kind = kept.kind;
-  for (const std::string& own : kept.own_objectives) {
-    layout->objectives.push_back(own);
-    layout->minimized.push_back(false);
-  }
-  for (std::size_t i = 0; i + kept.own_objectives.size() < kept.objectives; ++i) {
-    layout->objectives.push_back(i == 0 ? spec.fitness.name : spec.further[i - 1].name);
-    layout->minimized.push_back(spec.minimized(i));
-  }
-  for (std::size_t i = 0; i < kept.descriptors && i < spec.descriptors.size(); ++i) {
-    const DescriptorSpec& d = spec.descriptors[i];
-    layout->descriptors.push_back(d.name);
-    layout->descriptor_ranges.push_back({d.range.lower, d.range.upper});
-  }
-  layout->bins = std::move(kept.bins);
-  layout->centroids = std::move(kept.centroids);
-  return layout;
-}
-
 }  // namespace
 
 RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& controller, int run, const RunState* from)
@@ -69,7 +46,7 @@ RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& contro
   problem.seed = state_.seed;
   problem.start = start != nullptr ? &start->genome : nullptr;
   RunOptimizer made = make_run_optimizer(spec, controller, problem);
-  if (auto kept = made.optimizer->members(false)) state_.member_layout = layout_of(spec, std::move(*kept));
+  if (auto kept = made.optimizer->members(false)) state_.member_layout = member_layout(spec, std::move(*kept));
   // A run that only evaluates has no state to go on from (and one stored by an esc before
   // schema 6 is its ES's or GP's).
   if (from == nullptr || from->generations.empty() || spec.evaluates_only()) {

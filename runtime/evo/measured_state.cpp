@@ -49,4 +49,13 @@ CoreAndMeasured read_with_measured(std::string_view tag, std::span<const std::ui
   return {StateBytes(core.begin(), core.end()), std::move(measured)};
 }
 
+std::vector<Measured> measured_for(std::optional<std::vector<Measured>> stored, std::size_t count,
+                                   const std::string& what, const std::string& members) {
+  if (!stored) return std::vector<Measured>(count);
+  if (stored->size() != count)
+    throw std::invalid_argument(what + " state: " + std::to_string(stored->size()) + " origins for " +
+                                std::to_string(count) + " " + members);
+  return std::move(*stored);
+}
+
 }  // namespace esc::evo

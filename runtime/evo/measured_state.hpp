@@ -7,6 +7,7 @@
 // core's bytes alone, which begin with the core's own tag: it reads with every origin unknown.
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -29,5 +30,11 @@ struct CoreAndMeasured {
 // The core's bytes and the origins of a state save_with_measured wrote under `tag`, or of
 // an older one (the core's bytes alone). std::invalid_argument for a damaged state.
 [[nodiscard]] CoreAndMeasured read_with_measured(std::string_view tag, std::span<const std::uint8_t> bytes);
+
+// The origins read from a state for `count` members (`members`: "parents", "filled cells"),
+// all unknown for a state saved before they were kept; std::invalid_argument, naming `what`
+// (the algorithm), when there is not one per member.
+[[nodiscard]] std::vector<Measured> measured_for(std::optional<std::vector<Measured>> stored, std::size_t count,
+                                                 const std::string& what, const std::string& members);
 
 }  // namespace esc::evo

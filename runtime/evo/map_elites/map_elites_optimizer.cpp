@@ -141,12 +141,10 @@ class MapElitesOptimizer final : public Optimizer {
     qd::MapElites core = core_;
     core.load(bytes);
     const std::span<const std::size_t> cells = core.archive().filled_cells();
-    if (stored && stored->size() != cells.size())
-      throw std::invalid_argument("MAP-Elites state: " + std::to_string(stored->size()) + " origins for " +
-                                  std::to_string(cells.size()) + " filled cells");
+    const std::vector<Measured> origins = measured_for(std::move(stored), cells.size(), "MAP-Elites", "filled cells");
     std::unordered_map<std::size_t, Measured> measured;
-    if (stored)
-      for (std::size_t i = 0; i < cells.size(); ++i) measured[cells[i]] = (*stored)[i];
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (origins[i].known()) measured[cells[i]] = origins[i];
     core_ = std::move(core);
     measured_ = std::move(measured);
     changed_.clear();

@@ -156,7 +156,7 @@ class NoveltyOptimizer final : public Optimizer {
     c.load(std::span(reinterpret_cast<const std::uint8_t*>(core.data()), core.size()));
     if (c.population().size() != descriptors.size())
       throw std::invalid_argument("novelty search: the state's parents and their descriptors differ in number");
-    std::vector<Measured> origins = parents_measured(std::move(measured), descriptors.size(), "novelty search");
+    std::vector<Measured> origins = measured_for(std::move(measured), descriptors.size(), "novelty search", "parents");
     qd::NoveltyArchive a = archive_;
     a.load(std::span(reinterpret_cast<const std::uint8_t*>(archive.data()), archive.size()));
     core_ = std::move(c);

@@ -73,7 +73,7 @@ class Nsga2Optimizer final : public Optimizer {
     auto [core, measured] = read_with_measured(kRunTag, state);
     Nsga2 c = core_;
     c.load(core);
-    measured_ = parents_measured(std::move(measured), c.population().size(), "NSGA-II");
+    measured_ = measured_for(std::move(measured), c.population().size(), "NSGA-II", "parents");
     core_ = std::move(c);
   }
 
@@ -98,14 +98,6 @@ std::vector<Measured> survivors_measured(const std::vector<Measured>& parents, i
   return out;
 }
 
-std::vector<Measured> parents_measured(std::optional<std::vector<Measured>> stored, std::size_t parents,
-                                       const std::string& what) {
-  if (!stored) return std::vector<Measured>(parents);
-  if (stored->size() != parents)
-    throw std::invalid_argument(what + " state: " + std::to_string(stored->size()) + " origins for " +
-                                std::to_string(parents) + " parents");
-  return std::move(*stored);
-}
 
 std::vector<double> hypervolume_reference(const Problem& problem) {
   const std::size_t n = problem.objectives.size();

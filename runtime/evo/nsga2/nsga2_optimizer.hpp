@@ -8,9 +8,7 @@
 // reference point (in the objectives' maximised terms, a minimised one counted negated).
 #include <cstddef>
 #include <memory>
-#include <optional>
 #include <span>
-#include <string>
 #include <vector>
 
 #include "runtime/evo/nsga2/nsga2.hpp"
@@ -40,9 +38,5 @@ namespace esc::evo {
 // the parents, then the candidates of `generation`'s ask), `parents` aligned with the parents.
 [[nodiscard]] std::vector<Measured> survivors_measured(const std::vector<Measured>& parents, int generation,
                                                        std::span<const std::size_t> kept);
-// The parents' origins read from a state (measured_state.hpp), unknown for a state saved
-// before they were kept; std::invalid_argument (naming `what`) when they are not one per parent.
-[[nodiscard]] std::vector<Measured> parents_measured(std::optional<std::vector<Measured>> stored, std::size_t parents,
-                                                     const std::string& what);
 
 }  // namespace esc::evo
