@@ -74,10 +74,10 @@ void print_success_comparisons(const std::vector<report::SuccessComparison>& row
                fmt::format("{}/{} vs {}/{}", c.successes_a, c.runs_a, c.successes_b, c.runs_b),
                p_text(c.fisher.p_value), p_text(c.fisher_p_holm), number_or_na(c.fisher.odds_ratio, 2),
                number_or_na(c.censored.statistic, 1), p_text(c.censored.p_value), p_text(c.censored_p_holm),
-               fmt::format("{:.0f}", c.censored_at));
+               std::isnan(c.censored_at) ? std::string("none") : fmt::format("{:.0f}", c.censored_at));
   fmt::print("Holm: p adjusted over the {} comparison{} shown{}, for each test. Fisher: Fisher's exact test of the "
              "success counts (odds: the odds ratio of success, first over second). M-W U: the evaluations to success, "
-             "where {}; `censored at`: the evaluations it counts as, the pair's largest budget + 1.\n",
+             "where {}; `censored at`: the evaluations it counts as, the pair's largest budget + 1 (none: every run succeeded).\n",
              rows.size(), rows.size() == 1 ? "" : "s", family, report::kCensoringNote);
 }
 

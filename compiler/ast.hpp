@@ -236,7 +236,8 @@ struct DeclaredRange {
 
 struct ExpItem {
   enum class Kind {
-    Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Success, Evolve, Runs, Seed, Compare, StartFrom
+    Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Success, StopAtSuccess, Evolve, Runs, Seed, Compare,
+    StartFrom
   };
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword

@@ -53,6 +53,19 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          return true;
        },
        [](const X& x) { return std::to_string(x.es_generations()); }},
+      // Resolved only when on, so that runs from before it keep their settings.
+      {"stop_at_success", "end each run after the generation of its first success (`stop at success`)",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         const auto on = read_flag(v, r.key, k);
+         if (!on) return false;
+         if (*on && !x.success) {
+           k.error(v.where, "`stop_at_success` needs the experiment's success test (`success when ...`)");
+           return false;
+         }
+         x.stop_at_success = *on;
+         return true;
+       },
+       [](const X& x) { return x.stop_at_success ? std::string("on") : std::string(); }},
       // Resolved only when not the ES, so that runs from before it keep their settings.
       {"networks", "the algorithm that evolves the networks compared without `by` (`es`, `cmaes`)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {

@@ -33,6 +33,7 @@ std::string_view item_word(const ast::ExpItem& item) {
     case K::Objective: return "objective";
     case K::Descriptor: return "descriptor";
     case K::Success: return "success";
+    case K::StopAtSuccess: return "stop at success";
     case K::Evolve: return "evolve";
     case K::Runs: return "runs";
     case K::Seed: return "seed";
@@ -156,6 +157,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
       case K::Objective:
       case K::Descriptor:
       case K::Success:   // after the objectives and descriptors, below
+      case K::StopAtSuccess:
         break;
       case K::Fitness:
         objective_items.fitness = &item;
@@ -241,6 +243,16 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
       ok = false;
     else if (const auto s = first.find(K::Success); s != first.end() && !lower_success(*s->second, objective_items, sink_, x))
       ok = false;
+    if (const auto stop = first.find(K::StopAtSuccess); stop != first.end()) {
+      if (x.success) {
+        x.stop_at_success = true;
+      } else if (!first.contains(K::Success)) {
+        sink_.error(stop->second->where, "`stop at success` needs the experiment's success test")
+            .help.push_back("declare it: `success when reach_goal > -17.1875mm` (the fitness, an objective or a "
+                            "descriptor, compared with a number)");
+        ok = false;
+      }
+    }
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
       if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation)) ok = false;
   }

@@ -608,6 +608,8 @@ class Builder {
           item.compare_where = at(su->cmp);
         }
         if (su->threshold != nullptr) item.numbers.push_back(quantity(su->threshold));
+      } else if (dynamic_cast<P::ExpStopAtSuccessContext*>(it) != nullptr) {
+        item.kind = K::StopAtSuccess;
       } else if (auto* ev = dynamic_cast<P::ExpEvolveContext*>(it)) {
         item.kind = K::Evolve;
         item.refs.push_back(name(ev->ident()));

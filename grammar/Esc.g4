@@ -137,6 +137,8 @@ expItem
   // When an evaluation counts as a success: a test of the fitness, a further objective or a
   // descriptor, as measured (`success when reach_goal > -17.1875mm`).
   | SUCCESS WHEN obj=ident cmp=('<' | '<=' | '>' | '>=') threshold=quantity ';'?    # expSuccess
+  // Each run ends at the generation of its first success (Lehman & Stanley's runs do).
+  | STOP AT SUCCESS ';'?                                                          # expStopAtSuccess
   | EVOLVE ident ('(' (esOption (',' esOption)*)? ')')? (FOR NUMBER GENERATIONS)? ';'?   # expEvolve
   | RUNS NUMBER ';'?                                                              # expRuns
   | SEED NUMBER ';'?                                                              # expSeed

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -45,8 +46,11 @@ class RunJob {
   [[nodiscard]] const RunState& state() const noexcept { return state_; }
   // The generation breed() makes next.
   [[nodiscard]] int generation() const noexcept { return static_cast<int>(state_.generations.size()); }
-  // After the last generation, or once the optimizer has stopped its search.
+  // After the last generation, or once the run has stopped early.
   [[nodiscard]] bool finished() const;
+  // Why the run ended before its last generation (the optimizer's stop, or
+  // `stop_at_success`), or "".
+  [[nodiscard]] std::string stopped() const;
   // How many candidates each generation evaluates.
   [[nodiscard]] std::size_t evaluations_per_generation() const noexcept { return evaluations_; }
 

@@ -169,6 +169,10 @@ struct ExperimentSpec {
   std::vector<FitnessSpec> further;
   std::vector<DescriptorSpec> descriptors;
   std::optional<SuccessSpec> success;   // `success when ...`; none: success is not measured
+  // `stop at success`: a run ends after the generation whose evaluations first passed the
+  // test (runs.stopped `stop_at_success`), as Lehman & Stanley's do; the evaluations to
+  // success are those of a run that goes on.
+  bool stop_at_success = false;
   int epochs = 10;
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;

@@ -58,7 +58,12 @@ RunJob::RunJob(const ExperimentSpec& spec, const control::ControllerSpec& contro
   optimizer_ = std::move(made.optimizer);
 }
 
-bool RunJob::finished() const { return generation() >= generations_ || !optimizer_->stopped().empty(); }
+bool RunJob::finished() const { return generation() >= generations_ || !stopped().empty(); }
+
+std::string RunJob::stopped() const {
+  if (std::string stop = optimizer_->stopped(); !stop.empty()) return stop;
+  return spec_->stop_at_success && state_.success_evaluation ? "stop_at_success" : "";
+}
 
 std::size_t RunJob::breed() {
   candidates_ = optimizer_->ask(generation());
@@ -95,8 +100,9 @@ void RunJob::evaluated(std::span<const evo::Outcome> outcomes, const GenerationS
 RunResult RunJob::close(const ExperimentSpec& spec, const CampaignOptions& options, Evaluators& ev,
                         CampaignListener& listener) {
   const bool has_best = state_.has_best;
+  std::string stop = stopped();
   RunResult result = close_run(std::move(state_));
-  result.stopped = optimizer_->stopped();
+  result.stopped = std::move(stop);
   if (!has_best) return result;
   const control::ControllerSpec& controller = *controller_;
   if (controller.is_tree()) {

@@ -129,7 +129,7 @@ json success_pair_json(const SuccessComparison& c) {
           {"odds_ratio", std::isinf(c.fisher.odds_ratio) ? json("inf") : number(c.fisher.odds_ratio)},
           {"censored_u", number(c.censored.statistic)},
           {"censored_p", number(c.censored.p_value)}, {"censored_p_holm", number(c.censored_p_holm)},
-          {"censored_at", c.censored_at}};
+          {"censored_at", number(c.censored_at)}};
 }
 
 // The experiment's success test, if it declares one: per controller its runs' successes,

@@ -40,9 +40,12 @@ std::vector<SuccessComparison> compare_success(std::span<const SuccessSample> sa
                    ? FisherResult{std::nan(""), std::nan("")}
                    : fisher_exact(c.successes_a, c.runs_a - c.successes_a, c.successes_b, c.runs_b - c.successes_b);
     // One censoring point for both samples: runs of either that never succeeded tie there.
+    // None when every run succeeded: runs ended at their success (`stop at success`) would
+    // otherwise show a "budget" that is only the slowest success.
     const double budget = std::max(a.budget, b.budget);
     c.censored = censored_mann_whitney(a.evaluations, b.evaluations, budget);
-    c.censored_at = budget + 1.0;
+    const bool censors = c.successes_a < c.runs_a || c.successes_b < c.runs_b;
+    c.censored_at = censors ? budget + 1.0 : std::nan("");
     fisher_p.push_back(c.fisher.p_value);
     censored_p.push_back(c.censored.p_value);
     out.push_back(c);

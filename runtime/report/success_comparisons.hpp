@@ -30,7 +30,9 @@ struct SuccessComparison {
   std::size_t successes_a = 0, runs_a = 0, successes_b = 0, runs_b = 0;
   FisherResult fisher;
   TestResult censored;        // censored_mann_whitney of the evaluations to success
-  double censored_at = 0.0;   // what a run that never succeeded counts as: the larger budget + 1
+  // What a run that never succeeded counts as: the larger budget + 1; NaN when every run of
+  // both succeeded (nothing is censored).
+  double censored_at = 0.0;
   double fisher_p_holm = 0.0;
   double censored_p_holm = 0.0;
 };

@@ -2,7 +2,8 @@
 // holds every run's evaluations to success and each controller's count, its end table adds
 // the successes and, per pair of the family, Fisher's exact test and the censored
 // Mann-Whitney test; the report shows them; a study killed mid-run resumes to the same
-// summary, byte for byte.
+// summary, byte for byte; `stop at success` ends each run at its first success and changes
+// nothing before it.
 #include <string>
 #include <vector>
 
@@ -108,6 +109,57 @@ TEST(Success, AStudyKilledMidRunResumesToTheSameSuccesses) {
     for (const auto& [name, controller] : c.at("controllers").items())
       successes += controller.at("success").at("successes").get<int>();
   EXPECT_GT(successes, 0) << "a study without a success tests little here";
+}
+
+// `stop at success` (here `--set stop_at_success=on`): a run that succeeds ends after the
+// generation of its first success, with the evaluations to success and the generations up to
+// there of the run that goes on; a run that never succeeds runs its budget. Killed mid-study
+// and resumed: the same summary, byte for byte.
+TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
+  const fs::path going = scratch("success-going-on"), stopping = scratch("success-stopping"),
+                 killed = scratch("success-stop-killed");
+  const std::vector<std::string> args{"run",       study(), "--generations", "40", "--seed", "5", "--threads", "1",
+                                      "--set",     "stop_at_success=on"};
+  std::string line;
+  for (const std::string& a : args) line += a + " ";
+  ASSERT_EQ(esc("run " + study() + " --generations 40 --seed 5 --threads 2 --out " + going.string()).status, 0);
+  const Outcome o = esc(line + "--out " + stopping.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const json full = read_json(going / "summary.json"), cut = read_json(stopping / "summary.json");
+  int stopped = 0, unsolved = 0, generations = 0;
+  for (std::size_t c = 0; c < full.at("conditions").size(); ++c)
+    for (const auto& [name, controller] : full.at("conditions")[c].at("controllers").items()) {
+      const json& short_one = cut.at("conditions")[c].at("controllers").at(name);
+      EXPECT_EQ(short_one.at("success"), controller.at("success")) << name;
+      for (std::size_t r = 0; r < controller.at("runs").size(); ++r) {
+        const json& whole = controller.at("runs")[r];
+        const json& run = short_one.at("runs")[r];
+        const json& first = whole.at("success_evaluation");
+        EXPECT_EQ(run.at("success_evaluation"), first) << name << " run " << r + 1;
+        generations += static_cast<int>(run.at("best").size());
+        if (first.is_null()) {
+          ++unsolved;
+          EXPECT_FALSE(run.contains("stopped")) << run.dump();
+          EXPECT_EQ(run.at("best"), whole.at("best"));
+          continue;
+        }
+        ++stopped;
+        EXPECT_EQ(run.at("stopped"), "stop_at_success");
+        // Up to and including the generation that evaluated the first success.
+        const std::size_t upto = (first.get<std::size_t>() + kLambda - 1) / kLambda;
+        ASSERT_EQ(run.at("best").size(), upto) << run.dump();
+        for (std::size_t g = 0; g < upto; ++g) EXPECT_EQ(run.at("best")[g], whole.at("best")[g]) << g;
+      }
+    }
+  EXPECT_GT(stopped, 0);
+  EXPECT_GT(unsolved, 0);
+  EXPECT_NE(o.output.find("stopped its search after generation"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("(stop_at_success)"), std::string::npos) << o.output;
+
+  ASSERT_NO_FATAL_FAILURE(run_killed(args, killed, generations / 3, generations));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(slurp(stopping / "summary.json"), slurp(killed / "summary.json"));
 }
 
 }  // namespace

@@ -122,6 +122,41 @@ TEST(Success, MistakesAreLocatedAndExplained) {
   EXPECT_NE(equal.find("success.esc:8:17: error:"), std::string::npos) << equal;
 }
 
+TEST(Success, StopAtSuccessNeedsTheTestAndIsASetting) {
+  const eval::ExperimentSpec stops = experiment("fitness f\n success when f > 1\n stop at success");
+  EXPECT_TRUE(stops.stop_at_success);
+  EXPECT_EQ(stops.resolved_settings.at("stop_at_success"), "on");
+  // Written before the test it needs, the same.
+  EXPECT_TRUE(experiment("fitness f\n stop at success\n success when f > 1").stop_at_success);
+  // Off: not resolved, so that experiments from before it keep their settings.
+  eval::ExperimentSpec goes_on = experiment("fitness f\n success when f > 1");
+  EXPECT_FALSE(goes_on.stop_at_success);
+  EXPECT_EQ(goes_on.resolved_settings.count("stop_at_success"), 0u);
+  EXPECT_EQ(apply_setting(goes_on, "stop_at_success", "on"), "");
+  EXPECT_TRUE(goes_on.stop_at_success);
+  EXPECT_EQ(goes_on.resolved_settings.at("stop_at_success"), "on");
+  eval::ExperimentSpec off = stops;
+  EXPECT_EQ(apply_setting(off, "stop_at_success", "off"), "");
+  EXPECT_FALSE(off.stop_at_success);
+  EXPECT_EQ(off.resolved_settings.count("stop_at_success"), 0u);
+
+  // Line 7 holds `fitness f`, line 8 `stop at success`.
+  const std::string missing = errors("fitness f\n stop at success");
+  EXPECT_NE(missing.find("success.esc:8:2: error: `stop at success` needs the experiment's success test"),
+            std::string::npos)
+      << missing;
+  EXPECT_NE(missing.find("help: declare it: `success when"), std::string::npos) << missing;
+  const std::string twice = errors("fitness f\n success when f > 1\n stop at success\n stop at success");
+  EXPECT_NE(twice.find("success.esc:10:2: error: `stop at success` is already given in this experiment"),
+            std::string::npos)
+      << twice;
+  eval::ExperimentSpec untested = experiment("fitness f");
+  const std::string set = apply_setting(untested, "stop_at_success", "on");
+  EXPECT_NE(set.find("`stop_at_success` needs the experiment's success test"), std::string::npos) << set;
+  EXPECT_FALSE(untested.stop_at_success);
+  EXPECT_NE(apply_setting(untested, "stop_at_success", "3").find("stop_at_success"), std::string::npos);
+}
+
 TEST(Success, SuccessStaysAName) {
   // A keyword only at the start of an experiment's item: a fitness, a descriptor and a
   // controller may still be called `success`.

@@ -22,6 +22,8 @@ eval::RunResult run(std::optional<std::int64_t> success, std::int64_t evaluation
   return r;
 }
 
+std::vector<std::pair<std::size_t, std::size_t>> one_pair() { return {{0, 1}}; }
+
 TEST(SuccessComparisons, CensorAtThePairsLargestBudgetAndAdjustEachTest) {
   // Budgets: 2 x 100 evaluations per run in the first sample, 2 x 150 in the others.
   const std::vector<eval::RunResult> a{run(10, 100), run(std::nullopt, 100), run(50, 100)};
@@ -53,6 +55,11 @@ TEST(SuccessComparisons, CensorAtThePairsLargestBudgetAndAdjustEachTest) {
     EXPECT_EQ(cs[k].fisher_p_holm, fh[k]);
     EXPECT_EQ(cs[k].censored_p_holm, ch[k]);
   }
+  // Every run of a pair succeeded: nothing is censored, and no budget is shown.
+  const std::vector<SuccessSample> solved{samples[2], samples[2]};
+  const SuccessComparison all = compare_success(solved, one_pair()).front();
+  EXPECT_TRUE(std::isnan(all.censored_at));
+  EXPECT_EQ(all.censored.p_value, censored_mann_whitney(solved[0].evaluations, solved[1].evaluations, 300).p_value);
   // A sample without a finished run compares to nothing.
   const std::vector<SuccessSample> with_empty{samples[0], SuccessSample{}};
   const std::vector<std::pair<std::size_t, std::size_t>> one{{0, 1}};

@@ -203,7 +203,7 @@
                                 fmtP(r.fisher_p), fmtP(r.fisher_p_holm),
                                 r.odds_ratio === 'inf' ? '∞' : fmt(r.odds_ratio, 2), fmt(r.censored_u, 1),
                                 fmtP(r.censored_p), fmtP(r.censored_p_holm),
-                                r.runs_a + r.runs_b === 0 ? 'n/a' : fmt(r.censored_at, 0)]
+                                r.runs_a + r.runs_b === 0 ? 'n/a' : r.censored_at === null ? 'none' : fmt(r.censored_at, 0)]
         .map(v => el('td', {text: v})));
       if (r.fisher_p_holm !== null && r.fisher_p_holm < 0.05) row.children[3].className = 'significant';
       if (r.censored_p_holm !== null && r.censored_p_holm < 0.05) row.children[7].className = 'significant';
