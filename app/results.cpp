@@ -9,6 +9,7 @@
 #include "app/store_errors.hpp"
 #include "compiler/names.hpp"
 #include "runtime/report/html_report.hpp"
+#include "runtime/report/success_table.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/members_export.hpp"
 #include "runtime/store/metrics_export.hpp"
@@ -46,7 +47,7 @@ std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs) 
 // directory is read.
 void check_table(std::string_view table) {
   if (table.empty() || std::find(std::begin(kTables), std::end(kTables), table) != std::end(kTables)) return;
-  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front or archive",
+  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front, archive or success",
                                     table);
   if (const auto near = compiler::closest(std::string(table), {std::begin(kTables), std::end(kTables)}))
     message += fmt::format("; did you mean `{}`?", *near);
@@ -74,6 +75,10 @@ std::string table_text(const std::vector<store::StoredDirectory>& all, std::stri
   check_table(table);
   if (table == "usage") return csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n";
   if (table == "metrics") return csv ? store::metrics_csv(all) : store::metrics_json(all).dump(2) + "\n";
+  if (table == "success") {
+    const std::vector<report::SuccessRow> rows = report::success_rows(all);
+    return csv ? report::success_csv(rows) : report::success_json(rows).dump(2) + "\n";
+  }
   if (table == "front" || table == "archive")
     return csv ? store::members_csv(all, table) : store::members_json(all, table).dump(2) + "\n";
   return csv ? store::export_csv(all) : store::export_json(all).dump(2) + "\n";

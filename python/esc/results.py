@@ -102,9 +102,11 @@ class Run:
         """Table `name` as a pandas DataFrame: "generations" (the default export: one row
         per run and generation), "usage" (behavior usage per run, generation and behavior),
         "metrics" (what each optimizer reported per generation), "front" (NSGA-II's first
-        front per generation) or "archive" (MAP-Elites' and novelty search's archive changes
+        front per generation), "archive" (MAP-Elites' and novelty search's archive changes
         per generation: the archive after generation g is
-        `t[t.generation <= g].groupby(["run", "cell"]).last()`). ValueError for another name.
+        `t[t.generation <= g].groupby(["run", "cell"]).last()`) or "success" (Fisher's exact
+        test and the censored Mann-Whitney test of every pair the end table compares, for an
+        experiment that declares `success when`). ValueError for another name.
 
         It is pandas.read_csv of the very text `esc export DIR --table NAME --format csv`
         writes (the `directory` column holds the path as given to esc.open), read with

@@ -11,8 +11,10 @@
 #include "runtime/report/generalization.hpp"
 #include "runtime/report/markup.hpp"
 #include "runtime/report/statistics.hpp"
+#include "runtime/report/stored_study.hpp"
 #include "runtime/report/study_table.hpp"
 #include "runtime/report/success_comparisons.hpp"
+#include "runtime/report/success_table.hpp"
 #include "runtime/report/usage_figure.hpp"
 #include "runtime/eval/success.hpp"
 #include "runtime/sim/ir_sensor.hpp"
@@ -138,15 +140,13 @@ json experiment_success_json(const store::StoredExperiment& e) {
   const auto test = e.settings.find("success");
   if (test == e.settings.end()) return nullptr;
   json controllers = json::array();
-  std::vector<SuccessSample> samples;
   for (const store::StoredController& c : e.controllers) {
     json row = {{"controller", c.name}};
     row.update(success_count_json(eval::count_successes(c.finished)));
     controllers.push_back(std::move(row));
-    samples.push_back(success_sample(c.finished));
   }
   json pairs = json::array();
-  for (const SuccessComparison& c : compare_success(samples, all_pairs(samples.size()))) {
+  for (const SuccessComparison& c : experiment_success(e)) {
     json p = {{"a", e.controllers[c.a].name}, {"b", e.controllers[c.b].name}};
     p.update(success_pair_json(c));
     pairs.push_back(std::move(p));
@@ -285,17 +285,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
 // A study's table and comparisons; `conditions` in the study's order.
 json study_json(const std::vector<const store::StoredExperiment*>& conditions) {
   std::vector<ConditionSamples> samples;
-  for (const auto* e : conditions) {
-    ConditionSamples s{e->condition->name, {}};
-    const bool declares_success = e->settings.count("success") != 0;
-    for (const store::StoredController& c : e->controllers) {
-      std::vector<double> best;
-      for (const auto& r : c.finished) best.push_back(r.best_fitness);
-      s.controllers.emplace_back(c.name, std::move(best));
-      if (declares_success) s.success.push_back(success_sample(c.finished));
-    }
-    samples.push_back(std::move(s));
-  }
+  for (const auto* e : conditions) samples.push_back(condition_samples(*e));
   const StudyTable t = study_table(samples);
   json cells = json::array();
   for (const StudyCell& c : t.cells) {
@@ -361,11 +351,7 @@ Report make_report(const std::vector<store::StoredDirectory>& directories, const
   std::string title = "esc report";
   for (const store::StoredDirectory& d : directories) {
     // The study of this directory, if it is one: its conditions in order.
-    std::vector<const store::StoredExperiment*> conditions;
-    for (const store::StoredExperiment& e : d.experiments)
-      if (e.condition) conditions.push_back(&e);
-    std::stable_sort(conditions.begin(), conditions.end(),
-                     [](const auto* a, const auto* b) { return a->condition->index < b->condition->index; });
+    const std::vector<const store::StoredExperiment*> conditions = conditions_in_order(d);
     if (!conditions.empty()) {
       const std::string& study = conditions.front()->condition->study;
       std::vector<NamedFigure> figures = study_figures(conditions, unique(stems, study));

@@ -4,6 +4,7 @@
 // Mann-Whitney test; the report shows them; a study killed mid-run resumes to the same
 // summary, byte for byte; `stop at success` ends each run at its first success and changes
 // nothing before it.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,33 @@ TEST(Success, AStudyCountsComparesAndReportsSuccess) {
   EXPECT_NE(o.output.find("CC: inertia vs no_inertia"), std::string::npos) << o.output;
   // 241: a run that never succeeded counts as more than 12 x 20 evaluations.
   EXPECT_NE(o.output.find(" 241\n"), std::string::npos) << o.output;
+
+  // `esc export --table success`: the same 4 pairs, with the counts of summary.json.
+  const Outcome table = esc("export " + out.string() + " --table success");
+  ASSERT_EQ(table.status, 0) << table.output;
+  EXPECT_EQ(table.output.substr(0, table.output.find('\n')),
+            "study,experiment,condition_a,controller_a,condition_b,controller_b,successes_a,runs_a,successes_b,runs_b,"
+            "fisher_p,fisher_p_holm,odds_ratio,censored_u,censored_p,censored_p_holm,censored_at");
+  const Outcome rows = esc("export " + out.string() + " --table success --format json");
+  ASSERT_EQ(rows.status, 0) << rows.output;
+  const json pairs = json::parse(rows.output);
+  ASSERT_EQ(pairs.size(), 4u);
+  EXPECT_EQ(std::count(table.output.begin(), table.output.end(), '\n'), 5);
+  const auto successes_of = [&](const std::string& condition, const std::string& controller) {
+    for (const json& c : s.at("conditions"))
+      if (c.at("name") == condition) return c.at("controllers").at(controller).at("success").at("successes");
+    return json();
+  };
+  for (const json& p : pairs) {
+    EXPECT_EQ(p.at("study"), "success_study");
+    EXPECT_EQ(p.at("successes_a"), successes_of(p.at("condition_a"), p.at("controller_a"))) << p.dump();
+    EXPECT_EQ(p.at("successes_b"), successes_of(p.at("condition_b"), p.at("controller_b"))) << p.dump();
+    EXPECT_EQ(p.at("runs_a"), 4);
+    EXPECT_GE(p.at("fisher_p").get<double>(), 0.0);
+    EXPECT_LE(p.at("fisher_p").get<double>(), p.at("fisher_p_holm").get<double>());
+  }
+  EXPECT_EQ(pairs[0].at("condition_a"), pairs[0].at("condition_b")) << "within a condition first";
+  EXPECT_NE(table.output.find(",241\n"), std::string::npos) << table.output;
 
   // The report: the same numbers in the page's data, drawn without a script error.
   ASSERT_EQ(esc("report " + out.string()).status, 0);

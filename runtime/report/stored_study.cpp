@@ -1,0 +1,28 @@
+#include "runtime/report/stored_study.hpp"
+
+#include <algorithm>
+
+namespace esc::report {
+
+std::vector<const store::StoredExperiment*> conditions_in_order(const store::StoredDirectory& d) {
+  std::vector<const store::StoredExperiment*> conditions;
+  for (const store::StoredExperiment& e : d.experiments)
+    if (e.condition) conditions.push_back(&e);
+  std::stable_sort(conditions.begin(), conditions.end(),
+                   [](const auto* a, const auto* b) { return a->condition->index < b->condition->index; });
+  return conditions;
+}
+
+ConditionSamples condition_samples(const store::StoredExperiment& condition) {
+  ConditionSamples s{condition.condition ? condition.condition->name : condition.name, {}};
+  const bool declares_success = condition.settings.count("success") != 0;
+  for (const store::StoredController& c : condition.controllers) {
+    std::vector<double> best;
+    for (const auto& r : c.finished) best.push_back(r.best_fitness);
+    s.controllers.emplace_back(c.name, std::move(best));
+    if (declares_success) s.success.push_back(success_sample(c.finished));
+  }
+  return s;
+}
+
+}  // namespace esc::report
