@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "app/run_evaluations.hpp"
+#include "app/stored_run.hpp"
 #include "cli/load.hpp"
 #include "runtime/report/evaluation_map.hpp"
 #include "runtime/store/run_directory.hpp"
@@ -62,9 +63,10 @@ int replay_evaluations(const app::StoredRun& stored, const eval::ExperimentSpec&
              "declares {}\n", ran.name, descriptors == 0 ? "none" : "one");
     return kExitUsage;
   }
-  const auto control = std::find_if(ran.controllers.begin(), ran.controllers.end(),
-                                    [&](const control::ControllerSpec& c) { return c.name == controller; });
-  Tenths progress(who, control != ran.controllers.end() ? ran.generations_for(*control) : 1);
+  // As many generations as the stored run made: one its optimizer or a success stopped early
+  // is made again up to there.
+  const std::size_t made = app::finished_run(stored, controller, run).run->generations.size();
+  Tenths progress(who, std::max(1, static_cast<int>(made)));
   const app::RunEvaluations e = app::run_evaluations(stored, ran, controller, run, o.threads, &progress);
   std::error_code ec;
   fs::create_directories(out, ec);

@@ -155,6 +155,8 @@ TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
   ASSERT_EQ(o.status, 0) << o.output;
   const json full = read_json(going / "summary.json"), cut = read_json(stopping / "summary.json");
   int stopped = 0, unsolved = 0, generations = 0;
+  std::string replayed;   // `esc replay` arguments of the first run that stopped
+  std::size_t replayed_generations = 0;
   for (std::size_t c = 0; c < full.at("conditions").size(); ++c)
     for (const auto& [name, controller] : full.at("conditions")[c].at("controllers").items()) {
       const json& short_one = cut.at("conditions")[c].at("controllers").at(name);
@@ -173,6 +175,11 @@ TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
         }
         ++stopped;
         EXPECT_EQ(run.at("stopped"), "stop_at_success");
+        if (replayed.empty()) {
+          replayed = (stopping / full.at("conditions")[c].at("name").get<std::string>()).string() + " --controller " +
+                     name + " --run " + std::to_string(r + 1);
+          replayed_generations = run.at("best").size();
+        }
         // Up to and including the generation that evaluated the first success.
         const std::size_t upto = (first.get<std::size_t>() + kLambda - 1) / kLambda;
         ASSERT_EQ(run.at("best").size(), upto) << run.dump();
@@ -183,6 +190,16 @@ TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
   EXPECT_GT(unsolved, 0);
   EXPECT_NE(o.output.find("stopped its search after generation"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("(stop_at_success)"), std::string::npos) << o.output;
+
+  // Made again, the stopped run ends where it stopped, and its progress counts to there.
+  const Outcome again = esc("replay " + replayed + " --evaluations --threads 2 --out " + scratch("success-again").string());
+  ASSERT_EQ(again.status, 0) << again.output;
+  const std::string n = std::to_string(replayed_generations);
+  EXPECT_NE(again.output.find("made again: " + n + " of " + n + " generations"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("identical to the stored run in every generation: " +
+                              std::to_string(replayed_generations * kLambda) + " evaluations"),
+            std::string::npos)
+      << again.output;
 
   ASSERT_NO_FATAL_FAILURE(run_killed(args, killed, generations / 3, generations));
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
