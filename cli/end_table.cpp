@@ -68,14 +68,22 @@ void print_trees(const eval::CampaignResult& result, const Label& label) {
                    fitness_decimals(r.best_fitness), r.best_tree);
 }
 
-// Each run whose optimizer ended the search early, and why.
+// Each run whose optimizer ended the search early, and why; the runs that ended at their first
+// success, counted in one line per controller (a maze study's would fill the screen).
 template <class Label>
 void print_stops(const eval::CampaignResult& result, const Label& label) {
-  for (const auto& c : result.controllers)
+  for (const auto& c : result.controllers) {
+    std::size_t at_success = 0;
     for (const auto& r : c.runs)
-      if (!r.stopped.empty())
+      if (r.stopped == eval::kStopAtSuccess)
+        ++at_success;
+      else if (!r.stopped.empty())
         fmt::print("{:<12} run {} stopped its search after generation {} ({}): best fitness {:.{}f}\n", label(c),
                    r.run + 1, r.generations.size() - 1, r.stopped, r.best_fitness, fitness_decimals(r.best_fitness));
+    if (at_success > 0)
+      fmt::print("{:<12} {} of {} runs stopped at their first success ({})\n", label(c), at_success, c.runs.size(),
+                 eval::kStopAtSuccess);
+  }
 }
 
 // Decimals of a summary of fitness values: as many as its largest value or spread needs.

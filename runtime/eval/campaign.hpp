@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "runtime/eval/evaluator.hpp"
@@ -35,6 +36,9 @@ struct RoundProgress {
   double seconds = 0.0;        // since the round began
 };
 
+// RunResult::stopped of a run the experiment's `stop at success` ended.
+inline constexpr std::string_view kStopAtSuccess = "stop_at_success";
+
 struct RunResult {
   int run = 0;                 // from 0
   std::uint64_t seed = 0;
@@ -53,8 +57,8 @@ struct RunResult {
   // same commands (an Action tree with its actions inlined); empty for a Behavior tree.
   std::string best_behavior{};
   std::optional<Transfer> transfer{};   // a run that started from a stored genome
-  // Why its optimizer ended the search before the last generation (CMA-ES's `stop_sigma`,
-  // ...); empty when the run went through every generation.
+  // Why the run ended before the last generation: its optimizer's stop (CMA-ES's
+  // `stop_sigma`, ...) or kStopAtSuccess; empty when it went through every generation.
   std::string stopped{};
   std::optional<std::int64_t> success_evaluation{};   // as RunState's
 };

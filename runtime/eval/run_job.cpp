@@ -62,7 +62,7 @@ bool RunJob::finished() const { return generation() >= generations_ || !stopped(
 
 std::string RunJob::stopped() const {
   if (std::string stop = optimizer_->stopped(); !stop.empty()) return stop;
-  return spec_->stop_at_success && state_.success_evaluation ? "stop_at_success" : "";
+  return spec_->stop_at_success && state_.success_evaluation ? std::string(kStopAtSuccess) : std::string();
 }
 
 std::size_t RunJob::breed() {
