@@ -1,11 +1,19 @@
 """What the analysis scripts of results/paper share: the finished runs of a run directory
 (one experiment, or a study's conditions in their own directories) and replaying one run's
-best controller with `esc replay`."""
+best controller with `esc replay`, and reading one of `esc export`'s tables."""
 import csv
+import io
 import json
 import os
 import subprocess
 import sys
+
+
+def export(esc, directory, *extra):
+    """`esc export DIRECTORY --format csv EXTRA...` as a list of rows (dicts by column)."""
+    out = subprocess.run([esc, "export", directory, "--format", "csv", *extra], check=True,
+                         capture_output=True, text=True).stdout
+    return list(csv.DictReader(io.StringIO(out)))
 
 
 def parts(directory):

@@ -13,12 +13,11 @@ compares them: Fisher's exact test of the counts and the censored Mann-Whitney t
 evaluations to success, each with Holm's adjustment over its family.
 """
 import argparse
-import csv
-import io
 import json
 import os
 import statistics
-import subprocess
+
+from esc_runs import export
 
 
 def cells(summary):
@@ -30,12 +29,6 @@ def cells(summary):
     else:
         for name, controller in summary["controllers"].items():
             yield "", name, controller["runs"], summary.get("success")
-
-
-def export(esc, directory, *extra):
-    out = subprocess.run([esc, "export", directory, "--format", "csv", *extra], check=True, capture_output=True,
-                         text=True).stdout
-    return list(csv.DictReader(io.StringIO(out)))
 
 
 def number(x, decimals=0):

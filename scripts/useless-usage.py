@@ -11,18 +11,11 @@ behaviors, mean over the runs (min-max), at evenly spaced generations; then per 
 share at the first and the last generation, and the run's best fitness.
 """
 import argparse
-import csv
-import io
 import statistics
-import subprocess
 import sys
 from collections import defaultdict
 
-
-def export(esc, directory, *extra):
-    out = subprocess.run([esc, "export", directory, "--format", "csv", *extra], check=True,
-                         capture_output=True, text=True).stdout
-    return list(csv.DictReader(io.StringIO(out)))
+from esc_runs import export
 
 
 def main():
