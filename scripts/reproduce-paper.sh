@@ -79,15 +79,15 @@ quick_args=(--runs 2 --generations 3 --set epochs=2)
 
 # Wall time, control steps and steps/s per core of a finished run, beside the estimate of
 # `esc bench --campaign` for the same experiments and controllers (not a bound: it counts
-# every epoch at full length, at the rates of the genomes it times).
+# every epoch at full length, at the rates of the genomes it times). SECONDS is the wall time
+# measured here, or `untimed` for a run stored with --from.
 cost_report() {
   local name=$1 out=$2 seconds=$3 script=$4 dest=$5
   "$ESC" export "$out" --format csv --out "$scratch/cost.csv" >/dev/null 2>&1
   "$ESC" bench --campaign "$script" --min-time 0.5 >"$scratch/bench.txt" 2>&1 || true
   python3 - "$name" "$scratch/cost.csv" "$seconds" "$(nproc)" "$scratch/bench.txt" "$out" >"$dest" <<'EOF'
 import csv, os, sys
-name, table, seconds, cores, bench, out = (sys.argv[1], sys.argv[2], float(sys.argv[3]), int(sys.argv[4]),
-                                           sys.argv[5], sys.argv[6])
+name, table, timed, cores, bench, out = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5], sys.argv[6]
 rows = list(csv.DictReader(open(table)))
 steps = sum(int(r["steps"]) for r in rows)
 # The bench names a study's condition STUDY/CONDITION, the export its experiment.
@@ -103,10 +103,13 @@ for line in open(bench):
 print(f"# Cost of campaign {name}\n")
 print("| wall time | control steps | cores | steps/s per core | core-hours | `esc bench --campaign` estimate |")
 print("|---|---|---|---|---|---|")
-if seconds > 0:
+if timed != "untimed":
+    # A tiny run can take less than the clock's resolution: timed, with no rate to give.
+    seconds = float(timed)
     core_hours = seconds * cores / 3600
+    rate = f"{steps / (seconds * cores):,.0f}" if seconds > 0 else "-"
     ratio = f" ({estimate / core_hours:.1f}x the cost measured)" if core_hours > 0 and estimate > 0 else ""
-    print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {steps / (seconds * cores):,.0f} | {core_hours:.2f} "
+    print(f"| {seconds / 60:.1f} min | {steps:,} | {cores} | {rate} | {core_hours:.2f} "
           f"| {estimate:.2f} core-hours{ratio} |")
 else:
     # Stored with --from: not timed here. Its files' times bound it: settings.json is written
@@ -205,7 +208,7 @@ for name in "${campaigns[@]}"; do
       failed=1
       continue
     fi
-    if store_results "$name" "$OUT" 0; then echo "stored $name in $dir (from $OUT)"; else failed=1; fi
+    if store_results "$name" "$OUT" untimed; then echo "stored $name in $dir (from $OUT)"; else failed=1; fi
     continue
   fi
   OUT=$scratch/runs/$name
