@@ -34,7 +34,11 @@ std::string viridis(double t) {
 std::string render_map(const MapFigure& m) {
   constexpr double left = 62, top = 34, side = 360, bar = 14, gap = 18, right = 70, bottom = 64;
   const double width = std::max(left + side + gap + bar + right, svg::title_width(m.title.size()));
-  const double height = top + side + bottom;
+  constexpr double char_width = 7.0, note_line = 14.0;   // of the 11-pixel note, as in svg_plot
+  const std::vector<std::string> note =
+      svg::wrapped(m.note, static_cast<std::size_t>(std::max(20.0, (width - 16.0) / char_width)));
+  const double height =
+      top + side + bottom + note_line * static_cast<double>(std::max<std::size_t>(note.size(), 1) - 1);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const Tile& t : m.tiles)
     if (std::isfinite(t.value)) {
@@ -109,7 +113,10 @@ std::string render_map(const MapFigure& m) {
                      px(top + 8), end_label(hi), px(bx + bar + 4), px(top + side), end_label(lo));
   out += fmt::format("<text transform=\"translate({},{}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
                      px(bx + bar + 40), px(top + side / 2), escape_markup(m.value_title));
-  out += fmt::format("<text x=\"8\" y=\"{}\" fill=\"#555\">{}</text>\n</svg>\n", px(height - 10), escape_markup(m.note));
+  for (std::size_t i = 0; i < note.size(); ++i)
+    out += fmt::format("<text x=\"8\" y=\"{}\" fill=\"#555\">{}</text>\n",
+                       px(height - 10 - note_line * static_cast<double>(note.size() - 1 - i)), escape_markup(note[i]));
+  out += "</svg>\n";
   return out;
 }
 

@@ -26,21 +26,6 @@ constexpr double kCharWidth = 7.0;   // of the 11-pixel DejaVu Sans text (0.63 e
 constexpr double kTitleHeight = 26.0, kNoteHeight = 20.0, kNoteLine = 13.0, kLegendRow = 16.0;
 constexpr double kNoteCharWidth = kCharWidth * 10.0 / 11.0;   // the note is 10-pixel text
 
-// `text` in lines of at most `chars` characters, broken at spaces (a longer word stands alone).
-std::vector<std::string> wrapped(const std::string& text, std::size_t chars) {
-  std::vector<std::string> lines;
-  std::string line;
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t space = std::min(text.find(' ', at), text.size());
-    const std::string word = text.substr(at, space - at);
-    if (!line.empty() && line.size() + 1 + word.size() > chars) lines.push_back(std::exchange(line, {}));
-    line += (line.empty() ? "" : " ") + word;
-    at = space + 1;
-  }
-  if (!line.empty()) lines.push_back(line);
-  return lines;
-}
-
 std::string px(double v) { return fmt::format("{:.1f}", v); }
 
 // A linear map from data to pixels.
@@ -248,6 +233,20 @@ std::string tick_label(double v, double step) {
 }
 
 double tick_step(const std::vector<double>& ticks) { return ticks.size() < 2 ? 0.0 : ticks[1] - ticks[0]; }
+
+std::vector<std::string> wrapped(const std::string& text, std::size_t chars) {
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t space = std::min(text.find(' ', at), text.size());
+    const std::string word = text.substr(at, space - at);
+    if (!line.empty() && line.size() + 1 + word.size() > chars) lines.push_back(std::exchange(line, {}));
+    line += (line.empty() ? "" : " ") + word;
+    at = space + 1;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
 
 double quantile(const std::vector<double>& sorted, double q) {
   if (sorted.empty()) return std::numeric_limits<double>::quiet_NaN();
