@@ -190,7 +190,7 @@ for name in "${campaigns[@]}"; do
   fi
   if [ -n "$from" ]; then
     OUT=$from/$name
-    echo "== $name: the run kept in $OUT, finished there first"
+    echo "== $name: the run kept in $OUT, finished there first (esc's progress: $scratch/$name.log)"
     export OUT
     if [ ! -d "$OUT" ]; then
       echo "FAILED $name: $OUT does not exist (--from names the KEEP directory of a stopped campaign)"
@@ -232,6 +232,8 @@ for name in "${campaigns[@]}"; do
     fi
   fi
   echo "== $name ($mode): $(grep -v '^#' "$command" | tr -s ' \\\n' ' ')"
+  # A full-length campaign runs for hours: where to watch it.
+  if [ "$mode" = full ]; then echo "   esc's progress: $scratch/$name.log"; fi
   start=$(date +%s%N)
   if ! bash "$command" "${args[@]}" >"$scratch/$name.log" 2>&1; then
     echo "FAILED $name: the command did not finish; last lines:"
