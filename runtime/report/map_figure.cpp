@@ -34,9 +34,8 @@ std::string viridis(double t) {
 std::string render_map(const MapFigure& m) {
   constexpr double left = 62, top = 34, side = 360, bar = 14, gap = 18, right = 70, bottom = 64;
   const double width = std::max(left + side + gap + bar + right, svg::title_width(m.title.size()));
-  constexpr double char_width = 7.0, note_line = 14.0;   // of the 11-pixel note, as in svg_plot
-  const std::vector<std::string> note =
-      svg::wrapped(m.note, static_cast<std::size_t>(std::max(20.0, (width - 16.0) / char_width)));
+  constexpr double note_line = 14.0;   // the note is 11-pixel text
+  const std::vector<std::string> note = svg::note_lines(m.note, width, 11.0);
   const double height =
       top + side + bottom + note_line * static_cast<double>(std::max<std::size_t>(note.size(), 1) - 1);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;

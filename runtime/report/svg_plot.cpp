@@ -24,7 +24,22 @@ constexpr std::size_t kColourCount = std::size(kColours);
 constexpr double kLeft = 58.0, kRight = 12.0, kTop = 26.0, kBottom = 42.0;
 constexpr double kCharWidth = 7.0;   // of the 11-pixel DejaVu Sans text (0.63 em), roughly
 constexpr double kTitleHeight = 26.0, kNoteHeight = 20.0, kNoteLine = 13.0, kLegendRow = 16.0;
-constexpr double kNoteCharWidth = kCharWidth * 10.0 / 11.0;   // the note is 10-pixel text
+constexpr double kNoteFont = 10.0;   // the note's text, in pixels
+
+// `text` in lines of at most `chars` characters, broken at spaces (a longer word stands alone).
+std::vector<std::string> wrapped(const std::string& text, std::size_t chars) {
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t space = std::min(text.find(' ', at), text.size());
+    const std::string word = text.substr(at, space - at);
+    if (!line.empty() && line.size() + 1 + word.size() > chars) lines.push_back(std::exchange(line, {}));
+    line += (line.empty() ? "" : " ") + word;
+    at = space + 1;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
 
 std::string px(double v) { return fmt::format("{:.1f}", v); }
 
@@ -234,18 +249,9 @@ std::string tick_label(double v, double step) {
 
 double tick_step(const std::vector<double>& ticks) { return ticks.size() < 2 ? 0.0 : ticks[1] - ticks[0]; }
 
-std::vector<std::string> wrapped(const std::string& text, std::size_t chars) {
-  std::vector<std::string> lines;
-  std::string line;
-  for (std::size_t at = 0; at < text.size();) {
-    const std::size_t space = std::min(text.find(' ', at), text.size());
-    const std::string word = text.substr(at, space - at);
-    if (!line.empty() && line.size() + 1 + word.size() > chars) lines.push_back(std::exchange(line, {}));
-    line += (line.empty() ? "" : " ") + word;
-    at = space + 1;
-  }
-  if (!line.empty()) lines.push_back(line);
-  return lines;
+std::vector<std::string> note_lines(const std::string& text, double width, double font_px) {
+  const double char_width = kCharWidth * font_px / 11.0;
+  return wrapped(text, static_cast<std::size_t>(std::max(20.0, (width - 16.0) / char_width)));
 }
 
 double quantile(const std::vector<double>& sorted, double q) {
@@ -268,9 +274,7 @@ std::string render(const Figure& f) {
   const double panels_height = static_cast<double>(rows) * cell_height;
   const double legend_height = static_cast<double>(f.legend.size()) * kLegendRow + 8.0;
   const double width = std::max(static_cast<double>(columns) * f.panel_width + legend_width, title_width(f.title.size()));
-  // The note under the figure, in as many lines as its width needs.
-  const std::vector<std::string> note =
-      wrapped(f.note, static_cast<std::size_t>(std::max(20.0, (width - 16.0) / kNoteCharWidth)));
+  const std::vector<std::string> note = note_lines(f.note, width, kNoteFont);
   const double note_height = note.empty() ? 4.0 : kNoteHeight + kNoteLine * static_cast<double>(note.size() - 1);
   const double height = top + std::max(panels_height, legend_height) + note_height;
 

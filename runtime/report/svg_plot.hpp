@@ -86,9 +86,9 @@ struct Figure {
   return 8.6 * static_cast<double>(characters) + 16.0;
 }
 
-// `text` in lines of at most `chars` characters, broken at spaces (a longer word stands alone):
-// a figure's note, in as many lines as the figure's width needs.
-[[nodiscard]] std::vector<std::string> wrapped(const std::string& text, std::size_t chars);
+// A figure's note in as many lines as a figure `width` pixels wide needs, for text of
+// `font_px` pixels (DejaVu Sans), broken at spaces (a longer word stands alone).
+[[nodiscard]] std::vector<std::string> note_lines(const std::string& text, double width, double font_px);
 
 // The q-quantile of sorted values, interpolated linearly (NumPy's default).
 [[nodiscard]] double quantile(const std::vector<double>& sorted, double q);

@@ -7,14 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/report/helpers.hpp"
+
 namespace esc::report {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using test::count;
 
 double attribute(const std::string& svg, const std::string& name) {
   return std::stod(svg.substr(svg.find(name + "=\"") + name.size() + 2));

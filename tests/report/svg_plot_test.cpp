@@ -9,14 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/report/helpers.hpp"
+
 namespace esc::report::svg {
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using esc::report::test::count;
 
 TEST(SvgPlot, NiceTicksCoverTheDataAtRoundSteps) {
   EXPECT_EQ(nice_ticks(0.3, 9.7), (std::vector<double>{0, 2, 4, 6, 8, 10}));

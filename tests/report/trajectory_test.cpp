@@ -6,6 +6,7 @@
 
 #include "runtime/report/trajectory_csv.hpp"
 #include "runtime/report/trajectory_svg.hpp"
+#include "tests/report/helpers.hpp"
 
 namespace esc::report {
 namespace {
@@ -44,11 +45,7 @@ TrajectoryFigure figure(const std::vector<eval::TraceStep>& steps, std::vector<s
   return f;
 }
 
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += what.size()) ++n;
-  return n;
-}
+using test::count;
 
 TEST(TrajectorySvg, ColoursByActionMarksEpochsZonesAndCollisions) {
   const auto steps = two_epochs();
