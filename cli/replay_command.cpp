@@ -139,7 +139,11 @@ bool pick_member(Subject& s, const evo::Members& kept, std::int64_t member) {
   const auto it = std::find_if(kept.members.begin(), kept.members.end(),
                                [&](const evo::Member& m) { return m.cell == member; });
   if (it == kept.members.end() || it->genome.empty()) {
-    if (!front && it == kept.members.end())
+    const std::optional<std::size_t> cells = kept.cells();
+    if (!front && cells && (member < 0 || static_cast<std::size_t>(member) >= *cells))
+      complain("esc: error: {} run {}'s archive has no cell {}: its cells are numbered 0-{}\n", s.controller,
+               s.run + 1, member, *cells - 1);
+    else if (!front && it == kept.members.end())
       complain("esc: error: cell {} of {} run {}'s archive is empty ({} cells filled; esc export --table archive "
                "lists them)\n", member, s.controller, s.run + 1, kept.members.size());
     else if (it == kept.members.end())

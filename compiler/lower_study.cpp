@@ -83,10 +83,12 @@ bool numeric(const Axis& a) {
 
 std::optional<eval::ExperimentSpec> StudyLowering::base(const ast::Name& ref, const Common& common) {
   const auto* xd = names_.lookup<ast::ExperimentDecl>(ref);
-  if (xd == nullptr) return std::nullopt;
-  const auto& lowered = experiments_.lower(*xd);
-  if (!lowered) return std::nullopt;
-  eval::ExperimentSpec spec = *lowered;
+  const auto* lowered = xd == nullptr ? nullptr : &experiments_.lower(*xd);
+  if (lowered == nullptr || !*lowered) {
+    broken_reference_ = true;
+    return std::nullopt;
+  }
+  eval::ExperimentSpec spec = **lowered;
   if (common.runs) spec.runs = *common.runs;
   spec.seed = common.seed;
   return spec;
@@ -327,6 +329,7 @@ std::vector<eval::ConditionSpec> StudyLowering::sweep(const ast::StudyItem& item
 std::optional<eval::StudySpec> StudyLowering::lower(const ast::StudyDecl& d) {
   if (d.poisoned) return std::nullopt;
   const int errors = sink_.errors();
+  broken_reference_ = false;
   Common common;
   std::map<K, const ast::StudyItem*> once;
   for (const ast::StudyItem& item : d.items) {
@@ -394,7 +397,7 @@ std::optional<eval::StudySpec> StudyLowering::lower(const ast::StudyDecl& d) {
       case K::Seed: break;
     }
   }
-  if (sink_.errors() != errors) return std::nullopt;
+  if (sink_.errors() != errors || broken_reference_) return std::nullopt;
   if (study.conditions.empty()) {
     sink_.error(d.name.where, fmt::format("study `{}` has no conditions", d.name.text))
         .help.push_back("add `conditions EXPERIMENT, EXPERIMENT` or `sweep EXPERIMENT { KEY [VALUE, VALUE] }`");

@@ -32,7 +32,8 @@ class StudyLowering {
     std::optional<int> runs;
     std::uint64_t seed = 1;
   };
-  // The experiment `ref` names, lowered, with the study's runs and seed; null when wrong.
+  // The experiment `ref` names, lowered, with the study's runs and seed; null when wrong
+  // (reported, then or when the experiment was lowered: `broken_reference_` remembers it).
   std::optional<eval::ExperimentSpec> base(const ast::Name& ref, const Common& common);
   // `condition NAME = EXP { KEY VALUE ... }`.
   std::optional<eval::ConditionSpec> condition(const ast::StudyItem& item, const Common& common);
@@ -57,6 +58,10 @@ class StudyLowering {
   Sink& sink_;
   Resolver& names_;
   ExperimentLowering& experiments_;
+  // Whether the study being lowered names an experiment that is wrong: its conditions are
+  // then missing for a reason already reported, and "has no conditions" would be a second
+  // error for one mistake.
+  bool broken_reference_ = false;
 };
 
 }  // namespace esc::compiler

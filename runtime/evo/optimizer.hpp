@@ -90,6 +90,18 @@ struct Members {
   // descriptor scaled by its range); both empty for a front or an archive of points.
   std::vector<std::size_t> bins;
   std::vector<double> centroids;
+
+  // The cells of an archive drawn from bins or centroids; nullopt for a front, an archive of
+  // points or members taken as changes only.
+  [[nodiscard]] std::optional<std::size_t> cells() const {
+    if (!bins.empty()) {
+      std::size_t n = 1;
+      for (const std::size_t b : bins) n *= b;
+      return n;
+    }
+    if (!centroids.empty() && descriptors > 0) return centroids.size() / descriptors;
+    return std::nullopt;
+  }
 };
 
 // The range a value is declared to lie in; infinite ends where the script declares none.

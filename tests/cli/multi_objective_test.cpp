@@ -265,6 +265,11 @@ TEST(MultiObjective, TheMazeStudyExportsDrawsAndReplaysItsFrontsAndArchives) {
     EXPECT_EQ(empty.status, 1);
     EXPECT_NE(empty.output.find("cell 399 of navigator_net run 1's archive is empty"), std::string::npos) << empty.output;
   }
+  // A 20 x 20 grid has cells 0-399: 400 is no cell, not an empty one.
+  const Outcome outside = esc("replay " + (dir / "map_elites").string() + " --run 1 --member 400");
+  EXPECT_EQ(outside.status, 1);
+  EXPECT_NE(outside.output.find("archive has no cell 400: its cells are numbered 0-399"), std::string::npos)
+      << outside.output;
   const Outcome behaviors = esc("replay " + (dir / "novelty").string() + " --member 0");
   EXPECT_EQ(behaviors.status, 1);
   EXPECT_NE(behaviors.output.find("keeps behaviors, not the genomes"), std::string::npos) << behaviors.output;

@@ -298,15 +298,31 @@ study st {
 
 // A wrong key in a sweep is one error, at the key, however many values it lists; a wrong
 // value is one error per value.
+long errors(const CompileResult& r) {
+  return std::count_if(r.diagnostics.begin(), r.diagnostics.end(),
+                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
 TEST(Study, ASweepsWrongKeyIsReportedOnce) {
-  const auto errors = [](const CompileResult& r) {
-    return std::count_if(r.diagnostics.begin(), r.diagnostics.end(),
-                         [](const Diagnostic& d) { return d.severity == Severity::Error; });
-  };
   const CompileResult key = compile(R"(study s { sweep e { robot.time_constat [25ms, 50ms, 75ms] } })");
   EXPECT_EQ(errors(key), 1) << rendered(key);
   const CompileResult values = compile(R"(study s { sweep e { robot.time_constant [25kg, 50kg] } })");
   EXPECT_EQ(errors(values), 2) << rendered(values);
+}
+
+// One mistake inside an experiment is one error: the studies that use it do not add "has no
+// conditions" (docs/language.md), whichever way they name it.
+TEST(Study, AWrongExperimentIsReportedOnceNotOncePerStudy) {
+  const std::string wrong = R"(
+experiment broken { arena a  fitness f  evolve es(mu 10, lambda 20)  compare nowhere }
+)";
+  for (const std::string study : {"study s { conditions broken }", "study s { condition x = broken { mu 5 } }",
+                                  "study s { sweep broken { mu [5, 6] } }",
+                                  "study s { conditions broken }\nstudy t { conditions broken, e }"}) {
+    const CompileResult r = compile(wrong + study);
+    EXPECT_EQ(errors(r), 1) << study << "\n" << rendered(r);
+    EXPECT_EQ(rendered(r).find("has no conditions"), std::string::npos) << rendered(r);
+  }
 }
 
 }  // namespace
