@@ -5,7 +5,8 @@
 
 namespace esc::cli {
 
-// `git describe` of the sources at build time (a generated file, cmake/BuildInfo.cmake).
+// `git describe` of the sources at build time, or the commit a `git archive` tarball records;
+// empty when the sources record none (a generated file, cmake/BuildInfo.cmake).
 extern const char* const kCommit;
 
 [[nodiscard]] std::string version_text();

@@ -74,5 +74,7 @@ else
   "$BUILD_DIR/cli/esc" run experiments/paper/obstacle_avoidance.esc \
       --runs 3 --generations 30 --set epochs=5 --seed 1 --out "$out"
   "$BUILD_DIR/cli/esc" report "$out"
-  echo "results: $out (esc.db, summary.json, per-run CSV, best genomes, settings.json, report.html)"
+  # esc's own lines name `esc`; the one built here is not on PATH until installed.
+  echo "esc-setup: done: $out holds esc.db, summary.json, per-run CSVs, best genomes and report.html;" \
+       "this esc is $BUILD_DIR/cli/esc (\`cmake --install $BUILD_DIR\` puts it on PATH as esc)"
 fi
