@@ -1,13 +1,15 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/library_path.hpp"
 #include "cli/load.hpp"
 
 namespace esc::cli {
 
 int check_command(const std::vector<std::filesystem::path>& files) {
   int status = kExitOk;
-  for (const auto& f : files) {
+  for (const auto& given : files) {
+    const std::filesystem::path f = find_main_script(given);
     const compiler::CompileResult r = load_script(f);
     if (!r.ok()) {
       status = kExitBadInput;

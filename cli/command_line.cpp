@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "app/option_ranges.hpp"
 #include "app/results.hpp"
 
 #include "runtime/core/seed_text.hpp"
@@ -14,9 +15,10 @@ namespace esc::cli {
 
 namespace {
 
-// Ranges with bounds a person can read in the error message.
-const CLI::Range kAtLeastOne(1, 1'000'000'000, "at least 1");
-const CLI::Range kThreads(0, 4096, "0 (all cores) to 4096");
+// Ranges with bounds a person can read in the error message (app/option_ranges.hpp: the
+// Python module checks against the same).
+const CLI::Range kAtLeastOne(app::kCountRange.lowest, app::kCountRange.highest, std::string(app::kCountRange.text));
+const CLI::Range kThreads(app::kThreadsRange.lowest, app::kThreadsRange.highest, std::string(app::kThreadsRange.text));
 // A seed is read digit by digit (seed_text.hpp): CLI11 alone wraps `-1` to 2^64 - 1.
 const CLI::Validator kSeed(
     [](const std::string& text) {

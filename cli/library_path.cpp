@@ -32,4 +32,8 @@ std::filesystem::path standard_library_dir() {
 
 std::vector<std::filesystem::path> import_search_path() { return app::import_search_path(standard_library_dir()); }
 
+std::filesystem::path find_main_script(const std::filesystem::path& file) {
+  return app::find_main_script(file, standard_library_dir());
+}
+
 }  // namespace esc::cli

@@ -16,4 +16,7 @@ namespace esc::cli {
 // $ESC_PATH's directories, then standard_library_dir().
 [[nodiscard]] std::vector<std::filesystem::path> import_search_path();
 
+// The script a command was given as FILE: app::find_main_script with this binary's library.
+[[nodiscard]] std::filesystem::path find_main_script(const std::filesystem::path& file);
+
 }  // namespace esc::cli

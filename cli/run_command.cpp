@@ -6,6 +6,7 @@
 #include "app/run.hpp"
 #include "cli/commands.hpp"
 #include "cli/end_table.hpp"
+#include "cli/library_path.hpp"
 #include "cli/load.hpp"
 #include "cli/terminal_events.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 app::Outcome resume(const RunOptions& o, app::Events& events) {
   app::ResumeRequest r;
   r.dir = o.resume;
-  r.script = o.file;
+  r.script = find_main_script(o.file);
   r.generations = o.generations;
   r.cache = o.cache;
   r.execution = {o.threads, o.runs_at_once};
@@ -26,7 +27,7 @@ app::Outcome resume(const RunOptions& o, app::Events& events) {
 
 app::Outcome start(const RunOptions& o, app::Events& events) {
   app::RunRequest r;
-  r.script = o.file;
+  r.script = find_main_script(o.file);
   r.experiment = o.experiment;
   r.overrides = {o.runs, o.generations, o.seed, o.settings, o.controllers, o.cache};
   r.execution = {o.threads, o.runs_at_once};

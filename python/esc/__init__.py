@@ -12,7 +12,9 @@ an experiment's epochs like a Gymnasium environment.
 
 Errors: esc.Error (esc refuses something: the message the esc program prints), its subclass
 esc.ScriptError (a script that does not compile: file, line, column, message), ValueError for
-a wrong argument (an unknown name, a genome of the wrong length).
+a wrong argument (an unknown name, a genome of the wrong length, a NaN weight, a number out of
+the range the esc program accepts), TypeError for an argument of the wrong type (a float
+where an integer is expected, a complex genome).
 """
 
 from esc._esc import __version__

@@ -7,6 +7,7 @@ from typing import Optional, Tuple, Union
 
 import numpy as np
 
+from esc import _arguments as arguments
 from esc import _esc
 from esc.script import PathOrSource, Script, as_script
 
@@ -59,16 +60,18 @@ class Env:
     from a genome, so driving Env with it replays esc's evaluation of that genome step for
     step. Tree controllers have no network: use controller=None, or esc.evaluate.
 
-    `seed` None draws a fresh one (the `seed` attribute tells it).
+    `experiment` None is the script's one experiment (ValueError when it declares several).
+    `seed` None draws a fresh one (the `seed` attribute tells it); else an integer in
+    0..2^64-1 (TypeError, ValueError otherwise).
     """
 
-    def __init__(self, script: Union[Script, PathOrSource], experiment: str, controller: Optional[str] = None,
-                 seed: Optional[int] = None):
+    def __init__(self, script: Union[Script, PathOrSource], experiment: Optional[str] = None,
+                 controller: Optional[str] = None, seed: Optional[int] = None):
         self._script = as_script(script)
-        self.experiment = experiment
+        self.experiment = self._script.experiment_named(experiment)
         self.controller = controller
-        self._env = _esc.Env(self._script._compiled, experiment, controller,
-                             secrets.randbits(64) if seed is None else seed)
+        self._env = _esc.Env(self._script._compiled, self.experiment, controller,
+                             secrets.randbits(64) if seed is None else arguments.option("seed", seed))
         self.observation_space = Box(*self._env.observation_bounds)
         self.action_space = Box(*self._env.action_bounds)
 
@@ -106,16 +109,19 @@ class Env:
     def reset(self, seed: Optional[int] = None, options: Optional[dict] = None) -> Tuple[np.ndarray, dict]:
         """Starts the next episode, or with `seed` the first epoch of that evaluation seed's
         (`options` is accepted for Gymnasium's signature and unused). Returns (observation,
-        info), info holding "epoch" (from 0), "step" (0), "fitness" (0) and "action" (-1)."""
-        return self._env.reset(seed)
+        info), info holding "epoch" (from 0), "step" (0), "fitness" (0) and "action" (-1).
+        A seed is an integer in 0..2^64-1 (TypeError, ValueError otherwise)."""
+        return self._env.reset(arguments.optional("seed", seed))
 
     def step(self, action) -> Tuple[np.ndarray, float, bool, bool, dict]:
         """One control step with `action` (action_space's shape): (observation, reward,
         terminated, truncated, info); info holds "epoch", "step" (steps taken this episode),
         "fitness" (this episode's rewards summed as esc sums them) and "action" (the index in
         `choices` of the action or behavior that acted, -1 for none). ValueError for an
-        action of the wrong shape; RuntimeError before reset() or after the episode ended."""
-        return self._env.step(action)
+        action of the wrong shape or with a NaN or infinite value (naming its index);
+        TypeError for an action that is not real numbers; RuntimeError before reset() or
+        after the episode ended."""
+        return self._env.step(arguments.finite("action", action))
 
     def state(self) -> dict:
         """The robot after the last step, as `esc replay` writes a row of its CSV: x, y
@@ -127,12 +133,13 @@ class Env:
     def policy(self, genome) -> "Policy":
         """The network of `controller` with weights `genome` as a policy for this Env:
         policy(observation) -> action. Its recurrent state (an Elman network's) starts afresh
-        with every episode of this Env, as the network's does with every epoch in esc."""
+        with every episode of this Env, as the network's does with every epoch in esc.
+        `genome` is checked as esc.evaluate checks a genome (real, finite numbers)."""
         if self.controller is None:
             raise ValueError("this Env has no controller: its policy would be a network of which controller? "
                              "Make the Env with controller=NAME")
         return Policy(self, _esc.Policy(self._script._compiled, self.experiment, self.controller,
-                                        np.asarray(genome, dtype=np.float64)))
+                                        arguments.finite("genome", genome)))
 
     def close(self) -> None:
         """Nothing to release (Gymnasium's interface)."""
@@ -156,4 +163,4 @@ class Policy:
         if self._env.episode != self._episode:
             self._network.reset()
             self._episode = self._env.episode
-        return self._network(np.asarray(observation, dtype=np.float64))
+        return self._network(arguments.finite("observation", observation))

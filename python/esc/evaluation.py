@@ -1,14 +1,14 @@
 """Fitness of genomes: esc.evaluate, the function any Python optimizer can call, and esc.measure,
 every objective and descriptor of them."""
 
+from collections.abc import Iterable
 from typing import Optional, Sequence, Union
 
 import numpy as np
 
+from esc import _arguments as arguments
 from esc import _esc
 from esc.script import PathOrSource, Script, as_script
-
-_SEED_LIMIT = 2 ** 64
 
 Seeds = Union[int, Sequence[int], np.ndarray]
 
@@ -17,19 +17,18 @@ def _seeds(seed: Seeds, count: int) -> np.ndarray:
     """One evaluation seed per genome: `seed` for every one, or one each. Read as Python
     ints, never through a float: numpy makes float64 of a list mixing seeds above and below
     2^63, which loses their low bits."""
-    if isinstance(seed, (int, np.integer)):
-        values = [seed] * count
+    if isinstance(seed, np.ndarray):
+        values = np.ravel(seed).tolist()
+    elif isinstance(seed, Iterable) and not isinstance(seed, (str, bytes)):
+        values = list(seed)
     else:
-        values = np.ravel(seed).tolist() if isinstance(seed, np.ndarray) else list(seed)
+        values = [arguments.option("seed", seed)] * count
     if len(values) != count:
         raise ValueError(f"{len(values)} seeds for {count} genomes: give one seed, or one per genome")
-    for s in values:
-        if not isinstance(s, (int, np.integer)) or isinstance(s, bool) or not 0 <= s < _SEED_LIMIT:
-            raise ValueError(f"seed {s!r} is not a 64-bit unsigned integer")
-    return np.array([int(s) for s in values], dtype=np.uint64)
+    return np.array([arguments.option(f"seed[{i}]", s, "seed") for i, s in enumerate(values)], dtype=np.uint64)
 
 
-def evaluate(script: Union[Script, PathOrSource], experiment: str, controller: str, genomes,
+def evaluate(script: Union[Script, PathOrSource], experiment: Optional[str], controller: str, genomes,
              epochs: Optional[int] = None, seed: Seeds = 0) -> np.ndarray:
     """The fitness of each genome of `controller` in `experiment`, as esc computes it.
 
@@ -37,7 +36,8 @@ def evaluate(script: Union[Script, PathOrSource], experiment: str, controller: s
     `genomes` is, for a network controller, a 2-D float array with one genome (all the
     network's weights, Controller.genome_size of them) per row; for a tree controller, a
     sequence of encoded trees (1-D float arrays, as Run.best_genome(..., encoded=True) gives
-    them). `epochs` replaces the experiment's number of epochs (as --set epochs=N does).
+    them). `experiment` None names the script's one experiment (ValueError when it declares
+    several). `epochs` replaces the experiment's number of epochs (as --set epochs=N does).
 
     `seed` is the evaluation seed: the one random stream an evaluation draws its start poses,
     zones and sensor and motor noise from (epoch e from Rng(seed, e)); an int for every genome
@@ -51,14 +51,14 @@ def evaluate(script: Union[Script, PathOrSource], experiment: str, controller: s
     genome, settings and seed. Evaluations run on all threads with the GIL released; the
     result does not depend on the number of threads. Raises ValueError for an unknown
     experiment or controller, a genome of the wrong length (naming the expected and the given
-    lengths), or a tree that is not one of the controller's.
+    lengths), a tree that is not one of the controller's, a weight that is NaN or infinite
+    (naming its index), `epochs` or a seed out of range; TypeError for genomes that are not
+    real numbers (complex ones included) and for `epochs` or a seed that is not an integer.
     """
-    s = as_script(script)
-    rows, count = _genome_rows(s, experiment, controller, genomes)
-    return _esc.evaluate(s._compiled, experiment, controller, rows, epochs, _seeds(seed, count))
+    return _esc.evaluate(*_evaluations(script, experiment, controller, genomes, epochs, seed))
 
 
-def measure(script: Union[Script, PathOrSource], experiment: str, controller: str, genomes,
+def measure(script: Union[Script, PathOrSource], experiment: Optional[str], controller: str, genomes,
             epochs: Optional[int] = None, seed: Seeds = 0) -> "pandas.DataFrame":
     """Every objective and behavior descriptor of each genome, as esc measures them.
 
@@ -70,10 +70,18 @@ def measure(script: Union[Script, PathOrSource], experiment: str, controller: st
     """
     import pandas as pd
 
-    s = as_script(script)
-    rows, count = _genome_rows(s, experiment, controller, genomes)
-    names, values = _esc.measure(s._compiled, experiment, controller, rows, epochs, _seeds(seed, count))
+    names, values = _esc.measure(*_evaluations(script, experiment, controller, genomes, epochs, seed))
     return pd.DataFrame(values, columns=names)
+
+
+def _evaluations(script: Union[Script, PathOrSource], experiment: Optional[str], controller: str, genomes,
+                 epochs: Optional[int], seed: Seeds) -> tuple:
+    """The arguments of _esc.evaluate and _esc.measure, each checked as esc.evaluate documents."""
+    s = as_script(script)
+    experiment = s.experiment_named(experiment)
+    epochs = arguments.optional("epochs", epochs)
+    rows, count = _genome_rows(s, experiment, controller, genomes)
+    return s._compiled, experiment, controller, rows, epochs, _seeds(seed, count)
 
 
 def _genome_rows(s: Script, experiment: str, controller: str, genomes):
@@ -84,9 +92,9 @@ def _genome_rows(s: Script, experiment: str, controller: str, genomes):
         if isinstance(genomes, str) or any(isinstance(g, str) for g in genomes):
             raise ValueError(f"`{controller}` is a tree controller: give its trees encoded, as "
                              "Run.best_genome(controller, run, encoded=True) returns them, not as text")
-        rows = [np.asarray(g, dtype=np.float64).ravel() for g in genomes]
+        rows = [arguments.finite(f"genomes[{i}]", g).ravel() for i, g in enumerate(genomes)]
         return rows, len(rows)
-    rows = np.asarray(genomes, dtype=np.float64)
+    rows = arguments.finite("genomes", genomes)
     if rows.ndim != 2:
         raise ValueError(f"genomes of `{controller}` are a 2-D array, one genome of {c.genome_size} weights per "
                          f"row (genome[None, :] for one); got shape {rows.shape}")
@@ -96,9 +104,13 @@ def _genome_rows(s: Script, experiment: str, controller: str, genomes):
 def evaluation_seed(run_seed: int, generation: int, individual: int) -> int:
     """The evaluation seed of offspring `individual` (from 0) of generation `generation`
     (from 0) of a run whose seed is `run_seed` (summary.json's "seed" of the run)."""
-    return _esc.evaluation_seed(run_seed, generation, individual)
+    last_generation = arguments.limits("generations")[1] - 1
+    return _esc.evaluation_seed(arguments.option("run_seed", run_seed, "seed"),
+                                arguments.integer("generation", generation, 0, last_generation),
+                                arguments.integer("individual", individual, 0, 2 ** 64 - 1))   # a size_t
 
 
 def run_seed(master_seed: int, run: int) -> int:
     """The seed of run `run` (from 1) of an experiment whose master seed is `master_seed`."""
-    return _esc.run_seed(master_seed, run - 1)
+    return _esc.run_seed(arguments.option("master_seed", master_seed, "seed"),
+                         arguments.option("run", run, "runs") - 1)

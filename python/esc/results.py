@@ -9,6 +9,7 @@ from typing import List, Optional, Union
 
 import numpy as np
 
+from esc import _arguments as arguments
 from esc import _esc
 from esc._library import standard_library
 from esc.errors import Error
@@ -120,8 +121,9 @@ class Run:
     def best(self, controller: str, run: int, condition: Optional[str] = None) -> BestEvaluation:
         """The best evaluation of finished run `run` (from 1) of `controller` (of a study's
         `condition`, which a study of several conditions needs). ValueError for a controller,
-        run or condition it does not hold."""
-        d = self._stored.best(controller, run, condition or "")
+        run or condition it does not hold (a run outside 1..runs, or one not finished);
+        TypeError for a run that is not an integer."""
+        d = self._stored.best(controller, self._run(run, condition), condition or "")
         return BestEvaluation(d["run"], d["run_seed"], d["fitness"], d["generation"], d["individual"],
                               d["evaluation_seed"], d["genome"], d["tree"])
 
@@ -131,7 +133,9 @@ class Run:
         experiment compiled from the run's stored sources. Novelty search without the fitness
         keeps behaviors alone: its members are the archived descriptors, without objectives or
         genome. esc.Error when the optimizer keeps no members (the ES, CMA-ES, GP) or the run
-        is not finished; ValueError for a controller or condition the directory does not hold."""
+        is not finished; ValueError for a controller, run (outside 1..runs) or condition the
+        directory does not hold; TypeError for a run that is not an integer."""
+        run = self._run(run, condition)
         found = self._stored.members(controller, run, condition or "", os.fspath(standard_library()))
         return [Member(**d) for d in found]
 
@@ -142,6 +146,10 @@ class Run:
         encoded tree (a float64 array) that esc.evaluate takes."""
         best = self.best(controller, run, condition)
         return best.tree if best.tree is not None and not encoded else best.genome
+
+    def _run(self, run: int, condition: Optional[str]) -> int:
+        """`run` checked against the runs the directory's experiment (or `condition`) has."""
+        return arguments.integer("run", run, 1, self._stored.runs(condition or ""))
 
     def __repr__(self) -> str:
         what = f"study {self.study}" if self.study else f"experiment {self.experiments[0]}"

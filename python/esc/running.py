@@ -3,6 +3,7 @@
 import os
 from typing import Callable, Mapping, NamedTuple, Optional, Sequence, Union
 
+from esc import _arguments as arguments
 from esc import _esc
 from esc._library import standard_library
 from esc.results import Run, open as open_run
@@ -55,11 +56,19 @@ def run(script: Union[Script, PathLike], experiment: Optional[str] = None, runs:
     runs/<name>-<local time>. The directory holds exactly what `esc run` writes with the same
     arguments (esc.db, summary.json, the CSVs), byte for byte where esc run's are.
 
-    `progress`, if given, is called after each generation with a Generation. Ctrl-C
-    (KeyboardInterrupt) stops the run once the generation under way is stored: esc.resume
-    continues it. Raises esc.ScriptError (the script), esc.Error (a setting, the directory,
-    a dependency, memory), FileNotFoundError (no such script).
+    `runs` and `generations` are integers in 1..10^9, `seed` in 0..2^64-1, `threads` in
+    0..4096 (0: all cores), as `esc run` accepts them: TypeError for another type (a bool or
+    a float included), ValueError out of range, before anything is compiled or written.
+
+    `progress`, if given, is called with a Generation after each generation is stored.
+    Ctrl-C (KeyboardInterrupt), or an exception `progress` raises, stops the run there, that
+    generation kept: esc.resume continues it. Raises esc.ScriptError (the script), esc.Error
+    (a setting, the directory, a dependency, memory), FileNotFoundError (no such script).
     """
+    runs = arguments.optional("runs", runs)
+    generations = arguments.optional("generations", generations)
+    seed = arguments.optional("seed", seed)
+    threads = arguments.optional("threads", threads)
     path, given = _script_and_settings(script)
     given += [f"{k}={_setting_text(v)}" for k, v in (set or {}).items()]
     outcome = _esc.run(path, experiment or "", runs, generations, seed, threads or 0, os.fspath(out or ""), given,
@@ -75,8 +84,11 @@ def resume(dir: PathLike, generations: Optional[int] = None, script: Optional[Pa
     every run on to that many generations. `script` is where its script is now, if it moved.
     Returns the directory opened; one already complete is returned as it is.
 
-    Raises esc.Error when the directory cannot be resumed (the message says why: the script
-    changed, nothing stored, a run still writing into it, ...)."""
+    `generations` and `threads` are checked as esc.run checks them. Raises esc.Error when the
+    directory cannot be resumed (the message says why: the script changed, nothing stored, a
+    run still writing into it, ...)."""
+    generations = arguments.optional("generations", generations)
+    threads = arguments.optional("threads", threads)
     _esc.resume(os.fspath(dir), generations, os.fspath(script or ""), threads or 0, os.fspath(cache or ""),
                 standard_library(), progress)
     return open_run(dir)

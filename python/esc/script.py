@@ -79,10 +79,24 @@ class Script:
         settings.json holds them ("epochs" -> "10", ...)."""
         return {e: dict(self._compiled.settings(e)) for e in self.experiments}
 
-    def controller(self, experiment: str, name: str) -> Controller:
-        """Controller `name` of `experiment`; ValueError naming the experiments or controllers
-        there are (and the closest)."""
-        return _controller(self._compiled.controller(experiment, name))
+    def controller(self, experiment: Optional[str], name: str) -> Controller:
+        """Controller `name` of `experiment` (None: the script's one experiment); ValueError
+        naming the experiments or controllers there are (and the closest)."""
+        return _controller(self._compiled.controller(self.experiment_named(experiment), name))
+
+    def experiment_named(self, experiment: Optional[str]) -> str:
+        """`experiment` itself, or for None the one experiment the main file declares, as
+        `esc run` without --experiment runs it; ValueError when it declares none or several
+        (which one was meant?)."""
+        if experiment is not None:
+            if not isinstance(experiment, str):
+                raise TypeError(f"experiment={experiment!r}: expected the name of an experiment (a str) or None")
+            return experiment
+        names = self.experiments
+        if len(names) == 1:
+            return names[0]
+        declared = ", ".join(f"`{n}`" for n in names) if names else "none"
+        raise ValueError(f"experiment=None: {self.file} declares {len(names)} experiments ({declared}): name one")
 
     def __repr__(self) -> str:
         return f"<esc.Script {self.file}: experiments {self.experiments}, studies {list(self.studies)}>"
@@ -100,11 +114,13 @@ def _setting_text(value) -> str:
 
 def _is_path(path_or_source: PathOrSource) -> bool:
     """Whether the argument names a file rather than holding script text: a PathLike always;
-    a str when it is an existing file, or a one-line name ending in .esc (a missing file,
-    reported as such rather than compiled as text)."""
+    a str when it is an existing file or directory, or a one-line name ending in .esc (a
+    missing file, reported as such rather than compiled as text)."""
     if isinstance(path_or_source, os.PathLike):
         return True
-    if os.path.isfile(path_or_source):
+    if not isinstance(path_or_source, str):
+        raise TypeError(f"path_or_source={path_or_source!r}: expected a path (str or os.PathLike) or script text")
+    if os.path.exists(path_or_source):
         return True
     return "\n" not in path_or_source and path_or_source.strip().endswith(".esc")
 
@@ -118,13 +134,19 @@ def compile(path_or_source: PathOrSource, settings: Optional[Mapping[str, object
     standard library. `settings` ({"epochs": 2, "robot.inertia": False, ...}) are applied to
     every experiment and study condition as `esc run --set KEY=VALUE` applies them.
 
-    Raises FileNotFoundError for a missing file, esc.ScriptError for a script with errors
-    (its first error's file, line, column and message), esc.Error for a setting refused.
-    Warnings are issued as esc.ScriptWarning.
+    A relative path that does not exist from the working directory is looked up as an import
+    is, in $ESC_PATH then in the standard library: "paper/obstacle_avoidance.esc" is the
+    shipped script, installed or in the build tree (Script.file says which file was read).
+
+    Raises FileNotFoundError for a missing file, IsADirectoryError for a directory,
+    esc.ScriptError for a script with errors (its first error's file, line, column and
+    message), esc.Error for a setting refused. Warnings are issued as esc.ScriptWarning.
     """
     pairs = [(str(k), _setting_text(v)) for k, v in (settings or {}).items()]
     if _is_path(path_or_source):
-        path = os.fspath(path_or_source)
+        path = os.fspath(_esc.find_main_script(os.fspath(path_or_source), standard_library()))
+        if os.path.isdir(path):
+            raise IsADirectoryError(21, "A script is a file; this is a directory", path)
         if not os.path.isfile(path):
             raise FileNotFoundError(2, "No such script", path)
         compiled = _esc.compile_file(path, standard_library(), pairs)

@@ -7,6 +7,7 @@
 namespace esc::python {
 
 void bind_errors(pybind11::module_& m);     // errors.cpp: store errors as esc.Error
+void bind_limits(pybind11::module_& m);     // limits.cpp: the ranges the esc program checks
 void bind_script(pybind11::module_& m);     // script.cpp: compiling scripts
 void bind_results(pybind11::module_& m);    // results.cpp: reading run directories
 void bind_evaluate(pybind11::module_& m);   // evaluate.cpp: fitness of genomes

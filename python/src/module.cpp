@@ -5,6 +5,7 @@ PYBIND11_MODULE(_esc, m) {
   m.doc() = "esc's compiler, simulator and results store, bound for the Python package esc (use `import esc`).";
   m.attr("__version__") = ESC_VERSION_STRING;
   esc::python::bind_errors(m);
+  esc::python::bind_limits(m);
   esc::python::bind_script(m);
   esc::python::bind_results(m);
   esc::python::bind_evaluate(m);

@@ -97,6 +97,9 @@ class StoredRun {
     return out;
   }
 
+  // The runs of each controller of the experiment, or of a study's condition `condition`.
+  [[nodiscard]] int runs(const std::string& condition) const { return find_experiment(condition).runs; }
+
   // Run `run` (from 1) of `controller`: its best genome and where its best evaluation happened.
   [[nodiscard]] py::dict best(const std::string& controller, int run, const std::string& condition) const {
     const store::StoredController& c = find_controller(find_experiment(condition), controller);
@@ -169,6 +172,8 @@ void bind_results(py::module_& m) {
       .def("best", &StoredRun::best, py::arg("controller"), py::arg("run"), py::arg("condition") = "",
            "Finished run `run` (from 1) of `controller`: a dict of run, run_seed, fitness, generation, individual, "
            "evaluation_seed, genome (network weights, or a tree encoded) and tree (a tree's text, else None).")
+      .def("runs", &StoredRun::runs, py::arg("condition") = "",
+           "The runs of each controller of the experiment (or of a study's `condition`), finished or not.")
       .def("members", &StoredRun::members, py::arg("controller"), py::arg("run"), py::arg("condition"),
            py::arg("standard_library"),
            "The final front or archive of finished run `run` (from 1) of `controller`: a list of dicts of kind, "

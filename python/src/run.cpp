@@ -1,7 +1,7 @@
 // esc.run and esc.resume: the application layer's run and resume (app/run.hpp), the GIL
-// released while they work. Per generation the progress callable is called (the GIL taken);
-// after each generation stored, a pending Ctrl-C stops the run there, leaving a directory
-// that esc.resume (or `esc run --resume`) continues.
+// released while they work. After each generation stored the progress callable is called
+// (the GIL taken), then a pending Ctrl-C stops the run there; either's exception leaves a
+// directory that esc.resume (or `esc run --resume`) continues.
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,18 +49,17 @@ class PythonEvents final : public app::Events {
     Generations(eval::CampaignListener& next, const py::object& callback, std::string condition)
         : Progress(next), callback_(callback), condition_(std::move(condition)) {}
 
-    void generation_done(const control::ControllerSpec& c, int run, const eval::GenerationStats& g) override {
-      Progress::generation_done(c, run, g);
-      if (callback_.is_none()) return;
-      const py::gil_scoped_acquire gil;
-      const py::object record = py::module_::import("esc.running").attr("Generation");
-      callback_(record(condition_, c.name, run + 1, g.generation, g.best, g.mean));
-    }
-
-    // Once the directory holds the generation: a Ctrl-C pending stops here.
+    // Once the directory holds the generation: the progress callable is told of it, then a
+    // Ctrl-C pending stops here. An exception either raises stops the run with the
+    // generation kept, for esc.resume to continue from.
     void checkpoint(const control::ControllerSpec& c, const eval::RunState& state) override {
       Progress::checkpoint(c, state);
       const py::gil_scoped_acquire gil;
+      if (!callback_.is_none()) {
+        const eval::GenerationStats& g = state.generations.back();
+        const py::object record = py::module_::import("esc.running").attr("Generation");
+        callback_(record(condition_, c.name, state.run + 1, g.generation, g.best, g.mean));
+      }
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     }
 

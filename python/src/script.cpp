@@ -1,8 +1,9 @@
 // Compiling a script as every esc command does (imports beside the file, then $ESC_PATH, then
-// the standard library the package found), from a file or from text, and the settings a
-// caller gives applied as `esc run --set KEY=VALUE` applies them. What is wrong with a script
-// comes back as data (its diagnostics and the text the CLI prints), from which the package
-// raises esc.ScriptError; a setting refused raises esc.Error.
+// the standard library the package found; a main file not found as given looked up the same
+// way), from a file or from text, and the settings a caller gives applied as `esc run --set
+// KEY=VALUE` applies them. What is wrong with a script comes back as data (its diagnostics
+// and the text the CLI prints), from which the package raises esc.ScriptError; a setting
+// refused raises esc.Error.
 #include <string>
 #include <utility>
 #include <vector>
@@ -167,6 +168,9 @@ void bind_script(py::module_& m) {
       "Compiles the script `file` (imports searched beside it, in $ESC_PATH, then in `standard_library`) and "
       "applies `settings`, (key, value) pairs, to every experiment and study condition as `esc run --set` does. "
       "Raises esc.Error for a setting refused.");
+  m.def("find_main_script", &app::find_main_script, py::arg("file"), py::arg("standard_library"),
+        "`file` as given when it exists or is absolute; else the first directory of $ESC_PATH, then "
+        "`standard_library`, that holds it (as an import is found); else `file`.");
   m.def(
       "compile_source",
       [](const std::string& text, const std::filesystem::path& name, const std::filesystem::path& standard_library,

@@ -54,10 +54,11 @@ std::shared_ptr<const DirectoryLock> create_output_directory(const fs::path& dir
       if (entry.path().filename() != kDependencyCache) fs::remove_all(entry.path(), ec);
     fresh = !ec;
   }
+  // Worded for every front end: `esc run --out` and esc.run's `out=` alike.
   if (!fresh)
     throw std::runtime_error(fmt::format(
         "output directory `{}` already exists and is not empty; results are never overwritten: "
-        "choose another --out or remove it", dir.string()));
+        "choose another output directory or remove it", dir.string()));
   fs::create_directories(dir / "sources", ec);
   if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir.string(), ec.message()));
   return lock;

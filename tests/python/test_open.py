@@ -124,7 +124,7 @@ def test_unknown_names_are_value_errors(homing_run):
     run = esc.open(homing_run)
     with pytest.raises(ValueError, match="did you mean `usage`"):
         run.table("usages")
-    with pytest.raises(ValueError, match="no finished run 2"):
+    with pytest.raises(ValueError, match=r"run=2: expected an integer in 1\.\.1"):
         run.best_genome("CC", 2)
     with pytest.raises(ValueError, match="did you mean `SC`"):
         run.best_genome("SCX", 1)
