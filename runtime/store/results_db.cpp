@@ -546,7 +546,16 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
                                       dir.string(), kDependencyCache));
     throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
   }
-  if (fs::file_size(file, ec) == 0 && !ec) throw nothing();
+  if (fs::file_size(file, ec) == 0 && !ec) {
+    // esc.db's first page is written before any frame of its log, and SQLite deletes the log
+    // of an empty database: frames beside an empty esc.db are all that is left of it.
+    const fs::path log = file.string() + "-wal";
+    if (fs::file_size(log, ec) > 32 && !ec)
+      throw StoreError(fmt::format("{} is empty but {} holds {} bytes: the database was cut short (damaged), and "
+                                   "what its log holds cannot be read without it",
+                                   file.string(), log.string(), fs::file_size(log, ec)));
+    throw nothing();
+  }
   // Reading needs no lock (export and report read a running run) and reads a snapshot (no
   // file appears beside the database; a read-only directory reads); writing excludes others.
   std::shared_ptr<const DirectoryLock> lock = read_only ? nullptr : DirectoryLock::acquire(dir);

@@ -2,7 +2,8 @@
 // resume reads (experiment, settings, controllers, runs and their seeds, statistics, the
 // population to continue from, behavior usage, the replay) or in SQLite's own pages, is
 // refused when the database is loaded, or provably harmless: everything that loads is
-// exactly what was stored, so the resumed run cannot differ.
+// exactly what was stored, so the resumed run cannot differ. A bit flipped in a killed run's
+// log (esc.db-wal) is said (what SQLite dropped), refused, or harmless.
 #include <bit>
 #include <cstring>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/untouched_load.hpp"
 #include "runtime/store/write_ahead_log.hpp"
 #include "tests/store/scratch.hpp"
 
@@ -280,6 +282,25 @@ TEST(BitFlip, WritingAfterADamagedLogEmptiesIt) {
     EXPECT_FALSE(log_damage(killed / kDatabaseFile));
   }
   EXPECT_FALSE(ResultsDb::open(killed, true).log_damage());
+  fs::remove_all(killed);
+  fs::remove_all(folded);
+}
+
+// A killed run's esc.db cut to nothing beside its log: not a run stopped before it started
+// (whose directory `esc run --out` would reuse, deleting the log), but a damaged database.
+TEST(BitFlip, AnEmptyDatabaseBesideItsLogIsDamaged) {
+  const fs::path killed = fresh_dir("killed-emptied");
+  const fs::path folded = stopped_run(killed);
+  fs::resize_file(killed / kDatabaseFile, 0);
+  try {
+    (void)ResultsDb::open(killed, true);
+    ADD_FAILURE() << "an empty esc.db beside its log was read";
+  } catch (const NothingStored& e) {
+    ADD_FAILURE() << e.what();
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("esc.db is empty but "), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(holds_nothing_stored(killed));
   fs::remove_all(killed);
   fs::remove_all(folded);
 }
