@@ -24,10 +24,12 @@ namespace fs = std::filesystem;
 
 // A run directory, or one condition of a study named by its directory (STUDY/CONDITION, as
 // `esc replay` takes it): that condition's experiment alone, under the study's directory.
-store::StoredDirectory load(const fs::path& named) {
+store::StoredDirectory load(const fs::path& named, Events& events) {
   const RunLocation at = locate_run(named);
-  if (at.condition.empty()) return {named, store::ResultsDb::open(named, true).load()};
-  std::vector<store::StoredExperiment> all = store::ResultsDb::open(at.root, true).load();
+  store::ResultsDb db = store::ResultsDb::open(at.condition.empty() ? named : at.root, true);
+  if (db.log_damage()) events.note({Note::Kind::Warning, log_damage_warning(at.root, *db.log_damage())});
+  if (at.condition.empty()) return {named, db.load()};
+  std::vector<store::StoredExperiment> all = db.load();
   std::vector<store::StoredExperiment> condition;
   for (store::StoredExperiment& e : all)
     if (e.condition && e.condition->directory == at.condition) condition.push_back(std::move(e));
@@ -37,9 +39,9 @@ store::StoredDirectory load(const fs::path& named) {
   return {at.root, std::move(condition)};
 }
 
-std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs) {
+std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs, Events& events) {
   std::vector<store::StoredDirectory> all;
-  for (const fs::path& d : dirs) all.push_back(load(d));
+  for (const fs::path& d : dirs) all.push_back(load(d, events));
   return all;
 }
 
@@ -66,9 +68,15 @@ RunLocation locate_run(fs::path dir) {
   return {dir, {}, false};
 }
 
-std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv) {
+std::string log_damage_warning(const std::filesystem::path& root, const store::LogScan& scan) {
+  return fmt::format("{}: the generations they held are not read; `esc run --resume {}` runs them again",
+                     store::log_damage_text(root / store::kDatabaseFile, scan), root.string());
+}
+
+std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv,
+                        Events& events) {
   check_table(table);
-  return table_text(load_all(dirs), table, csv);
+  return table_text(load_all(dirs, events), table, csv);
 }
 
 std::string table_text(const std::vector<store::StoredDirectory>& all, std::string_view table, bool csv) {
@@ -84,8 +92,8 @@ std::string table_text(const std::vector<store::StoredDirectory>& all, std::stri
   return csv ? store::export_csv(all) : store::export_json(all).dump(2) + "\n";
 }
 
-ReportFiles write_report(const std::vector<std::filesystem::path>& dirs, std::filesystem::path out) {
-  const report::Report r = report::make_report(load_all(dirs));
+ReportFiles write_report(const std::vector<std::filesystem::path>& dirs, std::filesystem::path out, Events& events) {
+  const report::Report r = report::make_report(load_all(dirs, events));
   if (out.empty()) out = dirs.front() / "report.html";
   require_writable(out.parent_path(), "the report and its figures cannot be written there",
                    fmt::format("write them elsewhere: esc report {} --out DIR2/report.html", dirs.front().string()));

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/events.hpp"
 #include "runtime/store/results_db.hpp"
 
 namespace esc::app {
@@ -27,12 +28,18 @@ struct RunLocation {
 };
 [[nodiscard]] RunLocation locate_run(std::filesystem::path dir);
 
+// What a reader of `root` says of its damaged write-ahead log (store::log_damage): the
+// frames SQLite dropped, that what it holds is shown without them, and how to run them again.
+[[nodiscard]] std::string log_damage_warning(const std::filesystem::path& root, const store::LogScan& scan);
+
 // Table `table` of every directory in `dirs`, as CSV or (csv false) JSON; JSON without a
 // table named is everything stored. A study's condition directory (STUDY/CONDITION) stands
 // for that condition alone, here and in write_report. Throws store::StoreError for a
 // directory that is not a run's, std::invalid_argument for an unknown table (naming the
-// tables, and the nearest).
-[[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv);
+// tables, and the nearest). A directory whose log is damaged is read as SQLite reads it,
+// after a Warning note (log_damage_warning) to `events`.
+[[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv,
+                                      Events& events);
 // The same of directories already read.
 [[nodiscard]] std::string table_text(const std::vector<store::StoredDirectory>& dirs, std::string_view table, bool csv);
 
@@ -42,7 +49,9 @@ struct ReportFiles {
   std::size_t figure_count = 0;
 };
 
-// One report of `dirs` written to `out` (default: DIR/report.html of a single directory).
-[[nodiscard]] ReportFiles write_report(const std::vector<std::filesystem::path>& dirs, std::filesystem::path out = {});
+// One report of `dirs` written to `out` (default, when empty: DIR/report.html of a single
+// directory), telling `events` of damaged logs as export_text does.
+[[nodiscard]] ReportFiles write_report(const std::vector<std::filesystem::path>& dirs, std::filesystem::path out,
+                                       Events& events);
 
 }  // namespace esc::app

@@ -27,6 +27,7 @@ namespace {
 struct Stored {
   std::vector<store::StoredExperiment> experiments;
   bool study = false;
+  std::optional<store::LogScan> log_damage;   // what SQLite dropped from a damaged log
   [[nodiscard]] const store::StoredExperiment& first() const { return experiments.front(); }
   [[nodiscard]] std::size_t finished() const {
     return static_cast<std::size_t>(std::count_if(experiments.begin(), experiments.end(),
@@ -53,8 +54,11 @@ std::string restart_command(const store::NothingStored::Launch& launch, const st
 // Read from a copy: a refused resume leaves every byte of the directory as it was.
 Stored load(const std::filesystem::path& dir) {
   std::vector<store::StoredExperiment> all;
+  std::optional<store::LogScan> log_damage;
   try {
-    all = store::load_untouched(dir);
+    store::UntouchedRead read = store::read_untouched(dir);
+    all = std::move(read.experiments);
+    log_damage = read.log_damage;
   } catch (const store::NothingStored& e) {
     if (!e.launch())
       throw Error(ErrorKind::Results,
@@ -68,11 +72,11 @@ Stored load(const std::filesystem::path& dir) {
                             e.what()),
                 restart_command(*e.launch(), dir));
   }
-  if (!all.empty() && all.front().condition) return {store::study_conditions(std::move(all)), true};
+  if (!all.empty() && all.front().condition) return {store::study_conditions(std::move(all)), true, log_damage};
   if (all.size() != 1)
     throw Error(ErrorKind::Results,
                 fmt::format("{} holds {} experiments; a run directory holds one", dir.string(), all.size()));
-  return {std::move(all), false};
+  return {std::move(all), false, log_damage};
 }
 
 std::string complete_text(const std::filesystem::path& dir, const Stored& s) {
@@ -108,10 +112,8 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
   // this one before anything is read or told.
   std::shared_ptr<const store::DirectoryLock> lock;
   std::error_code ec;
-  if (!follower_rank() && std::filesystem::is_directory(r.dir, ec)) {
-    require_writable(r.dir, "a resume writes the generations it runs into the run's directory",
-                     fmt::format("copy it where you may write and resume the copy: cp -r {} COPY && esc run --resume "
-                                 "COPY", r.dir.string()));
+  const bool writes = !follower_rank() && std::filesystem::is_directory(r.dir, ec);
+  if (writes) {
     try {
       lock = store::DirectoryLock::acquire(r.dir);
     } catch (const store::StoreError& e) {
@@ -124,7 +126,15 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
     tell(events, Note::Kind::Complete, complete_text(r.dir, stored));
     return Outcome{r.dir, stored.study ? stored.first().condition->study : std::string(), {}, false};
   };
-  if (stored.finished() == n && !r.generations) return complete();
+  if (stored.finished() == n && !r.generations) return complete();   // a read-only one too: nothing to write
+  if (writes)
+    require_writable(r.dir, "a resume writes the generations it runs into the run's directory",
+                     fmt::format("copy it where you may write and resume the copy: cp -r {} COPY && esc run --resume "
+                                 "COPY", r.dir.string()));
+  if (stored.log_damage)
+    tell(events, Note::Kind::Warning,
+         fmt::format("{}: the generations they held are run again",
+                     store::log_damage_text(r.dir / store::kDatabaseFile, *stored.log_damage)));
   const std::filesystem::path script = resume_script(r, stored.first().script);
   compiler::CompileResult compiled = compile_to_resume(r, script, options, events);
 

@@ -319,7 +319,9 @@ app::RunLocation locate(const fs::path& dir) {
 // The stored experiment to replay: the run's one experiment, or the study condition
 // `at.condition`. Nullopt after printing an error (a study's directory names no condition).
 std::optional<store::StoredExperiment> load_stored(const app::RunLocation& at) {
-  std::vector<store::StoredExperiment> all = store::ResultsDb::open(at.root, true).load();
+  store::ResultsDb db = store::ResultsDb::open(at.root, true);
+  if (db.log_damage()) complain("esc: {}\n", app::log_damage_warning(at.root, *db.log_damage()));
+  std::vector<store::StoredExperiment> all = db.load();
   const bool study = !all.empty() && all.front().condition;
   if (!study && at.condition.empty()) {
     if (all.size() == 1) return std::move(all.front());

@@ -5,6 +5,7 @@
 
 #include "app/results.hpp"
 #include "cli/commands.hpp"
+#include "cli/terminal_events.hpp"
 #include "runtime/store/run_directory.hpp"
 
 namespace esc::cli {
@@ -14,7 +15,8 @@ int export_command(const ExportOptions& o) {
     fmt::print(stderr, "esc: error: --format must be csv or json, not `{}`\n", o.format);
     return kExitUsage;
   }
-  const std::string text = app::export_text(o.dirs, o.table, o.format == "csv");
+  TerminalEvents events;
+  const std::string text = app::export_text(o.dirs, o.table, o.format == "csv", events);
   if (o.out.empty()) {
     std::cout << text << std::flush;
   } else {
@@ -30,7 +32,8 @@ int report_command(const ReportOptions& o) {
                        "beside it, in figures/)\n", o.dirs.size());
     return kExitUsage;
   }
-  const app::ReportFiles written = app::write_report(o.dirs, o.out);
+  TerminalEvents events;
+  const app::ReportFiles written = app::write_report(o.dirs, o.out, events);
   fmt::print("esc: wrote {} and {} figure{} in {}\n", written.html.string(), written.figure_count,
              written.figure_count == 1 ? "" : "s", written.figures.string());
   return kExitOk;

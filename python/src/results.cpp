@@ -27,7 +27,14 @@ namespace {
 
 class StoredRun {
  public:
-  explicit StoredRun(const std::filesystem::path& dir) : dir_{dir, store::load_untouched(dir)} {}
+  explicit StoredRun(const std::filesystem::path& dir) {
+    store::UntouchedRead read = store::read_untouched(dir);
+    dir_ = {dir, std::move(read.experiments)};
+    // As `esc export` says it, to the logger the esc program's other lines go to.
+    if (read.log_damage)
+      py::module_::import("logging").attr("getLogger")("esc").attr("warning")(
+          app::log_damage_warning(dir, *read.log_damage));
+  }
 
   // std::invalid_argument (a ValueError) for an unknown table, naming the nearest.
   [[nodiscard]] std::string table_csv(const std::string& name) const {

@@ -3,12 +3,15 @@
 #include <stdlib.h>
 
 #include <array>
+#include <chrono>
 #include <string>
 #include <system_error>
+#include <thread>
 
 #include <fmt/format.h>
 
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/write_ahead_log.hpp"
 
 namespace esc::store {
 
@@ -47,7 +50,7 @@ DatabaseSnapshot::DatabaseSnapshot(const fs::path& dir) {
   dir_ = pattern;
   // A writer commits every generation: a few tries find a moment between two commits.
   constexpr int kTries = 5;
-  try {
+  const auto copy_of_one_moment = [&] {
     for (int attempt = 0; attempt < kTries; ++attempt) {
       const Stamp before = stamp(dir);
       for (const char* suffix : kFiles) {
@@ -57,12 +60,28 @@ DatabaseSnapshot::DatabaseSnapshot(const fs::path& dir) {
         std::error_code ec;
         if (fs::exists(file, ec)) fs::copy_file(file, copy);
       }
-      if (stamp(dir) == before) break;
+      if (stamp(dir) == before) return;
+    }
+  };
+  // A log being written can be copied between a frame's header and its page, over an older
+  // frame: that reads as damage (write_ahead_log.hpp) until the page lands. A damaged log
+  // is damaged in every copy; a write in progress ends within milliseconds.
+  constexpr int kDamagedCopies = 4;
+  constexpr auto kBetweenCopies = std::chrono::milliseconds(50);
+  try {
+    copy_of_one_moment();
+    for (int copies = 1; copies < kDamagedCopies && log_damage(dir_ / kDatabaseFile); ++copies) {
+      std::this_thread::sleep_for(kBetweenCopies);
+      copy_of_one_moment();
     }
   } catch (const fs::filesystem_error& e) {
     std::error_code ec;
     fs::remove_all(dir_, ec);
     throw StoreError(fmt::format("cannot read {}: {}", dir.string(), e.code().message()));
+  } catch (const StoreError&) {   // the copied log unreadable
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+    throw;
   }
 }
 

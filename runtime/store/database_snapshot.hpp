@@ -4,7 +4,8 @@
 // files, the log of a killed run folded in when the last connection closes) and fails where
 // nothing may be written (a read-only mount, a colleague's archive): reading a run reads a
 // snapshot instead. A database being written while it is copied is copied again, so that
-// the copy holds the database and its log as of one moment.
+// the copy holds the database and its log as of one moment, and so is a log that reads as
+// damaged (a frame copied half-written, write_ahead_log.hpp) until the damage persists.
 #include <filesystem>
 
 namespace esc::store {

@@ -12,9 +12,11 @@
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/member_tables.hpp"
 #include "runtime/store/optimizer_tables.hpp"
+#include "runtime/store/page_check.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/tree_state.hpp"
+#include "runtime/store/write_ahead_log.hpp"
 
 namespace esc::store {
 
@@ -544,17 +546,32 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
                                       dir.string(), kDependencyCache));
     throw StoreError(fmt::format("`{}` is not an esc run directory: it has no {}", dir.string(), kDatabaseFile));
   }
-  if (fs::file_size(file, ec) == 0 && !ec) throw nothing();
+  if (fs::file_size(file, ec) == 0 && !ec) {
+    // esc.db's first page is written before any frame of its log, and SQLite deletes the log
+    // of an empty database: frames beside an empty esc.db are all that is left of it.
+    const fs::path log = file.string() + "-wal";
+    if (fs::file_size(log, ec) > 32 && !ec)
+      throw StoreError(fmt::format("{} is empty but {} holds {} bytes: the database was cut short (damaged), and "
+                                   "what its log holds cannot be read without it",
+                                   file.string(), log.string(), fs::file_size(log, ec)));
+    throw nothing();
+  }
   // Reading needs no lock (export and report read a running run) and reads a snapshot (no
   // file appears beside the database; a read-only directory reads); writing excludes others.
   std::shared_ptr<const DirectoryLock> lock = read_only ? nullptr : DirectoryLock::acquire(dir);
   std::shared_ptr<const DatabaseSnapshot> snapshot = read_only ? std::make_shared<DatabaseSnapshot>(dir) : nullptr;
+  const fs::path opened = snapshot ? snapshot->dir() / kDatabaseFile : file;
+  // Before SQLite opens it, which may fold the log in or reset it.
+  std::optional<LogScan> log_damage = store::log_damage(opened);
   try {
-    ResultsDb r(sql::Database(snapshot ? snapshot->dir() / kDatabaseFile : file,
-                              read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite),
+    ResultsDb r(sql::Database(opened, read_only ? sql::Database::Mode::ReadOnly : sql::Database::Mode::ReadWrite),
                 file);
     r.lock_ = std::move(lock);
     r.snapshot_ = std::move(snapshot);
+    r.log_damage_ = log_damage;
+    // Written to from a damaged log's last valid commit on: its valid frames folded into the
+    // database and the log emptied first, so that no frame past that commit outlives this.
+    if (!read_only && log_damage) r.db_.exec("PRAGMA wal_checkpoint(TRUNCATE);");
     auto id = r.db_.prepare("PRAGMA application_id");
     const std::int64_t app = id.step() ? id.int64(0) : 0;
     if (app != kApplicationId) {
@@ -568,9 +585,8 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     if (version > kSchemaVersion)
       throw StoreError(fmt::format("{} was written by a newer esc (schema {}; this esc reads up to {})",
                                    file.string(), version, kSchemaVersion));
-    auto check = r.db_.prepare("PRAGMA quick_check");
-    const std::string verdict = check.step() ? check.text(0) : "no answer";
-    if (verdict != "ok") throw StoreError(fmt::format("{} is damaged: {}", file.string(), verdict));
+    if (const std::optional<std::string> problem = page_check_problem(r.db_))
+      throw StoreError(fmt::format("{} is damaged: {}", file.string(), *problem));
     if (!read_only) r.db_.exec("PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
     r.schema_version_ = static_cast<int>(version);
     if (!read_only && version < kSchemaVersion) {
@@ -587,7 +603,15 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     ctl.bind(1, r.experiment_id_);
     while (ctl.step()) r.controller_ids_[ctl.text(1)] = ctl.int64(0);
     return r;
+  } catch (const NothingStored& e) {
+    // Not stopped before it started: what it stored is in frames SQLite dropped.
+    if (!log_damage) throw;
+    throw NothingStored(fmt::format("{}; its valid part holds no experiment", log_damage_text(file, *log_damage)),
+                        e.launch());
   } catch (const sql::SqliteError& e) {
+    if (log_damage)   // its tables were in the frames SQLite dropped
+      throw StoreError(fmt::format("{}; its valid part is not a readable esc database ({})",
+                                   log_damage_text(file, *log_damage), e.what()));
     throw StoreError(fmt::format("{} is damaged or not an esc database: {}", file.string(), e.what()));
   }
 }

@@ -22,6 +22,7 @@
 #include "runtime/store/directory_lock.hpp"
 #include "runtime/store/member_tables.hpp"
 #include "runtime/store/sqlite.hpp"
+#include "runtime/store/write_ahead_log.hpp"
 
 namespace esc::store {
 
@@ -222,6 +223,9 @@ class ResultsDb {
   [[nodiscard]] eval::OptimizerState load_state(const StoredController& c, int run);
 
   [[nodiscard]] std::int64_t experiment_id() const noexcept { return experiment_id_; }
+  // Where the database's log was damaged when it was opened (write_ahead_log.hpp): what
+  // SQLite dropped, past the commit this reads. Opened for writing, those frames are gone.
+  [[nodiscard]] const std::optional<LogScan>& log_damage() const noexcept { return log_damage_; }
 
  private:
   ResultsDb(sql::Database db, std::filesystem::path file);
@@ -244,6 +248,7 @@ class ResultsDb {
   std::shared_ptr<const DatabaseSnapshot> snapshot_;
   int schema_version_ = kSchemaVersion;
   bool has_saturated_ = true;   // generations.saturated (databases before schema 5 lack it)
+  std::optional<LogScan> log_damage_;
 
   sql::Database db_;
   std::filesystem::path file_;

@@ -46,19 +46,25 @@ auto on_copy(const fs::path& dir, Read&& read) {
 
 }  // namespace
 
-std::vector<StoredExperiment> load_untouched(const fs::path& dir) {
+std::vector<StoredExperiment> load_untouched(const fs::path& dir) { return read_untouched(dir).experiments; }
+
+UntouchedRead read_untouched(const fs::path& dir) {
   std::error_code ec;
   // Not a directory, or no database: `open` says so before it opens anything.
-  if (!fs::is_regular_file(dir / kDatabaseFile, ec)) return ResultsDb::open(dir, true).load();
+  if (!fs::is_regular_file(dir / kDatabaseFile, ec)) return {ResultsDb::open(dir, true).load(), std::nullopt};
   return on_copy(dir, [&](ResultsDb& db) {
     std::vector<StoredExperiment> all = db.load();
     if (no_generation(all)) {
       const StoredExperiment& e = all.front();
-      throw NothingStored(fmt::format("{} holds no committed generation: the run was stopped before its first",
-                                      (dir / kDatabaseFile).string()),
-                          NothingStored::Launch{e.script, e.condition ? e.condition->study : e.name, e.overrides});
+      const fs::path file = dir / kDatabaseFile;
+      throw NothingStored(
+          db.log_damage() ? fmt::format("{}; its valid part holds no committed generation",
+                                        log_damage_text(file, *db.log_damage()))
+                          : fmt::format("{} holds no committed generation: the run was stopped before its first",
+                                        file.string()),
+          NothingStored::Launch{e.script, e.condition ? e.condition->study : e.name, e.overrides});
     }
-    return all;
+    return UntouchedRead{std::move(all), db.log_damage()};
   });
 }
 

@@ -5,6 +5,7 @@
 // resume that is then refused (a damaged database, a changed script, nothing stored) must
 // leave the directory exactly as it found it, so its checks read a copy of the database.
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "runtime/store/results_db.hpp"
@@ -15,6 +16,14 @@ namespace esc::store {
 // directory, which is removed. Throws StoreError, its message naming `dir` and never the
 // copy; NothingStored when no generation was committed.
 [[nodiscard]] std::vector<StoredExperiment> load_untouched(const std::filesystem::path& dir);
+
+// What load_untouched reads, and where the database's log was damaged, what SQLite dropped
+// from it (write_ahead_log.hpp): the generations it held are not among `experiments`.
+struct UntouchedRead {
+  std::vector<StoredExperiment> experiments;
+  std::optional<LogScan> log_damage;
+};
+[[nodiscard]] UntouchedRead read_untouched(const std::filesystem::path& dir);
 
 // Whether `dir` holds an esc.db with no committed generation (an empty file, or a run
 // stopped before its first generation), read without changing it.

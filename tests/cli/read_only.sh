@@ -3,7 +3,8 @@
 # directory) and replay (to another directory) of a run directory whose files and bytes
 # must not change, then (mode `mount`, as root where a
 # read-only bind mount can be made; else skipped, 77) on that directory mounted read-only,
-# where a report or replay into it and a resume of it are refused as read-only.
+# where a report or replay into it and a carry-on of it are refused as read-only, and its
+# resume says it is complete.
 # Usage: read_only.sh files|mount ESC WORK
 set -euo pipefail
 mode=$1 esc=$2 work=$3
@@ -39,6 +40,10 @@ if [ "$mode" = mount ]; then
   expect_refusal "esc: error: $dir is read-only: the replay's files cannot be written there" replay "$dir"
   expect_refusal "esc: error: $dir is read-only: a resume writes the generations it runs into the run's directory" \
       run --resume "$dir" --generations 4
+  # A finished run has nothing to write: its resume says so, as anywhere.
+  "$esc" run --resume "$dir" >"$work/complete" 2>&1 || { echo "FAIL: resuming a finished run:"; cat "$work/complete"; exit 1; }
+  [ "$(cat "$work/complete")" = "esc: $dir is complete (2 x 1 runs x 2 generations); nothing to resume" ] \
+      || { echo "FAIL: a finished run resumed:"; cat "$work/complete"; exit 1; }
   [ "$(snapshot)" = "$before" ] || { echo "FAIL: a refusal changed the run directory"; exit 1; }
 fi
 echo "export, report and replay read $dir and left it as it was"

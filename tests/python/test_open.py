@@ -7,13 +7,15 @@ import json
 import os
 import shutil
 import stat
+import subprocess
+import time
 
 import numpy as np
 import pandas as pd
 import pytest
 
 import esc
-from conftest import EXPERIMENTS, best_json, run_esc
+from conftest import EXPERIMENTS, SOURCE, best_json, esc_program, run_esc
 
 
 def export(directory, table: str) -> str:
@@ -178,3 +180,28 @@ def test_a_read_only_directory_opens_and_nothing_changes(homing_run, tmp_path):
     finally:
         for root, dirs, names in os.walk(copy):
             os.chmod(root, 0o755)
+
+
+def test_a_damaged_log_is_said(tmp_path, caplog):
+    """A bit flipped in a killed run's log (esc.db-wal): SQLite drops the commits from it on;
+    esc.open says so to the "esc" logger, as `esc export` says it, and reads the rest."""
+    directory = tmp_path / "killed"
+    log = directory / "esc.db-wal"
+    frame = 24 + 4096
+    child = subprocess.Popen([esc_program(), "run", str(SOURCE / "tests/cli/data/tiny.esc"), "--generations", "200",
+                              "--threads", "1", "--out", str(directory)],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while (not log.exists() or log.stat().st_size < 32 + 200 * frame) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    child.kill()
+    child.wait()
+    damaged = bytearray(log.read_bytes())
+    at = 32 + (len(damaged) - 32) // frame * 3 // 4 * frame + 24 + 1000   # a page late in the log
+    damaged[at] ^= 0x08
+    log.write_bytes(bytes(damaged))
+    with caplog.at_level("WARNING", logger="esc"):
+        run = esc.open(directory)
+    assert "frames past its last valid commit (a damaged write-ahead log)" in caplog.text
+    assert f"`esc run --resume {directory}` runs them again" in caplog.text
+    assert len(run.table("generations")) > 0

@@ -2,12 +2,15 @@
 // resume reads (experiment, settings, controllers, runs and their seeds, statistics, the
 // population to continue from, behavior usage, the replay) or in SQLite's own pages, is
 // refused when the database is loaded, or provably harmless: everything that loads is
-// exactly what was stored, so the resumed run cannot differ.
+// exactly what was stored, so the resumed run cannot differ. A bit flipped in a killed run's
+// log (esc.db-wal) is said (what SQLite dropped), refused, or harmless.
 #include <bit>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -15,6 +18,8 @@
 #include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/results_db.hpp"
+#include "runtime/store/untouched_load.hpp"
+#include "runtime/store/write_ahead_log.hpp"
 #include "tests/store/scratch.hpp"
 
 namespace esc::store {
@@ -57,8 +62,9 @@ eval::RunState state(int run, int generations) {
 }
 
 // A database as a killed run leaves it: run 1 finished (with its replay and usage), run 2
-// in progress after 3 generations.
-fs::path stopped_run() {
+// in progress after 3 generations. With `killed`, its esc.db and esc.db-wal are copied
+// there while the connection is open, as a kill leaves them (closing folds the log in).
+fs::path stopped_run(const fs::path& killed = {}) {
   const fs::path dir = fresh_dir("stopped");
   fs::create_directories(dir);
   ResultsDb db = ResultsDb::create(dir, spec(), {{"main.esc", "experiment flips { runs 2 }"}}, {"/x/main.esc", {}, "1"});
@@ -82,6 +88,11 @@ fs::path stopped_run() {
   db.commit_replay("SC", done, trace);
   db.commit_run("SC", done);
   for (int g = 1; g <= 3; ++g) db.commit_generation("SC", state(1, g));
+  if (!killed.empty()) {
+    fs::create_directories(killed);
+    for (const std::string suffix : {"", "-wal"})
+      fs::copy_file(dir / (kDatabaseFile + suffix), killed / (kDatabaseFile + suffix));
+  }
   return dir;   // the connection closes: the log is folded into esc.db
 }
 
@@ -206,6 +217,92 @@ TEST(BitFlip, DamagedPopulationNamesTheRun) {
   EXPECT_NE(message.find("the optimizer's state to continue from"), std::string::npos) << message;
   EXPECT_NE(message.find("of run 2 of SC"), std::string::npos) << message;
   fs::remove_all(dir);
+}
+
+// A killed run's log (esc.db-wal) with one bit flipped, anywhere: SQLite drops the frames
+// from the flip on and would show an earlier commit without a word. Every flip is said (the
+// log is damaged: what was lost), refused, or harmless (all that was committed loads).
+TEST(BitFlip, EveryFlipInALogIsSaidOrHarmless) {
+  const fs::path killed = fresh_dir("killed");
+  const fs::path folded = stopped_run(killed);
+  const std::string reference = loaded(folded);
+  ASSERT_EQ(loaded(killed), reference);   // everything committed is read through the log
+  ASSERT_FALSE(ResultsDb::open(killed, true).log_damage());
+  const std::string log = read_bytes(killed / (std::string(kDatabaseFile) + "-wal"));
+  ASSERT_GT(log.size(), 32U + 5 * (24 + 4096));
+
+  int said = 0;
+  int harmless = 0;
+  // The header's bytes, the first frame's header, then bits spread over the whole log.
+  std::vector<std::size_t> bits;
+  for (std::size_t byte = 0; byte < 32 + 24; byte += 3) bits.push_back(byte * 8 + byte % 8);
+  constexpr std::size_t kSpread = 60;
+  for (std::size_t i = 0; i < kSpread; ++i) bits.push_back((log.size() * 8 / kSpread) * i + (i * 3) % 8 + 8 * (i % 5));
+  for (const std::size_t bit : bits) {
+    const fs::path copy = fresh_dir("flipped-log");
+    fs::copy(killed, copy, fs::copy_options::recursive);
+    std::string flipped = log;
+    flipped[bit / 8] = static_cast<char>(flipped[bit / 8] ^ (1 << (bit % 8)));
+    std::ofstream(copy / (std::string(kDatabaseFile) + "-wal"), std::ios::binary | std::ios::trunc) << flipped;
+    try {
+      const std::optional<LogScan> damage = ResultsDb::open(copy, true).log_damage();
+      if (damage) {
+        ++said;
+        EXPECT_GT(damage->lost, 0) << "bit " << bit;
+      } else {
+        EXPECT_EQ(loaded(copy), reference) << "bit " << bit << " lost commits without a word";
+        ++harmless;
+      }
+    } catch (const StoreError& e) {   // nothing readable before the flip: said so
+      ++said;
+      EXPECT_NE(std::string(e.what()).find("(a damaged write-ahead log)"), std::string::npos) << e.what();
+    }
+    fs::remove_all(copy);
+  }
+  EXPECT_EQ(said + harmless, static_cast<int>(bits.size()));
+  EXPECT_GT(said, static_cast<int>(bits.size()) / 2);
+  fs::remove_all(killed);
+  fs::remove_all(folded);
+}
+
+// A resume (the database opened for writing) starts from the damaged log's last valid
+// commit and empties the log: what it then writes cannot be mistaken for damage later.
+TEST(BitFlip, WritingAfterADamagedLogEmptiesIt) {
+  const fs::path killed = fresh_dir("killed-written");
+  const fs::path folded = stopped_run(killed);
+  const fs::path wal = killed / (std::string(kDatabaseFile) + "-wal");
+  std::string log = read_bytes(wal);
+  log[log.size() - 100] = static_cast<char>(log[log.size() - 100] ^ 1);   // in the last commit
+  std::ofstream(wal, std::ios::binary | std::ios::trunc) << log;
+  {
+    ResultsDb db = ResultsDb::open(killed);
+    ASSERT_TRUE(db.log_damage());
+    EXPECT_EQ(fs::file_size(wal), 0U);
+    db.commit_generation("SC", state(1, 3));   // the generation the damage lost, again
+    EXPECT_FALSE(log_damage(killed / kDatabaseFile));
+  }
+  EXPECT_FALSE(ResultsDb::open(killed, true).log_damage());
+  fs::remove_all(killed);
+  fs::remove_all(folded);
+}
+
+// A killed run's esc.db cut to nothing beside its log: not a run stopped before it started
+// (whose directory `esc run --out` would reuse, deleting the log), but a damaged database.
+TEST(BitFlip, AnEmptyDatabaseBesideItsLogIsDamaged) {
+  const fs::path killed = fresh_dir("killed-emptied");
+  const fs::path folded = stopped_run(killed);
+  fs::resize_file(killed / kDatabaseFile, 0);
+  try {
+    (void)ResultsDb::open(killed, true);
+    ADD_FAILURE() << "an empty esc.db beside its log was read";
+  } catch (const NothingStored& e) {
+    ADD_FAILURE() << e.what();
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("esc.db is empty but "), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(holds_nothing_stored(killed));
+  fs::remove_all(killed);
+  fs::remove_all(folded);
 }
 
 }  // namespace
