@@ -86,8 +86,8 @@ std::optional<fs::path> first_kept_file(const fs::path& dir) {
 
 void throw_nothing_stored(const fs::path& dir, const std::string& message, std::optional<NothingStored::Launch> launch) {
   if (const auto kept = first_kept_file(dir))
-    throw StoreError(fmt::format("{} holds no results, but `{}` holds what a run stores once it has results ({}): its "
-                                 "database was emptied or replaced, the run did not stop before it started; nothing "
+    throw StoreError(fmt::format("{} holds nothing, but `{}` holds a run's results ({}): its database was emptied or "
+                                 "replaced after they were stored (the run did not stop before it started); nothing "
                                  "in it is reused or deleted",
                                  (dir / kDatabaseFile).string(), dir.string(),
                                  kept->lexically_relative(dir).generic_string()));
