@@ -26,6 +26,13 @@ struct Note {
   Kind kind;
   std::string text;
   std::filesystem::path dir{};   // Start and Resume: the directory being written
+  // Start and Resume: the generations of every run the directory is to hold (a study's:
+  // every condition's), and how many of them it has stored already.
+  std::int64_t generations = 0;
+  std::int64_t generations_stored = 0;
+  // Start: the command that starts the run again into `dir`, the way to go on when it stops
+  // before its first generation is stored (nothing to resume then).
+  std::string restart{};
 };
 
 // Sees a campaign's events before its run directory stores them: passes each on to `next`

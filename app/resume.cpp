@@ -6,7 +6,6 @@
 #include <optional>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "app/compile.hpp"
 #include "app/dependencies.hpp"
@@ -37,18 +36,12 @@ struct Stored {
 
 // `esc run` as the stopped run was started, into `dir` again.
 std::string restart_command(const store::NothingStored::Launch& launch, const std::filesystem::path& dir) {
-  std::string command = fmt::format("esc run {} --experiment {}", launch.script.string(), launch.target);
+  Overrides o;
   try {
-    const Overrides o = overrides_from_json(launch.overrides, dir);
-    if (o.runs) command += fmt::format(" --runs {}", *o.runs);
-    if (o.generations) command += fmt::format(" --generations {}", *o.generations);
-    if (o.seed) command += fmt::format(" --seed {}", *o.seed);
-    for (const std::string& kv : o.set) command += fmt::format(" --set {}", kv);
-    if (!o.controllers.empty()) command += fmt::format(" --controllers {}", fmt::join(o.controllers, ","));
-    if (!o.cache.empty()) command += fmt::format(" --cache {}", o.cache.string());
+    o = overrides_from_json(launch.overrides, dir);
   } catch (const store::StoreError&) {   // unreadable: the script and target still help
   }
-  return command + fmt::format(" --out {}", dir.string());
+  return start_command(launch.script, launch.target, o, dir);
 }
 
 // Read from a copy: a refused resume leaves every byte of the directory as it was.
@@ -77,6 +70,24 @@ Stored load(const std::filesystem::path& dir) {
     throw Error(ErrorKind::Results,
                 fmt::format("{} holds {} experiments; a run directory holds one", dir.string(), all.size()));
   return {std::move(all), false, log_damage};
+}
+
+// The generations `e` has stored, all its runs together.
+std::int64_t stored_generations(const store::StoredExperiment& e) {
+  std::int64_t n = 0;
+  for (const store::StoredController& c : e.controllers) {
+    for (const eval::RunResult& f : c.finished) n += static_cast<std::int64_t>(f.generations.size());
+    for (const eval::RunState& s : c.in_progress) n += static_cast<std::int64_t>(s.generations.size());
+  }
+  return n;
+}
+
+// The command-line settings `e` was launched with, and the generations it is carried on to:
+// what a carry-on records, for a later plain resume.
+nlohmann::ordered_json carry_on_overrides(const store::StoredExperiment& e, int generations) {
+  nlohmann::ordered_json overrides = e.overrides;
+  overrides["carry_on"] = generations;
+  return overrides;
 }
 
 std::string complete_text(const std::filesystem::path& dir, const Stored& s) {
@@ -200,33 +211,47 @@ Outcome resume_typed(const ResumeRequest& r, const compiler::CompileOptions& opt
 
   if (study != nullptr) {
     const std::size_t finished = stored.finished();
-    tell(events, Note::Kind::Resume,
-         r.generations ? fmt::format("carrying study {} in {} on to {} generations: {} of {} conditions finished",
-                                     study->name, r.dir.string(), *r.generations, finished, n)
-                       : fmt::format("resuming study {} in {}: {} of {} conditions finished", study->name,
-                                     r.dir.string(), finished, n),
-         r.dir);
+    // The study's generations, every condition's runs together: what a stop counts.
+    std::int64_t generations = 0, done = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      generations += specs[i]->total_generations();
+      done += stored_generations(stored.experiments[i]);
+    }
+    tell(events, Note{Note::Kind::Resume,
+                      r.generations
+                          ? fmt::format("carrying study {} in {} on to {} generations: {} of {} conditions finished",
+                                        study->name, r.dir.string(), *r.generations, finished, n)
+                          : fmt::format("resuming study {} in {}: {} of {} conditions finished", study->name,
+                                        r.dir.string(), finished, n),
+                      r.dir, generations, done});
     std::optional<store::StudyDirectory> dir;
-    on_rank0([&] { dir.emplace(r.dir, stored.experiments); });
+    on_rank0([&] {
+      dir.emplace(r.dir, stored.experiments);
+      // Every condition's target recorded before the first runs on: a plain resume of a
+      // carry-on stopped in any condition takes each to it.
+      using CarryOn = store::StudyDirectory::CarryOn;
+      std::vector<std::optional<CarryOn>> carried_on(n);
+      for (std::size_t i = 0; i < n; ++i)
+        if (extend[i]) carried_on[i] = CarryOn{specs[i], carry_on_overrides(stored.experiments[i], *extend[i])};
+      dir->carry_on(carried_on);
+    });
     return {r.dir, study->name,
             run_conditions(*study, r.execution, dir, StoredStudy{&points, &stored.experiments, &extend}, events)};
   }
   eval::ExperimentSpec& spec = *specs.front();
   const eval::ResumePoint& point = points.front();
   const std::int64_t done = generations_done(point);
-  tell(events, Note::Kind::Resume,
-       extend.front() ? fmt::format("carrying {} in {} on to {} generations: {} of {} generations done", spec.name,
-                                    r.dir.string(), *extend.front(), done, spec.total_generations())
-                      : fmt::format("resuming {} in {}: {} of {} generations done", spec.name, r.dir.string(), done,
-                                    spec.total_generations()),
-       r.dir);
+  tell(events, Note{Note::Kind::Resume,
+                    extend.front()
+                        ? fmt::format("carrying {} in {} on to {} generations: {} of {} generations done", spec.name,
+                                      r.dir.string(), *extend.front(), done, spec.total_generations())
+                        : fmt::format("resuming {} in {}: {} of {} generations done", spec.name, r.dir.string(), done,
+                                      spec.total_generations()),
+                    r.dir, spec.total_generations(), done});
   const auto open = [&] {
     store::ResultsDb db = store::ResultsDb::open(r.dir);
-    if (extend.front()) {
-      nlohmann::ordered_json overrides = stored.first().overrides;
-      overrides["carry_on"] = *extend.front();
-      store::RunDirectory::carry_on(r.dir, db, spec, overrides);
-    }
+    if (extend.front())
+      store::RunDirectory::carry_on(r.dir, db, spec, carry_on_overrides(stored.first(), *extend.front()));
     return store::RunDirectory::resume(r.dir, std::move(db), stored.first(), point);
   };
   eval::CampaignResult result = run_experiment(spec, campaign_options(r.execution, &point), open, done, events);

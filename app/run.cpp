@@ -29,13 +29,15 @@ Outcome run_study(const RunRequest& r, const compiler::CompileResult& compiled, 
     launches.push_back(launch_info(r.overrides, r.script, &c.experiment));
     names.push_back(c.name);
   }
+  std::int64_t generations = 0;
+  for (const eval::ConditionSpec& c : study.conditions) generations += c.experiment.total_generations();
   std::optional<store::StudyDirectory> dir;
   on_rank0([&] {
     dir.emplace(out, study, sources_of(compiled), launches);
-    tell(events, Note::Kind::Start,
-         fmt::format("running study {} ({} condition{}: {}) into {}", study.name, names.size(),
-                     names.size() == 1 ? "" : "s", names_of(names), out.string()),
-         out);
+    tell(events, Note{Note::Kind::Start,
+                      fmt::format("running study {} ({} condition{}: {}) into {}", study.name, names.size(),
+                                  names.size() == 1 ? "" : "s", names_of(names), out.string()),
+                      out, generations, 0, start_command(launches.front().script, study.name, r.overrides, out)});
   });
   return {out, study.name, run_conditions(study, r.execution, dir, StoredStudy{}, events)};
 }
@@ -48,11 +50,11 @@ Outcome run_one(const RunRequest& r, const compiler::CompileResult& compiled, ev
   const store::LaunchInfo launch = launch_info(r.overrides, r.script, &spec);
   const auto open = [&] {
     store::RunDirectory dir(out, spec, sources_of(compiled), launch);
-    tell(events, Note::Kind::Start,
-         fmt::format("running {} ({} controller{}, {} run{}, {}) into {}", spec.name, spec.controllers.size(),
-                     spec.controllers.size() == 1 ? "" : "s", spec.runs, spec.runs == 1 ? "" : "s",
-                     generations_text(spec), out.string()),
-         out);
+    tell(events, Note{Note::Kind::Start,
+                      fmt::format("running {} ({} controller{}, {} run{}, {}) into {}", spec.name,
+                                  spec.controllers.size(), spec.controllers.size() == 1 ? "" : "s", spec.runs,
+                                  spec.runs == 1 ? "" : "s", generations_text(spec), out.string()),
+                      out, spec.total_generations(), 0, start_command(launch.script, spec.name, r.overrides, out)});
     return dir;
   };
   eval::CampaignResult result = run_experiment(spec, campaign_options(r.execution, nullptr), open, 0, events);

@@ -85,9 +85,9 @@ std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const
   for (std::size_t i = 0; i < study.conditions.size(); ++i) {
     const eval::ConditionSpec& c = study.conditions[i];
     const store::StoredExperiment* before = stored.conditions != nullptr ? &(*stored.conditions)[i] : nullptr;
-    // The generations it is carried on to; 0 when it is not (a run has at least one).
-    const int carry_on = stored.carry_on != nullptr ? (*stored.carry_on)[i].value_or(0) : 0;
-    if (before != nullptr && before->finished() && carry_on == 0) {
+    // A finished condition runs again only when it is carried on.
+    const bool carried_on = stored.carry_on != nullptr && (*stored.carry_on)[i];
+    if (before != nullptr && before->finished() && !carried_on) {
       results.push_back({c.name, c.experiment, before->result()});
       continue;
     }
@@ -98,14 +98,7 @@ std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const
                      c.experiment.controllers.size() == 1 ? "" : "s", c.experiment.runs,
                      c.experiment.runs == 1 ? "" : "s", generations_text(c.experiment)));
     std::optional<store::RunDirectory> run;
-    if (dir) {
-      std::optional<store::StudyDirectory::CarryOn> recorded;
-      if (carry_on > 0) {
-        recorded = store::StudyDirectory::CarryOn{&c.experiment, before->overrides};
-        recorded->overrides["carry_on"] = carry_on;
-      }
-      run.emplace(dir->open_condition(i, point, recorded));
-    }
+    if (dir) run.emplace(dir->open_condition(i, point));
     results.push_back({c.name, c.experiment,
                        run_campaign_into(c.experiment, c.name, campaign_options(x, before != nullptr ? &point : nullptr),
                                          run ? &*run : nullptr, generations_done(point), events)});
@@ -113,8 +106,24 @@ std::vector<ConditionOutcome> run_conditions(const eval::StudySpec& study, const
   return results;
 }
 
+void tell(Events& events, Note note) {
+  if (!follower_rank()) events.note(note);
+}
+
 void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir) {
-  if (!follower_rank()) events.note({kind, std::move(text), dir});
+  tell(events, Note{kind, std::move(text), dir});
+}
+
+std::string start_command(const std::filesystem::path& script, const std::string& target, const Overrides& o,
+                          const std::filesystem::path& dir) {
+  std::string command = fmt::format("esc run {} --experiment {}", script.string(), target);
+  if (o.runs) command += fmt::format(" --runs {}", *o.runs);
+  if (o.generations) command += fmt::format(" --generations {}", *o.generations);
+  if (o.seed) command += fmt::format(" --seed {}", *o.seed);
+  for (const std::string& kv : o.set) command += fmt::format(" --set {}", kv);
+  if (!o.controllers.empty()) command += fmt::format(" --controllers {}", fmt::join(o.controllers, ","));
+  if (!o.cache.empty()) command += fmt::format(" --cache {}", o.cache.string());
+  return command + fmt::format(" --out {}", dir.string());
 }
 
 std::string names_of(const std::vector<std::string>& names) {

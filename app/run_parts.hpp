@@ -29,7 +29,8 @@ void apply_to_conditions(const Overrides& o, eval::StudySpec& study);
 struct StoredStudy {
   const std::vector<eval::ResumePoint>* points = nullptr;   // read from a copy of the database
   const std::vector<store::StoredExperiment>* conditions = nullptr;
-  // The generations a carry-on takes each condition to, if any.
+  // The generations a carry-on takes each condition to, if any (recorded in the directory
+  // before the first runs on: StudyDirectory::carry_on).
   const std::vector<std::optional<int>>* carry_on = nullptr;
 };
 
@@ -39,7 +40,13 @@ struct StoredStudy {
                                                            const StoredStudy& stored, Events& events);
 
 // Tells `events` a note (on rank 0 of an MPI job: the others have nothing to say).
+void tell(Events& events, Note note);
 void tell(Events& events, Note::Kind kind, std::string text, const std::filesystem::path& dir = {});
+
+// `esc run` of `target` in `script` with the overrides `o`, into `dir`: the command that
+// starts a run again.
+[[nodiscard]] std::string start_command(const std::filesystem::path& script, const std::string& target,
+                                        const Overrides& o, const std::filesystem::path& dir);
 
 // The names, comma-separated.
 [[nodiscard]] std::string names_of(const std::vector<std::string>& names);

@@ -3,7 +3,6 @@
 #include <array>
 #include <atomic>
 #include <csignal>
-#include <string>
 
 #include <unistd.h>
 
@@ -15,9 +14,15 @@ namespace {
 
 // What the handler writes, made beforehand: a signal handler may only write. The counts
 // are written digit by digit there (snprintf is not async-signal-safe).
-std::atomic<const std::string*> line{nullptr};
-std::atomic<std::int64_t> done{-1};
+struct Lines {
+  std::string resume;    // after the count: where the run is and how to continue it
+  std::string restart;   // stopped before its first generation was stored
+};
+std::atomic<const Lines*> lines{nullptr};
+std::atomic<std::int64_t> generations_stored{0};
 std::atomic<std::int64_t> total{0};
+std::atomic<bool> storing{false};   // a generation's commit is under way
+std::atomic<int> deferred{0};       // the signal that came during it
 
 void put(std::string_view s) { (void)!::write(STDERR_FILENO, s.data(), s.size()); }
 
@@ -32,18 +37,23 @@ void put(std::int64_t n) {
 }
 
 extern "C" void interrupted(int signal) {
-  if (const std::string* text = line.load()) {
+  if (storing.load() && deferred.exchange(signal) == 0) return;   // stops when the commit ends
+  if (const Lines* text = lines.load()) {
     // Past the live progress line, if one is open.
     put("\nesc: stopped");
-    if (const std::int64_t d = done.load(), t = total.load(); d >= 0 && t > 0) {
-      put(" after ");
-      put(d);
-      put(" of ");
-      put(t);
-      put(t == 1 ? " generation" : " generations");
-      put(" (all runs together)");
+    if (const std::int64_t d = generations_stored.load(), t = total.load(); d == 0) {
+      put(text->restart);
+    } else {
+      if (t > 0) {
+        put(" after ");
+        put(d);
+        put(" of ");
+        put(t);
+        put(t == 1 ? " generation" : " generations");
+        put(" (all runs together)");
+      }
+      put(text->resume);
     }
-    put(*text);
   }
   std::signal(signal, SIG_DFL);
   std::raise(signal);
@@ -51,21 +61,32 @@ extern "C" void interrupted(int signal) {
 
 }  // namespace
 
-void on_interrupt_name(const std::filesystem::path& dir) {
+void on_interrupt_name(const std::filesystem::path& dir, std::int64_t generations, std::int64_t stored_already,
+                       const std::string& restart) {
   // Kept for the life of the process: the handler may read it at any moment.
-  static std::string text;
-  line.store(nullptr);
-  done.store(-1);
-  text = fmt::format("; {} holds every generation finished: `esc run --resume {}` continues it\n", dir.string(),
-                     dir.string());
-  line.store(&text);
+  static Lines text;
+  lines.store(nullptr);
+  total.store(generations);
+  generations_stored.store(stored_already);
+  text.resume = fmt::format("; {} holds every generation finished: `esc run --resume {}` continues it\n",
+                            dir.string(), dir.string());
+  text.restart = fmt::format(" before its first generation was stored; {} holds nothing to resume: {} (finished "
+                             "dependencies in its deps/ are reused)\n",
+                             dir.string(),
+                             restart.empty() ? std::string("start it again as it was started")
+                                             : fmt::format("`{}` starts it again", restart));
+  lines.store(&text);
   std::signal(SIGINT, interrupted);
   std::signal(SIGTERM, interrupted);
 }
 
-void on_interrupt_count(std::int64_t generations_done, std::int64_t generations) {
-  total.store(generations);
-  done.store(generations_done);
+StoringGeneration::StoringGeneration() { storing.store(true); }
+
+StoringGeneration::~StoringGeneration() {
+  storing.store(false);
+  if (const int signal = deferred.exchange(0)) interrupted(signal);
 }
+
+void StoringGeneration::stored() { generations_stored.fetch_add(1); }
 
 }  // namespace esc::cli

@@ -64,9 +64,7 @@ ProgressPrinter::ProgressPrinter(const eval::ExperimentSpec& spec, eval::Campaig
       live_(live),
       generations_total_(spec.total_generations()),
       generations_done_(already_done),
-      start_(std::chrono::steady_clock::now()) {
-  on_interrupt_count(generations_done_, generations_total_);
-}
+      start_(std::chrono::steady_clock::now()) {}
 
 void ProgressPrinter::round_progress(const eval::RoundProgress& p) {
   Progress::round_progress(p);
@@ -99,7 +97,6 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
   Progress::generation_done(controller, run, g);
   ++generations_done_;
   ++done_here_;
-  on_interrupt_count(generations_done_, generations_total_);
   // Counted as the end message and `esc run --resume` count them ("3 of 16 generations"): the
   // generation stored as 0 (the initial population) is the first. Runs count from 1.
   const int generation = g.generation + 1;
@@ -125,6 +122,12 @@ void ProgressPrinter::generation_done(const control::ControllerSpec& controller,
                run + 1, spec_->runs, generation, generations, g.saturated, g.evaluations);
   }
   std::fflush(stdout);
+}
+
+void ProgressPrinter::checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) {
+  StoringGeneration storing;   // a stop waits for the commit, and then counts it
+  Progress::checkpoint(controller, state);
+  storing.stored();
 }
 
 void ProgressPrinter::run_done(const control::ControllerSpec& controller, const eval::RunResult& run) {

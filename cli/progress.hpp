@@ -27,6 +27,7 @@ class ProgressPrinter final : public app::Progress {
   void round_evaluated(const eval::RoundStats& round) override;
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
+  void checkpoint(const control::ControllerSpec& controller, const eval::RunState& state) override;
   void run_done(const control::ControllerSpec& controller, const eval::RunResult& run) override;
 
   // Ends the live line (call before printing anything else).

@@ -24,7 +24,7 @@ void TerminalEvents::warnings(const compiler::CompileResult& compiled) { print_d
 
 void TerminalEvents::note(const app::Note& note) {
   if ((note.kind == app::Note::Kind::Start || note.kind == app::Note::Kind::Resume) && !follower_rank())
-    on_interrupt_name(note.dir);
+    on_interrupt_name(note.dir, note.generations, note.generations_stored, note.restart);
   if (note.kind == app::Note::Kind::Warning)
     complain("esc: {}\n", note.text);
   else

@@ -16,6 +16,7 @@
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/tree_state.hpp"
+#include "runtime/store/unstored_files.hpp"
 #include "runtime/store/write_ahead_log.hpp"
 
 namespace esc::store {
@@ -412,8 +413,11 @@ ResultsDb ResultsDb::create_empty(const fs::path& dir, const LaunchInfo& launch)
   // WAL: a commit is one append to the log, atomic after a crash; synchronous=FULL makes it
   // durable across power loss too (one fsync per generation costs nothing here).
   db.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA foreign_keys=ON;");
-  db.exec(fmt::format("PRAGMA application_id={}; PRAGMA user_version={};", kApplicationId, kSchemaVersion));
   sql::Transaction tx(db);
+  // The marks of an esc database commit with its tables: a run killed at any instant leaves
+  // either a database without tables (nothing stored) or one with every table, never an
+  // esc database that lacks them.
+  db.exec(fmt::format("PRAGMA application_id={}; PRAGMA user_version={};", kApplicationId, kSchemaVersion));
   db.exec(kSchema);
   db.exec(analysis_schema());
   db.exec(member_schema());
@@ -537,7 +541,7 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
   if (!fs::is_directory(dir, ec)) throw StoreError(fmt::format("`{}` is not a directory", dir.string()));
   const fs::path file = dir / kDatabaseFile;
   const auto nothing = [&] {
-    return NothingStored(fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
+    throw_nothing_stored(dir, fmt::format("{} holds no experiment: the run was stopped before it started", file.string()));
   };
   if (!fs::is_regular_file(file, ec)) {
     // What `esc run` writes before its database: the runs of the experiments it depends on.
@@ -554,7 +558,7 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
       throw StoreError(fmt::format("{} is empty but {} holds {} bytes: the database was cut short (damaged), and "
                                    "what its log holds cannot be read without it",
                                    file.string(), log.string(), fs::file_size(log, ec)));
-    throw nothing();
+    nothing();
   }
   // Reading needs no lock (export and report read a running run) and reads a snapshot (no
   // file appears beside the database; a read-only directory reads); writing excludes others.
@@ -572,14 +576,14 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     // Written to from a damaged log's last valid commit on: its valid frames folded into the
     // database and the log emptied first, so that no frame past that commit outlives this.
     if (!read_only && log_damage) r.db_.exec("PRAGMA wal_checkpoint(TRUNCATE);");
+    // Stopped while it was being created: no table yet (an esc before this one committed
+    // the application id and schema version before the tables).
+    auto tables = r.db_.prepare("SELECT count(*) FROM sqlite_master");
+    if (tables.step() && tables.int64(0) == 0) nothing();
     auto id = r.db_.prepare("PRAGMA application_id");
     const std::int64_t app = id.step() ? id.int64(0) : 0;
-    if (app != kApplicationId) {
-      // Stopped while it was being created: no table yet.
-      auto tables = r.db_.prepare("SELECT count(*) FROM sqlite_master");
-      if (tables.step() && tables.int64(0) == 0) throw nothing();
+    if (app != kApplicationId)
       throw StoreError(fmt::format("{} is an SQLite database but not one written by esc", file.string()));
-    }
     auto ver = r.db_.prepare("PRAGMA user_version");
     const std::int64_t version = ver.step() ? ver.int64(0) : 0;
     if (version > kSchemaVersion)
@@ -597,7 +601,7 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     }
     r.has_saturated_ = r.column_exists("generations", "saturated");
     auto ex = r.db_.prepare("SELECT id FROM experiments ORDER BY id LIMIT 1");
-    if (!ex.step()) throw nothing();
+    if (!ex.step()) nothing();
     r.experiment_id_ = ex.int64(0);
     auto ctl = r.db_.prepare("SELECT id, name FROM controllers WHERE experiment_id = ?");
     ctl.bind(1, r.experiment_id_);
@@ -1012,16 +1016,17 @@ eval::ResumePoint ResultsDb::resume_point(const StoredExperiment& stored, const 
   return p;
 }
 
-void ResultsDb::extend(const eval::ExperimentSpec& spec, const nlohmann::ordered_json& overrides) {
+void ResultsDb::extend(const std::vector<Extension>& extensions) {
   sql::Transaction tx(db_);
-  db_.prepare("UPDATE experiments SET generations = ?, overrides = ?, status = 'running' WHERE id = ?")
-      .bind(1, spec.max_generations()).bind(2, overrides.dump()).bind(3, experiment_id_)
-      .run();
-  seal_row(db_, "experiments", experiment_id_);
+  auto row = db_.prepare("UPDATE experiments SET generations = ?, overrides = ?, status = 'running' WHERE id = ?");
   auto set = db_.prepare("INSERT OR REPLACE INTO settings(experiment_id, key, value) VALUES (?, ?, ?)");
-  for (const auto& [k, v] : spec.resolved_settings) {
-    set.bind(1, experiment_id_).bind(2, k).bind(3, v).run();
-    seal_row(db_, "settings", db_.last_insert_rowid());
+  for (const Extension& x : extensions) {
+    row.bind(1, x.spec->max_generations()).bind(2, x.overrides.dump()).bind(3, x.experiment_id).run();
+    seal_row(db_, "experiments", x.experiment_id);
+    for (const auto& [k, v] : x.spec->resolved_settings) {
+      set.bind(1, x.experiment_id).bind(2, k).bind(3, v).run();
+      seal_row(db_, "settings", db_.last_insert_rowid());
+    }
   }
   tx.commit();
 }

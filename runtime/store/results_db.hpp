@@ -201,10 +201,17 @@ class ResultsDb {
   // The run is finished: its best genome, behavior usage; its resume state is dropped.
   void commit_run(const std::string& controller, const eval::RunResult& run);
   void mark_finished();
-  // The experiment now runs for `spec`'s generations (carried on), started with `overrides`
-  // on the command line: its generations, settings and overrides updated and its status
-  // `running`, in one transaction.
-  void extend(const eval::ExperimentSpec& spec, const nlohmann::ordered_json& overrides);
+  // An experiment carried on: to `spec`'s generations, started with `overrides` on the
+  // command line.
+  struct Extension {
+    std::int64_t experiment_id = 0;
+    const eval::ExperimentSpec* spec = nullptr;
+    nlohmann::ordered_json overrides;
+  };
+  // Each experiment of `extensions` now runs for its spec's generations: its generations,
+  // settings and overrides updated and its status `running`, all in one transaction (a
+  // study's conditions together, before the first of them runs on).
+  void extend(const std::vector<Extension>& extensions);
 
   // Everything stored, experiment by experiment. Throws StoreError on inconsistent content.
   [[nodiscard]] std::vector<StoredExperiment> load();

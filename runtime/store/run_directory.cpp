@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 
 #include "runtime/store/seed_json.hpp"
 #include "runtime/store/summary_json.hpp"
+#include "runtime/store/unstored_files.hpp"
 #include "runtime/store/untouched_load.hpp"
 
 namespace esc::store {
@@ -41,15 +43,20 @@ std::shared_ptr<const DirectoryLock> create_output_directory(const fs::path& dir
   // a directory that holds nothing.
   auto lock = DirectoryLock::acquire(dir);
   // Empty, or holding only `deps/` (the runs of the experiments whose evolved controllers
-  // this one uses, written first by `esc run`).
+  // this one uses, written first by `esc run`) and an empty `sources/` (what an esc before
+  // this one made before its database).
   bool fresh = true;
   if (fs::is_directory(dir, ec)) {
     for (const auto& entry : fs::directory_iterator(dir, ec))
-      if (entry.path().filename() != kDependencyCache) fresh = false;
+      if (entry.path().filename() != kDependencyCache &&
+          !(entry.path().filename() == "sources" && fs::is_empty(entry.path(), ec)))
+        fresh = false;
   }
   // A run stopped before its first generation committed left nothing to lose: its files
-  // (all but `deps/`) go, and the directory is used again.
-  if (!fresh && holds_nothing_stored(dir)) {
+  // (all but `deps/`) go, and the directory is used again. Only those files: anything
+  // else in it (a finished run's genomes beside an emptied esc.db) keeps it.
+  const std::optional<fs::path> kept = fresh ? std::nullopt : first_kept_file(dir);
+  if (!fresh && !kept && holds_nothing_stored(dir)) {
     for (const auto& entry : fs::directory_iterator(dir, ec))
       if (entry.path().filename() != kDependencyCache) fs::remove_all(entry.path(), ec);
     fresh = !ec;
@@ -57,14 +64,17 @@ std::shared_ptr<const DirectoryLock> create_output_directory(const fs::path& dir
   // Worded for every front end: `esc run --out` and esc.run's `out=` alike.
   if (!fresh)
     throw std::runtime_error(fmt::format(
-        "output directory `{}` already exists and is not empty; results are never overwritten: "
-        "choose another output directory or remove it", dir.string()));
-  fs::create_directories(dir / "sources", ec);
-  if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", dir.string(), ec.message()));
+        "output directory `{}` already exists and is not empty{}; results are never overwritten: "
+        "choose another output directory or remove it", dir.string(),
+        kept ? fmt::format(" (it holds {})", kept->lexically_relative(dir).generic_string()) : ""));
   return lock;
 }
 
 nlohmann::ordered_json write_sources(const fs::path& dir, const std::vector<SourceFile>& sources) {
+  // Made after esc.db: a directory holding sources/ holds a database that says what it is.
+  std::error_code ec;
+  fs::create_directories(dir / "sources", ec);
+  if (ec) throw std::runtime_error(fmt::format("cannot create `{}`: {}", (dir / "sources").string(), ec.message()));
   nlohmann::ordered_json files = nlohmann::ordered_json::array();
   for (const SourceFile& s : sources) {
     const std::string flat = fmt::format("{:02}-{}", files.size(), s.name.filename().string());
@@ -196,7 +206,11 @@ RunDirectory RunDirectory::resume(fs::path dir, ResultsDb db, const StoredExperi
 
 void RunDirectory::carry_on(const fs::path& dir, ResultsDb& db, const eval::ExperimentSpec& spec,
                             const nlohmann::ordered_json& overrides) {
-  db.extend(spec, overrides);
+  db.extend({{db.experiment_id(), &spec, overrides}});
+  rewrite_settings(dir, spec);
+}
+
+void RunDirectory::rewrite_settings(const fs::path& dir, const eval::ExperimentSpec& spec) {
   const fs::path file = dir / "settings.json";
   std::ifstream in(file);
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in, nullptr, false);

@@ -51,6 +51,9 @@ class RunDirectory final : public eval::CampaignListener {
   // settings.json.
   static void carry_on(const std::filesystem::path& dir, ResultsDb& db, const eval::ExperimentSpec& spec,
                        const nlohmann::ordered_json& overrides);
+  // The resolved settings of `spec` into DIR/settings.json, a view of the database (a file
+  // that does not read as JSON stays as it is).
+  static void rewrite_settings(const std::filesystem::path& dir, const eval::ExperimentSpec& spec);
 
   void generation_done(const control::ControllerSpec& controller, int run,
                        const eval::GenerationStats& stats) override;
@@ -82,12 +85,14 @@ class RunDirectory final : public eval::CampaignListener {
   SummarySink summary_;               // empty: DIR/summary.json
 };
 
-// Makes `dir` with its `sources/` for a new run: it must not exist, hold only `deps/`, or
-// hold a run that committed no generation (holds_nothing_stored), whose files it removes
-// (results are never overwritten). Throws std::runtime_error otherwise.
+// Makes `dir` for a new run: it must not exist, hold only `deps/` (and an empty `sources/`),
+// or hold a run that committed no generation (holds_nothing_stored) and nothing but what
+// such a run writes (first_kept_file), whose files it removes (results are never
+// overwritten). Throws std::runtime_error otherwise.
 [[nodiscard]] std::shared_ptr<const DirectoryLock> create_output_directory(const std::filesystem::path& dir);
 
-// Writes every source file to DIR/sources/NN-<file>; returns the list settings.json shows.
+// Writes every source file to DIR/sources/NN-<file> (making sources/, after the database);
+// returns the list settings.json shows.
 [[nodiscard]] nlohmann::ordered_json write_sources(const std::filesystem::path& dir,
                                                    const std::vector<SourceFile>& sources);
 

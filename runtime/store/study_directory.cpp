@@ -79,12 +79,20 @@ StudyDirectory::StudyDirectory(fs::path dir, Opened opened)
   write_summary();
 }
 
-RunDirectory StudyDirectory::open_condition(std::size_t i, const eval::ResumePoint& point,
-                                            const std::optional<CarryOn>& carried_on) {
+void StudyDirectory::carry_on(const std::vector<std::optional<CarryOn>>& conditions) {
+  std::vector<ResultsDb::Extension> extensions;
+  for (std::size_t i = 0; i < conditions.size(); ++i)
+    if (conditions[i]) extensions.push_back({stored_.at(i).id, conditions[i]->spec, conditions[i]->overrides});
+  if (extensions.empty()) return;
+  ResultsDb::open(dir_).extend(extensions);
+  for (std::size_t i = 0; i < conditions.size(); ++i)
+    if (conditions[i]) RunDirectory::rewrite_settings(dir_ / stored_.at(i).condition->directory, *conditions[i]->spec);
+}
+
+RunDirectory StudyDirectory::open_condition(std::size_t i, const eval::ResumePoint& point) {
   const StoredExperiment& e = stored_.at(i);
   ResultsDb db = ResultsDb::open(dir_);
   db.select_experiment(e.id);
-  if (carried_on) RunDirectory::carry_on(dir_ / e.condition->directory, db, *carried_on->spec, carried_on->overrides);
   return RunDirectory::resume(dir_ / e.condition->directory, std::move(db), e, point,
                               [this, i](const eval::CampaignResult& partial) {
                                 summaries_.at(i).result = partial;

@@ -40,18 +40,21 @@ class StudyDirectory {
     std::vector<StoredExperiment> stored;
   };
 
-  // The listener of condition `i`'s campaign: its files under DIR/<condition>/ (rewritten
-  // from the database), its results in its experiment of the database; each finished run
-  // rewrites the study's summary.json. The StudyDirectory must outlive it. `point`: where
-  // the condition resumes (ResultsDb::resume_point; empty for a new one). `carried_on`: the
-  // condition is carried on to its generations with these command-line settings, recorded
-  // first (RunDirectory::carry_on).
+  // A condition carried on to `spec`'s generations, with these command-line settings.
   struct CarryOn {
     const eval::ExperimentSpec* spec;
     nlohmann::ordered_json overrides;
   };
-  [[nodiscard]] RunDirectory open_condition(std::size_t i, const eval::ResumePoint& point,
-                                            const std::optional<CarryOn>& carried_on = std::nullopt);
+  // Records a carry-on of the conditions (`conditions[i]` for condition i, none where it
+  // is not carried on) before the first of them runs on: in the database in one
+  // transaction (ResultsDb::extend), then in each one's settings.json. A carry-on stopped
+  // in any condition is then finished by a plain resume, every condition to its target.
+  void carry_on(const std::vector<std::optional<CarryOn>>& conditions);
+  // The listener of condition `i`'s campaign: its files under DIR/<condition>/ (rewritten
+  // from the database), its results in its experiment of the database; each finished run
+  // rewrites the study's summary.json. The StudyDirectory must outlive it. `point`: where
+  // the condition resumes (ResultsDb::resume_point; empty for a new one).
+  [[nodiscard]] RunDirectory open_condition(std::size_t i, const eval::ResumePoint& point);
   // What the database held of condition `i` when this directory was opened.
   [[nodiscard]] const StoredExperiment& stored(std::size_t i) const { return stored_.at(i); }
   [[nodiscard]] std::size_t size() const noexcept { return stored_.size(); }

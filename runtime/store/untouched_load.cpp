@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "runtime/store/database_snapshot.hpp"
+#include "runtime/store/unstored_files.hpp"
 
 namespace esc::store {
 
@@ -30,7 +31,8 @@ bool no_generation(const std::vector<StoredExperiment>& all) {
 }
 
 // Runs `read` on the database of `dir` opened from a copy in a temporary directory (its
-// errors naming `dir`, never the copy).
+// errors naming `dir`, never the copy; nothing stored only where `dir` holds nothing else
+// a run stores).
 template <class Read>
 auto on_copy(const fs::path& dir, Read&& read) {
   const DatabaseSnapshot copy(dir);
@@ -38,7 +40,7 @@ auto on_copy(const fs::path& dir, Read&& read) {
     ResultsDb db = ResultsDb::open(copy.dir());
     return read(db);
   } catch (const NothingStored& e) {
-    throw NothingStored(replaced(e.what(), copy.dir().string(), dir.string()), e.launch());
+    throw_nothing_stored(dir, replaced(e.what(), copy.dir().string(), dir.string()), e.launch());
   } catch (const StoreError& e) {
     throw StoreError(replaced(e.what(), copy.dir().string(), dir.string()));
   }

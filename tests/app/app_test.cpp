@@ -1,6 +1,7 @@
 // The application layer as a library sees it: a run and its resume return their outcome and
 // tell their events (never print), refusals are typed errors, and an experiment whose
 // dependencies were never prepared does not run.
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -88,6 +89,13 @@ TEST(App, ARunAndItsCarryOnReturnTheirOutcomeAndTellTheirEvents) {
   EXPECT_EQ(events.experiments_done, 1);
   EXPECT_EQ(events.count(Note::Kind::Start), 1);
   EXPECT_TRUE(fs::exists(out / "esc.db"));
+  // What a stop says: the generations to make, none stored yet, and how to start it again.
+  const Note& started = *std::find_if(events.notes.begin(), events.notes.end(),
+                                      [](const Note& n) { return n.kind == Note::Kind::Start; });
+  EXPECT_EQ(started.generations, 4);
+  EXPECT_EQ(started.generations_stored, 0);
+  EXPECT_EQ(started.restart, "esc run " + fs::absolute(kStartFrom).lexically_normal().string() +
+                                 " --experiment basic --runs 1 --generations 2 --out " + out.string());
 
   ResumeRequest more;
   more.dir = out;
@@ -96,6 +104,10 @@ TEST(App, ARunAndItsCarryOnReturnTheirOutcomeAndTellTheirEvents) {
   const Outcome longer = resume(more, options(), carried);
   EXPECT_TRUE(longer.ran);
   EXPECT_EQ(carried.count(Note::Kind::Resume), 1);
+  const Note& resumed = *std::find_if(carried.notes.begin(), carried.notes.end(),
+                                      [](const Note& n) { return n.kind == Note::Kind::Resume; });
+  EXPECT_EQ(resumed.generations, 6);
+  EXPECT_EQ(resumed.generations_stored, 4);
   EXPECT_EQ(carried.generations, 2);   // one more generation of each controller
   for (const eval::ControllerResult& c : longer.conditions.front().result.controllers)
     EXPECT_EQ(c.runs.front().generations.size(), 3U);

@@ -4,7 +4,8 @@
 // with the same seed: the same per-generation statistics, best genomes and summary.json, for
 // the ES and GP, on another thread count, and after a kill -9 during the extension. Fewer
 // generations than stored is an error that changes nothing. A study is carried on as an
-// experiment is, condition by condition. A run carried on replays as stored.
+// experiment is, condition by condition, every condition's target stored first. A run
+// carried on replays as stored.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -151,6 +152,32 @@ TEST(CarryOn, AStudyCarriedOnIsTheLongerStudy) {
   EXPECT_EQ(replayed.status, 0) << replayed.output;
   const Outcome shorter = esc("run --resume " + (dir / "one").string() + " --generations 2");
   EXPECT_EQ(shorter.status, 1) << shorter.output;
+}
+
+// Every condition's target is stored when the carry-on starts: killed in the second of three
+// conditions, a plain resume takes all three to it, not the second alone.
+TEST(CarryOn, AStudyCarriedOnAndKilledIsFinishedByAPlainResume) {
+  const fs::path dir = scratch("carry-on-study-killed");
+  const std::string args = "run " + std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc --experiment "
+                           "tiny_study_fewer --runs 1 --threads 1 ";
+  const Outcome longer = esc(args + "--generations 20 --out " + (dir / "twenty").string());
+  ASSERT_EQ(longer.status, 0) << longer.output;
+  const fs::path killed = dir / "killed";
+  const Outcome two = esc(args + "--generations 2 --out " + killed.string());
+  ASSERT_EQ(two.status, 0) << two.output;
+  // 3 conditions x 2 controllers x 20 generations: 12 stored, the first condition's 36 more,
+  // then killed in the second.
+  const pid_t child = spawn_esc({"run", "--resume", killed.string(), "--generations", "20", "--threads", "1"});
+  ASSERT_GE(child, 0);
+  const Killed k = kill_when_committed(child, killed, 12 + 36 + 6);
+  ASSERT_TRUE(k.still_running) << "the carry-on finished before it could be killed";
+  ASSERT_LT(committed_generations(killed), 12 + 2 * 36);
+  const Outcome resumed = esc("run --resume " + killed.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_EQ(committed_generations(killed), 120);
+  EXPECT_EQ(slurp(dir / "twenty" / "summary.json"), slurp(killed / "summary.json"));
+  EXPECT_EQ(results_without_times(dir / "twenty"), results_without_times(killed));
+  EXPECT_NE(esc("run --resume " + killed.string()).output.find("is complete"), std::string::npos);
 }
 
 TEST(CarryOn, AnExtensionKilledHalfwayResumesBitIdentical) {

@@ -135,7 +135,7 @@ TEST(AnalysisTables, AFinishedRunIsCarriedOnFromTheStateItKept) {
   // Recorded: the experiment's generations, settings and overrides, running again.
   eval::ExperimentSpec five = spec(5);
   five.resolved_settings = {{"generations", "5"}};
-  db.extend(five, {{"carry_on", 5}});
+  db.extend({{db.experiment_id(), &five, nlohmann::ordered_json{{"carry_on", 5}}}});
   const StoredExperiment after = ResultsDb::open(dir, true).load_single();
   EXPECT_EQ(after.generations, 5);
   EXPECT_EQ(after.status, "running");
@@ -269,7 +269,7 @@ TEST(AnalysisTables, TheirRowsAndAFinishedRunsKeptStateAreVerified) {
     ResultsDb db = ResultsDb::open(dir);
     eval::ExperimentSpec five = spec(5);
     five.resolved_settings = {{"generations", "5"}};
-    db.extend(five, {{"carry_on", 5}});
+    db.extend({{db.experiment_id(), &five, nlohmann::ordered_json{{"carry_on", 5}}}});
   }
   EXPECT_EQ(ResultsDb::open(dir, true).load_single().generations, 5);
 }

@@ -1,6 +1,7 @@
 // A study's database (schema 3): every condition an experiment row, with its study, name,
 // directory and settings; each condition written through its own RunDirectory; the study's
-// summary.json; and a schema-2 database upgraded when opened for writing.
+// summary.json; a carry-on recorded for every condition at once; and a schema-2 database
+// upgraded when opened for writing.
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -82,6 +83,38 @@ TEST(StudyStore, EveryConditionIsAnExperimentWithItsStudyNameDirectoryAndSetting
   EXPECT_EQ(summary["conditions"][1]["controllers"]["CC"]["runs"][0]["best_fitness"], 2.5);
   EXPECT_TRUE(fs::exists(dir / "time_constant=50ms" / "settings.json"));
   EXPECT_TRUE(fs::exists(dir / "time_constant=50ms" / "CC" / "run-01.csv"));
+}
+
+// A carry-on records every condition carried on before the first runs on: in the database
+// (generations, settings, `carry_on`, running again) and in each condition's settings.json;
+// a condition not carried on is left as it was.
+TEST(StudyStore, ACarryOnIsRecordedForEveryConditionAtOnce) {
+  const fs::path dir = test::fresh_dir("study-carry-on");
+  const eval::StudySpec study = two_conditions();
+  { StudyDirectory sd(dir, study, {{"s.esc", "study st { conditions small }"}}, {LaunchInfo{}, LaunchInfo{}}); }
+  std::vector<eval::ExperimentSpec> longer;
+  for (const eval::ConditionSpec& c : study.conditions) {
+    longer.push_back(c.experiment);
+    longer.back().es.generations = 7;
+    longer.back().resolved_settings["generations"] = "7";
+  }
+  {
+    StudyDirectory sd(dir, ResultsDb::open(dir, true).load());
+    sd.carry_on({StudyDirectory::CarryOn{&longer[0], {{"carry_on", 7}}}, std::nullopt});
+  }
+  {
+    StudyDirectory sd(dir, ResultsDb::open(dir, true).load());
+    sd.carry_on({std::nullopt, StudyDirectory::CarryOn{&longer[1], {{"carry_on", 7}}}});
+  }
+  const std::vector<StoredExperiment> all = study_conditions(ResultsDb::open(dir, true).load());
+  for (const StoredExperiment& e : all) {
+    EXPECT_EQ(e.generations, 7) << e.condition->name;
+    EXPECT_EQ(e.overrides["carry_on"], 7) << e.condition->name;
+    EXPECT_EQ(e.settings.at("generations"), "7") << e.condition->name;
+    EXPECT_FALSE(e.finished()) << e.condition->name;
+    const auto doc = nlohmann::json::parse(test::slurp(dir / e.condition->directory / "settings.json"));
+    EXPECT_EQ(doc["settings"]["generations"], "7") << e.condition->name;
+  }
 }
 
 TEST(StudyStore, ASchemaTwoDatabaseIsReadAndUpgradedWhenWritten) {
