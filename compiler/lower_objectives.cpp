@@ -33,6 +33,14 @@ std::optional<eval::DeclaredRange> declared(const ast::DeclaredRange& r, std::st
         .help.push_back("write `in [lower, upper]` with lower < upper");
     return std::nullopt;
   }
+  // Archives, novelty distances, QD-scores and hypervolumes divide by or multiply widths: a
+  // width that overflows would make every one of them inf or 0 after the run has started.
+  if (!std::isfinite(*hi - *lo)) {
+    sink.error(r.where, fmt::format("the range of {} is too wide: {} - {} overflows a double", what, r.hi.text,
+                                    r.lo.text))
+        .help.push_back("keep both bounds within +-1e300, the largest value an expression or a fitness takes");
+    return std::nullopt;
+  }
   return eval::DeclaredRange{*lo, *hi};
 }
 
