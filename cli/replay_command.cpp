@@ -47,6 +47,8 @@ struct Subject {
   const store::StoredReplay* stored = nullptr;   // the same evaluation stored in esc.db, if it is
   std::string member;                         // "cell 17": a member of the final front or archive
   std::optional<double> member_fitness;       // as stored in its own evaluation
+  // A member's descriptors as stored, to check against where its own evaluation is known.
+  std::vector<double> member_descriptors;
 };
 
 struct Collect final : eval::TraceSink {
@@ -120,7 +122,7 @@ std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, cons
     if (r == nullptr) return {};
     Subject s{c.name, r->run, r->seed, r->best_genome,
               eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index)),
-              r->best_fitness, nullptr, {}, {}};
+              r->best_fitness, nullptr, {}, {}, {}};
     if (c.replay && c.replay->run == r->run && c.replay->seed == s.seed) s.stored = &*c.replay;
     subjects.push_back(std::move(s));
   }
@@ -166,6 +168,7 @@ bool pick_member(Subject& s, const evo::Members& kept, std::int64_t member) {
     s.seed = eval::evaluation_seed_of(s.run_seed, it->measured);
     s.fitness = s.member_fitness;
     s.member_fitness.reset();
+    s.member_descriptors = it->descriptors;
   }
   return true;
 }
@@ -258,6 +261,17 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
              s.controller, s.run + 1, result.fitness, *s.fitness);
     status = kExitBadInput;
   }
+  std::string descriptors;
+  for (std::size_t i = 0; i < result.descriptors.size() && i < spec.descriptors.size(); ++i)
+    descriptors += fmt::format("{}{} {:.17g}", descriptors.empty() ? "" : ", ", spec.descriptors[i].name,
+                               result.descriptors[i]);
+  if (faithful && !s.member_descriptors.empty() && result.descriptors != s.member_descriptors) {
+    std::string stored;
+    for (const double d : s.member_descriptors) stored += fmt::format("{}{:.17g}", stored.empty() ? "" : ", ", d);
+    complain("esc: error: {} run {} {} has the descriptors {} now, but {} when it ran: the simulation has changed\n",
+             s.controller, s.run + 1, s.member, descriptors, stored);
+    status = kExitBadInput;
+  }
   if (faithful && s.stored != nullptr) {
     const std::string difference = first_difference(trace.steps, *s.stored);
     if (!difference.empty()) {
@@ -301,6 +315,10 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   say("esc: replayed {} run {}{} in {} (fitness {:.{}f}{}{}): {}/{}.svg, .csv\n", s.controller, s.run + 1,
       s.member.empty() ? "" : " " + s.member, spec.name, result.fitness, decimals, stored_member, agrees, out.string(),
       stem);
+  // A member's descriptors place it in its cell: shown, and checked above against the stored.
+  if (!s.member.empty() && !descriptors.empty())
+    say("esc: {} descriptors: {}{}\n", s.member, descriptors,
+        faithful && status == kExitOk && !s.member_descriptors.empty() ? " (as stored)" : "");
   if (o.animate) {
     const std::optional<fs::path> movie = write_animation(figure, out / stem);
     if (!movie) return kExitBadInput;

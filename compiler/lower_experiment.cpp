@@ -282,7 +282,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
 }
 
 ChoiceNames ExperimentLowering::number_choices(eval::ExperimentSpec& x) {
-  ChoiceNames names{x.name, {}};
+  ChoiceNames names{x.name, {}, 0};
   std::map<std::pair<std::string, std::string>, int> ids;   // (name, behavior) -> id
   const auto add = [&](const std::string& name, int id) {
     auto& v = names.ids[name];
@@ -301,6 +301,7 @@ ChoiceNames ExperimentLowering::number_choices(eval::ExperimentSpec& x) {
         add(c.behaviors[j].name, choice.id);
     }
   x.choice_ids = ids.size();
+  names.count = ids.size();
   return names;
 }
 

@@ -66,6 +66,18 @@ constexpr std::array kChoiceFunctions = {ChoiceFunction{"using", ChoiceReader::U
                                          ChoiceFunction{"share", ChoiceReader::Share}};
 constexpr std::string_view kStepsAggregate = "steps";
 
+// Step aggregates, read by end terms: a step expression folded over the steps of the epoch
+// (the evaluation). `min` and `max` fold with one argument; with two they are the functions.
+struct AggregateFunction {
+  std::string_view name;
+  expr::StepAggregate::Kind kind;
+};
+using AggregateKind = expr::StepAggregate::Kind;
+constexpr std::array kAggregateFunctions = {
+    AggregateFunction{"mean", AggregateKind::Mean}, AggregateFunction{"sum", AggregateKind::Sum},
+    AggregateFunction{"min", AggregateKind::Min},   AggregateFunction{"max", AggregateKind::Max},
+    AggregateFunction{"fraction", AggregateKind::Fraction}, AggregateFunction{"last", AggregateKind::At}};
+
 Node constant(double v) {
   Node n;
   n.constant = v;
@@ -254,6 +266,32 @@ class Lowerer {
     return out;
   }
 
+  // `mean(x)` & co.: x is lowered as a step term and folded by the evaluator; the end term
+  // reads the folded value from its slot.
+  Node step_aggregate(const ast::Expr& e, const AggregateFunction& f) {
+    if (e.args.size() != 1 || !e.args[0]) {
+      sink_.error(e.where, fmt::format("`{}` takes 1 argument, the step expression to fold over the steps, found {}",
+                                       f.name, e.args.size()));
+      return failed();
+    }
+    if (scope_.use != ExprScope::Use::End || scope_.step_aggregates == nullptr) {
+      sink_.error(e.unit_where, fmt::format("`{}(x)` folds x over the steps of an epoch or an evaluation; it is read "
+                                            "at their end",
+                                            f.name))
+          .help.push_back("write it in the fitness's `epoch:` or `evaluation:` term or in a descriptor, e.g. "
+                          "`descriptor moving: mean(speed) in [0, 1]`");
+      return failed();
+    }
+    ExprScope each = scope_;
+    each.use = ExprScope::Use::Step;
+    each.step_aggregates = nullptr;
+    auto of = lower_expr(*e.args[0], each, sink_);
+    if (!of) return failed();
+    const auto k = static_cast<expr::Slot>(scope_.step_aggregates->size());
+    scope_.step_aggregates->push_back({f.kind, std::move(*of), 0, 1});
+    return load(step_aggregate_slot(scope_.choices) + k);
+  }
+
   void unknown_name(const std::string& text, const SourceRange& where) {
     suggest(sink_.error(where, fmt::format("unknown name `{}`", text)), text, known_names(),
             {.otherwise = "observables are listed in docs/language.md (`speed`, `forward_speed`, `wheel_diff`, "
@@ -326,6 +364,9 @@ class Lowerer {
     if (const auto p = expr::find_parametrised(e.text)) return parametrised(e, *p);
     for (const ChoiceFunction& f : kChoiceFunctions)
       if (f.name == e.text) return choice(e, f);
+    for (const AggregateFunction& a : kAggregateFunctions)
+      if (a.name == e.text && (e.args.size() == 1 || (a.kind != AggregateKind::Min && a.kind != AggregateKind::Max)))
+        return step_aggregate(e, a);
     const Function* f = nullptr;
     for (const Function& k : kFunctions)
       if (k.name == e.text) f = &k;
@@ -337,9 +378,12 @@ class Lowerer {
       }
       std::vector<std::string> functions = function_names();
       for (const ChoiceFunction& c : kChoiceFunctions) functions.emplace_back(c.name);
+      for (const AggregateFunction& a : kAggregateFunctions)
+        if (a.kind != AggregateKind::Min && a.kind != AggregateKind::Max) functions.emplace_back(a.name);
       suggest(sink_.error(e.unit_where, fmt::format("unknown function `{}`", e.text)), e.text, functions,
               {.otherwise = "functions: min, max, abs, sqrt, exp, log, tanh, sigmoid, clamp, pow; in a fitness "
-                            "also using(B), and in its end terms count(B) and share(B)"});
+                            "also using(B), and in its end terms and descriptors count(B), share(B) and the step "
+                            "aggregates mean(x), sum(x), min(x), max(x), fraction(c), last(x)"});
       // Still check the arguments.
       for (const auto& a : e.args) (void)lower(*a);
       return failed();
@@ -388,6 +432,10 @@ class Lowerer {
 };
 
 }  // namespace
+
+expr::Slot step_aggregate_slot(const ChoiceNames* choices) noexcept {
+  return expr::aggregate::count + static_cast<expr::Slot>(choices != nullptr ? choices->count : 0);
+}
 
 std::vector<std::string> function_names() {
   std::vector<std::string> v;

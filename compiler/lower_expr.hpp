@@ -10,6 +10,7 @@
 #include "compiler/sensor_uses.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/expr/program.hpp"
+#include "runtime/expr/step_aggregate.hpp"
 
 namespace esc::compiler {
 
@@ -28,6 +29,7 @@ struct ArenaNames {
 struct ChoiceNames {
   std::string experiment;            // for messages
   std::map<std::string, std::vector<int>> ids;
+  std::size_t count = 0;             // distinct ids: eval::ExperimentSpec::choice_ids
 };
 
 struct ExprScope {
@@ -46,7 +48,14 @@ struct ExprScope {
   // The goal and the sensors `goal_distance`, `range[i]` and `radar[i]` need. Null outside
   // an experiment: then they are not checked.
   const Navigation* navigation = nullptr;
+  // Where an end term's step aggregates go (`mean(speed)`, `fraction(collision)`), each read
+  // from the slot after the last one's (the first: eval::ExperimentSpec::step_aggregate_slot()).
+  // Null where none may be read: a step term, a stop condition, a behavior.
+  std::vector<expr::StepAggregate>* step_aggregates = nullptr;
 };
+
+// The first slot of an end term's step aggregates among the choices `choices` numbers.
+[[nodiscard]] expr::Slot step_aggregate_slot(const ChoiceNames* choices) noexcept;
 
 // Reports errors to `sink`; nullopt when the expression has one.
 [[nodiscard]] std::optional<expr::Program> lower_expr(const ast::Expr& e, const ExprScope& scope, Sink& sink);

@@ -8,14 +8,16 @@ namespace esc::compiler {
 
 namespace {
 
-// An end term (`epoch:` or `evaluation:`), given at most once.
+// An end term (`epoch:` or `evaluation:`), given at most once, with its step aggregates.
 void end_term(const std::vector<ast::FitnessTerm>& terms, std::string_view word, ExprScope scope, Sink& sink,
-              std::optional<expr::Program>& program, std::string& text) {
+              std::optional<expr::Program>& program, std::vector<expr::StepAggregate>& aggregates,
+              std::string& text) {
   for (std::size_t i = 1; i < terms.size(); ++i)
     sink.error(terms[i].where, fmt::format("the fitness already has an `{}:` term", word))
         .notes.emplace_back(terms[0].where, "first given here");
   if (terms.empty() || !terms[0].expr) return;
   scope.use = ExprScope::Use::End;
+  scope.step_aggregates = &aggregates;
   program = lower_expr(*terms[0].expr, scope, sink);
   text = terms[0].text;
 }
@@ -54,8 +56,9 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
     if (auto p = lower_expr(*s.expr, scope, sink_)) f.spec.stop_when.push_back(std::move(*p));
     f.stop_texts.push_back(s.text);
   }
-  end_term(d.epoch_ends, "epoch", scope, sink_, f.spec.epoch_end, f.epoch_text);
-  end_term(d.evaluation_ends, "evaluation", scope, sink_, f.spec.evaluation_end, f.evaluation_text);
+  end_term(d.epoch_ends, "epoch", scope, sink_, f.spec.epoch_end, f.spec.epoch_aggregates, f.epoch_text);
+  end_term(d.evaluation_ends, "evaluation", scope, sink_, f.spec.evaluation_end, f.spec.evaluation_aggregates,
+           f.evaluation_text);
   if (sink_.errors() == errors) slot = std::move(f);
   return slot;
 }

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
 #include "compiler/units.hpp"
+#include "runtime/expr/observables.hpp"
 
 namespace esc::compiler {
 
@@ -33,11 +35,69 @@ std::optional<eval::DeclaredRange> declared(const ast::DeclaredRange& r, std::st
         .help.push_back("write `in [lower, upper]` with lower < upper");
     return std::nullopt;
   }
+  // Archives, novelty distances, QD-scores and hypervolumes divide by or multiply widths: a
+  // width that overflows would make every one of them inf or 0 after the run has started.
+  if (!std::isfinite(*hi - *lo)) {
+    sink.error(r.where, fmt::format("the range of {} is too wide: {} - {} overflows a double", what, r.hi.text,
+                                    r.lo.text))
+        .help.push_back("keep both bounds within +-1e300, the largest value an expression or a fitness takes");
+    return std::nullopt;
+  }
   return eval::DeclaredRange{*lo, *hi};
 }
 
 std::string range_text(const eval::DeclaredRange& r) {
   return fmt::format("in [{}, {}]", number_text(r.lower), number_text(r.upper));
+}
+
+// The most positions a `positions(K)` descriptor samples: 2K values, within what a CVT takes.
+constexpr int kMaxPositions = 512;
+
+// `positions(K)` as a whole descriptor's expression: its call, else null.
+const ast::Expr* positions_call(const ast::ExpItem& item) {
+  const ast::Expr* e = item.expr.get();
+  return e != nullptr && e->kind == ast::Expr::Kind::Call && e->text == "positions" ? e : nullptr;
+}
+
+// K of `positions(K)`: a whole number 1 .. kMaxPositions written plainly; none (reported when
+// `sink` is given) otherwise.
+std::optional<int> positions_count(const ast::Expr& call, Sink* sink) {
+  const ast::Expr* k = call.args.size() == 1 ? call.args[0].get() : nullptr;
+  if (k != nullptr && k->kind == ast::Expr::Kind::Number && k->unit.empty() && k->number == std::floor(k->number) &&
+      k->number >= 1 && k->number <= kMaxPositions)
+    return static_cast<int>(k->number);
+  if (sink != nullptr)
+    sink->error(k != nullptr ? k->where : call.where,
+                fmt::format("`positions(K)` samples K positions of the robot: K is a whole number from 1 to {}",
+                            kMaxPositions))
+        .help.push_back("write `descriptor path: positions(5) in [0, 60cm]`: x and y at 5 evenly spaced steps");
+  return std::nullopt;
+}
+
+// An observable slot as a script names it (`wheel_diff`, `wheels[1]`), for messages.
+std::string slot_name(expr::Slot s) {
+  if (s == expr::slot::acting) return "using(...)";
+  if (s >= expr::slot::reached && s < expr::slot::reached + expr::kMaxLights) return "reached(...)";
+  for (const expr::Observable& o : expr::kObservables)
+    if (s >= o.first && s < o.first + o.count)
+      return o.indexed ? fmt::format("{}[{}]", o.name, s - o.first) : std::string(o.name);
+  return fmt::format("slot {}", s);
+}
+
+// A descriptor that reads what describes only the last step (`wheel_diff`) outside a step
+// aggregate measures one step per epoch: a warning with the forms that say what is meant.
+void warn_last_step(const eval::DescriptorSpec& d, const ast::ExpItem& item, Sink& sink) {
+  for (const expr::Instr& in : d.program.code()) {
+    if (in.op != expr::Op::Load || !expr::describes_last_step(in.slot)) continue;
+    const std::string name = slot_name(in.slot);
+    Diagnostic& w = sink.warning(item.expr->where,
+                                 fmt::format("descriptor `{}` reads `{}` on the last step of {} only", d.name, name,
+                                             d.at_evaluation ? "the evaluation" : "each epoch"));
+    w.help.push_back(fmt::format("for its mean over the steps write `mean({})`; `last({})` says that the last step's "
+                                 "value is meant",
+                                 name, name));
+    return;
+  }
 }
 
 }  // namespace
@@ -122,8 +182,35 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
     if (item->range) {
       if (const auto r = declared(*item->range, fmt::format("descriptor `{}`", name.text), sink)) d.range = *r;
     }
+    if (const ast::Expr* call = positions_call(*item)) {
+      // 2K descriptors, NAME_x0, NAME_y0, NAME_x1, ...: x and y on sampled steps, one range.
+      const auto k = positions_count(*call, &sink);
+      if (!k) continue;
+      for (int i = 0; i < *k; ++i)
+        for (const auto& [axis, slot] : {std::pair{"x", expr::slot::x}, std::pair{"y", expr::slot::y}}) {
+          eval::DescriptorSpec p = d;
+          p.name = fmt::format("{}_{}{}", name.text, axis, i);
+          if (seen.contains(p.name) || !described.emplace(p.name, item).second) {
+            sink.error(name.where, fmt::format("descriptor `{}` names its positions `{}`, the name of another "
+                                               "objective or descriptor of this experiment",
+                                               name.text, p.name));
+            break;
+          }
+          expr::Program read;
+          read.push_load(slot);
+          p.aggregates.push_back({expr::StepAggregate::Kind::At, std::move(read), i, *k});
+          p.program.push_load(step_aggregate_slot(&choices));
+          x.descriptors.push_back(std::move(p));
+        }
+      continue;
+    }
     if (item->expr) {
-      if (auto p = lower_expr(*item->expr, scope, sink)) d.program = std::move(*p);
+      ExprScope own = scope;
+      own.step_aggregates = &d.aggregates;
+      if (auto p = lower_expr(*item->expr, own, sink)) {
+        d.program = std::move(*p);
+        warn_last_step(d, *item, sink);
+      }
     }
     x.descriptors.push_back(std::move(d));
   }
@@ -139,12 +226,18 @@ void resolve_objectives(eval::ExperimentSpec& x, const ObjectiveItems& items) {
     x.resolved_settings["objectives"] = text;
   }
   std::string text;
-  for (std::size_t i = 0; i < x.descriptors.size() && i < items.descriptors.size(); ++i) {
+  // Item by item: a `positions(K)` item made 2K descriptors.
+  std::size_t i = 0;
+  for (const ast::ExpItem* item : items.descriptors) {
+    if (i >= x.descriptors.size()) break;
     const eval::DescriptorSpec& d = x.descriptors[i];
-    text += fmt::format("{}{}: {}{} {}", text.empty() ? "" : "; ", d.name, d.at_evaluation ? "evaluation: " : "",
-                        items.descriptors[i]->text, range_text(d.range));
+    text += fmt::format("{}{}: {}{} {}", text.empty() ? "" : "; ", item->refs[0].text,
+                        d.at_evaluation ? "evaluation: " : "", item->text, range_text(d.range));
     if (!d.at_evaluation && d.reduce != eval::Reduction::Mean)
       text += fmt::format(" by {}", reduction_names()[static_cast<std::size_t>(d.reduce)]);
+    const ast::Expr* call = positions_call(*item);
+    const auto k = call != nullptr ? positions_count(*call, nullptr) : std::nullopt;
+    i += k ? 2 * static_cast<std::size_t>(*k) : 1;
   }
   if (!text.empty()) x.resolved_settings["descriptors"] = text;
 }

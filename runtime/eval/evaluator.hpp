@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "runtime/eval/experiment.hpp"
+#include "runtime/eval/step_aggregates.hpp"
 #include "runtime/evo/gp/tree.hpp"
 #include "runtime/sim/world.hpp"
 
@@ -91,9 +92,11 @@ class Evaluator {
   Evaluation run(const control::ControllerSpec& controller, Driver& ctl, bool noise, std::uint64_t seed,
                  TraceSink* trace);
   // An end term's value: `term` on the last step's `frame` followed by the aggregates of the
-  // `steps` steps in which the choices acted `usage` - `before` times.
-  double end_term(const expr::Program& term, const control::ControllerSpec& controller, const expr::Frame& frame,
-                  std::int64_t steps, std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
+  // `steps` steps in which the choices acted `usage` - `before` times, then its step
+  // aggregates `folded`.
+  double end_term(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
+                  const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
+                  std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
 
   // Each descriptor's per-epoch values reduced so far (Reduction::Mean: their sum).
   void reduce_descriptors(const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
@@ -102,6 +105,7 @@ class Evaluator {
 
   const ExperimentSpec* spec_;
   sim::World world_;
+  StepAggregates folded_;                   // the end terms' step aggregates
   std::vector<double> end_frame_;           // an end term's frame: expr::Frame, then expr::aggregate
   std::vector<std::int64_t> epoch_start_;   // usage when the epoch began
 };

@@ -16,7 +16,9 @@
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/gp/gp.hpp"
 #include "runtime/evo/registry.hpp"
+#include "runtime/expr/observables.hpp"
 #include "runtime/expr/program.hpp"
+#include "runtime/expr/step_aggregate.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/khepera_params.hpp"
 
@@ -27,13 +29,16 @@ namespace esc::eval {
 // `stop_when` program is non-zero (that step's term still counts). The end terms are added
 // once at the end of each epoch (`epoch_end`) and of the evaluation (`evaluation_end`): they
 // read the last step's frame followed by the aggregates of expr::aggregate over the epoch
-// (the evaluation), one count per experiment-wide choice id.
+// (the evaluation), one count per experiment-wide choice id, then the values of the term's
+// step aggregates (`mean(speed)`), aggregate k in slot ExperimentSpec::step_aggregate_slot() + k.
 struct FitnessSpec {
   std::string name;
   expr::Program step;
   std::vector<expr::Program> stop_when;
   std::optional<expr::Program> epoch_end;
   std::optional<expr::Program> evaluation_end;
+  std::vector<expr::StepAggregate> epoch_aggregates;        // read by epoch_end, over its epoch
+  std::vector<expr::StepAggregate> evaluation_aggregates;   // read by evaluation_end, over every step
 };
 
 // The range an objective's or a descriptor's values are declared to lie in (`in [lo, hi]`):
@@ -58,10 +63,13 @@ enum class Reduction { Mean, Sum, Min, Max, First, Last };
 
 // A behavior descriptor (`descriptor NAME: EXPR in [lo, hi] by REDUCTION`): an end term,
 // evaluated at the end of every epoch and reduced over the epochs, or once at the end of
-// the evaluation over its aggregates (`at_evaluation`).
+// the evaluation over its aggregates (`at_evaluation`); its step aggregates fold the steps
+// of the epoch (of the evaluation). A `positions(K)` descriptor is 2K of these, each an
+// At aggregate of `x` or `y`.
 struct DescriptorSpec {
   std::string name;
   expr::Program program;
+  std::vector<expr::StepAggregate> aggregates;
   bool at_evaluation = false;
   Reduction reduce = Reduction::Mean;
   DeclaredRange range;
@@ -237,6 +245,10 @@ struct ExperimentSpec {
     return e;
   }
 
+  // The slot of an end term's first step aggregate: after the frame, `steps` and the counts.
+  [[nodiscard]] expr::Slot step_aggregate_slot() const noexcept {
+    return expr::aggregate::count + static_cast<expr::Slot>(choice_ids);
+  }
   [[nodiscard]] bool evaluates_only() const noexcept { return start_from && start_from->evaluate_only; }
   // Whether objective i (0: the fitness) is declared `minimize`: optimizers maximise, so they
   // see it negated (problem_of), and as_declared turns what they saw back.

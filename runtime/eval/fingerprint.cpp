@@ -5,6 +5,7 @@
 #include "runtime/expr/observables.hpp"
 
 #include <span>
+#include <utility>
 #include <variant>
 
 #include <fmt/format.h>
@@ -102,6 +103,13 @@ std::string fingerprint(const ExperimentSpec& spec) {
   for (const auto& p : spec.fitness.stop_when) w.program("fitness.stop", p);
   if (spec.fitness.epoch_end) w.program("fitness.epoch", *spec.fitness.epoch_end);
   if (spec.fitness.evaluation_end) w.program("fitness.evaluation", *spec.fitness.evaluation_end);
+  // Only where read, so that fitnesses without step aggregates keep their fingerprints.
+  for (const auto& [key, list] : {std::pair{"fitness.epoch.aggregate", &spec.fitness.epoch_aggregates},
+                                  std::pair{"fitness.evaluation.aggregate", &spec.fitness.evaluation_aggregates}})
+    for (const expr::StepAggregate& folded : *list) {
+      w.line(key, fmt::format("{} {} {}", static_cast<int>(folded.kind), folded.sample, folded.samples));
+      w.program(key, folded.of);
+    }
   for (std::size_t i = 0; i < spec.controllers.size(); ++i)
     w.controller(fmt::format("controller{}", i), spec.controllers[i]);
   if (spec.start_from)

@@ -95,6 +95,11 @@ bool program_reads(const expr::Program& p, expr::Slot slot) noexcept {
                      [slot](const expr::Instr& in) { return in.op == expr::Op::Load && in.slot == slot; });
 }
 
+// Step aggregates read every step's frame.
+bool aggregates_read(const std::vector<expr::StepAggregate>& list, expr::Slot slot) noexcept {
+  return std::any_of(list.begin(), list.end(), [slot](const expr::StepAggregate& a) { return program_reads(a.of, slot); });
+}
+
 bool behavior_reads(const control::Behavior& b, expr::Slot slot) noexcept {
   return program_reads(b.left, slot) || program_reads(b.right, slot);
 }
@@ -123,7 +128,7 @@ bool fitness_reads(const FitnessSpec& fitness, expr::Slot slot) noexcept {
   // An end term reads the last step's frame.
   for (const auto* end : {&fitness.epoch_end, &fitness.evaluation_end})
     if (*end && program_reads(**end, slot)) return true;
-  return false;
+  return aggregates_read(fitness.epoch_aggregates, slot) || aggregates_read(fitness.evaluation_aggregates, slot);
 }
 
 }  // namespace
@@ -136,7 +141,7 @@ bool reads_slot(const ExperimentSpec& spec, const control::ControllerSpec& contr
   for (const FitnessSpec& f : spec.further)
     if (fitness_reads(f, slot)) return true;
   for (const DescriptorSpec& d : spec.descriptors)
-    if (program_reads(d.program, slot)) return true;
+    if (program_reads(d.program, slot) || aggregates_read(d.aggregates, slot)) return true;
   return reads_slot(spec.fitness, controller, slot);
 }
 

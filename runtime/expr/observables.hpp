@@ -74,6 +74,16 @@ inline constexpr Slot kFrameSizeBeforeNavigator = slot::x;
 
 using Frame = std::array<double, kFrameSize>;
 
+// Whether slot `s` describes the last control step alone (a speed over it, a contact or an
+// event during it, the choice acting on it) rather than the state the robot is in: read at
+// the end of an epoch, it says nothing of the epoch's other steps. A descriptor that reads
+// one outside a step aggregate is warned of (`mean(speed)` is the mean over the steps).
+[[nodiscard]] constexpr bool describes_last_step(Slot s) noexcept {
+  return s == slot::speed || s == slot::forward_speed || s == slot::wheel_diff || s == slot::wheels ||
+         s == slot::wheels + 1 || s == slot::collision || s == slot::com_speed || s == slot::new_cell ||
+         (s >= slot::reached && s < slot::reached + kMaxLights) || s == slot::noise || s == slot::acting;
+}
+
 // The aggregates an end term (a fitness's `epoch:` or `evaluation:` term) reads, in slots
 // after the frame: it is evaluated once, on the last step's frame followed by these, over
 // the epoch (or the whole evaluation).

@@ -35,7 +35,7 @@ void declare_objectives(ExperimentSpec& x) {
   x.objectives = {{"f", false, DeclaredRange{-100, 100}}, {"g", true, DeclaredRange{0, 1}}};
   x.further = {x.fitness};
   x.further.front().name = "g";
-  x.descriptors = {{"a", {}, false, Reduction::Mean, {0, 1}}, {"b", {}, false, Reduction::Mean, {0, 1}}};
+  x.descriptors = {{"a", {}, {}, false, Reduction::Mean, {0, 1}}, {"b", {}, {}, false, Reduction::Mean, {0, 1}}};
 }
 
 struct Case {

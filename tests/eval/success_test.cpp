@@ -50,7 +50,7 @@ TEST(Success, AMinimisedObjectiveIsTestedAsMeasuredAndADescriptorAsReduced) {
   spec.objectives = {{"avoid", false, std::nullopt}, {"energy", true, DeclaredRange{0, 10}}};
   spec.further = {spec.fitness};
   spec.further.front().name = "energy";
-  spec.descriptors = {{"x", {}, false, Reduction::Last, {0, 1}}};
+  spec.descriptors = {{"x", {}, {}, false, Reduction::Last, {0, 1}}};
   const evo::Outcome o{{3.0, -2.0}, {0.25}};   // optimizers are told -energy
   const SuccessSpec energy{"energy", Of::Objective, 1, Check::AtMost, 2.0};
   EXPECT_EQ(tested_value(spec, energy, o), 2.0);

@@ -233,6 +233,18 @@ TEST(Archive, QdScoreCoverageAndBestOnAHandExample) {
   EXPECT_EQ(std::vector<std::size_t>(a.filled_cells().begin(), a.filled_cells().end()), (std::vector<std::size_t>{0, 3, 5, 7}));
 }
 
+// Fitnesses far above a bound far below: every contribution and the sum stay finite.
+TEST(Archive, QdScoreSaturatesAtTheLargestDouble) {
+  Archive a = small_grid(-1e308);
+  (void)a.insert({0.0}, 1e300, std::vector<double>{1.0, -1.0});
+  EXPECT_LT(a.qd_score(), std::numeric_limits<double>::max());   // 1e308 + 1e300
+  (void)a.insert({0.0}, 1e300, std::vector<double>{7.0, 1.0});
+  EXPECT_EQ(a.qd_score(), std::numeric_limits<double>::max());
+  Archive b = small_grid(-1e307);
+  for (const double x : {1.0, 3.0, 5.0, 7.0}) (void)b.insert({0.0}, 1e307, std::vector<double>{x, 1.0});
+  EXPECT_DOUBLE_EQ(b.qd_score(), 8e307);   // within the doubles, the plain sum
+}
+
 TEST(Archive, ChangesAreTheLatestEliteOfEachChangedCellInCellOrder) {
   Archive a = small_grid();
   (void)a.insert({1.0}, 1.0, std::vector<double>{7.0, 1.0});   // cell 7

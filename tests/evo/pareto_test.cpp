@@ -172,6 +172,15 @@ TEST(Pareto, HypervolumeTwoObjectivesByHand) {
   EXPECT_EQ(hypervolume(ObjectiveRows{{4, 5}}, ref), 0.0);
 }
 
+// Points far below a reference far above: the volume saturates at the largest double.
+TEST(Pareto, HypervolumeStaysFinite) {
+  constexpr double largest = std::numeric_limits<double>::max();
+  EXPECT_EQ(hypervolume(ObjectiveRows{{-1e300, -1e300}}, std::vector<double>{1e308, 1e308}), largest);
+  EXPECT_EQ(hypervolume(ObjectiveRows{{-1e300, -1e300, -1e300}, {0, 0, 0}}, std::vector<double>{1e200, 1e200, 1e200}),
+            largest);
+  EXPECT_DOUBLE_EQ(hypervolume(ObjectiveRows{{-1e150, 0}}, std::vector<double>{0, 1e150}), 1e300);
+}
+
 TEST(Pareto, HypervolumeThreeObjectivesByHand) {
   const std::vector<double> ref{2, 2, 2};
   EXPECT_DOUBLE_EQ(hypervolume(ObjectiveRows{{1, 1, 1}}, ref), 1.0);

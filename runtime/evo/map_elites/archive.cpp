@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -87,7 +88,9 @@ const Elite* Archive::elite(std::size_t cell) const {
 
 double Archive::qd_score() const {
   double score = 0.0;
-  for (const std::size_t cell : filled_) score += std::max(0.0, slots_[cell]->fitness - offset_);
+  constexpr double largest = std::numeric_limits<double>::max();
+  for (const std::size_t cell : filled_)
+    score = std::min(score + std::max(0.0, slots_[cell]->fitness - offset_), largest);
   return score;
 }
 

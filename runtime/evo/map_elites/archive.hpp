@@ -12,7 +12,9 @@
 // The QD-score is the sum over filled cells of (fitness - fitness_offset), with the offset a
 // lower bound of the fitness that the caller declares (pyribs' qd_score_offset), so that
 // filling a cell never lowers it; a fitness below the offset (the bound was wrong) counts
-// 0, so the score still never decreases. Coverage is filled / cells.
+// 0, so the score still never decreases. The sum saturates at the largest double, so that
+// it stays finite (and never decreases) whatever fitnesses far outside the declared range
+// the elites hold. Coverage is filled / cells.
 //
 // Every change since the last take_changes() (cell and its new elite, one per cell, in cell
 // order) can be stored per generation, and replay() rebuilds the archive of any generation

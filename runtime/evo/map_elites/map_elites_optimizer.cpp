@@ -181,6 +181,10 @@ std::string map_elites_problem(const MapElitesRunSettings& s, const Problem& p) 
   if (p.objectives.empty() || !std::isfinite(p.objectives.front().lower))
     return what + "'s QD-score counts fitness above its declared lower bound: declare the fitness's range "
                   "(`fitness F in [lo, hi]`)";
+  if (const Bounds& f = p.objectives.front(); !std::isfinite(cells_of(s, p.descriptors.size()) * (f.upper - f.lower)))
+    return fmt::format("{}'s QD-score sums up to {} cells' fitness above {}: over the fitness's declared range "
+                       "[{}, {}] it would overflow a double; declare a narrower range",
+                       what, cells_of(s, p.descriptors.size()), f.lower, f.lower, f.upper);
   if (cells_of(s, p.descriptors.size()) > static_cast<double>(qd::kMaxGridCells))
     return fmt::format("{} cells are more than an archive may hold ({})", cells_of(s, p.descriptors.size()),
                        qd::kMaxGridCells);

@@ -1,5 +1,6 @@
 #include "runtime/evo/nsga2/nsga2_options.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "runtime/evo/gp/tree_variation.hpp"
@@ -21,6 +22,14 @@ std::string nsga2_problem(const Nsga2Settings& settings, const Problem& problem)
     constexpr std::string_view prefix = "NSGA-II: ";
     if (m.starts_with(prefix)) m.erase(0, prefix.size());
     return m;
+  }
+  // The hypervolume metric spans the declared ranges: their product must be a number.
+  if (!hypervolume_reference(problem).empty()) {
+    double volume = 1.0;
+    for (const Bounds& b : problem.objectives) volume *= b.upper - b.lower;
+    if (!std::isfinite(volume))
+      return "the hypervolume of the objectives' declared ranges (the product of their widths) overflows a double; "
+             "declare narrower ranges";
   }
   return {};
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +15,9 @@ namespace {
 using Point2 = std::array<double, 2>;
 using Point3 = std::array<double, 3>;
 
+// A non-negative quantity held finite: the largest double where it overflowed.
+double held(double v) { return std::min(v, std::numeric_limits<double>::max()); }
+
 // The area dominated by `sorted` (ascending, lexicographically) within the reference
 // (r0, r1); every point lies strictly below it.
 double area(const std::vector<Point2>& sorted, double r0, double r1) {
@@ -21,7 +25,7 @@ double area(const std::vector<Point2>& sorted, double r0, double r1) {
   double best = r1;  // the lowest second coordinate so far
   for (const Point2& p : sorted) {
     if (p[1] >= best) continue;
-    total += (r0 - p[0]) * (best - p[1]);
+    total = held(total + held(held(r0 - p[0]) * held(best - p[1])));
     best = p[1];
   }
   return total;
@@ -39,7 +43,7 @@ double volume(std::vector<Point3> points, std::span<const double> r) {
     const Point2 p{points[k][0], points[k][1]};
     below.insert(std::upper_bound(below.begin(), below.end(), p), p);
     const double next = k + 1 < points.size() ? points[k + 1][2] : r[2];
-    if (next > points[k][2]) total += area(below, r[0], r[1]) * (next - points[k][2]);
+    if (next > points[k][2]) total = held(total + held(area(below, r[0], r[1]) * held(next - points[k][2])));
   }
   return total;
 }

@@ -16,7 +16,8 @@ namespace esc::evo {
 // "hypervolume by slicing objectives" idea of While et al., IEEE TEC 10(1), 2006): the
 // points sorted by it, the 2-D area of those at or below each slice times the slice's
 // depth, O(N^2). Throws std::invalid_argument for another number of objectives, a
-// non-finite reference, or a point of another length.
+// non-finite reference, or a point of another length. Every product and sum saturates at the
+// largest double, so the volume is finite even for points far below a declared reference.
 [[nodiscard]] double hypervolume(const ObjectiveRows& points, std::span<const double> reference);
 
 }  // namespace esc::evo
