@@ -14,6 +14,7 @@
 #include "runtime/store/members_export.hpp"
 #include "runtime/store/metrics_export.hpp"
 #include "runtime/store/run_directory.hpp"
+#include "runtime/store/untouched_load.hpp"
 #include "runtime/store/usage_export.hpp"
 
 namespace esc::app {
@@ -26,10 +27,8 @@ namespace fs = std::filesystem;
 // `esc replay` takes it): that condition's experiment alone, under the study's directory.
 store::StoredDirectory load(const fs::path& named, Events& events) {
   const RunLocation at = locate_run(named);
-  store::ResultsDb db = store::ResultsDb::open(at.condition.empty() ? named : at.root, true);
-  if (db.log_damage()) events.note({Note::Kind::Warning, log_damage_warning(at.root, *db.log_damage())});
-  if (at.condition.empty()) return {named, db.load()};
-  std::vector<store::StoredExperiment> all = db.load();
+  std::vector<store::StoredExperiment> all = read_stored(at, named, events);
+  if (at.condition.empty()) return {named, std::move(all)};
   std::vector<store::StoredExperiment> condition;
   for (store::StoredExperiment& e : all)
     if (e.condition && e.condition->directory == at.condition) condition.push_back(std::move(e));
@@ -66,6 +65,20 @@ RunLocation locate_run(fs::path dir) {
   if (!dir.filename().empty() && fs::exists(parent / store::kDatabaseFile, ec))
     return {parent, dir.filename().string(), true};
   return {dir, {}, false};
+}
+
+std::vector<store::StoredExperiment> read_stored(const RunLocation& at, const fs::path& named, Events& events) {
+  store::ResultsDb db = store::ResultsDb::open(at.condition.empty() ? named : at.root, true);
+  if (db.log_damage()) events.note({Note::Kind::Warning, log_damage_warning(at.root, *db.log_damage())});
+  return db.load();
+}
+
+store::StoredExperiment read_single(const fs::path& dir) { return store::ResultsDb::open(dir, true).load_single(); }
+
+store::StoredDirectory read_untouched(const fs::path& dir, Events& events) {
+  store::UntouchedRead read = store::read_untouched(dir);
+  if (read.log_damage) events.note({Note::Kind::Warning, log_damage_warning(dir, *read.log_damage)});
+  return {dir, std::move(read.experiments)};
 }
 
 std::string log_damage_warning(const std::filesystem::path& root, const store::LogScan& scan) {

@@ -28,6 +28,20 @@ struct RunLocation {
 };
 [[nodiscard]] RunLocation locate_run(std::filesystem::path dir);
 
+// Everything stored where `at` locates `named` (a run's directory; for a study's condition,
+// the whole study's), read from a snapshot of its database as `esc export` reads it, a
+// damaged log told to `events` as a Warning note (log_damage_warning). Throws
+// store::StoreError for a directory that is not a run's, or is damaged.
+[[nodiscard]] std::vector<store::StoredExperiment> read_stored(const RunLocation& at, const std::filesystem::path& named,
+                                                               Events& events);
+// The one experiment run directory `dir` holds. Throws store::StoreError saying what it
+// holds instead (a study, nothing) or what is wrong with it.
+[[nodiscard]] store::StoredExperiment read_single(const std::filesystem::path& dir);
+// Everything stored in `dir`, read from a copy of its database (store::read_untouched): not a
+// byte of the directory changes, a killed run's log included, and a read-only directory
+// reads. A damaged log is told to `events` as a Warning note (log_damage_warning).
+[[nodiscard]] store::StoredDirectory read_untouched(const std::filesystem::path& dir, Events& events);
+
 // What a reader of `root` says of its damaged write-ahead log (store::log_damage): the
 // frames SQLite dropped, that what it holds is shown without them, and how to run them again.
 [[nodiscard]] std::string log_damage_warning(const std::filesystem::path& root, const store::LogScan& scan);

@@ -12,6 +12,11 @@
 
 namespace esc::app {
 
+// A problem with a stored directory (missing, foreign, damaged, mismatched), as the store
+// reports it to whatever reads through this layer: what store_errors_typed turns into an
+// Error, and what the readers of app/results.hpp throw.
+using StoreError = store::StoreError;
+
 // What `act` returns; a store::StoreError it throws (a directory missing, damaged or
 // locked) becomes an Error of kind Results. In a job of several ranks it goes on as it is:
 // it may have reached rank 0 alone, and the program must end the whole job.

@@ -12,6 +12,8 @@
 #include "app/version.hpp"
 #include "runtime/eval/run_optimizer.hpp"
 #include "runtime/eval/settings_history.hpp"
+#include "runtime/store/run_directory.hpp"
+#include "runtime/store/seed_json.hpp"
 
 namespace esc::app {
 
@@ -109,6 +111,20 @@ evo::Members final_members(const StoredRun& stored, const eval::ExperimentSpec& 
   throw Error(ErrorKind::Results,
               fmt::format("{} ({}) keeps no front or archive beside each run's best: replay its best instead", controller,
                           c->algorithm));
+}
+
+bool genome_file_intact(const nlohmann::json& j) {
+  if (!j.contains("checksum")) return true;
+  const std::string tree = j.contains("tree") ? j["tree"].get<std::string>() : "";
+  return j["checksum"].get<std::string>() ==
+         store::genome_checksum(j.at("controller").get<std::string>(), j.at("run").get<int>(),
+                                j.at("genome").get<std::vector<double>>(), j.at("fitness").get<double>(),
+                                store::seed_from_json(j.at("evaluation_seed")), tree);
+}
+
+std::optional<std::uint64_t> genome_file_seed(const nlohmann::json& j) {
+  if (!j.contains("evaluation_seed")) return std::nullopt;
+  return store::seed_from_json(j["evaluation_seed"]);
 }
 
 }  // namespace esc::app

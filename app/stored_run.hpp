@@ -4,8 +4,12 @@
 // happened to the files since, with the settings it ran with; or an experiment of another
 // script, evaluated with the run's choice of controllers. Behaviors it froze from other
 // experiments are read from the run's dependency cache, never run.
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "app/events.hpp"
 #include "compiler/compiler.hpp"
@@ -44,5 +48,14 @@ struct FinishedRun {
 // when the run is not finished or its optimizer keeps no members, or the state is damaged.
 [[nodiscard]] evo::Members final_members(const StoredRun& stored, const eval::ExperimentSpec& spec,
                                          const std::string& controller, int run);
+
+// A genome file `esc run` wrote (CONTROLLER/run-NN.best.json), parsed as `j`: whether its
+// checksum matches its genome, fitness and seed (true for a file of an esc before checksums,
+// which has none). Throws what reading its fields throws: nlohmann::json::exception, or
+// std::invalid_argument for a seed that is not one.
+[[nodiscard]] bool genome_file_intact(const nlohmann::json& j);
+// The seed of the evaluation genome file `j` holds the genome of; nullopt for a file of an
+// esc before it was stored. Throws std::invalid_argument for a seed that is not one.
+[[nodiscard]] std::optional<std::uint64_t> genome_file_seed(const nlohmann::json& j);
 
 }  // namespace esc::app

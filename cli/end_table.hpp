@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/eval/campaign.hpp"
-#include "runtime/eval/experiment.hpp"
+#include "app/campaign_results.hpp"
 
 namespace esc::cli {
 

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "app/events.hpp"
-#include "runtime/eval/campaign.hpp"
 
 namespace esc::cli {
 

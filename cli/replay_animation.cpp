@@ -14,8 +14,8 @@
 
 #include <fmt/format.h>
 
+#include "app/output_files.hpp"
 #include "cli/load.hpp"
-#include "runtime/store/run_directory.hpp"
 
 namespace esc::cli {
 
@@ -79,7 +79,7 @@ std::vector<fs::path> write_frames(const report::TrajectoryFigure& figure, const
     report::TrajectoryFigure frame = figure;
     frame.steps = figure.steps.subspan(epoch_begin, i - epoch_begin + 1);
     frames.push_back(dir / fmt::format("frame-{:05}.svg", frames.size()));
-    store::write_atomically(frames.back(), report::trajectory_svg(frame));
+    app::write_atomically(frames.back(), report::trajectory_svg(frame));
   }
   return frames;
 }

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/output_files.hpp"
 #include "app/results.hpp"
 #include "app/store_errors.hpp"
 #include "app/stored_run.hpp"
@@ -24,11 +25,8 @@
 #include "cli/terminal_events.hpp"
 #include "compiler/names.hpp"
 #include "runtime/eval/campaign.hpp"
-#include "runtime/eval/settings_history.hpp"
 #include "runtime/report/trajectory_csv.hpp"
 #include "runtime/report/trajectory_svg.hpp"
-#include "runtime/store/run_directory.hpp"
-#include "runtime/store/seed_json.hpp"
 
 namespace esc::cli {
 
@@ -184,16 +182,12 @@ std::optional<Subject> genome_subject(const fs::path& file, const ReplayOptions&
     s.run = j.at("run").get<int>() - 1;
     s.genome = j.at("genome").get<std::vector<double>>();
     s.fitness = j.at("fitness").get<double>();
-    if (j.contains("checksum")) {   // files of esc before checksums have none
-      const std::string tree = j.contains("tree") ? j["tree"].get<std::string>() : "";
-      if (j["checksum"].get<std::string>() != store::genome_checksum(s.controller, s.run + 1, s.genome, *s.fitness,
-                                                                     store::seed_from_json(j.at("evaluation_seed")), tree)) {
-        complain("esc: error: {} is damaged: its genome, fitness or seed does not match its checksum\n", file.string());
-        return std::nullopt;
-      }
+    if (!app::genome_file_intact(j)) {
+      complain("esc: error: {} is damaged: its genome, fitness or seed does not match its checksum\n", file.string());
+      return std::nullopt;
     }
     if (o.seed) s.seed = *o.seed;
-    else if (j.contains("evaluation_seed")) s.seed = store::seed_from_json(j["evaluation_seed"]);
+    else if (const std::optional<std::uint64_t> seed = app::genome_file_seed(j)) s.seed = *seed;
     else {
       complain("esc: error: {} does not say its evaluation's seed (written by an older esc): give --seed\n",
                file.string());
@@ -303,8 +297,8 @@ int replay_one(const eval::ExperimentSpec& spec, const Subject& s, const ReplayO
   figure.robot_radius_m = spec.robot.body_radius_m;
   figure.choices = controller->choice_names();
   figure.steps = drawn;
-  store::write_atomically(out / (stem + ".svg"), report::trajectory_svg(figure));
-  store::write_atomically(out / (stem + ".csv"), report::trajectory_csv(drawn, figure.choices, spec.robot.control_step_s));
+  app::write_atomically(out / (stem + ".svg"), report::trajectory_svg(figure));
+  app::write_atomically(out / (stem + ".csv"), report::trajectory_csv(drawn, figure.choices, spec.robot.control_step_s));
   // A member whose evaluation is not known (a state saved before origins were kept) is
   // replayed with its run's best's seed: its stored value is printed beside.
   const std::string stored_member =
@@ -336,14 +330,12 @@ app::RunLocation locate(const fs::path& dir) {
 
 // The stored experiment to replay: the run's one experiment, or the study condition
 // `at.condition`. Nullopt after printing an error (a study's directory names no condition).
-std::optional<store::StoredExperiment> load_stored(const app::RunLocation& at) {
-  store::ResultsDb db = store::ResultsDb::open(at.root, true);
-  if (db.log_damage()) complain("esc: {}\n", app::log_damage_warning(at.root, *db.log_damage()));
-  std::vector<store::StoredExperiment> all = db.load();
+std::optional<store::StoredExperiment> load_stored(const app::RunLocation& at, app::Events& events) {
+  std::vector<store::StoredExperiment> all = app::read_stored(at, at.root, events);
   const bool study = !all.empty() && all.front().condition;
   if (!study && at.condition.empty()) {
     if (all.size() == 1) return std::move(all.front());
-    return store::ResultsDb::open(at.root, true).load_single();   // throws, saying what it holds instead
+    return app::read_single(at.root);   // throws, saying what it holds instead
   }
   std::vector<std::string> directories;
   for (store::StoredExperiment& e : all) {
@@ -394,9 +386,10 @@ int replay_command(const ReplayOptions& o) {
     complain("esc: error: --experiment names an experiment of --script FILE; give the script too\n");
     return kExitUsage;
   }
+  TerminalEvents events;
   std::optional<store::StoredExperiment> stored;
   if (at.found || !genome_file) {
-    stored = at.found ? load_stored(at) : store::ResultsDb::open(dir, true).load_single();
+    stored = at.found ? load_stored(at, events) : app::read_single(dir);
     if (!stored) return kExitUsage;
   }
 
@@ -412,7 +405,6 @@ int replay_command(const ReplayOptions& o) {
 
   // The experiment: the stored one, compiled from the sources the run stored (whatever has
   // happened to the script since), with its settings; or one of another script.
-  TerminalEvents events;
   const app::StoredRun run{stored ? &*stored : nullptr, at.root, dir};
   const eval::ExperimentSpec experiment =
       o.script.empty() ? app::experiment_of_run(run, default_compile_options(), events)

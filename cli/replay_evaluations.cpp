@@ -8,11 +8,11 @@
 
 #include <fmt/format.h>
 
+#include "app/output_files.hpp"
 #include "app/run_evaluations.hpp"
 #include "app/stored_run.hpp"
 #include "cli/load.hpp"
 #include "runtime/report/evaluation_map.hpp"
-#include "runtime/store/run_directory.hpp"
 
 namespace esc::cli {
 
@@ -71,7 +71,7 @@ int replay_evaluations(const app::StoredRun& stored, const eval::ExperimentSpec&
   std::error_code ec;
   fs::create_directories(out, ec);
   const std::string stem = fmt::format("evaluations-{}-run-{:02}", controller, run + 1);
-  store::write_atomically(out / (stem + ".csv"), evaluations_csv(e));
+  app::write_atomically(out / (stem + ".csv"), evaluations_csv(e));
   std::string written = stem + ".csv";
   if (descriptors >= 2) {
     std::vector<double> x(e.size()), y(e.size());
@@ -91,7 +91,7 @@ int replay_evaluations(const app::StoredRun& stored, const eval::ExperimentSpec&
     map.x = x;
     map.y = y;
     map.arena = o.over_arena ? &ran.arena : nullptr;
-    store::write_atomically(out / (stem + ".svg"), report::evaluation_map_svg(map));
+    app::write_atomically(out / (stem + ".svg"), report::evaluation_map_svg(map));
     written += ", .svg";
   }
   say("esc: {} made again, identical to the stored run in every generation: {} evaluations in {}/{}\n", who,

@@ -3,10 +3,10 @@
 
 #include <fmt/format.h>
 
+#include "app/output_files.hpp"
 #include "app/results.hpp"
 #include "cli/commands.hpp"
 #include "cli/terminal_events.hpp"
-#include "runtime/store/run_directory.hpp"
 
 namespace esc::cli {
 
@@ -20,7 +20,7 @@ int export_command(const ExportOptions& o) {
   if (o.out.empty()) {
     std::cout << text << std::flush;
   } else {
-    store::write_atomically(o.out, text);
+    app::write_atomically(o.out, text);
     fmt::print(stderr, "esc: wrote {}\n", o.out.string());
   }
   return kExitOk;

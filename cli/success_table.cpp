@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "app/campaign_results.hpp"
 #include "cli/table_text.hpp"
-#include "runtime/eval/success.hpp"
 
 namespace esc::cli {
 
@@ -32,7 +32,7 @@ void print_success(const eval::CampaignResult& result) {
   fmt::print("\nsuccess when {}: runs that succeeded (median of their evaluations up to the first success)\n",
              result.success);
   for (const eval::ControllerResult& c : result.controllers)
-    fmt::print("{:<12} {}\n", c.name, count_text(eval::count_successes(c.runs)));
+    fmt::print("{:<12} {}\n", c.name, count_text(app::count_successes(c.runs)));
 }
 
 void print_study_success(const std::vector<ConditionResult>& conditions, const std::vector<std::string>& controllers) {
@@ -52,7 +52,7 @@ void print_study_success(const std::vector<ConditionResult>& conditions, const s
     std::string line = fmt::format("{:<{}}", c.name, name_width);
     for (const std::string& k : controllers) {
       const eval::ControllerResult* r = c.result.success.empty() ? nullptr : find(c.result, k);
-      line += fmt::format("  {:>{}}", r == nullptr ? "-" : count_text(eval::count_successes(r->runs)), kCell);
+      line += fmt::format("  {:>{}}", r == nullptr ? "-" : count_text(app::count_successes(r->runs)), kCell);
     }
     fmt::print("{}\n", line);
   }

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "app/campaign_results.hpp"
 #include "cli/end_table.hpp"
 #include "cli/table_text.hpp"
-#include "runtime/eval/campaign.hpp"
 #include "runtime/report/success_comparisons.hpp"
 
 namespace esc::cli {

@@ -3,7 +3,7 @@
 // controllers: per controller, the fitness its genomes had in the origin experiment, their
 // fitness here and the change in percent (means over runs), and for `start from` how many
 // runs regained the origin's level and when (runtime/report/generalization.hpp).
-#include "runtime/eval/campaign.hpp"
+#include "app/campaign_results.hpp"
 
 namespace esc::cli {
 

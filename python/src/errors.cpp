@@ -1,11 +1,11 @@
-// Problems with a run directory (runtime/store's StoreError: missing, foreign, damaged) and
+// Problems with a run directory (app::StoreError: missing, foreign, damaged) and
 // the module's own (errors.hpp) are raised as esc.Error with their message, the one `esc`
 // prints after "esc: error:". The class lives in the pure-Python package (esc/errors.py),
 // beside its subclasses; it is looked up when first raised, the package being imported by then.
 #include "app/error.hpp"
+#include "app/store_errors.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/errors.hpp"
-#include "runtime/store/results_db.hpp"
 
 namespace esc::python {
 
@@ -49,7 +49,7 @@ void bind_errors(py::module_& /*m*/) {
       if (p) std::rethrow_exception(p);
     } catch (const app::Error& e) {
       raise_app_error(e);
-    } catch (const store::StoreError& e) {
+    } catch (const app::StoreError& e) {
       raise_esc_error(e.what());
     } catch (const Error& e) {
       raise_esc_error(e.what());

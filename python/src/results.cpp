@@ -1,4 +1,4 @@
-// A run directory read once, from a copy of its database (store::load_untouched): reading
+// A run directory read once, from a copy of its database (app::read_untouched): reading
 // never changes a byte of it, a killed run's log included, and works on a read-only
 // directory. Its tables are the CSV text `esc export DIR --table NAME --format csv` writes,
 // made by the same functions; the package parses them with pandas.
@@ -11,13 +11,12 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "app/campaign_results.hpp"
 #include "app/import_path.hpp"
 #include "app/results.hpp"
 #include "app/stored_run.hpp"
 #include "compiler/names.hpp"
 #include "python/src/bindings.hpp"
-#include "runtime/eval/campaign.hpp"
-#include "runtime/store/untouched_load.hpp"
 
 namespace esc::python {
 
@@ -25,15 +24,21 @@ namespace py = pybind11;
 
 namespace {
 
+// A damaged log's warning as `esc export` says it, to the logger the esc program's other
+// lines go to.
+class LoggedWarnings final : public app::Events {
+ public:
+  void note(const app::Note& note) override {
+    if (note.kind == app::Note::Kind::Warning)
+      py::module_::import("logging").attr("getLogger")("esc").attr("warning")(note.text);
+  }
+};
+
 class StoredRun {
  public:
   explicit StoredRun(const std::filesystem::path& dir) {
-    store::UntouchedRead read = store::read_untouched(dir);
-    dir_ = {dir, std::move(read.experiments)};
-    // As `esc export` says it, to the logger the esc program's other lines go to.
-    if (read.log_damage)
-      py::module_::import("logging").attr("getLogger")("esc").attr("warning")(
-          app::log_damage_warning(dir, *read.log_damage));
+    LoggedWarnings warnings;
+    dir_ = app::read_untouched(dir, warnings);
   }
 
   // std::invalid_argument (a ValueError) for an unknown table, naming the nearest.

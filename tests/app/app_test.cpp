@@ -1,8 +1,10 @@
 // The application layer as a library sees it: a run and its resume return their outcome and
 // tell their events (never print), refusals are typed errors, and an experiment whose
-// dependencies were never prepared does not run.
+// dependencies were never prepared does not run; the clients read stored runs through it.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,8 +16,11 @@
 #include "app/compile.hpp"
 #include "app/error.hpp"
 #include "app/import_path.hpp"
+#include "app/results.hpp"
 #include "app/run.hpp"
 #include "app/settings.hpp"
+#include "app/store_errors.hpp"
+#include "app/stored_run.hpp"
 #include "runtime/store/run_directory.hpp"
 #include "runtime/eval/campaign.hpp"
 
@@ -211,6 +216,47 @@ TEST(App, RefusalsAreTypedErrorsWithTheirMessages) {
   EXPECT_FALSE(fs::exists(out));   // nothing written by any refusal
   fs::remove(script);
   EXPECT_TRUE(events.notes.empty());
+}
+
+// What the esc program and the Python module read through app/: the same experiment by each
+// reader, a genome file's checks, and the store's error for a directory that is not a run's.
+TEST(App, StoredRunsAreReadThroughTheApplicationLayer) {
+  const fs::path out = fresh_dir("read");
+  Recorded events;
+  (void)run(small_run("basic", out), options(), events);
+  Recorded reading;
+  const store::StoredExperiment single = read_single(out);
+  const std::vector<store::StoredExperiment> stored = read_stored(locate_run(out), out, reading);
+  const store::StoredDirectory untouched = read_untouched(out, reading);
+  EXPECT_TRUE(reading.notes.empty());   // an undamaged log: nothing to warn of
+  ASSERT_EQ(stored.size(), 1U);
+  ASSERT_EQ(untouched.experiments.size(), 1U);
+  EXPECT_EQ(untouched.path, out);
+  for (const store::StoredExperiment* e : {&single, &stored.front(), &untouched.experiments.front()}) {
+    EXPECT_EQ(e->name, "basic");
+    ASSERT_EQ(e->controllers.size(), 2U);
+    EXPECT_EQ(e->controllers.front().finished.size(), 1U);
+  }
+
+  const eval::RunResult& best = single.controllers.front().finished.front();
+  nlohmann::json genome = nlohmann::json::parse(std::ifstream(out / "CC" / "run-01.best.json"));
+  EXPECT_TRUE(genome_file_intact(genome));
+  EXPECT_EQ(genome_file_seed(genome),
+            eval::evaluation_seed(best.seed, best.best_generation, static_cast<std::size_t>(best.best_index)));
+  genome["fitness"] = genome["fitness"].get<double>() + 1.0;
+  EXPECT_FALSE(genome_file_intact(genome));
+  genome.erase("checksum");   // a file of an esc before checksums
+  genome.erase("evaluation_seed");
+  EXPECT_TRUE(genome_file_intact(genome));
+  EXPECT_EQ(genome_file_seed(genome), std::nullopt);
+
+  try {
+    (void)read_single(out / "never");
+    ADD_FAILURE() << "read a directory that does not exist";
+  } catch (const StoreError& e) {
+    EXPECT_EQ(std::string(e.what()), "`" + (out / "never").string() + "` is not a directory");
+  }
+  fs::remove_all(out);
 }
 
 }  // namespace

@@ -1,0 +1,147 @@
+#include "runtime/store/trace_rows.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "runtime/store/results_db.hpp"
+
+namespace esc::store {
+
+namespace {
+
+// A replay row: the kTraceColumns fixed columns, then the accumulator level, the position
+// of each of the arena's zones in this epoch (x, y), the light sensors, and the rangefinders
+// and goal radars the robot declares. Traces stored before these columns existed have
+// exactly kTraceColumns per row, or no light, range or radar columns: the stored column
+// names say which, so that a trace is read back as it was written.
+struct TraceLayout {
+  bool extended = true;   // the accumulator and zones follow the fixed columns
+  std::size_t zones = 0;
+  bool lights = true;
+  std::size_t ranges = 0;
+  std::size_t radars = 0;
+
+  [[nodiscard]] std::size_t width() const noexcept {
+    if (!extended) return kTraceColumns;
+    return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0) + ranges +
+           radars;
+  }
+};
+
+TraceLayout layout_of(std::span<const eval::TraceStep> trace) {
+  if (trace.empty()) return {};
+  const eval::TraceStep& t = trace.front();
+  return {true, t.zone_count, true, t.range_count, t.radar_count};
+}
+
+std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_view prefix) {
+  return static_cast<std::size_t>(std::count_if(columns.begin(), columns.end(), [&](const std::string& c) {
+    return c.size() > prefix.size() && c.starts_with(prefix) &&
+           std::all_of(c.begin() + static_cast<std::ptrdiff_t>(prefix.size()), c.end(),
+                       [](char ch) { return ch >= '0' && ch <= '9'; });
+  }));
+}
+
+TraceLayout layout_of(const std::vector<std::string>& columns) {
+  TraceLayout l;
+  l.extended = columns.size() > kTraceColumns;
+  l.zones = static_cast<std::size_t>(std::count_if(columns.begin(), columns.end(), [](const std::string& c) {
+    return c.starts_with("zone") && c.ends_with("_x");
+  }));
+  l.lights = count_prefixed(columns, "light") != 0;
+  l.ranges = count_prefixed(columns, "range");
+  l.radars = count_prefixed(columns, "radar");
+  return l;
+}
+
+}  // namespace
+
+std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
+  const TraceLayout layout = layout_of(trace);
+  std::vector<double> v;
+  v.reserve(trace.size() * layout.width());
+  for (const auto& t : trace) {
+    v.push_back(t.epoch);
+    v.push_back(t.step);
+    v.push_back(t.pose.x_m);
+    v.push_back(t.pose.y_m);
+    v.push_back(t.pose.heading_rad);
+    v.insert(v.end(), t.ir.begin(), t.ir.end());
+    v.push_back(t.left_command);
+    v.push_back(t.right_command);
+    v.push_back(t.left_speed_mps);
+    v.push_back(t.right_speed_mps);
+    v.push_back(t.action);
+    v.push_back(t.fitness);
+    v.push_back(t.collided ? 1.0 : 0.0);
+    v.push_back(t.energy);
+    for (std::size_t z = 0; z < layout.zones; ++z) {
+      v.push_back(t.zones[z].x);
+      v.push_back(t.zones[z].y);
+    }
+    v.insert(v.end(), t.light.begin(), t.light.end());
+    v.insert(v.end(), t.range.begin(), t.range.begin() + static_cast<std::ptrdiff_t>(layout.ranges));
+    v.insert(v.end(), t.radar.begin(), t.radar.begin() + static_cast<std::ptrdiff_t>(layout.radars));
+  }
+  return v;
+}
+
+std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const std::vector<std::string>& columns) {
+  const std::size_t width = columns.size();
+  const TraceLayout layout = layout_of(columns);
+  if (width < kTraceColumns || layout.width() != width || layout.zones > sim::kMaxZones ||
+      layout.ranges > static_cast<std::size_t>(sim::kMaxRangefinders) ||
+      layout.radars > static_cast<std::size_t>(sim::kMaxRadars))
+    throw StoreError(fmt::format("the database is damaged: a replay trace has {} columns", width));
+  if (v.size() % width != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
+  std::vector<eval::TraceStep> out(v.size() / width);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double* r = &v[i * width];
+    eval::TraceStep& t = out[i];
+    t.epoch = static_cast<int>(r[0]);
+    t.step = static_cast<int>(r[1]);
+    t.pose = {r[2], r[3], r[4]};
+    for (std::size_t k = 0; k < t.ir.size(); ++k) t.ir[k] = r[5 + k];
+    t.left_command = r[13];
+    t.right_command = r[14];
+    t.left_speed_mps = r[15];
+    t.right_speed_mps = r[16];
+    t.action = static_cast<int>(r[17]);
+    t.fitness = r[18];
+    t.collided = r[19] != 0.0;
+    if (!layout.extended) continue;
+    const double* c = r + kTraceColumns;
+    t.energy = *c++;
+    t.zone_count = layout.zones;
+    for (std::size_t z = 0; z < layout.zones; ++z, c += 2) t.zones[z] = {c[0], c[1]};
+    if (layout.lights)
+      for (double& l : t.light) l = *c++;
+    t.range_count = layout.ranges;
+    for (std::size_t k = 0; k < layout.ranges; ++k) t.range[k] = *c++;
+    t.radar_count = layout.radars;
+    for (std::size_t k = 0; k < layout.radars; ++k) t.radar[k] = *c++;
+  }
+  return out;
+}
+
+std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars) {
+  std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
+  for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
+  for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", kRunningFitness,
+                        "collided"})
+    c.emplace_back(n);
+  c.emplace_back("energy");
+  for (std::size_t z = 0; z < zones; ++z) {
+    c.push_back(fmt::format("zone{}_x", z));
+    c.push_back(fmt::format("zone{}_y", z));
+  }
+  for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
+  for (std::size_t i = 0; i < ranges; ++i) c.push_back(fmt::format("range{}", i));
+  for (std::size_t i = 0; i < radars; ++i) c.push_back(fmt::format("radar{}", i));
+  return c;
+}
+
+}  // namespace esc::store
