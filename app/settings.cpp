@@ -89,10 +89,8 @@ void select_controllers(const std::vector<std::string>& names, eval::ExperimentS
 
 void check_memory(const eval::ExperimentSpec& spec) {
   const std::string problem = eval::memory_problem(spec, true, eval::memory_limit());
-  if (!problem.empty())
-    throw Error(ErrorKind::Memory, problem,
-                "lower what the algorithm holds (the ES's lambda, GP's population and max_size, MAP-Elites' bins or "
-                "cells), the runs or epochs x steps, or run on a machine with more memory");
+  // One line: the message names the setting to lower.
+  if (!problem.empty()) throw Error(ErrorKind::Memory, problem);
 }
 
 nlohmann::ordered_json to_json(const Overrides& o) {

@@ -67,7 +67,7 @@ void BM_QdInsert(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   state.counters["filled"] = static_cast<double>(a.filled());
   state.counters["held_MB"] = a.memory_bytes() / 1e6;
-  state.counters["estimate_MB"] = archive_memory_bytes(kCells, kGenome, 2) / 1e6;
+  state.counters["estimate_MB"] = archive_memory_bytes(kCells, kGenome, 2, kCells, cvt) / 1e6;
   state.SetLabel(cvt ? "cvt 10,000" : "grid 100x100");
 }
 BENCHMARK(BM_QdInsert)->Arg(0)->Arg(1);

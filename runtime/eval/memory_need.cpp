@@ -16,13 +16,25 @@ namespace esc::eval {
 
 namespace {
 
-// One generation of one run of `c`: its optimizer and the pooled results (fitness, steps)
-// with the fitness handed to the run. In doubles: sizes multiply beyond any integer type.
-double generation_bytes(const ExperimentSpec& spec, const control::ControllerSpec& c) {
-  const double results = static_cast<double>(spec.evaluations_per_generation(c)) * 3.0 * sizeof(double);
+// One run of `c` at the height of a generation: its optimizer's peak, and per candidate its
+// row of results, its outcome (objectives and descriptors) and its fitness, twice.
+evo::MemoryPeak run_peak(const ExperimentSpec& spec, const control::ControllerSpec& c) {
   const Evolution e = spec.evolution_of(c);
-  if (spec.evaluates_only() || !e.settings.has_value()) return results;
-  return e.algorithm->memory_bytes(e.settings, spec.problem_of(c)) + results;
+  evo::MemoryPeak peak;
+  if (!spec.evaluates_only() && e.settings.has_value() && e.algorithm != nullptr && e.algorithm->memory != nullptr) {
+    peak = e.algorithm->memory(e.settings, spec.problem_of(c), spec.generations_for(c));
+    peak.what += fmt::format(" for `{}`", c.name);
+  } else {
+    peak = {0.0, static_cast<double>(spec.evaluations_per_generation(c)), fmt::format("the evaluations of `{}`", c.name),
+            "runs"};
+  }
+  const double objectives = 1.0 + static_cast<double>(spec.further.size());
+  const double descriptors = static_cast<double>(spec.descriptors.size());
+  const double width = 3.0 + static_cast<double>(c.choice_names().size()) + objectives + descriptors;
+  const double candidate = (width + 2.0) * sizeof(double) + sizeof(evo::Outcome) +
+                           evo::heap_bytes(objectives * sizeof(double)) + evo::heap_bytes(descriptors * sizeof(double));
+  peak.bytes += peak.candidates * candidate;
+  return peak;
 }
 
 // A number from a file such as /sys/fs/cgroup/memory.max ("max" when unlimited).
@@ -34,48 +46,45 @@ double number_in(const char* path) {
 
 }  // namespace
 
-double memory_needed_bytes(const ExperimentSpec& spec, bool trace_best) {
-  double largest = 0.0;
+MemoryNeed memory_need(const ExperimentSpec& spec, bool trace_best) {
+  evo::MemoryPeak largest;
   double statistics = 0.0;
   for (const control::ControllerSpec& c : spec.controllers) {
-    largest = std::max(largest, generation_bytes(spec, c));
+    if (evo::MemoryPeak p = run_peak(spec, c); p.bytes > largest.bytes || largest.what.empty()) largest = std::move(p);
     statistics += static_cast<double>(spec.runs) * spec.generations_for(c) * sizeof(GenerationStats);
   }
   const double trace = trace_best ? static_cast<double>(spec.epochs) * spec.steps * sizeof(TraceStep) : 0.0;
-  return largest + statistics + trace;
+  MemoryNeed need{largest.bytes + statistics + trace, fmt::format("{}: {}", largest.what, bytes_text(largest.bytes)),
+                  largest.setting};
+  if (statistics > largest.bytes && statistics >= trace)
+    need = {need.bytes, fmt::format("every run's statistics, {} runs: {}", spec.runs, bytes_text(statistics)), "runs"};
+  else if (trace > largest.bytes && trace > statistics)
+    need = {need.bytes, fmt::format("the best run's replay of {} epochs x {} steps: {}", spec.epochs, spec.steps,
+                                    bytes_text(trace)),
+            "steps"};
+  return need;
 }
 
 MemoryLimit memory_limit() {
   MemoryLimit m{static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE)),
                 "physical memory"};
   rlimit as{};
-  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY && static_cast<double>(as.rlim_cur) < m.bytes)
-    m = {static_cast<double>(as.rlim_cur), "the address-space limit (ulimit -v)"};
+  // The address space counts what esc maps already (its libraries, its heap so far): about
+  // 100 MB that the estimate, which counts what the campaign allocates, leaves out.
+  const double mapped = number_in("/proc/self/statm") * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY &&
+      static_cast<double>(as.rlim_cur) - mapped < m.bytes)
+    m = {static_cast<double>(as.rlim_cur) - mapped, "the address-space limit (ulimit -v), less what esc maps already,"};
   for (const char* cgroup : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"})
     if (const double v = number_in(cgroup); v > 0.0 && v < m.bytes) m = {v, "the container's memory limit (cgroup)"};
   return m;
 }
 
 std::string memory_problem(const ExperimentSpec& spec, bool trace_best, const MemoryLimit& limit) {
-  const double need = memory_needed_bytes(spec, trace_best);
-  if (need <= limit.bytes) return {};
-  // What takes the most: the generation of one run of the hungriest controller.
-  const control::ControllerSpec* hungriest = nullptr;
-  double most = -1.0;
-  for (const control::ControllerSpec& c : spec.controllers)
-    if (const double b = generation_bytes(spec, c); b > most) {
-      most = b;
-      hungriest = &c;
-    }
-  std::string what;
-  if (hungriest != nullptr) {
-    const Evolution e = spec.evolution_of(*hungriest);
-    const std::string algorithm = e.algorithm != nullptr ? std::string(e.algorithm->what) : "its optimizer";
-    what = fmt::format("{} of `{}`: {} per run; ", algorithm, hungriest->name, bytes_text(most));
-  }
-  return fmt::format("experiment `{}` needs at least {} of memory at once ({}{} run{}, {} epochs x {} steps); {} is {}",
-                     spec.name, bytes_text(need), what, spec.runs, spec.runs == 1 ? "" : "s", spec.epochs, spec.steps,
-                     limit.what, bytes_text(limit.bytes));
+  const MemoryNeed need = memory_need(spec, trace_best);
+  if (need.bytes <= limit.bytes) return {};
+  return fmt::format("experiment `{}` needs about {} of memory at once ({}); {} is {}: lower `{}`", spec.name,
+                     bytes_text(need.bytes), need.what, limit.what, bytes_text(limit.bytes), need.setting);
 }
 
 std::string bytes_text(double bytes) {

@@ -11,12 +11,19 @@
 
 namespace esc::eval {
 
-// Bytes the campaign holds at once, at least: the largest generation of one run of any
-// compared controller (parents, offspring and their step sizes, or two generations of
-// trees at max_size; their results), every run's per-generation statistics, and the
-// replayed best evaluation's steps when `trace_best`. An estimate from below (allocator
-// overhead and the simulators are left out), so a refusal is never wrong.
-[[nodiscard]] double memory_needed_bytes(const ExperimentSpec& spec, bool trace_best);
+// What the campaign holds at its peak: one run of the compared controller that needs most
+// at the height of its generation (its algorithm's own count, evo::MemoryPeak: genomes,
+// sorting, archives, restarts' larger populations; the generation's results and outcomes),
+// every run's per-generation statistics, and the replayed best evaluation's steps when
+// `trace_best`. Runs advance together only while their generations are small, so one run
+// at a time is what a large size holds. The process's own (the binary, the simulators, the
+// threads' stacks) is left out: a few tens of MB.
+struct MemoryNeed {
+  double bytes = 0.0;
+  std::string what;      // the largest part: "NSGA-II's ... for `CC`", "every run's statistics"
+  std::string setting;   // the `--set` key that sizes it
+};
+[[nodiscard]] MemoryNeed memory_need(const ExperimentSpec& spec, bool trace_best);
 
 struct MemoryLimit {
   double bytes = 0.0;
@@ -26,8 +33,10 @@ struct MemoryLimit {
 // cgroup's memory limit (containers), where set.
 [[nodiscard]] MemoryLimit memory_limit();
 
-// "... needs about 1.6 TB at once; physical memory is 125.8 GB" when `spec` cannot fit
-// under `limit`; empty when it can.
+// When `spec` cannot fit under `limit`, one line saying what it needs, what takes most, what
+// the limit is and the setting to lower: "experiment `x` needs about 23.1 GB of memory at
+// once (NSGA-II's ... for `CC`: 23.0 GB); physical memory is 16.4 GB: lower
+// `nsga2.population`". Empty when it fits.
 [[nodiscard]] std::string memory_problem(const ExperimentSpec& spec, bool trace_best, const MemoryLimit& limit);
 
 // "1.6 TB", "340 MB".

@@ -33,7 +33,7 @@ StateBytes save_with_measured(std::string_view tag, const StateBytes& core, std:
   StateWriter w;
   w.put(std::string(tag));
   w.put(kVersion);
-  w.put(std::string(core.begin(), core.end()));
+  w.put(std::span<const std::uint8_t>(core));
   put_measured(w, measured);
   return std::move(w).take();
 }

@@ -41,31 +41,44 @@ template <class Settings, class R, R (*F)(const Settings&, const Problem&)>
 R on(const std::any& settings, const Problem& problem) {
   return F(std::any_cast<const Settings&>(settings), problem);
 }
+// A memory peak that does not depend on how long the run is.
+template <class Settings, MemoryPeak (*F)(const Settings&, std::size_t)>
+MemoryPeak peak_of(const std::any& settings, const Problem& problem, int /*generations*/) {
+  return F(std::any_cast<const Settings&>(settings), problem.genome_size);
+}
+template <class Settings, MemoryPeak (*F)(const Settings&, const Problem&)>
+MemoryPeak peak_on(const std::any& settings, const Problem& problem, int /*generations*/) {
+  return F(std::any_cast<const Settings&>(settings), problem);
+}
+template <class Settings, MemoryPeak (*F)(const Settings&, const Problem&, int)>
+MemoryPeak peak_over(const std::any& settings, const Problem& problem, int generations) {
+  return F(std::any_cast<const Settings&>(settings), problem, generations);
+}
 
 }  // namespace
 
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> table = {
       {"es", 1, true, false, &make<EsSettings, &make_es>, &of<EsSettings, std::size_t, &es_population>,
-       &of<EsSettings, double, &es_memory_bytes>, "the ES"},
+       &peak_of<EsSettings, &es_memory_peak>, "the ES"},
       {"gp", 1, false, true, &make<gp::GpSettings, &gp::make_gp>,
-       &of<gp::GpSettings, std::size_t, &gp::gp_population>, &of<gp::GpSettings, double, &gp::gp_memory_bytes>, "GP"},
+       &of<gp::GpSettings, std::size_t, &gp::gp_population>, &peak_of<gp::GpSettings, &gp::gp_memory_peak>, "GP"},
       {"cmaes", 1, true, false, &make<CmaesSettings, &make_cmaes>,
-       &of<CmaesSettings, std::size_t, &cmaes_population>, &of<CmaesSettings, double, &cmaes_memory_bytes>, "CMA-ES",
+       &of<CmaesSettings, std::size_t, &cmaes_population>, &peak_of<CmaesSettings, &cmaes_memory_peak>, "CMA-ES",
        &cmaes_options, &defaults<CmaesSettings>, &of<CmaesSettings, std::string, &cmaes_problem>},
       {"nsga2", 1, true, true, &make<Nsga2Settings, &make_nsga2>, &on<Nsga2Settings, std::size_t, &nsga2_population>,
-       &on<Nsga2Settings, double, &nsga2_run_memory_bytes>, "NSGA-II", &nsga2_options, &defaults<Nsga2Settings>,
+       &peak_on<Nsga2Settings, &nsga2_memory_peak>, "NSGA-II", &nsga2_options, &defaults<Nsga2Settings>,
        &on<Nsga2Settings, std::string, &nsga2_problem>},
       {"map_elites", 1, true, true, &make<MapElitesRunSettings, &make_map_elites>,
        &on<MapElitesRunSettings, std::size_t, &map_elites_population>,
-       &on<MapElitesRunSettings, double, &map_elites_run_memory_bytes>, "MAP-Elites", &map_elites_options,
+       &peak_over<MapElitesRunSettings, &map_elites_memory_peak>, "MAP-Elites", &map_elites_options,
        &defaults<MapElitesRunSettings>, &on<MapElitesRunSettings, std::string, &map_elites_problem>},
       {"cvt_map_elites", 1, true, true, &make<MapElitesRunSettings, &make_map_elites>,
        &on<MapElitesRunSettings, std::size_t, &map_elites_population>,
-       &on<MapElitesRunSettings, double, &map_elites_run_memory_bytes>, "CVT-MAP-Elites", &cvt_map_elites_options,
+       &peak_over<MapElitesRunSettings, &map_elites_memory_peak>, "CVT-MAP-Elites", &cvt_map_elites_options,
        &cvt_defaults, &on<MapElitesRunSettings, std::string, &map_elites_problem>},
       {"novelty", 1, true, true, &make<NoveltyRunSettings, &make_novelty>,
-       &on<NoveltyRunSettings, std::size_t, &novelty_population>, &on<NoveltyRunSettings, double, &novelty_memory_bytes>,
+       &on<NoveltyRunSettings, std::size_t, &novelty_population>, &peak_on<NoveltyRunSettings, &novelty_memory_peak>,
        "novelty search", &novelty_options, &defaults<NoveltyRunSettings>,
        &on<NoveltyRunSettings, std::string, &novelty_problem>},
   };

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "runtime/evo/algorithm_options.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 
 namespace esc::evo {
@@ -27,8 +28,9 @@ struct Algorithm {
   // what the campaign sizes its rounds by. These three read only the problem's sizes and
   // declared ranges, never its seed or start.
   std::size_t (*population)(const std::any& settings, const Problem& problem) = nullptr;
-  // Bytes one run's optimizer holds at once, at least (the campaign's memory check).
-  double (*memory_bytes)(const std::any& settings, const Problem& problem) = nullptr;
+  // What one run of `generations` holds at its peak (memory_peak.hpp): what the campaign's
+  // memory check counts for it, and names when it cannot fit.
+  MemoryPeak (*memory)(const std::any& settings, const Problem& problem, int generations) = nullptr;
   // Its options as scripts write them, its default settings, and why settings cannot run on
   // `problem` ("" when they can: an archive's cells need declared descriptors, ...). Null
   // for the paper's ES and GP, whose options the compiler keeps in tables of their own

@@ -36,6 +36,12 @@ class StateWriter {
     put(static_cast<std::uint64_t>(s.size()));
     bytes_.insert(bytes_.end(), s.begin(), s.end());
   }
+  // Another state inside this one, as put(std::string) writes it, without a copy of it as a
+  // string: a population's state is the largest thing a run saves.
+  void put(std::span<const std::uint8_t> state) {
+    put(static_cast<std::uint64_t>(state.size()));
+    bytes_.insert(bytes_.end(), state.begin(), state.end());
+  }
   [[nodiscard]] StateBytes take() && { return std::move(bytes_); }
 
  private:

@@ -1,6 +1,7 @@
 // Exit statuses exactly as the README states, one test per kind of failure: 0 success, 1 bad
 // input (script, file, setting value, impossible parameter), 2 bad command line (unknown
 // command or option, a malformed option value); and seeds that come back exactly.
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -48,8 +49,10 @@ TEST(ExitCodes, OneForAnImpossibleSizeBeforeAnythingIsMade) {
   const fs::path out = scratch("exit-lambda");
   const Outcome o = esc("run " + tiny() + " --set lambda=1000000000 --out " + out.string());
   EXPECT_EQ(o.status, 1) << o.output;
-  EXPECT_NE(o.output.find("needs at least"), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find("of memory at once"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("needs about"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("of memory at once (the ES's 1000000000 offspring of "), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find(": lower `lambda`\n"), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line:\n" << o.output;
   EXPECT_FALSE(fs::exists(out)) << "refused before the run directory is made";
 }
 

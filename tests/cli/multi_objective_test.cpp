@@ -61,18 +61,20 @@ TEST(MultiObjective, MapElitesStoresItsArchiveMetricsEveryGeneration) {
 
 TEST(MultiObjective, AnArchiveLargerThanMemoryIsRefusedBeforeTheRun) {
   const fs::path out = scratch("map-elites-huge");
-  // 5,000 x 5,000 cells of 18 weights, about 8 GB, under an address-space limit of 4 GB that
-  // esc inherits (so the test does not depend on the machine's memory).
+  // 10,000 x 10,000 cells, about 6.5 GB of slots before any elite, under an address-space
+  // limit of 4 GB that esc inherits (so the test does not depend on the machine's memory).
   rlimit before{};
   ASSERT_EQ(getrlimit(RLIMIT_AS, &before), 0);
   rlimit limited = before;
   limited.rlim_cur = std::min<rlim_t>(before.rlim_max, rlim_t{4} << 30);
   ASSERT_EQ(setrlimit(RLIMIT_AS, &limited), 0);
-  const Outcome o = esc("run " + example("behavior_map") + " --set map_elites.bins=5000 --out " + out.string());
+  const Outcome o = esc("run " + example("behavior_map") + " --set map_elites.bins=10000 --out " + out.string());
   ASSERT_EQ(setrlimit(RLIMIT_AS, &before), 0);
   EXPECT_EQ(o.status, 1) << o.output;
-  EXPECT_NE(o.output.find("(MAP-Elites of `CC_8_2`: "), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find("MAP-Elites' bins or cells"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("(MAP-Elites' archive of 100000000 cells (10000 bins per descriptor) for `CC_8_2`: "),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find(": lower `map_elites.bins`"), std::string::npos) << o.output;
   EXPECT_FALSE(fs::exists(out)) << "refused before the run directory is made";
 }
 

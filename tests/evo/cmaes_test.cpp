@@ -1,4 +1,5 @@
 #include "runtime/evo/cmaes/cmaes.hpp"
+#include "runtime/evo/cmaes/cmaes_optimizer.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -327,6 +328,23 @@ TEST(Cmaes, InvalidSettingsThrowNamingTheSetting) {
     }
   }
   EXPECT_THROW(Cmaes(CmaesSettings{}, 0), std::invalid_argument);
+}
+
+TEST(Cmaes, MemoryPeakCountsIpopsLargestPopulation) {
+  CmaesSettings s;
+  s.lambda = 1000;
+  const MemoryPeak none = cmaes_memory_peak(s, 18);
+  EXPECT_EQ(none.candidates, 1000);
+  EXPECT_EQ(none.setting, "cmaes.lambda");
+  s.restarts = 9;
+  const MemoryPeak ipop = cmaes_memory_peak(s, 18);
+  EXPECT_EQ(ipop.candidates, 1000.0 * 512);
+  EXPECT_GT(ipop.bytes, 500 * none.bytes) << "lambda x 2^restarts candidates, each of 18 weights";
+  EXPECT_EQ(ipop.setting, "cmaes.restarts");
+  EXPECT_NE(ipop.what.find("512000 candidates of 18 weights after 9 IPOP restarts"), std::string::npos) << ipop.what;
+  // 2,000 weights: the covariance and its eigenvectors outweigh a small population.
+  s = CmaesSettings{};
+  EXPECT_EQ(cmaes_memory_peak(s, 2000).setting, "cmaes.covariance");
 }
 
 }  // namespace

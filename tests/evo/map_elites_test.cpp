@@ -373,7 +373,7 @@ TEST(Archive, MemoryEstimateBoundsAFullArchiveClosely) {
     Rng rng(2);
     while (a.filled() < a.cells()) (void)a.insert(Genome(genome, 0.5), 1.0, std::vector<double>{rng.uniform(), rng.uniform()});
     const double held = a.memory_bytes();
-    const double estimate = archive_memory_bytes(a.cells(), genome, 2);
+    const double estimate = archive_memory_bytes(a.cells(), genome, 2, static_cast<double>(a.cells()), cvt);
     EXPECT_GE(estimate, held) << (cvt ? "cvt" : "grid");
     EXPECT_LE(estimate, 1.15 * held) << (cvt ? "cvt" : "grid");
   }
@@ -610,9 +610,14 @@ TEST(MapElites, RefusesImpossibleSettingsNamingThem) {
   EXPECT_THROW(me.tell(std::vector<double>{}, std::vector<std::vector<double>>{}), std::logic_error);
 }
 
-TEST(MapElites, MemoryEstimateAddsOneGenerationToTheFullArchive) {
-  EXPECT_EQ(map_elites_memory_bytes(MapElitesSettings{}, 100, 10'000, 2),
-            archive_memory_bytes(10'000, 100, 2) + 2.0 * 100 * 100 * 8);
+TEST(MapElites, MemoryEstimateAddsOneGenerationToTheArchive) {
+  // 200 rows of 100 genes (asked and handed out) and 100 of 2 descriptors, as the heap holds them.
+  EXPECT_EQ(map_elites_memory_bytes(MapElitesSettings{}, 100, 10'000, 2, 10'000, false),
+            archive_memory_bytes(10'000, 100, 2, 10'000, false) + 200.0 * (24 + 816) + 100.0 * (24 + 32));
+  // Only the cells a run can fill hold elites: the rest is the empty slots and centroids.
+  EXPECT_LT(archive_memory_bytes(10'000, 100, 2, 500, false),
+            0.25 * archive_memory_bytes(10'000, 100, 2, 10'000, false));
+  EXPECT_EQ(archive_memory_bytes(10'000, 100, 2, 1e9, false), archive_memory_bytes(10'000, 100, 2, 10'000, false));
 }
 
 }  // namespace

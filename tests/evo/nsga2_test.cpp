@@ -211,9 +211,23 @@ TEST(Nsga2, SettingsOutOfRangeThrowNamingTheSetting) {
   EXPECT_DOUBLE_EQ(Nsga2(Nsga2Settings{}, 8).mutation_probability(), 0.125);
 }
 
-TEST(Nsga2, MemoryEstimateCountsGenesAndPerPointNumbers) {
-  // 3 N n genes and (2 N) x 4 numbers per point, 8 bytes each.
-  EXPECT_DOUBLE_EQ(nsga2_memory_bytes(Nsga2Settings{}, 100), (3.0 * 100 * 100 + 2.0 * 100 * 4) * 8);
+TEST(Nsga2, MemoryEstimateCountsRowsAsTheHeapHoldsThem) {
+  // The tell: 3 N rows of 100 genes (a 24-byte header, 800 bytes in an allocation of 816)
+  // and of 2 objectives (32), 2 N merged headers, 7 numbers per point of 2 N, the saved
+  // parents (84,000 bytes). The save after it: 2 N rows of genes, N of objectives, the core's
+  // writer (131,072 bytes) and the run's (old, new and last: 2.5 x 131,072), which at 100
+  // members outweighs the tell.
+  const double n = 100;
+  const double telling = 3 * n * (24 + 816) + 3 * n * (24 + 32) + 2 * n * 24 + 2 * n * 7 * 8 + n * (100 + 2 + 3) * 8;
+  const double saving = 2 * n * (24 + 816) + n * (24 + 32) + 131072 + 2.5 * 131072;
+  EXPECT_DOUBLE_EQ(nsga2_memory_bytes(Nsga2Settings{}, 100, 2), std::max(telling, saving));
+  EXPECT_GT(saving, telling);
+  EXPECT_DOUBLE_EQ(writer_bytes(10), 64);
+  EXPECT_DOUBLE_EQ(writer_bytes(84'000), 131'072);
+  EXPECT_DOUBLE_EQ(heap_bytes(0), 0);
+  EXPECT_DOUBLE_EQ(heap_bytes(1), 32);
+  EXPECT_DOUBLE_EQ(heap_bytes(24), 32);
+  EXPECT_DOUBLE_EQ(heap_bytes(25), 48);
 }
 
 TEST(Nsga2, TellKeepsWholeFrontsThenTheLeastCrowded) {

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -48,6 +49,72 @@ TEST(Pareto, NanPointsFormTheLastFront) {
   const ObjectiveRows f{{1, 5}, {0, kNaN}, {2, 3}, {3, 4}, {kNaN, kNaN}};
   EXPECT_EQ(nondominated_fronts(f), (Fronts{{0, 2}, {3}, {1, 4}}));
   EXPECT_EQ(nondominated_fronts(ObjectiveRows{{kNaN}}), (Fronts{{0}}));
+}
+
+// Deb's sort as he wrote it (2002, section III-A), with the lists of dominated points that
+// nondominated_fronts no longer keeps: the reference its fronts must equal, order and all.
+Fronts deb_fronts(const ObjectiveRows& f) {
+  std::vector<std::size_t> measured, unmeasured;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    (std::any_of(f[i].begin(), f[i].end(), [](double x) { return std::isnan(x); }) ? unmeasured : measured).push_back(i);
+  std::vector<std::vector<std::size_t>> dominated(f.size());
+  std::vector<std::size_t> dominators(f.size(), 0);
+  for (const std::size_t p : measured)
+    for (const std::size_t q : measured)
+      if (dominates(f[p], f[q])) {
+        dominated[p].push_back(q);
+        ++dominators[q];
+      }
+  Fronts fronts;
+  std::vector<std::size_t> current;
+  for (const std::size_t p : measured)
+    if (dominators[p] == 0) current.push_back(p);
+  while (!current.empty()) {
+    std::vector<std::size_t> next;
+    for (const std::size_t p : current)
+      for (const std::size_t q : dominated[p])
+        if (--dominators[q] == 0) next.push_back(q);
+    std::sort(next.begin(), next.end());
+    fronts.push_back(std::move(current));
+    current = std::move(next);
+  }
+  if (!unmeasured.empty()) fronts.push_back(std::move(unmeasured));
+  return fronts;
+}
+
+TEST(Pareto, FrontsEqualDebsSortOnRandomPointsWithTiesInfinitiesAndNans) {
+  // Values from a few levels, so that ties and copies are common; some infinite, some NaN.
+  const std::vector<double> levels{-kInf, -1.0, -0.0, 0.0, 0.5, 1.0, 2.0, 3.0, kInf};
+  for (const std::size_t m : {1U, 2U, 3U, 4U})
+    for (std::uint64_t seed = 0; seed < 60; ++seed) {
+      Rng rng(seed, {m});
+      ObjectiveRows f(1 + rng.below(300));
+      const bool with_nan = seed % 3 == 0;
+      const std::size_t spread = 2 + rng.below(levels.size() - 1);   // fewer levels: more ties
+      for (auto& row : f)
+        for (std::size_t k = 0; k < m; ++k)
+          row.push_back(with_nan && rng.below(40) == 0 ? kNaN
+                        : seed % 2 == 0            ? levels[rng.below(spread)]
+                                                   : rng.uniform(-1.0, 1.0));
+      EXPECT_EQ(nondominated_fronts(f), deb_fronts(f)) << m << " objectives, seed " << seed;
+    }
+}
+
+TEST(Pareto, TwoObjectiveFrontsOfAMillionPointsInLinearMemory) {
+  // 200 fronts of 5,000 points each, shuffled: Deb's lists would hold about 5e11 indices.
+  constexpr std::size_t kFronts = 200, kEach = 5'000;
+  ObjectiveRows f;
+  for (std::size_t k = 0; k < kFronts; ++k)
+    for (std::size_t i = 0; i < kEach; ++i) f.push_back({static_cast<double>(i + k), static_cast<double>(kEach - i + k)});
+  Rng rng(7);
+  for (std::size_t i = f.size() - 1; i > 0; --i) std::swap(f[i], f[rng.below(i + 1)]);
+  const Fronts fronts = nondominated_fronts(f);
+  ASSERT_EQ(fronts.size(), kFronts);
+  for (std::size_t k = 0; k < kFronts; ++k) {
+    ASSERT_EQ(fronts[k].size(), kEach) << k;
+    EXPECT_TRUE(std::is_sorted(fronts[k].begin(), fronts[k].end())) << k;
+    for (const std::size_t p : fronts[k]) EXPECT_EQ(f[p][0] + f[p][1], static_cast<double>(kEach + 2 * k)) << k;
+  }
 }
 
 TEST(Pareto, FrontsRefuseRowsOfDifferentLengths) {

@@ -197,12 +197,12 @@ TEST(TreeSearch, NeedsTheGpSettingsAndCountsTreesInItsMemory) {
   for (const auto& [name, settings] : all_three()) {
     const Algorithm& a = *find_algorithm(name);
     EXPECT_EQ(a.problem(settings, p), "") << name;
-    const double small = a.memory_bytes(settings, p);
+    const double small = a.memory(settings, p, 6).bytes;
     gp::GpSettings bigger = shapes.operators;
     bigger.max_size = 400;
     Problem q = p;
     q.tree_operators = &bigger;
-    EXPECT_GT(a.memory_bytes(settings, q), 3.0 * small) << name << ": a tree counts max_size nodes";
+    EXPECT_GT(a.memory(settings, q, 6).bytes, 3.0 * small) << name << ": a tree counts max_size nodes";
     q.tree_operators = nullptr;
     EXPECT_NE(a.problem(settings, q).find("`evolve gp(...)`"), std::string::npos) << name;
     EXPECT_THROW((void)a.make(settings, q), std::invalid_argument) << name;

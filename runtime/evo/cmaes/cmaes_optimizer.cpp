@@ -1,6 +1,9 @@
 #include "runtime/evo/cmaes/cmaes_optimizer.hpp"
 
+#include <cmath>
 #include <string>
+
+#include <fmt/format.h>
 
 #include "runtime/evo/run_streams.hpp"
 
@@ -51,12 +54,21 @@ std::size_t cmaes_population(const CmaesSettings& settings, std::size_t n) {
   return settings.lambda > 0 ? static_cast<std::size_t>(settings.lambda) : cmaes_default_lambda(n);
 }
 
-double cmaes_memory_bytes(const CmaesSettings& settings, std::size_t n) {
+MemoryPeak cmaes_memory_peak(const CmaesSettings& settings, std::size_t n) {
   const double d = static_cast<double>(n);
-  const double matrices = settings.separable ? 2.0 * d : 2.0 * d * d;
-  // z and y per candidate, the candidates handed out, and the vectors of the distribution.
-  const double samples = 3.0 * d * static_cast<double>(cmaes_population(settings, n));
-  return (matrices + samples + 6.0 * d) * sizeof(double);
+  const double lambda = std::ldexp(static_cast<double>(cmaes_population(settings, n)), settings.restarts);
+  const double matrices = (settings.separable ? 2.0 * d : 4.0 * d * d) * sizeof(double);
+  // z and y, the candidates handed out, their fitness and order.
+  const double samples = (2.0 * d + 2.0) * lambda * sizeof(double) + rows_bytes(lambda, d);
+  const double bytes = matrices + samples + 6.0 * d * sizeof(double);
+  if (matrices > samples)
+    return {bytes, lambda, fmt::format("CMA-ES's covariance of {} x {} weights", n, n), "cmaes.covariance"};
+  if (settings.restarts > 0)
+    return {bytes, lambda,
+            fmt::format("CMA-ES's {:.0f} candidates of {} weights after {} IPOP restarts (lambda x 2^restarts)", lambda,
+                        n, settings.restarts),
+            "cmaes.restarts"};
+  return {bytes, lambda, fmt::format("CMA-ES's {:.0f} candidates of {} weights", lambda, n), "cmaes.lambda"};
 }
 
 }  // namespace esc::evo

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "runtime/evo/cmaes/cmaes.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 
 namespace esc::evo {
@@ -18,8 +19,10 @@ namespace esc::evo {
 // Candidates of the first generation for a genome of `n` weights: lambda, or its default.
 [[nodiscard]] std::size_t cmaes_population(const CmaesSettings& settings, std::size_t n);
 
-// What one run's CMA-ES holds at once, in bytes: its covariance and eigenvectors (n x n, or
-// their diagonals when separable) and one generation's samples.
-[[nodiscard]] double cmaes_memory_bytes(const CmaesSettings& settings, std::size_t n);
+// What one run's CMA-ES holds at its peak: its covariance and eigenvectors (n x n, or their
+// diagonals when separable) with the eigensolver's copy and workspace, and a generation's
+// samples (z and y) and candidates at the largest population, lambda x 2^restarts (IPOP
+// doubles it at each restart).
+[[nodiscard]] MemoryPeak cmaes_memory_peak(const CmaesSettings& settings, std::size_t n);
 
 }  // namespace esc::evo

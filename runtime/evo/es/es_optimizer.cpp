@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace esc::evo {
 
 namespace {
@@ -79,11 +81,15 @@ std::size_t es_population(const EsSettings& settings, std::size_t /*genome_size*
   return static_cast<std::size_t>(settings.lambda);
 }
 
-double es_memory_bytes(const EsSettings& settings, std::size_t genome_size) {
+MemoryPeak es_memory_peak(const EsSettings& settings, std::size_t genome_size) {
   const double genes = static_cast<double>(genome_size);
   const double sigmas = settings.step_sizes == StepSizes::PerGene ? genes : 1.0;
-  const double individual = sizeof(Individual) + (genes + sigmas) * sizeof(double);
-  return (2.0 * settings.mu + settings.lambda) * individual;
+  const double mu = settings.mu, lambda = settings.lambda;
+  const double individual = sizeof(Individual) + heap_bytes(genes * sizeof(double)) + heap_bytes(sigmas * sizeof(double));
+  const double saved = 2.0 * mu * (3.0 + genes + sigmas) * sizeof(double);
+  const double bytes = (2.0 * mu + lambda) * individual + rows_bytes(lambda, genes) + saved;
+  if (2.0 * mu > lambda) return {bytes, lambda, fmt::format("the ES's {} parents of {} genes", settings.mu, genome_size), "mu"};
+  return {bytes, lambda, fmt::format("the ES's {} offspring of {} genes", settings.lambda, genome_size), "lambda"};
 }
 
 StateBytes es_state(std::span<const Individual> parents) {

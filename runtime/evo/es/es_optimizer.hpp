@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "runtime/evo/es/es.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 
 namespace esc::evo {
@@ -16,9 +17,10 @@ namespace esc::evo {
 
 // Offspring per generation: lambda.
 [[nodiscard]] std::size_t es_population(const EsSettings& settings, std::size_t genome_size);
-// What one run's ES holds at once, in bytes: parents, offspring and the parents selected
-// from them, with their genes and step sizes.
-[[nodiscard]] double es_memory_bytes(const EsSettings& settings, std::size_t genome_size);
+// What one run's ES holds at its peak: parents, offspring and the parents selected from
+// them, with their genes and step sizes; the offspring's genes handed out to be evaluated;
+// the saved parents, old and new.
+[[nodiscard]] MemoryPeak es_memory_peak(const EsSettings& settings, std::size_t genome_size);
 
 // The ES's saved state for `parents`: what a store that kept the parents in a table of its
 // own (results schema 5 and older) hands a resumed run.

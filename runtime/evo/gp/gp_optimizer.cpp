@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "runtime/evo/gp/codec.hpp"
 
 namespace esc::evo::gp {
@@ -84,9 +86,14 @@ std::size_t gp_population(const GpSettings& settings, std::size_t /*genome_size*
   return static_cast<std::size_t>(settings.population);
 }
 
-double gp_memory_bytes(const GpSettings& settings, std::size_t /*genome_size*/) {
-  const double tree = sizeof(Individual) + static_cast<double>(settings.max_size) * sizeof(Node);
-  return 2.0 * static_cast<double>(settings.population) * tree;
+MemoryPeak gp_memory_peak(const GpSettings& settings, std::size_t /*genome_size*/) {
+  const double nodes = settings.max_size, population = settings.population;
+  const double tree = sizeof(Individual) + heap_bytes(nodes * sizeof(Node));
+  const double coded = static_cast<double>(kCodedNodeWidth) * nodes;
+  const double saved = 2.0 * population * (coded + 2.0) * sizeof(double);
+  return {2.0 * population * tree + rows_bytes(population, coded) + saved, population,
+          fmt::format("GP's {} trees of up to {} nodes, two generations", settings.population, settings.max_size),
+          "gp.population"};
 }
 
 StateBytes gp_state(std::span<const Individual> population) {

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "runtime/evo/gp/gp.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 
 namespace esc::evo::gp {
@@ -19,9 +20,10 @@ namespace esc::evo::gp {
 
 // Trees per generation: the population.
 [[nodiscard]] std::size_t gp_population(const GpSettings& settings, std::size_t genome_size);
-// What one run's GP holds at once, in bytes: the evaluated generation and the one bred
-// from it, every tree at most max_size nodes.
-[[nodiscard]] double gp_memory_bytes(const GpSettings& settings, std::size_t genome_size);
+// What one run's GP holds at its peak: the evaluated generation and the one bred from it,
+// the bred trees handed out encoded and the saved population (old and new), every tree at
+// most max_size nodes.
+[[nodiscard]] MemoryPeak gp_memory_peak(const GpSettings& settings, std::size_t genome_size);
 
 // GP's saved state for `population`: what a store that kept the population in a table of
 // its own (results schema 5 and older) hands a resumed run.

@@ -18,9 +18,6 @@ constexpr std::uint8_t kCvt = 1;
 // glibc's malloc: a chunk header and 16-byte alignment per allocation (a genome, a
 // descriptor).
 constexpr double kHeapOverhead = 16.0;
-// nanoflann's tree per point: its index (4 bytes) and a share of the nodes (at most one
-// leaf of 40 bytes per point; leaves hold up to 10), rounded up.
-constexpr double kTreeBytesPerPoint = 48.0;
 
 bool all_finite(std::span<const double> v) {
   return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
@@ -234,11 +231,14 @@ double Archive::memory_bytes() const {
   return bytes;
 }
 
-double archive_memory_bytes(std::size_t cells, std::size_t genome_size, std::size_t descriptors) {
-  const double slot = sizeof(std::optional<Elite>) + 1.0 + 2.0 * sizeof(std::size_t);  // slot, flag, two lists
-  const double elite = static_cast<double>(genome_size + descriptors) * sizeof(double) + 2.0 * kHeapOverhead;
-  const double centroid = static_cast<double>(descriptors) * sizeof(double) + kTreeBytesPerPoint;
-  return static_cast<double>(cells) * (slot + elite + centroid);
+double archive_memory_bytes(std::size_t cells, std::size_t genome_size, std::size_t descriptors, double filled,
+                            bool cvt) {
+  const double slot = sizeof(std::optional<Elite>) + 1.0;   // slot, changed flag
+  // Genome and descriptor, and the filled cell in the two lists of cells.
+  const double elite =
+      static_cast<double>(genome_size + descriptors) * sizeof(double) + 2.0 * kHeapOverhead + 2.0 * sizeof(std::size_t);
+  const double centroid = cvt ? static_cast<double>(descriptors) * sizeof(double) + kTreeBytesPerPoint : 0.0;
+  return static_cast<double>(cells) * (slot + centroid) + std::min(filled, static_cast<double>(cells)) * elite;
 }
 
 Archive replay(Archive base, std::span<const Change> changes) {

@@ -116,11 +116,12 @@ class Archive {
   std::vector<std::uint8_t> is_changed_;   // per cell
 };
 
-// An upper bound of what an archive of `cells` cells holds once every cell is filled with a
-// genome of `genome_size` doubles and `descriptors` descriptors, allocator overhead and a
-// CVT's centroids and kd-tree included; a run checks it against the memory it may use before
-// it starts.
-[[nodiscard]] double archive_memory_bytes(std::size_t cells, std::size_t genome_size, std::size_t descriptors);
+// An upper bound of what an archive of `cells` cells holds once `filled` of them hold an
+// elite of a genome of `genome_size` doubles and `descriptors` descriptors, allocator
+// overhead and a CVT's centroids and kd-tree included (`cvt`); a run checks it against the
+// memory it may use before it starts.
+[[nodiscard]] double archive_memory_bytes(std::size_t cells, std::size_t genome_size, std::size_t descriptors,
+                                          double filled, bool cvt);
 
 // `base` with `changes` applied in order: the archive of a generation, from the archive
 // before it (an empty one for the first) and the changes taken after each generation.

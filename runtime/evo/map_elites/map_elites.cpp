@@ -143,10 +143,11 @@ void MapElites::load(std::span<const std::uint8_t> bytes) {
 }
 
 double map_elites_memory_bytes(const MapElitesSettings& settings, std::size_t genome_size, std::size_t cells,
-                               std::size_t descriptors) {
-  const double generation = 2.0 * static_cast<double>(std::max(settings.batch, settings.initial)) *
-                            static_cast<double>(genome_size) * sizeof(double);
-  return archive_memory_bytes(cells, genome_size, descriptors) + generation;
+                               std::size_t descriptors, double filled, bool cvt) {
+  const double candidates = static_cast<double>(std::max(settings.batch, settings.initial));
+  const double generation = rows_bytes(2.0 * candidates, static_cast<double>(genome_size)) +
+                            rows_bytes(candidates, static_cast<double>(descriptors));
+  return archive_memory_bytes(cells, genome_size, descriptors, filled, cvt) + generation;
 }
 
 }  // namespace esc::evo::qd

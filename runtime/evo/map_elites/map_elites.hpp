@@ -25,6 +25,7 @@
 
 #include "runtime/core/rng.hpp"
 #include "runtime/evo/map_elites/archive.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 #include "runtime/evo/representation.hpp"
 #include "runtime/evo/state_bytes.hpp"
@@ -110,9 +111,10 @@ class MapElites {
   bool asked_ = false;
 };
 
-// What a MapElites holds at most, in bytes: its archive full (archive_memory_bytes) and one
-// generation's candidates twice (asked, and handed out).
+// What a MapElites holds at most, in bytes: its archive with `filled` elites
+// (archive_memory_bytes) and one generation's candidates twice (asked, and handed out) with
+// their descriptors told.
 [[nodiscard]] double map_elites_memory_bytes(const MapElitesSettings& settings, std::size_t genome_size, std::size_t cells,
-                                             std::size_t descriptors);
+                                             std::size_t descriptors, double filled, bool cvt);
 
 }  // namespace esc::evo::qd

@@ -203,14 +203,34 @@ std::size_t map_elites_population(const MapElitesRunSettings& settings, const Pr
   return static_cast<std::size_t>(settings.initial);
 }
 
-double map_elites_run_memory_bytes(const MapElitesRunSettings& settings, const Problem& problem) {
+MemoryPeak map_elites_memory_peak(const MapElitesRunSettings& settings, const Problem& problem, int generations) {
   const double cells = cells_of(settings, problem.descriptors.size());
-  // Refused by map_elites_problem anyway; the estimate must not wrap around.
   const std::size_t genes = gp::genes_at_most(problem);
-  if (cells > static_cast<double>(qd::kMaxGridCells)) return cells * static_cast<double>(genes) * 8.0;
-  return qd::map_elites_memory_bytes(core_settings(settings), genes, static_cast<std::size_t>(cells),
-                                     problem.descriptors.size()) +
-         cells * kMeasuredBytesPerCell;
+  const double candidates = std::max(settings.batch, settings.initial);
+  const std::string archive =
+      settings.cvt ? fmt::format("CVT-MAP-Elites' archive of {} cells", settings.cells)
+                   : fmt::format("MAP-Elites' archive of {:.0f} cells ({} bins per descriptor)", cells, settings.bins);
+  const std::string setting = settings.cvt ? "cvt_map_elites.cells" : "map_elites.bins";
+  // Refused by map_elites_problem anyway; the estimate must not wrap around.
+  if (cells > static_cast<double>(qd::kMaxGridCells))
+    return {cells * static_cast<double>(genes) * 8.0, candidates, archive, setting};
+  const double filled = settings.initial + static_cast<double>(settings.batch) * std::max(generations - 1, 0);
+  // A CVT's k-means: the samples and their cells, each centroid's sum and count; and the
+  // process's copy of the centroids, beside the archive's.
+  const double dims = static_cast<double>(problem.descriptors.size());
+  const double kmeans =
+      settings.cvt ? (settings.samples * (dims + 1.0) + cells * (dims + 1.0) + cells * dims) * sizeof(double) : 0.0;
+  const double archived = qd::map_elites_memory_bytes(core_settings(settings), genes, static_cast<std::size_t>(cells),
+                                                      problem.descriptors.size(), filled, settings.cvt) +
+                          std::min(filled, cells) * kMeasuredBytesPerCell;
+  const double generation = rows_bytes(2.0 * candidates, static_cast<double>(genes));
+  if (generation > archived - generation)
+    return {archived + kmeans, candidates,
+            fmt::format("{}' {:.0f} candidates of {} genes", settings.cvt ? "CVT-MAP-Elites" : "MAP-Elites", candidates,
+                        genes),
+            fmt::format("{}.{}", settings.cvt ? "cvt_map_elites" : "map_elites",
+                        settings.batch >= settings.initial ? "batch" : "initial")};
+  return {archived + kmeans, candidates, archive, setting};
 }
 
 }  // namespace esc::evo

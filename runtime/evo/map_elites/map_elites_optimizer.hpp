@@ -40,8 +40,11 @@ struct MapElitesRunSettings {
 [[nodiscard]] std::unique_ptr<Optimizer> make_map_elites(const MapElitesRunSettings& settings, const Problem& problem);
 // Candidates of the first generation: `initial`.
 [[nodiscard]] std::size_t map_elites_population(const MapElitesRunSettings& settings, const Problem& problem);
-// The archive full, and a generation's candidates (qd::map_elites_memory_bytes).
-[[nodiscard]] double map_elites_run_memory_bytes(const MapElitesRunSettings& settings, const Problem& problem);
+// What a run of `generations` holds at its peak (qd::map_elites_memory_bytes): the archive's
+// cells, as many of them filled as the run evaluates candidates (all, at most), with where
+// each elite was measured; a generation's candidates; a CVT's k-means samples.
+[[nodiscard]] MemoryPeak map_elites_memory_peak(const MapElitesRunSettings& settings, const Problem& problem,
+                                                int generations);
 // Why the settings cannot run on `problem` (no declared fitness range, no descriptors, more
 // than 3 for a grid, too many cells, ...), or "".
 [[nodiscard]] std::string map_elites_problem(const MapElitesRunSettings& settings, const Problem& problem);

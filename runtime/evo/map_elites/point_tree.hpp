@@ -14,6 +14,10 @@
 
 namespace esc::evo::qd {
 
+// nanoflann's tree per point: its index (4 bytes) and a share of the nodes (at most one
+// leaf of 40 bytes per point; leaves hold up to 10), rounded up: what estimates count.
+inline constexpr double kTreeBytesPerPoint = 48.0;
+
 class PointTree {
  public:
   // `points`: size() x dims values, row after row. Throws std::invalid_argument for dims 0, a

@@ -4,7 +4,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/evo/map_elites/point_tree.hpp"
 #include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 #include "runtime/evo/run_streams.hpp"
@@ -117,8 +120,8 @@ class NoveltyOptimizer final : public Optimizer {
     w.put(std::string("esc-novelty"));
     w.put(kVersion);
     const StateBytes core = core_.save(), archive = archive_.save();
-    w.put(std::string(core.begin(), core.end()));
-    w.put(std::string(archive.begin(), archive.end()));
+    w.put(std::span<const std::uint8_t>(core));
+    w.put(std::span<const std::uint8_t>(archive));
     w.put(best_novelty_);
     w.put(static_cast<std::uint64_t>(parent_descriptors_.size()));
     for (std::size_t i = 0; i < parent_descriptors_.size(); ++i) {
@@ -206,10 +209,21 @@ std::size_t novelty_population(const NoveltyRunSettings& settings, const Problem
   return static_cast<std::size_t>(settings.population);
 }
 
-double novelty_memory_bytes(const NoveltyRunSettings& settings, const Problem& problem) {
-  const double points = 100.0 * settings.population;
-  return nsga2_memory_bytes(variation_of(settings), gp::genes_at_most(problem)) +
-         points * static_cast<double>(problem.descriptors.size() + 1) * sizeof(double);
+MemoryPeak novelty_memory_peak(const NoveltyRunSettings& settings, const Problem& problem) {
+  const double big_n = static_cast<double>(settings.population);
+  const double d = static_cast<double>(problem.descriptors.size());
+  const std::size_t genes = gp::genes_at_most(problem);
+  const double core = nsga2_memory_bytes(variation_of(settings), genes, settings.with_fitness ? 2 : 1);
+  // Descriptors: the parents' kept, parents' and children's copied for scoring, the archive's.
+  const double descriptors = rows_bytes(4.0 * big_n, d);
+  // The kd-tree's points in unit coordinates and its nodes (3N points: parents, children,
+  // the archive); novelty, fitness and the scores' objectives per point of parents and children.
+  const double scoring = 3.0 * big_n * (d * sizeof(double) + qd::kTreeBytesPerPoint) +
+                         2.0 * big_n * 2.0 * sizeof(double) + rows_bytes(2.0 * big_n, settings.with_fitness ? 2.0 : 1.0);
+  return {core + descriptors + scoring + 2.0 * big_n * sizeof(Measured), big_n,
+          fmt::format("novelty search's {} parents and {} children of {} genes, scored and ranked together",
+                      settings.population, settings.population, genes),
+          "novelty.population"};
 }
 
 }  // namespace esc::evo

@@ -41,8 +41,12 @@ struct NoveltyRunSettings {
 
 [[nodiscard]] std::unique_ptr<Optimizer> make_novelty(const NoveltyRunSettings& settings, const Problem& problem);
 [[nodiscard]] std::size_t novelty_population(const NoveltyRunSettings& settings, const Problem& problem);
-// NSGA-II's memory, and an archive of one point per candidate of 100 generations.
-[[nodiscard]] double novelty_memory_bytes(const NoveltyRunSettings& settings, const Problem& problem);
+// What one run holds while a tell scores and ranks: NSGA-II's memory (nsga2_memory_bytes)
+// with its one or two objectives; the descriptors of parents and children, copied, and the
+// parents' kept; the kd-tree over them and the archive, an archive of one generation's
+// candidates (the first generation's update can archive them all; what a long run archives
+// later is not counted).
+[[nodiscard]] MemoryPeak novelty_memory_peak(const NoveltyRunSettings& settings, const Problem& problem);
 // Why the settings cannot run on `problem` (no descriptors, ...), or "".
 [[nodiscard]] std::string novelty_problem(const NoveltyRunSettings& settings, const Problem& problem);
 

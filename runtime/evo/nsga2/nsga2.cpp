@@ -52,11 +52,22 @@ void check_nsga2_settings(const Nsga2Settings& s) {
           "lower (" + text(s.lower) + ") must be below upper (" + text(s.upper) + "), both within +-1e6");
 }
 
-double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n) {
+double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n, std::size_t objectives) {
   const double big_n = static_cast<double>(settings.population);
-  const double genes = 3.0 * big_n * static_cast<double>(n);
-  const double per_point = 2.0 * big_n * (2.0 + 2.0);  // parents and children: 2 objectives, rank, crowding
-  return (genes + per_point) * sizeof(double);
+  const double genes = static_cast<double>(n), m = static_cast<double>(objectives);
+  const double saved = big_n * (genes + m + 3.0) * sizeof(double);   // parents, objectives, crowding
+  // The tell: parents, children and candidates handed out, their objectives (the caller's
+  // copy too), the merged rows, and per point of 2 N its rank, crowding, front, the sort's
+  // orders and the selection's, beside the last generation's saved state.
+  const double telling = rows_bytes(3.0 * big_n, genes) + rows_bytes(3.0 * big_n, m) + 2.0 * big_n * sizeof(Genome) +
+                         2.0 * big_n * 7.0 * sizeof(double) + saved;
+  // Saving after it: the parents and the candidates still handed out, the parents' objectives,
+  // the core's state and the run's state around it, which holds its old block and the new
+  // one, twice as large, as it grows past the core's, while the run still holds the last
+  // generation's (as heaptrack shows them at the peak).
+  const double run_state = writer_bytes(saved + 2.0 * big_n * sizeof(double));
+  const double saving = rows_bytes(2.0 * big_n, genes) + rows_bytes(big_n, m) + writer_bytes(saved) + 2.5 * run_state;
+  return std::max(telling, saving);
 }
 
 Nsga2Genomes box_genomes(const Nsga2Settings& s, std::size_t n) {

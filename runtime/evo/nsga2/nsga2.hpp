@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/pareto/selection.hpp"
 #include "runtime/evo/representation.hpp"
 #include "runtime/evo/state_bytes.hpp"
@@ -71,10 +72,13 @@ inline constexpr int kNsga2MaxPopulation = 1'000'000;
 // upper, both within +-1e6.
 void check_nsga2_settings(const Nsga2Settings& settings);
 
-// Bytes one NSGA-II over n genes holds at least: parents, children and the children handed
-// out (3 N n doubles), and per point of parents plus children 2 objectives, a rank and a
-// crowding distance. Each further objective adds 16 N bytes, little beside the genes.
-[[nodiscard]] double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n);
+// Bytes one NSGA-II over n genes and `objectives` objectives holds while a tell ranks parents
+// and children together: parents, children and the children handed out (3 N rows of n, as
+// the heap holds them: memory_peak.hpp); the objectives of parents and children and the
+// caller's copy of the children's; the merged rows' headers; per point of parents plus
+// children its rank, crowding distance, front and the sort's and the selection's indices
+// (the non-dominated sort holds O(N): pareto/fronts.hpp); the saved state of the parents.
+[[nodiscard]] double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n, std::size_t objectives);
 
 // What NSGA-II's genes are: the first candidates and the check of a stored one, and how two
 // tournament winners become two children (in place, drawing from the Rng given).

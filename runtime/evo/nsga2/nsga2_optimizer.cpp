@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "runtime/evo/gp/tree_variation.hpp"
 #include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
@@ -125,11 +127,13 @@ std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& /*pro
   return static_cast<std::size_t>(settings.population);
 }
 
-double nsga2_run_memory_bytes(const Nsga2Settings& settings, const Problem& problem) {
-  // nsga2_memory_bytes counts 2 objectives for each point of parents and children.
-  const double further = problem.objectives.size() > 2 ? static_cast<double>(problem.objectives.size() - 2) : 0.0;
-  return nsga2_memory_bytes(settings, gp::genes_at_most(problem)) +
-         further * 2.0 * static_cast<double>(settings.population) * sizeof(double);
+MemoryPeak nsga2_memory_peak(const Nsga2Settings& settings, const Problem& problem) {
+  const double big_n = static_cast<double>(settings.population);
+  const std::size_t genes = gp::genes_at_most(problem);
+  return {nsga2_memory_bytes(settings, genes, problem.objectives.size()) + 2.0 * big_n * sizeof(Measured), big_n,
+          fmt::format("NSGA-II's {} parents and {} children of {} genes, ranked together", settings.population,
+                      settings.population, genes),
+          "nsga2.population"};
 }
 
 }  // namespace esc::evo

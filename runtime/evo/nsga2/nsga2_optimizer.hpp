@@ -27,8 +27,9 @@ namespace esc::evo {
 // Candidates per generation: the population.
 [[nodiscard]] std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& problem);
 
-// What one run's NSGA-II holds at once (nsga2_memory_bytes, with every objective).
-[[nodiscard]] double nsga2_run_memory_bytes(const Nsga2Settings& settings, const Problem& problem);
+// What one run's NSGA-II holds at its peak (nsga2_memory_bytes, with every objective) and
+// where the parents were measured.
+[[nodiscard]] MemoryPeak nsga2_memory_peak(const Nsga2Settings& settings, const Problem& problem);
 
 // The hypervolume's reference point in the core's minimised terms (each objective's declared
 // worst value, negated), or empty when there are not 2 or 3 objectives or one has no range.

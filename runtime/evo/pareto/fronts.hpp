@@ -20,8 +20,9 @@ using ObjectiveRows = std::vector<std::vector<double>>;
 // either holds a NaN.
 [[nodiscard]] bool dominates(std::span<const double> a, std::span<const double> b) noexcept;
 
-// Deb's fast non-dominated sort (2002, section III-A), O(M N^2): the fronts in order (the
-// first dominated by no point), indices ascending within each. Every index of f appears
+// The fronts of Deb's fast non-dominated sort (2002, section III-A) in order (the first
+// dominated by no point), indices ascending within each, in O(N) memory: for two objectives
+// in O(N log N) time (Jensen 2003), for more in O(M N^2). Every index of f appears
 // once. Throws std::invalid_argument when the rows differ in length or have none.
 [[nodiscard]] std::vector<std::vector<std::size_t>> nondominated_fronts(const ObjectiveRows& f);
 
