@@ -23,6 +23,11 @@ std::atomic<std::int64_t> generations_stored{0};
 std::atomic<std::int64_t> total{0};
 std::atomic<bool> storing{false};   // a generation's commit is under way
 std::atomic<int> deferred{0};       // the signal that came during it
+// Set by the handler that says the line: a signal sent twice (GNU timeout signals the
+// process and its group) reaches two threads at once, whose lines interleaved ("stopped
+// after  after 11 of  of 2020 ..."). The first says it and ends the process; the other
+// returns.
+std::atomic<bool> saying{false};
 
 void put(std::string_view s) { (void)!::write(STDERR_FILENO, s.data(), s.size()); }
 
@@ -38,6 +43,7 @@ void put(std::int64_t n) {
 
 extern "C" void interrupted(int signal) {
   if (storing.load() && deferred.exchange(signal) == 0) return;   // stops when the commit ends
+  if (saying.exchange(true)) return;
   if (const Lines* text = lines.load()) {
     // Past the live progress line, if one is open.
     put("\nesc: stopped");

@@ -28,6 +28,23 @@ for signal in INT TERM; do
 done
 "$esc" export "$work/run-INT" >/dev/null || { echo "FAIL: the stopped run does not read"; exit 1; }
 
+# A signal sent twice at once (GNU timeout signals the process and its group) reaches two
+# threads: one line all the same, not two interleaved ("stopped after  after 11 of  of ...").
+for i in 1 2 3; do
+  dir=$work/run-twice-$i
+  "$esc" run "$script" --runs 2 --generations 100000 --out "$dir" >"$work/out-twice" 2>"$work/err-twice" &
+  pid=$!
+  for _ in $(seq 100); do
+    grep -qE "gen +2/" "$work/out-twice" 2>/dev/null && break
+    sleep 0.1
+  done
+  kill -TERM "$pid"; kill -TERM "$pid"
+  wait "$pid"
+  [ "$(grep -c "esc: stopped" "$work/err-twice")" -eq 1 ] &&
+    grep -qxE "esc: stopped after [1-9][0-9]* of 400000 generations \(all runs together\); $dir holds every generation finished: \`esc run --resume $dir\` continues it" \
+      "$work/err-twice" || { echo "FAIL: a signal sent twice: not one line"; cat "$work/err-twice"; exit 1; }
+done
+
 # Stopped before its first generation was stored: a resume would find nothing, so the line
 # gives the command that starts it again, and that command runs into the directory.
 dir=$work/run-first
