@@ -17,6 +17,7 @@ enum class ErrorKind {
   Results,      // a run or study directory: missing, damaged, locked, not resumable
   Dependency,   // an experiment this one needs could not be prepared
   Memory,       // the campaign does not fit in this machine's memory
+  Request,      // what was asked for does not fit what is there (`esc` exits with its usage status)
 };
 
 struct Problem {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "app/replay.hpp"
+
 namespace esc::cli {
 
 inline constexpr int kExitOk = 0;
@@ -49,25 +51,8 @@ struct ReportOptions {
 
 int report_command(const ReportOptions& options);
 
-struct ReplayOptions {
-  std::filesystem::path source;              // a run directory or a run-NN.best.json file
-  std::string controller;                    // empty: every controller
-  std::optional<int> run;                    // from 1; none: each controller's best run
-  std::string epochs;                        // "1,3-5", from 1; empty: all
-  std::filesystem::path out;                 // empty: the run directory
-  std::filesystem::path script;              // evaluate in this script's experiment instead
-  std::string experiment;                    // of `script`; empty: its first
-  std::optional<std::uint64_t> seed;         // none: the stored best evaluation's seed
-  // A member of the run's final front (its position, from 0) or archive (its cell) instead
-  // of the run's best.
-  std::optional<std::int64_t> member;
-  bool animate = false;                      // also an MP4 or GIF, where a tool for it is present
-  // Make the whole run again and write every evaluation's objectives and descriptors
-  // (cli/replay_evaluations.hpp), drawn over the arena with `over_arena`.
-  bool evaluations = false;
-  bool over_arena = false;
-  int threads = 0;                           // for `evaluations`; 0: all cores
-};
+// The command line fills the application layer's request itself: the options are its fields.
+using ReplayOptions = app::ReplayRequest;
 
 int replay_command(const ReplayOptions& options);
 

@@ -1,13 +1,14 @@
 #pragma once
 // How the end tables of `esc run` write numbers, p-values and the pairs they compare
 // (end_table.cpp, success_table.cpp): one spelling for "undefined" and one precision per kind.
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <string>
 
 #include <fmt/format.h>
+
+#include "runtime/report/fitness_decimals.hpp"
 
 namespace esc::cli {
 
@@ -16,14 +17,7 @@ namespace esc::cli {
   return std::isnan(x) ? "n/a" : fmt::format("{:.{}f}", x, decimals);
 }
 
-// Decimals for fitness values whose largest magnitude is `largest`: `least` (one in the end
-// tables, as the paper prints) down to 1; below it three significant digits (a maze's
-// -0.0123 m, not -0.0).
-[[nodiscard]] inline int fitness_decimals(double largest, int least = 1) {
-  largest = std::abs(largest);
-  if (!(largest < 1.0) || largest == 0.0) return least;   // NaN and infinities too
-  return std::clamp(2 - static_cast<int>(std::floor(std::log10(largest))), least, 10);
-}
+using report::fitness_decimals;
 
 // Four decimals, or two significant digits below 1e-4.
 [[nodiscard]] inline std::string p_text(double p) {

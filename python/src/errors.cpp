@@ -25,6 +25,7 @@ const char* kind_name(app::ErrorKind kind) {
     case app::ErrorKind::Results: return "results";
     case app::ErrorKind::Dependency: return "dependency";
     case app::ErrorKind::Memory: return "memory";
+    case app::ErrorKind::Request: return "request";
   }
   return "";
 }

@@ -1,9 +1,11 @@
 // The application layer as a library sees it: a run and its resume return their outcome and
 // tell their events (never print), refusals are typed errors, and an experiment whose
-// dependencies were never prepared does not run; the clients read stored runs through it.
+// dependencies were never prepared does not run; the clients read stored runs through it,
+// and replay them.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,6 +18,7 @@
 #include "app/compile.hpp"
 #include "app/error.hpp"
 #include "app/import_path.hpp"
+#include "app/replay.hpp"
 #include "app/results.hpp"
 #include "app/run.hpp"
 #include "app/settings.hpp"
@@ -256,6 +259,76 @@ TEST(App, StoredRunsAreReadThroughTheApplicationLayer) {
   } catch (const StoreError& e) {
     EXPECT_EQ(std::string(e.what()), "`" + (out / "never").string() + "` is not a directory");
   }
+  fs::remove_all(out);
+}
+
+// Each subject replayed, as a listener hears it.
+class Heard final : public ReplayListener {
+ public:
+  std::vector<std::string> subjects;
+  void replayed(const ReplayedSubject& s) override { subjects.push_back(s.controller); }
+};
+
+TEST(App, AReplayReturnsWhatItReplayedAndTellsEachSubject) {
+  const fs::path out = fresh_dir("replay");
+  Recorded events;
+  (void)run(small_run("basic", out), options(), events);
+  ReplayRequest request;
+  request.source = out;
+  Heard heard;
+  const ReplayOutcome faithful = replay(request, options(), events, heard);
+  ASSERT_EQ(faithful.subjects.size(), 2U);
+  EXPECT_TRUE(faithful.evaluations.empty());
+  const store::StoredExperiment stored = read_single(out);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const ReplayedSubject& s = faithful.subjects[i];
+    EXPECT_EQ(s.controller, stored.controllers[i].name);
+    EXPECT_EQ(heard.subjects[i], s.controller);
+    EXPECT_TRUE(s.replayed);
+    EXPECT_TRUE(s.problems.empty());
+    EXPECT_TRUE(s.faithful);
+    EXPECT_TRUE(s.identical_to_stored_replay);   // bit for bit the evaluation esc.db stores
+    EXPECT_EQ(s.fitness, stored.controllers[i].finished.front().best_fitness);
+    EXPECT_EQ(s.stem, "replay-" + s.controller + "-run-01");
+    EXPECT_TRUE(fs::is_regular_file(out / (s.stem + ".svg")));
+    EXPECT_TRUE(fs::is_regular_file(out / (s.stem + ".csv")));
+    // The figure it returns (for an animation) is the one its SVG draws, still whole once
+    // the outcome holds it.
+    EXPECT_FALSE(s.drawn.empty());
+    std::ifstream svg(out / (s.stem + ".svg"));
+    EXPECT_EQ(report::trajectory_svg(s.figure()), std::string(std::istreambuf_iterator<char>(svg), {}));
+  }
+
+  // Another seed: checked against nothing, named so that it stands beside the faithful files.
+  request.controller = "CC";
+  request.seed = 7;
+  const ReplayOutcome seeded = replay(request, options(), events, heard);
+  ASSERT_EQ(seeded.subjects.size(), 1U);
+  EXPECT_FALSE(seeded.subjects.front().faithful);
+  EXPECT_FALSE(seeded.subjects.front().identical_to_stored_replay);
+  EXPECT_EQ(seeded.subjects.front().stem, "replay-CC-run-01-seed-7");
+
+  // What was asked for does not fit the run: a Request refusal, with esc's sentence.
+  request.seed.reset();
+  request.epochs = "9";
+  try {
+    (void)replay(request, options(), events, heard);
+    ADD_FAILURE() << "replayed epoch 9 of a run with fewer";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Request);
+    EXPECT_NE(std::string(e.what()).find("--epochs 9: `9` is not an epoch"), std::string::npos) << e.what();
+  }
+  request.epochs.clear();
+  request.controller = "CX";
+  try {
+    (void)replay(request, options(), events, heard);
+    ADD_FAILURE() << "replayed a controller the run does not compare";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Results);
+    ASSERT_EQ(e.problems().size(), 1U);
+    EXPECT_EQ(e.problems().front().help, "did you mean `CC`?");
+  }
+  EXPECT_EQ(heard.subjects.size(), 3U);   // the refusals replayed nothing
   fs::remove_all(out);
 }
 
