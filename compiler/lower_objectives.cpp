@@ -78,10 +78,7 @@ std::optional<int> positions_count(const ast::Expr& call, Sink* sink) {
 std::string slot_name(expr::Slot s) {
   if (s == expr::slot::acting) return "using(...)";
   if (s >= expr::slot::reached && s < expr::slot::reached + expr::kMaxLights) return "reached(...)";
-  for (const expr::Observable& o : expr::kObservables)
-    if (s >= o.first && s < o.first + o.count)
-      return o.indexed ? fmt::format("{}[{}]", o.name, s - o.first) : std::string(o.name);
-  return fmt::format("slot {}", s);
+  return expr::observable_name(s).value_or(fmt::format("slot {}", s));
 }
 
 // A descriptor that reads what describes only the last step (`wheel_diff`) outside a step

@@ -12,10 +12,7 @@ namespace {
 
 // `range[3]`, `goal_distance`: the slot as scripts name it.
 std::string slot_name(expr::Slot slot) {
-  for (const expr::Observable& o : expr::kObservables)
-    if (slot >= o.first && slot < o.first + o.count)
-      return o.indexed ? fmt::format("{}[{}]", o.name, slot - o.first) : std::string(o.name);
-  return fmt::format("slot {}", slot);
+  return expr::observable_name(slot).value_or(fmt::format("slot {}", slot));
 }
 
 // "the robot of experiment `maze`".

@@ -31,16 +31,9 @@ struct StepOutcome {
   bool stop = false;   // a stop condition fired or the accumulator ran empty: the epoch ends here
 };
 
-// The evaluation's fitness after adding a step's term: the sum saturates at
-// +-expr::kSaturation like the VM's operators (one constant term of 1e308 over two steps would
-// otherwise reach infinity), and a NaN, which no operator makes (only a broken observable
-// could), is the lowest fitness. Identical to a plain sum within the limits. The generation's
-// statistics count evaluations at the limit (`saturated`).
-[[nodiscard]] inline double add_fitness(double sum, double term) noexcept {
-  const double s = sum + term;
-  if (std::isnan(s)) return -expr::kSaturation;
-  return std::clamp(s, -expr::kSaturation, expr::kSaturation);
-}
+// The evaluation's fitness after adding a step's term (expr::saturating_add). The
+// generation's statistics count evaluations at the limit (`saturated`).
+[[nodiscard]] inline double add_fitness(double sum, double term) noexcept { return expr::saturating_add(sum, term); }
 
 class EpochStepper {
  public:

@@ -188,4 +188,8 @@ inline constexpr std::array kParametrised = {
   return std::nullopt;
 }
 
+// `wheel_diff`, `range[3]`: slot `s` as scripts name it; none for a slot scripts do not read
+// by a name of its own (the choice acting, the noise, the lights reached).
+[[nodiscard]] std::optional<std::string> observable_name(Slot s);
+
 }  // namespace esc::expr

@@ -4,6 +4,8 @@
 // step). Programs are built by the compiler; every operator is total, so a program never
 // yields NaN or infinity from finite inputs: x / 0 is 0, sqrt of a negative number is 0,
 // log of a non-positive number is 0. Booleans are 0 and 1; any non-zero value is true.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -14,6 +16,16 @@ namespace esc::expr {
 // Where overflow saturates: every arithmetic operator's result is clamped to +-kSaturation,
 // and an evaluation's fitness (a sum of step terms) saturates at the same value.
 inline constexpr double kSaturation = 1e300;
+
+// a + b saturated at +-kSaturation, as the operators saturate: a sum of step values (an
+// evaluation's fitness, a step aggregate's `sum(x)`) that one constant term of 1e308 over
+// two steps would otherwise take to infinity. A NaN, which no operator makes (only a broken
+// observable could), is the lowest value. Identical to a plain sum within the limits.
+[[nodiscard]] inline double saturating_add(double a, double b) noexcept {
+  const double s = a + b;
+  if (std::isnan(s)) return -kSaturation;
+  return std::clamp(s, -kSaturation, kSaturation);
+}
 
 enum class Op : std::uint8_t {
   Const,   // push value

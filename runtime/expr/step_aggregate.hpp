@@ -42,7 +42,7 @@ class StepAccumulator {
     using K = StepAggregate::Kind;
     switch (a.kind) {
       case K::Mean:
-      case K::Sum: value_ = std::clamp(value_ + v, -kSaturation, kSaturation); break;
+      case K::Sum: value_ = saturating_add(value_, v); break;
       case K::Min: value_ = seen_ == 0 ? v : std::min(value_, v); break;
       case K::Max: value_ = seen_ == 0 ? v : std::max(value_, v); break;
       case K::Fraction: value_ += v != 0.0 ? 1.0 : 0.0; break;

@@ -1,6 +1,7 @@
 #include "runtime/tree_control/inline_actions.hpp"
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -95,11 +96,8 @@ class Inliner {
 
   PrimitiveId observable(expr::Slot slot) {
     if (const auto it = observables_.find(slot); it != observables_.end()) return it->second;
-    for (const expr::Observable& o : expr::kObservables) {
-      if (slot < o.first || slot >= o.first + o.count) continue;
-      const std::string name = o.indexed ? fmt::format("{}[{}]", o.name, slot - o.first) : std::string(o.name);
-      return observables_[slot] = add(prim::observable(name, slot, Type::Number));
-    }
+    if (const std::optional<std::string> name = expr::observable_name(slot))
+      return observables_[slot] = add(prim::observable(*name, slot, Type::Number));
     fail(fmt::format("a behavior reads frame slot {}, which has no name of its own in scripts", slot));
   }
 
