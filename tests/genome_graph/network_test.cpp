@@ -3,9 +3,26 @@
 // step mode, relaxation for classification, and reset().
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 
 #include "runtime/genome/graph/network.hpp"
+
+// Every allocation in this test program is counted, to show a network allocates nothing
+// once built.
+namespace {
+std::size_t allocations = 0;
+}  // namespace
+
+void* operator new(std::size_t n) {
+  ++allocations;
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace esc::genome::graph {
 namespace {
@@ -80,6 +97,19 @@ TEST(Network, AHandBuiltXorSolution) {
     ASSERT_TRUE(net.relax(patterns[p]));
     EXPECT_EQ(net.output()[0] >= 0.5, expected[p]) << p;
   }
+}
+
+TEST(Network, StepsRelaxationsAndResetsAllocateNothing) {
+  Graph g = chain(Activation::NeatSigmoid);
+  g.links.push_back({4, 4, 0.5, true, 4});   // a recurrent link too
+  Network net(g);
+  const std::array<double, 2> x = {0.25, -1.0};
+  const std::size_t before = allocations;
+  for (int t = 0; t < 100; ++t) {
+    if (t % 10 == 0) net.reset();
+    ASSERT_TRUE(t % 3 == 0 ? net.relax(x) : net.step(x));
+  }
+  EXPECT_EQ(allocations, before);
 }
 
 TEST(Network, AnOutputNoPathReachesNeverTurnsOn) {

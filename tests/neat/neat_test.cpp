@@ -3,6 +3,7 @@
 // damaged states, fitness of any sign, and the option table's checks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <any>
 #include <cmath>
 
@@ -99,6 +100,40 @@ TEST(Neat, PopulationStaysWholeAndSpeciesPartitionIt) {
   EXPECT_GT(most_species, 1U);
   EXPECT_GT(most_hidden, 1U);
   EXPECT_GE(neat.threshold(), busy().threshold_step);
+}
+
+TEST(Neat, AStandstillBreedsFromTheChampionAndKeepsTheWholePopulation) {
+  NeatSettings s;
+  s.population = 20;
+  s.threshold = 1e6;   // one species throughout
+  s.dropoff_age = 1;   // a standstill after 1 + 5 generations without a rise
+  Neat neat(s, 2, 1);
+  Rng init(2);
+  neat.start(nullptr, init);
+  const std::vector<double> flat(20, 1.0);
+  for (int b = 1; b <= 6; ++b) {   // the first breeding records 1, five more see no rise
+    neat.tell(flat);
+    Rng rng(static_cast<std::uint64_t>(b));
+    neat.breed(rng);
+  }
+  ASSERT_EQ(neat.species().size(), 1U);
+  const gg::Graph champion = neat.population()[neat.species()[0].members[0]];   // ties: the first
+  neat.tell(flat);
+  Rng rng(7);
+  neat.breed(rng);
+  ASSERT_EQ(neat.population().size(), 20U);   // NEAT C++ would make 10 of a lone species
+  int clones = 0;
+  for (const gg::Graph& child : neat.population()) {
+    clones += child == champion ? 1 : 0;
+    EXPECT_EQ(child.nodes, champion.nodes);
+    for (const gg::LinkGene& l : champion.links)   // every link of the champion's, maybe reweighted
+      EXPECT_TRUE(std::any_of(child.links.begin(), child.links.end(),
+                              [&](const gg::LinkGene& c) { return c.innovation == l.innovation; }));
+  }
+  // The last of its offspring is a plain copy; so are those whose new link found no open pair
+  // (the minimal XOR net has none): 4 of 19 here.
+  EXPECT_GE(clones, 1);
+  EXPECT_LT(clones, 10);
 }
 
 std::vector<std::vector<Genome>> run(std::uint64_t seed, int generations) {
