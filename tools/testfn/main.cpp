@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <algorithm>
+#include <any>
 #include <cmath>
 #include <exception>
 #include <iostream>
@@ -26,6 +27,7 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/evo/neat/neat_options.hpp"
 #include "runtime/evo/neat/xor.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
 #include "runtime/evo/test_functions.hpp"
@@ -90,6 +92,37 @@ std::pair<double, double> mean_sd(const std::vector<double>& v) {
   double sq = 0.0;
   for (const double x : v) sq += (x - mean) * (x - mean);
   return {mean, v.size() > 1 ? std::sqrt(sq / static_cast<double>(v.size() - 1)) : 0.0};
+}
+
+// NEAT's settings from `KEY=VALUE` texts, through the option table: the keys, ranges and
+// words a script will use.
+esc::evo::NeatSettings neat_settings(const std::vector<std::string>& sets) {
+  std::any settings = esc::evo::NeatSettings{};
+  for (const std::string& set : sets) {
+    const auto eq = set.find('=');
+    const std::string key = set.substr(0, eq);
+    const auto& rows = esc::evo::neat_options();
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& o) { return o.key == key; });
+    if (eq == std::string::npos || row == rows.end())
+      throw std::invalid_argument("--set '" + set + "': not KEY=VALUE with a NEAT option's key");
+    const std::string value = set.substr(eq + 1);
+    esc::evo::OptionValue v;
+    if (row->form == esc::evo::OptionForm::Word) {
+      const auto w = std::find(row->words.begin(), row->words.end(), value);
+      if (w == row->words.end()) throw std::invalid_argument("--set " + key + ": '" + value + "' is not one of its words");
+      v.word = static_cast<std::size_t>(w - row->words.begin());
+    } else {
+      std::size_t used = 0;
+      try {
+        v.number = std::stod(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != value.size()) throw std::invalid_argument("--set " + key + ": '" + value + "' is not a number");
+    }
+    if (const std::string why = row->set(settings, v); !why.empty()) throw std::invalid_argument("--set " + key + " " + why);
+  }
+  return std::any_cast<esc::evo::NeatSettings>(settings);
 }
 
 int run_neat_xor(int runs, std::uint64_t first_seed, int generations, const esc::evo::NeatSettings& s) {
@@ -177,13 +210,13 @@ int main(int argc, char** argv) {
   int xor_runs = 100;
   std::uint64_t xor_seed = 1;
   int xor_generations = 100;
-  esc::evo::NeatSettings xs;
   xor_cmd->add_option("--runs", xor_runs, "independent runs")->check(CLI::Range(1, 1'000'000));
   xor_cmd->add_option("--first-seed", xor_seed, "seed of the first run; each next run the next seed");
   xor_cmd->add_option("--generations", xor_generations, "generations before a run counts as failed (NEAT C++: 100)")
       ->check(CLI::Range(1, 1'000'000));
-  xor_cmd->add_option("--population", xs.population, "networks per generation");
-  xor_cmd->add_option("--weight-mut-prob", xs.weight_mut_prob, "probability of a weight mutation (paper 0.8, test.ne 0.9)");
+  std::vector<std::string> xor_sets;
+  xor_cmd->add_option("--set", xor_sets, "KEY=VALUE: a NEAT option as docs/neat.md lists them (population=300, "
+                                          "activation=tanh, ...); repeatable");
 
   try {
     app.parse(argc, argv);
@@ -195,7 +228,7 @@ int main(int argc, char** argv) {
   try {
     if (nsga2->parsed()) return run_nsga2(zdt, zdt_n, zdt_seed, generations, ns);
     if (hv->parsed()) return run_hypervolume(reference);
-    if (xor_cmd->parsed()) return run_neat_xor(xor_runs, xor_seed, xor_generations, xs);
+    if (xor_cmd->parsed()) return run_neat_xor(xor_runs, xor_seed, xor_generations, neat_settings(xor_sets));
     return run_cmaes(function, n, seed, target, max_evals, s);
   } catch (const std::exception& e) {
     std::cerr << "esc-testfn: " << e.what() << '\n';
