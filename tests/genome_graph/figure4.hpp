@@ -8,7 +8,8 @@ namespace esc::genome::graph::testing {
 
 inline Graph figure4_parent1() {
   Graph g;
-  g.nodes = {{1, NodeKind::Input}, {2, NodeKind::Input}, {3, NodeKind::Bias}, {4, NodeKind::Output}, {5, NodeKind::Hidden}};
+  g.nodes = {
+      {1, NodeKind::Input}, {2, NodeKind::Input}, {3, NodeKind::Bias}, {4, NodeKind::Output}, {5, NodeKind::Hidden}};
   g.links = {{1, 4, 0.1, true, 1}, {2, 4, 0.2, false, 2}, {3, 4, 0.3, true, 3},
              {2, 5, 0.4, true, 4}, {5, 4, 0.5, true, 5}, {1, 5, 0.8, true, 8}};
   return g;

@@ -261,7 +261,8 @@ TEST(NeatOptions, EveryRowChecksItsRangeAndNamesTheOption) {
   EXPECT_THROW((void)make_neat(bad, {2, 1, 1, nullptr}), std::invalid_argument);
   // The activation is a word.
   const auto& rows = neat_options();
-  const auto act = std::find_if(rows.begin(), rows.end(), [](const AlgorithmOption& o) { return o.key == "activation"; });
+  const auto act =
+      std::find_if(rows.begin(), rows.end(), [](const AlgorithmOption& o) { return o.key == "activation"; });
   ASSERT_NE(act, rows.end());
   OptionValue tanh_word;
   tanh_word.word = 1;

@@ -109,7 +109,8 @@ esc::evo::NeatSettings neat_settings(const std::vector<std::string>& sets) {
     esc::evo::OptionValue v;
     if (row->form == esc::evo::OptionForm::Word) {
       const auto w = std::find(row->words.begin(), row->words.end(), value);
-      if (w == row->words.end()) throw std::invalid_argument("--set " + key + ": '" + value + "' is not one of its words");
+      if (w == row->words.end())
+        throw std::invalid_argument("--set " + key + ": '" + value + "' is not one of its words");
       v.word = static_cast<std::size_t>(w - row->words.begin());
     } else {
       std::size_t used = 0;
@@ -118,9 +119,11 @@ esc::evo::NeatSettings neat_settings(const std::vector<std::string>& sets) {
       } catch (const std::exception&) {
         used = 0;
       }
-      if (used == 0 || used != value.size()) throw std::invalid_argument("--set " + key + ": '" + value + "' is not a number");
+      if (used == 0 || used != value.size())
+        throw std::invalid_argument("--set " + key + ": '" + value + "' is not a number");
     }
-    if (const std::string why = row->set(settings, v); !why.empty()) throw std::invalid_argument("--set " + key + " " + why);
+    if (const std::string why = row->set(settings, v); !why.empty())
+      throw std::invalid_argument("--set " + key + " " + why);
   }
   return std::any_cast<esc::evo::NeatSettings>(settings);
 }

@@ -184,7 +184,8 @@ void Neat::breed(Rng& rng) {
           }
           dad = species_[other].members.front();
         }
-        const gg::Mating how = rng.uniform() < s_.mate_multipoint_prob ? gg::Mating::Multipoint : gg::Mating::MultipointAverage;
+        const gg::Mating how =
+            rng.uniform() < s_.mate_multipoint_prob ? gg::Mating::Multipoint : gg::Mating::MultipointAverage;
         baby = gg::mate(population_[mom], population_[dad], fitness_[mom], fitness_[dad], how, rng);
         if (rng.uniform() > s_.mate_only_prob || mom == dad ||
             gg::compatibility(population_[mom], population_[dad], c) == 0.0)

@@ -25,10 +25,10 @@ class NeatOptimizer final : public Optimizer {
         throw std::invalid_argument("NEAT: the start genome is not a graph genome: " + why);
       if (gg::count_nodes(start, gg::NodeKind::Input) != problem.inputs ||
           gg::count_nodes(start, gg::NodeKind::Output) != problem.outputs)
-        throw std::invalid_argument(fmt::format("NEAT: the start genome has {} inputs and {} outputs, the problem {} and {}",
-                                                gg::count_nodes(start, gg::NodeKind::Input),
-                                                gg::count_nodes(start, gg::NodeKind::Output), problem.inputs,
-                                                problem.outputs));
+        throw std::invalid_argument(
+            fmt::format("NEAT: the start genome has {} inputs and {} outputs, the problem {} and {}",
+                        gg::count_nodes(start, gg::NodeKind::Input), gg::count_nodes(start, gg::NodeKind::Output),
+                        problem.inputs, problem.outputs));
     }
     Rng init = init_stream(seed_);
     neat_.start(problem.start != nullptr ? &start : nullptr, init);
@@ -37,7 +37,8 @@ class NeatOptimizer final : public Optimizer {
   std::vector<Genome> ask(int generation) override {
     if (generation != neat_.breedings()) {
       if (generation != neat_.breedings() + 1 || !neat_.told())
-        throw std::logic_error(fmt::format("NEAT: generation {} asked after {} breedings", generation, neat_.breedings()));
+        throw std::logic_error(
+            fmt::format("NEAT: generation {} asked after {} breedings", generation, neat_.breedings()));
       Rng rng = breed_stream(seed_, generation);
       neat_.breed(rng);
     }
@@ -86,10 +87,13 @@ MemoryPeak neat_memory_peak(const NeatSettings& settings, std::size_t inputs, st
   const double pop = static_cast<double>(settings.population);
   const double links = 2.0 * static_cast<double>((inputs + 1) * outputs);
   const double nodes = static_cast<double>(inputs + 1 + 2 * outputs);
-  const double graph = sizeof(gg::Graph) + heap_bytes(nodes * sizeof(gg::NodeGene)) + heap_bytes(links * sizeof(gg::LinkGene));
-  const double flat = static_cast<double>(gg::encoded_size(static_cast<std::size_t>(nodes), static_cast<std::size_t>(links)));
+  const double graph =
+      sizeof(gg::Graph) + heap_bytes(nodes * sizeof(gg::NodeGene)) + heap_bytes(links * sizeof(gg::LinkGene));
+  const double flat =
+      static_cast<double>(gg::encoded_size(static_cast<std::size_t>(nodes), static_cast<std::size_t>(links)));
   const double bytes = 2.0 * pop * graph + rows_bytes(pop, flat) + pop * 3.0 * sizeof(double);
-  return {bytes, pop, fmt::format("NEAT's {} networks of about {:.0f} links, parents and children", settings.population, links),
+  return {bytes, pop,
+          fmt::format("NEAT's {} networks of about {:.0f} links, parents and children", settings.population, links),
           "neat.population"};
 }
 

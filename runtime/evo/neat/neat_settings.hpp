@@ -14,9 +14,9 @@ struct NeatSettings {
   double disjoint_coeff = 1.0;          // paper c2; test.ne
   double weight_coeff = 0.4;            // paper c3; test.ne mutdiff_coeff
   double threshold = 3.0;               // paper delta_t; test.ne compat_thresh
-  // Steering the threshold towards a number of species (0: off, the paper's XOR): before each
-  // generation after the second it moves by threshold_step, never below threshold_step
-  // (NEAT C++ forks: num_species_target 10, compat_mod 0.3).
+  // Steering the threshold towards a number of species (0: off, the paper's XOR): at every
+  // breeding but the first it moves by threshold_step towards the target, never below
+  // threshold_step (Lehman's fork of NEAT C++: num_species_target 10, compat_mod 0.3).
   int target_species = 0;
   double threshold_step = 0.3;
   int dropoff_age = 15;                 // paper, test.ne: a species not improving for this long x 0.01

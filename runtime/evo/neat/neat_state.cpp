@@ -74,7 +74,8 @@ void Neat::load(std::span<const std::uint8_t> state) {
   if (tail.get<std::uint64_t>() != fnv1a(body)) fail("the checksum does not match: the state is damaged");
   StateReader r(body);
   if (r.text() != kFormat) fail("not a NEAT state");
-  if (const auto v = r.get<std::uint32_t>(); v != kVersion) fail("format version " + std::to_string(v) + ", expected 1");
+  if (const auto v = r.get<std::uint32_t>(); v != kVersion)
+    fail("format version " + std::to_string(v) + ", expected 1");
   if (r.get<std::uint64_t>() != inputs_ || r.get<std::uint64_t>() != outputs_)
     fail("saved for other numbers of inputs or outputs");
   if (r.get<std::int32_t>() != s_.population) fail("saved for another population size");

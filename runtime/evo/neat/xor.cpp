@@ -43,7 +43,8 @@ XorRun solve_xor(const NeatSettings& settings, std::uint64_t seed, int max_gener
     std::vector<Outcome> outcomes(candidates.size());
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       gg::Graph net;
-      if (const std::string why = gg::decode(candidates[i], net); !why.empty()) throw std::logic_error("NEAT bred " + why);
+      if (const std::string why = gg::decode(candidates[i], net); !why.empty())
+        throw std::logic_error("NEAT bred " + why);
       const XorScore s = score_xor(net);
       outcomes[i].objectives = {s.fitness};
       if (s.solved && !run.solved) {

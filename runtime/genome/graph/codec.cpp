@@ -41,9 +41,11 @@ std::vector<double> encode(const Graph& g) {
 }
 
 std::string decode(std::span<const double> genes, Graph& out) {
-  if (genes.size() < kHeader) return fmt::format("a graph genome has at least {} numbers, found {}", kHeader, genes.size());
+  if (genes.size() < kHeader)
+    return fmt::format("a graph genome has at least {} numbers, found {}", kHeader, genes.size());
   if (genes[0] != kCodecVersion) return fmt::format("graph genome version {}, expected {}", genes[0], kCodecVersion);
-  if (!whole(genes[1], 0, kMaxExact) || !whole(genes[2], 0, kMaxExact)) return "the node or link count is not a whole number";
+  if (!whole(genes[1], 0, kMaxExact) || !whole(genes[2], 0, kMaxExact))
+    return "the node or link count is not a whole number";
   const auto nodes = static_cast<std::size_t>(genes[1]);
   const auto links = static_cast<std::size_t>(genes[2]);
   if (nodes > genes.size() || links > genes.size() || genes.size() != encoded_size(nodes, links))
@@ -55,7 +57,8 @@ std::string decode(std::span<const double> genes, Graph& out) {
   std::size_t at = kHeader;
   for (std::size_t i = 0; i < nodes; ++i, at += kCodedNodeWidth) {
     const double id = genes[at], kind = genes[at + 1], act = genes[at + 2];
-    if (!whole(id, 1, kMaxExact)) return fmt::format("node {} of {}: its id {} is not a whole number from 1", i + 1, nodes, id);
+    if (!whole(id, 1, kMaxExact))
+      return fmt::format("node {} of {}: its id {} is not a whole number from 1", i + 1, nodes, id);
     if (!whole(kind, 0, static_cast<double>(NodeKind::Output)))
       return fmt::format("node {}: kind {} is none of input, bias, hidden, output", id, kind);
     if (!whole(act, 0, static_cast<double>(Activation::Linear)))
@@ -68,8 +71,10 @@ std::string decode(std::span<const double> genes, Graph& out) {
       return fmt::format("link {} of {}: its innovation {} is not a whole number from 1", i + 1, links, innovation);
     if (!whole(in, 1, kMaxExact) || !whole(o, 1, kMaxExact))
       return fmt::format("link {}: a node id is not a whole number from 1", innovation);
-    if (enabled != 0.0 && enabled != 1.0) return fmt::format("link {}: enabled is {}, neither 0 nor 1", innovation, enabled);
-    g.links.push_back({static_cast<Id>(in), static_cast<Id>(o), genes[at + 2], enabled == 1.0, static_cast<Id>(innovation)});
+    if (enabled != 0.0 && enabled != 1.0)
+      return fmt::format("link {}: enabled is {}, neither 0 nor 1", innovation, enabled);
+    g.links.push_back(
+        {static_cast<Id>(in), static_cast<Id>(o), genes[at + 2], enabled == 1.0, static_cast<Id>(innovation)});
   }
   if (std::string why = misfit(g); !why.empty()) return why;
   out = std::move(g);

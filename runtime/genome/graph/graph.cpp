@@ -59,7 +59,8 @@ std::string misfit(const Graph& g) {
       return n.id == g.nodes[i - 1].id ? fmt::format("node {} appears twice", n.id)
                                        : fmt::format("node {} comes after node {}: nodes must be in id order", n.id,
                                                      g.nodes[i - 1].id);
-    if (is_sensor(n.kind) && others) return fmt::format("{} node {} comes after a hidden or output node", kind_name(n.kind), n.id);
+    if (is_sensor(n.kind) && others)
+      return fmt::format("{} node {} comes after a hidden or output node", kind_name(n.kind), n.id);
     others = others || !is_sensor(n.kind);
     biases += n.kind == NodeKind::Bias ? 1 : 0;
     outputs += n.kind == NodeKind::Output ? 1 : 0;
@@ -76,7 +77,8 @@ std::string misfit(const Graph& g) {
                                g.links[i - 1].innovation);
     if (l.innovation <= 0) return fmt::format("link {} has an innovation below 1", l.innovation);
     for (const Id end : {l.in, l.out})
-      if (node_index(g, end) == g.nodes.size()) return fmt::format("link {} ({} -> {}) reaches unknown node {}", l.innovation, l.in, l.out, end);
+      if (node_index(g, end) == g.nodes.size())
+        return fmt::format("link {} ({} -> {}) reaches unknown node {}", l.innovation, l.in, l.out, end);
     if (const NodeKind k = g.nodes[node_index(g, l.out)].kind; is_sensor(k))
       return fmt::format("link {} ends at {} node {}: sensors take no links", l.innovation, kind_name(k), l.out);
     if (!pairs.insert({l.in, l.out}).second)
@@ -87,12 +89,14 @@ std::string misfit(const Graph& g) {
 }
 
 std::size_t node_index(const Graph& g, Id id) {
-  const auto it = std::lower_bound(g.nodes.begin(), g.nodes.end(), id, [](const NodeGene& n, Id v) { return n.id < v; });
+  const auto it =
+      std::lower_bound(g.nodes.begin(), g.nodes.end(), id, [](const NodeGene& n, Id v) { return n.id < v; });
   return it != g.nodes.end() && it->id == id ? static_cast<std::size_t>(it - g.nodes.begin()) : g.nodes.size();
 }
 
 std::size_t count_nodes(const Graph& g, NodeKind kind) {
-  return static_cast<std::size_t>(std::count_if(g.nodes.begin(), g.nodes.end(), [&](const NodeGene& n) { return n.kind == kind; }));
+  return static_cast<std::size_t>(
+      std::count_if(g.nodes.begin(), g.nodes.end(), [&](const NodeGene& n) { return n.kind == kind; }));
 }
 
 std::size_t sensor_count(const Graph& g) {
@@ -100,7 +104,8 @@ std::size_t sensor_count(const Graph& g) {
 }
 
 std::size_t enabled_links(const Graph& g) {
-  return static_cast<std::size_t>(std::count_if(g.links.begin(), g.links.end(), [](const LinkGene& l) { return l.enabled; }));
+  return static_cast<std::size_t>(
+      std::count_if(g.links.begin(), g.links.end(), [](const LinkGene& l) { return l.enabled; }));
 }
 
 Id next_node_id(const Graph& g) { return g.nodes.empty() ? 1 : g.nodes.back().id + 1; }
@@ -113,7 +118,8 @@ void insert_link(Graph& g, const LinkGene& link) {
 }
 
 void insert_node(Graph& g, const NodeGene& node) {
-  const auto at = std::upper_bound(g.nodes.begin(), g.nodes.end(), node.id, [](Id v, const NodeGene& n) { return v < n.id; });
+  const auto at =
+      std::upper_bound(g.nodes.begin(), g.nodes.end(), node.id, [](Id v, const NodeGene& n) { return v < n.id; });
   g.nodes.insert(at, node);
 }
 

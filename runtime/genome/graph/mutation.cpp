@@ -11,7 +11,9 @@ namespace {
 double sign(Rng& rng) { return rng.below(2) == 0 ? 1.0 : -1.0; }
 
 // NEAT C++'s randint(lo, hi), both ends included.
-std::size_t pick(Rng& rng, std::size_t lo, std::size_t hi) { return lo + static_cast<std::size_t>(rng.below(hi - lo + 1)); }
+std::size_t pick(Rng& rng, std::size_t lo, std::size_t hi) {
+  return lo + static_cast<std::size_t>(rng.below(hi - lo + 1));
+}
 
 bool from_bias(const Graph& g, const LinkGene& l) { return g.nodes[node_index(g, l.in)].kind == NodeKind::Bias; }
 
