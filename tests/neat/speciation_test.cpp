@@ -52,6 +52,20 @@ TEST(Speciation, AStagnantSpeciesBreedsAtOnePercent) {
   EXPECT_EQ(sp[0].last_improved, 5);   // 8 is no improvement on 100
 }
 
+TEST(Speciation, NegativeFitnessIsSharedShiftedButRecordedAsMeasured) {
+  std::vector<Species> sp = {species({0, 1})};
+  const Shares first = share_fitness(sp, std::vector<double>{-5.0, -7.0}, NeatSettings{});
+  EXPECT_EQ(first.shared, (std::vector<double>{1.0, 0.0}));   // shifted by 7, over 2
+  EXPECT_EQ(sp[0].best_ever, -5.0);
+  EXPECT_EQ(sp[0].last_improved, 1);
+  // A generation later every value has risen by 1 (the shift with them): an improvement.
+  sp[0].age = 2;
+  const Shares second = share_fitness(sp, std::vector<double>{-4.0, -6.0}, NeatSettings{});
+  EXPECT_EQ(second.shared, (std::vector<double>{1.0, 0.0}));
+  EXPECT_EQ(sp[0].best_ever, -4.0);
+  EXPECT_EQ(sp[0].last_improved, 2);
+}
+
 TEST(Speciation, AllZeroFitnessGivesEachMemberOneOffspring) {
   std::vector<Species> sp = {species({0}), species({1, 2, 3})};
   const std::vector<double> f = {0.0, 0.0, 0.0, 0.0};

@@ -49,7 +49,7 @@ void Neat::speciate_start() {
   for (std::size_t i = 0; i < population_.size(); ++i) {
     const std::size_t k = find_species(population_[i], reps, coefficients(), threshold_);
     if (k == reps.size()) {
-      species_.push_back({next_species_++, 1, 0, 0.0, false, {}});
+      species_.push_back({next_species_++, 1, 0, kNoRecord, false, {}});
       reps.push_back(&population_[i]);
     }
     species_[k].members.push_back(i);
@@ -64,9 +64,8 @@ void Neat::tell(std::span<const double> fitness) {
   for (const double f : fitness)
     if (std::isfinite(f)) low = std::min(low, f);
   if (!std::isfinite(low)) low = 0.0;
-  const double shift = low < 0.0 ? -low : 0.0;
   fitness_.resize(fitness.size());
-  for (std::size_t i = 0; i < fitness.size(); ++i) fitness_[i] = (std::isfinite(fitness[i]) ? fitness[i] : low) + shift;
+  for (std::size_t i = 0; i < fitness.size(); ++i) fitness_[i] = std::isfinite(fitness[i]) ? fitness[i] : low;
 }
 
 void Neat::mutate(gg::Graph& g, gg::InnovationRecord& record, Rng& rng) const {
@@ -197,7 +196,7 @@ void Neat::breed(Rng& rng) {
       for (const Rep& r : reps) rep_graphs.push_back(r.child ? &next[r.index] : &population_[r.index]);
       const std::size_t to = find_species(next.back(), rep_graphs, c, threshold_);
       if (to == reps.size()) {
-        grown.push_back({next_species_++, 1, 0, 0.0, true, {}});
+        grown.push_back({next_species_++, 1, 0, kNoRecord, true, {}});
         reps.push_back({true, next.size() - 1});
       }
       grown[to].members.push_back(next.size() - 1);

@@ -32,9 +32,8 @@ class Neat {
   // copies have their weights mutated instead. Then speciated in order.
   void start(const genome::graph::Graph* start, Rng& init);
 
-  // The fitness of every member, in population order (maximised; any sign: a generation
-  // with a negative one is shifted up by its minimum, a value that is not finite counts
-  // as the lowest finite one; NEAT needs fitness >= 0).
+  // The fitness of every member, in population order (maximised, of any sign: see
+  // share_fitness; a value that is not finite counts as the generation's lowest finite one).
   void tell(std::span<const double> fitness);
 
   // The next generation from the told one; draws from `rng` only.
@@ -61,13 +60,13 @@ class Neat {
   std::size_t inputs_;
   std::size_t outputs_;
   std::vector<genome::graph::Graph> population_;
-  std::vector<double> fitness_;        // shifted, >= 0; empty until told
+  std::vector<double> fitness_;        // as measured, finite; empty until told
   std::vector<Species> species_;
   genome::graph::Id next_innovation_ = 1;
   genome::graph::Id next_node_ = 1;
   std::int64_t next_species_ = 1;
   double threshold_;
-  double highest_ = 0.0;               // the best fitness ever (highest_fitness)
+  double highest_ = kNoRecord;         // the best fitness ever (highest_fitness)
   int highest_last_changed_ = 0;       // generations since it rose
   std::int64_t breedings_ = 0;
 };

@@ -29,6 +29,9 @@ std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
   return h;
 }
 
+// A best fitness: a finite number, or none yet.
+bool record(double v) { return std::isfinite(v) || v == kNoRecord; }
+
 [[noreturn]] void fail(const std::string& why) { throw std::invalid_argument("NEAT state: " + why); }
 
 }  // namespace
@@ -89,7 +92,7 @@ void Neat::load(std::span<const std::uint8_t> state) {
   next.highest_ = r.get<double>();
   next.highest_last_changed_ = r.get<std::int32_t>();
   if (next.breedings_ < 0 || next.highest_last_changed_ < 0 || !(next.threshold_ > 0.0) ||
-      !std::isfinite(next.threshold_) || !(next.highest_ >= 0.0) || !std::isfinite(next.highest_))
+      !std::isfinite(next.threshold_) || !record(next.highest_))
     fail("a counter or the threshold is out of range");
 
   const std::size_t members = r.count(sizeof(std::uint64_t));
@@ -107,7 +110,7 @@ void Neat::load(std::span<const std::uint8_t> state) {
   next.fitness_ = r.doubles();
   if (!next.fitness_.empty() && next.fitness_.size() != members) fail("fitness values do not match the members");
   for (const double f : next.fitness_)
-    if (!(f >= 0.0) || !std::isfinite(f)) fail("a fitness is negative or not finite");
+    if (!std::isfinite(f)) fail("a fitness is not finite");
 
   const std::size_t species = r.count(1);
   next.species_.assign(species, {});
@@ -128,7 +131,7 @@ void Neat::load(std::span<const std::uint8_t> state) {
       m = static_cast<std::size_t>(v);
     }
     if (sp.members.empty() || sp.id <= 0 || sp.id >= next.next_species_ || sp.age < 1 || sp.last_improved < 0 ||
-        sp.last_improved > sp.age || !(sp.best_ever >= 0.0) || !std::isfinite(sp.best_ever))
+        sp.last_improved > sp.age || !record(sp.best_ever))
       fail("species " + std::to_string(sp.id) + " is out of range");
   }
   if (std::find(placed.begin(), placed.end(), 0) != placed.end()) fail("the species do not partition the population");

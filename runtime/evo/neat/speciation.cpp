@@ -15,6 +15,8 @@ std::size_t find_species(const genome::graph::Graph& g, std::span<const genome::
 Shares share_fitness(std::vector<Species>& species, std::span<const double> fitness, const NeatSettings& s) {
   Shares out;
   out.shared.assign(fitness.size(), 0.0);
+  const double lowest = fitness.empty() ? 0.0 : *std::min_element(fitness.begin(), fitness.end());
+  const double shift = lowest < 0.0 ? -lowest : 0.0;
   for (Species& sp : species) {
     std::stable_sort(sp.members.begin(), sp.members.end(),
                      [&](std::size_t a, std::size_t b) { return fitness[a] > fitness[b]; });
@@ -22,7 +24,7 @@ Shares share_fitness(std::vector<Species>& species, std::span<const double> fitn
     if (debt == 0) debt = 1;
     const auto size = static_cast<double>(sp.members.size());
     for (const std::size_t m : sp.members) {
-      double f = fitness[m];
+      double f = fitness[m] + shift;
       if (debt >= 1) f *= kStagnantFactor;
       out.shared[m] = f / size;
     }

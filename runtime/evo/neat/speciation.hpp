@@ -4,6 +4,7 @@
 // the breeding itself so that each step is checked on a small hand-built population.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -12,11 +13,15 @@
 
 namespace esc::evo {
 
+// A record before any fitness was seen (NEAT C++ starts its records at 0, which a fitness
+// that may be negative would never beat).
+inline constexpr double kNoRecord = -std::numeric_limits<double>::infinity();
+
 struct Species {
   std::int64_t id = 0;
   int age = 1;
   int last_improved = 0;      // its age when its best fitness last rose (age_of_last_improvement)
-  double best_ever = 0.0;     // max_fitness_ever
+  double best_ever = kNoRecord;   // max_fitness_ever, as measured
   bool novel = false;         // founded in the last breeding: not aged at its end
   std::vector<std::size_t> members;   // population indices; once ranked, the champion first
   friend bool operator==(const Species&, const Species&) = default;
@@ -29,7 +34,7 @@ struct Species {
                                        const genome::graph::Coefficients& c, double threshold);
 
 struct Shares {
-  std::vector<double> shared;          // per population index: fitness / species size, x 0.01 if stagnant
+  std::vector<double> shared;          // per population index: shifted fitness / species size, x 0.01 if stagnant
   std::vector<std::size_t> parents;    // per species: how many of its best breed
 };
 
@@ -37,7 +42,9 @@ struct Shares {
 // ties in population order), penalises a species that has not improved for dropoff_age
 // generations (age - last_improved + 1 >= dropoff_age), divides by its size (explicit
 // fitness sharing), records an improvement, and keeps floor(survival_thresh x size + 1)
-// parents. `fitness` must be non-negative.
+// parents. NEAT needs fitness >= 0: when the lowest of `fitness` (all finite) is negative,
+// every value is shifted up by it before sharing; records and ranks use the values as
+// measured, so that a shift that changes from one generation to the next moves no record.
 [[nodiscard]] Shares share_fitness(std::vector<Species>& species, std::span<const double> fitness,
                                    const NeatSettings& s);
 
