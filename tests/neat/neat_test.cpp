@@ -12,6 +12,7 @@
 #include "runtime/evo/neat/neat_optimizer.hpp"
 #include "runtime/evo/neat/neat_options.hpp"
 #include "runtime/genome/graph/codec.hpp"
+#include "runtime/genome/graph/network.hpp"
 
 namespace esc::evo {
 namespace {
@@ -75,6 +76,7 @@ TEST(Neat, PopulationStaysWholeAndSpeciesPartitionIt) {
   neat.start(nullptr, init);
   std::size_t most_species = 0;
   std::size_t most_hidden = 0;
+  std::size_t loops = 0;
   for (int g = 0; g < 40; ++g) {
     std::vector<Genome> flat;
     for (const gg::Graph& x : neat.population()) flat.push_back(gg::encode(x));
@@ -94,11 +96,17 @@ TEST(Neat, PopulationStaysWholeAndSpeciesPartitionIt) {
     for (const gg::Graph& x : neat.population()) {
       ASSERT_EQ(gg::misfit(x), "");
       most_hidden = std::max(most_hidden, gg::count_nodes(x, gg::NodeKind::Hidden));
+      loops += static_cast<std::size_t>(
+          std::count_if(x.links.begin(), x.links.end(), [](const gg::LinkGene& l) { return l.in == l.out; }));
+      gg::Network net(x);   // every evolved genome builds a network that runs, recurrent or not
+      for (int t = 0; t < 3; ++t) (void)net.step(std::vector<double>{0.5, -0.5, 1.0});
+      for (const double y : net.output()) ASSERT_TRUE(std::isfinite(y));
     }
     most_species = std::max(most_species, neat.species().size());
   }
   EXPECT_GT(most_species, 1U);
   EXPECT_GT(most_hidden, 1U);
+  EXPECT_GT(loops, 0U);   // recur_only_prob 0.2 made recurrent links, some of them loops
   EXPECT_GE(neat.threshold(), busy().threshold_step);
 }
 
