@@ -91,7 +91,9 @@ MemoryPeak neat_memory_peak(const NeatSettings& settings, std::size_t inputs, st
       sizeof(gg::Graph) + heap_bytes(nodes * sizeof(gg::NodeGene)) + heap_bytes(links * sizeof(gg::LinkGene));
   const double flat =
       static_cast<double>(gg::encoded_size(static_cast<std::size_t>(nodes), static_cast<std::size_t>(links)));
-  const double bytes = 2.0 * pop * graph + rows_bytes(pop, flat) + pop * 3.0 * sizeof(double);
+  // The saved state: each genome's flat form with its length, its fitness and species index.
+  const double state = pop * (flat + 3.0) * sizeof(double);
+  const double bytes = 2.0 * pop * graph + rows_bytes(pop, flat) + pop * 3.0 * sizeof(double) + writer_bytes(state);
   return {bytes, pop,
           fmt::format("NEAT's {} networks of about {:.0f} links, parents and children", settings.population, links),
           "neat.population"};

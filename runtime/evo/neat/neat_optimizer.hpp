@@ -32,7 +32,8 @@ struct NeatProblem {
 [[nodiscard]] std::size_t neat_population(const NeatSettings& settings);
 
 // What one run's NEAT holds at its peak, while breeding: two populations of graphs (the
-// parents and the children) and their flat copies handed out, each genome counted at twice
+// parents and the children), their flat copies handed out and the saved state's writer
+// (state_bytes.hpp, grown by doubling), each genome counted at twice
 // the minimal start's links and its nodes plus one hidden node per output (a net that has
 // grown; XOR's solutions have 2 to 3 times the start's links).
 [[nodiscard]] MemoryPeak neat_memory_peak(const NeatSettings& settings, std::size_t inputs, std::size_t outputs);
