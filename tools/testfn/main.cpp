@@ -10,16 +10,25 @@
 //   esc-testfn hypervolume --reference R... the hypervolume of the points read from standard
 //                                          input (one per line), for the script's cross-check
 //                                          against DEAP's.
+//   esc-testfn neat-xor --runs N ...       NEAT on the paper's XOR (docs/neat-xor.md): one
+//                                          JSON line per run (seeds first-seed, +1, ...),
+//                                          then one with the summary.
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
+#include <algorithm>
+#include <any>
+#include <cmath>
 #include <exception>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "runtime/evo/neat/neat_options.hpp"
+#include "runtime/evo/neat/xor.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
 #include "runtime/evo/test_functions.hpp"
 
@@ -74,6 +83,82 @@ int run_hypervolume(const std::vector<double>& reference) {
   return 0;
 }
 
+// Mean and sample standard deviation.
+std::pair<double, double> mean_sd(const std::vector<double>& v) {
+  if (v.empty()) return {0.0, 0.0};
+  double sum = 0.0;
+  for (const double x : v) sum += x;
+  const double mean = sum / static_cast<double>(v.size());
+  double sq = 0.0;
+  for (const double x : v) sq += (x - mean) * (x - mean);
+  return {mean, v.size() > 1 ? std::sqrt(sq / static_cast<double>(v.size() - 1)) : 0.0};
+}
+
+// NEAT's settings from `KEY=VALUE` texts, through the option table: the keys, ranges and
+// words a script will use.
+esc::evo::NeatSettings neat_settings(const std::vector<std::string>& sets) {
+  std::any settings = esc::evo::NeatSettings{};
+  for (const std::string& set : sets) {
+    const auto eq = set.find('=');
+    const std::string key = set.substr(0, eq);
+    const auto& rows = esc::evo::neat_options();
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& o) { return o.key == key; });
+    if (eq == std::string::npos || row == rows.end())
+      throw std::invalid_argument("--set '" + set + "': not KEY=VALUE with a NEAT option's key");
+    const std::string value = set.substr(eq + 1);
+    esc::evo::OptionValue v;
+    if (row->form == esc::evo::OptionForm::Word) {
+      const auto w = std::find(row->words.begin(), row->words.end(), value);
+      if (w == row->words.end())
+        throw std::invalid_argument("--set " + key + ": '" + value + "' is not one of its words");
+      v.word = static_cast<std::size_t>(w - row->words.begin());
+    } else {
+      std::size_t used = 0;
+      try {
+        v.number = std::stod(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != value.size())
+        throw std::invalid_argument("--set " + key + ": '" + value + "' is not a number");
+    }
+    if (const std::string why = row->set(settings, v); !why.empty())
+      throw std::invalid_argument("--set " + key + " " + why);
+  }
+  return std::any_cast<esc::evo::NeatSettings>(settings);
+}
+
+int run_neat_xor(int runs, std::uint64_t first_seed, int generations, const esc::evo::NeatSettings& s) {
+  std::vector<double> evaluations, generations_used, hidden, links;
+  double worst = 0.0;
+  for (int r = 0; r < runs; ++r) {
+    const auto run = esc::evo::solve_xor(s, first_seed + static_cast<std::uint64_t>(r), generations);
+    nlohmann::json line{{"seed", run.seed},       {"solved", run.solved},
+                        {"generations", run.generations}, {"evaluations", run.evaluations},
+                        {"hidden_nodes", nullptr}, {"enabled_links", nullptr}};
+    if (run.solved) {
+      line["hidden_nodes"] = run.hidden_nodes;
+      line["enabled_links"] = run.enabled_links;
+      evaluations.push_back(static_cast<double>(run.evaluations));
+      generations_used.push_back(run.generations);
+      hidden.push_back(static_cast<double>(run.hidden_nodes));
+      links.push_back(static_cast<double>(run.enabled_links));
+      worst = std::max(worst, static_cast<double>(run.evaluations));
+    }
+    std::cout << line.dump() << std::endl;
+  }
+  const auto [e_mean, e_sd] = mean_sd(evaluations);
+  const auto [g_mean, g_sd] = mean_sd(generations_used);
+  const auto [h_mean, h_sd] = mean_sd(hidden);
+  const auto [l_mean, l_sd] = mean_sd(links);
+  nlohmann::json summary{{"runs", runs},           {"solved", evaluations.size()}, {"evaluations_mean", e_mean},
+                         {"evaluations_sd", e_sd}, {"evaluations_worst", worst},  {"generations_mean", g_mean},
+                         {"generations_sd", g_sd}, {"hidden_nodes_mean", h_mean}, {"hidden_nodes_sd", h_sd},
+                         {"enabled_links_mean", l_mean}, {"enabled_links_sd", l_sd}};
+  std::cout << summary.dump() << '\n';
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -123,6 +208,19 @@ int main(int argc, char** argv) {
   std::vector<double> reference;
   hv->add_option("--reference", reference, "the reference point, 2 or 3 numbers")->required();
 
+  CLI::App* xor_cmd = app.add_subcommand("neat-xor", "NEAT on XOR with the paper's setup; one JSON line per run, then "
+                                                    "the summary (solved runs, evaluations, hidden nodes, links)");
+  int xor_runs = 100;
+  std::uint64_t xor_seed = 1;
+  int xor_generations = 100;
+  xor_cmd->add_option("--runs", xor_runs, "independent runs")->check(CLI::Range(1, 1'000'000));
+  xor_cmd->add_option("--first-seed", xor_seed, "seed of the first run; each next run the next seed");
+  xor_cmd->add_option("--generations", xor_generations, "generations before a run counts as failed (NEAT C++: 100)")
+      ->check(CLI::Range(1, 1'000'000));
+  std::vector<std::string> xor_sets;
+  xor_cmd->add_option("--set", xor_sets, "KEY=VALUE: a NEAT option as docs/neat.md lists them (population=300, "
+                                          "activation=tanh, ...); repeatable");
+
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty() && function.empty()) throw CLI::RequiredError("--function");
@@ -133,6 +231,7 @@ int main(int argc, char** argv) {
   try {
     if (nsga2->parsed()) return run_nsga2(zdt, zdt_n, zdt_seed, generations, ns);
     if (hv->parsed()) return run_hypervolume(reference);
+    if (xor_cmd->parsed()) return run_neat_xor(xor_runs, xor_seed, xor_generations, neat_settings(xor_sets));
     return run_cmaes(function, n, seed, target, max_evals, s);
   } catch (const std::exception& e) {
     std::cerr << "esc-testfn: " << e.what() << '\n';

@@ -1,0 +1,41 @@
+#pragma once
+// NEAT (neat.hpp) as an Optimizer: generation 0 is the first population, drawn from
+// Rng(seed, Init); generation g is bred from g - 1 with Rng(seed, Breed, g) alone. Each
+// candidate is a graph genome in its flat form (genome/graph/codec.hpp). Its metrics are
+// the species count, the mean hidden nodes and enabled links of the generation told, and
+// the compatibility threshold. Registration needs the four functions below and the option
+// table (neat_options.hpp).
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "runtime/evo/memory_peak.hpp"
+#include "runtime/evo/neat/neat_settings.hpp"
+#include "runtime/evo/optimizer.hpp"
+
+namespace esc::evo {
+
+// What one run of NEAT evolves: networks of `inputs` inputs and `outputs` outputs (a bias
+// is added), from `seed`; `start`, when not null, a graph genome every run begins from.
+struct NeatProblem {
+  std::size_t inputs = 0;
+  std::size_t outputs = 0;
+  std::uint64_t seed = 0;
+  const Genome* start = nullptr;
+};
+
+// Throws std::invalid_argument on impossible settings or a start that is not a graph genome
+// of that many inputs and outputs.
+[[nodiscard]] std::unique_ptr<Optimizer> make_neat(const NeatSettings& settings, const NeatProblem& problem);
+
+// Candidates per generation.
+[[nodiscard]] std::size_t neat_population(const NeatSettings& settings);
+
+// What one run's NEAT holds at its peak, while breeding: two populations of graphs (the
+// parents and the children), their flat copies handed out and the saved state's writer
+// (state_bytes.hpp, grown by doubling), each genome counted at twice
+// the minimal start's links and its nodes plus one hidden node per output (a net that has
+// grown; XOR's solutions have 2 to 3 times the start's links).
+[[nodiscard]] MemoryPeak neat_memory_peak(const NeatSettings& settings, std::size_t inputs, std::size_t outputs);
+
+}  // namespace esc::evo
