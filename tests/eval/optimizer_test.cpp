@@ -200,7 +200,7 @@ TEST(Optimizer, AStartGenomeIsCandidateZeroOfGenerationZero) {
 
 TEST(Optimizer, EvaluatingAStoredGenomeAsksForItAloneAndKeepsNoState) {
   const evo::Genome g{0.25, -0.5};
-  auto o = evo::make_evaluate_only({2, nullptr, 1, &g, {}, {}});
+  auto o = evo::make_evaluate_only({2, {}, 1, &g, {}, {}});
   EXPECT_EQ(o->ask(0), std::vector<evo::Genome>{g});
   o->tell(measure({g}));
   EXPECT_TRUE(o->save().empty());
