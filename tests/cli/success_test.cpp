@@ -12,6 +12,7 @@
 
 #include "tests/cli/esc_process.hpp"
 #include "tests/cli/results_support.hpp"
+#include "tests/cli/summary_values.hpp"
 
 namespace {
 
@@ -28,7 +29,7 @@ TEST(Success, AStudyCountsComparesAndReportsSuccess) {
   const Outcome o = esc("run " + study() + " --generations " + std::to_string(kGenerations) + " --threads 2 --out " +
                         out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json s = read_json(out / "summary.json");
+  const json s = summary_with_values(out);
   int successes = 0, failures = 0;
   for (const json& c : s.at("conditions")) {
     EXPECT_EQ(c.at("success"), "avoid > 120") << c.dump();
@@ -153,7 +154,7 @@ TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
   ASSERT_EQ(esc("run " + study() + " --generations 40 --seed 5 --threads 2 --out " + going.string()).status, 0);
   const Outcome o = esc(line + "--out " + stopping.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json full = read_json(going / "summary.json"), cut = read_json(stopping / "summary.json");
+  const json full = summary_with_values(going), cut = summary_with_values(stopping);
   int stopped = 0, unsolved = 0, generations = 0;
   std::string replayed;   // `esc replay` arguments of the first run that stopped
   std::size_t replayed_generations = 0;
