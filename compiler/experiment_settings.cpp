@@ -66,6 +66,10 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          return true;
        },
        [](const X& x) { return x.stop_at_success ? std::string("on") : std::string(); }},
+      // Resolved only when not the default, so that runs from before it keep their settings.
+      {"members_every", "store a front every this many generations, and at each run's last",
+       &read_positive<&X::members_every>,
+       [](const X& x) { return x.members_every == eval::kMembersEvery ? std::string() : count_text<&X::members_every>(x); }},
       // Resolved only when not the ES, so that runs from before it keep their settings.
       {"networks", "the algorithm that evolves the networks compared without `by` (`es`, `cmaes`)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {

@@ -2,8 +2,8 @@
 // The experiment's own settings: `epochs`, `steps`, `runs` and `seed` (items of an
 // experiment block, `--set KEY=VALUE` and resolved settings under one name), and
 // `generations` (`--set generations`, for the ES and the GP alike; scripts give it in
-// `evolve es(...)` / `evolve gp(...)`), `stop_at_success` (`stop at success` in a script) and
-// `networks`. Each row reads and checks its value.
+// `evolve es(...)` / `evolve gp(...)`), `stop_at_success` (`stop at success` in a script),
+// `members_every` and `networks`. Each row reads and checks its value.
 #include <string>
 #include <string_view>
 #include <vector>

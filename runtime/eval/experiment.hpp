@@ -161,6 +161,10 @@ struct Evolution {
   std::any settings;
 };
 
+// `members_every`'s default: a front every 10 generations keeps 100 of a 1000-generation
+// run's, enough to follow it, at a tenth of the bytes (docs/results-store.md measures them).
+inline constexpr int kMembersEvery = 10;
+
 struct ExperimentSpec {
   // The paper's algorithms, whose settings have fields of their own (`es`, `gp`).
   static constexpr const char* kEs = "es";
@@ -181,6 +185,11 @@ struct ExperimentSpec {
   // test (runs.stopped `stop_at_success`), as Lehman & Stanley's do; the evaluations to
   // success are those of a run that goes on.
   bool stop_at_success = false;
+  // A front (NSGA-II's first, novelty and fitness) is stored at the generations that are
+  // multiples of this and at each run's last, and not again where it equals the last one
+  // stored (docs/results-store.md); an archive's changes are stored every generation. What is
+  // stored, never what is computed: results do not depend on it.
+  int members_every = kMembersEvery;
   int epochs = 10;
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;

@@ -87,7 +87,11 @@ void RunJob::evaluated(std::span<const evo::Outcome> outcomes, const GenerationS
   if (state_.transfer && stats.generation == 0 && !fitness.empty()) state_.transfer->fitness_here = fitness.front();
   if (const auto best = improve_best(state_, stats.generation, fitness)) state_.best_genome = candidates_[*best];
   state_.optimizer.bytes = optimizer_->save();
-  if (state_.member_layout) {
+  state_.members.clear();
+  state_.members_due = state_.member_layout &&
+                       (state_.member_layout->kind == evo::MemberKind::Archive ||
+                        stats.generation % spec_->members_every == 0 || finished());
+  if (state_.members_due) {
     state_.members = std::move(optimizer_->members(true)->members);
     const std::vector<bool>& minimized = state_.member_layout->minimized;
     for (evo::Member& m : state_.members)

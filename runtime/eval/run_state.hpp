@@ -85,10 +85,13 @@ struct RunState {
   std::optional<std::int64_t> success_evaluation{};
   // What the optimizer keeps beside the best, for optimizers that keep something: its layout,
   // and the last finished generation's members (a front whole, an archive's changed cells),
-  // objectives as measured (a minimised one not negated). Stored with that generation, never
+  // objectives as measured (a minimised one not negated), when that generation stores them
+  // (`members_due`: every generation of an archive; a front's at the multiples of the
+  // experiment's members_every and at the run's last). Stored with that generation, never
   // read back: nothing continues from them.
   std::shared_ptr<const MemberLayout> member_layout{};
   std::vector<evo::Member> members{};
+  bool members_due = false;
 };
 
 // The evaluations a run has finished: those of its generations so far.

@@ -1,6 +1,7 @@
 #include "runtime/store/member_tables.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -39,7 +40,32 @@ CREATE TABLE members (
 )sql";
 }
 
+namespace {
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Whether the run's last stored front holds `members` exactly (cells and the values' bits).
+bool repeats_last_front(sql::Database& db, std::int64_t controller_id, const eval::RunState& state) {
+  auto q = db.prepare("SELECT cell, objectives, descriptors FROM members WHERE controller_id = ?1 AND run = ?2 AND "
+                      "generation = (SELECT MAX(generation) FROM members WHERE controller_id = ?1 AND run = ?2) "
+                      "ORDER BY idx");
+  q.bind(1, controller_id).bind(2, state.run);
+  std::size_t i = 0;
+  for (; q.step(); ++i) {
+    if (i == state.members.size()) return false;
+    const evo::Member& m = state.members[i];
+    if (q.int64(0) != m.cell || !same_bits(q.doubles(1), m.objectives) || !same_bits(q.doubles(2), m.descriptors))
+      return false;
+  }
+  return i > 0 && i == state.members.size();
+}
+
+}  // namespace
+
 void save_members(sql::Database& db, std::int64_t controller_id, const eval::RunState& state, int generation) {
+  if (!state.members_due) return;
   const eval::MemberLayout& layout = *state.member_layout;
   auto exists = db.prepare("SELECT 1 FROM member_layouts WHERE controller_id = ?");
   if (!exists.bind(1, controller_id).step()) {
@@ -57,6 +83,7 @@ void save_members(sql::Database& db, std::int64_t controller_id, const eval::Run
         .run();
     seal_row(db, "member_layouts", db.last_insert_rowid());
   }
+  if (layout.kind == evo::MemberKind::Front && repeats_last_front(db, controller_id, state)) return;
   auto row = db.prepare("INSERT INTO members(controller_id, run, generation, idx, cell, objectives, descriptors) "
                         "VALUES (?, ?, ?, ?, ?, ?, ?)");
   for (std::size_t i = 0; i < state.members.size(); ++i) {
@@ -97,8 +124,11 @@ std::optional<StoredMembers> load_members(sql::Database& db, std::int64_t contro
 std::vector<StoredMember> members_at(const StoredMembers& members, int run, int generation) {
   std::vector<StoredMember> out;
   if (members.layout.kind == evo::MemberKind::Front) {
+    int stored = -1;   // the last generation up to `generation` that stored the front
     for (const StoredMember& m : members.rows)
-      if (m.run == run && m.generation == generation) out.push_back(m);
+      if (m.run == run && m.generation <= generation) stored = std::max(stored, m.generation);
+    for (const StoredMember& m : members.rows)
+      if (m.run == run && m.generation == stored) out.push_back(m);
     return out;
   }
   std::map<std::int64_t, const StoredMember*> cells;

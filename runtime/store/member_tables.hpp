@@ -3,8 +3,11 @@
 // (schema 8; evo::Optimizer::members): NSGA-II's first front, MAP-Elites' archive, novelty
 // search's archive of behaviors. Per controller its layout (table member_layouts: the
 // values' names, an archive's cells), and per generation of each run its members (table
-// members): a front whole, an archive's changed cells, so that the archive of any
-// generation is the last row of each cell up to it. Genomes are not stored per generation:
+// members): an archive's changed cells every generation, so that the archive of any
+// generation is the last row of each cell up to it; a front whole at the generations that
+// are multiples of the experiment's members_every and at the run's last, except where it
+// equals the run's last stored front (bit for bit): there it is unchanged, and the front of
+// such a generation is the last stored up to it. Genomes are not stored per generation:
 // the final front or archive is in the run's optimizer state (what `esc replay` reads).
 // Written in the generation's transaction, so a resumed run stores exactly what the
 // uninterrupted one would.
@@ -39,14 +42,15 @@ struct StoredMembers {
   std::vector<StoredMember> rows;    // by run, generation, then as the optimizer listed them
 };
 
-// Generation `generation`'s members of a run (state.member_layout set), the controller's
-// layout with the first.
+// Generation `generation`'s members of a run (state.member_layout set) where it stores them
+// (state.members_due) and a front has changed, the controller's layout with the first.
 void save_members(sql::Database& db, std::int64_t controller_id, const eval::RunState& state, int generation);
 // What a controller's runs stored, or nullopt when its optimizer keeps no members.
 [[nodiscard]] std::optional<StoredMembers> load_members(sql::Database& db, std::int64_t controller_id);
 
 // The archive of `run` after generation `generation`: each cell's last row up to it, in
-// cell order (for a front: that generation's rows).
+// cell order (for a front: the rows of the last generation up to it that stored one, which is
+// generation `generation`'s front where that generation is one that stores it).
 [[nodiscard]] std::vector<StoredMember> members_at(const StoredMembers& members, int run, int generation);
 
 }  // namespace esc::store

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,6 +41,16 @@ std::map<std::string, std::map<std::string, std::vector<double>>> metrics_of(con
     if (f.size() == 8) m[f[6]][f[4]].push_back(std::stod(f[7]));
   }
   return m;
+}
+
+// The generations whose front `esc export --table front` holds, per run (from 1).
+std::map<std::string, std::set<int>> front_generations(const fs::path& dir) {
+  const Outcome front = esc("export " + dir.string() + " --table front");
+  EXPECT_EQ(front.status, 0) << front.output;
+  const auto rows = csv_rows(front.output);
+  std::map<std::string, std::set<int>> out;
+  for (std::size_t i = 1; i < rows.size(); ++i) out[rows[i][4]].insert(std::stoi(rows[i][5]));
+  return out;
 }
 
 TEST(MultiObjective, MapElitesStoresItsArchiveMetricsEveryGeneration) {
@@ -98,6 +109,43 @@ TEST(MultiObjective, NsgaIiStoresItsFrontAndHypervolumeEveryGeneration) {
   }
 }
 
+// A front is stored at the multiples of `members_every` and at each run's last generation
+// (a front that had not changed would not be stored again: these change every time), and
+// what reads it reads the run's last: the report's fronts, a member's replay.
+TEST(MultiObjective, AFrontIsStoredEveryMembersEveryGenerationsAndAtTheEnd) {
+  const fs::path dir = scratch("members-every-7");
+  const Outcome o = esc("run " + example("speed_energy") +
+                        " --runs 2 --generations 23 --set epochs=1 --set members_every=7 --threads 1 --out " +
+                        dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto stored = front_generations(dir);
+  ASSERT_EQ(stored.size(), 2u);
+  for (const auto& [run, generations] : stored) EXPECT_EQ(generations, (std::set<int>{0, 7, 14, 21, 22})) << run;
+  EXPECT_EQ(read_json(dir / "settings.json")["settings"]["members_every"], "7");
+  // The metrics (the front's size among them) stay per generation.
+  EXPECT_EQ(metrics_of(dir).at("front").at("1").size(), 23u);
+  const Outcome report = esc("report " + dir.string());
+  ASSERT_EQ(report.status, 0) << report.output;
+  bool pareto = false;
+  for (const auto& f : fs::directory_iterator(dir / "figures"))
+    pareto = pareto || f.path().filename().string().ends_with("-front.svg");
+  EXPECT_TRUE(pareto);
+  const Outcome replayed = esc("replay " + dir.string() + " --run 2 --member 0");
+  EXPECT_EQ(replayed.status, 0) << replayed.output;
+
+  const fs::path plain = scratch("members-every-default");
+  ASSERT_EQ(esc("run " + example("speed_energy") + " --runs 1 --generations 12 --set epochs=1 --threads 1 --out " +
+                plain.string())
+                .status,
+            0);
+  EXPECT_EQ(front_generations(plain).at("1"), (std::set<int>{0, 10, 11}));
+  EXPECT_FALSE(read_json(plain / "settings.json")["settings"].contains("members_every"));
+  const Outcome bad = esc("run " + example("speed_energy") + " --set members_every=0 --out " + scratch("m0").string());
+  EXPECT_EQ(bad.status, 1) << bad.output;
+  EXPECT_NE(bad.output.find("members_every=0: `members_every` must be at least 1, found 0"), std::string::npos)
+      << bad.output;
+}
+
 // Random start poses: an archive cell or a front member measures what it measured only in
 // its own evaluation, whose seed the replay derives from where the optimizer's state says it
 // was evaluated (not the run's best's, which starts elsewhere).
@@ -154,6 +202,12 @@ TEST(MultiObjective, ARunKilledMidRunResumesToTheUnbrokenRun) {
       EXPECT_EQ(esc("export " + reference.string() + " --table " + table).output,
                 esc("export " + killed.string() + " --table " + table).output)
           << name << " " << table;
+    // Its fronts are stored every 10 generations and at the end, wherever the kill fell
+    // between them: the resumed run stored the same rows (above).
+    if (name == "speed_energy") {
+      for (const auto& [run, generations] : front_generations(reference))
+        for (const int g : generations) EXPECT_TRUE(g % 10 == 0 || g == 99) << run << " " << g;
+    }
   }
 }
 

@@ -5,6 +5,8 @@
 // summary, byte for byte; `stop at success` ends each run at its first success and changes
 // nothing before it.
 #include <algorithm>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,7 @@
 
 #include "tests/cli/esc_process.hpp"
 #include "tests/cli/results_support.hpp"
+#include "tests/cli/summary_values.hpp"
 
 namespace {
 
@@ -28,7 +31,7 @@ TEST(Success, AStudyCountsComparesAndReportsSuccess) {
   const Outcome o = esc("run " + study() + " --generations " + std::to_string(kGenerations) + " --threads 2 --out " +
                         out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json s = read_json(out / "summary.json");
+  const json s = summary_with_values(out);
   int successes = 0, failures = 0;
   for (const json& c : s.at("conditions")) {
     EXPECT_EQ(c.at("success"), "avoid > 120") << c.dump();
@@ -153,7 +156,7 @@ TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
   ASSERT_EQ(esc("run " + study() + " --generations 40 --seed 5 --threads 2 --out " + going.string()).status, 0);
   const Outcome o = esc(line + "--out " + stopping.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json full = read_json(going / "summary.json"), cut = read_json(stopping / "summary.json");
+  const json full = summary_with_values(going), cut = summary_with_values(stopping);
   int stopped = 0, unsolved = 0, generations = 0;
   std::string replayed;   // `esc replay` arguments of the first run that stopped
   std::size_t replayed_generations = 0;
@@ -207,6 +210,32 @@ TEST(Success, StopAtSuccessEndsEachRunAfterItsFirstSuccess) {
   const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_EQ(slurp(stopping / "summary.json"), slurp(killed / "summary.json"));
+}
+
+// A run that stops at its first success stores its front there, its last generation, whatever
+// `members_every` says (here 100: no other generation but 0 stores one).
+TEST(Success, ARunStoppedAtSuccessStoresItsFrontAtItsLastGeneration) {
+  const fs::path dir = scratch("success-stopped-front");
+  const Outcome o = esc("run " + study() + " --generations 40 --seed 5 --threads 2 --set stop_at_success=on " +
+                        "--set networks=nsga2 --set members_every=100 --out " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const Outcome front = esc("export " + dir.string() + " --table front");
+  ASSERT_EQ(front.status, 0) << front.output;
+  std::map<std::string, std::set<int>> stored;   // condition, controller, run -> generations
+  const auto rows = csv_rows(front.output);
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    stored[rows[i][1] + " " + rows[i][2] + " " + rows[i][4]].insert(std::stoi(rows[i][5]));
+  int stops = 0;
+  const json s = read_json(dir / "summary.json");
+  for (const json& c : s.at("conditions"))
+    for (const auto& [name, controller] : c.at("controllers").items())
+      for (const json& r : controller.at("runs")) {
+        const int last = r.at("generations").get<int>() - 1;
+        stops += r.contains("stopped") ? 1 : 0;
+        const std::string key = c.at("name").get<std::string>() + " " + name + " " + std::to_string(r.at("run").get<int>());
+        EXPECT_EQ(stored[key], (std::set<int>{0, last})) << key;
+      }
+  EXPECT_GT(stops, 0);
 }
 
 }  // namespace

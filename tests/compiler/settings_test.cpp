@@ -45,6 +45,25 @@ TEST(ApplySetting, GoodKeysChangeTheSpecAndResolvedSettings) {
   EXPECT_EQ(x.robot.physics_substeps, 4);
 }
 
+// `members_every`: resolved (and so in the fingerprint) only when not its default, so that the
+// runs from before it keep their settings.
+TEST(ApplySetting, MembersEveryIsResolvedOnlyWhenNotTheDefault) {
+  eval::ExperimentSpec x = paper();
+  EXPECT_EQ(x.members_every, eval::kMembersEvery);
+  EXPECT_EQ(x.resolved_settings.count("members_every"), 0u);
+  EXPECT_EQ(apply_setting(x, "members_every", "1"), "");
+  EXPECT_EQ(x.members_every, 1);
+  EXPECT_EQ(x.resolved_settings.at("members_every"), "1");
+  EXPECT_EQ(apply_setting(x, "members_every", "10"), "");
+  EXPECT_EQ(x.resolved_settings.count("members_every"), 0u);
+  for (const char* bad : {"0", "-3", "2.5", "ten"}) {
+    const std::string m = apply_setting(x, "members_every", bad);
+    EXPECT_NE(m.find("members_every"), std::string::npos) << bad << ": " << m;
+    EXPECT_EQ(x.members_every, 10) << bad;
+  }
+  EXPECT_NE(apply_setting(x, "members_every", "0").find("at least 1"), std::string::npos);
+}
+
 TEST(ApplySetting, BadKeysAndValuesAreRefusedWithoutChange) {
   eval::ExperimentSpec x = paper();
   const eval::ExperimentSpec before = x;

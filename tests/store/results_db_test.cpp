@@ -181,7 +181,52 @@ eval::RunState with_members(int generations) {
   const double g = generations - 1;
   s.members = {{static_cast<std::int64_t>(generations), {g + 0.5}, {0.25, -1.0}, {}, {}},
                {5, {-g}, {0.75, 1.5}, {}, {}}};
+  s.members_due = true;
   return s;
+}
+
+// An NSGA-II-like run's first front after `generations`, of two members, the first's
+// objective `value`; `due` when its generation is one that stores the front.
+eval::RunState with_front(int generations, double value, bool due) {
+  eval::RunState s = with_members(generations);
+  auto layout = std::make_shared<eval::MemberLayout>(*s.member_layout);
+  layout->kind = evo::MemberKind::Front;
+  layout->bins.clear();
+  s.member_layout = layout;
+  s.members = {{0, {value}, {0.25, -1.0}, {}, {}}, {1, {-1.0}, {0.5, 0.5}, {}, {}}};
+  s.members_due = due;
+  return s;
+}
+
+// A front is stored where its generation stores one, and not again where it equals the last
+// stored bit for bit (0.0 and -0.0 differ): a generation's front is the last stored up to it.
+TEST(ResultsDb, AFrontIsStoredWhereDueAndNotWhereUnchanged) {
+  const fs::path dir = fresh_dir("fronts");
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    db.commit_generation("SC", with_front(1, 0.0, true));    // generation 0: stored
+    db.commit_generation("SC", with_front(2, 7.0, false));   // 1: not one that stores it
+    db.commit_generation("SC", with_front(3, 0.0, true));    // 2: unchanged since 0
+    db.commit_generation("SC", with_front(4, -0.0, true));   // 3: changed in a bit
+    db.commit_generation("SC", with_front(5, -0.0, true));   // 4: unchanged since 3
+  }
+  const StoredController c = ResultsDb::open(dir, true).load_single().controllers.at(0);
+  ASSERT_TRUE(c.members.has_value());
+  EXPECT_EQ(c.members->layout.kind, evo::MemberKind::Front);
+  ASSERT_EQ(c.members->rows.size(), 4U);
+  EXPECT_EQ(c.members->rows[0].generation, 0);
+  EXPECT_EQ(c.members->rows[2].generation, 3);
+  for (const int g : {0, 1, 2}) {
+    const std::vector<StoredMember> front = members_at(*c.members, 1, g);
+    ASSERT_EQ(front.size(), 2U) << g;
+    EXPECT_EQ(front[0].generation, 0) << g;
+    EXPECT_FALSE(std::signbit(front[0].objectives[0])) << g;
+  }
+  const std::vector<StoredMember> last = members_at(*c.members, 1, 4);
+  ASSERT_EQ(last.size(), 2U);
+  EXPECT_EQ(last[0].generation, 3);
+  EXPECT_TRUE(std::signbit(last[0].objectives[0]));
+  EXPECT_TRUE(members_at(*c.members, 2, 4).empty());   // another run stored none
 }
 
 TEST(ResultsDb, MembersRoundTripAndAnyGenerationsArchiveIsReadBack) {
