@@ -16,7 +16,7 @@
 #include "app/ranks.hpp"
 #include "compiler/setting_keys.hpp"
 #include "runtime/eval/fingerprint.hpp"
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/run_directory.hpp"
 
@@ -244,7 +244,7 @@ std::string genome_problem(const control::ControllerSpec& c, const std::vector<d
                ? std::string()
                : fmt::format("it has {} genes, `{}` has {} here", genome.size(), c.name, c.genome_size());
   try {
-    (void)evo::gp::decode(genome, *c.primitives);
+    (void)genome::tree::decode(genome, *c.primitives);
     return {};
   } catch (const std::invalid_argument& e) {
     return fmt::format("it is not a tree of `{}`'s primitives here: {}", c.name, e.what());

@@ -9,8 +9,8 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/evaluator.hpp"
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/init.hpp"
 
 namespace esc::bench {
 
@@ -31,7 +31,7 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
   double elapsed = 0.0;
   for (std::uint64_t i = 0; elapsed < seconds || steps == 0; ++i) {
     if (c.is_tree())
-      genome = evo::gp::encode(evo::gp::grow(*c.primitives, c.primitives->root(), gp.init_max_depth, rng));
+      genome = genome::tree::encode(genome::tree::grow(*c.primitives, c.primitives->root(), gp.init_max_depth, rng));
     else
       for (double& g : genome) g = rng.uniform(e.es.lower, e.es.upper);
     steps += evaluator.evaluate(c, genome, i).steps;

@@ -1,4 +1,4 @@
-// GP tree evaluation: the flat postfix program (runtime/evo/gp/program.hpp) against the
+// GP tree evaluation: the flat postfix program (runtime/genome/tree/program.hpp) against the
 // plain recursive walker (recursive.hpp) and the script expression VM (expr::Program, via
 // convert.hpp), on random Number trees of about 15, 50 and 150 nodes. One item = one tree
 // evaluated on one frame.
@@ -8,15 +8,15 @@
 #include <benchmark/benchmark.h>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/convert.hpp"
-#include "runtime/evo/gp/init.hpp"
-#include "runtime/evo/gp/program.hpp"
-#include "runtime/evo/gp/recursive.hpp"
+#include "runtime/genome/tree/convert.hpp"
+#include "runtime/genome/tree/init.hpp"
+#include "runtime/genome/tree/program.hpp"
+#include "runtime/genome/tree/recursive.hpp"
 
 namespace {
 
 using namespace esc;
-using namespace esc::evo::gp;
+using namespace esc::genome::tree;
 
 PrimitiveSet bench_set() {
   using expr::Op;

@@ -18,9 +18,9 @@ using S = evo::gp::GpSettings;
 using Shape = OptionShape;
 
 // A single tree controller's set (a Number terminal) for settings no tree is compared with.
-const evo::gp::PrimitiveSet& neutral_set() {
-  static const evo::gp::PrimitiveSet set({evo::gp::prim::constant(evo::gp::Type::Number, 0.0)},
-                                         evo::gp::Type::Number);
+const genome::tree::PrimitiveSet& neutral_set() {
+  static const genome::tree::PrimitiveSet set({genome::tree::prim::constant(genome::tree::Type::Number, 0.0)},
+                                         genome::tree::Type::Number);
   return set;
 }
 
@@ -30,7 +30,7 @@ std::string without_prefix(std::string message) {
   return message;
 }
 
-template <double S::*Field>
+template <auto Field>
 constexpr auto probability = &read_real<S, Field, RealRange::Probability>;
 
 // `init_depth [LO, HI]`: whole numbers of at least 1, LO <= HI.

@@ -8,7 +8,7 @@
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 #include "runtime/expr/observables.hpp"
 
 namespace esc::compiler {
@@ -264,8 +264,8 @@ bool ControllerLowering::check_sensors(const control::ControllerSpec& c, const a
   }
   if (c.primitives) {
     std::vector<expr::Slot> terminals;
-    for (const evo::gp::Primitive& p : c.primitives->primitives())
-      if (p.kind == evo::gp::Kind::Observable) terminals.push_back(p.slot);
+    for (const genome::tree::Primitive& p : c.primitives->primitives())
+      if (p.kind == genome::tree::Kind::Observable) terminals.push_back(p.slot);
     check(terminals, d.primitives.where, fmt::format("primitive set `{}` holds it as a terminal", d.primitives.text));
   }
   const auto& listed = supervised(d);

@@ -30,7 +30,7 @@ std::string algorithm_of(const X& x, std::size_t i) {
 std::vector<std::string> algorithms_for(bool trees) {
   std::vector<std::string> v;
   for (const evo::Algorithm& a : evo::algorithms())
-    if (trees ? a.trees : a.networks) v.emplace_back(a.name);
+    if (a.kinds.has(trees ? genome::GenomeKind::Tree : genome::GenomeKind::Vector)) v.emplace_back(a.name);
   return v;
 }
 
@@ -76,7 +76,7 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
   // for networks and not the ES.
   if (items.es == nullptr)
     for (const std::string& name : items.further_order)
-      if (evo::find_algorithm(name)->networks) {
+      if (evo::find_algorithm(name)->kinds.has(genome::GenomeKind::Vector)) {
         x.networks = name;
         break;
       }
@@ -90,7 +90,7 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
               {.otherwise = fmt::format("algorithms: {}", quoted_list(algorithm_names()))});
       continue;
     }
-    if (c.is_tree() ? !a->trees : !a->networks) {
+    if (!a->kinds.has(c.is_tree() ? genome::GenomeKind::Tree : genome::GenomeKind::Vector)) {
       sink.error(name.where, fmt::format("`{}` cannot evolve `{}`: it is {}", name.text, c.name, kind_of(c)))
           .help.push_back(fmt::format("{} evolved by {}", c.is_tree() ? "trees are" : "networks are",
                                       quoted_list(algorithms_for(c.is_tree()))));
@@ -135,7 +135,7 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
     const evo::Algorithm& a = *evo::find_algorithm(name);
     Diagnostic& diag = sink.error(item.refs[0].where, fmt::format("`evolve {}` evolves none of the controllers "
                                                                   "experiment `{}` compares", name, d.name.text));
-    if (a.networks && !a.trees && !any_network)
+    if (a.kinds == genome::GenomeKinds{genome::GenomeKind::Vector} && !any_network)
       diag.help.push_back(fmt::format("`{}` evolves networks; the compared controllers are trees, evolved by {}", name,
                                       quoted_list(algorithms_for(true))));
     else
@@ -149,7 +149,7 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
                                                  "`evolve gp(...)` to evolve it", c.name, d.name.text))
           .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
     } else if (c.is_tree() && items.gp == nullptr) {
-      // Every algorithm varies trees with the GP's operators (runtime/evo/gp/tree_variation.hpp).
+      // Every algorithm varies trees with the GP's operators (runtime/genome/tree/tree_variation.hpp).
       sink.error(compared[i]->where, fmt::format("`{}` is a tree controller evolved by `{}`, but experiment `{}` has no "
                                                  "`evolve gp(...)` to give its tree operators", c.name, a, d.name.text))
           .help.push_back(fmt::format("add `evolve gp(max_depth 12, max_size 100) for 50 generations`: `{}` selects, "

@@ -19,7 +19,6 @@ namespace esc::compiler {
 
 namespace {
 
-namespace gp = evo::gp;
 using expr::Op;
 
 struct FunctionName {
@@ -50,14 +49,14 @@ std::string function_help() {
   return "functions: " + s;
 }
 
-gp::Type root_of(control::Head h) {
-  return h == control::Head::Symbolic ? gp::Type::Action
-         : h == control::Head::Supervisor ? gp::Type::Behavior
-                                          : gp::Type::Wheels;
+genome::tree::Type root_of(control::Head h) {
+  return h == control::Head::Symbolic ? genome::tree::Type::Action
+         : h == control::Head::Supervisor ? genome::tree::Type::Behavior
+                                          : genome::tree::Type::Wheels;
 }
 
-std::string_view use_of(gp::Type root) {
-  return root == gp::Type::Action ? "an Action tree" : root == gp::Type::Behavior ? "a Behavior tree" : "a Wheels tree";
+std::string_view use_of(genome::tree::Type root) {
+  return root == genome::tree::Type::Action ? "an Action tree" : root == genome::tree::Type::Behavior ? "a Behavior tree" : "a Wheels tree";
 }
 
 }  // namespace
@@ -81,7 +80,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
     if (!once(f.text, f.where)) continue;
     if (f.text == "if") {
       list.branches = true;
-      list.items.push_back(gp::prim::if_then_else(gp::Type::Number));
+      list.items.push_back(genome::tree::prim::if_then_else(genome::tree::Type::Number));
       continue;
     }
     const auto* fn = std::find_if(std::begin(kFunctions), std::end(kFunctions),
@@ -91,7 +90,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
               {.otherwise = function_help(), .always = true});
       continue;
     }
-    list.items.push_back(gp::prim::function(fn->op));
+    list.items.push_back(genome::tree::prim::function(fn->op));
   }
 
   const std::vector<std::string> observables = expr::observable_names();
@@ -99,7 +98,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
     using TK = ast::PrimTerminal::Kind;
     if (t.kind == TK::Bool) {
       if (once(t.flag ? "true" : "false", t.where))
-        list.items.push_back(gp::prim::constant(gp::Type::Bool, t.flag ? 1 : 0));
+        list.items.push_back(genome::tree::prim::constant(genome::tree::Type::Bool, t.flag ? 1 : 0));
       continue;
     }
     if (t.kind == TK::Constant) {
@@ -113,7 +112,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
         }
         v *= u->to_si;
       }
-      if (once(number_text(v), t.where)) list.items.push_back(gp::prim::constant(gp::Type::Number, v));
+      if (once(number_text(v), t.where)) list.items.push_back(genome::tree::prim::constant(genome::tree::Type::Number, v));
       continue;
     }
     if (t.kind == TK::Erc) {
@@ -129,13 +128,13 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
                                          number_text(*lo), number_text(*hi)));
         continue;
       }
-      if (std::abs(*lo) > gp::prim::kMaxErcBound || std::abs(*hi) > gp::prim::kMaxErcBound) {
+      if (std::abs(*lo) > genome::tree::prim::kMaxErcBound || std::abs(*hi) > genome::tree::prim::kMaxErcBound) {
         sink_.error(t.where, fmt::format("`erc({0}, {1})` must lie within [-{2}, {2}]", number_text(*lo), number_text(*hi),
-                                         number_text(gp::prim::kMaxErcBound)))
+                                         number_text(genome::tree::prim::kMaxErcBound)))
             .help.push_back("beyond that the random constants' steps lose their precision and can overflow");
         continue;
       }
-      list.items.push_back(gp::prim::erc(*lo, *hi));
+      list.items.push_back(genome::tree::prim::erc(*lo, *hi));
       continue;
     }
     // An observable, all of an array, or a range of it.
@@ -179,7 +178,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
     for (long long i = first; i <= last; ++i) {
       const std::string shown = o->indexed ? fmt::format("{}[{}]", name, i) : name;
       if (!once(shown, t.where)) continue;
-      if (auto p = gp::prim::observable(shown)) list.items.push_back(std::move(*p));
+      if (auto p = genome::tree::prim::observable(shown)) list.items.push_back(std::move(*p));
     }
   }
   if (sink_.errors() == errors) slot = std::move(list);
@@ -200,17 +199,17 @@ bool PrimitivesLowering::tree(const ast::ControllerDecl& d, control::ControllerS
   if (pd == nullptr) return false;
   const auto& list = lower(*pd);
   if (!list) return false;
-  const gp::Type root = root_of(c.head);
-  std::vector<gp::Primitive> items = list->items;
-  if (list->branches) items.push_back(gp::prim::if_then_else(root));
-  if (root == gp::Type::Wheels) items.push_back(gp::prim::wheels());
+  const genome::tree::Type root = root_of(c.head);
+  std::vector<genome::tree::Primitive> items = list->items;
+  if (list->branches) items.push_back(genome::tree::prim::if_then_else(root));
+  if (root == genome::tree::Type::Wheels) items.push_back(genome::tree::prim::wheels());
   for (std::size_t k = 0; k < c.actions.size(); ++k)
-    items.push_back(gp::prim::action(c.actions[k].name, static_cast<std::uint32_t>(k),
+    items.push_back(genome::tree::prim::action(c.actions[k].name, static_cast<std::uint32_t>(k),
                                      static_cast<std::uint8_t>(c.actions[k].params.size())));
   for (std::size_t k = 0; k < c.behaviors.size(); ++k)
-    items.push_back(gp::prim::behavior(c.behaviors[k].name, static_cast<std::uint32_t>(k)));
+    items.push_back(genome::tree::prim::behavior(c.behaviors[k].name, static_cast<std::uint32_t>(k)));
   try {
-    c.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(items), root);
+    c.primitives = std::make_shared<const genome::tree::PrimitiveSet>(std::move(items), root);
   } catch (const std::invalid_argument& e) {
     std::string why = e.what();
     if (why.rfind("primitive set: ", 0) == 0) why.erase(0, 15);

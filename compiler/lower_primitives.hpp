@@ -12,12 +12,12 @@
 #include "compiler/resolver.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/control/controller_spec.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
 namespace esc::compiler {
 
 struct PrimitiveList {
-  std::vector<evo::gp::Primitive> items;
+  std::vector<genome::tree::Primitive> items;
   bool branches = false;   // `if` is listed
 };
 

@@ -40,14 +40,16 @@ struct OptionRow {
   const evo::AlgorithmOption* option = nullptr;
 };
 
-// A whole number of at least Min into an int field; its text.
-template <class Settings, int Settings::*Field, long long Min>
+// A whole number of at least Min into an int field; its text. A field, here and below, is
+// a member pointer of Settings or of a base it extends (GP's settings extend the tree
+// kind's operators, runtime/genome/tree/tree_operators.hpp).
+template <class Settings, auto Field, long long Min>
 bool read_whole(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
   const auto n = read_count(v, o.key, Min, std::numeric_limits<int>::max(), sink);
   if (n) s.*Field = static_cast<int>(*n);
   return n.has_value();
 }
-template <class Settings, int Settings::*Field>
+template <class Settings, auto Field>
 std::string whole_text(const OptionRow<Settings>&, const Settings& s) {
   return std::to_string(s.*Field);
 }
@@ -58,7 +60,7 @@ enum class RealRange { Probability, Positive, NonNegative };
 // A plain number in its range, and at most *Max when given (the algorithm's limit that keeps
 // its arithmetic finite), into a double field; its text. A pointer, since clang 14 (the fuzz
 // build) takes no double template argument.
-template <class Settings, double Settings::*Field, RealRange R, const double* Max = nullptr>
+template <class Settings, auto Field, RealRange R, const double* Max = nullptr>
 bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
   const auto x = read_quantity(v, o.key, Dim::None, sink);
   if (!x) return false;
@@ -82,7 +84,7 @@ bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, S
   s.*Field = *x;
   return true;
 }
-template <class Settings, double Settings::*Field>
+template <class Settings, auto Field>
 std::string real_text(const OptionRow<Settings>&, const Settings& s) {
   return number_text(s.*Field);
 }

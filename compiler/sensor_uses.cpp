@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
 namespace esc::compiler {
 
@@ -89,8 +89,8 @@ std::set<expr::Slot> slots_read(const control::ControllerSpec& c) {
     }
   }
   if (c.primitives)
-    for (const evo::gp::Primitive& p : c.primitives->primitives())
-      if (p.kind == evo::gp::Kind::Observable) out.insert(p.slot);
+    for (const genome::tree::Primitive& p : c.primitives->primitives())
+      if (p.kind == genome::tree::Kind::Observable) out.insert(p.slot);
   return out;
 }
 

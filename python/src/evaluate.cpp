@@ -18,7 +18,7 @@
 #include "python/src/compiled_script.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/evaluator.hpp"
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 
 namespace esc::python {
 
@@ -45,7 +45,7 @@ std::vector<std::vector<double>> network_genomes(const control::ControllerSpec& 
   return rows;
 }
 
-// A tree controller's genomes: encoded trees (runtime/evo/gp/codec.hpp), checked here, with
+// A tree controller's genomes: encoded trees (runtime/genome/tree/codec.hpp), checked here, with
 // the GIL held, so that a bad one is a ValueError naming it.
 std::vector<std::vector<double>> tree_genomes(const control::ControllerSpec& c, const py::handle& genomes) {
   std::vector<std::vector<double>> trees;
@@ -53,7 +53,7 @@ std::vector<std::vector<double>> tree_genomes(const control::ControllerSpec& c, 
     const auto a = g.cast<Array>();
     trees.emplace_back(a.data(), a.data() + a.size());
     try {
-      (void)evo::gp::decode(trees.back(), *c.primitives);
+      (void)genome::tree::decode(trees.back(), *c.primitives);
     } catch (const std::invalid_argument& e) {
       throw py::value_error("genome " + std::to_string(trees.size() - 1) + " is not an encoded tree of controller `" +
                             c.name + "`: " + e.what());

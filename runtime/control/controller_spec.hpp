@@ -2,7 +2,7 @@
 // What the compiler produces for a `controller` declaration: the network's shape and its
 // head. The genome is the flat vector of the network's weights; genome_size() says how long.
 // A GP tree controller (`tree(...)`) has primitives instead of a network: its genome is a
-// tree (runtime/evo/gp), run by tree_control::TreeDriver.
+// tree (runtime/genome/tree), run by tree_control::TreeDriver.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -12,9 +12,9 @@
 #include "runtime/control/behavior.hpp"
 #include "runtime/expr/observables.hpp"
 
-// Only a pointer is held here: the GP engine (esc_gp) needs nothing of esc_control, and the
-// controllers that run trees (esc_tree_control) build on both.
-namespace esc::evo::gp {
+// Only a pointer is held here: the tree genome (esc_genome_tree) needs nothing of esc_control,
+// and the controllers that run trees (esc_tree_control) build on both.
+namespace esc::genome::tree {
 class PrimitiveSet;
 }
 
@@ -94,7 +94,7 @@ struct ControllerSpec {
   // tree (both wheel commands), Symbolic an Action tree (one of `actions`, with its
   // parameters), Supervisor a Behavior tree (one of `behaviors`). `mlp` is then unused.
   // Shared and immutable: copies of the spec share one set.
-  std::shared_ptr<const evo::gp::PrimitiveSet> primitives;
+  std::shared_ptr<const genome::tree::PrimitiveSet> primitives;
   std::string primitives_name;                 // the script's `primitives` declaration
   // The algorithm a compared controller's `by` names (evo::Algorithm::name); empty: the
   // experiment's default for its kind (ExperimentSpec::evolution_of).

@@ -44,7 +44,7 @@ struct RunResult {
   std::uint64_t seed = 0;
   std::vector<GenerationStats> generations;
   double best_fitness = 0.0;   // best over all generations
-  // Network weights; for a tree controller the best tree encoded (runtime/evo/gp/codec.hpp).
+  // Network weights; for a tree controller the best tree encoded (runtime/genome/tree/codec.hpp).
   std::vector<double> best_genome;
   int best_generation = 0;     // where the best evaluation happened: its generation and
   int best_index = 0;          // offspring index, which fix its evaluation stream
@@ -52,7 +52,7 @@ struct RunResult {
   // over the best evaluation replayed, in ControllerSpec::choice_names() order; empty for
   // a classical head.
   std::vector<std::int64_t> action_usage;
-  std::string best_tree{};     // tree controllers: the best tree as script code (gp::to_script)
+  std::string best_tree{};     // tree controllers: the best tree as script code (genome::tree::to_script)
   // The best Wheels or Action tree as a behavior's body, `wheels(LEFT, RIGHT)`, computing the
   // same commands (an Action tree with its actions inlined); empty for a Behavior tree.
   std::string best_behavior{};

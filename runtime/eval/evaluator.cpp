@@ -8,7 +8,7 @@
 #include "runtime/control/controller.hpp"
 #include "runtime/eval/epoch_stepper.hpp"
 #include "runtime/eval/observe.hpp"
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 #include "runtime/tree_control/tree_driver.hpp"
 
 namespace esc::eval {
@@ -47,12 +47,12 @@ Evaluator::Evaluator(const ExperimentSpec& spec)
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
                                std::span<const double> genome, std::uint64_t seed,
                                TraceSink* trace) {
-  if (controller.is_tree()) return evaluate(controller, evo::gp::decode(genome, *controller.primitives), seed, trace);
+  if (controller.is_tree()) return evaluate(controller, genome::tree::decode(genome, *controller.primitives), seed, trace);
   control::Controller ctl(controller, genome, &tree_control::make_actor);
   return run(controller, ctl, reads_slot(*spec_, controller, expr::slot::noise), seed, trace);
 }
 
-Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
+Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const genome::tree::Tree& tree,
                                std::uint64_t seed, TraceSink* trace) {
   tree_control::TreeDriver ctl(controller, tree);
   return run(controller, ctl, reads_slot(*spec_, controller, expr::slot::noise), seed, trace);

@@ -12,7 +12,7 @@
 
 #include "runtime/eval/experiment.hpp"
 #include "runtime/eval/step_aggregates.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 #include "runtime/sim/world.hpp"
 
 namespace esc::eval {
@@ -77,12 +77,12 @@ class Evaluator {
   // Deterministic in (controller, genome, seed) whatever this evaluator ran before.
   // With a `trace`, every step is also reported to it; the result is the same either way
   // (the untraced path pays one predictable branch per step). A tree controller's genome
-  // is its encoded tree (runtime/evo/gp/codec.hpp).
+  // is its encoded tree (runtime/genome/tree/codec.hpp).
   [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller,
                                     std::span<const double> genome, std::uint64_t seed,
                                     TraceSink* trace = nullptr);
   // A tree controller and its tree: the same evaluation as with the encoded tree.
-  [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller, const evo::gp::Tree& tree,
+  [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller, const genome::tree::Tree& tree,
                                     std::uint64_t seed, TraceSink* trace = nullptr);
 
  private:

@@ -278,8 +278,8 @@ struct ExperimentSpec {
     constexpr double inf = std::numeric_limits<double>::infinity();
     evo::Problem p;
     p.genome_size = c.is_tree() ? 0 : c.genome_size();
-    p.primitives = c.primitives.get();
-    if (c.is_tree() && gp) p.tree_operators = &*gp;
+    p.tree.primitives = c.primitives.get();
+    if (c.is_tree() && gp) p.tree.operators = &*gp;
     p.objectives.assign(1 + further.size(), evo::Bounds{-inf, inf});
     for (std::size_t i = 0; i < objectives.size() && i < p.objectives.size(); ++i) {
       const ObjectiveSpec& o = objectives[i];

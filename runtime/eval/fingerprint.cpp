@@ -1,7 +1,7 @@
 #include "runtime/eval/fingerprint.hpp"
 
 #include "runtime/eval/settings_history.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 #include "runtime/expr/observables.hpp"
 
 #include <span>
@@ -51,7 +51,7 @@ class Writer {
     // Only where given, so that controllers without `by` keep their fingerprints.
     if (!c.evolved_by.empty()) line(key + ".by", c.evolved_by);
     if (c.primitives)
-      for (const evo::gp::Primitive& p : c.primitives->primitives())
+      for (const genome::tree::Primitive& p : c.primitives->primitives())
         line(key + ".primitive",
              fmt::format("{} {} {} {} {} {} {:a} {:a} {:a} {}", p.name, static_cast<int>(p.kind), static_cast<int>(p.result),
                          static_cast<int>(p.arity), static_cast<int>(p.op), p.slot, p.value, p.lo, p.hi, p.index));

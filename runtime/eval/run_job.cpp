@@ -11,8 +11,8 @@
 #include "runtime/eval/campaign_parts.hpp"
 #include "runtime/eval/run_optimizer.hpp"
 #include "runtime/eval/success.hpp"
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/print.hpp"
 #include "runtime/tree_control/inline_actions.hpp"
 
 namespace esc::eval::detail {
@@ -21,13 +21,13 @@ namespace {
 
 // The tree as the body of a behavior that computes the same wheel commands, or "" when
 // there is none (a Behavior tree; actions reading an arena's zones or lights).
-std::string behavior_body(const control::ControllerSpec& controller, const evo::gp::Tree& tree) {
-  const evo::gp::PrimitiveSet& set = *controller.primitives;
-  if (set.root() == evo::gp::Type::Wheels) return evo::gp::to_script(tree, set);
-  if (set.root() != evo::gp::Type::Action) return {};
+std::string behavior_body(const control::ControllerSpec& controller, const genome::tree::Tree& tree) {
+  const genome::tree::PrimitiveSet& set = *controller.primitives;
+  if (set.root() == genome::tree::Type::Wheels) return genome::tree::to_script(tree, set);
+  if (set.root() != genome::tree::Type::Action) return {};
   try {
     const tree_control::InlinedTree inlined = tree_control::inline_actions(tree, set, controller.actions);
-    return evo::gp::to_script(inlined.tree, inlined.set);
+    return genome::tree::to_script(inlined.tree, inlined.set);
   } catch (const std::invalid_argument&) {
     return {};
   }
@@ -106,8 +106,8 @@ RunResult RunJob::close(const ExperimentSpec& spec, const CampaignOptions& optio
   if (!has_best) return result;
   const control::ControllerSpec& controller = *controller_;
   if (controller.is_tree()) {
-    const evo::gp::Tree best = evo::gp::decode(result.best_genome, *controller.primitives);
-    result.best_tree = evo::gp::to_script(best, *controller.primitives);
+    const genome::tree::Tree best = genome::tree::decode(result.best_genome, *controller.primitives);
+    result.best_tree = genome::tree::to_script(best, *controller.primitives);
     result.best_behavior = behavior_body(controller, best);
   }
   replay_best(spec, controller, result, options, ev, listener,

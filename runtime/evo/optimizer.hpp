@@ -22,16 +22,13 @@
 #include <vector>
 
 #include "runtime/evo/state_bytes.hpp"
+#include "runtime/genome/kind.hpp"
+#include "runtime/genome/tree/tree_space.hpp"
 
 namespace esc::evo {
 
-namespace gp {
-class PrimitiveSet;
-struct GpSettings;
-}
-
 // A candidate as the run loop, the store and the evaluator see it: a network's weights, or
-// a tree encoded (gp/codec.hpp). One form for both keeps the loop representation-blind.
+// a tree encoded (genome/tree/codec.hpp). One form for both keeps the loop representation-blind.
 using Genome = std::vector<double>;
 
 // What evaluating one candidate measured. Objectives are maximised; one today (the fitness).
@@ -111,22 +108,26 @@ struct Bounds {
   friend bool operator==(const Bounds&, const Bounds&) = default;
 };
 
-// What one run evolves: genomes of `genome_size` weights (a network) or trees over
-// `primitives` (null for a network), from the run's `seed`; `tree_operators`, the GP's
-// settings (the experiment's `evolve gp(...)`), are what any algorithm that evolves trees
-// varies them with (null when the experiment has none); `start` is the genome a run
-// that starts from a stored controller (`start from`) begins with, or null.
+// What one run evolves: genomes of one kind (genome/kind.hpp), described by that kind's
+// member: `genome_size` weights (a network), or trees of `tree` (its primitive set, and the
+// operators that vary them, the experiment's `evolve gp(...)`: what any algorithm that
+// evolves trees varies them with; null when the experiment has none), from the run's
+// `seed`; `start` is the genome a run that starts from a stored controller (`start from`)
+// begins with, or null.
 // `objectives` holds one range per objective of an Outcome, in its maximised form (a
 // minimised objective declared in [0, 300] is [-300, 0] here); `descriptors` one per
 // descriptor, as declared.
 struct Problem {
   std::size_t genome_size = 0;
-  const gp::PrimitiveSet* primitives = nullptr;
+  genome::tree::TreeSpace tree;
   std::uint64_t seed = 0;
   const Genome* start = nullptr;
   std::vector<Bounds> objectives;
   std::vector<Bounds> descriptors;
-  const gp::GpSettings* tree_operators = nullptr;
+
+  [[nodiscard]] genome::GenomeKind kind() const noexcept {
+    return tree.primitives != nullptr ? genome::GenomeKind::Tree : genome::GenomeKind::Vector;
+  }
 };
 
 class Optimizer {

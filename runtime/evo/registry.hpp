@@ -12,6 +12,7 @@
 #include "runtime/evo/algorithm_options.hpp"
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
+#include "runtime/genome/kind.hpp"
 
 namespace esc::evo {
 
@@ -19,8 +20,7 @@ struct Algorithm {
   std::string_view name;          // as scripts and stored states name it
   // The layout of save()'s bytes: a stored state of another format is refused, not misread.
   std::uint32_t state_format = 1;
-  bool networks = false;          // evolves a network's weights
-  bool trees = false;             // evolves trees over a primitive set
+  genome::GenomeKinds kinds;      // what it evolves: a network's weights, trees, ...
   // A fresh optimizer for one run; `settings` holds the algorithm's own settings type (as
   // the compiler made it). Throws std::invalid_argument on impossible settings.
   std::unique_ptr<Optimizer> (*make)(const std::any& settings, const Problem& problem) = nullptr;

@@ -36,10 +36,10 @@ std::vector<double> pack_trees(const std::vector<evo::gp::Individual>& populatio
   for (const evo::gp::Individual& ind : population) {
     v.push_back(ind.fitness);
     v.push_back(static_cast<double>(ind.tree.size()));
-    for (const evo::gp::Node& n : ind.tree.nodes) {
+    for (const genome::tree::Node& n : ind.tree.nodes) {
       v.push_back(n.prim);
       v.push_back(n.arity);
-      v.push_back(static_cast<double>(evo::gp::index_of(n.type)));
+      v.push_back(static_cast<double>(genome::tree::index_of(n.type)));
       v.push_back(n.length);
       v.push_back(n.value);
     }
@@ -59,13 +59,13 @@ std::optional<std::vector<evo::gp::Individual>> unpack_trees(const std::vector<d
     if (!nodes) return std::nullopt;
     at += 2;
     ind.tree.nodes.resize(*nodes);
-    for (evo::gp::Node& n : ind.tree.nodes) {
-      const auto prim = whole(blob[at], 0xFFFF), arity = whole(blob[at + 1], evo::gp::kMaxArity),
-                 type = whole(blob[at + 2], evo::gp::kTypeCount - 1), length = whole(blob[at + 3], 1e9);
+    for (genome::tree::Node& n : ind.tree.nodes) {
+      const auto prim = whole(blob[at], 0xFFFF), arity = whole(blob[at + 1], genome::tree::kMaxArity),
+                 type = whole(blob[at + 2], genome::tree::kTypeCount - 1), length = whole(blob[at + 3], 1e9);
       if (!prim || !arity || !type || !length) return std::nullopt;
-      n.prim = static_cast<evo::gp::PrimitiveId>(*prim);
+      n.prim = static_cast<genome::tree::PrimitiveId>(*prim);
       n.arity = static_cast<std::uint8_t>(*arity);
-      n.type = evo::gp::kAllTypes[*type];
+      n.type = genome::tree::kAllTypes[*type];
       n.length = *length;
       n.value = blob[at + 4];
       at += kNodeWidth;

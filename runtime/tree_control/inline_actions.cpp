@@ -11,15 +11,15 @@ namespace esc::tree_control {
 
 namespace {
 
-using evo::gp::Kind;
-using evo::gp::Node;
-using evo::gp::Primitive;
-using evo::gp::PrimitiveId;
-using evo::gp::PrimitiveSet;
-using evo::gp::Tree;
-using evo::gp::Type;
+using genome::tree::Kind;
+using genome::tree::Node;
+using genome::tree::Primitive;
+using genome::tree::PrimitiveId;
+using genome::tree::PrimitiveSet;
+using genome::tree::Tree;
+using genome::tree::Type;
 using expr::Op;
-namespace prim = evo::gp::prim;
+namespace prim = genome::tree::prim;
 
 [[noreturn]] void fail(const std::string& why) { throw std::invalid_argument("inline_actions: " + why); }
 

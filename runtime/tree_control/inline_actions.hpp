@@ -15,20 +15,20 @@
 #include <span>
 
 #include "runtime/control/behavior.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
 namespace esc::tree_control {
 
 struct InlinedTree {
-  evo::gp::PrimitiveSet set;
-  evo::gp::Tree tree;
+  genome::tree::PrimitiveSet set;
+  genome::tree::Tree tree;
 };
 
 // `actions[k]` is the behavior of the Action primitives with index k. Throws
 // std::invalid_argument if the tree is not a well-typed Action tree of `set`, an index or a
 // parameter count does not match `actions`, or a behavior reads a slot that has no name
 // in scripts on its own (`in(zone)`, `reached(light)`: their names belong to an arena).
-[[nodiscard]] InlinedTree inline_actions(const evo::gp::Tree& tree, const evo::gp::PrimitiveSet& set,
+[[nodiscard]] InlinedTree inline_actions(const genome::tree::Tree& tree, const genome::tree::PrimitiveSet& set,
                                          std::span<const control::Behavior> actions);
 
 }  // namespace esc::tree_control

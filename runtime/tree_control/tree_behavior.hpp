@@ -6,13 +6,13 @@
 #include <string>
 
 #include "runtime/control/behavior.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
 namespace esc::tree_control {
 
 // A behavior with no parameters. Throws std::invalid_argument if the root is not Wheels or a
 // wheel's program would not fit expr::Program's stack.
-[[nodiscard]] control::Behavior to_behavior(const evo::gp::Tree& tree, const evo::gp::PrimitiveSet& set,
+[[nodiscard]] control::Behavior to_behavior(const genome::tree::Tree& tree, const genome::tree::PrimitiveSet& set,
                                             std::string name);
 
 }  // namespace esc::tree_control

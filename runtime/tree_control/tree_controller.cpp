@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/evo/gp/semantics.hpp"
+#include "runtime/genome/tree/semantics.hpp"
 
 namespace esc::tree_control {
 
@@ -13,11 +13,11 @@ namespace {
 using control::Behavior;
 using control::WheelCommand;
 
-using evo::gp::Kind;
-using evo::gp::Type;
+using genome::tree::Kind;
+using genome::tree::Type;
 
 std::string where(const TreeControllerSpec& spec) {
-  return fmt::format("tree controller '{}' ({} tree)", spec.name, evo::gp::name_of(spec.primitives.root()));
+  return fmt::format("tree controller '{}' ({} tree)", spec.name, genome::tree::name_of(spec.primitives.root()));
 }
 
 void check_behavior(const TreeControllerSpec& spec, const Behavior& b) {
@@ -38,7 +38,7 @@ const TreeControllerSpec& checked(const TreeControllerSpec& spec) {
   const Type root = spec.primitives.root();
   if (root != Type::Wheels && root != Type::Action && root != Type::Behavior)
     throw std::invalid_argument(where(spec) + ": the root type must be Wheels, Action or Behavior");
-  for (const evo::gp::Primitive& p : spec.primitives.primitives()) {
+  for (const genome::tree::Primitive& p : spec.primitives.primitives()) {
     if (p.kind == Kind::Action) {
       if (p.index >= spec.actions.size())
         throw std::invalid_argument(fmt::format("{}: action `{}` has index {}, but there are {} actions",
@@ -59,19 +59,19 @@ const TreeControllerSpec& checked(const TreeControllerSpec& spec) {
   return spec;
 }
 
-evo::gp::FlatProgram compiled(const TreeControllerSpec& spec, const evo::gp::Tree& tree) {
-  if (const std::string why = evo::gp::check(tree, spec.primitives, spec.primitives.root());
+genome::tree::FlatProgram compiled(const TreeControllerSpec& spec, const genome::tree::Tree& tree) {
+  if (const std::string why = genome::tree::check(tree, spec.primitives, spec.primitives.root());
       !why.empty())
     throw std::invalid_argument(where(spec) + ": ill-typed tree: " + why);
-  return evo::gp::compile(tree, spec.primitives);
+  return genome::tree::compile(tree, spec.primitives);
 }
 
 }  // namespace
 
-TreeController::TreeController(const TreeControllerSpec& spec, const evo::gp::Tree& tree)
+TreeController::TreeController(const TreeControllerSpec& spec, const genome::tree::Tree& tree)
     : spec_(&checked(spec)), program_(compiled(spec, tree)) {}
 
-void TreeController::rebind(const evo::gp::Tree& tree) {
+void TreeController::rebind(const genome::tree::Tree& tree) {
   program_ = compiled(*spec_, tree);
   reset();
 }
@@ -83,7 +83,7 @@ void TreeController::reset() noexcept {
 }
 
 WheelCommand TreeController::step(expr::Frame& frame) noexcept {
-  const evo::gp::Output out = program_.run(frame, stack_);
+  const genome::tree::Output out = program_.run(frame, stack_);
   switch (program_.type()) {
     case Type::Action: {
       const Behavior& b = spec_->actions[static_cast<std::size_t>(out.index)];
@@ -101,7 +101,7 @@ WheelCommand TreeController::step(expr::Frame& frame) noexcept {
     }
     default:
       last_action_ = -1;
-      return {evo::gp::sem::wheel(out.left), evo::gp::sem::wheel(out.right)};
+      return {genome::tree::sem::wheel(out.left), genome::tree::sem::wheel(out.right)};
   }
 }
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "runtime/control/behavior.hpp"
-#include "runtime/evo/gp/program.hpp"
+#include "runtime/genome/tree/program.hpp"
 
 namespace esc::tree_control {
 
@@ -35,7 +35,7 @@ struct Delegate {
 
 struct TreeControllerSpec {
   std::string name;
-  evo::gp::PrimitiveSet primitives;   // root(): Wheels, Action or Behavior
+  genome::tree::PrimitiveSet primitives;   // root(): Wheels, Action or Behavior
   std::vector<control::Behavior> actions;      // Action root: Action primitive with index k runs actions[k]
   std::vector<Delegate> behaviors;    // Behavior root: Behavior primitive index k runs behaviors[k]
 };
@@ -46,10 +46,10 @@ class TreeController {
   // Action or Behavior; an action or behavior index outside its list; an action whose
   // parameter count differs from its behavior's; an incomplete behavior program) or the
   // tree is not a well-typed tree of the root type. The spec must outlive the controller.
-  TreeController(const TreeControllerSpec& spec, const evo::gp::Tree& tree);
+  TreeController(const TreeControllerSpec& spec, const genome::tree::Tree& tree);
 
   // Compiles another tree (allocates) and resets.
-  void rebind(const evo::gp::Tree& tree);
+  void rebind(const genome::tree::Tree& tree);
 
   void reset() noexcept;
 
@@ -60,12 +60,12 @@ class TreeController {
   [[nodiscard]] int last_action() const noexcept { return last_action_; }
 
   [[nodiscard]] const TreeControllerSpec& spec() const noexcept { return *spec_; }
-  [[nodiscard]] const evo::gp::FlatProgram& program() const noexcept { return program_; }
+  [[nodiscard]] const genome::tree::FlatProgram& program() const noexcept { return program_; }
 
  private:
   const TreeControllerSpec* spec_;
-  evo::gp::FlatProgram program_;
-  evo::gp::FlatProgram::Stack stack_{};
+  genome::tree::FlatProgram program_;
+  genome::tree::FlatProgram::Stack stack_{};
   int last_action_ = -1;
 };
 

@@ -5,8 +5,8 @@
 #include <variant>
 
 #include "runtime/control/controller.hpp"
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
 namespace esc::tree_control {
 
@@ -19,7 +19,7 @@ using control::FixedController;
 using control::Head;
 using control::SupervisedBehavior;
 
-using evo::gp::Type;
+using genome::tree::Type;
 
 Type root_of(Head h) noexcept {
   switch (h) {
@@ -37,8 +37,8 @@ const ControllerSpec& checked(const ControllerSpec& spec, int depth) {
   if (!spec.is_tree()) throw std::invalid_argument("controller '" + spec.name + "' is not a tree controller");
   if (spec.primitives->root() != root_of(spec.head))
     throw std::invalid_argument("tree controller '" + spec.name + "': its primitives build " +
-                                std::string(evo::gp::name_of(spec.primitives->root())) + " trees, its head needs " +
-                                std::string(evo::gp::name_of(root_of(spec.head))));
+                                std::string(genome::tree::name_of(spec.primitives->root())) + " trees, its head needs " +
+                                std::string(genome::tree::name_of(root_of(spec.head))));
   return spec;
 }
 
@@ -80,13 +80,13 @@ TreeControllerSpec tree_controller_spec(const ControllerSpec& spec,
 
 }  // namespace
 
-TreeDriver::TreeDriver(const control::ControllerSpec& spec, const evo::gp::Tree& tree, int depth)
+TreeDriver::TreeDriver(const control::ControllerSpec& spec, const genome::tree::Tree& tree, int depth)
     : subs_(sub_controllers(checked(spec, depth), depth)),
       tree_spec_(tree_controller_spec(spec, subs_)),
       ctl_(tree_spec_, tree),
       usage_(spec.choice_names().size(), 0) {}
 
-void TreeDriver::rebind(const evo::gp::Tree& tree) {
+void TreeDriver::rebind(const genome::tree::Tree& tree) {
   ctl_.rebind(tree);
   clear_usage();
 }
@@ -105,7 +105,7 @@ void TreeDriver::clear_usage() noexcept {
 std::unique_ptr<control::Actor> make_actor(const control::ControllerSpec& spec, std::span<const double> genome,
                                            int depth) {
   if (!spec.is_tree()) return std::make_unique<Controller>(spec, genome, &make_actor, depth);
-  return std::make_unique<TreeDriver>(spec, evo::gp::decode(genome, *spec.primitives), depth);
+  return std::make_unique<TreeDriver>(spec, genome::tree::decode(genome, *spec.primitives), depth);
 }
 
 }  // namespace esc::tree_control

@@ -25,13 +25,13 @@ class TreeDriver final : public control::Actor {
   // match its primitives' root type, a supervised evolved controller cannot be built, or
   // `tree` is not a well-typed tree of the root type. `spec` must outlive the driver.
   // `depth`: levels of supervision above it (control::Controller::kMaxNesting at most).
-  TreeDriver(const control::ControllerSpec& spec, const evo::gp::Tree& tree, int depth = 0);
+  TreeDriver(const control::ControllerSpec& spec, const genome::tree::Tree& tree, int depth = 0);
   // The controller points into this object.
   TreeDriver(TreeDriver&&) = delete;
   TreeDriver& operator=(TreeDriver&&) = delete;
 
   // Compiles another tree (allocates), resets and clears the usage counts.
-  void rebind(const evo::gp::Tree& tree);
+  void rebind(const genome::tree::Tree& tree);
   void reset() noexcept override { ctl_.reset(); }
   control::WheelCommand step(expr::Frame& frame) noexcept override;
   [[nodiscard]] int last_action() const noexcept override { return ctl_.last_action(); }
@@ -50,7 +50,7 @@ class TreeDriver final : public control::Actor {
 };
 
 // The actor that runs a frozen controller: a TreeDriver for a tree (its genome the encoded
-// tree, runtime/evo/gp/codec.hpp), a control::Controller for a network; either builds its own
+// tree, runtime/genome/tree/codec.hpp), a control::Controller for a network; either builds its own
 // frozen controllers with make_actor again. The factory for every controller that may
 // supervise trees (control::ActorFactory).
 [[nodiscard]] std::unique_ptr<control::Actor> make_actor(const control::ControllerSpec& spec,

@@ -10,7 +10,7 @@
 
 #include "helpers.hpp"
 #include "runtime/eval/evaluator.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -336,13 +336,13 @@ TEST(BehaviorUse, ALibraryIsMarkedUselessOrNothing) {
 
 std::vector<double> tree_genome(const control::ControllerSpec& c) {
   const auto& set = *c.primitives;
-  const auto id = [&](std::string_view name, evo::gp::Type result) {
+  const auto id = [&](std::string_view name, genome::tree::Type result) {
     for (std::size_t i = 0; i < set.primitives().size(); ++i)
       if (set.primitives()[i].name == name && set.primitives()[i].result == result) return static_cast<double>(i);
     ADD_FAILURE() << "no primitive " << name;
     return 0.0;
   };
-  using evo::gp::Type;
+  using genome::tree::Type;
   // Postfix, two doubles per node (id, value): ir[2] 0.2 > 0.6 left 0.9 forward if.
   return {id("ir[2]", Type::Number), 0.0, id("erc", Type::Number), 0.2, id(">", Type::Bool), 0.0,
           id("erc", Type::Number), 0.6, id("left", Type::Action), 0.0, id("erc", Type::Number), 0.9,

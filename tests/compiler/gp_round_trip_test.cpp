@@ -9,9 +9,9 @@
 #include "helpers.hpp"
 #include "runtime/control/controller.hpp"
 #include "runtime/eval/campaign.hpp"
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/init.hpp"
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/init.hpp"
+#include "runtime/genome/tree/print.hpp"
 #include "runtime/tree_control/inline_actions.hpp"
 #include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
@@ -22,7 +22,6 @@ namespace {
 using test::options;
 using test::rendered;
 using test::source_dir;
-namespace gp = evo::gp;
 
 eval::ExperimentSpec shortened(const std::filesystem::path& script) {
   const CompileResult r = compile_file(script, options());
@@ -35,10 +34,10 @@ eval::ExperimentSpec shortened(const std::filesystem::path& script) {
 }
 
 // The script text a user gets for the tree: a behavior declaration.
-std::string printed_behavior(const control::ControllerSpec& c, const gp::Tree& tree) {
-  if (c.head == control::Head::Classical) return gp::behavior_script(tree, *c.primitives, "pasted");
+std::string printed_behavior(const control::ControllerSpec& c, const genome::tree::Tree& tree) {
+  if (c.head == control::Head::Classical) return genome::tree::behavior_script(tree, *c.primitives, "pasted");
   const tree_control::InlinedTree inlined = tree_control::inline_actions(tree, *c.primitives, c.actions);
-  return gp::behavior_script(inlined.tree, inlined.set, "pasted");
+  return genome::tree::behavior_script(inlined.tree, inlined.set, "pasted");
 }
 
 // Compiles `behavior` into a script of its own and returns the supervisor that runs it.
@@ -66,7 +65,7 @@ TEST(GpRoundTrip, ThePastedBestTreeScoresExactlyItsFitness) {
   for (std::size_t c = 0; c < 2; ++c) {
     const control::ControllerSpec& spec = x.controllers[c];
     const eval::RunResult& run = res.controllers[c].runs.at(0);
-    const gp::Tree tree = gp::decode(run.best_genome, *spec.primitives);
+    const genome::tree::Tree tree = genome::tree::decode(run.best_genome, *spec.primitives);
     const std::string behavior = printed_behavior(spec, tree);
     // What the run directory offers to paste is this behavior.
     EXPECT_EQ(behavior, "behavior pasted() { " + run.best_behavior + " }");
@@ -86,8 +85,8 @@ TEST(GpRoundTrip, RandomTreesOfBothRootsGiveTheSameCommandsAndFitness) {
   Rng rng(2003);
   for (const control::ControllerSpec& spec : x.controllers) {
     for (int i = 0; i < 12; ++i) {
-      const gp::Tree tree = i % 2 == 0 ? gp::full(*spec.primitives, spec.primitives->root(), 3 + i % 4, rng)
-                                       : gp::grow(*spec.primitives, spec.primitives->root(), 7, rng);
+      const genome::tree::Tree tree = i % 2 == 0 ? genome::tree::full(*spec.primitives, spec.primitives->root(), 3 + i % 4, rng)
+                                       : genome::tree::grow(*spec.primitives, spec.primitives->root(), 7, rng);
       const std::string behavior = printed_behavior(spec, tree);
       const control::ControllerSpec p = pasted(behavior);
       ASSERT_FALSE(p.behaviors.empty()) << behavior;
@@ -95,7 +94,7 @@ TEST(GpRoundTrip, RandomTreesOfBothRootsGiveTheSameCommandsAndFitness) {
       control::Controller hand_written(p, zeros);
       tree_control::TreeDriver evolved(spec, tree);
       for (int f = 0; f < 200; ++f) {
-        expr::Frame a = gp::test::random_frame(rng);
+        expr::Frame a = genome::tree::test::random_frame(rng);
         expr::Frame b = a;
         const control::WheelCommand want = evolved.step(a);
         const control::WheelCommand got = hand_written.step(b);

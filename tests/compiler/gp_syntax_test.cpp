@@ -7,7 +7,7 @@
 #include <variant>
 
 #include "helpers.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -42,13 +42,13 @@ experiment e {
 }
 )";
 
-const gp::Primitive* find(const gp::PrimitiveSet& set, std::string_view name, gp::Kind kind) {
-  for (const gp::Primitive& p : set.primitives())
+const genome::tree::Primitive* find(const genome::tree::PrimitiveSet& set, std::string_view name, genome::tree::Kind kind) {
+  for (const genome::tree::Primitive& p : set.primitives())
     if (p.name == name && p.kind == kind) return &p;
   return nullptr;
 }
 
-std::size_t count(const gp::PrimitiveSet& set, gp::Kind kind) {
+std::size_t count(const genome::tree::PrimitiveSet& set, genome::tree::Kind kind) {
   const auto all = set.primitives();
   return static_cast<std::size_t>(std::count_if(all.begin(), all.end(), [&](const auto& p) { return p.kind == kind; }));
 }
@@ -63,22 +63,22 @@ TEST(GpSyntax, TreeControllersForTheThreeUses) {
   const control::ControllerSpec& gw = x.controllers[1];
   ASSERT_TRUE(gw.is_tree());
   EXPECT_EQ(gw.head, control::Head::Classical);
-  EXPECT_EQ(gw.primitives->root(), gp::Type::Wheels);
+  EXPECT_EQ(gw.primitives->root(), genome::tree::Type::Wheels);
   EXPECT_EQ(gw.primitives_name, "p");
   EXPECT_EQ(gw.architecture(), "tree wheels");
   EXPECT_EQ(gw.genome_size(), 0u);
   EXPECT_EQ(x.genome_size_of(gw), 60u);   // max_size
   // 14 functions with `if` over Numbers, `if` over Wheels, 8 + 1 observables, one ERC, three
   // constants, wheels.
-  EXPECT_EQ(count(*gw.primitives, gp::Kind::Function), 14u);
-  EXPECT_EQ(count(*gw.primitives, gp::Kind::Observable), 9u);
-  EXPECT_EQ(count(*gw.primitives, gp::Kind::Erc), 1u);
-  EXPECT_EQ(count(*gw.primitives, gp::Kind::Constant), 3u);
-  EXPECT_EQ(count(*gw.primitives, gp::Kind::Wheels), 1u);
-  ASSERT_NE(find(*gw.primitives, "ir[7]", gp::Kind::Observable), nullptr);
-  ASSERT_NE(find(*gw.primitives, "0.1", gp::Kind::Constant), nullptr);   // 10cm in SI
-  ASSERT_NE(find(*gw.primitives, "true", gp::Kind::Constant), nullptr);
-  const gp::Primitive* erc = find(*gw.primitives, "erc", gp::Kind::Erc);
+  EXPECT_EQ(count(*gw.primitives, genome::tree::Kind::Function), 14u);
+  EXPECT_EQ(count(*gw.primitives, genome::tree::Kind::Observable), 9u);
+  EXPECT_EQ(count(*gw.primitives, genome::tree::Kind::Erc), 1u);
+  EXPECT_EQ(count(*gw.primitives, genome::tree::Kind::Constant), 3u);
+  EXPECT_EQ(count(*gw.primitives, genome::tree::Kind::Wheels), 1u);
+  ASSERT_NE(find(*gw.primitives, "ir[7]", genome::tree::Kind::Observable), nullptr);
+  ASSERT_NE(find(*gw.primitives, "0.1", genome::tree::Kind::Constant), nullptr);   // 10cm in SI
+  ASSERT_NE(find(*gw.primitives, "true", genome::tree::Kind::Constant), nullptr);
+  const genome::tree::Primitive* erc = find(*gw.primitives, "erc", genome::tree::Kind::Erc);
   ASSERT_NE(erc, nullptr);
   EXPECT_EQ(erc->lo, -1.0);
   EXPECT_EQ(erc->hi, 1.0);
@@ -86,25 +86,25 @@ TEST(GpSyntax, TreeControllersForTheThreeUses) {
   // Actions take as many Number arguments as their behaviors have parameters.
   const control::ControllerSpec& gs = x.controllers[2];
   EXPECT_EQ(gs.head, control::Head::Symbolic);
-  EXPECT_EQ(gs.primitives->root(), gp::Type::Action);
+  EXPECT_EQ(gs.primitives->root(), genome::tree::Type::Action);
   EXPECT_EQ(gs.architecture(), "tree actions");
   ASSERT_EQ(gs.actions.size(), 3u);
-  EXPECT_EQ(find(*gs.primitives, "forward", gp::Kind::Action)->arity, 1);
-  EXPECT_EQ(find(*gs.primitives, "turn", gp::Kind::Action)->arity, 2);
-  EXPECT_EQ(find(*gs.primitives, "stop_here", gp::Kind::Action)->arity, 0);
-  EXPECT_EQ(find(*gs.primitives, "turn", gp::Kind::Action)->index, 1u);
+  EXPECT_EQ(find(*gs.primitives, "forward", genome::tree::Kind::Action)->arity, 1);
+  EXPECT_EQ(find(*gs.primitives, "turn", genome::tree::Kind::Action)->arity, 2);
+  EXPECT_EQ(find(*gs.primitives, "stop_here", genome::tree::Kind::Action)->arity, 0);
+  EXPECT_EQ(find(*gs.primitives, "turn", genome::tree::Kind::Action)->index, 1u);
   EXPECT_EQ(gs.choice_names(), (std::vector<std::string>{"forward", "turn", "stop_here"}));
 
   // Supervised behaviors with their constant arguments.
   const control::ControllerSpec& gv = x.controllers[3];
   EXPECT_EQ(gv.head, control::Head::Supervisor);
-  EXPECT_EQ(gv.primitives->root(), gp::Type::Behavior);
+  EXPECT_EQ(gv.primitives->root(), genome::tree::Type::Behavior);
   EXPECT_EQ(gv.choice_names(), (std::vector<std::string>{"stop_here", "turn(0.5, -0.5)", "go(0.8)"}));
   const auto* turn = std::get_if<control::BehaviorCall>(&gv.behaviors[1].what);
   ASSERT_NE(turn, nullptr);
   EXPECT_EQ(turn->args, (std::vector<double>{0.5, -0.5}));
-  EXPECT_EQ(count(*gv.primitives, gp::Kind::Behavior), 3u);
-  EXPECT_EQ(count(*gv.primitives, gp::Kind::Wheels), 0u);
+  EXPECT_EQ(count(*gv.primitives, genome::tree::Kind::Behavior), 3u);
+  EXPECT_EQ(count(*gv.primitives, genome::tree::Kind::Wheels), 0u);
 }
 
 TEST(GpSyntax, EvolveGpBesideEvolveEs) {

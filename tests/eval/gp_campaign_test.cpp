@@ -8,8 +8,8 @@
 #include <variant>
 
 #include "runtime/eval/campaign.hpp"
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/print.hpp"
 #include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/gp_experiment.hpp"
 
@@ -86,8 +86,8 @@ TEST(GpCampaign, TheBestTreeReplaysToTheBestFitness) {
     ASSERT_FALSE(trace.empty());
     EXPECT_EQ(trace.back().fitness, run.best_fitness);
     // The stored genome is the tree: decoded and evaluated on its stream, the same fitness.
-    const evo::gp::Tree tree = evo::gp::decode(run.best_genome, *c.primitives);
-    EXPECT_EQ(evo::gp::to_script(tree, *c.primitives), run.best_tree);
+    const genome::tree::Tree tree = genome::tree::decode(run.best_genome, *c.primitives);
+    EXPECT_EQ(genome::tree::to_script(tree, *c.primitives), run.best_tree);
     const std::uint64_t seed = evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
     EXPECT_EQ(evaluator.evaluate(c, run.best_genome, seed).fitness, run.best_fitness);
     if (c.head == control::Head::Symbolic) {

@@ -4,39 +4,37 @@
 // forward, left and right (the GP twin of a symbolic controller).
 #include <memory>
 
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 #include "tests/control/behaviors.hpp"
 #include "tests/eval/test_experiment.hpp"
 
 namespace esc::testing {
 
-inline std::vector<evo::gp::Primitive> avoidance_primitives() {
-  namespace gp = evo::gp;
+inline std::vector<genome::tree::Primitive> avoidance_primitives() {
   using expr::Op;
-  std::vector<gp::Primitive> p;
-  for (Op op : {Op::Add, Op::Sub, Op::Mul, Op::Min, Op::Max, Op::Lt, Op::Gt}) p.push_back(gp::prim::function(op));
-  p.push_back(gp::prim::if_then_else(gp::Type::Number));
-  for (int i = 0; i < 8; ++i) p.push_back(*gp::prim::observable("ir[" + std::to_string(i) + "]"));
-  p.push_back(gp::prim::erc(-1.0, 1.0));
+  std::vector<genome::tree::Primitive> p;
+  for (Op op : {Op::Add, Op::Sub, Op::Mul, Op::Min, Op::Max, Op::Lt, Op::Gt}) p.push_back(genome::tree::prim::function(op));
+  p.push_back(genome::tree::prim::if_then_else(genome::tree::Type::Number));
+  for (int i = 0; i < 8; ++i) p.push_back(*genome::tree::prim::observable("ir[" + std::to_string(i) + "]"));
+  p.push_back(genome::tree::prim::erc(-1.0, 1.0));
   return p;
 }
 
 // A tree controller over avoidance_primitives(): a Wheels tree (Classical head) or an
 // Action tree over forward, left and right (Symbolic head).
 inline control::ControllerSpec tree_controller(const std::string& name, control::Head head) {
-  namespace gp = evo::gp;
   control::ControllerSpec c;
   c.name = name;
   c.head = head;
   auto p = avoidance_primitives();
-  if (head == control::Head::Classical) p.push_back(gp::prim::wheels());
+  if (head == control::Head::Classical) p.push_back(genome::tree::prim::wheels());
   if (head == control::Head::Symbolic) {
     c.actions = {control::testing::forward(), control::testing::left(), control::testing::right()};
-    for (std::uint32_t k = 0; k < 3; ++k) p.push_back(gp::prim::action(c.actions[k].name, k, 1));
-    p.push_back(gp::prim::if_then_else(gp::Type::Action));
+    for (std::uint32_t k = 0; k < 3; ++k) p.push_back(genome::tree::prim::action(c.actions[k].name, k, 1));
+    p.push_back(genome::tree::prim::if_then_else(genome::tree::Type::Action));
   }
-  const gp::Type root = head == control::Head::Classical ? gp::Type::Wheels : gp::Type::Action;
-  c.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), root);
+  const genome::tree::Type root = head == control::Head::Classical ? genome::tree::Type::Wheels : genome::tree::Type::Action;
+  c.primitives = std::make_shared<const genome::tree::PrimitiveSet>(std::move(p), root);
   c.primitives_name = "avoid";
   return c;
 }

@@ -10,7 +10,7 @@
 
 #include "runtime/eval/experiment.hpp"
 #include "runtime/evo/evaluate_only.hpp"
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 #include "runtime/evo/registry.hpp"
 #include "tests/eval/gp_experiment.hpp"
 
@@ -51,16 +51,16 @@ std::vector<Case> cases() {
   std::vector<Case> v;
   for (const evo::Algorithm& a : evo::algorithms()) {
     const std::string name(a.name);
-    if (a.trees) {
+    if (a.kinds.has(genome::GenomeKind::Tree)) {
       ExperimentSpec x = testing::gp_experiment();
       declare_objectives(x);
       if (a.defaults != nullptr) {
         x.controllers[1].evolved_by = name;
         x.algorithm_settings[name] = a.defaults();
       }
-      v.push_back({a.networks ? name + " (trees)" : name, name, std::move(x), 1});
+      v.push_back({a.kinds.has(genome::GenomeKind::Vector) ? name + " (trees)" : name, name, std::move(x), 1});
     }
-    if (!a.networks) continue;
+    if (!a.kinds.has(genome::GenomeKind::Vector)) continue;
     ExperimentSpec x = testing::small_experiment();
     declare_objectives(x);
     x.networks = name;
@@ -128,7 +128,7 @@ TEST(Optimizer, AStateItCouldNotHaveSavedIsRefused) {
   more.es.lambda += 5;
   EXPECT_THROW(make(more, more.controllers[0])->load(state), std::invalid_argument);
   const std::size_t n = spec.controllers[0].genome_size();
-  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, nullptr, 77, nullptr, {}, {}})->load(state),
+  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, {}, 77, nullptr, {}, {}})->load(state),
                std::invalid_argument);
 }
 
@@ -171,9 +171,9 @@ TEST(Optimizer, TreeCandidatesAndMembersAreTreesWithinTheGpLimits) {
     for (int g = 0; g < 3; ++g) {
       const std::vector<evo::Genome> asked = o->ask(g);
       for (const evo::Genome& x : asked) {
-        const evo::gp::Tree t = evo::gp::decode(x, *c.primitives);
+        const genome::tree::Tree t = genome::tree::decode(x, *c.primitives);
         EXPECT_LE(static_cast<int>(t.size()), k.spec.gp->max_size) << k.name;
-        EXPECT_LE(evo::gp::depth(t), k.spec.gp->max_depth) << k.name;
+        EXPECT_LE(genome::tree::depth(t), k.spec.gp->max_depth) << k.name;
       }
       o->tell(measure(asked));
     }
@@ -181,7 +181,7 @@ TEST(Optimizer, TreeCandidatesAndMembersAreTreesWithinTheGpLimits) {
     ASSERT_TRUE(members.has_value()) << k.name;
     for (const evo::Member& m : members->members) {
       if (!m.genome.empty()) {
-        EXPECT_NO_THROW((void)evo::gp::decode(m.genome, *c.primitives)) << k.name;
+        EXPECT_NO_THROW((void)genome::tree::decode(m.genome, *c.primitives)) << k.name;
       }
     }
   }
@@ -200,28 +200,29 @@ TEST(Optimizer, AStartGenomeIsCandidateZeroOfGenerationZero) {
 
 TEST(Optimizer, EvaluatingAStoredGenomeAsksForItAloneAndKeepsNoState) {
   const evo::Genome g{0.25, -0.5};
-  auto o = evo::make_evaluate_only({2, nullptr, 1, &g, {}, {}});
+  auto o = evo::make_evaluate_only({2, {}, 1, &g, {}, {}});
   EXPECT_EQ(o->ask(0), std::vector<evo::Genome>{g});
   o->tell(measure({g}));
   EXPECT_TRUE(o->save().empty());
   EXPECT_THROW(o->load(evo::StateBytes{1}), std::invalid_argument);
-  EXPECT_THROW((void)evo::make_evaluate_only({2, nullptr, 1, nullptr, {}, {}}), std::invalid_argument);
+  EXPECT_THROW((void)evo::make_evaluate_only({2, {}, 1, nullptr, {}, {}}), std::invalid_argument);
 }
 
 TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
   const auto& all = evo::algorithms();
   for (std::size_t i = 0; i < all.size(); ++i) {
     EXPECT_EQ(evo::find_algorithm(all[i].name), &all[i]);
-    EXPECT_TRUE(all[i].networks || all[i].trees) << all[i].name;
+    EXPECT_NE(all[i].kinds, genome::GenomeKinds{}) << all[i].name;
     EXPECT_NE(all[i].name, evo::kEvaluateOnly);
   }
   ASSERT_NE(evo::find_algorithm("es"), nullptr);
-  EXPECT_TRUE(evo::find_algorithm("es")->networks);
-  EXPECT_FALSE(evo::find_algorithm("es")->trees);
+  using enum genome::GenomeKind;
+  EXPECT_EQ(evo::find_algorithm("es")->kinds, genome::GenomeKinds{Vector});
+  EXPECT_EQ(evo::find_algorithm("cmaes")->kinds, genome::GenomeKinds{Vector});
   ASSERT_NE(evo::find_algorithm("gp"), nullptr);
-  EXPECT_TRUE(evo::find_algorithm("gp")->trees);
+  EXPECT_EQ(evo::find_algorithm("gp")->kinds, genome::GenomeKinds{Tree});
   for (const char* both : {"nsga2", "novelty", "map_elites", "cvt_map_elites"})
-    EXPECT_TRUE(evo::find_algorithm(both)->trees && evo::find_algorithm(both)->networks) << both;
+    EXPECT_EQ(evo::find_algorithm(both)->kinds, (genome::GenomeKinds{Vector, Tree})) << both;
   EXPECT_EQ(evo::find_algorithm("nsga3"), nullptr);
 }
 

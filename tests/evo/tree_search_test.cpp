@@ -1,5 +1,5 @@
 // NSGA-II, novelty search and MAP-Elites over trees (the GP's operators on encoded trees,
-// gp/tree_variation.hpp), through the Optimizer interface as a run drives them, on
+// genome/tree/tree_variation.hpp), through the Optimizer interface as a run drives them, on
 // objectives and descriptors of the trees' shape alone (no robot): the count of `+` nodes
 // against the size, which conflict, since every `+` adds two nodes at least.
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/map_elites/map_elites_optimizer.hpp"
 #include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/novelty/novelty_optimizer.hpp"
@@ -26,28 +26,28 @@ namespace esc::evo {
 namespace {
 
 struct Shapes {
-  gp::PrimitiveSet set = gp::test::number_set();
-  gp::GpSettings operators{.crossover = 0.5, .subtree_mutation = 0.2, .point_mutation = 0.2, .hoist_mutation = 0.1,
-                           .max_depth = 8, .max_size = 40, .init_max_depth = 4};
+  genome::tree::PrimitiveSet set = genome::tree::test::number_set();
+  genome::tree::TreeOperators operators{.crossover = 0.5, .subtree_mutation = 0.2, .point_mutation = 0.2, .hoist_mutation = 0.1,
+                                     .max_depth = 8, .max_size = 40, .init_max_depth = 4};
 
   // Objectives: `+` nodes, and the size negated (both maximised); descriptors: size and
   // depth as fractions of the limits.
   [[nodiscard]] std::vector<Outcome> measure(const std::vector<Genome>& genomes) const {
     std::vector<Outcome> out;
     for (const Genome& x : genomes) {
-      const gp::Tree t = gp::decode(x, set);
-      const auto adds = std::count_if(t.nodes.begin(), t.nodes.end(), [&](const gp::Node& n) { return set[n.prim].name == "+"; });
+      const genome::tree::Tree t = genome::tree::decode(x, set);
+      const auto adds = std::count_if(t.nodes.begin(), t.nodes.end(), [&](const genome::tree::Node& n) { return set[n.prim].name == "+"; });
       const double size = static_cast<double>(t.size());
       out.push_back({{static_cast<double>(adds), -size},
-                     {size / operators.max_size, static_cast<double>(gp::depth(t)) / operators.max_depth}});
+                     {size / operators.max_size, static_cast<double>(genome::tree::depth(t)) / operators.max_depth}});
     }
     return out;
   }
 
   [[nodiscard]] Problem problem(std::uint64_t seed = 5) const {
     Problem p;
-    p.primitives = &set;
-    p.tree_operators = &operators;
+    p.tree.primitives = &set;
+    p.tree.operators = &operators;
     p.seed = seed;
     p.objectives = {{0, 20}, {-40, 0}};
     p.descriptors = {{0, 1}, {0, 1}};
@@ -135,7 +135,7 @@ TEST(TreeNovelty, ArchivesBehaviorsAndKeepsAFrontOfNoveltyAndFitness) {
   const Members front = *o->members(false);
   EXPECT_EQ(front.own_objectives, std::vector<std::string>{"novelty"});
   ASSERT_FALSE(front.members.empty());
-  for (const Member& m : front.members) EXPECT_NO_THROW((void)gp::decode(m.genome, shapes.set));
+  for (const Member& m : front.members) EXPECT_NO_THROW((void)genome::tree::decode(m.genome, shapes.set));
 }
 
 TEST(TreeMapElites, FillsMoreCellsOverGenerations) {
@@ -155,7 +155,7 @@ TEST(TreeMapElites, FillsMoreCellsOverGenerations) {
 // mutated.
 TEST(TreeMapElites, EveryChildIsAMutation) {
   const Shapes shapes;
-  const gp::TreeVariation trees(shapes.operators, shapes.set);
+  const genome::tree::TreeVariation trees(shapes.operators, shapes.set);
   Rng rng(3);
   const std::vector<Genome> parents = trees.first(50, rng);
   int same = 0;
@@ -198,18 +198,18 @@ TEST(TreeSearch, NeedsTheGpSettingsAndCountsTreesInItsMemory) {
     const Algorithm& a = *find_algorithm(name);
     EXPECT_EQ(a.problem(settings, p), "") << name;
     const double small = a.memory(settings, p, 6).bytes;
-    gp::GpSettings bigger = shapes.operators;
+    genome::tree::TreeOperators bigger = shapes.operators;
     bigger.max_size = 400;
     Problem q = p;
-    q.tree_operators = &bigger;
+    q.tree.operators = &bigger;
     EXPECT_GT(a.memory(settings, q, 6).bytes, 3.0 * small) << name << ": a tree counts max_size nodes";
-    q.tree_operators = nullptr;
+    q.tree.operators = nullptr;
     EXPECT_NE(a.problem(settings, q).find("`evolve gp(...)`"), std::string::npos) << name;
     EXPECT_THROW((void)a.make(settings, q), std::invalid_argument) << name;
   }
-  gp::GpSettings still = shapes.operators;
+  genome::tree::TreeOperators still = shapes.operators;
   still.subtree_mutation = still.point_mutation = still.hoist_mutation = 0.0;
-  p.tree_operators = &still;
+  p.tree.operators = &still;
   EXPECT_NE(find_algorithm("map_elites")->problem(map_elites_settings(), p).find("are all 0"), std::string::npos);
 }
 

@@ -1,11 +1,11 @@
 // Trees as doubles (codec.hpp): exact, and bad input refused.
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/codec.hpp"
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/codec.hpp"
+#include "runtime/genome/tree/init.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 namespace {
 
 TEST(Codec, EveryTreeOfEveryRootRoundTrips) {
@@ -36,4 +36,4 @@ TEST(Codec, WhatIsNotATreeOfTheSetIsRefused) {
 }
 
 }  // namespace
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -5,14 +5,14 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/convert.hpp"
-#include "runtime/evo/gp/init.hpp"
-#include "runtime/evo/gp/program.hpp"
-#include "runtime/evo/gp/recursive.hpp"
-#include "runtime/evo/gp/semantics.hpp"
+#include "runtime/genome/tree/convert.hpp"
+#include "runtime/genome/tree/init.hpp"
+#include "runtime/genome/tree/program.hpp"
+#include "runtime/genome/tree/recursive.hpp"
+#include "runtime/genome/tree/semantics.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 namespace {
 
 using expr::Op;
@@ -140,4 +140,4 @@ TEST(FlatProgram, EqualsExprProgramBitForBit) {
 }
 
 }  // namespace
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

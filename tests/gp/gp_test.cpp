@@ -7,11 +7,13 @@
 #include <tbb/parallel_for.h>
 
 #include "runtime/evo/gp/gp.hpp"
-#include "runtime/evo/gp/program.hpp"
+#include "runtime/genome/tree/program.hpp"
 #include "tests/gp/helpers.hpp"
 
 namespace esc::evo::gp {
 namespace {
+
+using namespace genome::tree;
 
 using expr::Op;
 

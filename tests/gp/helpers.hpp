@@ -3,10 +3,10 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 #include "runtime/expr/observables.hpp"
 
-namespace esc::evo::gp::test {
+namespace esc::genome::tree::test {
 
 inline std::vector<Primitive> numeric_primitives() {
   using expr::Op;
@@ -72,15 +72,15 @@ inline expr::Frame random_frame(Rng& rng) {
   return f;
 }
 
-}  // namespace esc::evo::gp::test
+}  // namespace esc::genome::tree::test
 
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
 
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
-namespace esc::evo::gp::test {
+namespace esc::genome::tree::test {
 
 struct Tok {
   std::string name;   // primitive name; "neg" for unary minus; "erc" with a value
@@ -118,11 +118,11 @@ inline Tree postfix(const PrimitiveSet& set, std::initializer_list<Tok> toks) {
   return t;
 }
 
-}  // namespace esc::evo::gp::test
+}  // namespace esc::genome::tree::test
 
 #include "runtime/control/behavior.hpp"
 
-namespace esc::evo::gp::test {
+namespace esc::genome::tree::test {
 
 // behavior NAME(p) { wheels(sl * p, sr * p) } with sl, sr in {-1, 1}.
 inline control::Behavior signed_behavior(const char* name, double sl, double sr) {
@@ -146,4 +146,4 @@ inline std::vector<control::Behavior> standard_actions() {
           signed_behavior("right", 1, -1), signed_behavior("backward", -1, -1), stop};
 }
 
-}  // namespace esc::evo::gp::test
+}  // namespace esc::genome::tree::test

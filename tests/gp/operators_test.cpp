@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/init.hpp"
-#include "runtime/evo/gp/operators.hpp"
+#include "runtime/genome/tree/init.hpp"
+#include "runtime/genome/tree/operators.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 namespace {
 
 constexpr Limits kLimits{8, 60};
@@ -147,4 +147,4 @@ TEST(Operators, SameSeedSameChildren) {
 }
 
 }  // namespace
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 namespace {
 
 using expr::Op;
@@ -116,4 +116,4 @@ TEST(PrimitiveSet, SameSignature) {
 }
 
 }  // namespace
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/print.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 namespace {
 
 using test::postfix;
@@ -105,4 +105,4 @@ TEST(Print, NumbersReadBackExactly) {
 }
 
 }  // namespace
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -3,11 +3,11 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/init.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/init.hpp"
+#include "runtime/genome/tree/tree.hpp"
 #include "tests/gp/helpers.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 namespace {
 
 using test::postfix;
@@ -126,4 +126,4 @@ TEST(Init, SameSeedSameTrees) {
 }
 
 }  // namespace
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 #include "runtime/evo/gp/gp_optimizer.hpp"
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/print.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/run_directory.hpp"
@@ -54,7 +54,7 @@ TEST(TreeState, AGpPopulationRoundTripsBitForBit) {
   st.optimizer = {"gp", 1, evo::gp::gp_state(pop)};
   st.has_best = true;
   st.best_fitness = 2.5;
-  st.best_genome = evo::gp::encode(pop[3].tree);
+  st.best_genome = genome::tree::encode(pop[3].tree);
   for (const bool legacy : {false, true}) {
     const fs::path dir = fresh_dir(legacy ? "population-schema5" : "population");
     {
@@ -86,15 +86,15 @@ TEST(TreeState, AFinishedRunKeepsItsBestTreeAndDropsItsState) {
   const fs::path dir = fresh_dir("finished");
   const eval::ExperimentSpec e = testing::gp_experiment();
   const auto pop = population(e);
-  const evo::gp::PrimitiveSet& set = *e.controllers[0].primitives;
+  const genome::tree::PrimitiveSet& set = *e.controllers[0].primitives;
   eval::RunState st;
   st.generations.push_back({0, 2.5, 1.0, 0.5, 24, 999, 0.1});
   st.optimizer = {"gp", 1, evo::gp::gp_state(pop)};
   eval::RunResult r;
   r.generations = st.generations;
   r.best_fitness = 2.5;
-  r.best_genome = evo::gp::encode(pop[0].tree);
-  r.best_tree = evo::gp::to_script(pop[0].tree, set);
+  r.best_genome = genome::tree::encode(pop[0].tree);
+  r.best_tree = genome::tree::to_script(pop[0].tree, set);
   r.best_behavior = r.best_tree;   // a Wheels tree is its own behavior body
   {
     RunDirectory rd(dir / "out", e, {});
@@ -107,7 +107,7 @@ TEST(TreeState, AFinishedRunKeepsItsBestTreeAndDropsItsState) {
   ASSERT_EQ(c.finished.size(), 1u);
   EXPECT_EQ(c.finished[0].best_tree, r.best_tree);
   EXPECT_EQ(c.finished[0].best_behavior, r.best_behavior);
-  EXPECT_EQ(evo::gp::decode(c.finished[0].best_genome, set), pop[0].tree);
+  EXPECT_EQ(genome::tree::decode(c.finished[0].best_genome, set), pop[0].tree);
   const std::string esc = slurp(dir / "out" / "GW" / "run-01.best.esc");
   EXPECT_NE(esc.find("behavior GW_run01() { " + r.best_tree + " }"), std::string::npos) << esc;
   EXPECT_NE(slurp(dir / "out" / "summary.json").find("\"best_tree\""), std::string::npos);

@@ -9,11 +9,13 @@
 #include <gtest/gtest.h>
 
 #include "runtime/evo/gp/gp.hpp"
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/print.hpp"
 #include "runtime/tree_control/tree_controller.hpp"
 
 namespace esc::evo::gp {
 namespace {
+
+using namespace genome::tree;
 
 using expr::Op;
 

@@ -3,7 +3,7 @@
 // behaviors is refused.
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/init.hpp"
 #include "runtime/tree_control/inline_actions.hpp"
 #include "runtime/tree_control/tree_controller.hpp"
 #include "tests/gp/helpers.hpp"
@@ -11,25 +11,24 @@
 namespace esc::tree_control {
 namespace {
 
-using evo::gp::PrimitiveSet;
-using evo::gp::Tree;
-using evo::gp::Type;
-namespace gp = evo::gp;
+using genome::tree::PrimitiveSet;
+using genome::tree::Tree;
+using genome::tree::Type;
 
 TEST(InlineActions, TheInlinedTreeGivesTheActionTreesCommands) {
-  const PrimitiveSet set = gp::test::action_set();
-  const std::vector<control::Behavior> actions = gp::test::standard_actions();
+  const PrimitiveSet set = genome::tree::test::action_set();
+  const std::vector<control::Behavior> actions = genome::tree::test::standard_actions();
   const TreeControllerSpec spec{"a", set, actions, {}};
   Rng rng(23);
   for (int i = 0; i < 40; ++i) {
-    const Tree t = i % 2 == 0 ? gp::full(set, Type::Action, 2 + i % 5, rng) : gp::grow(set, Type::Action, 8, rng);
+    const Tree t = i % 2 == 0 ? genome::tree::full(set, Type::Action, 2 + i % 5, rng) : genome::tree::grow(set, Type::Action, 8, rng);
     const InlinedTree in = inline_actions(t, set, actions);
     EXPECT_EQ(in.set.root(), Type::Wheels);
     const TreeControllerSpec wheels{"w", in.set, actions, {}};   // the old actions stay in the set
     TreeController a(spec, t);
     TreeController w(wheels, in.tree);
     for (int f = 0; f < 50; ++f) {
-      expr::Frame x = gp::test::random_frame(rng);
+      expr::Frame x = genome::tree::test::random_frame(rng);
       expr::Frame y = x;
       const control::WheelCommand ca = a.step(x);
       const control::WheelCommand cw = w.step(y);
@@ -42,11 +41,11 @@ TEST(InlineActions, TheInlinedTreeGivesTheActionTreesCommands) {
 // The navigator's observables follow the behavior parameters in the frame: a behavior that
 // reads `x` reads the observable, not a parameter.
 TEST(InlineActions, ObservablesAfterTheParametersAreObservables) {
-  const PrimitiveSet set = gp::test::action_set();
-  std::vector<control::Behavior> actions = gp::test::standard_actions();
+  const PrimitiveSet set = genome::tree::test::action_set();
+  std::vector<control::Behavior> actions = genome::tree::test::standard_actions();
   actions.back().left = expr::Program();
   actions.back().left.push_load(expr::slot::x);
-  const Tree t = gp::test::postfix(set, {"stop"});
+  const Tree t = genome::tree::test::postfix(set, {"stop"});
   const InlinedTree in = inline_actions(t, set, actions);
   const TreeControllerSpec spec{"a", set, actions, {}};
   const TreeControllerSpec wheels{"w", in.set, actions, {}};
@@ -61,19 +60,19 @@ TEST(InlineActions, ObservablesAfterTheParametersAreObservables) {
 
 TEST(InlineActions, OnlyActionTreesWithTheirBehaviors) {
   Rng rng(2);
-  const PrimitiveSet set = gp::test::action_set();
-  const Tree t = gp::full(set, Type::Action, 3, rng);
-  std::vector<control::Behavior> actions = gp::test::standard_actions();
-  EXPECT_THROW((void)inline_actions(t, gp::test::wheels_set(), actions), std::invalid_argument);
+  const PrimitiveSet set = genome::tree::test::action_set();
+  const Tree t = genome::tree::full(set, Type::Action, 3, rng);
+  std::vector<control::Behavior> actions = genome::tree::test::standard_actions();
+  EXPECT_THROW((void)inline_actions(t, genome::tree::test::wheels_set(), actions), std::invalid_argument);
   actions.pop_back();   // `stop` has no behavior
-  EXPECT_THROW((void)inline_actions(gp::test::postfix(set, {"stop"}), set, actions), std::invalid_argument);
+  EXPECT_THROW((void)inline_actions(genome::tree::test::postfix(set, {"stop"}), set, actions), std::invalid_argument);
   // A behavior reading `in(zone)`: no name of its own in scripts.
-  control::Behavior zone = gp::test::standard_actions().back();
+  control::Behavior zone = genome::tree::test::standard_actions().back();
   zone.left = expr::Program();
   zone.left.push_load(expr::slot::in_zone);
-  actions = gp::test::standard_actions();
+  actions = genome::tree::test::standard_actions();
   actions.back() = zone;
-  EXPECT_THROW((void)inline_actions(gp::test::postfix(set, {"stop"}), set, actions), std::invalid_argument);
+  EXPECT_THROW((void)inline_actions(genome::tree::test::postfix(set, {"stop"}), set, actions), std::invalid_argument);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/init.hpp"
 #include "runtime/tree_control/tree_controller.hpp"
 #include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
@@ -23,22 +23,21 @@ using control::Head;
 using control::NetworkKind;
 using control::WheelCommand;
 
-namespace gp = evo::gp;
 
 TEST(NoAlloc, TreeControllerStepDoesNotAllocate) {
   std::vector<Delegate> delegates(3);
-  for (std::size_t k = 0; k < 3; ++k) delegates[k].behavior = gp::test::signed_behavior("b", 1, -1);
+  for (std::size_t k = 0; k < 3; ++k) delegates[k].behavior = genome::tree::test::signed_behavior("b", 1, -1);
   const std::vector<TreeControllerSpec> specs = {
-      {"w", gp::test::wheels_set(), {}, {}},
-      {"a", gp::test::action_set(), gp::test::standard_actions(), {}},
-      {"s", gp::test::behavior_set(), {}, delegates}};
+      {"w", genome::tree::test::wheels_set(), {}, {}},
+      {"a", genome::tree::test::action_set(), genome::tree::test::standard_actions(), {}},
+      {"s", genome::tree::test::behavior_set(), {}, delegates}};
   for (const TreeControllerSpec& spec : specs) {
     Rng rng(7);
     std::vector<TreeController> ctls;
     for (int k = 0; k < 20; ++k)
-      ctls.emplace_back(spec, gp::full(spec.primitives, spec.primitives.root(), 6, rng));
+      ctls.emplace_back(spec, genome::tree::full(spec.primitives, spec.primitives.root(), 6, rng));
     std::vector<expr::Frame> frames;
-    for (int k = 0; k < 50; ++k) frames.push_back(gp::test::random_frame(rng));
+    for (int k = 0; k < 50; ++k) frames.push_back(genome::tree::test::random_frame(rng));
     double sum = 0.0;
     g_news = 0;
     g_counting = true;
@@ -63,19 +62,19 @@ TEST(NoAlloc, TreeDriverOverAnEvolvedNetworkDoesNotAllocate) {
   ControllerSpec spec;
   spec.name = "tv";
   spec.head = Head::Supervisor;
-  spec.behaviors.push_back({"go", BehaviorCall{gp::test::signed_behavior("go", 1, 1), {0.5}}});
+  spec.behaviors.push_back({"go", BehaviorCall{genome::tree::test::signed_behavior("go", 1, 1), {0.5}}});
   spec.behaviors.push_back({"net", FixedController{net, std::vector<double>(net->genome_size(), 0.1)}});
-  auto p = gp::test::numeric_primitives();
-  p.push_back(gp::prim::behavior("go", 0));
-  p.push_back(gp::prim::behavior("net", 1));
-  p.push_back(gp::prim::if_then_else(gp::Type::Behavior));
-  spec.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), gp::Type::Behavior);
+  auto p = genome::tree::test::numeric_primitives();
+  p.push_back(genome::tree::prim::behavior("go", 0));
+  p.push_back(genome::tree::prim::behavior("net", 1));
+  p.push_back(genome::tree::prim::if_then_else(genome::tree::Type::Behavior));
+  spec.primitives = std::make_shared<const genome::tree::PrimitiveSet>(std::move(p), genome::tree::Type::Behavior);
   Rng rng(3);
   std::vector<expr::Frame> frames;
-  for (int k = 0; k < 50; ++k) frames.push_back(gp::test::random_frame(rng));
+  for (int k = 0; k < 50; ++k) frames.push_back(genome::tree::test::random_frame(rng));
   double sum = 0.0;
   for (int k = 0; k < 10; ++k) {
-    TreeDriver driver(spec, gp::full(*spec.primitives, gp::Type::Behavior, 5, rng));
+    TreeDriver driver(spec, genome::tree::full(*spec.primitives, genome::tree::Type::Behavior, 5, rng));
     g_news = 0;
     g_counting = true;
     driver.reset();

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/init.hpp"
 #include "runtime/tree_control/tree_behavior.hpp"
 #include "runtime/tree_control/tree_controller.hpp"
 #include "tests/gp/helpers.hpp"
@@ -14,14 +14,13 @@ namespace {
 
 using control::Behavior;
 using control::WheelCommand;
-using evo::gp::PrimitiveSet;
-using evo::gp::Tree;
-using evo::gp::Type;
-using evo::gp::test::postfix;
-namespace gp = evo::gp;
+using genome::tree::PrimitiveSet;
+using genome::tree::Tree;
+using genome::tree::Type;
+using genome::tree::test::postfix;
 
 TEST(TreeController, WheelsTreeGivesTheWheelCommands) {
-  const TreeControllerSpec spec{"w", gp::test::wheels_set(), {}, {}};
+  const TreeControllerSpec spec{"w", genome::tree::test::wheels_set(), {}, {}};
   // wheels(ir[0] * 2, -0.5)
   TreeController c(spec, postfix(spec.primitives, {"ir[0]", {"erc", 2.0}, "*", {"erc", -0.5}, "wheels"}));
   expr::Frame f{};
@@ -35,7 +34,7 @@ TEST(TreeController, WheelsTreeGivesTheWheelCommands) {
 }
 
 TEST(TreeController, ActionTreePicksTheActionAndPassesItsParameter) {
-  const TreeControllerSpec spec{"a", gp::test::action_set(), gp::test::standard_actions(), {}};
+  const TreeControllerSpec spec{"a", genome::tree::test::action_set(), genome::tree::test::standard_actions(), {}};
   // if ir[1] > 0.5 then left(ir[1]) else forward(0.25)
   TreeController c(spec, postfix(spec.primitives, {"ir[1]", {"erc", 0.5}, ">", "ir[1]", "left",
                                                    {"erc", 0.25}, "forward", "if"}));
@@ -63,10 +62,10 @@ TEST(TreeController, SupervisorDelegatesToBehaviorsAndControllers) {
   int calls = 0, resets = 0;
   std::vector<Delegate> delegates(3);
   delegates[0].name = "avoid";
-  delegates[0].behavior = gp::test::signed_behavior("right", 1, -1);
+  delegates[0].behavior = genome::tree::test::signed_behavior("right", 1, -1);
   delegates[0].params = {0.7, 0, 0, 0};
   delegates[1].name = "explore";
-  delegates[1].behavior = gp::test::signed_behavior("forward", 1, 1);
+  delegates[1].behavior = genome::tree::test::signed_behavior("forward", 1, 1);
   delegates[1].params = {0.4, 0, 0, 0};
   delegates[2].name = "home";  // any controller, through the hook
   delegates[2].step = [&calls](expr::Frame&) {
@@ -74,7 +73,7 @@ TEST(TreeController, SupervisorDelegatesToBehaviorsAndControllers) {
     return WheelCommand{0.1, 0.2};
   };
   delegates[2].reset = [&resets] { ++resets; };
-  const TreeControllerSpec spec{"s", gp::test::behavior_set(), {}, delegates};
+  const TreeControllerSpec spec{"s", genome::tree::test::behavior_set(), {}, delegates};
   // if collision then avoid else if ir[0] < 0.2 then explore else home
   TreeController c(spec, postfix(spec.primitives, {"collision", "avoid", "ir[0]", {"erc", 0.2}, "<",
                                                    "explore", "home", "if", "if"}));
@@ -108,23 +107,23 @@ TEST(TreeController, RejectsSpecsItCannotRun) {
     }
     return "";
   };
-  const PrimitiveSet a = gp::test::action_set();
-  auto too_few = gp::test::standard_actions();
+  const PrimitiveSet a = genome::tree::test::action_set();
+  auto too_few = genome::tree::test::standard_actions();
   too_few.pop_back();
   const Tree stop = postfix(a, {"stop"});
   EXPECT_NE(error({"a", a, too_few, {}}, stop).find("action `stop` has index 4, but there are 4 actions"),
             std::string::npos);
-  auto mismatch = gp::test::standard_actions();
+  auto mismatch = genome::tree::test::standard_actions();
   mismatch[4].params = {"p"};
   EXPECT_NE(error({"a", a, mismatch, {}}, stop).find("passes 0 parameters, but behavior 'stop' takes 1"),
             std::string::npos);
-  const PrimitiveSet n = gp::test::number_set();
+  const PrimitiveSet n = genome::tree::test::number_set();
   EXPECT_NE(error({"n", n, {}, {}}, postfix(n, {"ir[0]"})).find("root type"), std::string::npos);
-  const PrimitiveSet w = gp::test::wheels_set();
+  const PrimitiveSet w = genome::tree::test::wheels_set();
   Tree bad = postfix(w, {"ir[0]", "ir[1]", "wheels"});
   bad.nodes[0].length = 3;
   EXPECT_NE(error({"w", w, {}, {}}, bad).find("ill-typed tree"), std::string::npos);
-  EXPECT_NE(error({"b", gp::test::behavior_set(), {}, {}}, postfix(gp::test::behavior_set(), {"avoid"}))
+  EXPECT_NE(error({"b", genome::tree::test::behavior_set(), {}, {}}, postfix(genome::tree::test::behavior_set(), {"avoid"}))
                 .find("there are 0 behaviors"),
             std::string::npos);
 }
@@ -132,14 +131,14 @@ TEST(TreeController, RejectsSpecsItCannotRun) {
 // The printed behavior (to_behavior is what the compiler makes of behavior_script's text)
 // drives the robot exactly like the tree: same commands bit for bit, hence same fitness.
 TEST(TreeController, WheelsTreeAndItsPrintedBehaviorAgreeBitForBit) {
-  const TreeControllerSpec spec{"w", gp::test::wheels_set(), {}, {}};
+  const TreeControllerSpec spec{"w", genome::tree::test::wheels_set(), {}, {}};
   for (std::uint64_t seed = 0; seed < 1000; ++seed) {
     Rng rng(seed, {41});
-    const Tree t = gp::grow(spec.primitives, Type::Wheels, 2 + static_cast<int>(seed % 7), rng);
+    const Tree t = genome::tree::grow(spec.primitives, Type::Wheels, 2 + static_cast<int>(seed % 7), rng);
     TreeController c(spec, t);
     const Behavior b = to_behavior(t, spec.primitives, "evolved");
     for (int k = 0; k < 8; ++k) {
-      expr::Frame f = gp::test::random_frame(rng);
+      expr::Frame f = genome::tree::test::random_frame(rng);
       const WheelCommand want = run_behavior(b, f);
       const WheelCommand got = c.step(f);
       ASSERT_EQ(std::bit_cast<std::uint64_t>(got.left), std::bit_cast<std::uint64_t>(want.left)) << seed;

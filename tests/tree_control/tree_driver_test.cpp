@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "runtime/control/controller.hpp"
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 #include "runtime/tree_control/tree_driver.hpp"
 #include "tests/gp/helpers.hpp"
 
@@ -24,7 +24,6 @@ using control::Head;
 using control::NetworkKind;
 using control::WheelCommand;
 
-namespace gp = evo::gp;
 
 std::shared_ptr<const ControllerSpec> elman() {
   auto net = std::make_shared<ControllerSpec>();
@@ -48,20 +47,20 @@ ControllerSpec supervisor() {
   c.name = "TV";
   c.head = Head::Supervisor;
   const auto net = elman();
-  c.behaviors.push_back({"go(0.5)", BehaviorCall{gp::test::signed_behavior("go", 1, 1), {0.5}}});
+  c.behaviors.push_back({"go(0.5)", BehaviorCall{genome::tree::test::signed_behavior("go", 1, 1), {0.5}}});
   c.behaviors.push_back({"net", FixedController{net, weights(net->genome_size())}});
-  auto p = gp::test::numeric_primitives();
-  p.push_back(gp::prim::behavior("go(0.5)", 0));
-  p.push_back(gp::prim::behavior("net", 1));
-  p.push_back(gp::prim::if_then_else(gp::Type::Behavior));
-  c.primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), gp::Type::Behavior);
+  auto p = genome::tree::test::numeric_primitives();
+  p.push_back(genome::tree::prim::behavior("go(0.5)", 0));
+  p.push_back(genome::tree::prim::behavior("net", 1));
+  p.push_back(genome::tree::prim::if_then_else(genome::tree::Type::Behavior));
+  c.primitives = std::make_shared<const genome::tree::PrimitiveSet>(std::move(p), genome::tree::Type::Behavior);
   return c;
 }
 
 std::vector<expr::Frame> frames(int n) {
   Rng rng(11);
   std::vector<expr::Frame> out;
-  for (int k = 0; k < n; ++k) out.push_back(gp::test::random_frame(rng));
+  for (int k = 0; k < n; ++k) out.push_back(genome::tree::test::random_frame(rng));
   return out;
 }
 
@@ -69,7 +68,7 @@ TEST(TreeDriver, AnEvolvedNetworkDelegateRunsLikeItsController) {
   const ControllerSpec spec = supervisor();
   const auto& fixed = std::get<FixedController>(spec.behaviors[1].what);
   Controller alone(*fixed.spec, fixed.genome);
-  TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"net"}));
+  TreeDriver driver(spec, genome::tree::test::postfix(*spec.primitives, {"net"}));
   for (int round = 0; round < 2; ++round) {   // reset() clears the network's context
     driver.reset();
     alone.reset();
@@ -87,7 +86,7 @@ TEST(TreeDriver, AnEvolvedNetworkDelegateRunsLikeItsController) {
 TEST(TreeDriver, AHandWrittenDelegateGetsItsArguments) {
   const ControllerSpec spec = supervisor();
   // if ir[0] > 0.5 then net else go(0.5)
-  TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"ir[0]", {"erc", 0.5}, ">", "net", "go(0.5)", "if"}));
+  TreeDriver driver(spec, genome::tree::test::postfix(*spec.primitives, {"ir[0]", {"erc", 0.5}, ">", "net", "go(0.5)", "if"}));
   expr::Frame f{};
   f[expr::slot::ir] = 0.1;
   const WheelCommand w = driver.step(f);
@@ -105,22 +104,22 @@ std::shared_ptr<const ControllerSpec> wheels_tree() {
   auto t = std::make_shared<ControllerSpec>();
   t->name = "GW";
   t->head = Head::Classical;
-  auto p = gp::test::numeric_primitives();
-  p.push_back(gp::prim::wheels());
-  t->primitives = std::make_shared<const gp::PrimitiveSet>(std::move(p), gp::Type::Wheels);
+  auto p = genome::tree::test::numeric_primitives();
+  p.push_back(genome::tree::prim::wheels());
+  t->primitives = std::make_shared<const genome::tree::PrimitiveSet>(std::move(p), genome::tree::Type::Wheels);
   return t;
 }
 
 TEST(TreeDriver, AnEvolvedTreeIsAFrozenBehaviorOfANetworkSupervisor) {
   const auto tree = wheels_tree();
   const std::vector<double> genome =
-      gp::encode(gp::test::postfix(*tree->primitives, {"ir[0]", {"erc", 0.25}, "wheels"}));
+      genome::tree::encode(genome::tree::test::postfix(*tree->primitives, {"ir[0]", {"erc", 0.25}, "wheels"}));
   ControllerSpec sv;
   sv.name = "SV";
   sv.head = Head::Supervisor;
   for (expr::Slot i = 0; i < expr::kIrCount; ++i) sv.mlp.inputs.push_back(expr::slot::ir + i);
   sv.behaviors.push_back({"GW", FixedController{tree, genome}});
-  sv.behaviors.push_back({"go(0.5)", BehaviorCall{gp::test::signed_behavior("go", 1, 1), {0.5}}});
+  sv.behaviors.push_back({"go(0.5)", BehaviorCall{genome::tree::test::signed_behavior("go", 1, 1), {0.5}}});
   // Output 0 (the tree) always wins: a large bias.
   std::vector<double> w(sv.genome_size(), 0.0);
   w[0] = 5.0;
@@ -141,9 +140,9 @@ TEST(TreeDriver, AnEvolvedTreeIsAFrozenBehaviorOfANetworkSupervisor) {
 TEST(TreeDriver, AnEvolvedTreeIsADelegateOfATreeSupervisor) {
   ControllerSpec spec = supervisor();
   const auto tree = wheels_tree();
-  spec.behaviors[1] = {"GW", FixedController{tree, gp::encode(gp::test::postfix(*tree->primitives,
+  spec.behaviors[1] = {"GW", FixedController{tree, genome::tree::encode(genome::tree::test::postfix(*tree->primitives,
                                                                                 {"ir[1]", {"erc", -0.5}, "wheels"}))}};
-  TreeDriver driver(spec, gp::test::postfix(*spec.primitives, {"net"}));   // behavior 1, now the tree
+  TreeDriver driver(spec, genome::tree::test::postfix(*spec.primitives, {"net"}));   // behavior 1, now the tree
   for (expr::Frame f : frames(10)) {
     const WheelCommand cmd = driver.step(f);
     EXPECT_EQ(cmd.left, std::clamp(f[expr::slot::ir + 1], -1.0, 1.0));   // wheel commands are clamped
@@ -157,7 +156,7 @@ TEST(TreeDriver, AnEvolvedTreeIsADelegateOfATreeSupervisor) {
 
 TEST(TreeDriver, TheHeadMustMatchThePrimitives) {
   ControllerSpec spec = supervisor();
-  const gp::Tree tree = gp::test::postfix(*spec.primitives, {"net"});
+  const genome::tree::Tree tree = genome::tree::test::postfix(*spec.primitives, {"net"});
   spec.head = Head::Classical;
   EXPECT_THROW(TreeDriver(spec, tree), std::invalid_argument);
   ControllerSpec network = *elman();

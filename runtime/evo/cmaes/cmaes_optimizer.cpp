@@ -46,7 +46,7 @@ class CmaesOptimizer final : public Optimizer {
 }  // namespace
 
 std::unique_ptr<Optimizer> make_cmaes(const CmaesSettings& settings, const Problem& problem) {
-  if (problem.primitives != nullptr) throw std::invalid_argument("CMA-ES evolves a network's weights, not trees");
+  if (problem.tree.primitives != nullptr) throw std::invalid_argument("CMA-ES evolves a network's weights, not trees");
   return std::make_unique<CmaesOptimizer>(settings, problem);
 }
 

@@ -20,33 +20,17 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/operators.hpp"
 #include "runtime/evo/gp/selection.hpp"
+#include "runtime/genome/tree/tree_operators.hpp"
 
 namespace esc::evo::gp {
 
-struct GpSettings {
+// GP's own settings, and the tree operators it breeds with (the tree kind's: tree_operators.hpp).
+struct GpSettings : genome::tree::TreeOperators {
   int population = 150;
   int generations = 250;
   int tournament = 7;
   int elitism = 1;                 // best individuals copied unchanged to the next generation
-  // Operator probabilities per offspring; what is left is reproduction (a copy of the winner).
-  double crossover = 0.8;
-  double subtree_mutation = 0.05;
-  double point_mutation = 0.05;
-  double hoist_mutation = 0.05;
-  int max_depth = 12;              // nodes from root to deepest leaf (a terminal has depth 1)
-  int max_size = 100;              // nodes
-  int init_min_depth = 2;          // ramped half-and-half depth range
-  int init_max_depth = 6;
-  int mutation_depth = 4;          // depth of the subtrees grown by subtree mutation
-  double internal_bias = 0.9;      // crossover picks an internal node this often (Koza)
-  double erc_sigma = 0.1;          // point mutation of an ERC: N(0, erc_sigma * (hi - lo)); at
-                                   // most kMaxErcSigma (as the ES's kMaxStepSize)
-
-  // Deepest trees the flat evaluator can run (its stack has FlatProgram::kMaxStack slots).
-  static constexpr int kMaxDepthLimit = 40;
-  static constexpr double kMaxErcSigma = 1e3;
 };
 
 class GeneticProgramming {
@@ -55,7 +39,7 @@ class GeneticProgramming {
   // elitism > population, probabilities outside [0, 1] or summing above 1, max_depth below
   // the shallowest tree of the root type or above kMaxDepthLimit, max_size below the
   // smallest tree, init depths out of order, ...).
-  GeneticProgramming(const GpSettings& settings, PrimitiveSet set);
+  GeneticProgramming(const GpSettings& settings, genome::tree::PrimitiveSet set);
 
   // `population` trees by ramped half-and-half, fitness 0 (not yet evaluated).
   [[nodiscard]] std::vector<Individual> initial(Rng& rng) const;
@@ -71,23 +55,16 @@ class GeneticProgramming {
   [[nodiscard]] Individual offspring(std::span<const Individual> population, std::uint64_t base,
                                      std::size_t i) const;
 
-  // The GP's mutation mix on `a` for a uniform draw u: subtree mutation when u < edge +
-  // subtree_mutation, point mutation below that plus point_mutation, hoist mutation below
-  // that plus hoist_mutation, else a copy. `edge` is the part of [0, 1) taken before the
-  // mutations (offspring's crossover), so that every algorithm that mutates trees applies
-  // exactly the GP's operators and probabilities.
-  [[nodiscard]] Tree mutate(const Tree& a, double u, double edge, Rng& rng) const;
-
   // Tournament selection with parsimony ties (selection.hpp).
   [[nodiscard]] std::size_t select(std::span<const Individual> population, Rng& rng) const;
 
   [[nodiscard]] const GpSettings& settings() const noexcept { return s_; }
-  [[nodiscard]] const PrimitiveSet& primitives() const noexcept { return set_; }
-  [[nodiscard]] Limits limits() const noexcept { return {s_.max_depth, s_.max_size}; }
+  [[nodiscard]] const genome::tree::PrimitiveSet& primitives() const noexcept { return set_; }
+  [[nodiscard]] genome::tree::Limits limits() const noexcept { return s_.limits(); }
 
  private:
   GpSettings s_;
-  PrimitiveSet set_;
+  genome::tree::PrimitiveSet set_;
 };
 
 }  // namespace esc::evo::gp

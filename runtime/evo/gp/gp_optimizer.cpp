@@ -6,16 +6,18 @@
 
 #include <fmt/format.h>
 
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 
 namespace esc::evo::gp {
+
+using namespace genome::tree;
 
 namespace {
 
 class GpOptimizer final : public Optimizer {
  public:
   GpOptimizer(const GpSettings& settings, const Problem& problem)
-      : gp_(settings, *problem.primitives), seed_(problem.seed) {
+      : gp_(settings, *problem.tree.primitives), seed_(problem.seed) {
     if (problem.start != nullptr) start_ = Individual{decode(*problem.start, gp_.primitives()), 0.0};
   }
 
@@ -78,7 +80,7 @@ class GpOptimizer final : public Optimizer {
 }  // namespace
 
 std::unique_ptr<Optimizer> make_gp(const GpSettings& settings, const Problem& problem) {
-  if (problem.primitives == nullptr) throw std::invalid_argument("genetic programming evolves trees, not networks");
+  if (problem.tree.primitives == nullptr) throw std::invalid_argument("genetic programming evolves trees, not networks");
   return std::make_unique<GpOptimizer>(settings, problem);
 }
 

@@ -7,6 +7,8 @@
 
 namespace esc::evo::gp {
 
+using namespace genome::tree;
+
 namespace {
 double key(double f) noexcept { return std::isnan(f) ? -std::numeric_limits<double>::infinity() : f; }
 }  // namespace

@@ -7,12 +7,12 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
 namespace esc::evo::gp {
 
 struct Individual {
-  Tree tree;
+  genome::tree::Tree tree;
   double fitness = 0.0;
 };
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "runtime/evo/box.hpp"
+#include "runtime/genome/vector/box.hpp"
 #include "runtime/evo/limits.hpp"
 #include "runtime/evo/map_elites/iso_line_dd.hpp"
 #include "runtime/evo/map_elites/selection.hpp"
@@ -23,7 +23,7 @@ void require(bool ok, const std::string& message) {
 
 MapElitesGenomes iso_line_dd_genomes(const MapElitesSettings& s, std::size_t n) {
   const IsoLineDd op{s.sigma_iso * (s.upper - s.lower), s.sigma_line, s.lower, s.upper};
-  return {std::make_shared<Box>(n, s.lower, s.upper), [op](const Archive& archive, Rng& rng) {
+  return {std::make_shared<genome::Box>(n, s.lower, s.upper), [op](const Archive& archive, Rng& rng) {
             const Elite& x = select_uniform(archive, rng);
             const Elite& y = select_uniform(archive, rng);
             return iso_line_dd(x.genome, y.genome, op, rng);

@@ -27,7 +27,7 @@
 #include "runtime/evo/map_elites/archive.hpp"
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
-#include "runtime/evo/representation.hpp"
+#include "runtime/genome/representation.hpp"
 #include "runtime/evo/state_bytes.hpp"
 
 namespace esc::evo::qd {
@@ -53,7 +53,7 @@ struct MapElitesSettings {
 // What MAP-Elites' genomes are: the first ones and the check of a stored one, and how a
 // child is made from the archive (drawing from the Rng given).
 struct MapElitesGenomes {
-  std::shared_ptr<const Representation> representation;
+  std::shared_ptr<const genome::Representation> representation;
   std::function<Genome(const Archive&, Rng&)> child;
 };
 

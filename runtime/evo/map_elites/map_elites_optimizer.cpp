@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/map_elites/selection.hpp"
 #include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/run_streams.hpp"
@@ -61,8 +61,8 @@ qd::MapElitesSettings core_settings(const MapElitesRunSettings& s) {
 
 // Over trees: one elite drawn uniformly, then one of the GP's mutations.
 qd::MapElites core_for(const MapElitesRunSettings& s, const Problem& p) {
-  if (p.primitives == nullptr) return {core_settings(s), p.genome_size, archive_for(s, p)};
-  auto trees = std::make_shared<const gp::TreeVariation>(*p.tree_operators, *p.primitives);
+  if (p.tree.primitives == nullptr) return {core_settings(s), p.genome_size, archive_for(s, p)};
+  auto trees = std::make_shared<const genome::tree::TreeVariation>(*p.tree.operators, *p.tree.primitives);
   qd::MapElitesGenomes genomes{trees, [trees](const qd::Archive& archive, Rng& rng) {
                                  return trees->mutate_one(qd::select_uniform(archive, rng).genome, rng);
                                }};
@@ -168,8 +168,8 @@ class MapElitesOptimizer final : public Optimizer {
 
 std::string map_elites_problem(const MapElitesRunSettings& s, const Problem& p) {
   const std::string what = s.cvt ? "CVT-MAP-Elites" : "MAP-Elites";
-  if (std::string why = gp::tree_problem(p, what); !why.empty()) return why;
-  if (p.primitives != nullptr && gp::TreeVariation(*p.tree_operators, *p.primitives).mutation_sum() <= 0.0)
+  if (std::string why = genome::tree::tree_problem(p, what); !why.empty()) return why;
+  if (p.tree.primitives != nullptr && genome::tree::TreeVariation(*p.tree.operators, *p.tree.primitives).mutation_sum() <= 0.0)
     return what + " varies a tree by one of the GP's mutations: subtree_mutation, point_mutation and hoist_mutation "
                   "of `evolve gp` are all 0";
   if (p.descriptors.empty())
@@ -205,7 +205,7 @@ std::size_t map_elites_population(const MapElitesRunSettings& settings, const Pr
 
 MemoryPeak map_elites_memory_peak(const MapElitesRunSettings& settings, const Problem& problem, int generations) {
   const double cells = cells_of(settings, problem.descriptors.size());
-  const std::size_t genes = gp::genes_at_most(problem);
+  const std::size_t genes = genome::tree::genes_at_most(problem);
   const double candidates = std::max(settings.batch, settings.initial);
   const std::string archive =
       settings.cvt ? fmt::format("CVT-MAP-Elites' archive of {} cells", settings.cells)

@@ -1,6 +1,6 @@
 #pragma once
 // MAP-Elites (map_elites.hpp) as an Optimizer of a network's weights, or of trees with the
-// GP's mutations (gp/tree_variation.hpp, settings from problem.tree_operators; genomes
+// GP's mutations (genome/tree/tree_variation.hpp, settings from problem.tree.operators; genomes
 // encoded), registered twice:
 // `map_elites` over a grid of `bins` cells per descriptor (1 to 3 descriptors), and
 // `cvt_map_elites` over `cells` centroids of a CVT of the descriptor space (any number of

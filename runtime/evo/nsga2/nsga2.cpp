@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "runtime/evo/box.hpp"
+#include "runtime/genome/vector/box.hpp"
 #include "runtime/evo/limits.hpp"
 #include "runtime/evo/nsga2/variation.hpp"
 
@@ -72,7 +72,7 @@ double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n, std::siz
 
 Nsga2Genomes box_genomes(const Nsga2Settings& s, std::size_t n) {
   const double p_mutation = s.mutation > 0.0 ? s.mutation : 1.0 / static_cast<double>(n);
-  return {std::make_shared<Box>(n, s.lower, s.upper), [s, p_mutation](Genome& a, Genome& b, Rng& rng) {
+  return {std::make_shared<genome::Box>(n, s.lower, s.upper), [s, p_mutation](Genome& a, Genome& b, Rng& rng) {
             if (rng.uniform() < s.crossover) simulated_binary_crossover(a, b, s.eta_crossover, s.lower, s.upper, rng);
             polynomial_mutation(a, s.eta_mutation, p_mutation, s.lower, s.upper, rng);
             polynomial_mutation(b, s.eta_mutation, p_mutation, s.lower, s.upper, rng);

@@ -50,7 +50,7 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/pareto/selection.hpp"
-#include "runtime/evo/representation.hpp"
+#include "runtime/genome/representation.hpp"
 #include "runtime/evo/state_bytes.hpp"
 
 namespace esc::evo {
@@ -83,7 +83,7 @@ void check_nsga2_settings(const Nsga2Settings& settings);
 // What NSGA-II's genes are: the first candidates and the check of a stored one, and how two
 // tournament winners become two children (in place, drawing from the Rng given).
 struct Nsga2Genomes {
-  std::shared_ptr<const Representation> representation;
+  std::shared_ptr<const genome::Representation> representation;
   std::function<void(Genome&, Genome&, Rng&)> vary;
 };
 
@@ -131,7 +131,7 @@ class Nsga2 {
   [[nodiscard]] std::size_t dimension() const noexcept { return n_; }
   // The per-gene mutation probability in use (1 / n when the setting is 0).
   [[nodiscard]] double mutation_probability() const noexcept;
-  [[nodiscard]] const Representation& representation() const noexcept { return *g_.representation; }
+  [[nodiscard]] const genome::Representation& representation() const noexcept { return *g_.representation; }
   [[nodiscard]] const Nsga2Settings& settings() const noexcept { return s_; }
 
   // The whole state between generations (after start or tell; a pending ask is not part of

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
 #include "runtime/evo/run_streams.hpp"
@@ -113,9 +113,9 @@ std::vector<double> hypervolume_reference(const Problem& problem) {
 }
 
 Nsga2 nsga2_core(const Nsga2Settings& settings, const Problem& problem) {
-  if (problem.primitives == nullptr) return {settings, problem.genome_size};
-  if (const std::string why = gp::tree_problem(problem, "NSGA-II"); !why.empty()) throw std::invalid_argument(why);
-  auto trees = std::make_shared<const gp::TreeVariation>(*problem.tree_operators, *problem.primitives);
+  if (problem.tree.primitives == nullptr) return {settings, problem.genome_size};
+  if (const std::string why = genome::tree::tree_problem(problem, "NSGA-II"); !why.empty()) throw std::invalid_argument(why);
+  auto trees = std::make_shared<const genome::tree::TreeVariation>(*problem.tree.operators, *problem.tree.primitives);
   return {settings, Nsga2Genomes{trees, [trees](Genome& a, Genome& b, Rng& rng) { trees->cross_and_mutate(a, b, rng); }}};
 }
 
@@ -129,7 +129,7 @@ std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& /*pro
 
 MemoryPeak nsga2_memory_peak(const Nsga2Settings& settings, const Problem& problem) {
   const double big_n = static_cast<double>(settings.population);
-  const std::size_t genes = gp::genes_at_most(problem);
+  const std::size_t genes = genome::tree::genes_at_most(problem);
   return {nsga2_memory_bytes(settings, genes, problem.objectives.size()) + 2.0 * big_n * sizeof(Measured), big_n,
           fmt::format("NSGA-II's {} parents and {} children of {} genes, ranked together", settings.population,
                       settings.population, genes),

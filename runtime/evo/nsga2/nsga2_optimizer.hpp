@@ -1,6 +1,6 @@
 #pragma once
 // NSGA-II (nsga2.hpp) as an Optimizer of a network's weights, or of trees with the GP's
-// operators (gp/tree_variation.hpp, settings from problem.tree_operators; candidates go out
+// operators (genome/tree/tree_variation.hpp, settings from problem.tree.operators; candidates go out
 // encoded), over every objective of an Outcome: it starts from Rng(seed, Init) (or the start genome, then candidate 0 of
 // generation 0), breeds generation g from Rng(seed, Breed, g) and minimises the negated
 // objectives. Its metrics: the size of the first front and, for 2 or 3 objectives whose

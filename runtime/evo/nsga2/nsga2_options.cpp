@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "runtime/evo/gp/tree_variation.hpp"
+#include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 
 namespace esc::evo {
@@ -14,7 +14,7 @@ const std::vector<AlgorithmOption>& nsga2_options() {
 }
 
 std::string nsga2_problem(const Nsga2Settings& settings, const Problem& problem) {
-  if (std::string why = gp::tree_problem(problem, "NSGA-II"); !why.empty()) return why;
+  if (std::string why = genome::tree::tree_problem(problem, "NSGA-II"); !why.empty()) return why;
   try {
     check_nsga2_settings(settings);
   } catch (const std::invalid_argument& e) {

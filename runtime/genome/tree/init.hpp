@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 // Grow: any primitive that fits the remaining depth, uniformly.
 [[nodiscard]] Tree grow(const PrimitiveSet& set, Type type, int max_depth, Rng& rng);
@@ -35,4 +35,4 @@ void append_random(const PrimitiveSet& set, Type type, int max_depth, bool full,
 // A fresh value for an ERC primitive: uniform in [lo, hi].
 [[nodiscard]] double draw_erc(const Primitive& p, Rng& rng) noexcept;
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 struct Node {
   PrimitiveId prim = 0;
@@ -64,4 +64,4 @@ bool update_lengths(Tree& t) noexcept;
   return check(t, set, root).empty();
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -4,9 +4,9 @@
 // if-then-else is evaluated. Precondition: the tree is well typed.
 #include <span>
 
-#include "runtime/evo/gp/program.hpp"
+#include "runtime/genome/tree/program.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 [[nodiscard]] Output evaluate_recursive(const Tree& tree, const PrimitiveSet& set,
                                         std::span<const double> frame) noexcept;
@@ -15,4 +15,4 @@ namespace esc::evo::gp {
 [[nodiscard]] double evaluate_number(const Tree& tree, const PrimitiveSet& set,
                                      std::span<const double> frame, std::size_t i) noexcept;
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

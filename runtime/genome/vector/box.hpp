@@ -1,9 +1,9 @@
 #pragma once
 // A network's weights as NSGA-II and MAP-Elites search them: n real genes, each in
 // [lower, upper]; the first genomes uniform in that box.
-#include "runtime/evo/representation.hpp"
+#include "runtime/genome/representation.hpp"
 
-namespace esc::evo {
+namespace esc::genome {
 
 class Box final : public Representation {
  public:
@@ -26,4 +26,4 @@ class Box final : public Representation {
   double upper_;
 };
 
-}  // namespace esc::evo
+}  // namespace esc::genome

@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 inline constexpr std::size_t kCodedNodeWidth = 2;   // doubles per node
 
@@ -23,4 +23,4 @@ void encode(const Tree& tree, std::vector<double>& out);
 // tree, a wrong type, a value that is not finite).
 [[nodiscard]] Tree decode(std::span<const double> genes, const PrimitiveSet& set);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -1,7 +1,7 @@
 #pragma once
 // What a search over genomes leaves to what its genomes are: NSGA-II and MAP-Elites rank,
 // select and keep genomes the same way whether they are a network's weights in a box
-// (box.hpp) or trees encoded as doubles (gp/tree_variation.hpp); only the first
+// (vector/box.hpp) or trees encoded as doubles (tree/tree_variation.hpp); only the first
 // candidates, the check of a genome read back from a state, and the settings a stored state
 // must match differ. The variation itself belongs to each algorithm (pairs of winners for
 // NSGA-II, one elite for MAP-Elites), so it is not part of this interface.
@@ -15,7 +15,10 @@
 #include "runtime/evo/optimizer.hpp"
 #include "runtime/evo/state_bytes.hpp"
 
-namespace esc::evo {
+namespace esc::genome {
+
+// A genome of every kind travels as an evo::Genome (its kind encodes it).
+using evo::Genome;
 
 // A setting a stored state was written with and must be read back with.
 struct FixedSetting {
@@ -42,12 +45,12 @@ class Representation {
   [[nodiscard]] virtual std::vector<FixedSetting> fixed() const = 0;
 };
 
-inline void put_fixed(StateWriter& w, const Representation& rep) {
+inline void put_fixed(evo::StateWriter& w, const Representation& rep) {
   for (const FixedSetting& s : rep.fixed()) w.put(s.value);
 }
 
 // Why the settings read from `r` differ from rep's, or "".
-[[nodiscard]] inline std::string fixed_differs(StateReader& r, const Representation& rep) {
+[[nodiscard]] inline std::string fixed_differs(evo::StateReader& r, const Representation& rep) {
   for (const FixedSetting& s : rep.fixed())
     if (r.get<double>() != s.value) return std::string(s.name) + " differs from the saved one";
   return {};
@@ -65,4 +68,4 @@ inline void put_fixed(StateWriter& w, const Representation& rep) {
   return "not " + std::string(algorithm) + " state";
 }
 
-}  // namespace esc::evo
+}  // namespace esc::genome

@@ -1,11 +1,11 @@
-#include "runtime/evo/gp/print.hpp"
+#include "runtime/genome/tree/print.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -163,4 +163,4 @@ std::string behavior_script(const Tree& tree, const PrimitiveSet& set, std::stri
   return fmt::format("behavior {}() {{ {} }}", name, to_script(tree, set));
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

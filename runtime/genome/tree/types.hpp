@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 enum class Type : std::uint8_t {
   Number,    // a double
@@ -33,4 +33,4 @@ inline constexpr std::array kAllTypes = {Type::Number, Type::Bool, Type::Action,
   return "?";
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -1,4 +1,4 @@
-#include "runtime/evo/gp/primitive_set.hpp"
+#include "runtime/genome/tree/primitive_set.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -301,4 +301,4 @@ bool PrimitiveSet::same_signature(PrimitiveId a, PrimitiveId b) const noexcept {
   return true;
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

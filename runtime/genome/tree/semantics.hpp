@@ -8,7 +8,7 @@
 
 #include "runtime/expr/program.hpp"
 
-namespace esc::evo::gp::sem {
+namespace esc::genome::tree::sem {
 
 // Finite results for finite inputs: overflow saturates, NaN becomes 0 (as expr::Program).
 [[nodiscard]] inline double finite(double v) noexcept {
@@ -63,4 +63,4 @@ namespace esc::evo::gp::sem {
   return std::clamp(v, -1.0, 1.0);
 }
 
-}  // namespace esc::evo::gp::sem
+}  // namespace esc::genome::tree::sem

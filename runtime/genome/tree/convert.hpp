@@ -7,10 +7,10 @@
 // test can show the round trip without a parser.
 #include <cstddef>
 
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 #include "runtime/expr/program.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 // Throws std::invalid_argument if node i is not a Number/Bool subtree or the program
 // would not fit expr::Program's stack (expr::Program::kMaxStack).
@@ -21,4 +21,4 @@ namespace esc::evo::gp {
 // or the program would not fit expr::Program's stack.
 [[nodiscard]] expr::Program to_wheel_program(const Tree& tree, const PrimitiveSet& set, std::size_t wheel);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

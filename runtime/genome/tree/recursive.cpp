@@ -1,8 +1,8 @@
-#include "runtime/evo/gp/recursive.hpp"
+#include "runtime/genome/tree/recursive.hpp"
 
-#include "runtime/evo/gp/semantics.hpp"
+#include "runtime/genome/tree/semantics.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -66,4 +66,4 @@ Output evaluate_recursive(const Tree& tree, const PrimitiveSet& set,
   return out;
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -19,11 +19,11 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/evo/gp/types.hpp"
+#include "runtime/genome/tree/types.hpp"
 #include "runtime/expr/observables.hpp"
 #include "runtime/expr/program.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 enum class Kind : std::uint8_t {
   Function,    // an expr operator over Number/Bool (op), or if-then-else (op Select) of any type
@@ -121,4 +121,4 @@ class PrimitiveSet {
   std::vector<int> prim_size_;
 };
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -25,9 +25,9 @@
 #include <string>
 #include <string_view>
 
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 // The Number or Bool subtree at node i.
 [[nodiscard]] std::string expression(const Tree& tree, const PrimitiveSet& set, std::size_t i);
@@ -39,4 +39,4 @@ namespace esc::evo::gp {
 // A double in the shortest form that reads back exactly (negative numbers with a minus).
 [[nodiscard]] std::string number_text(double v);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

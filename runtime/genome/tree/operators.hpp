@@ -9,9 +9,9 @@
 #include <utility>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 struct Limits {
   int max_depth = 17;
@@ -48,4 +48,4 @@ struct Limits {
 // descendant of its own type.
 [[nodiscard]] Tree hoist_mutation(const Tree& a, const PrimitiveSet& set, Rng& rng);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

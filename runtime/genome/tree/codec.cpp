@@ -1,10 +1,10 @@
-#include "runtime/evo/gp/codec.hpp"
+#include "runtime/genome/tree/codec.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 void encode(const Tree& tree, std::vector<double>& out) {
   out.reserve(out.size() + kCodedNodeWidth * tree.size());
@@ -37,4 +37,4 @@ Tree decode(std::span<const double> genes, const PrimitiveSet& set) {
   return t;
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

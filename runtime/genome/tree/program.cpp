@@ -1,13 +1,13 @@
-#include "runtime/evo/gp/program.hpp"
+#include "runtime/genome/tree/program.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "runtime/evo/gp/semantics.hpp"
+#include "runtime/genome/tree/semantics.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -170,4 +170,4 @@ std::string FlatProgram::disassemble() const {
   return out;
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -1,12 +1,11 @@
 #pragma once
 // Trees as NSGA-II, novelty search and MAP-Elites evolve them: the paper's GP operators
-// (gp.hpp) on trees encoded as doubles (codec.hpp), so that those algorithms keep, rank
+// (tree_operators.hpp) on trees encoded as doubles (codec.hpp), so that those algorithms keep, rank
 // and store genomes as they do a network's weights. Settings are the experiment's
 // `evolve gp(...)`: the first genomes by ramped half-and-half (init_min_depth ..
 // init_max_depth), subtree crossover with probability `crossover`, the mutation mix
 // (subtree, point, hoist at their probabilities), max_depth and max_size. Selection and
-// population size are the algorithm's own; the GP's tournament, elitism and population are
-// not used.
+// population size are the algorithm's own.
 #include <cstddef>
 #include <span>
 #include <string>
@@ -14,15 +13,17 @@
 #include <vector>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/evo/gp/gp.hpp"
-#include "runtime/evo/representation.hpp"
+#include "runtime/genome/representation.hpp"
+#include "runtime/genome/tree/tree_operators.hpp"
+#include "runtime/genome/tree/tree_space.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 class TreeVariation final : public Representation {
  public:
-  // Throws std::invalid_argument for settings the GP would refuse on `set`.
-  TreeVariation(const GpSettings& settings, PrimitiveSet set);
+  // Throws std::invalid_argument for operators that cannot vary trees of `set`
+  // (check_operators).
+  TreeVariation(const TreeOperators& operators, PrimitiveSet set);
 
   [[nodiscard]] std::string_view what() const override { return "trees"; }
   [[nodiscard]] std::string_view tag() const override { return "-trees"; }
@@ -49,21 +50,21 @@ class TreeVariation final : public Representation {
 
   // The three mutation probabilities summed: 0 when the settings never mutate.
   [[nodiscard]] double mutation_sum() const noexcept;
-  [[nodiscard]] const GeneticProgramming& gp() const noexcept { return gp_; }
 
  private:
-  GeneticProgramming gp_;
+  TreeOperators ops_;
+  PrimitiveSet set_;
 };
 
 // Bytes one encoded tree of at most max_size nodes holds.
-[[nodiscard]] double encoded_tree_bytes(const GpSettings& settings) noexcept;
+[[nodiscard]] double encoded_tree_bytes(const TreeOperators& operators) noexcept;
 
 // Values per genome at most: a network's weights, or an encoded tree of the GP's max_size
 // (what memory estimates count per candidate).
-[[nodiscard]] std::size_t genes_at_most(const Problem& problem);
+[[nodiscard]] std::size_t genes_at_most(const evo::Problem& problem);
 
 // Why `algorithm` cannot vary the problem's trees (the experiment gives no GP settings), or
 // "" (also for a network).
-[[nodiscard]] std::string tree_problem(const Problem& problem, std::string_view algorithm);
+[[nodiscard]] std::string tree_problem(const evo::Problem& problem, std::string_view algorithm);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

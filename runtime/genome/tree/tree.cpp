@@ -1,11 +1,11 @@
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 Node make_node(const PrimitiveSet& set, PrimitiveId id, double value) noexcept {
   const Primitive& p = set[id];
@@ -122,4 +122,4 @@ std::string check(const Tree& t, const PrimitiveSet& set, Type root) {
   return {};
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -1,8 +1,8 @@
-#include "runtime/evo/gp/convert.hpp"
+#include "runtime/genome/tree/convert.hpp"
 
 #include <stdexcept>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -58,4 +58,4 @@ expr::Program to_wheel_program(const Tree& tree, const PrimitiveSet& set, std::s
   return finished(std::move(p));
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

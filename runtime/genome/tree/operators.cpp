@@ -1,11 +1,11 @@
-#include "runtime/evo/gp/operators.hpp"
+#include "runtime/genome/tree/operators.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/init.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -137,4 +137,4 @@ Tree hoist_mutation(const Tree& a, const PrimitiveSet& /*set*/, Rng& rng) {
   return splice(a, i, a, j);
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -1,9 +1,9 @@
-#include "runtime/evo/gp/init.hpp"
+#include "runtime/genome/tree/init.hpp"
 
 #include <algorithm>
 #include <array>
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 namespace {
 
@@ -112,4 +112,4 @@ std::vector<Tree> ramped_half_and_half(const PrimitiveSet& set, std::size_t coun
   return out;
 }
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "runtime/evo/gp/tree.hpp"
+#include "runtime/genome/tree/tree.hpp"
 #include "runtime/expr/observables.hpp"
 
-namespace esc::evo::gp {
+namespace esc::genome::tree {
 
 // What a tree computes, by root type.
 struct Output {
@@ -85,4 +85,4 @@ class FlatProgram {
 // deeper than GpSettings::kMaxDepthLimit can).
 [[nodiscard]] FlatProgram compile(const Tree& tree, const PrimitiveSet& set);
 
-}  // namespace esc::evo::gp
+}  // namespace esc::genome::tree

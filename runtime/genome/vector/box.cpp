@@ -1,8 +1,8 @@
-#include "runtime/evo/box.hpp"
+#include "runtime/genome/vector/box.hpp"
 
 #include <algorithm>
 
-namespace esc::evo {
+namespace esc::genome {
 
 std::vector<Genome> Box::first(std::size_t count, Rng& rng) const {
   std::vector<Genome> out(count, Genome(n_));
@@ -20,4 +20,4 @@ std::string Box::misfit(std::span<const double> genome) const {
   return {};
 }
 
-}  // namespace esc::evo
+}  // namespace esc::genome
