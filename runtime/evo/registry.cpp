@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "runtime/evo/cmaes/cmaes_algorithm.hpp"
-#include "runtime/evo/es/es_algorithm.hpp"
-#include "runtime/evo/gp/gp_algorithm.hpp"
-#include "runtime/evo/map_elites/map_elites_algorithm.hpp"
-#include "runtime/evo/novelty/novelty_algorithm.hpp"
-#include "runtime/evo/nsga2/nsga2_algorithm.hpp"
+#include "runtime/evo/cmaes/cmaes_optimizer.hpp"
+#include "runtime/evo/es/es_optimizer.hpp"
+#include "runtime/evo/gp/gp_optimizer.hpp"
+#include "runtime/evo/map_elites/map_elites_optimizer.hpp"
+#include "runtime/evo/novelty/novelty_optimizer.hpp"
+#include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 
 namespace esc::evo {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Every optimizer a script can name, in one table. Each algorithm's folder under
-// runtime/evo/ defines one value type that describes it (cmaes/cmaes_algorithm.hpp: its
+// runtime/evo/ defines one value type that describes it (cmaes/cmaes_optimizer.hpp: its
 // name, the genome kinds it evolves, the format of its saved state, and how its own settings
 // type makes an optimizer, sizes a generation, weighs in memory and reads in scripts);
 // Algorithm erases that type once, as pagmo2's algorithm does a user's, so that the table

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/evo/map_elites/map_elites_algorithm.hpp"
+#include "runtime/evo/map_elites/map_elites_optimizer.hpp"
 #include "runtime/evo/registry.hpp"
 #include "runtime/genome/tree/tree_space.hpp"
 #include "tests/gp/helpers.hpp"

@@ -4,6 +4,7 @@
 // varied as GP varies it.
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,14 +28,10 @@ std::string refusal(auto&& make) {
 
 TEST(TreeOperators, DefaultsAreThePapersAndGpExtendsThem) {
   const TreeOperators o;
-  EXPECT_EQ(o.crossover, 0.8);
-  EXPECT_EQ(o.subtree_mutation, 0.05);
-  EXPECT_EQ(o.point_mutation, 0.05);
-  EXPECT_EQ(o.hoist_mutation, 0.05);
-  EXPECT_EQ(o.max_depth, 12);
-  EXPECT_EQ(o.max_size, 100);
-  EXPECT_EQ(o.init_min_depth, 2);
-  EXPECT_EQ(o.init_max_depth, 6);
+  EXPECT_EQ((std::vector{o.crossover, o.subtree_mutation, o.point_mutation, o.hoist_mutation, o.internal_bias}),
+            (std::vector{0.8, 0.05, 0.05, 0.05, 0.9}));
+  EXPECT_EQ((std::vector{o.max_depth, o.max_size, o.init_min_depth, o.init_max_depth, o.mutation_depth}),
+            (std::vector{12, 100, 2, 6, 4}));
   const evo::gp::GpSettings gp;
   EXPECT_EQ(gp.max_depth, o.max_depth);
   EXPECT_EQ(gp.population, 150);
