@@ -90,7 +90,7 @@ const std::vector<AlgorithmOptions>& further_algorithms() {
   static const std::vector<AlgorithmOptions> all = [] {
     std::vector<AlgorithmOptions> v;
     for (const evo::Algorithm& a : evo::algorithms())
-      if (a.options != nullptr) v.emplace_back(a);
+      if (!a.options().empty()) v.emplace_back(a);
     return v;
   }();
   return all;

@@ -21,7 +21,7 @@ namespace {
 evo::MemoryPeak run_peak(const ExperimentSpec& spec, const control::ControllerSpec& c) {
   const Evolution e = spec.evolution_of(c);
   evo::MemoryPeak peak;
-  if (!spec.evaluates_only() && e.settings.has_value() && e.algorithm != nullptr && e.algorithm->memory != nullptr) {
+  if (!spec.evaluates_only() && e.settings.has_value() && e.algorithm != nullptr) {
     peak = e.algorithm->memory(e.settings, spec.problem_of(c), spec.generations_for(c));
     peak.what += fmt::format(" for `{}`", c.name);
   } else {

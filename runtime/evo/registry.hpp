@@ -1,12 +1,18 @@
 #pragma once
-// Every optimizer a script can name, in one table: its name, what it evolves, how to make
-// one, and the version of the state it saves. Adding an algorithm is a folder of its own
-// under runtime/evo/ and a row in registry.cpp (docs/optimizers.md).
+// Every optimizer a script can name, in one table. Each algorithm's folder under
+// runtime/evo/ defines one value type that describes it (cmaes/cmaes_optimizer.hpp: its
+// name, the genome kinds it evolves, the format of its saved state, and how its own settings
+// type makes an optimizer, sizes a generation, weighs in memory and reads in scripts);
+// Algorithm erases that type once, as pagmo2's algorithm does a user's, so that the table
+// is one line per algorithm (registry.cpp) and callers hold the settings as a std::any.
+// Adding an algorithm: docs/optimizers.md.
 #include <any>
+#include <concepts>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "runtime/evo/algorithm_options.hpp"
@@ -16,29 +22,104 @@
 
 namespace esc::evo {
 
-struct Algorithm {
+// What an algorithm's value type provides: its settings type, what it is, and these over
+// its settings. `options()` (its options as scripts write them), `defaults()` (else its
+// settings type's own) and `problem()` (why settings cannot run on a problem; else none)
+// are optional, as pagmo2 detects a problem's optional members.
+template <class A>
+concept AlgorithmValue = requires(const A a, const typename A::Settings& s, const Problem& p, int generations) {
+  { a.name } -> std::convertible_to<std::string_view>;
+  { a.what } -> std::convertible_to<std::string_view>;
+  { a.kinds } -> std::convertible_to<genome::GenomeKinds>;
+  { a.state_format } -> std::convertible_to<std::uint32_t>;
+  { a.make(s, p) } -> std::same_as<std::unique_ptr<Optimizer>>;
+  { a.population(s, p) } -> std::same_as<std::size_t>;
+  { a.memory(s, p, generations) } -> std::same_as<MemoryPeak>;
+};
+
+class Algorithm {
+ public:
+  template <AlgorithmValue A>
+  explicit Algorithm(A a)
+      : name(a.name), what(a.what), kinds(a.kinds), state_format(a.state_format),
+        model_(std::make_shared<const Model<A>>(std::move(a))) {}
+
   std::string_view name;          // as scripts and stored states name it
+  std::string_view what;          // in messages: "CMA-ES", "the ES"
+  genome::GenomeKinds kinds;      // what it evolves: a network's weights, trees, ...
   // The layout of save()'s bytes: a stored state of another format is refused, not misread.
   std::uint32_t state_format = 1;
-  genome::GenomeKinds kinds;      // what it evolves: a network's weights, trees, ...
-  // A fresh optimizer for one run; `settings` holds the algorithm's own settings type (as
-  // the compiler made it). Throws std::invalid_argument on impossible settings.
-  std::unique_ptr<Optimizer> (*make)(const std::any& settings, const Problem& problem) = nullptr;
+
+  // `settings` holds the algorithm's own settings type (as the compiler made it).
+  // A fresh optimizer for one run. Throws std::invalid_argument on impossible settings.
+  [[nodiscard]] std::unique_ptr<Optimizer> make(const std::any& settings, const Problem& problem) const {
+    return model_->make(settings, problem);
+  }
   // Candidates of a run's first generation for `problem` (its genome_size 0 for a tree):
-  // what the campaign sizes its rounds by. These three read only the problem's sizes and
-  // declared ranges, never its seed or start.
-  std::size_t (*population)(const std::any& settings, const Problem& problem) = nullptr;
+  // what the campaign sizes its rounds by. This, memory and problem read only the problem's
+  // sizes and declared ranges, never its seed or start.
+  [[nodiscard]] std::size_t population(const std::any& settings, const Problem& problem) const {
+    return model_->population(settings, problem);
+  }
   // What one run of `generations` holds at its peak (memory_peak.hpp): what the campaign's
   // memory check counts for it, and names when it cannot fit.
-  MemoryPeak (*memory)(const std::any& settings, const Problem& problem, int generations) = nullptr;
-  // Its options as scripts write them, its default settings, and why settings cannot run on
-  // `problem` ("" when they can: an archive's cells need declared descriptors, ...). Null
-  // for the paper's ES and GP, whose options the compiler keeps in tables of their own
-  // (their historic keys).
-  std::string_view what = {};     // in messages: "CMA-ES", "the ES"
-  const std::vector<AlgorithmOption>& (*options)() = nullptr;
-  std::any (*defaults)() = nullptr;
-  std::string (*problem)(const std::any& settings, const Problem& problem) = nullptr;
+  [[nodiscard]] MemoryPeak memory(const std::any& settings, const Problem& problem, int generations) const {
+    return model_->memory(settings, problem, generations);
+  }
+  // Its options as scripts write them (none for the paper's ES and GP, whose options the
+  // compiler keeps in tables of their own, with their historic keys), its default settings,
+  // and why settings cannot run on `problem` ("" when they can: an archive's cells need
+  // declared descriptors, ...). A value type without them has none, its settings type's
+  // defaults, and no such reason.
+  [[nodiscard]] const std::vector<AlgorithmOption>& options() const { return model_->options(); }
+  [[nodiscard]] std::any defaults() const { return model_->defaults(); }
+  [[nodiscard]] std::string problem(const std::any& settings, const Problem& problem) const {
+    return model_->problem(settings, problem);
+  }
+
+ private:
+  struct Concept {
+    virtual ~Concept() = default;
+    [[nodiscard]] virtual std::unique_ptr<Optimizer> make(const std::any& s, const Problem& p) const = 0;
+    [[nodiscard]] virtual std::size_t population(const std::any& s, const Problem& p) const = 0;
+    [[nodiscard]] virtual MemoryPeak memory(const std::any& s, const Problem& p, int generations) const = 0;
+    [[nodiscard]] virtual const std::vector<AlgorithmOption>& options() const = 0;
+    [[nodiscard]] virtual std::any defaults() const = 0;
+    [[nodiscard]] virtual std::string problem(const std::any& s, const Problem& p) const = 0;
+  };
+
+  template <class A>
+  struct Model final : Concept {
+    using Settings = typename A::Settings;
+    explicit Model(A a) : value(std::move(a)) {}
+    static const Settings& of(const std::any& s) { return std::any_cast<const Settings&>(s); }
+
+    std::unique_ptr<Optimizer> make(const std::any& s, const Problem& p) const override { return value.make(of(s), p); }
+    std::size_t population(const std::any& s, const Problem& p) const override { return value.population(of(s), p); }
+    MemoryPeak memory(const std::any& s, const Problem& p, int generations) const override {
+      return value.memory(of(s), p, generations);
+    }
+    const std::vector<AlgorithmOption>& options() const override {
+      if constexpr (requires { value.options(); }) {
+        return value.options();
+      } else {
+        static const std::vector<AlgorithmOption> none;
+        return none;
+      }
+    }
+    std::any defaults() const override {
+      if constexpr (requires { value.defaults(); }) return value.defaults();
+      else return Settings{};
+    }
+    std::string problem(const std::any& s, const Problem& p) const override {
+      if constexpr (requires { value.problem(of(s), p); }) return value.problem(of(s), p);
+      else return {};
+    }
+
+    A value;
+  };
+
+  std::shared_ptr<const Concept> model_;
 };
 
 [[nodiscard]] const std::vector<Algorithm>& algorithms();

@@ -54,7 +54,7 @@ std::vector<Case> cases() {
     if (a.kinds.has(genome::GenomeKind::Tree)) {
       ExperimentSpec x = testing::gp_experiment();
       declare_objectives(x);
-      if (a.defaults != nullptr) {
+      if (!a.options().empty()) {
         x.controllers[1].evolved_by = name;
         x.algorithm_settings[name] = a.defaults();
       }
@@ -64,7 +64,7 @@ std::vector<Case> cases() {
     ExperimentSpec x = testing::small_experiment();
     declare_objectives(x);
     x.networks = name;
-    if (a.defaults != nullptr) x.algorithm_settings[x.networks] = a.defaults();
+    if (!a.options().empty()) x.algorithm_settings[x.networks] = a.defaults();
     v.push_back({name, name, std::move(x), 0});
   }
   return v;

@@ -3,13 +3,16 @@
 // initial parents (drawn from Rng(seed, Init), or mu copies of the start genome), every
 // generation g from Rng(seed, Breed, g); tell() selects the next parents. Its state is the
 // parents, genes, step sizes and fitness.
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
+#include "runtime/genome/kind.hpp"
 
 namespace esc::evo {
 
@@ -25,5 +28,25 @@ namespace esc::evo {
 // The ES's saved state for `parents`: what a store that kept the parents in a table of its
 // own (results schema 5 and older) hands a resumed run.
 [[nodiscard]] StateBytes es_state(std::span<const Individual> parents);
+
+// The paper's evolution strategy as the registry holds it (registry.hpp): its name, the
+// genomes it evolves, and how its settings make an optimizer, size a generation and weigh in
+// memory. Its options are still the compiler's own table with their historic keys (`mu`,
+// compiler/es_options.hpp), so it has no options() here.
+struct EsAlgorithm {
+  using Settings = EsSettings;
+  std::string_view name = "es";
+  std::string_view what = "the ES";
+  genome::GenomeKinds kinds{genome::GenomeKind::Vector};
+  std::uint32_t state_format = 1;
+
+  [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const { return make_es(s, p); }
+  [[nodiscard]] std::size_t population(const Settings& s, const Problem& p) const {
+    return es_population(s, p.genome_size);
+  }
+  [[nodiscard]] MemoryPeak memory(const Settings& s, const Problem& p, int /*generations*/) const {
+    return es_memory_peak(s, p.genome_size);
+  }
+};
 
 }  // namespace esc::evo

@@ -13,11 +13,17 @@
 // different runs compare cell by cell. They are computed once per process for each (number
 // of descriptors, cells, samples) and stored in every run's state.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "runtime/evo/map_elites/map_elites.hpp"
+#include "runtime/evo/map_elites/map_elites_options.hpp"
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
+#include "runtime/genome/kind.hpp"
 
 namespace esc::evo {
 
@@ -48,5 +54,40 @@ struct MapElitesRunSettings {
 // Why the settings cannot run on `problem` (no declared fitness range, no descriptors, more
 // than 3 for a grid, too many cells, ...), or "".
 [[nodiscard]] std::string map_elites_problem(const MapElitesRunSettings& settings, const Problem& problem);
+
+// MAP-Elites as the registry holds it (registry.hpp), twice: its grid archive under
+// `map_elites`, and CVT-MAP-Elites (Vassiliades et al. 2018) under `cvt_map_elites`, the same
+// value with the other name, options and defaults (a CVT archive), so that both share every
+// line of code and keep their own names in scripts and stored states.
+struct MapElitesAlgorithm {
+  using Settings = MapElitesRunSettings;
+  std::string_view name = "map_elites";
+  std::string_view what = "MAP-Elites";
+  bool cvt = false;   // its archive: a grid, or a CVT's cells
+  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree};
+  std::uint32_t state_format = 1;
+
+  // CVT-MAP-Elites.
+  [[nodiscard]] static MapElitesAlgorithm centroidal() {
+    return {.name = "cvt_map_elites", .what = "CVT-MAP-Elites", .cvt = true};
+  }
+
+  [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const {
+    return make_map_elites(s, p);
+  }
+  [[nodiscard]] std::size_t population(const Settings& s, const Problem& p) const { return map_elites_population(s, p); }
+  [[nodiscard]] MemoryPeak memory(const Settings& s, const Problem& p, int generations) const {
+    return map_elites_memory_peak(s, p, generations);
+  }
+  [[nodiscard]] const std::vector<AlgorithmOption>& options() const {
+    return cvt ? cvt_map_elites_options() : map_elites_options();
+  }
+  [[nodiscard]] Settings defaults() const {
+    Settings s;
+    s.cvt = cvt;
+    return s;
+  }
+  [[nodiscard]] std::string problem(const Settings& s, const Problem& p) const { return map_elites_problem(s, p); }
+};
 
 }  // namespace esc::evo

@@ -12,12 +12,18 @@
 // random draws of the archive's random mode come from Rng(seed, Breed, g, 1), apart from the
 // generation's variation stream.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/novelty/novelty_archive.hpp"
+#include "runtime/evo/novelty/novelty_options.hpp"
 #include "runtime/evo/nsga2/nsga2.hpp"
 #include "runtime/evo/optimizer.hpp"
+#include "runtime/genome/kind.hpp"
 
 namespace esc::evo {
 
@@ -49,5 +55,24 @@ struct NoveltyRunSettings {
 [[nodiscard]] MemoryPeak novelty_memory_peak(const NoveltyRunSettings& settings, const Problem& problem);
 // Why the settings cannot run on `problem` (no descriptors, ...), or "".
 [[nodiscard]] std::string novelty_problem(const NoveltyRunSettings& settings, const Problem& problem);
+
+// Novelty search as the registry holds it (registry.hpp): its name, the genomes it evolves,
+// and how its settings make an optimizer, size a generation, weigh in memory and read in
+// scripts.
+struct NoveltyAlgorithm {
+  using Settings = NoveltyRunSettings;
+  std::string_view name = "novelty";
+  std::string_view what = "novelty search";
+  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree};
+  std::uint32_t state_format = 1;
+
+  [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const { return make_novelty(s, p); }
+  [[nodiscard]] std::size_t population(const Settings& s, const Problem& p) const { return novelty_population(s, p); }
+  [[nodiscard]] MemoryPeak memory(const Settings& s, const Problem& p, int /*generations*/) const {
+    return novelty_memory_peak(s, p);
+  }
+  [[nodiscard]] const std::vector<AlgorithmOption>& options() const { return novelty_options(); }
+  [[nodiscard]] std::string problem(const Settings& s, const Problem& p) const { return novelty_problem(s, p); }
+};
 
 }  // namespace esc::evo

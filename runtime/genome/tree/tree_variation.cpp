@@ -34,13 +34,11 @@ std::string TreeVariation::misfit(std::span<const double> genome) const {
 }
 
 void TreeVariation::cross_and_mutate(Genome& a, Genome& b, Rng& rng) const {
-  const TreeOperators& s = ops_;
-  const PrimitiveSet& set = set_;
-  Tree x = decode(a, set);
-  Tree y = decode(b, set);
-  if (rng.uniform() < s.crossover) {
-    Tree xy = crossover(x, y, set, ops_.limits(), s.internal_bias, rng);
-    y = crossover(y, x, set, ops_.limits(), s.internal_bias, rng);
+  Tree x = decode(a, set_);
+  Tree y = decode(b, set_);
+  if (rng.uniform() < ops_.crossover) {
+    Tree xy = crossover(x, y, set_, ops_.limits(), ops_.internal_bias, rng);
+    y = crossover(y, x, set_, ops_.limits(), ops_.internal_bias, rng);
     x = std::move(xy);
   }
   for (auto [tree, genome] : {std::pair{&x, &a}, std::pair{&y, &b}}) {
@@ -55,8 +53,7 @@ Genome TreeVariation::mutate_one(std::span<const double> parent, Rng& rng) const
 }
 
 double TreeVariation::mutation_sum() const noexcept {
-  const TreeOperators& s = ops_;
-  return s.subtree_mutation + s.point_mutation + s.hoist_mutation;
+  return ops_.subtree_mutation + ops_.point_mutation + ops_.hoist_mutation;
 }
 
 double encoded_tree_bytes(const TreeOperators& operators) noexcept {
