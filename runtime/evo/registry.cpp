@@ -8,6 +8,8 @@
 #include "runtime/evo/gp/gp_optimizer.hpp"
 #include "runtime/evo/map_elites/map_elites_optimizer.hpp"
 #include "runtime/evo/map_elites/map_elites_options.hpp"
+#include "runtime/evo/neat/neat_optimizer.hpp"
+#include "runtime/evo/neat/neat_options.hpp"
 #include "runtime/evo/novelty/novelty_optimizer.hpp"
 #include "runtime/evo/novelty/novelty_options.hpp"
 #include "runtime/evo/nsga2/nsga2_optimizer.hpp"
@@ -82,6 +84,9 @@ const std::vector<Algorithm>& algorithms() {
        &on<NoveltyRunSettings, std::size_t, &novelty_population>, &peak_on<NoveltyRunSettings, &novelty_memory_peak>,
        "novelty search", &novelty_options, &defaults<NoveltyRunSettings>,
        &on<NoveltyRunSettings, std::string, &novelty_problem>},
+      {"neat", 1, {Graph}, &make<NeatSettings, &make_neat_run>, &on<NeatSettings, std::size_t, &neat_run_population>,
+       &peak_on<NeatSettings, &neat_run_memory_peak>, "NEAT", &neat_options, &defaults<NeatSettings>,
+       &on<NeatSettings, std::string, &neat_run_problem>},
   };
   return table;
 }

@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/neat/neat_settings.hpp"
@@ -16,12 +18,15 @@
 namespace esc::evo {
 
 // What one run of NEAT evolves: networks of `inputs` inputs and `outputs` outputs (a bias
-// is added), from `seed`; `start`, when not null, a graph genome every run begins from.
+// is added), from `seed`; `start`, when not null, a graph genome every run begins from;
+// the minimal start's output nodes take `output_activation` when given (a controller's
+// head's), else the settings' activation.
 struct NeatProblem {
   std::size_t inputs = 0;
   std::size_t outputs = 0;
   std::uint64_t seed = 0;
   const Genome* start = nullptr;
+  std::optional<genome::graph::Activation> output_activation = std::nullopt;
 };
 
 // Throws std::invalid_argument on impossible settings or a start that is not a graph genome
@@ -37,5 +42,12 @@ struct NeatProblem {
 // the minimal start's links and its nodes plus one hidden node per output (a net that has
 // grown; XOR's solutions have 2 to 3 times the start's links).
 [[nodiscard]] MemoryPeak neat_memory_peak(const NeatSettings& settings, std::size_t inputs, std::size_t outputs);
+
+// The same four over a run's Problem (its `graph`), as the algorithm registry calls them: a
+// problem that evolves no graphs is refused (make_neat_run throws, neat_run_problem says so).
+[[nodiscard]] std::unique_ptr<Optimizer> make_neat_run(const NeatSettings& settings, const Problem& problem);
+[[nodiscard]] std::size_t neat_run_population(const NeatSettings& settings, const Problem& problem);
+[[nodiscard]] MemoryPeak neat_run_memory_peak(const NeatSettings& settings, const Problem& problem);
+[[nodiscard]] std::string neat_run_problem(const NeatSettings& settings, const Problem& problem);
 
 }  // namespace esc::evo
