@@ -113,8 +113,9 @@ TEST(Neat, TheBestNetworkReplaysAndIsEvaluatedAndEvolvedOnFromStore) {
       const double was = stored["controllers"][c]["runs"][r]["best_fitness"].get<double>();
       // A fixed start pose and no noise: the same network scores the same, to the last bit.
       EXPECT_EQ(evaluated["controllers"][c]["runs"][r]["best_fitness"].get<double>(), was) << c << " run " << r;
-      if (std::string(c) == "NC")   // member 0 of generation 0 is the stored network, unchanged
+      if (std::string(c) == "NC") {   // member 0 of generation 0 is the stored network, unchanged
         EXPECT_GE(evolved["controllers"][c]["runs"][r]["best"][0].get<double>(), was) << "run " << r;
+      }
     }
   const Outcome replayed = esc("replay " + basic.string() + " --out " + (dir / "replays").string());
   ASSERT_EQ(replayed.status, 0) << replayed.output;
