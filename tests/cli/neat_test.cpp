@@ -1,9 +1,11 @@
 // NEAT from the command line (docs/neat.md, "In scripts"): a `neat(...)` controller evolves
 // and improves, whatever the threads and runs at once; a run killed mid-run resumes to the
 // unbroken one; its metrics (species, hidden nodes, links) are stored per generation; its
-// best replays, its topology is exported and drawn; `evaluate from` scores a stored network again and `start from` evolves on
-// from it.
+// best replays, its topology is exported and drawn; `evaluate from` scores a stored network
+// again and `start from` evolves on from it; the shipped example runs.
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -120,6 +122,20 @@ TEST(Neat, TheBestNetworkReplaysAndIsEvaluatedAndEvolvedOnFromStore) {
   const Outcome replayed = esc("replay " + basic.string() + " --out " + (dir / "replays").string());
   ASSERT_EQ(replayed.status, 0) << replayed.output;
   EXPECT_NE(replayed.output.find("NC"), std::string::npos) << replayed.output;
+}
+
+// The shipped example compares fixed networks evolved by the ES with NEAT networks in one
+// experiment, each controller by its own algorithm.
+TEST(Neat, TheExampleComparesNeatWithFixedNetworksInOneExperiment) {
+  const fs::path dir = scratch("neat-example");
+  const Outcome o = esc("run " + std::string(ESC_SOURCE_DIR) + "/examples/neat_obstacle_avoidance.esc --runs 1 "
+                        "--generations 2 --set epochs=1 --out " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("8-neat-2"), std::string::npos) << o.output;
+  const std::string csv = esc("export " + dir.string() + " --format csv").output;
+  for (const char* c : {"CC_8_2", "CC_8_20_2"}) EXPECT_EQ(column_where(csv, 1, c, 15), std::vector<std::string>(2, "es"));
+  for (const char* c : {"NEAT_8_2", "NEAT_SC"})
+    EXPECT_EQ(column_where(csv, 1, c, 15), std::vector<std::string>(2, "neat"));
 }
 
 }  // namespace

@@ -128,7 +128,7 @@ TEST(Optimizer, AStateItCouldNotHaveSavedIsRefused) {
   more.es.lambda += 5;
   EXPECT_THROW(make(more, more.controllers[0])->load(state), std::invalid_argument);
   const std::size_t n = spec.controllers[0].genome_size();
-  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, {}, 77, nullptr, {}, {}})->load(state),
+  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, {}, 77, nullptr, {}, {}, {}})->load(state),
                std::invalid_argument);
 }
 
@@ -200,12 +200,12 @@ TEST(Optimizer, AStartGenomeIsCandidateZeroOfGenerationZero) {
 
 TEST(Optimizer, EvaluatingAStoredGenomeAsksForItAloneAndKeepsNoState) {
   const evo::Genome g{0.25, -0.5};
-  auto o = evo::make_evaluate_only({2, {}, 1, &g, {}, {}});
+  auto o = evo::make_evaluate_only({2, {}, 1, &g, {}, {}, {}});
   EXPECT_EQ(o->ask(0), std::vector<evo::Genome>{g});
   o->tell(measure({g}));
   EXPECT_TRUE(o->save().empty());
   EXPECT_THROW(o->load(evo::StateBytes{1}), std::invalid_argument);
-  EXPECT_THROW((void)evo::make_evaluate_only({2, {}, 1, nullptr, {}, {}}), std::invalid_argument);
+  EXPECT_THROW((void)evo::make_evaluate_only({2, {}, 1, nullptr, {}, {}, {}}), std::invalid_argument);
 }
 
 TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
