@@ -15,6 +15,7 @@
 #include "app/partial_run.hpp"
 #include "app/ranks.hpp"
 #include "compiler/setting_keys.hpp"
+#include "runtime/control/graph_net.hpp"
 #include "runtime/eval/fingerprint.hpp"
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/store/results_db.hpp"
@@ -237,8 +238,13 @@ Prepared run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
 }
 
 // Why `genome` cannot be controller `c`'s here ("" when it can): a network's weights must be
-// as many as its network has, a tree must be a well-typed tree of its primitive set.
+// as many as its network has, a tree must be a well-typed tree of its primitive set, a graph
+// a graph genome of its NEAT network's inputs and outputs.
 std::string genome_problem(const control::ControllerSpec& c, const std::vector<double>& genome) {
+  if (c.is_graph()) {
+    const std::string why = control::graph_genome_problem(c, genome);
+    return why.empty() ? why : fmt::format("it is not a genome of `{}`'s NEAT network here: {}", c.name, why);
+  }
   if (!c.is_tree())
     return genome.size() == c.genome_size()
                ? std::string()

@@ -14,6 +14,7 @@
 #include "runtime/store/members_export.hpp"
 #include "runtime/store/metrics_export.hpp"
 #include "runtime/store/run_directory.hpp"
+#include "runtime/store/topology_export.hpp"
 #include "runtime/store/untouched_load.hpp"
 #include "runtime/store/usage_export.hpp"
 
@@ -48,7 +49,7 @@ std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs, 
 // directory is read.
 void check_table(std::string_view table) {
   if (table.empty() || std::find(std::begin(kTables), std::end(kTables), table) != std::end(kTables)) return;
-  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front, archive or success",
+  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front, archive, success or topology",
                                     table);
   if (const auto near = compiler::closest(std::string(table), {std::begin(kTables), std::end(kTables)}))
     message += fmt::format("; did you mean `{}`?", *near);
@@ -96,6 +97,7 @@ std::string table_text(const std::vector<store::StoredDirectory>& all, std::stri
   check_table(table);
   if (table == "usage") return csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n";
   if (table == "metrics") return csv ? store::metrics_csv(all) : store::metrics_json(all).dump(2) + "\n";
+  if (table == "topology") return csv ? store::topology_csv(all) : store::topology_json(all).dump(2) + "\n";
   if (table == "success") {
     const std::vector<report::SuccessRow> rows = report::success_rows(all);
     return csv ? report::success_csv(rows) : report::success_json(rows).dump(2) + "\n";

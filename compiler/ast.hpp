@@ -190,6 +190,7 @@ struct ControllerDecl : DeclHead {
   bool symbolic = false;
   bool supervisor = false;
   bool elman = false;
+  bool neat = false;   // `neat(...)`: NEAT's network, no hidden layers
   // `tree(RESULT, primitives P)`: a GP tree instead of a network. RESULT is `wheels`
   // (tree_result), `actions [...]` (symbolic) or `behaviors [...]` (supervisor).
   bool tree = false;

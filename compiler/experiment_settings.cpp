@@ -73,7 +73,7 @@ const std::vector<ExperimentSetting>& experiment_settings() {
       // Resolved only when not the ES, so that runs from before it keep their settings.
       {"networks", "the algorithm that evolves the networks compared without `by` (`es`, `cmaes`)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
-         const std::vector<std::string> names = algorithms_for(false);
+         const std::vector<std::string> names = algorithms_for(genome::GenomeKind::Vector);
          const auto i = read_word(v, r.key, names, k);
          if (!i) return false;
          x.networks = names[*i];

@@ -1,5 +1,5 @@
-// Controllers: `controller NAME = mlp(...) | elman(...) | symbolic(...) | supervisor(...) |
-// tree(...)` -> control::ControllerSpec.
+// Controllers: `controller NAME = mlp(...) | elman(...) | neat(...) | symbolic(...) |
+// supervisor(...) | tree(...)` -> control::ControllerSpec.
 #include "compiler/lower_controller.hpp"
 
 #include <memory>
@@ -59,7 +59,9 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   control::ControllerSpec c;
   c.name = d.name.text;
   c.head = d.supervisor ? control::Head::Supervisor : d.symbolic ? control::Head::Symbolic : control::Head::Classical;
-  c.mlp.kind = d.elman ? control::NetworkKind::Elman : control::NetworkKind::Mlp;
+  c.mlp.kind = d.elman  ? control::NetworkKind::Elman
+               : d.neat ? control::NetworkKind::Graph
+                        : control::NetworkKind::Mlp;
   const bool chooses = d.symbolic || d.supervisor;   // no `wheels` output
   auto& used = used_[&d];
   used.clear();
@@ -100,7 +102,10 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   const std::vector<std::string> layer_words = {"hidden", "wheels"};
   for (std::size_t i = 0; i < d.layers.size(); ++i) {
     const ast::Layer& l = d.layers[i];
-    if (l.word.text == "hidden") {
+    if (l.word.text == "hidden" && d.neat) {
+      sink_.error(l.where, "a NEAT network declares no hidden layers: NEAT grows its hidden nodes")
+          .help.push_back("write `neat(ir[0..7] -> wheels)`");
+    } else if (l.word.text == "hidden") {
       if (!l.size) {
         sink_.error(l.where, "a hidden layer needs a size").help.push_back("write `hidden 20`");
         continue;

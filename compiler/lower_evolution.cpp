@@ -1,5 +1,6 @@
 #include "compiler/lower_evolution.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include <fmt/format.h>
@@ -17,7 +18,14 @@ namespace {
 using X = eval::ExperimentSpec;
 
 
-std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "a tree controller" : "a network"; }
+std::string kind_of(const control::ControllerSpec& c) {
+  return c.is_tree() ? "a tree controller" : c.is_graph() ? "a NEAT network" : "a network";
+}
+
+// "networks are", for the help that names the algorithms of c's kind.
+std::string kind_plural(const control::ControllerSpec& c) {
+  return c.is_tree() ? "trees are" : c.is_graph() ? "NEAT networks are" : "networks are";
+}
 
 // The algorithm that evolves x.controllers[i] now that `by` and `networks` are set.
 std::string algorithm_of(const X& x, std::size_t i) {
@@ -27,11 +35,15 @@ std::string algorithm_of(const X& x, std::size_t i) {
 
 }  // namespace
 
-std::vector<std::string> algorithms_for(bool trees) {
+std::vector<std::string> algorithms_for(genome::GenomeKind kind) {
   std::vector<std::string> v;
   for (const evo::Algorithm& a : evo::algorithms())
-    if (a.kinds.has(trees ? genome::GenomeKind::Tree : genome::GenomeKind::Vector)) v.emplace_back(a.name);
+    if (a.kinds.has(kind)) v.emplace_back(a.name);
   return v;
+}
+
+genome::GenomeKind genome_kind(const control::ControllerSpec& c) noexcept {
+  return c.is_tree() ? genome::GenomeKind::Tree : c.is_graph() ? genome::GenomeKind::Graph : genome::GenomeKind::Vector;
 }
 
 bool in_use(const X& x, std::string_view name) {
@@ -90,10 +102,9 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
               {.otherwise = fmt::format("algorithms: {}", quoted_list(algorithm_names()))});
       continue;
     }
-    if (!a->kinds.has(c.is_tree() ? genome::GenomeKind::Tree : genome::GenomeKind::Vector)) {
+    if (!a->kinds.has(genome_kind(c))) {
       sink.error(name.where, fmt::format("`{}` cannot evolve `{}`: it is {}", name.text, c.name, kind_of(c)))
-          .help.push_back(fmt::format("{} evolved by {}", c.is_tree() ? "trees are" : "networks are",
-                                      quoted_list(algorithms_for(c.is_tree()))));
+          .help.push_back(fmt::format("{} evolved by {}", kind_plural(c), quoted_list(algorithms_for(genome_kind(c)))));
       continue;
     }
     x.controllers[i].evolved_by = name.text;
@@ -120,7 +131,8 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
   if (x.evaluates_only()) return;
   // Those generations are the networks'; trees, whatever selects them, run for the GP's.
   bool any_network = false;
-  for (const control::ControllerSpec& c : x.controllers) any_network = any_network || !c.is_tree();
+  for (const control::ControllerSpec& c : x.controllers)
+    any_network = any_network || genome_kind(c) == genome::GenomeKind::Vector;
   if (first != nullptr && !any_network && items.gp != nullptr && !x.controllers.empty())
     sink.error(*first, fmt::format("these generations are the networks', and experiment `{}` compares only trees",
                                    d.name.text))
@@ -135,9 +147,14 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
     const evo::Algorithm& a = *evo::find_algorithm(name);
     Diagnostic& diag = sink.error(item.refs[0].where, fmt::format("`evolve {}` evolves none of the controllers "
                                                                   "experiment `{}` compares", name, d.name.text));
-    if (a.kinds == genome::GenomeKinds{genome::GenomeKind::Vector} && !any_network)
+    const bool fits_one = std::any_of(x.controllers.begin(), x.controllers.end(),
+                                      [&](const control::ControllerSpec& c) { return a.kinds.has(genome_kind(c)); });
+    if (a.kinds == genome::GenomeKinds{genome::GenomeKind::Graph} && !fits_one)
+      diag.help.push_back(fmt::format("`{}` evolves NEAT networks only: declare one with `neat(...)`, such as "
+                                      "`controller N = neat(ir[0..7] -> wheels)`", name));
+    else if (a.kinds == genome::GenomeKinds{genome::GenomeKind::Vector} && !any_network)
       diag.help.push_back(fmt::format("`{}` evolves networks; the compared controllers are trees, evolved by {}", name,
-                                      quoted_list(algorithms_for(true))));
+                                      quoted_list(algorithms_for(genome::GenomeKind::Tree))));
     else
       diag.help.push_back(fmt::format("name it for a controller in `compare`: `CONTROLLER by {}`", name));
   }
@@ -154,7 +171,8 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
                                                  "`evolve gp(...)` to give its tree operators", c.name, a, d.name.text))
           .help.push_back(fmt::format("add `evolve gp(max_depth 12, max_size 100) for 50 generations`: `{}` selects, "
                                       "the GP's crossover and mutations vary, for the GP's generations", a));
-    } else if (!c.is_tree() && a == X::kEs && items.gp != nullptr && items.es == nullptr) {
+    } else if (genome_kind(c) == genome::GenomeKind::Vector && a == X::kEs && items.gp != nullptr &&
+               items.es == nullptr) {
       sink.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
                                                  "(`evolve gp`)", c.name, d.name.text))
           .help.push_back("networks are evolved by the ES: add `evolve es(mu 30, lambda 150) for 250 generations`");

@@ -11,6 +11,7 @@
 #include "compiler/ast.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/eval/experiment.hpp"
+#include "runtime/genome/kind.hpp"
 
 namespace esc::compiler {
 
@@ -24,8 +25,10 @@ struct EvolveItems {
 
 // Every algorithm a script can name, for messages: `es`, `gp`, `cmaes`, ...
 [[nodiscard]] std::vector<std::string> algorithm_names();
-// Those that evolve trees, or networks.
-[[nodiscard]] std::vector<std::string> algorithms_for(bool trees);
+// Those that evolve genomes of `kind` (networks' weights, trees, graphs).
+[[nodiscard]] std::vector<std::string> algorithms_for(genome::GenomeKind kind);
+// The kind of genome controller `c` evolves.
+[[nodiscard]] genome::GenomeKind genome_kind(const control::ControllerSpec& c) noexcept;
 
 // Whether algorithm `name` evolves one of x's compared controllers (none when x only
 // evaluates stored ones).

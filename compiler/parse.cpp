@@ -466,17 +466,20 @@ class Builder {
     if (auto* m = dynamic_cast<P::MlpControllerContext*>(c->controllerExpr())) {
       d.symbolic = false;
       d.elman = m->net != nullptr && m->net->getType() == P::ELMAN;
+      d.neat = m->net != nullptr && m->net->getType() == P::NEAT;
       d.kind_where = at(m->getStart());
       network(m->network(), d);
     } else if (auto* s = dynamic_cast<P::SymbolicControllerContext*>(c->controllerExpr())) {
       d.symbolic = true;
       d.elman = s->net != nullptr && s->net->getType() == P::ELMAN;
+      d.neat = s->net != nullptr && s->net->getType() == P::NEAT;
       d.kind_where = at(s->getStart());
       network(s->network(), d);
       for (P::IdentContext* a : s->ident()) d.actions.push_back(name(a));
     } else if (auto* v = dynamic_cast<P::SupervisorControllerContext*>(c->controllerExpr())) {
       d.supervisor = true;
       d.elman = v->net != nullptr && v->net->getType() == P::ELMAN;
+      d.neat = v->net != nullptr && v->net->getType() == P::NEAT;
       d.kind_where = at(v->getStart());
       network(v->network(), d);
       supervised(v->supervised(), d);

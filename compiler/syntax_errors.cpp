@@ -27,7 +27,7 @@ bool is_wordish(std::size_t type) {
     case EscParser::AT: case EscParser::RADIUS: case EscParser::SIZE: case EscParser::BOX:
     case EscParser::ANGLE: case EscParser::START: case EscParser::RANDOM:
     case EscParser::HEADING: case EscParser::CYLINDER: case EscParser::BLOCK:
-    case EscParser::MLP: case EscParser::SYMBOLIC: case EscParser::ACTIONS:
+    case EscParser::MLP: case EscParser::NEAT: case EscParser::SYMBOLIC: case EscParser::ACTIONS:
     case EscParser::FOR: case EscParser::GENERATIONS: case EscParser::RUNS:
     case EscParser::SEED: case EscParser::COMPARE: case EscParser::EVOLVE: case EscParser::LIGHT:
     case EscParser::ABOVE: case EscParser::HEIGHT: case EscParser::INTENSITY: case EscParser::ZONE:

@@ -85,9 +85,10 @@ fitnessItem
 // ---- controllers --------------------------------------------------------------------
 controllerDecl : CONTROLLER name=ident '=' controllerExpr ';'? ;
 controllerExpr
-  : net=(MLP | ELMAN) '(' network ')'                                                 # mlpController
-  | SYMBOLIC '(' net=(MLP | ELMAN) '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'   # symbolicController
-  | SUPERVISOR '(' net=(MLP | ELMAN) '(' network ')' ',' BEHAVIORS '[' supervised (',' supervised)* ']' ')'   # supervisorController
+  // `neat(...)`: NEAT's network, its inputs and (classical) `-> wheels`; NEAT grows the rest.
+  : net=(MLP | ELMAN | NEAT) '(' network ')'                                          # mlpController
+  | SYMBOLIC '(' net=(MLP | ELMAN | NEAT) '(' network ')' ',' ACTIONS '[' ident (',' ident)* ']' ')'   # symbolicController
+  | SUPERVISOR '(' net=(MLP | ELMAN | NEAT) '(' network ')' ',' BEHAVIORS '[' supervised (',' supervised)* ']' ')'   # supervisorController
   // A GP tree: its result (`wheels`, or a choice among actions or behaviors) and its primitives.
   | TREE '(' treeResult ',' PRIMITIVES prims=ident ')'                                 # treeController
   ;
@@ -198,7 +199,7 @@ expr
 // Words that are keywords in one place and ordinary names elsewhere.
 ident
   : ID | X | STEPS | STEP | EPOCH | EPOCHS | STOP | WHEN | AT | RADIUS | SIZE | BOX | ANGLE
-  | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | SYMBOLIC | ACTIONS | FOR
+  | START | RANDOM | HEADING | CYLINDER | BLOCK | MLP | NEAT | SYMBOLIC | ACTIONS | FOR
   | GENERATIONS | RUNS | SEED | COMPARE | EVOLVE | LIGHT | ABOVE | HEIGHT | INTENSITY | ZONE
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
@@ -244,6 +245,7 @@ HEADING : 'heading' ;
 CYLINDER : 'cylinder' ;
 BLOCK : 'block' ;
 MLP : 'mlp' ;
+NEAT : 'neat' ;
 SYMBOLIC : 'symbolic' ;
 ACTIONS : 'actions' ;
 FOR : 'for' ;

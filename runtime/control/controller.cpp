@@ -89,11 +89,20 @@ const ControllerSpec& checked(const ControllerSpec& spec, std::span<const double
                                     std::to_string(call->behavior.params.size()));
     }
   }
-  if (genome.size() != spec.genome_size())
+  if (!spec.is_graph() && genome.size() != spec.genome_size())
     throw std::invalid_argument(where(spec) + " needs a genome of " +
                                 std::to_string(spec.genome_size()) + " weights, got " +
                                 std::to_string(genome.size()));
   return spec;
+}
+
+std::variant<Mlp, GraphNet> network_of(const ControllerSpec& spec, std::span<const double> genome) {
+  if (!spec.is_graph()) return Mlp(spec.mlp, spec.output_count(), output_activation(spec.head), genome);
+  try {
+    return GraphNet(spec.mlp, spec.output_count(), genome);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(where(spec) + ": " + e.what());
+  }
 }
 
 }  // namespace
@@ -103,7 +112,7 @@ Controller::Controller(const ControllerSpec& spec, std::span<const double> genom
 
 Controller::Controller(const ControllerSpec& spec, std::span<const double> genome, ActorFactory subs, int depth)
     : spec_(&checked(spec, genome, depth)),
-      net_(spec.mlp, spec.output_count(), output_activation(spec.head), genome) {
+      net_(network_of(spec, genome)) {
   if (spec.head == Head::Symbolic) {
     param_offset_.reserve(spec.actions.size());
     std::size_t next = spec.actions.size();
@@ -138,13 +147,21 @@ Controller::Controller(const ControllerSpec& spec, std::span<const double> genom
 }
 
 void Controller::rebind(std::span<const double> genome) {
-  net_.rebind(genome);
+  if (auto* g = std::get_if<GraphNet>(&net_)) {
+    try {
+      g->rebind(genome);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(where(*spec_) + ": " + e.what());
+    }
+  } else {
+    std::get<Mlp>(net_).rebind(genome);
+  }
   reset();
   clear_usage();
 }
 
 void Controller::reset() noexcept {
-  net_.reset();
+  std::visit([](auto& net) { net.reset(); }, net_);
   for (const auto& s : subs_) s->reset();
   last_action_ = -1;
 }
@@ -160,8 +177,13 @@ const Actor* Controller::sub_controller(std::size_t i) const noexcept {
 }
 
 WheelCommand Controller::step(expr::Frame& frame) noexcept {
-  net_.forward(frame);
-  return head([this](std::size_t i) { return net_.output(i); }, frame);
+  if (auto* g = std::get_if<GraphNet>(&net_)) {
+    g->forward(frame);
+    return head([g](std::size_t i) { return g->output(i); }, frame);
+  }
+  Mlp& mlp = *std::get_if<Mlp>(&net_);
+  mlp.forward(frame);
+  return head([&mlp](std::size_t i) { return mlp.output(i); }, frame);
 }
 
 WheelCommand Controller::act(std::span<const double> outputs, expr::Frame& frame) noexcept {

@@ -10,10 +10,12 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <variant>
 #include <vector>
 
 #include "runtime/control/actor.hpp"
 #include "runtime/control/controller_spec.hpp"
+#include "runtime/control/graph_net.hpp"
 #include "runtime/control/mlp.hpp"
 
 namespace esc::control {
@@ -28,7 +30,8 @@ class Controller final : public Actor {
   // certainly a spec that contains itself).
   static constexpr int kMaxNesting = 8;
 
-  // `genome` must have spec.genome_size() values; both must outlive the controller.
+  // `genome` must have spec.genome_size() values (a `neat(...)` network's: be a graph genome
+  // of its inputs and outputs); both must outlive the controller.
   // Throws std::invalid_argument on a wrong genome size or a spec the controller cannot
   // run (symbolic head without actions, an action with more than expr::kMaxParams
   // parameters or an incomplete program, an input slot outside the frame, an Elman
@@ -40,7 +43,8 @@ class Controller final : public Actor {
   // levels below the top controller (ActorFactory); without one, only networks can be.
   Controller(const ControllerSpec& spec, std::span<const double> genome, ActorFactory subs, int depth = 0);
 
-  // Points the controller at another genome of the same size, keeping its buffers, then
+  // Points the controller at another genome of the same size, keeping its buffers (a graph
+  // genome's network is built anew), then
   // resets it and clears its usage counts (a new genome is a new individual).
   // Sub-controllers keep their fixed genomes. Throws std::invalid_argument on a wrong size.
   void rebind(std::span<const double> genome);
@@ -85,7 +89,7 @@ class Controller final : public Actor {
   WheelCommand head(const Outputs& output, expr::Frame& frame) noexcept;
 
   const ControllerSpec* spec_;
-  Mlp net_;
+  std::variant<Mlp, GraphNet> net_;
   std::vector<std::size_t> param_offset_;  // symbolic head: output index of action i's param 0
   std::vector<std::unique_ptr<Actor>> subs_;   // supervisor: one per FixedController, in order
   std::vector<int> sub_index_;             // supervisor: behavior i's index in subs_, or -1

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "runtime/control/graph_architecture.hpp"
+
 namespace esc::control {
 
 int ControllerSpec::output_count() const noexcept {
@@ -16,7 +18,7 @@ int ControllerSpec::output_count() const noexcept {
 }
 
 std::size_t ControllerSpec::genome_size() const noexcept {
-  if (is_tree()) return 0;
+  if (is_tree() || is_graph()) return 0;
   // Each layer out x (in + 1): one bias and one weight per input for every neuron; an
   // Elman hidden layer also takes its own previous activations as inputs, out x (in + 1 + out).
   const bool elman = mlp.kind == NetworkKind::Elman;
@@ -46,6 +48,7 @@ std::string ControllerSpec::architecture() const {
   if (is_tree())
     return head == Head::Classical ? "tree wheels" : head == Head::Symbolic ? "tree actions" : "tree behaviors";
   std::string s = std::to_string(mlp.inputs.size());
+  if (is_graph()) return s + kGraphArchitectureMark + std::to_string(output_count());
   for (int h : mlp.hidden) {
     s += '-' + std::to_string(h);
     if (mlp.kind == NetworkKind::Elman) s += 'r';

@@ -27,7 +27,9 @@ enum class Activation { Tanh, Sigmoid, Linear };
 // (Godzik et al. 2003, footnote on Elman networks):
 //   h_t = act(W_in [1; x_t] + W_ctx h_{t-1}),   y_t = act_out(W_out [1; h_t]),
 // with the context h_{-1} = 0 after every reset() (start of each epoch).
-enum class NetworkKind { Mlp, Elman };
+// Graph: NEAT's network (`neat(...)`), no hidden layers declared: its genome is a graph
+// genome (runtime/genome/graph) whose topology evolves, of no fixed size; run by GraphNet.
+enum class NetworkKind { Mlp, Elman, Graph };
 
 // A network: inputs are frame slots, then hidden layers, then outputs.
 // Each layer's weights are stored neuron by neuron, bias first, then one weight per input;
@@ -64,7 +66,7 @@ struct BehaviorCall {
 // genome): classical, symbolic, or itself a supervisor; MLP or Elman.
 struct FixedController {
   std::shared_ptr<const ControllerSpec> spec;
-  std::vector<double> genome;       // exactly spec->genome_size() values
+  std::vector<double> genome;       // exactly spec->genome_size() values (a graph genome: any)
 };
 
 struct SupervisedBehavior {
@@ -104,14 +106,17 @@ struct ControllerSpec {
   std::vector<Choice> choices;
 
   [[nodiscard]] bool is_tree() const noexcept { return primitives != nullptr; }
+  // A `neat(...)` network: its genome is a graph genome, of no fixed size.
+  [[nodiscard]] bool is_graph() const noexcept { return !is_tree() && mlp.kind == NetworkKind::Graph; }
   // Classical: 2. Symbolic: actions + all their parameters. Supervisor: behaviors.
   [[nodiscard]] int output_count() const noexcept;
   // The supervisor's genome is its own network only; sub-controllers' weights are fixed.
-  // 0 for a tree controller: a tree has no fixed size.
+  // 0 for a tree or graph controller: neither has a fixed size.
   [[nodiscard]] std::size_t genome_size() const noexcept;
   // "8-14-6" style architecture string for tables; an Elman hidden layer is marked with
   // an r (recurrent): "17-5r-2". A supervisor's string is its own network's: "17-5r-4".
-  // A tree controller: "tree wheels", "tree actions" or "tree behaviors".
+  // A tree controller: "tree wheels", "tree actions" or "tree behaviors". A NEAT network:
+  // "17-neat-2".
   [[nodiscard]] std::string architecture() const;
   // The head as the results store and its tables name it: "classical", "symbolic",
   // "supervisor", or "tree" for a tree controller.

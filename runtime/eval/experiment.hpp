@@ -12,7 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/control/controller.hpp"
 #include "runtime/control/controller_spec.hpp"
+#include "runtime/control/graph_net.hpp"
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/gp/gp.hpp"
 #include "runtime/evo/registry.hpp"
@@ -169,6 +171,7 @@ struct ExperimentSpec {
   // The paper's algorithms, whose settings have fields of their own (`es`, `gp`).
   static constexpr const char* kEs = "es";
   static constexpr const char* kGp = "gp";
+  static constexpr const char* kNeat = "neat";
 
   std::string name;
   std::string arena_name;
@@ -243,10 +246,13 @@ struct ExperimentSpec {
     return n;
   }
 
-  // The algorithm that evolves `c`: the one its `by` names, else `networks` for a network
-  // and GP for a tree; with its settings (`es`, `gp`, or algorithm_settings).
+  // The algorithm that evolves `c`: the one its `by` names, else `networks` for a network,
+  // GP for a tree and NEAT for a `neat(...)` network; with its settings (`es`, `gp`, or algorithm_settings).
   [[nodiscard]] Evolution evolution_of(const control::ControllerSpec& c) const {
-    const std::string& by = !c.evolved_by.empty() ? c.evolved_by : c.is_tree() ? kGp : networks;
+    const std::string& by = !c.evolved_by.empty() ? c.evolved_by
+                            : c.is_tree()          ? kGp
+                            : c.is_graph()         ? kNeat
+                                                   : networks;
     Evolution e{evo::find_algorithm(by), {}};
     if (by == kEs) e.settings = es;
     else if (by == kGp) e.settings = gp ? std::any(*gp) : std::any();
@@ -286,8 +292,11 @@ struct ExperimentSpec {
   [[nodiscard]] evo::Problem problem_of(const control::ControllerSpec& c) const {
     constexpr double inf = std::numeric_limits<double>::infinity();
     evo::Problem p;
-    p.genome_size = c.is_tree() ? 0 : c.genome_size();
+    p.genome_size = c.genome_size();
     p.tree.primitives = c.primitives.get();
+    if (c.is_graph())
+      p.graph = {c.mlp.inputs.size(), static_cast<std::size_t>(c.output_count()),
+                 control::graph_activation(control::output_activation(c.head))};
     if (c.is_tree() && gp) p.tree.operators = &*gp;
     p.objectives.assign(1 + further.size(), evo::Bounds{-inf, inf});
     for (std::size_t i = 0; i < objectives.size() && i < p.objectives.size(); ++i) {

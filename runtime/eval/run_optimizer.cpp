@@ -9,7 +9,9 @@ namespace esc::eval {
 
 namespace {
 
-std::string kind_of(const control::ControllerSpec& c) { return c.is_tree() ? "tree" : "network"; }
+std::string kind_of(const control::ControllerSpec& c) {
+  return c.is_tree() ? "tree" : c.is_graph() ? "NEAT network" : "network";
+}
 
 }  // namespace
 
@@ -26,6 +28,10 @@ RunOptimizer make_run_optimizer(const ExperimentSpec& spec, const control::Contr
                                 (controller.is_tree() ? std::string("GP") : std::string(evolution.algorithm->name)) +
                                 " settings");
   const evo::Algorithm& a = *evolution.algorithm;
+  // The compiler refuses this at the controller's name; a spec built otherwise is refused here.
+  if (!a.kinds.has(problem.kind()))
+    throw std::invalid_argument(kind_of(controller) + " controller '" + controller.name + "': " + std::string(a.name) +
+                                " does not evolve " + std::string(genome::name_of(problem.kind())) + " genomes");
   return {a.make(evolution.settings, problem), {std::string(a.name), a.state_format, {}}};
 }
 

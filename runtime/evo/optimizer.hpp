@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "runtime/evo/state_bytes.hpp"
+#include "runtime/genome/graph/graph_space.hpp"
 #include "runtime/genome/kind.hpp"
 #include "runtime/genome/tree/tree_space.hpp"
 
@@ -109,9 +110,10 @@ struct Bounds {
 };
 
 // What one run evolves: genomes of one kind (genome/kind.hpp), described by that kind's
-// member: `genome_size` weights (a network), or trees of `tree` (its primitive set, and the
+// member: `genome_size` weights (a network), trees of `tree` (its primitive set, and the
 // operators that vary them, the experiment's `evolve gp(...)`: what any algorithm that
-// evolves trees varies them with; null when the experiment has none), from the run's
+// evolves trees varies them with; null when the experiment has none), or graphs of `graph`
+// (a network whose topology evolves: its inputs and outputs; genome_size 0), from the run's
 // `seed`; `start` is the genome a run that starts from a stored controller (`start from`)
 // begins with, or null.
 // `objectives` holds one range per objective of an Outcome, in its maximised form (a
@@ -124,9 +126,11 @@ struct Problem {
   const Genome* start = nullptr;
   std::vector<Bounds> objectives;
   std::vector<Bounds> descriptors;
+  genome::graph::GraphSpace graph;   // last: brace lists written before graphs stay valid
 
   [[nodiscard]] genome::GenomeKind kind() const noexcept {
-    return tree.primitives != nullptr ? genome::GenomeKind::Tree : genome::GenomeKind::Vector;
+    if (tree.primitives != nullptr) return genome::GenomeKind::Tree;
+    return graph.graphs() ? genome::GenomeKind::Graph : genome::GenomeKind::Vector;
   }
 };
 

@@ -6,6 +6,7 @@
 #include "runtime/evo/es/es_optimizer.hpp"
 #include "runtime/evo/gp/gp_optimizer.hpp"
 #include "runtime/evo/map_elites/map_elites_optimizer.hpp"
+#include "runtime/evo/neat/neat_optimizer.hpp"
 #include "runtime/evo/novelty/novelty_optimizer.hpp"
 #include "runtime/evo/nsga2/nsga2_optimizer.hpp"
 
@@ -21,6 +22,7 @@ const std::vector<Algorithm>& algorithms() {
       Algorithm(MapElitesAlgorithm{}),
       Algorithm(MapElitesAlgorithm::centroidal()),
       Algorithm(NoveltyAlgorithm{}),
+      Algorithm(NeatAlgorithm{}),
   };
   return table;
 }

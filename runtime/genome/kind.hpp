@@ -12,12 +12,14 @@ namespace esc::genome {
 enum class GenomeKind : std::uint8_t {
   Vector,   // a network's weights: runtime/genome/vector
   Tree,     // a tree over a primitive set: runtime/genome/tree
+  Graph,    // a network's topology and weights (NEAT's): runtime/genome/graph
 };
 
 [[nodiscard]] constexpr std::string_view name_of(GenomeKind k) noexcept {
   switch (k) {
     case GenomeKind::Vector: return "vector";
     case GenomeKind::Tree: return "tree";
+    case GenomeKind::Graph: return "graph";
   }
   return "?";
 }

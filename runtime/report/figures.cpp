@@ -11,6 +11,7 @@
 #include "runtime/report/member_figures.hpp"
 #include "runtime/report/statistics.hpp"
 #include "runtime/report/svg_plot.hpp"
+#include "runtime/report/network_figure.hpp"
 #include "runtime/report/usage_figure.hpp"
 
 namespace esc::report {
@@ -262,6 +263,7 @@ std::vector<NamedFigure> experiment_figures(const store::StoredExperiment& e, co
   for (NamedFigure& f : usage_figures(e, stem)) out.push_back(std::move(f));
   if (const auto metrics = metrics_figure(e)) out.push_back({stem + "-metrics.svg", metrics->title, svg::render(*metrics)});
   for (NamedFigure& f : member_figures(e, stem)) out.push_back(std::move(f));
+  for (NamedFigure& f : network_figures(e, stem)) out.push_back(std::move(f));
   return out;
 }
 

@@ -12,6 +12,8 @@
 
 #include "runtime/control/controller.hpp"
 #include "tests/control/behaviors.hpp"
+#include "runtime/genome/graph/codec.hpp"
+#include "runtime/genome/graph/graph.hpp"
 #include "tests/support/allocation_counter.hpp"
 
 
@@ -96,6 +98,35 @@ TEST(NoAlloc, SymbolicStepDoesNotAllocate) {
   const std::vector<double> g = genome_for(s);
   Controller c(s, g);
   expect_no_allocation(c, 1000, [](int, expr::Frame&) {}, [&] { c.reset(); });
+}
+
+// A NEAT network (its graph genome grown by a split and a recurrent link) steps and resets
+// without allocating; only building or rebinding it does.
+TEST(NoAlloc, NeatStepDoesNotAllocate) {
+  ControllerSpec s;
+  s.mlp.inputs = ir_inputs();
+  s.mlp.kind = NetworkKind::Graph;
+  s.head = Head::Symbolic;
+  s.actions = {forward(), left(), right()};
+  namespace gg = genome::graph;
+  gg::Graph graph = gg::minimal_graph(s.mlp.inputs.size(), static_cast<std::size_t>(s.output_count()),
+                                      gg::Activation::Sigmoid);
+  for (std::size_t i = 0; i < graph.links.size(); ++i) graph.links[i].weight = std::sin(static_cast<double>(i) * 2.3);
+  const gg::Id hidden = gg::next_node_id(graph);
+  const gg::Id out = graph.nodes.back().id;
+  gg::Id innovation = gg::next_innovation(graph);
+  gg::insert_node(graph, {hidden, gg::NodeKind::Hidden, gg::Activation::NeatSigmoid});
+  gg::insert_link(graph, {1, hidden, 0.8, true, innovation++});
+  gg::insert_link(graph, {hidden, out, -1.2, true, innovation++});
+  gg::insert_link(graph, {out, hidden, 0.4, true, innovation++});
+  const std::vector<double> g = gg::encode(graph);
+  Controller c(s, g);
+  expect_no_allocation(
+      c, 1000,
+      [&](int t, expr::Frame&) {
+        if (t % 150 == 0) c.reset();
+      },
+      [&] { c.reset(); });
 }
 
 TEST(NoAlloc, ClassicalStepDoesNotAllocate) {

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "runtime/eval/experiment.hpp"
+#include "runtime/eval/run_optimizer.hpp"
 #include "runtime/evo/evaluate_only.hpp"
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/evo/registry.hpp"
@@ -46,7 +47,7 @@ struct Case {
 };
 
 // Every registered algorithm on each kind of controller it evolves: a network of the small
-// experiment, the GP experiment's Action tree.
+// experiment, the GP experiment's Action tree, the small experiment's network as NEAT's.
 std::vector<Case> cases() {
   std::vector<Case> v;
   for (const evo::Algorithm& a : evo::algorithms()) {
@@ -59,6 +60,14 @@ std::vector<Case> cases() {
         x.algorithm_settings[name] = a.defaults();
       }
       v.push_back({a.kinds.has(genome::GenomeKind::Vector) ? name + " (trees)" : name, name, std::move(x), 1});
+    }
+    if (a.kinds.has(genome::GenomeKind::Graph)) {   // the small experiment's CC as a NEAT network
+      ExperimentSpec x = testing::small_experiment();
+      declare_objectives(x);
+      x.controllers[0].mlp.kind = control::NetworkKind::Graph;
+      x.controllers[0].mlp.hidden.clear();
+      x.algorithm_settings[name] = a.defaults();
+      v.push_back({name, name, std::move(x), 0});
     }
     if (!a.kinds.has(genome::GenomeKind::Vector)) continue;
     ExperimentSpec x = testing::small_experiment();
@@ -128,7 +137,7 @@ TEST(Optimizer, AStateItCouldNotHaveSavedIsRefused) {
   more.es.lambda += 5;
   EXPECT_THROW(make(more, more.controllers[0])->load(state), std::invalid_argument);
   const std::size_t n = spec.controllers[0].genome_size();
-  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, {}, 77, nullptr, {}, {}})->load(state),
+  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, {}, 77, nullptr, {}, {}, {}})->load(state),
                std::invalid_argument);
 }
 
@@ -200,12 +209,12 @@ TEST(Optimizer, AStartGenomeIsCandidateZeroOfGenerationZero) {
 
 TEST(Optimizer, EvaluatingAStoredGenomeAsksForItAloneAndKeepsNoState) {
   const evo::Genome g{0.25, -0.5};
-  auto o = evo::make_evaluate_only({2, {}, 1, &g, {}, {}});
+  auto o = evo::make_evaluate_only({2, {}, 1, &g, {}, {}, {}});
   EXPECT_EQ(o->ask(0), std::vector<evo::Genome>{g});
   o->tell(measure({g}));
   EXPECT_TRUE(o->save().empty());
   EXPECT_THROW(o->load(evo::StateBytes{1}), std::invalid_argument);
-  EXPECT_THROW((void)evo::make_evaluate_only({2, {}, 1, nullptr, {}, {}}), std::invalid_argument);
+  EXPECT_THROW((void)evo::make_evaluate_only({2, {}, 1, nullptr, {}, {}, {}}), std::invalid_argument);
 }
 
 TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
@@ -223,7 +232,31 @@ TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
   EXPECT_EQ(evo::find_algorithm("gp")->kinds, genome::GenomeKinds{Tree});
   for (const char* both : {"nsga2", "novelty", "map_elites", "cvt_map_elites"})
     EXPECT_EQ(evo::find_algorithm(both)->kinds, (genome::GenomeKinds{Vector, Tree})) << both;
+  ASSERT_NE(evo::find_algorithm("neat"), nullptr);
+  EXPECT_EQ(evo::find_algorithm("neat")->kinds, genome::GenomeKinds{Graph});
   EXPECT_EQ(evo::find_algorithm("nsga3"), nullptr);
+}
+
+// A NEAT network named for an algorithm that does not evolve graphs (a spec the compiler
+// would have refused) is refused when its run's optimizer is made, never run as weights.
+TEST(Registry, AnAlgorithmWithoutGraphsRefusesANeatNetwork) {
+  for (const evo::Algorithm& a : evo::algorithms()) {
+    if (a.kinds.has(genome::GenomeKind::Graph)) continue;
+    ExperimentSpec x = testing::small_experiment();
+    x.controllers[0].mlp.kind = control::NetworkKind::Graph;
+    x.controllers[0].mlp.hidden.clear();
+    x.controllers[0].evolved_by = std::string(a.name);
+    if (!a.options().empty()) x.algorithm_settings[std::string(a.name)] = a.defaults();
+    const control::ControllerSpec& c = x.controllers[0];
+    try {
+      (void)make_run_optimizer(x, c, x.problem_of(c));
+      ADD_FAILURE() << a.name << " made an optimizer for a NEAT network";
+    } catch (const std::invalid_argument& e) {
+      if (a.name != ExperimentSpec::kGp) {   // GP has no settings here: refused for that first
+        EXPECT_NE(std::string(e.what()).find("does not evolve graph genomes"), std::string::npos) << e.what();
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ TEST(Registry, FindsEveryAlgorithmByItsNameWithTheKindsItDeclares) {
       {"map_elites", {Vector, Tree}},
       {"cvt_map_elites", {Vector, Tree}},
       {"novelty", {Vector, Tree}},
+      {"neat", {Graph}},
   };
   ASSERT_EQ(algorithms().size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -48,7 +49,7 @@ TEST(Registry, FindsEveryAlgorithmByItsNameWithTheKindsItDeclares) {
     EXPECT_EQ(a->state_format, 1U) << name;
     EXPECT_TRUE(a->defaults().has_value()) << name;
   }
-  EXPECT_EQ(find_algorithm("neat"), nullptr);
+  EXPECT_EQ(find_algorithm("neat_c++"), nullptr);
   EXPECT_EQ(find_algorithm(""), nullptr);
 }
 
@@ -90,7 +91,7 @@ TEST(Registry, ThePapersAlgorithmsKeepTheCompilersHistoricTablesForNow) {
   // compiler/gp_settings: the registry lists no options for them.
   EXPECT_TRUE(find_algorithm("es")->options().empty());
   EXPECT_TRUE(find_algorithm("gp")->options().empty());
-  for (const char* name : {"cmaes", "nsga2", "map_elites", "cvt_map_elites", "novelty"})
+  for (const char* name : {"cmaes", "nsga2", "map_elites", "cvt_map_elites", "novelty", "neat"})
     EXPECT_FALSE(find_algorithm(name)->options().empty()) << name;
 }
 

@@ -20,8 +20,13 @@ std::size_t pick(Rng& rng, std::size_t n) { return static_cast<std::size_t>(rng.
 
 }  // namespace
 
-Neat::Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs)
-    : s_(settings), inputs_(inputs), outputs_(outputs), threshold_(settings.threshold) {
+Neat::Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs,
+           std::optional<gg::Activation> output_activation)
+    : s_(settings),
+      inputs_(inputs),
+      outputs_(outputs),
+      output_activation_(output_activation.value_or(settings.activation)),
+      threshold_(settings.threshold) {
   if (const std::string why = neat_problem(settings, inputs, outputs); !why.empty())
     throw std::invalid_argument("NEAT: " + why);
 }
@@ -29,7 +34,10 @@ Neat::Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs
 gg::Coefficients Neat::coefficients() const { return {s_.excess_coeff, s_.disjoint_coeff, s_.weight_coeff}; }
 
 void Neat::start(const gg::Graph* start, Rng& init) {
-  const gg::Graph first = start != nullptr ? *start : gg::minimal_graph(inputs_, outputs_, s_.activation);
+  gg::Graph first = start != nullptr ? *start : gg::minimal_graph(inputs_, outputs_, s_.activation);
+  if (start == nullptr)
+    for (gg::NodeGene& n : first.nodes)
+      if (n.kind == gg::NodeKind::Output) n.activation = output_activation_;
   population_.assign(static_cast<std::size_t>(s_.population), first);
   for (std::size_t i = 0; i < population_.size(); ++i) {
     if (start == nullptr) {

@@ -9,6 +9,7 @@
 // fitness is known and loaded into a fresh Neat breeds the same next generation.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -24,8 +25,10 @@ namespace esc::evo {
 class Neat {
  public:
   // Throws std::invalid_argument on settings the option table would refuse, or no inputs
-  // or outputs.
-  Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs);
+  // or outputs. The minimal start's output nodes take `output_activation` (a controller's
+  // head's), or the settings' activation as the hidden nodes do when none is given.
+  Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs,
+       std::optional<genome::graph::Activation> output_activation = std::nullopt);
 
   // The first population: copies of `start` (or NEAT's minimal start) with every weight
   // drawn from `init` in [-1, 1]; a given start stays unchanged as member 0 and its other
@@ -59,6 +62,7 @@ class Neat {
   NeatSettings s_;
   std::size_t inputs_;
   std::size_t outputs_;
+  genome::graph::Activation output_activation_;
   std::vector<genome::graph::Graph> population_;
   std::vector<double> fitness_;        // as measured, finite; empty until told
   std::vector<Species> species_;

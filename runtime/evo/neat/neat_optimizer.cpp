@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "runtime/evo/neat/neat.hpp"
+#include "runtime/evo/neat/neat_options.hpp"
 #include "runtime/evo/run_streams.hpp"
 #include "runtime/genome/graph/codec.hpp"
 
@@ -18,7 +19,7 @@ namespace {
 class NeatOptimizer final : public Optimizer {
  public:
   NeatOptimizer(const NeatSettings& settings, const NeatProblem& problem)
-      : neat_(settings, problem.inputs, problem.outputs), seed_(problem.seed) {
+      : neat_(settings, problem.inputs, problem.outputs, problem.output_activation), seed_(problem.seed) {
     gg::Graph start;
     if (problem.start != nullptr) {
       if (const std::string why = gg::decode(*problem.start, start); !why.empty())
@@ -97,6 +98,32 @@ MemoryPeak neat_memory_peak(const NeatSettings& settings, std::size_t inputs, st
   return {bytes, pop,
           fmt::format("NEAT's {} networks of about {:.0f} links, parents and children", settings.population, links),
           "neat.population"};
+}
+
+namespace {
+
+NeatProblem neat_problem_of(const Problem& p) {
+  return {p.graph.inputs, p.graph.outputs, p.seed, p.start, p.graph.output_activation};
+}
+
+}  // namespace
+
+std::unique_ptr<Optimizer> make_neat_run(const NeatSettings& settings, const Problem& problem) {
+  if (!problem.graph.graphs()) throw std::invalid_argument("NEAT evolves graph genomes (a `neat(...)` controller)");
+  return make_neat(settings, neat_problem_of(problem));
+}
+
+std::size_t neat_run_population(const NeatSettings& settings, const Problem& /*problem*/) {
+  return neat_population(settings);
+}
+
+MemoryPeak neat_run_memory_peak(const NeatSettings& settings, const Problem& problem) {
+  return neat_memory_peak(settings, problem.graph.inputs, problem.graph.outputs);
+}
+
+std::string neat_run_problem(const NeatSettings& settings, const Problem& problem) {
+  if (!problem.graph.graphs()) return "NEAT evolves graph genomes: a `neat(...)` controller";
+  return neat_problem(settings, problem.graph.inputs, problem.graph.outputs);
 }
 
 }  // namespace esc::evo

@@ -1,0 +1,84 @@
+#include "runtime/store/topology_export.hpp"
+
+#include <functional>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "runtime/control/graph_architecture.hpp"
+#include "runtime/genome/graph/codec.hpp"
+#include "runtime/store/export.hpp"
+
+namespace esc::store {
+
+namespace {
+
+namespace gg = genome::graph;
+
+struct TopologyRow {
+  const std::string& experiment;
+  const std::string& condition;   // empty for a plain experiment
+  const std::string& controller;
+  int run;                        // from 1
+  const gg::NodeGene* node;       // one of the two
+  const gg::LinkGene* link;
+};
+
+// Every row, in directory, experiment, controller and run order; a best genome that does
+// not decode (a store from before graphs could not hold one) gives none.
+void for_each_row(const std::vector<StoredDirectory>& directories, const std::function<void(const TopologyRow&)>& f) {
+  for (const StoredDirectory& d : directories)
+    for (const StoredExperiment& e : d.experiments) {
+      const std::string condition = e.condition ? e.condition->name : std::string();
+      for (const StoredController& c : e.controllers) {
+        if (c.architecture.find(control::kGraphArchitectureMark) == std::string::npos) continue;
+        for (std::size_t r = 0; r < c.finished.size(); ++r) {
+          gg::Graph g;
+          if (!gg::decode(c.finished[r].best_genome, g).empty()) continue;
+          const int run = static_cast<int>(r) + 1;
+          for (const gg::NodeGene& n : g.nodes) f({e.name, condition, c.name, run, &n, nullptr});
+          for (const gg::LinkGene& l : g.links) f({e.name, condition, c.name, run, nullptr, &l});
+        }
+      }
+    }
+}
+
+}  // namespace
+
+std::string topology_csv(const std::vector<StoredDirectory>& directories) {
+  std::string out = std::string(kTopologyColumns) + "\n";
+  for_each_row(directories, [&](const TopologyRow& r) {
+    out += fmt::format("{},{},{},{},", r.experiment, csv_field(r.condition), r.controller, r.run);
+    if (r.node != nullptr)
+      out += fmt::format("node,{},{},{},,,,\n", r.node->id, gg::kind_name(r.node->kind),
+                         r.node->kind == gg::NodeKind::Input || r.node->kind == gg::NodeKind::Bias
+                             ? std::string_view()
+                             : gg::activation_name(r.node->activation));
+    else
+      out += fmt::format("link,{},,,{},{},{:.17g},{}\n", r.link->innovation, r.link->in, r.link->out, r.link->weight,
+                         r.link->enabled ? 1 : 0);
+  });
+  return out;
+}
+
+nlohmann::ordered_json topology_json(const std::vector<StoredDirectory>& directories) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for_each_row(directories, [&](const TopologyRow& r) {
+    nlohmann::ordered_json row = {{"experiment", r.experiment}, {"condition", r.condition}, {"controller", r.controller},
+                                  {"run", r.run}};
+    const bool sensor = r.node != nullptr && (r.node->kind == gg::NodeKind::Input || r.node->kind == gg::NodeKind::Bias);
+    row["element"] = r.node != nullptr ? "node" : "link";
+    row["id"] = r.node != nullptr ? r.node->id : r.link->innovation;
+    row["kind"] = r.node != nullptr ? nlohmann::ordered_json(gg::kind_name(r.node->kind)) : nlohmann::ordered_json();
+    row["activation"] = r.node != nullptr && !sensor ? nlohmann::ordered_json(gg::activation_name(r.node->activation))
+                                                     : nlohmann::ordered_json();
+    row["in"] = r.link != nullptr ? nlohmann::ordered_json(r.link->in) : nlohmann::ordered_json();
+    row["out"] = r.link != nullptr ? nlohmann::ordered_json(r.link->out) : nlohmann::ordered_json();
+    row["weight"] = r.link != nullptr ? nlohmann::ordered_json(r.link->weight) : nlohmann::ordered_json();
+    row["enabled"] = r.link != nullptr ? nlohmann::ordered_json(r.link->enabled ? 1 : 0) : nlohmann::ordered_json();
+    rows.push_back(std::move(row));
+  });
+  return rows;
+}
+
+}  // namespace esc::store
