@@ -91,8 +91,7 @@ class Run:
     @property
     def summary(self) -> dict:
         """summary.json as a dict (docs/results-store.md): per controller its runs' best
-        fitness, seeds, generations, the last generation's best, mean and sd, and a digest of
-        every generation's (the values themselves: `table()`). Seeds are decimal strings."""
+        fitness, seeds and per-generation best, mean and sd. Seeds are decimal strings."""
         file = os.path.join(self._path, "summary.json")
         try:
             with builtins.open(file, encoding="utf-8") as f:
@@ -104,8 +103,7 @@ class Run:
         """Table `name` as a pandas DataFrame: "generations" (the default export: one row
         per run and generation), "usage" (behavior usage per run, generation and behavior),
         "metrics" (what each optimizer reported per generation), "front" (NSGA-II's first
-        front at the generations that store it: every `members_every`-th and the last, the
-        last stored up to g standing for an unchanged one, docs/results-store.md), "archive" (MAP-Elites' and novelty search's archive changes
+        front per generation), "archive" (MAP-Elites' and novelty search's archive changes
         per generation: the archive after generation g is
         `t[t.generation <= g].groupby(["run", "cell"]).last()`) or "success" (Fisher's exact
         test and the censored Mann-Whitney test of every pair the end table compares, for an

@@ -101,16 +101,14 @@ std::uint64_t content_hash(std::string_view text, std::uint64_t h) noexcept {
   return h;
 }
 
-std::uint64_t content_hash_word(std::uint64_t word, std::uint64_t h) noexcept {
-  char bytes[8];
-  for (int i = 0; i < 8; ++i) bytes[i] = static_cast<char>((word >> (8 * i)) & 0xff);
-  return content_hash(std::string_view(bytes, 8), h);
-}
-
 std::string genome_checksum(std::string_view controller, int run, const std::vector<double>& genome, double fitness,
                             std::uint64_t evaluation_seed, std::string_view tree) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
-  const auto word = [&h](std::uint64_t w) { h = content_hash_word(w, h); };
+  const auto word = [&h](std::uint64_t w) {   // little-endian whatever the machine
+    char bytes[8];
+    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<char>((w >> (8 * i)) & 0xff);
+    h = content_hash(std::string_view(bytes, 8), h);
+  };
   const auto text = [&](std::string_view t) {
     word(t.size());
     h = content_hash(t, h);

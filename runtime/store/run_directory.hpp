@@ -113,8 +113,6 @@ class RunDirectory final : public eval::CampaignListener {
 
 // 64-bit FNV-1a of the text: a stable content key (not a cryptographic hash).
 [[nodiscard]] std::uint64_t content_hash(std::string_view text, std::uint64_t h = 0xcbf29ce484222325ULL) noexcept;
-// content_hash of the 8 bytes of `word` little-endian, whatever the machine, going on from `h`.
-[[nodiscard]] std::uint64_t content_hash_word(std::uint64_t word, std::uint64_t h) noexcept;
 
 // The checksum a genome file (CONTROLLER/run-NN.best.json) carries, 16 hex digits: FNV-1a of
 // what a replay uses from it (the controller's name and the run, the genes' and the

@@ -1,12 +1,8 @@
 #include "runtime/store/summary_json.hpp"
 
-#include <bit>
 #include <cmath>
 
-#include <fmt/format.h>
-
 #include "runtime/eval/success.hpp"
-#include "runtime/store/run_directory.hpp"
 #include "runtime/store/seed_json.hpp"
 
 namespace esc::store {
@@ -37,13 +33,6 @@ json usage_over_generations(const std::vector<std::string>& behaviors, const eva
   return {{"behaviors", behaviors}, {"best_steps", best}, {"mean_steps", mean}, {"steps_total", total}};
 }
 
-// The last generation's statistics, or null for a run without one.
-json final_json(const std::vector<eval::GenerationStats>& generations) {
-  if (generations.empty()) return nullptr;
-  const eval::GenerationStats& g = generations.back();
-  return {{"best", g.best}, {"mean", g.mean}, {"sd", g.sd}};
-}
-
 json number_or_null(std::optional<double> x) { return x ? json(*x) : json(nullptr); }
 
 // Where the run's first genome came from and what became of it here.
@@ -67,24 +56,24 @@ json success_json(const eval::SuccessCount& s) {
 
 }  // namespace
 
-std::string generations_digest(const std::vector<eval::GenerationStats>& generations) {
-  std::uint64_t h = content_hash({});
-  for (const eval::GenerationStats& g : generations)
-    for (const double v : {g.best, g.mean, g.sd}) h = content_hash_word(std::bit_cast<std::uint64_t>(v), h);
-  return fmt::format("fnv1a64:{:016x}", h);
-}
-
 nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
   const bool declares_success = !result.success.empty();
   nlohmann::ordered_json controllers = nlohmann::ordered_json::object();
   for (const auto& c : result.controllers) {
     nlohmann::ordered_json runs = nlohmann::ordered_json::array();
     for (const auto& r : c.runs) {
+      nlohmann::ordered_json best = nlohmann::ordered_json::array();
+      nlohmann::ordered_json mean = nlohmann::ordered_json::array();
+      nlohmann::ordered_json sd = nlohmann::ordered_json::array();
       std::int64_t saturated = 0;
-      for (const auto& g : r.generations) saturated += g.saturated;
+      for (const auto& g : r.generations) {
+        best.push_back(g.best);
+        mean.push_back(g.mean);
+        sd.push_back(g.sd);
+        saturated += g.saturated;
+      }
       nlohmann::ordered_json run = {{"run", r.run + 1}, {"seed", seed_json(r.seed)}, {"best_fitness", r.best_fitness},
-                                    {"generations", r.generations.size()}, {"final", final_json(r.generations)},
-                                    {"values_digest", generations_digest(r.generations)}};
+                                    {"best", best}, {"mean", mean}, {"sd", sd}};
       // Evaluations whose fitness saturated at +-1e300 (docs/language.md), over the run.
       run["saturated_evaluations"] = saturated;
       if (!r.best_tree.empty()) run["best_tree"] = r.best_tree;   // tree controllers, as script code

@@ -2,8 +2,7 @@
 // summary.json: the machine-readable result of a campaign.
 // {"experiment": name, "seed": master seed, "controllers": {NAME: {"architecture": "8-14-6",
 //   "genome_size": 216, "runs": [{"run": 1, "seed": ..., "best_fitness": ...,
-//   "generations": the run's finished generations, "final": {"best", "mean", "sd"} (its last
-//   generation's), "values_digest": generations_digest of every generation's,
+//   "best": [per generation], "mean": [per generation], "sd": [per generation],
 //   "best_tree": script code (tree controllers only),
 //   "behavior_usage": {BEHAVIOR: steps in the run's best evaluation} (symbolic heads, supervisors),
 //   "usage": {"behaviors": [names], "best_steps": [[per behavior] per generation],
@@ -16,9 +15,7 @@
 // "success" (the test, SuccessSpec::text) and the two success entries only when the experiment
 // declares `success when`.
 // Runs are numbered from 1 (as in file names, the console and the report); the per-generation
-// arrays (usage) and values start at generation 0, the initial population. The per-generation best, mean and sd
-// are esc.db's (`esc export`): summary.json certifies them by their digest, so that two
-// byte-identical summaries still mean every value of every generation is the same.
+// arrays start at generation 0, the initial population.
 // A study's: {"study": name, "seed": master seed, "conditions": [{"name": ..., "experiment":
 //   ..., "settings": {KEY: VALUE as written}, "success" (when declared), "controllers": {as above}}]}.
 #include <string>
@@ -30,11 +27,6 @@
 #include "runtime/eval/study.hpp"
 
 namespace esc::store {
-
-// "fnv1a64:" and 16 hex digits: 64-bit FNV-1a (content_hash) of the best, mean and sd of each
-// generation in order, each the 8 bytes of its IEEE-754 double, little-endian (NaN and the
-// infinities as their bits, which JSON's null would lose).
-[[nodiscard]] std::string generations_digest(const std::vector<eval::GenerationStats>& generations);
 
 [[nodiscard]] nlohmann::ordered_json summary_json(const eval::CampaignResult& result);
 

@@ -12,7 +12,6 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/esc_process.hpp"
-#include "tests/cli/summary_values.hpp"
 
 namespace {
 
@@ -149,7 +148,7 @@ TEST(Analyses, AFitnessOfUsingIsTheUsageCount) {
   const fs::path dir = scratch("using-fitness");
   const Outcome run = esc("run " + data("behavior_use.esc") + " --experiment counted --threads 2 --out " + dir.string());
   ASSERT_EQ(run.status, 0) << run.output;
-  const json summary = summary_with_values(dir);
+  const json summary = read_json(dir / "summary.json");
   int nonzero = 0;
   for (const char* controller : {"SC", "SV"})
     for (const json& r : summary["controllers"][controller]["runs"]) {
@@ -214,7 +213,7 @@ TEST(Analyses, TreesStartFromAndAreEvaluatedFromStoredTrees) {
   for (const auto& [name, c] : origin["controllers"].items())
     for (const json& r : c["runs"]) origin_best[name].push_back(r["best_fitness"].get<double>());
   // A fixed start pose: the stored tree scores here exactly what it scored there.
-  for (const auto& [name, c] : summary_with_values(dir / "onwards")["controllers"].items())
+  for (const auto& [name, c] : read_json(dir / "onwards" / "summary.json")["controllers"].items())
     for (const json& r : c["runs"]) {
       const json& t = r["transfer"];
       const std::size_t from = static_cast<std::size_t>(t["origin_run"].get<int>() - 1);
@@ -225,7 +224,7 @@ TEST(Analyses, TreesStartFromAndAreEvaluatedFromStoredTrees) {
       EXPECT_EQ(t["regained_at_generation"], 0);
       EXPECT_GE(r["best"][0].get<double>(), t["origin_fitness"].get<double>());
     }
-  const json evaluated = summary_with_values(dir / "again");
+  const json evaluated = read_json(dir / "again" / "summary.json");
   const json& runs = evaluated["controllers"]["GW"]["runs"];
   ASSERT_EQ(runs.size(), 3u);
   for (const json& r : runs) {

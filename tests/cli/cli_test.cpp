@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/esc_process.hpp"
-#include "tests/cli/summary_values.hpp"
 
 namespace {
 
@@ -59,7 +58,7 @@ TEST(Cli, RunWritesResultsAndNeverOverwritesThem) {
   EXPECT_NE(o.output.find("ETA"), std::string::npos);
   EXPECT_NE(o.output.find("eval/s"), std::string::npos);
   EXPECT_NE(o.output.find("behavior usage"), std::string::npos) << o.output;
-  const auto s = summary_with_values(out);
+  const auto s = read_json(out / "summary.json");
   EXPECT_EQ(s["experiment"], "tiny");
   EXPECT_EQ(s["seed"], "3");   // seeds are strings in JSON (exact beyond 2^53)
   for (const char* name : {"CC", "SC"}) {
@@ -97,9 +96,9 @@ TEST(Cli, SameSeedSameResultsWithOneOrTwoThreadsAndFitnessImproves) {
   ASSERT_EQ(esc(common + " --threads 2 --out " + b.string()).status, 0);
   ASSERT_EQ(esc(common + " --threads 2 --runs-at-once 1 --out " + c.string()).status, 0);
   EXPECT_EQ(esc(common + " --runs-at-once 0 --out " + scratch("t0").string()).status, 2);
-  const auto sa = summary_with_values(a);
-  const auto sb = summary_with_values(b);
-  const auto sc = summary_with_values(c);
+  const auto sa = read_json(a / "summary.json");
+  const auto sb = read_json(b / "summary.json");
+  const auto sc = read_json(c / "summary.json");
   for (const char* name : {"CC", "SC"}) {
     double first = 0.0;
     double last = 0.0;
@@ -123,7 +122,7 @@ TEST(Cli, PaperObstacleAvoidanceImprovesForEveryController) {
   const std::string script = std::string(ESC_SOURCE_DIR) + "/experiments/paper/obstacle_avoidance.esc";
   const Outcome o = esc("run " + script + " --runs 2 --generations 4 --seed 11 --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const auto s = summary_with_values(out);
+  const auto s = read_json(out / "summary.json");
   EXPECT_EQ(s["experiment"], "obstacle_avoidance");
   ASSERT_EQ(s["controllers"].size(), 6U);
   for (const auto& [name, c] : s["controllers"].items()) {

@@ -29,7 +29,7 @@ nlohmann::json results_only(const nlohmann::json& summary) {
   nlohmann::json r;
   for (const auto& [name, c] : summary["controllers"].items())
     for (const auto& run : c["runs"])
-      r[name].push_back({run["seed"], run["best_fitness"], run["generations"], run["values_digest"]});
+      r[name].push_back({run["seed"], run["best_fitness"], run["best"], run["mean"]});
   return r;
 }
 

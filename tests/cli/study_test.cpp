@@ -15,7 +15,6 @@
 
 #include "tests/cli/esc_process.hpp"
 #include "tests/cli/results_support.hpp"
-#include "tests/cli/summary_values.hpp"
 
 namespace {
 
@@ -36,7 +35,7 @@ TEST(Study, OneRunRunsEveryConditionIntoOneDirectory) {
   const fs::path out = scratch("study");
   const Outcome o = esc("run " + studies() + " --generations 2 --threads 2 --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json s = summary_with_values(out);
+  const json s = read_json(out / "summary.json");
   EXPECT_EQ(s["study"], "tiny_study");   // the file's first declaration
   EXPECT_EQ(s["seed"], "1");   // a string, as every seed in JSON
   ASSERT_EQ(s["conditions"].size(), 4u);
@@ -248,7 +247,7 @@ TEST(Study, AConditionSetsAnExperimentItDependsOn) {
     if (e.path().filename().string().rfind("basic-", 0) == 0) entries.push_back(e.path());
   ASSERT_EQ(entries.size(), 1u);
   EXPECT_EQ(read_json(entries[0] / "settings.json")["settings"]["generations"], "2");
-  EXPECT_EQ(summary_with_values(onwards)["conditions"][0]["controllers"]["CC"]["runs"][0]["best"].size(), 3u);
+  EXPECT_EQ(read_json(onwards / "summary.json")["conditions"][0]["controllers"]["CC"]["runs"][0]["best"].size(), 3u);
 }
 
 }  // namespace

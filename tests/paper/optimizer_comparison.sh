@@ -6,7 +6,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 "$ESC" run experiments/studies/es_vs_cmaes.esc --runs 2 --generations 3 --set epochs=1 --threads 2 \
     --out "$out/run" >/dev/null
-python3 scripts/optimizer-comparison.py "$out/run" --out "$out/table.md" --esc "$ESC"
+python3 scripts/optimizer-comparison.py "$out/run" --out "$out/table.md"
 rows=$(grep -c '^| \(es\|cmaes\|sep_cmaes\) | [A-Z0-9_]* | ' "$out/table.md")
 [ "$rows" -eq 12 ] || { echo "expected 12 rows (3 conditions x 4 controllers), found $rows"; exit 1; }
 grep -q '^| sep_cmaes | SC_8_8_6 | ' "$out/table.md" || { echo "missing sep_cmaes SC_8_8_6"; exit 1; }
