@@ -36,7 +36,9 @@ def evaluate(script: Union[Script, PathOrSource], experiment: Optional[str], con
     `genomes` is, for a network controller, a 2-D float array with one genome (all the
     network's weights, Controller.genome_size of them) per row; for a tree controller, a
     sequence of encoded trees (1-D float arrays, as Run.best_genome(..., encoded=True) gives
-    them). `experiment` None names the script's one experiment (ValueError when it declares
+    them); for a NEAT network (Controller.is_graph), a sequence of graph genomes in their flat
+    form (1-D float arrays, as Run.best_genome(controller, run) gives them; docs/neat.md).
+    `experiment` None names the script's one experiment (ValueError when it declares
     several). `epochs` replaces the experiment's number of epochs (as --set epochs=N does).
 
     `seed` is the evaluation seed: the one random stream an evaluation draws its start poses,
@@ -92,6 +94,12 @@ def _genome_rows(s: Script, experiment: str, controller: str, genomes):
         if isinstance(genomes, str) or any(isinstance(g, str) for g in genomes):
             raise ValueError(f"`{controller}` is a tree controller: give its trees encoded, as "
                              "Run.best_genome(controller, run, encoded=True) returns them, not as text")
+        rows = [arguments.finite(f"genomes[{i}]", g).ravel() for i, g in enumerate(genomes)]
+        return rows, len(rows)
+    if c.is_graph:
+        if isinstance(genomes, np.ndarray) and genomes.ndim == 2:
+            raise ValueError(f"`{controller}` is a NEAT network: give its graph genomes as a sequence of 1-D arrays, "
+                             "as Run.best_genome(controller, run) returns them (their lengths differ)")
         rows = [arguments.finite(f"genomes[{i}]", g).ravel() for i, g in enumerate(genomes)]
         return rows, len(rows)
     rows = arguments.finite("genomes", genomes)

@@ -143,7 +143,8 @@ class Run:
                     encoded: bool = False) -> Union[np.ndarray, str]:
         """The best genome of finished run `run` (from 1) of `controller`: a network's
         weights as a float64 array; a tree's text as script code, or with encoded=True the
-        encoded tree (a float64 array) that esc.evaluate takes."""
+        encoded tree (a float64 array) that esc.evaluate takes; a NEAT network's graph genome
+        in its flat form (a float64 array, docs/neat.md), which esc.evaluate takes too."""
         best = self.best(controller, run, condition)
         return best.tree if best.tree is not None and not encoded else best.genome
 

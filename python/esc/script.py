@@ -16,10 +16,11 @@ SOURCE_NAME = "<script>"
 
 @dataclass(frozen=True)
 class Controller:
-    """A controller an experiment compares: its name, architecture ("8-14-6", "tree
-    actions"), head ("classical", "symbolic", "supervisor" or "tree"), genome size (a
-    network's weights; 0 for a tree), its network's inputs by observable name ("ir[0]") and
-    its choices (the actions or behaviors it picks from, in order)."""
+    """A controller an experiment compares: its name, architecture ("8-14-6", "8-neat-2",
+    "tree actions"), head ("classical", "symbolic", "supervisor" or "tree"), genome size (a
+    network's weights; 0 for a tree or a NEAT network, whose genomes vary in length), its
+    network's inputs by observable name ("ir[0]"), its choices (the actions or behaviors it
+    picks from, in order) and whether it is a NEAT network (`neat(...)`, its genome a graph)."""
 
     name: str
     architecture: str
@@ -27,6 +28,7 @@ class Controller:
     genome_size: int
     inputs: Tuple[str, ...]
     choices: Tuple[str, ...]
+    is_graph: bool = False
 
     @property
     def is_tree(self) -> bool:
@@ -36,7 +38,7 @@ class Controller:
 
 def _controller(d: dict) -> Controller:
     return Controller(d["name"], d["architecture"], d["head"], d["genome_size"], tuple(d["inputs"]),
-                      tuple(d["choices"]))
+                      tuple(d["choices"]), d["graph"])
 
 
 class Script:

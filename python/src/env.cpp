@@ -7,6 +7,7 @@
 #include "python/src/bindings.hpp"
 #include "python/src/observation.hpp"
 #include "runtime/eval/observe.hpp"
+#include "runtime/genome/graph/codec.hpp"
 #include "runtime/tree_control/tree_driver.hpp"
 
 namespace esc::python {
@@ -65,7 +66,14 @@ Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& exper
       seed_(seed) {
   if (controller_ == nullptr) return;
   action_size_ = static_cast<std::size_t>(controller_->output_count());
-  unused_weights_.assign(controller_->genome_size(), 0.0);
+  // The head alone acts on the actions (act()): its network is never run, so any genome of
+  // its shape builds it, a NEAT network's minimal one.
+  if (controller_->is_graph())
+    unused_weights_ = genome::graph::encode(genome::graph::minimal_graph(
+        controller_->mlp.inputs.size(), static_cast<std::size_t>(controller_->output_count()),
+        genome::graph::Activation::Tanh));
+  else
+    unused_weights_.assign(controller_->genome_size(), 0.0);
   head_ = std::make_unique<control::Controller>(*controller_, unused_weights_, &tree_control::make_actor);
 }
 

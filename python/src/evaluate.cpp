@@ -17,6 +17,7 @@
 #include "python/src/bindings.hpp"
 #include "python/src/compiled_script.hpp"
 #include "runtime/eval/campaign.hpp"
+#include "runtime/control/graph_net.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/genome/tree/codec.hpp"
 
@@ -45,21 +46,30 @@ std::vector<std::vector<double>> network_genomes(const control::ControllerSpec& 
   return rows;
 }
 
-// A tree controller's genomes: encoded trees (runtime/genome/tree/codec.hpp), checked here, with
-// the GIL held, so that a bad one is a ValueError naming it.
-std::vector<std::vector<double>> tree_genomes(const control::ControllerSpec& c, const py::handle& genomes) {
-  std::vector<std::vector<double>> trees;
+// Genomes of variable length, one 1-D array each: a tree controller's encoded trees
+// (runtime/genome/tree/codec.hpp) or a NEAT controller's graph genomes (runtime/genome/graph/
+// codec.hpp), checked here, with the GIL held, so that a bad one is a ValueError naming it.
+std::vector<std::vector<double>> encoded_genomes(const control::ControllerSpec& c, const py::handle& genomes) {
+  std::vector<std::vector<double>> out;
   for (const py::handle& g : genomes) {
     const auto a = g.cast<Array>();
-    trees.emplace_back(a.data(), a.data() + a.size());
-    try {
-      (void)genome::tree::decode(trees.back(), *c.primitives);
-    } catch (const std::invalid_argument& e) {
-      throw py::value_error("genome " + std::to_string(trees.size() - 1) + " is not an encoded tree of controller `" +
-                            c.name + "`: " + e.what());
+    out.emplace_back(a.data(), a.data() + a.size());
+    std::string why;
+    if (c.is_tree()) {
+      try {
+        (void)genome::tree::decode(out.back(), *c.primitives);
+      } catch (const std::invalid_argument& e) {
+        why = e.what();
+      }
+    } else {
+      why = control::graph_genome_problem(c, out.back());
     }
+    if (!why.empty())
+      throw py::value_error("genome " + std::to_string(out.size() - 1) + " is not " +
+                            (c.is_tree() ? "an encoded tree" : "a graph genome") + " of controller `" + c.name +
+                            "`: " + why);
   }
-  return trees;
+  return out;
 }
 
 // Each genome's evaluation, as a run's; the experiment it ran in goes to `spec`.
@@ -71,7 +81,8 @@ std::vector<eval::Evaluation> evaluations(const std::shared_ptr<CompiledScript>&
     if (const std::string error = compiler::apply_setting(spec, "epochs", std::to_string(*epochs)); !error.empty())
       throw py::value_error("epochs=" + std::to_string(*epochs) + ": " + error);
   const control::ControllerSpec& c = find_controller(spec, controller);
-  const std::vector<std::vector<double>> rows = c.is_tree() ? tree_genomes(c, genomes) : network_genomes(c, spec, genomes);
+  const std::vector<std::vector<double>> rows =
+      c.is_tree() || c.is_graph() ? encoded_genomes(c, genomes) : network_genomes(c, spec, genomes);
   if (static_cast<std::size_t>(seeds.size()) != rows.size())
     throw py::value_error(std::to_string(seeds.size()) + " seeds for " + std::to_string(rows.size()) + " genomes");
   const std::span<const std::uint64_t> seed(seeds.data(), rows.size());
@@ -123,7 +134,8 @@ py::tuple measure(const std::shared_ptr<CompiledScript>& script, const std::stri
 void bind_evaluate(py::module_& m) {
   m.def("evaluate", &evaluate, py::arg("script"), py::arg("experiment"), py::arg("controller"), py::arg("genomes"),
         py::arg("epochs"), py::arg("seeds"),
-        "The fitness of each genome (rows of a 2-D array for a network, encoded trees for a tree controller), "
+        "The fitness of each genome (rows of a 2-D array for a network, encoded trees for a tree controller, "
+        "graph genomes for a NEAT network), "
         "genome i evaluated with evaluation seed seeds[i] over `epochs` epochs (None: the experiment's), as a run "
         "evaluates an individual. On every thread, the GIL released.");
   m.def("measure", &measure, py::arg("script"), py::arg("experiment"), py::arg("controller"), py::arg("genomes"),

@@ -26,6 +26,9 @@ const control::ControllerSpec& network(const CompiledScript& script, const std::
                                        const std::string& controller) {
   const control::ControllerSpec& c = find_controller(find_experiment(script, experiment), controller);
   if (c.is_tree()) throw py::value_error("`" + c.name + "` is a tree controller: a policy is a network's");
+  if (c.is_graph())
+    throw py::value_error("`" + c.name + "` is a NEAT network: a policy is a fixed network's weights; evaluate NEAT " +
+                          "genomes with esc.evaluate, or drive esc.Env with your own outputs");
   return c;
 }
 

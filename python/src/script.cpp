@@ -92,6 +92,7 @@ py::dict controller_info(const control::ControllerSpec& c) {
     for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot));
   d["inputs"] = inputs;
   d["choices"] = c.choice_names();
+  d["graph"] = c.is_graph();
   return d;
 }
 

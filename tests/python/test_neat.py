@@ -1,0 +1,57 @@
+"""NEAT networks (`neat(...)`, docs/neat.md) from Python: a stored best graph genome evaluated
+with its stored evaluation seed scores its stored fitness exactly; graph genomes are a
+sequence of 1-D arrays, checked; Env drives a NEAT controller's head; Policy refuses it."""
+
+import numpy as np
+import pytest
+
+import esc
+from conftest import SOURCE, esc_run
+
+NEAT = {"script": SOURCE / "examples" / "neat_obstacle_avoidance.esc", "experiment": "neat_obstacle_avoidance",
+        "settings": {"epochs": 1, "steps": 60, "neat.population": 10, "mu": 2, "lambda": 4}}
+
+
+@pytest.fixture(scope="module")
+def neat_run(tmp_path_factory):
+    return esc_run(NEAT["script"], tmp_path_factory.mktemp("neat") / "run", NEAT["settings"])
+
+
+@pytest.fixture(scope="module")
+def neat_script():
+    return esc.compile(NEAT["script"], NEAT["settings"])
+
+
+def test_the_script_names_its_neat_controllers(neat_script):
+    kinds = {name: c.is_graph for name, c in neat_script.controllers[NEAT["experiment"]].items()}
+    assert kinds == {"CC_8_2": False, "CC_8_20_2": False, "NEAT_8_2": True, "NEAT_SC": True}
+
+
+@pytest.mark.parametrize("controller", ["NEAT_8_2", "NEAT_SC"])
+def test_a_stored_best_graph_genome_scores_its_stored_fitness_exactly(neat_run, neat_script, controller):
+    run = esc.open(neat_run)
+    best = run.best(controller, 1)
+    genome = run.best_genome(controller, 1)
+    fitness = esc.evaluate(neat_script, NEAT["experiment"], controller, [genome], seed=best.evaluation_seed)
+    assert fitness[0] == best.fitness
+
+
+def test_graph_genomes_are_checked(neat_run, neat_script):
+    genome = esc.open(neat_run).best_genome("NEAT_8_2", 1)
+    with pytest.raises(ValueError, match="sequence of 1-D arrays"):
+        esc.evaluate(neat_script, NEAT["experiment"], "NEAT_8_2", genome[None, :])
+    with pytest.raises(ValueError, match="genome 1 is not a graph genome of controller `NEAT_8_2`"):
+        esc.evaluate(neat_script, NEAT["experiment"], "NEAT_8_2", [genome, np.array([1.0, 2.0, 3.0])])
+    # The classical head's genome has 2 outputs; the symbolic head's network has 6.
+    with pytest.raises(ValueError, match="outputs"):
+        esc.evaluate(neat_script, NEAT["experiment"], "NEAT_SC", [genome])
+
+
+def test_env_drives_a_neat_controllers_head_and_policy_refuses_it(neat_script):
+    env = esc.Env(neat_script, NEAT["experiment"], "NEAT_8_2", seed=4)
+    observation, info = env.reset()
+    assert observation.shape == (8,)
+    observation, reward, terminated, truncated, info = env.step(np.array([0.5, 0.5]))
+    assert info["step"] == 1
+    with pytest.raises(ValueError, match="NEAT network"):
+        env.policy(np.zeros(3))
