@@ -90,16 +90,13 @@ def _genome_rows(s: Script, experiment: str, controller: str, genomes):
     """The genomes as the module takes them, and how many there are (raising ValueError as
     esc.evaluate documents)."""
     c = s.controller(experiment, controller)
-    if c.is_tree:
-        if isinstance(genomes, str) or any(isinstance(g, str) for g in genomes):
-            raise ValueError(f"`{controller}` is a tree controller: give its trees encoded, as "
-                             "Run.best_genome(controller, run, encoded=True) returns them, not as text")
-        rows = [arguments.finite(f"genomes[{i}]", g).ravel() for i, g in enumerate(genomes)]
-        return rows, len(rows)
-    if c.is_graph:
-        if isinstance(genomes, np.ndarray) and genomes.ndim == 2:
-            raise ValueError(f"`{controller}` is a NEAT network: give its graph genomes as a sequence of 1-D arrays, "
-                             "as Run.best_genome(controller, run) returns them (their lengths differ)")
+    if c.is_tree and (isinstance(genomes, str) or any(isinstance(g, str) for g in genomes)):
+        raise ValueError(f"`{controller}` is a tree controller: give its trees encoded, as "
+                         "Run.best_genome(controller, run, encoded=True) returns them, not as text")
+    if c.is_graph and isinstance(genomes, np.ndarray) and genomes.ndim == 2:
+        raise ValueError(f"`{controller}` is a NEAT network: give its graph genomes as a sequence of 1-D arrays, "
+                         "as Run.best_genome(controller, run) returns them (their lengths differ)")
+    if c.is_tree or c.is_graph:   # encodings of varying length, one 1-D array each
         rows = [arguments.finite(f"genomes[{i}]", g).ravel() for i, g in enumerate(genomes)]
         return rows, len(rows)
     rows = arguments.finite("genomes", genomes)
