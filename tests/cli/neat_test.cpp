@@ -95,6 +95,27 @@ TEST(Neat, ANeatRunKilledMidRunResumesToTheUnbrokenRun) {
             esc("export " + killed.string() + " --table metrics").output);
 }
 
+TEST(Neat, ANeatRunScoredByNoveltyArchivesAndResumesToTheUnbrokenRun) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_neat_novelty.esc";
+  const fs::path reference = scratch("neat-novelty-reference");
+  const fs::path killed = scratch("neat-novelty-killed");
+  ASSERT_EQ(esc("run " + script + " --generations 100 --seed 5 --threads 1 --out " + reference.string()).status, 0);
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(script, killed, 40, 200, "2"));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 1");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_same_results(reference, killed, {"NC"}, 2);
+  const std::string metrics = esc("export " + reference.string() + " --table metrics").output;
+  EXPECT_EQ(metrics, esc("export " + killed.string() + " --table metrics").output);
+  // The archive grows, and holds the behaviors the run stored.
+  const std::vector<std::string> archive = column_where(metrics, 6, "archive", 7);
+  ASSERT_EQ(archive.size(), 200U);
+  EXPECT_LT(std::stod(archive.front()), std::stod(archive[99]));
+  const Outcome members = esc("export " + reference.string() + " --table archive");
+  ASSERT_EQ(members.status, 0) << members.output;
+  EXPECT_EQ(members.output, esc("export " + killed.string() + " --table archive").output);
+  EXPECT_GT(csv_rows(members.output).size(), 10U);
+}
+
 TEST(Neat, TheBestNetworkReplaysAndIsEvaluatedAndEvolvedOnFromStore) {
   const fs::path dir = scratch("neat-start-from");
   const std::string common = " --threads 2 --cache " + (dir / "cache").string();

@@ -1,9 +1,10 @@
 // libFuzzer target: the compiler's front end on any bytes. Whatever the input, compiling
 // must end with diagnostics or experiments, never a crash, a hang or a sanitizer report,
 // and what it accepts must be accepted by the runtime too: every compiled experiment's
-// ES, GP, robot and arena pass the algorithms' and the World's own checks, and its
-// resolved settings render. Run by ctest for a few seconds over experiments/ and
-// tests/bad/ (docs/install.md: how to run it longer).
+// robot and arena pass the World's own checks, each compared controller's algorithm (the
+// ES, GP, NEAT, ...) takes its settings and genome, and its resolved settings render. Run
+// by ctest for a few seconds over experiments/, examples/ and tests/bad/ (docs/install.md:
+// how to run it longer).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

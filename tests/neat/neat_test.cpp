@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <any>
 #include <cmath>
+#include <optional>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/evo/neat/neat.hpp"
@@ -276,6 +277,93 @@ TEST(NeatOptions, EveryRowChecksItsRangeAndNamesTheOption) {
   tanh_word.word = 1;
   EXPECT_EQ(act->set(s, tanh_word), "");
   EXPECT_EQ(act->text(s), "tanh");
+}
+
+// Descriptors in [0, 1] x [0, 1] from a network's structure and first weight, for scoring
+// by novelty.
+std::vector<Outcome> measure_behavior(const std::vector<Genome>& candidates, int generation) {
+  std::vector<Outcome> out = measure(candidates, generation);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    gg::Graph g;
+    EXPECT_EQ(gg::decode(candidates[i], g), "");
+    out[i].descriptors = {static_cast<double>(gg::enabled_links(g) % 10) / 10.0,
+                          0.5 + 0.5 * std::sin(g.links.front().weight)};
+  }
+  return out;
+}
+
+NeatSettings by_novelty() {
+  NeatSettings s = busy();
+  s.score = NeatScore::Novelty;
+  s.novelty_k = 5;
+  s.novelty_threshold = 0.05;
+  return s;
+}
+
+NeatProblem behaving(std::uint64_t seed) { return {3, 2, seed, nullptr, std::nullopt, {{0.0, 1.0}, {0.0, 1.0}}}; }
+
+TEST(Neat, ScoredByNoveltyArchivesBehaviorsAndResumesByteForByte) {
+  std::vector<std::vector<Genome>> whole;
+  const auto opt = make_neat(by_novelty(), behaving(4));
+  std::size_t archived = 0;
+  for (int g = 0; g < 25; ++g) {
+    whole.push_back(opt->ask(g));
+    opt->tell(measure_behavior(whole.back(), g));
+    const auto m = opt->metrics();
+    ASSERT_EQ(m.size(), 6U);
+    EXPECT_EQ(m[4].name, "archive");
+    EXPECT_GE(m[4].value, static_cast<double>(archived));
+    archived = static_cast<std::size_t>(m[4].value);
+    const std::optional<Members> changes = opt->members(true);
+    ASSERT_TRUE(changes.has_value());
+    EXPECT_EQ(changes->kind, MemberKind::Archive);
+    for (const Member& member : changes->members) EXPECT_EQ(member.descriptors.size(), 2U);
+  }
+  EXPECT_GT(archived, 0U);
+  EXPECT_EQ(opt->members(false)->members.size(), archived);
+  // Scored by novelty, another population than by the fitness from the same seed.
+  const auto by_fitness = make_neat(busy(), {3, 2, 4, nullptr});
+  for (int g = 0; g < 5; ++g) by_fitness->tell(measure_behavior(by_fitness->ask(g), g));
+  EXPECT_NE(by_fitness->ask(5), whole[5]);
+  for (const int stop : {0, 3, 12}) {
+    const auto first = make_neat(by_novelty(), behaving(4));
+    for (int g = 0; g <= stop; ++g) first->tell(measure_behavior(first->ask(g), g));
+    const StateBytes state = first->save();
+    const auto second = make_neat(by_novelty(), behaving(4));
+    second->load(state);
+    EXPECT_EQ(second->save(), state) << stop;
+    for (int g = stop + 1; g < 25; ++g) {
+      const std::vector<Genome> asked = second->ask(g);
+      ASSERT_EQ(asked, whole[static_cast<std::size_t>(g)]) << "stopped after " << stop << ", generation " << g;
+      second->tell(measure_behavior(asked, g));
+    }
+    // A state scored by the fitness is not one scored by novelty, nor the other way.
+    const auto plain = make_neat(busy(), {3, 2, 4, nullptr});
+    EXPECT_THROW(plain->load(state), std::invalid_argument);
+    EXPECT_THROW(second->load(plain->save()), std::invalid_argument);
+  }
+}
+
+TEST(Neat, NoveltyNeedsDescriptorsAndStartHiddenGrowsTheStart) {
+  Problem p;
+  p.graph = {3, 2, gg::Activation::NeatSigmoid};
+  EXPECT_NE(neat_run_problem(by_novelty(), p).find("declare some"), std::string::npos);
+  EXPECT_THROW((void)make_neat_run(by_novelty(), p), std::invalid_argument);
+  p.descriptors = {{0.0, 1.0}};
+  EXPECT_EQ(neat_run_problem(by_novelty(), p), "");
+  // novelty-search-cpp's mazestartgenes: every sensor feeds one hidden node, which feeds
+  // every output, and no sensor an output.
+  NeatSettings s;
+  s.start_hidden = 1;
+  const auto opt = make_neat(s, {10, 2, 3, nullptr});
+  gg::Graph g;
+  ASSERT_EQ(gg::decode(opt->ask(0)[7], g), "");
+  EXPECT_EQ(gg::count_nodes(g, gg::NodeKind::Hidden), 1U);
+  ASSERT_EQ(g.links.size(), 11U + 2U);
+  const gg::Id hidden = g.nodes.back().id;
+  for (std::size_t i = 0; i < 11; ++i) EXPECT_EQ(g.links[i].out, hidden);
+  for (std::size_t i = 11; i < 13; ++i) EXPECT_EQ(g.links[i].in, hidden);
+  EXPECT_EQ(gg::misfit(g), "");
 }
 
 TEST(NeatMemoryPeak, GrowsWithThePopulationAndNamesItsSetting) {

@@ -35,4 +35,10 @@ std::vector<double> DescriptorSpace::to_unit(std::span<const double> descriptor)
   return unit;
 }
 
+DescriptorSpace descriptor_space_of(std::span<const Bounds> descriptors) {
+  std::vector<Range> ranges;
+  for (const Bounds& b : descriptors) ranges.push_back({b.lower, b.upper});
+  return DescriptorSpace(std::move(ranges));
+}
+
 }  // namespace esc::evo::qd

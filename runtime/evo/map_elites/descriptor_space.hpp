@@ -13,6 +13,8 @@
 #include <span>
 #include <vector>
 
+#include "runtime/evo/optimizer.hpp"
+
 namespace esc::evo::qd {
 
 struct Range {
@@ -40,5 +42,8 @@ class DescriptorSpace {
  private:
   std::vector<Range> ranges_;
 };
+
+// The space of a problem's declared descriptors (throws as the constructor does).
+[[nodiscard]] DescriptorSpace descriptor_space_of(std::span<const Bounds> descriptors);
 
 }  // namespace esc::evo::qd

@@ -39,13 +39,12 @@ qd::Cvt shared_cvt(std::size_t dims, std::size_t cells, std::size_t samples) {
 }
 
 qd::Archive archive_for(const MapElitesRunSettings& s, const Problem& p) {
-  std::vector<qd::Range> ranges;
-  for (const Bounds& b : p.descriptors) ranges.push_back({b.lower, b.upper});
-  qd::Tessellation cells = s.cvt ? qd::Tessellation(shared_cvt(ranges.size(), static_cast<std::size_t>(s.cells),
+  qd::DescriptorSpace space = qd::descriptor_space_of(p.descriptors);
+  qd::Tessellation cells = s.cvt ? qd::Tessellation(shared_cvt(space.size(), static_cast<std::size_t>(s.cells),
                                                                static_cast<std::size_t>(s.samples)))
                                  : qd::Tessellation(qd::Grid(std::vector<std::size_t>(
-                                       ranges.size(), static_cast<std::size_t>(s.bins))));
-  return qd::Archive(qd::DescriptorSpace(std::move(ranges)), std::move(cells), p.objectives.front().lower);
+                                       space.size(), static_cast<std::size_t>(s.bins))));
+  return qd::Archive(std::move(space), std::move(cells), p.objectives.front().lower);
 }
 
 qd::MapElitesSettings core_settings(const MapElitesRunSettings& s) {

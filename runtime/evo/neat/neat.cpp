@@ -34,7 +34,9 @@ Neat::Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs
 gg::Coefficients Neat::coefficients() const { return {s_.excess_coeff, s_.disjoint_coeff, s_.weight_coeff}; }
 
 void Neat::start(const gg::Graph* start, Rng& init) {
-  gg::Graph first = start != nullptr ? *start : gg::minimal_graph(inputs_, outputs_, s_.activation);
+  gg::Graph first = start != nullptr ? *start
+                                     : gg::hidden_layer_graph(inputs_, outputs_,
+                                                              static_cast<std::size_t>(s_.start_hidden), s_.activation);
   if (start == nullptr)
     for (gg::NodeGene& n : first.nodes)
       if (n.kind == gg::NodeKind::Output) n.activation = output_activation_;

@@ -30,9 +30,10 @@ class Neat {
   Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs,
        std::optional<genome::graph::Activation> output_activation = std::nullopt);
 
-  // The first population: copies of `start` (or NEAT's minimal start) with every weight
-  // drawn from `init` in [-1, 1]; a given start stays unchanged as member 0 and its other
-  // copies have their weights mutated instead. Then speciated in order.
+  // The first population: copies of `start` (or NEAT's minimal start, with the settings'
+  // start_hidden hidden nodes) with every weight drawn from `init` in [-1, 1]; a given
+  // start stays unchanged as member 0 and its other copies have their weights mutated
+  // instead. Then speciated in order.
   void start(const genome::graph::Graph* start, Rng& init);
 
   // The fitness of every member, in population order (maximised, of any sign: see

@@ -3,7 +3,9 @@
 // Rng(seed, Init); generation g is bred from g - 1 with Rng(seed, Breed, g) alone. Each
 // candidate is a graph genome in its flat form (genome/graph/codec.hpp). Its metrics are
 // the species count, the mean hidden nodes and enabled links of the generation told, and
-// the compatibility threshold. NeatAlgorithm, below, is what the registry holds of it.
+// the compatibility threshold; scored by novelty, also the archive's size and threshold,
+// and its members are the archive's behaviors. NeatAlgorithm, below, is what the registry
+// holds of it.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -24,13 +26,15 @@ namespace esc::evo {
 // What one run of NEAT evolves: networks of `inputs` inputs and `outputs` outputs (a bias
 // is added), from `seed`; `start`, when not null, a graph genome every run begins from;
 // the minimal start's output nodes take `output_activation` when given (a controller's
-// head's), else the settings' activation.
+// head's), else the settings' activation; `descriptors`, the declared ranges of the
+// behavior descriptors that score novelty measures (NeatScore::Novelty).
 struct NeatProblem {
   std::size_t inputs = 0;
   std::size_t outputs = 0;
   std::uint64_t seed = 0;
   const Genome* start = nullptr;
   std::optional<genome::graph::Activation> output_activation = std::nullopt;
+  std::vector<Bounds> descriptors = {};
 };
 
 // Throws std::invalid_argument on impossible settings or a start that is not a graph genome

@@ -21,6 +21,7 @@ constexpr double kMaxThreshold = 1e6;
 constexpr int kMaxPopulation = 1000000;
 constexpr int kMaxCount = 1000000000;
 constexpr std::size_t kMaxPorts = 100000;   // inputs or outputs of one network
+constexpr int kMaxStartHidden = 1000;
 
 // A probability in [0, 1].
 template <double S::*Field>
@@ -47,6 +48,15 @@ std::string set_activation(std::any& s, const OptionValue& v) {
 
 std::string activation_text(const std::any& s) {
   return std::string(gg::activation_name(std::any_cast<const S&>(s).activation));
+}
+
+std::string set_score(std::any& s, const OptionValue& v) {
+  std::any_cast<S&>(s).score = static_cast<NeatScore>(v.word);
+  return {};
+}
+
+std::string score_text(const std::any& s) {
+  return std::any_cast<const S&>(s).score == NeatScore::Novelty ? "novelty" : "fitness";
 }
 
 }  // namespace
@@ -118,6 +128,30 @@ const std::vector<AlgorithmOption>& neat_options() {
        {"neat_sigmoid", "tanh", "sigmoid", "linear"},
        &set_activation,
        &activation_text},
+      {"start_hidden",
+       F::Number,
+       "hidden nodes of the start network between its sensors and outputs; 0: the minimal start",
+       {},
+       &whole<S, &S::start_hidden, 0, kMaxStartHidden>,
+       &whole_text<S, &S::start_hidden>},
+      {"score",
+       F::Word,
+       "what reproduction ranks: the fitness, or the novelty of the descriptors (Lehman & Stanley)",
+       {"fitness", "novelty"},
+       &set_score,
+       &score_text},
+      {"novelty_k",
+       F::Number,
+       "score novelty: nearest neighbours a novelty is the mean distance to",
+       {},
+       &whole<S, &S::novelty_k, 1, kMaxPopulation>,
+       &whole_text<S, &S::novelty_k>},
+      {"novelty_threshold",
+       F::Number,
+       "score novelty: initial novelty a network needs to enter the archive (descriptors scaled to [0, 1])",
+       {},
+       &real<S, &S::novelty_threshold, &kZero, true, &kMaxThreshold, false>,
+       &real_text<S, &S::novelty_threshold>},
   };
   return table;
 }

@@ -3,9 +3,18 @@
 // 2002, section 4.1 and the appendix) and, where the paper is silent, of NEAT C++'s
 // parameter file for it, test.ne (pop_size 150 ...). docs/neat.md lists each default's
 // source. The names follow NEAT C++'s parameter files.
+#include <cstdint>
+
+#include "runtime/evo/novelty/novelty_archive.hpp"
 #include "runtime/genome/graph/graph.hpp"
 
 namespace esc::evo {
+
+// What NEAT's reproduction ranks networks by: the fitness (the paper), or their novelty,
+// as Lehman & Stanley (2011) ran NEAT: the mean distance from a network's descriptors to
+// its k nearest among its generation and an archive of past novel ones
+// (novelty/novelty_archive.hpp, the archive by the authors' adapted threshold).
+enum class NeatScore : std::uint8_t { Fitness, Novelty };
 
 struct NeatSettings {
   int population = 150;                 // paper; test.ne pop_size
@@ -36,6 +45,13 @@ struct NeatSettings {
   int newlink_tries = 20;               // test.ne
   double new_link_weight = 10.0;        // NEAT C++ genome.cpp: a new link's weight in [-10, 10]
   genome::graph::Activation activation = genome::graph::Activation::NeatSigmoid;   // network.cpp
+  // Hidden nodes of the start genome, each fed by every sensor and feeding every output
+  // (no sensor-to-output links then); 0: the paper's minimal start. The authors' maze runs
+  // start from one (novelty-search-cpp's mazestartgenes).
+  int start_hidden = 0;
+  NeatScore score = NeatScore::Fitness;
+  int novelty_k = static_cast<int>(qd::NoveltySettings{}.k);
+  double novelty_threshold = qd::NoveltySettings{}.threshold;   // descriptors scaled to [0, 1]
 };
 
 // A whole population's standstill that halves it between its two best species (NEAT C++

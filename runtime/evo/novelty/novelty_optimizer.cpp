@@ -29,12 +29,6 @@ qd::NoveltySettings archive_settings(const NoveltyRunSettings& s) {
   return a;
 }
 
-qd::DescriptorSpace space_of(const Problem& p) {
-  std::vector<qd::Range> ranges;
-  for (const Bounds& b : p.descriptors) ranges.push_back({b.lower, b.upper});
-  return qd::DescriptorSpace(std::move(ranges));
-}
-
 // 2: each parent's origin (Measured) follows the parents.
 constexpr std::uint32_t kVersion = 2;
 
@@ -42,7 +36,7 @@ class NoveltyOptimizer final : public Optimizer {
  public:
   NoveltyOptimizer(const NoveltyRunSettings& settings, const Problem& problem)
       : core_(nsga2_core(variation_of(settings), problem)),
-        archive_(archive_settings(settings), space_of(problem)),
+        archive_(archive_settings(settings), qd::descriptor_space_of(problem.descriptors)),
         seed_(problem.seed),
         with_fitness_(settings.with_fitness) {
     start_core(core_, problem);
@@ -193,7 +187,7 @@ std::string novelty_problem(const NoveltyRunSettings& settings, const Problem& p
     return "novelty is measured between behavior descriptors: declare some (`descriptor NAME: EXPR in [lo, hi]`)";
   try {
     check_nsga2_settings(variation_of(settings));
-    (void)qd::NoveltyArchive(archive_settings(settings), space_of(problem));
+    (void)qd::NoveltyArchive(archive_settings(settings), qd::descriptor_space_of(problem.descriptors));
   } catch (const std::invalid_argument& e) {
     return e.what();
   }

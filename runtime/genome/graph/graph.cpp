@@ -43,6 +43,24 @@ Graph minimal_graph(std::size_t inputs, std::size_t outputs, Activation activati
   return g;
 }
 
+Graph hidden_layer_graph(std::size_t inputs, std::size_t outputs, std::size_t hidden, Activation activation) {
+  if (hidden == 0) return minimal_graph(inputs, outputs, activation);
+  Graph g;
+  Id id = 1;
+  for (std::size_t i = 0; i < inputs; ++i) g.nodes.push_back({id++, NodeKind::Input, activation});
+  g.nodes.push_back({id++, NodeKind::Bias, activation});
+  const Id first_output = id;
+  for (std::size_t o = 0; o < outputs; ++o) g.nodes.push_back({id++, NodeKind::Output, activation});
+  const Id first_hidden = id;
+  for (std::size_t h = 0; h < hidden; ++h) g.nodes.push_back({id++, NodeKind::Hidden, activation});
+  Id innovation = 1;
+  for (Id h = first_hidden; h < first_hidden + static_cast<Id>(hidden); ++h)
+    for (Id s = 1; s < first_output; ++s) g.links.push_back({s, h, 0.0, true, innovation++});
+  for (Id h = first_hidden; h < first_hidden + static_cast<Id>(hidden); ++h)
+    for (Id o = first_output; o < first_hidden; ++o) g.links.push_back({h, o, 0.0, true, innovation++});
+  return g;
+}
+
 namespace {
 
 bool is_sensor(NodeKind k) { return k == NodeKind::Input || k == NodeKind::Bias; }

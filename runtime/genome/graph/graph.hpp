@@ -51,6 +51,13 @@ struct Graph {
 // 1, 2, ... output by output (the optimizer draws the weights).
 [[nodiscard]] Graph minimal_graph(std::size_t inputs, std::size_t outputs, Activation activation);
 
+// The same sensors and outputs with `hidden` hidden nodes between them (ids after the
+// outputs'): a link from every sensor to each hidden node, then from each hidden node to
+// every output, weight 0, numbered in that order; no sensor-to-output link. `hidden` 0 is
+// minimal_graph.
+[[nodiscard]] Graph hidden_layer_graph(std::size_t inputs, std::size_t outputs, std::size_t hidden,
+                                       Activation activation);
+
 // What is wrong with `g`, in one sentence, or "": nodes out of order or repeated, a sensor
 // after another node, not exactly one bias, no output, a link at an unknown node, into a
 // sensor, repeated (same innovation, or same two nodes), out of order, or with a weight
