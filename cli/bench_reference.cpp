@@ -9,10 +9,13 @@
 
 #include <fmt/format.h>
 
+#include "bench/neat_cost.hpp"
 #include "bench/plain_workloads.hpp"
 #include "bench/reference.hpp"
 #include "cli/bench.hpp"
 #include "cli/bench_paper.hpp"
+#include "cli/library_path.hpp"
+#include "cli/load.hpp"
 #include "compiler/names.hpp"
 
 namespace esc::cli {
@@ -21,6 +24,8 @@ namespace {
 
 constexpr std::size_t kGenomes = 16;
 constexpr int kRounds = 10;
+// NEAT's cost over a run's first generations: its networks have begun to grow.
+constexpr int kNeatGenerations = 20;
 
 template <class Plain>
 bench::StepLoop plain_loop(std::shared_ptr<Plain> plain, const std::vector<std::vector<double>>& genomes) {
@@ -63,6 +68,36 @@ void print_fraction(const std::string& label, const bench::Fraction& f) {
              f.lowest, f.highest);
 }
 
+// NEAT's own work beside the evaluations it serves, on the shipped NEAT maze experiment.
+int print_neat_cost() {
+  const std::filesystem::path script = standard_library_dir() / "lehman_stanley" / "mazes.esc";
+  const compiler::CompileResult mazes = load_script(script);
+  if (!mazes.ok()) return kExitBadInput;
+  for (const eval::ExperimentSpec& x : mazes.experiments) {
+    if (x.name != "medium_neat") continue;
+    for (const control::ControllerSpec& c : x.controllers) {
+      if (!c.is_graph()) continue;
+      const bench::NeatCost cost = bench::measure_neat_cost(x, c, kNeatGenerations);
+      const double per = 1000.0 / cost.generations;
+      fmt::print("NEAT beside its evaluations ({} of {}: {} evaluations a generation, its first {} generations, "
+                 "one core, thread CPU time):\n\n",
+                 x.name, script.filename().string(), cost.evaluations / cost.generations, cost.generations);
+      fmt::print("{:<52} {:>12.2f} ms a generation\n", "NEAT: breeding, speciation, scores (ask, tell)",
+                 per * cost.neat_s);
+      fmt::print("{:<52} {:>12.2f} ms a generation\n", "building each candidate's network", per * cost.build_s);
+      fmt::print("{:<52} {:>12.2f} ms a generation\n", "evaluating them (simulation, network, fitness)",
+                 per * cost.evaluate_s);
+      fmt::print("{:<52} {:>12.2f}%   (networks of {:.2f} hidden nodes, {:.1f} links at the end)\n\n",
+                 "NEAT and the building, of the evaluations' time", 100.0 * cost.fraction(), cost.hidden_nodes,
+                 cost.enabled_links);
+      return kExitOk;
+    }
+  }
+  fmt::print(stderr, "esc: error: {} has no experiment `medium_neat` with a `neat(...)` controller to time\n",
+             script.string());
+  return kExitBadInput;
+}
+
 }  // namespace
 
 int bench_reference(const BenchOptions& o) {
@@ -84,7 +119,7 @@ int bench_reference(const BenchOptions& o) {
   print_fraction("contact-heavy stepping / free-space stepping",
                  bench::interleave(loops.by_name.at("pressed"), loops.by_name.at("free"), seconds, kRounds));
   fmt::print("\n");
-  return kExitOk;
+  return print_neat_cost();
 }
 
 int bench_profile(const BenchOptions& o) {

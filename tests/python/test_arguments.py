@@ -119,7 +119,7 @@ def test_experiment_none_is_the_scripts_one_experiment(homing_script):
     assert esc.Env(homing_script, controller="SC").experiment == "homing"
     assert homing_script.controller(None, "SC").genome_size == 151
     mazes = esc.compile(EXPERIMENTS / "lehman_stanley" / "mazes.esc")
-    with pytest.raises(ValueError, match=r"experiment=None: .*mazes.esc declares 2 experiments \(`medium`, `hard`\)"):
+    with pytest.raises(ValueError, match=r"experiment=None: .*mazes.esc declares 4 experiments \(`medium`, `hard`, `medium_neat`, `hard_neat`\)"):
         esc.Env(mazes)
     with pytest.raises(TypeError, match="experiment=3"):
         esc.evaluate(homing_script, 3, "SC", genomes)
