@@ -21,6 +21,7 @@ from esc._esc import __version__
 from esc.env import Box, Env, Policy
 from esc.errors import Diagnostic, Error, ScriptError, ScriptWarning
 from esc.evaluation import evaluate, evaluation_seed, measure, run_seed
+from esc.network import Network
 from esc.results import BestEvaluation, Member, Run, open
 from esc.running import Generation, resume, run
 from esc.script import Controller, Script, compile
@@ -29,7 +30,7 @@ __all__ = [
     "__version__",
     "Box", "Env", "Policy",
     "Diagnostic", "Error", "ScriptError", "ScriptWarning",
-    "evaluate", "evaluation_seed", "measure", "run_seed",
+    "evaluate", "evaluation_seed", "measure", "run_seed", "Network",
     "BestEvaluation", "Member", "Run", "open",
     "Generation", "resume", "run",
     "Controller", "Script", "compile",

@@ -8,6 +8,7 @@ import numpy as np
 
 from esc import _arguments as arguments
 from esc import _esc
+from esc.network import Network
 from esc.script import PathOrSource, Script, as_script
 
 Seeds = Union[int, Sequence[int], np.ndarray]
@@ -36,8 +37,9 @@ def evaluate(script: Union[Script, PathOrSource], experiment: Optional[str], con
     `genomes` is, for a network controller, a 2-D float array with one genome (all the
     network's weights, Controller.genome_size of them) per row; for a tree controller, a
     sequence of encoded trees (1-D float arrays, as Run.best_genome(..., encoded=True) gives
-    them); for a NEAT network (Controller.is_graph), a sequence of graph genomes in their flat
-    form (1-D float arrays, as Run.best_genome(controller, run) gives them; docs/neat.md).
+    them); for a NEAT network (Controller.is_graph), a sequence of graph genomes, each an
+    esc.Network (as Run.best_genome(controller, run) gives it) or its flat form (a 1-D float
+    array, Network.encoded(); docs/neat.md).
     `experiment` None names the script's one experiment (ValueError when it declares
     several). `epochs` replaces the experiment's number of epochs (as --set epochs=N does).
 
@@ -96,6 +98,10 @@ def _genome_rows(s: Script, experiment: str, controller: str, genomes):
     if c.is_graph and isinstance(genomes, np.ndarray) and genomes.ndim == 2:
         raise ValueError(f"`{controller}` is a NEAT network: give its graph genomes as a sequence of 1-D arrays, "
                          "as Run.best_genome(controller, run) returns them (their lengths differ)")
+    if c.is_graph and isinstance(genomes, Network):
+        raise ValueError(f"`{controller}` is a NEAT network: give a sequence of genomes ([network] for one)")
+    if c.is_graph:   # a Network's flat form, or one already flat
+        genomes = [g.encoded() if isinstance(g, Network) else g for g in genomes]
     if c.is_tree or c.is_graph:   # encodings of varying length, one 1-D array each
         rows = [arguments.finite(f"genomes[{i}]", g).ravel() for i, g in enumerate(genomes)]
         return rows, len(rows)

@@ -13,6 +13,7 @@ from esc import _arguments as arguments
 from esc import _esc
 from esc._library import standard_library
 from esc.errors import Error
+from esc.network import Network
 
 
 @dataclass(frozen=True)
@@ -140,13 +141,18 @@ class Run:
         return [Member(**d) for d in found]
 
     def best_genome(self, controller: str, run: int, condition: Optional[str] = None,
-                    encoded: bool = False) -> Union[np.ndarray, str]:
+                    encoded: bool = False) -> Union[np.ndarray, str, Network]:
         """The best genome of finished run `run` (from 1) of `controller`: a network's
         weights as a float64 array; a tree's text as script code, or with encoded=True the
-        encoded tree (a float64 array) that esc.evaluate takes; a NEAT network's graph genome
-        in its flat form (a float64 array, docs/neat.md), which esc.evaluate takes too."""
-        best = self.best(controller, run, condition)
-        return best.tree if best.tree is not None and not encoded else best.genome
+        encoded tree (a float64 array) that esc.evaluate takes; a NEAT network's nodes and
+        links (esc.Network), or with encoded=True its flat form (a float64 array, docs/neat.md).
+        esc.evaluate takes a Network and a flat form alike."""
+        d = self._stored.best(controller, self._run(run, condition), condition or "")
+        if encoded:
+            return d["genome"]
+        if d["tree"] is not None:
+            return d["tree"]
+        return Network.decode(d["genome"]) if d["graph"] else d["genome"]
 
     def _run(self, run: int, condition: Optional[str]) -> int:
         """`run` checked against the runs the directory's experiment (or `condition`) has."""

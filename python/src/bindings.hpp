@@ -14,5 +14,6 @@ void bind_evaluate(pybind11::module_& m);   // evaluate.cpp: fitness of genomes
 void bind_env(pybind11::module_& m);        // env.cpp: one epoch step by step
 void bind_policy(pybind11::module_& m);     // policy.cpp: a genome's network as Env's policy
 void bind_run(pybind11::module_& m);        // run.cpp: running and resuming experiments and studies
+void bind_graph(pybind11::module_& m);      // graph.cpp: a NEAT network's genome as arrays and back
 
 }  // namespace esc::python

@@ -12,4 +12,5 @@ PYBIND11_MODULE(_esc, m) {
   esc::python::bind_env(m);
   esc::python::bind_policy(m);
   esc::python::bind_run(m);
+  esc::python::bind_graph(m);
 }

@@ -17,6 +17,7 @@
 #include "app/stored_run.hpp"
 #include "compiler/names.hpp"
 #include "python/src/bindings.hpp"
+#include "runtime/control/graph_architecture.hpp"
 
 namespace esc::python {
 
@@ -129,6 +130,7 @@ class StoredRun {
     d["evaluation_seed"] = eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index));
     d["genome"] = py::array_t<double>(static_cast<py::ssize_t>(r->best_genome.size()), r->best_genome.data());
     d["tree"] = c.head == "tree" ? py::object(py::str(r->best_tree)) : py::object(py::none());
+    d["graph"] = c.architecture.find(control::kGraphArchitectureMark) != std::string::npos;
     return d;
   }
 

@@ -31,13 +31,39 @@ def test_the_script_names_its_neat_controllers(neat_script):
 def test_a_stored_best_graph_genome_scores_its_stored_fitness_exactly(neat_run, neat_script, controller):
     run = esc.open(neat_run)
     best = run.best(controller, 1)
-    genome = run.best_genome(controller, 1)
-    fitness = esc.evaluate(neat_script, NEAT["experiment"], controller, [genome], seed=best.evaluation_seed)
-    assert fitness[0] == best.fitness
+    network = run.best_genome(controller, 1)
+    flat = run.best_genome(controller, 1, encoded=True)
+    for genome in (network, flat):
+        fitness = esc.evaluate(neat_script, NEAT["experiment"], controller, [genome], seed=best.evaluation_seed)
+        assert fitness[0] == best.fitness
+
+
+def test_best_genome_of_a_neat_network_is_its_nodes_and_links(neat_run):
+    run = esc.open(neat_run)
+    network = run.best_genome("NEAT_8_2", 1)
+    assert isinstance(network, esc.Network)
+    assert list(network.nodes.columns) == ["id", "kind", "activation"]
+    assert list(network.links.columns) == ["in", "out", "weight", "enabled", "innovation"]
+    kinds = network.nodes["kind"].value_counts().to_dict()
+    assert kinds["input"] == 8 and kinds["bias"] == 1 and kinds["output"] == 2
+    assert network.nodes.loc[network.nodes["kind"] == "output", "activation"].tolist() == ["tanh", "tanh"]
+    assert network.links["innovation"].is_monotonic_increasing
+    # Tables and flat form agree both ways, bit for bit.
+    flat = run.best_genome("NEAT_8_2", 1, encoded=True)
+    assert np.array_equal(network.encoded(), flat)
+    assert np.array_equal(esc.Network.decode(flat).encoded(), flat)
+    # The export's topology table holds the same links.
+    assert network.enabled_links == int(network.links["enabled"].sum())
+    # Tables that are no graph genome are refused in the codec's words.
+    broken = esc.Network(network.nodes, network.links.assign(out=network.links["out"] + 1000))
+    with pytest.raises(ValueError, match="not a graph genome"):
+        broken.encoded()
+    with pytest.raises(ValueError, match="not a graph genome"):
+        esc.Network.decode(np.array([1.0, 2.0, 3.0]))
 
 
 def test_graph_genomes_are_checked(neat_run, neat_script):
-    genome = esc.open(neat_run).best_genome("NEAT_8_2", 1)
+    genome = esc.open(neat_run).best_genome("NEAT_8_2", 1, encoded=True)
     with pytest.raises(ValueError, match="sequence of 1-D arrays"):
         esc.evaluate(neat_script, NEAT["experiment"], "NEAT_8_2", genome[None, :])
     with pytest.raises(ValueError, match="genome 1 is not a graph genome of controller `NEAT_8_2`"):
@@ -45,6 +71,8 @@ def test_graph_genomes_are_checked(neat_run, neat_script):
     # The classical head's genome has 2 outputs; the symbolic head's network has 6.
     with pytest.raises(ValueError, match="outputs"):
         esc.evaluate(neat_script, NEAT["experiment"], "NEAT_SC", [genome])
+    with pytest.raises(ValueError, match=r"\[network\] for one"):
+        esc.evaluate(neat_script, NEAT["experiment"], "NEAT_8_2", esc.Network.decode(genome))
 
 
 def test_env_drives_a_neat_controllers_head_and_policy_refuses_it(neat_script):
