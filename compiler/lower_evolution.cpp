@@ -46,11 +46,14 @@ genome::GenomeKind genome_kind(const control::ControllerSpec& c) noexcept {
   return c.is_tree() ? genome::GenomeKind::Tree : c.is_graph() ? genome::GenomeKind::Graph : genome::GenomeKind::Vector;
 }
 
+// Whether `name` evolves a compared controller, or (NEAT) gives the operators that vary a
+// NEAT network another algorithm selects, as `evolve gp` does for trees.
 bool in_use(const X& x, std::string_view name) {
   if (x.evaluates_only()) return false;
   for (const control::ControllerSpec& c : x.controllers) {
     const evo::Algorithm* a = x.evolution_of(c).algorithm;
     if (a != nullptr && a->name == name) return true;
+    if (c.is_graph() && name == X::kNeat) return true;
   }
   return false;
 }

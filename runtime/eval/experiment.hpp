@@ -17,6 +17,7 @@
 #include "runtime/control/graph_net.hpp"
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/gp/gp.hpp"
+#include "runtime/evo/neat/neat_settings.hpp"
 #include "runtime/evo/registry.hpp"
 #include "runtime/expr/observables.hpp"
 #include "runtime/expr/program.hpp"
@@ -294,9 +295,13 @@ struct ExperimentSpec {
     evo::Problem p;
     p.genome_size = c.genome_size();
     p.tree.primitives = c.primitives.get();
-    if (c.is_graph())
+    if (c.is_graph()) {
+      const auto neat = algorithm_settings.find(kNeat);
       p.graph = {c.mlp.inputs.size(), static_cast<std::size_t>(c.output_count()),
-                 control::graph_activation(control::output_activation(c.head))};
+                 control::graph_activation(control::output_activation(c.head)),
+                 evo::graph_operators(neat != algorithm_settings.end() ? std::any_cast<const evo::NeatSettings&>(neat->second)
+                                                                       : evo::NeatSettings{})};
+    }
     if (c.is_tree() && gp) p.tree.operators = &*gp;
     p.objectives.assign(1 + further.size(), evo::Bounds{-inf, inf});
     for (std::size_t i = 0; i < objectives.size() && i < p.objectives.size(); ++i) {

@@ -116,6 +116,40 @@ TEST(Neat, ANeatRunScoredByNoveltyArchivesAndResumesToTheUnbrokenRun) {
   EXPECT_GT(csv_rows(members.output).size(), 10U);
 }
 
+// NEAT networks under NSGA-II (two objectives), novelty search and MAP-Elites, varied by
+// NEAT's operators: each improves or grows, its front or archive holds graph genomes (each
+// run's best drawn and exported as a network), and a run killed mid-run resumes to the
+// unbroken one, fronts and archives included.
+TEST(Neat, NeatNetworksUnderEverySelectionResumeToTheUnbrokenRun) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_neat_selections.esc";
+  const std::vector<std::string> controllers = {"NC", "NC_nsga2", "NC_novelty", "NC_me"};
+  const fs::path reference = scratch("neat-selections-reference");
+  const fs::path killed = scratch("neat-selections-killed");
+  const Outcome whole = esc("run " + script + " --generations 100 --seed 5 --threads 1 --out " + reference.string());
+  ASSERT_EQ(whole.status, 0) << whole.output;
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(script, killed, 100, 800, "2"));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 1");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_same_results(reference, killed, controllers, 2);
+  for (const std::string table : {"front", "archive", "metrics", "topology"})
+    EXPECT_EQ(esc("export " + reference.string() + " --table " + table).output,
+              esc("export " + killed.string() + " --table " + table).output)
+        << table;
+  // Every controller's best network has grown hidden nodes in some run, whatever selected it.
+  const std::string topology = esc("export " + reference.string() + " --table topology").output;
+  for (const std::string& c : controllers) {
+    int hidden = 0;
+    for (const auto& r : csv_rows(topology))
+      if (r.size() == 12 && r[2] == c && r[6] == "hidden") ++hidden;
+    EXPECT_GT(hidden, 0) << c;
+  }
+  // NSGA-II's fronts (both objectives) and MAP-Elites' archive hold measured members.
+  EXPECT_GT(column_where(esc("export " + reference.string() + " --table front").output, 2, "NC_nsga2", 7).size(), 10u);
+  EXPECT_GT(column_where(esc("export " + reference.string() + " --table archive").output, 2, "NC_me", 6).size(), 10u);
+  ASSERT_EQ(esc("report " + reference.string()).status, 0);
+  EXPECT_TRUE(fs::exists(reference / "figures" / "selections-network-NC_me-run-02.svg"));
+}
+
 TEST(Neat, TheBestNetworkReplaysAndIsEvaluatedAndEvolvedOnFromStore) {
   const fs::path dir = scratch("neat-start-from");
   const std::string common = " --threads 2 --cache " + (dir / "cache").string();

@@ -67,5 +67,27 @@ TEST(NeatSyntax, ANeatNetworkWithoutEvolveNeatRunsWithNeatsDefaults) {
   EXPECT_EQ(x.evaluations_per_generation(x.controllers[0]), 150u);
 }
 
+// NSGA-II, novelty search and MAP-Elites take NEAT networks; `evolve neat(...)` then gives
+// the operators that vary them, as `evolve gp(...)` does for trees; CMA-ES does not take them.
+TEST(NeatSyntax, OtherSelectionsEvolveNeatNetworksWithNeatsOperators) {
+  const auto x = compiled("experiment e { arena a  fitness f  descriptor d: speed in [0, 1]  "
+                          "evolve neat(add_node_prob 0.4, start_hidden 2) for 5 generations  evolve nsga2(population 10)  "
+                          "compare n by nsga2, n by novelty as n2, n by map_elites as n3 }");
+  ASSERT_EQ(x.controllers.size(), 3u);
+  EXPECT_EQ(algorithm_of(x, 0), "nsga2");
+  EXPECT_EQ(algorithm_of(x, 1), "novelty");
+  EXPECT_EQ(algorithm_of(x, 2), "map_elites");
+  for (const auto& c : x.controllers) {
+    const evo::Problem p = x.problem_of(c);
+    EXPECT_EQ(p.kind(), genome::GenomeKind::Graph);
+    EXPECT_DOUBLE_EQ(p.graph.operators.add_node_prob, 0.4);
+    EXPECT_EQ(p.graph.operators.start_hidden, 2);
+    EXPECT_EQ(x.generations_for(c), 5);
+  }
+  // Without `evolve neat`, NEAT's defaults vary them.
+  const auto d = compiled("experiment e { arena a  fitness f  evolve nsga2(population 10)  compare n by nsga2 }");
+  EXPECT_EQ(d.problem_of(d.controllers[0]).graph.operators, evo::graph_operators(evo::NeatSettings{}));
+}
+
 }  // namespace
 }  // namespace esc::compiler

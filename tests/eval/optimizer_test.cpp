@@ -66,8 +66,9 @@ std::vector<Case> cases() {
       declare_objectives(x);
       x.controllers[0].mlp.kind = control::NetworkKind::Graph;
       x.controllers[0].mlp.hidden.clear();
+      x.controllers[0].evolved_by = name;
       x.algorithm_settings[name] = a.defaults();
-      v.push_back({name, name, std::move(x), 0});
+      v.push_back({a.kinds.has(genome::GenomeKind::Vector) ? name + " (graphs)" : name, name, std::move(x), 0});
     }
     if (!a.kinds.has(genome::GenomeKind::Vector)) continue;
     ExperimentSpec x = testing::small_experiment();
@@ -230,8 +231,8 @@ TEST(Registry, NamesEachAlgorithmOnceWithWhatItEvolves) {
   EXPECT_EQ(evo::find_algorithm("cmaes")->kinds, genome::GenomeKinds{Vector});
   ASSERT_NE(evo::find_algorithm("gp"), nullptr);
   EXPECT_EQ(evo::find_algorithm("gp")->kinds, genome::GenomeKinds{Tree});
-  for (const char* both : {"nsga2", "novelty", "map_elites", "cvt_map_elites"})
-    EXPECT_EQ(evo::find_algorithm(both)->kinds, (genome::GenomeKinds{Vector, Tree})) << both;
+  for (const char* all_three : {"nsga2", "novelty", "map_elites", "cvt_map_elites"})
+    EXPECT_EQ(evo::find_algorithm(all_three)->kinds, (genome::GenomeKinds{Vector, Tree, Graph})) << all_three;
   ASSERT_NE(evo::find_algorithm("neat"), nullptr);
   EXPECT_EQ(evo::find_algorithm("neat")->kinds, genome::GenomeKinds{Graph});
   EXPECT_EQ(evo::find_algorithm("nsga3"), nullptr);

@@ -31,10 +31,10 @@ TEST(Registry, FindsEveryAlgorithmByItsNameWithTheKindsItDeclares) {
       {"es", {Vector}},
       {"gp", {Tree}},
       {"cmaes", {Vector}},
-      {"nsga2", {Vector, Tree}},
-      {"map_elites", {Vector, Tree}},
-      {"cvt_map_elites", {Vector, Tree}},
-      {"novelty", {Vector, Tree}},
+      {"nsga2", {Vector, Tree, Graph}},
+      {"map_elites", {Vector, Tree, Graph}},
+      {"cvt_map_elites", {Vector, Tree, Graph}},
+      {"novelty", {Vector, Tree, Graph}},
       {"neat", {Graph}},
   };
   ASSERT_EQ(algorithms().size(), expected.size());

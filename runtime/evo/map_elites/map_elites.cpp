@@ -66,6 +66,7 @@ std::vector<Genome> MapElites::ask(Rng& rng) {
     out = g_.representation->first(s_.initial, rng);
   } else {
     out.reserve(s_.batch);
+    if (g_.begin) g_.begin(archive_);
     while (out.size() < s_.batch) out.push_back(g_.child(archive_, rng));
   }
   if (!first_.empty()) {

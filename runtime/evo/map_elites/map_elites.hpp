@@ -7,9 +7,11 @@
 // the archive is still empty (every candidate so far rejected) a generation is `initial`
 // uniform genomes again.
 //
-// Over trees (MapElitesGenomes from gp/tree_variation.hpp) the first generation is
+// Over trees (MapElitesGenomes from genome/tree/tree_variation.hpp) the first generation is
 // `initial` trees by ramped half-and-half and every child one elite drawn uniformly, then
-// one of the GP's mutations; sigma_iso, sigma_line and the box are not used.
+// one of the GP's mutations; over NEAT networks (genome/graph/graph_variation.hpp), copies
+// of NEAT's start, then NEAT's mutation of one elite; sigma_iso, sigma_line and the box are
+// not used.
 //
 // Every random draw comes from the Rng given to ask(), in a fixed order: uniform genomes
 // coordinate by coordinate; or per child, the two parents' draws, then Iso+LineDD's. A caller
@@ -55,6 +57,9 @@ struct MapElitesSettings {
 struct MapElitesGenomes {
   std::shared_ptr<const genome::Representation> representation;
   std::function<Genome(const Archive&, Rng&)> child;
+  // When set, shown the archive before a generation's children are bred from it (graph
+  // genomes number their new structure past the elites': graph_variation.hpp).
+  std::function<void(const Archive&)> begin = {};
 };
 
 class MapElites {

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/genome/graph/graph_variation.hpp"
 #include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/map_elites/selection.hpp"
 #include "runtime/evo/measured_state.hpp"
@@ -58,8 +59,24 @@ qd::MapElitesSettings core_settings(const MapElitesRunSettings& s) {
   return c;
 }
 
-// Over trees: one elite drawn uniformly, then one of the GP's mutations.
+// Over trees: one elite drawn uniformly, then one of the GP's mutations; over graphs, NEAT's
+// mutation, the new structure numbered past the archive's.
 qd::MapElites core_for(const MapElitesRunSettings& s, const Problem& p) {
+  if (p.graph.graphs()) {
+    auto graphs = std::make_shared<genome::graph::GraphVariation>(p.graph.operators, p.graph);
+    qd::MapElitesGenomes genomes{graphs,
+                                 [graphs](const qd::Archive& archive, Rng& rng) {
+                                   return graphs->mutate_one(qd::select_uniform(archive, rng).genome, rng);
+                                 },
+                                 [graphs](const qd::Archive& archive) {
+                                   std::vector<Genome> elites;
+                                   elites.reserve(archive.filled());
+                                   for (const std::size_t cell : archive.filled_cells())
+                                     elites.push_back(archive.elite(cell)->genome);
+                                   graphs->begin(elites);
+                                 }};
+    return {core_settings(s), std::move(genomes), archive_for(s, p)};
+  }
   if (p.tree.primitives == nullptr) return {core_settings(s), p.genome_size, archive_for(s, p)};
   auto trees = std::make_shared<const genome::tree::TreeVariation>(*p.tree.operators, *p.tree.primitives);
   qd::MapElitesGenomes genomes{trees, [trees](const qd::Archive& archive, Rng& rng) {

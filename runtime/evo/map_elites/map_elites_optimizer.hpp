@@ -64,7 +64,7 @@ struct MapElitesAlgorithm {
   std::string_view name = "map_elites";
   std::string_view what = "MAP-Elites";
   bool cvt = false;   // its archive: a grid, or a CVT's cells
-  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree};
+  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree, genome::GenomeKind::Graph};
   std::uint32_t state_format = 1;
 
   // CVT-MAP-Elites.

@@ -26,6 +26,7 @@ Neat::Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs
       inputs_(inputs),
       outputs_(outputs),
       output_activation_(output_activation.value_or(settings.activation)),
+      ops_(graph_operators(settings)),
       threshold_(settings.threshold) {
   if (const std::string why = neat_problem(settings, inputs, outputs); !why.empty())
     throw std::invalid_argument("NEAT: " + why);
@@ -34,16 +35,11 @@ Neat::Neat(const NeatSettings& settings, std::size_t inputs, std::size_t outputs
 gg::Coefficients Neat::coefficients() const { return {s_.excess_coeff, s_.disjoint_coeff, s_.weight_coeff}; }
 
 void Neat::start(const gg::Graph* start, Rng& init) {
-  gg::Graph first = start != nullptr ? *start
-                                     : gg::hidden_layer_graph(inputs_, outputs_,
-                                                              static_cast<std::size_t>(s_.start_hidden), s_.activation);
-  if (start == nullptr)
-    for (gg::NodeGene& n : first.nodes)
-      if (n.kind == gg::NodeKind::Output) n.activation = output_activation_;
+  const gg::Graph first = start != nullptr ? *start : gg::start_graph(ops_, inputs_, outputs_, output_activation_);
   population_.assign(static_cast<std::size_t>(s_.population), first);
   for (std::size_t i = 0; i < population_.size(); ++i) {
     if (start == nullptr) {
-      gg::replace_weights(population_[i], kStartWeight, init);
+      gg::replace_weights(population_[i], gg::kStartWeight, init);
     } else if (i > 0) {
       gg::mutate_weights(population_[i], s_.weight_mut_power, init);
     }
@@ -76,18 +72,6 @@ void Neat::tell(std::span<const double> fitness) {
   if (!std::isfinite(low)) low = 0.0;
   fitness_.resize(fitness.size());
   for (std::size_t i = 0; i < fitness.size(); ++i) fitness_[i] = std::isfinite(fitness[i]) ? fitness[i] : low;
-}
-
-void Neat::mutate(gg::Graph& g, gg::InnovationRecord& record, Rng& rng) const {
-  if (rng.uniform() < s_.add_node_prob) {
-    (void)gg::add_node(g, record, s_.activation, rng);
-  } else if (rng.uniform() < s_.add_link_prob) {
-    (void)gg::add_link(g, record, s_.recur_only_prob, s_.newlink_tries, s_.new_link_weight, rng);
-  } else {
-    if (rng.uniform() < s_.weight_mut_prob) gg::mutate_weights(g, s_.weight_mut_power, rng);
-    if (rng.uniform() < s_.toggle_enable_prob) gg::toggle_enable(g, rng);
-    if (rng.uniform() < s_.reenable_prob) gg::reenable(g);
-  }
 }
 
 void Neat::breed(Rng& rng) {
@@ -176,7 +160,7 @@ void Neat::breed(Rng& rng) {
         champ_done = true;
       } else if (rng.uniform() < s_.mutate_only_prob || parents == 1) {
         baby = population_[sp.members[pick(rng, parents)]];
-        mutate(baby, record, rng);
+        gg::mutate(baby, ops_, record, rng);
       } else {
         const std::size_t mom = sp.members[pick(rng, parents)];
         std::size_t dad = 0;
@@ -198,7 +182,7 @@ void Neat::breed(Rng& rng) {
         baby = gg::mate(population_[mom], population_[dad], fitness_[mom], fitness_[dad], how, rng);
         if (rng.uniform() > s_.mate_only_prob || mom == dad ||
             gg::compatibility(population_[mom], population_[dad], c) == 0.0)
-          mutate(baby, record, rng);
+          gg::mutate(baby, ops_, record, rng);
       }
 
       next.push_back(std::move(baby));

@@ -57,13 +57,13 @@ class Neat {
 
  private:
   void speciate_start();
-  void mutate(genome::graph::Graph& g, genome::graph::InnovationRecord& record, Rng& rng) const;
   [[nodiscard]] genome::graph::Coefficients coefficients() const;
 
   NeatSettings s_;
   std::size_t inputs_;
   std::size_t outputs_;
   genome::graph::Activation output_activation_;
+  genome::graph::GraphOperators ops_;
   std::vector<genome::graph::Graph> population_;
   std::vector<double> fitness_;        // as measured, finite; empty until told
   std::vector<Species> species_;

@@ -7,6 +7,7 @@
 
 #include "runtime/evo/novelty/novelty_archive.hpp"
 #include "runtime/genome/graph/graph.hpp"
+#include "runtime/genome/graph/graph_operators.hpp"
 
 namespace esc::evo {
 
@@ -59,11 +60,16 @@ struct NeatSettings {
 inline constexpr int kPopulationDropoffExtra = 5;
 // A stagnant species' fitness factor (Species::adjust_fitness).
 inline constexpr double kStagnantFactor = 0.01;
-// The range of the start genome's weights, drawn anew per copy (Population::spawn's
-// mutate_link_weights(1.0, 1.0, COLDGAUSSIAN)).
-inline constexpr double kStartWeight = 1.0;
 // A champion's clone mutated when cloned for a population standstill: weights with this
 // probability, else a new link (Species::reproduce).
 inline constexpr double kSuperChampWeights = 0.8;
+
+// The settings of NEAT's variation, as every algorithm that varies graphs takes them.
+[[nodiscard]] inline genome::graph::GraphOperators graph_operators(const NeatSettings& s) {
+  return {s.mutate_only_prob, s.mate_only_prob,     s.mate_multipoint_prob, s.weight_mut_prob,
+          s.weight_mut_power, s.toggle_enable_prob, s.reenable_prob,        s.add_node_prob,
+          s.add_link_prob,    s.recur_only_prob,    s.newlink_tries,        s.new_link_weight,
+          s.activation,       s.start_hidden};
+}
 
 }  // namespace esc::evo

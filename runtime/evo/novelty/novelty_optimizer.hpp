@@ -63,7 +63,7 @@ struct NoveltyAlgorithm {
   using Settings = NoveltyRunSettings;
   std::string_view name = "novelty";
   std::string_view what = "novelty search";
-  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree};
+  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree, genome::GenomeKind::Graph};
   std::uint32_t state_format = 1;
 
   [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const { return make_novelty(s, p); }

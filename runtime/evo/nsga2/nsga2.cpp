@@ -117,6 +117,7 @@ std::vector<std::vector<double>> Nsga2::ask(Rng& rng) {
     for (auto& x : g_.representation->first(big_n - children_.size(), rng)) children_.push_back(std::move(x));
   } else {
     const std::vector<std::size_t> winners = crowded_tournament_winners(ranking_, rng);
+    if (g_.begin) g_.begin(parents_);
     children_.clear();
     for (std::size_t t = 0; t < big_n; t += 2) {
       std::vector<double> a = parents_[winners[t]];

@@ -30,8 +30,9 @@
 //
 // What the genes are is the Nsga2Genomes given (a Representation and a variation of two
 // winners): a network's weights in a box with SBX and polynomial mutation, as above, by
-// default; trees with the GP's crossover and mutations (gp/tree_variation.hpp). Ranking,
-// tournaments and survival are the same code for both.
+// default; trees with the GP's crossover and mutations (genome/tree/tree_variation.hpp);
+// NEAT networks with NEAT's (genome/graph/graph_variation.hpp). Ranking, tournaments and
+// survival are the same code for all three.
 //
 // Random draws come from the Rng given, in a fixed order. start(Rng&) draws N x n uniforms
 // (candidate by candidate, gene by gene) for the first generation. start(point) draws
@@ -81,10 +82,13 @@ void check_nsga2_settings(const Nsga2Settings& settings);
 [[nodiscard]] double nsga2_memory_bytes(const Nsga2Settings& settings, std::size_t n, std::size_t objectives);
 
 // What NSGA-II's genes are: the first candidates and the check of a stored one, and how two
-// tournament winners become two children (in place, drawing from the Rng given).
+// tournament winners become two children (in place, drawing from the Rng given); `begin`,
+// when set, is shown the parents before a generation's children are bred from them (graph
+// genomes number their new structure past the parents': graph_variation.hpp).
 struct Nsga2Genomes {
   std::shared_ptr<const genome::Representation> representation;
   std::function<void(Genome&, Genome&, Rng&)> vary;
+  std::function<void(std::span<const Genome>)> begin = {};
 };
 
 // n genes in the settings' box, varied by SBX and polynomial mutation (variation.hpp).

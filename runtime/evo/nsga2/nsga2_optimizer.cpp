@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/genome/graph/graph_variation.hpp"
 #include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/measured_state.hpp"
 #include "runtime/evo/pareto/hypervolume.hpp"
@@ -113,6 +114,12 @@ std::vector<double> hypervolume_reference(const Problem& problem) {
 }
 
 Nsga2 nsga2_core(const Nsga2Settings& settings, const Problem& problem) {
+  if (problem.graph.graphs()) {
+    auto graphs = std::make_shared<genome::graph::GraphVariation>(problem.graph.operators, problem.graph);
+    return {settings,
+            Nsga2Genomes{graphs, [graphs](Genome& a, Genome& b, Rng& rng) { graphs->cross_and_mutate(a, b, rng); },
+                         [graphs](std::span<const Genome> parents) { graphs->begin(parents); }}};
+  }
   if (problem.tree.primitives == nullptr) return {settings, problem.genome_size};
   if (const std::string why = genome::tree::tree_problem(problem, "NSGA-II"); !why.empty()) throw std::invalid_argument(why);
   auto trees = std::make_shared<const genome::tree::TreeVariation>(*problem.tree.operators, *problem.tree.primitives);

@@ -1,7 +1,8 @@
 #pragma once
-// NSGA-II (nsga2.hpp) as an Optimizer of a network's weights, or of trees with the GP's
+// NSGA-II (nsga2.hpp) as an Optimizer of a network's weights, of trees with the GP's
 // operators (genome/tree/tree_variation.hpp, settings from problem.tree.operators; candidates go out
-// encoded), over every objective of an Outcome: it starts from Rng(seed, Init) (or the start genome, then candidate 0 of
+// encoded), or of NEAT networks with NEAT's (genome/graph/graph_variation.hpp, settings from
+// problem.graph.operators), over every objective of an Outcome: it starts from Rng(seed, Init) (or the start genome, then candidate 0 of
 // generation 0), breeds generation g from Rng(seed, Breed, g) and minimises the negated
 // objectives. Its metrics: the size of the first front and, for 2 or 3 objectives whose
 // ranges are all declared, the front's hypervolume with the declared worst values as the
@@ -53,7 +54,7 @@ struct Nsga2Algorithm {
   using Settings = Nsga2Settings;
   std::string_view name = "nsga2";
   std::string_view what = "NSGA-II";
-  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree};
+  genome::GenomeKinds kinds{genome::GenomeKind::Vector, genome::GenomeKind::Tree, genome::GenomeKind::Graph};
   std::uint32_t state_format = 1;
 
   [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const { return make_nsga2(s, p); }

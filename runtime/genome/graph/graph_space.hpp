@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "runtime/genome/graph/graph.hpp"
+#include "runtime/genome/graph/graph_operators.hpp"
 
 namespace esc::genome::graph {
 
@@ -14,6 +15,9 @@ struct GraphSpace {
   std::size_t inputs = 0;
   std::size_t outputs = 0;   // 0: the problem evolves no graphs
   Activation output_activation = Activation::NeatSigmoid;
+  // How an algorithm other than NEAT varies them: NEAT's settings in the experiment
+  // (`evolve neat(...)`, else its defaults).
+  GraphOperators operators = {};
   [[nodiscard]] bool graphs() const noexcept { return outputs > 0; }
   friend bool operator==(const GraphSpace&, const GraphSpace&) = default;
 };

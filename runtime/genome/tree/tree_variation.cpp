@@ -1,5 +1,7 @@
 #include "runtime/genome/tree/tree_variation.hpp"
 
+#include "runtime/genome/graph/graph_variation.hpp"
+
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/genome/tree/init.hpp"
 
@@ -61,6 +63,7 @@ double encoded_tree_bytes(const TreeOperators& operators) noexcept {
 }
 
 std::size_t genes_at_most(const evo::Problem& problem) {
+  if (problem.graph.graphs()) return graph::typical_encoded_size(problem.graph);
   if (problem.tree.primitives == nullptr || problem.tree.operators == nullptr) return problem.genome_size;
   return kCodedNodeWidth * static_cast<std::size_t>(problem.tree.operators->max_size);
 }

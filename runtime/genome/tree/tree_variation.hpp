@@ -59,8 +59,8 @@ class TreeVariation final : public Representation {
 // Bytes one encoded tree of at most max_size nodes holds.
 [[nodiscard]] double encoded_tree_bytes(const TreeOperators& operators) noexcept;
 
-// Values per genome at most: a network's weights, or an encoded tree of the GP's max_size
-// (what memory estimates count per candidate).
+// Values per genome at most: a network's weights, an encoded tree of the GP's max_size, or a
+// graph genome grown to twice its start's links (what memory estimates count per candidate).
 [[nodiscard]] std::size_t genes_at_most(const evo::Problem& problem);
 
 // Why `algorithm` cannot vary the problem's trees (the experiment gives no GP settings), or
