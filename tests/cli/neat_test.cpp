@@ -193,4 +193,25 @@ TEST(Neat, TheExampleComparesNeatWithFixedNetworksInOneExperiment) {
     EXPECT_EQ(column_where(csv, 1, c, 15), std::vector<std::string>(2, "neat"));
 }
 
+// Its study compares NEAT and fixed networks in both conditions (with and without inertia):
+// every controller has its runs in each, and the study's tables pair them across conditions.
+TEST(Neat, TheExamplesStudyComparesNeatWithFixedNetworksAcrossConditions) {
+  const fs::path dir = scratch("neat-study");
+  const Outcome o = esc("run " + std::string(ESC_SOURCE_DIR) + "/examples/neat_obstacle_avoidance.esc --experiment "
+                        "neat_inertia --runs 2 --generations 2 --set epochs=1 --set steps=40 --out " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const auto summary = read_json(dir / "summary.json");
+  ASSERT_EQ(summary["conditions"].size(), 2u);
+  for (const auto& condition : summary["conditions"]) {
+    for (const char* c : {"CC_8_2", "CC_8_20_2", "NEAT_8_2", "NEAT_SC"})
+      EXPECT_EQ(condition["controllers"][c]["runs"].size(), 2u) << condition["name"] << " " << c;
+    EXPECT_EQ(condition["controllers"]["NEAT_8_2"]["architecture"], "8-neat-2");
+  }
+  EXPECT_NE(o.output.find("NEAT_8_2"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("no_inertia"), std::string::npos) << o.output;
+  const Outcome topology = esc("export " + dir.string() + " --table topology");
+  ASSERT_EQ(topology.status, 0) << topology.output;
+  EXPECT_EQ(column_where(topology.output, 1, "no_inertia", 2).empty(), false);
+}
+
 }  // namespace
