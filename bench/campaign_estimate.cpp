@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <span>
 
 #include "bench/cpu_time.hpp"
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/evaluator.hpp"
+#include "runtime/genome/graph/graph_variation.hpp"
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/genome/tree/init.hpp"
 
@@ -19,19 +21,26 @@ namespace {
 // Per-core control steps per second of evaluating random genomes (an early generation:
 // short epochs, many resets), measured for about `seconds` of this thread's CPU time, which
 // other work on the machine does not stretch. Trees are drawn as a GP run's initial
-// population is.
+// population is, NEAT networks as NEAT's first population (its start, weights drawn anew).
 double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec& c, double seconds,
                     std::vector<double>& lengths) {
   eval::Evaluator evaluator(e);
   Rng rng(2024);
   std::vector<double> genome(c.genome_size());
   const evo::gp::GpSettings gp = e.gp.value_or(evo::gp::GpSettings{});
+  std::optional<genome::graph::GraphVariation> graphs;
+  if (c.is_graph()) {
+    const evo::Problem p = e.problem_of(c);
+    graphs.emplace(p.graph.operators, p.graph);
+  }
   std::int64_t steps = 0;
   const double start = thread_cpu_seconds();
   double elapsed = 0.0;
   for (std::uint64_t i = 0; elapsed < seconds || steps == 0; ++i) {
     if (c.is_tree())
       genome = genome::tree::encode(genome::tree::grow(*c.primitives, c.primitives->root(), gp.init_max_depth, rng));
+    else if (graphs)
+      genome = graphs->first(1, rng).front();
     else
       for (double& g : genome) g = rng.uniform(e.es.lower, e.es.upper);
     steps += evaluator.evaluate(c, genome, i).steps;

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Lehman & Stanley's mazes: NEAT as esc runs it beside the paper's NEAT and esc's searches
+of a fixed network (docs/maze-results.md). Reads the stored studies' summary.json
+(results/lehman-stanley/MAZE and MAZE-neat) and, optionally, a file of the authors' own
+program's runs made here; prints Markdown.
+
+    python3 scripts/maze-neat-comparison.py medium [--results results/lehman-stanley]
+        [--authors FILE]
+
+Per method: runs that solved the maze and the evaluations to the first solution (mean, sd,
+median, range over the solved runs). Then Fisher's exact test (two-sided) of each NEAT
+method's successes against the paper's count for the same method and against esc's
+fixed-network method of the same selection (NEAT by the fitness against CMA-ES, NEAT scored
+by novelty against novelty search). The authors' file has one line per run: MAZE RUN
+EVALUATIONS SOLVED USER_S SYS_S (the runs of /work/peers, docs/maze-results.md).
+"""
+import argparse
+import json
+import math
+import os
+import statistics
+
+# The paper's counts (Lehman & Stanley 2011, section 6; docs/maze-results.md, "The paper's
+# numbers"): runs that solved the maze of 40, and the mean (sd) evaluations where reported.
+PAPER = {
+    "medium": {"fitness": (40, "56,334 (48,705)"), "novelty": (40, "18,274 (20,447)")},
+    "hard": {"fitness": (3, "not reported"), "novelty": (39, "35,109 (30,236)")},
+}
+RUNS_IN_PAPER = 40
+# esc's condition of the same selection, in each study.
+FIXED = {"fitness": "fitness_based", "novelty": "novelty"}
+NEAT = {"fitness": "neat_fitness", "novelty": "neat_novelty"}
+
+
+def fisher_two_sided(a, n_a, b, n_b):
+    """Fisher's exact test of a successes in n_a against b in n_b: the probability, under
+    the hypergeometric law with the margins fixed, of every table no more likely than the one
+    observed (with a relative tolerance of 1e-7, as R and SciPy use)."""
+    total, successes = n_a + n_b, a + b
+    def p(x):
+        return math.comb(n_a, x) * math.comb(n_b, successes - x) / math.comb(total, successes)
+    observed = p(a)
+    lo, hi = max(0, successes - n_b), min(n_a, successes)
+    return min(1.0, sum(p(x) for x in range(lo, hi + 1) if p(x) <= observed * (1 + 1e-7)))
+
+
+def solved_of(summary, condition):
+    for c in summary["conditions"]:
+        if c["name"] == condition:
+            (controller,) = c["controllers"].values()
+            runs = controller["runs"]
+            return [r["success_evaluation"] for r in runs if r.get("success_evaluation") is not None], len(runs)
+    raise SystemExit(f"no condition {condition} in the summary")
+
+
+def stats(solved):
+    if not solved:
+        return "-", "-", "-"
+    spread = f"{statistics.mean(solved):,.0f} ({statistics.stdev(solved):,.0f})" if len(solved) > 1 else f"{solved[0]:,}"
+    median = statistics.median(solved)
+    return spread, f"{median:,.1f}" if median % 1 else f"{median:,.0f}", f"{min(solved):,}-{max(solved):,}"
+
+
+def p_text(p):
+    return f"{p:.1e}" if p < 1e-4 else f"{p:.3g}"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("maze", choices=sorted(PAPER))
+    parser.add_argument("--results", default="results/lehman-stanley")
+    parser.add_argument("--authors")
+    args = parser.parse_args()
+    with open(os.path.join(args.results, args.maze, "summary.json")) as f:
+        fixed = json.load(f)
+    with open(os.path.join(args.results, args.maze + "-neat", "summary.json")) as f:
+        neat = json.load(f)
+
+    print("| method | runs that solved it | evaluations to success: mean (sd) | median | range |")
+    print("|---|---|---|---|---|")
+    for selection in ("fitness", "novelty"):
+        count, mean = PAPER[args.maze][selection]
+        print(f"| paper: NEAT, {selection} | {count} of {RUNS_IN_PAPER} | {mean} | | |")
+    if args.authors:
+        with open(args.authors) as f:
+            rows = [line.split() for line in f if line.split() and line.split()[0] == args.maze]
+        solved = [int(r[2]) for r in rows if r[3] == "1"]
+        evaluations = sum(int(r[2]) for r in rows)
+        seconds = sum(float(r[4]) + float(r[5]) for r in rows)
+        spread, median, extent = stats(solved)
+        print(f"| the authors' program here: NEAT, novelty | {len(solved)} of {len(rows)} | {spread} | {median} "
+              f"| {extent} |")
+    for selection in ("fitness", "novelty"):
+        for label, summary, condition in ((f"esc: fixed network, {FIXED[selection]}", fixed, FIXED[selection]),
+                                          (f"esc: NEAT, {selection}", neat, NEAT[selection])):
+            solved, runs = solved_of(summary, condition)
+            spread, median, extent = stats(solved)
+            print(f"| {label} | {len(solved)} of {runs} | {spread} | {median} | {extent} |")
+
+    print("\n| NEAT in esc against | successes | Fisher p (two-sided) |")
+    print("|---|---|---|")
+    for selection in ("fitness", "novelty"):
+        solved, runs = solved_of(neat, NEAT[selection])
+        paper = PAPER[args.maze][selection][0]
+        print(f"| NEAT, {selection}: the paper's NEAT, {selection} | {len(solved)}/{runs} vs {paper}/{RUNS_IN_PAPER} "
+              f"| {p_text(fisher_two_sided(len(solved), runs, paper, RUNS_IN_PAPER))} |")
+        other, other_runs = solved_of(fixed, FIXED[selection])
+        print(f"| NEAT, {selection}: esc's fixed network, {FIXED[selection]} | {len(solved)}/{runs} vs "
+              f"{len(other)}/{other_runs} | {p_text(fisher_two_sided(len(solved), runs, len(other), other_runs))} |")
+    if args.authors:
+        print(f"\nThe authors' program: {evaluations:,} evaluations in {seconds:,.1f} s of CPU time, "
+              f"{evaluations / seconds:,.0f} evaluations per second per core.")
+
+
+if __name__ == "__main__":
+    main()
