@@ -44,6 +44,15 @@ def fisher_two_sided(a, n_a, b, n_b):
     return min(1.0, sum(p(x) for x in range(lo, hi + 1) if p(x) <= observed * (1 + 1e-7)))
 
 
+def stored(directory):
+    """A stored study's summary; exits with one line when it is not stored (yet)."""
+    path = os.path.join(directory, "summary.json")
+    if not os.path.exists(path):
+        raise SystemExit(f"maze-neat-comparison: {path} is not stored (yet): scripts/reproduce-paper.sh --write stores it")
+    with open(path) as f:
+        return json.load(f)
+
+
 def solved_of(summary, condition):
     for c in summary["conditions"]:
         if c["name"] == condition:
@@ -71,10 +80,7 @@ def main():
     parser.add_argument("--results", default="results/lehman-stanley")
     parser.add_argument("--authors")
     args = parser.parse_args()
-    with open(os.path.join(args.results, args.maze, "summary.json")) as f:
-        fixed = json.load(f)
-    with open(os.path.join(args.results, args.maze + "-neat", "summary.json")) as f:
-        neat = json.load(f)
+    fixed, neat = (stored(os.path.join(args.results, name)) for name in (args.maze, args.maze + "-neat"))
 
     print("| method | runs that solved it | evaluations to success: mean (sd) | median | range |")
     print("|---|---|---|---|---|")
