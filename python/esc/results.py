@@ -40,7 +40,7 @@ class Member:
     its final archive (MAP-Elites): `kind` "front" or "archive", `cell` its position in the
     front or its archive cell, `objectives` by name as the front and archive tables hold them
     (the optimizer's own, such as novelty, first; then the experiment's as declared),
-    `descriptors` in the experiment's order, and `genome`. `generation` and `candidate` (from
+    `descriptors` in the experiment's order, and `genome` (a NEAT network's as an esc.Network). `generation` and `candidate` (from
     0) say which evaluation measured it and `evaluation_seed` that evaluation's seed:
     esc.evaluate of `genome` with that seed and the run's settings gives its fitness exactly.
     All three are None for a run stored by an esc that did not record them."""
@@ -49,7 +49,7 @@ class Member:
     cell: int
     objectives: dict
     descriptors: np.ndarray
-    genome: np.ndarray
+    genome: Union[np.ndarray, Network]
     generation: Optional[int]
     candidate: Optional[int]
     evaluation_seed: Optional[int]
@@ -138,6 +138,9 @@ class Run:
         directory does not hold; TypeError for a run that is not an integer."""
         run = self._run(run, condition)
         found = self._stored.members(controller, run, condition or "", os.fspath(standard_library()))
+        for d in found:
+            if d.pop("graph"):
+                d["genome"] = Network.decode(d["genome"])
         return [Member(**d) for d in found]
 
     def best_genome(self, controller: str, run: int, condition: Optional[str] = None,

@@ -100,6 +100,7 @@ class StoredRun {
       d["objectives"] = objectives;
       d["descriptors"] = py::array_t<double>(static_cast<py::ssize_t>(m.descriptors.size()), m.descriptors.data());
       d["genome"] = py::array_t<double>(static_cast<py::ssize_t>(m.genome.size()), m.genome.data());
+      d["graph"] = !m.genome.empty() && c.architecture.find(control::kGraphArchitectureMark) != std::string::npos;
       const bool known = m.measured.known();
       d["generation"] = known ? py::object(py::int_(m.measured.generation)) : py::object(py::none());
       d["candidate"] = known ? py::object(py::int_(m.measured.candidate)) : py::object(py::none());

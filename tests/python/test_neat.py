@@ -83,3 +83,20 @@ def test_env_drives_a_neat_controllers_head_and_policy_refuses_it(neat_script):
     assert info["step"] == 1
     with pytest.raises(ValueError, match="NEAT network"):
         env.policy(np.zeros(3))
+
+
+def test_members_of_neat_networks_under_nsga2_and_map_elites_are_networks(tmp_path):
+    """A NEAT network evolved by NSGA-II or MAP-Elites (NEAT's operators, docs/neat.md): its
+    final front's and archive's members are esc.Network, each scoring its stored objectives
+    exactly when evaluated again with its evaluation seed."""
+    script = SOURCE / "tests" / "cli" / "data" / "tiny_neat_selections.esc"
+    run = esc.open(esc_run(script, tmp_path / "run", {"generations": 4}))
+    compiled = esc.compile(script)
+    for controller, kind in (("NC_nsga2", "front"), ("NC_me", "archive")):
+        members = run.members(controller, 1)
+        assert members and all(m.kind == kind for m in members)
+        for m in members[:5]:
+            assert isinstance(m.genome, esc.Network)
+            assert m.genome.nodes["kind"].tolist().count("input") == 8
+            fitness = esc.evaluate(compiled, "selections", controller, [m.genome], seed=m.evaluation_seed)
+            assert fitness[0] == m.objectives["avoid"]
