@@ -7,6 +7,9 @@
 #include <fmt/format.h>
 
 #include "app/store_errors.hpp"
+#include "app/stored_run.hpp"
+#include "runtime/control/graph_architecture.hpp"
+#include "runtime/evo/registry.hpp"
 #include "compiler/names.hpp"
 #include "runtime/report/html_report.hpp"
 #include "runtime/report/success_table.hpp"
@@ -88,16 +91,60 @@ std::string log_damage_warning(const std::filesystem::path& root, const store::L
 }
 
 std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv,
-                        Events& events) {
+                        Events& events, const compiler::CompileOptions* options) {
   check_table(table);
-  return table_text(load_all(dirs, events), table, csv);
+  return table_text(load_all(dirs, events), table, csv, options);
 }
 
-std::string table_text(const std::vector<store::StoredDirectory>& all, std::string_view table, bool csv) {
+namespace {
+
+// The final fronts' and archives' networks of the NEAT networks that another algorithm than
+// NEAT evolved (NEAT keeps no genomes beside its best), each experiment compiled once from
+// the sources its run stored.
+std::vector<store::RunMembers> graph_members(const std::vector<store::StoredDirectory>& all,
+                                             const compiler::CompileOptions& options) {
+  std::vector<store::RunMembers> out;
+  for (const store::StoredDirectory& d : all)
+    for (const store::StoredExperiment& e : d.experiments) {
+      const auto keeps = [](const store::StoredController& c) {
+        const evo::Algorithm* a = evo::find_algorithm(c.algorithm);
+        return c.architecture.find(control::kGraphArchitectureMark) != std::string::npos && a != nullptr &&
+               a->name != eval::ExperimentSpec::kNeat;
+      };
+      if (std::none_of(e.controllers.begin(), e.controllers.end(), keeps)) continue;
+      // A study's condition directory (STUDY/CONDITION) is read from its study's database.
+      const std::filesystem::path root =
+          std::filesystem::exists(d.path / store::kDatabaseFile) ? d.path : d.path.parent_path();
+      const StoredRun stored{&e, root, d.path};
+      Events quiet;   // the script's warnings were the run's, given when it ran
+      const eval::ExperimentSpec spec = experiment_of_run(stored, options, quiet);
+      for (const store::StoredController& c : e.controllers) {
+        if (!keeps(c)) continue;
+        for (const eval::RunResult& r : c.finished) {
+          const evo::Members kept = final_members(stored, spec, c.name, r.run);
+          store::RunMembers m{e.name, e.condition ? e.condition->name : std::string(), c.name, r.run + 1,
+                              kept.kind == evo::MemberKind::Front ? "front" : "archive", {}};
+          for (const evo::Member& member : kept.members)
+            if (!member.genome.empty()) m.genomes.emplace_back(member.cell, member.genome);
+          if (!m.genomes.empty()) out.push_back(std::move(m));
+        }
+      }
+    }
+  return out;
+}
+
+}  // namespace
+
+std::string table_text(const std::vector<store::StoredDirectory>& all, std::string_view table, bool csv,
+                       const compiler::CompileOptions* options) {
   check_table(table);
   if (table == "usage") return csv ? store::usage_csv(all) : store::usage_json(all).dump(2) + "\n";
   if (table == "metrics") return csv ? store::metrics_csv(all) : store::metrics_json(all).dump(2) + "\n";
-  if (table == "topology") return csv ? store::topology_csv(all) : store::topology_json(all).dump(2) + "\n";
+  if (table == "topology") {
+    const std::vector<store::RunMembers> members =
+        options != nullptr ? graph_members(all, *options) : std::vector<store::RunMembers>{};
+    return csv ? store::topology_csv(all, members) : store::topology_json(all, members).dump(2) + "\n";
+  }
   if (table == "success") {
     const std::vector<report::SuccessRow> rows = report::success_rows(all);
     return csv ? report::success_csv(rows) : report::success_json(rows).dump(2) + "\n";

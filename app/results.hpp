@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/events.hpp"
+#include "compiler/compiler.hpp"
 #include "runtime/store/results_db.hpp"
 
 namespace esc::app {
@@ -52,10 +53,14 @@ struct RunLocation {
 // directory that is not a run's, std::invalid_argument for an unknown table (naming the
 // tables, and the nearest). A directory whose log is damaged is read as SQLite reads it,
 // after a Warning note (log_damage_warning) to `events`.
+// With `options` (how to compile a run's stored sources), the topology table also holds the
+// final front's or archive's networks of each finished run of a NEAT network evolved by
+// NSGA-II, novelty search or MAP-Elites (final_members); without, each run's best only.
 [[nodiscard]] std::string export_text(const std::vector<std::filesystem::path>& dirs, std::string_view table, bool csv,
-                                      Events& events);
+                                      Events& events, const compiler::CompileOptions* options = nullptr);
 // The same of directories already read.
-[[nodiscard]] std::string table_text(const std::vector<store::StoredDirectory>& dirs, std::string_view table, bool csv);
+[[nodiscard]] std::string table_text(const std::vector<store::StoredDirectory>& dirs, std::string_view table, bool csv,
+                                     const compiler::CompileOptions* options = nullptr);
 
 struct ReportFiles {
   std::filesystem::path html;

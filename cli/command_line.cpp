@@ -87,7 +87,7 @@ CLI::App* add_export(CLI::App& app, ExportOptions& o) {
                          "run's optimizer reported (CMA-ES's sigma, ...) per generation; front: NSGA-II's first front "
                          "per generation; archive: MAP-Elites' and novelty search's archive changes per generation; "
                          "success: Fisher's and the censored Mann-Whitney test of each pair the end table compares; "
-                         "topology: the nodes and links of each run's best NEAT network (tidy tables)")
+                         "topology: the nodes and links of each run's best NEAT network and of its final front's or archive's (tidy tables)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(app::kTables), std::end(app::kTables))));
   command->add_option("--out", o.out, "output file (default: standard output)");
   return command;

@@ -6,6 +6,7 @@
 #include "app/output_files.hpp"
 #include "app/results.hpp"
 #include "cli/commands.hpp"
+#include "cli/load.hpp"
 #include "cli/terminal_events.hpp"
 
 namespace esc::cli {
@@ -16,7 +17,8 @@ int export_command(const ExportOptions& o) {
     return kExitUsage;
   }
   TerminalEvents events;
-  const std::string text = app::export_text(o.dirs, o.table, o.format == "csv", events);
+  const compiler::CompileOptions options = default_compile_options();
+  const std::string text = app::export_text(o.dirs, o.table, o.format == "csv", events, &options);
   if (o.out.empty()) {
     std::cout << text << std::flush;
   } else {

@@ -1,6 +1,7 @@
 #include "runtime/store/topology_export.hpp"
 
 #include <functional>
+#include <optional>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -20,35 +21,46 @@ struct TopologyRow {
   const std::string& condition;   // empty for a plain experiment
   const std::string& controller;
   int run;                        // from 1
+  std::string_view member;        // best, front or archive
+  std::optional<std::int64_t> cell;   // a member's
   const gg::NodeGene* node;       // one of the two
   const gg::LinkGene* link;
 };
 
-// Every row, in directory, experiment, controller and run order; a best genome that does
-// not decode (a store from before graphs could not hold one) gives none.
-void for_each_row(const std::vector<StoredDirectory>& directories, const std::function<void(const TopologyRow&)>& f) {
+// Every row: the bests in directory, experiment, controller and run order, then the
+// members; a genome that does not decode (a store from before graphs could not hold one)
+// gives none.
+void for_each_row(const std::vector<StoredDirectory>& directories, const std::vector<RunMembers>& members,
+                  const std::function<void(const TopologyRow&)>& f) {
+  const auto rows_of = [&](const std::vector<double>& genome, const std::string& experiment, const std::string& condition,
+                           const std::string& controller, int run, std::string_view member,
+                           std::optional<std::int64_t> cell) {
+    gg::Graph g;
+    if (!gg::decode(genome, g).empty()) return;
+    for (const gg::NodeGene& n : g.nodes) f({experiment, condition, controller, run, member, cell, &n, nullptr});
+    for (const gg::LinkGene& l : g.links) f({experiment, condition, controller, run, member, cell, nullptr, &l});
+  };
   for (const StoredDirectory& d : directories)
     for (const StoredExperiment& e : d.experiments) {
       const std::string condition = e.condition ? e.condition->name : std::string();
       for (const StoredController& c : e.controllers) {
         if (c.architecture.find(control::kGraphArchitectureMark) == std::string::npos) continue;
-        for (std::size_t r = 0; r < c.finished.size(); ++r) {
-          gg::Graph g;
-          if (!gg::decode(c.finished[r].best_genome, g).empty()) continue;
-          const int run = static_cast<int>(r) + 1;
-          for (const gg::NodeGene& n : g.nodes) f({e.name, condition, c.name, run, &n, nullptr});
-          for (const gg::LinkGene& l : g.links) f({e.name, condition, c.name, run, nullptr, &l});
-        }
+        for (std::size_t r = 0; r < c.finished.size(); ++r)
+          rows_of(c.finished[r].best_genome, e.name, condition, c.name, static_cast<int>(r) + 1, "best", std::nullopt);
       }
     }
+  for (const RunMembers& m : members)
+    for (const auto& [cell, genome] : m.genomes)
+      rows_of(genome, m.experiment, m.condition, m.controller, m.run, m.kind, cell);
 }
 
 }  // namespace
 
-std::string topology_csv(const std::vector<StoredDirectory>& directories) {
+std::string topology_csv(const std::vector<StoredDirectory>& directories, const std::vector<RunMembers>& members) {
   std::string out = std::string(kTopologyColumns) + "\n";
-  for_each_row(directories, [&](const TopologyRow& r) {
-    out += fmt::format("{},{},{},{},", r.experiment, csv_field(r.condition), r.controller, r.run);
+  for_each_row(directories, members, [&](const TopologyRow& r) {
+    out += fmt::format("{},{},{},{},{},{},", r.experiment, csv_field(r.condition), r.controller, r.run, r.member,
+                       r.cell ? std::to_string(*r.cell) : std::string());
     if (r.node != nullptr)
       out += fmt::format("node,{},{},{},,,,\n", r.node->id, gg::kind_name(r.node->kind),
                          r.node->kind == gg::NodeKind::Input || r.node->kind == gg::NodeKind::Bias
@@ -61,11 +73,13 @@ std::string topology_csv(const std::vector<StoredDirectory>& directories) {
   return out;
 }
 
-nlohmann::ordered_json topology_json(const std::vector<StoredDirectory>& directories) {
+nlohmann::ordered_json topology_json(const std::vector<StoredDirectory>& directories,
+                                     const std::vector<RunMembers>& members) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for_each_row(directories, [&](const TopologyRow& r) {
+  for_each_row(directories, members, [&](const TopologyRow& r) {
     nlohmann::ordered_json row = {{"experiment", r.experiment}, {"condition", r.condition}, {"controller", r.controller},
-                                  {"run", r.run}};
+                                  {"run", r.run}, {"member", r.member}};
+    row["cell"] = r.cell ? nlohmann::ordered_json(*r.cell) : nlohmann::ordered_json();
     const bool sensor = r.node != nullptr && (r.node->kind == gg::NodeKind::Input || r.node->kind == gg::NodeKind::Bias);
     row["element"] = r.node != nullptr ? "node" : "link";
     row["id"] = r.node != nullptr ? r.node->id : r.link->innovation;

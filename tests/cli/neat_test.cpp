@@ -4,6 +4,7 @@
 // best replays, its topology is exported and drawn; `evaluate from` scores a stored network
 // again and `start from` evolves on from it; the shipped example runs.
 #include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -57,17 +58,21 @@ TEST(Neat, ANeatControllerEvolvesAndImprovesWhateverTheThreadsAndRunsAtOnce) {
   const Outcome topology = esc("export " + one.string() + " --table topology");
   ASSERT_EQ(topology.status, 0) << topology.output;
   EXPECT_EQ(topology.output.substr(0, topology.output.find('\n')),
-            "experiment,condition,controller,run,element,id,kind,activation,in,out,weight,enabled");
+            "experiment,condition,controller,run,member,cell,element,id,kind,activation,in,out,weight,enabled");
   int nodes = 0, links = 0, outputs = 0;
-  for (const auto& r : csv_rows(topology.output))
-    if (r.size() == 12 && r[2] == "NC" && r[3] == "1") {
-      nodes += r[4] == "node" ? 1 : 0;
-      links += r[4] == "link" ? 1 : 0;
-      if (r[6] == "output") {
+  for (const auto& r : csv_rows(topology.output)) {
+    ASSERT_EQ(r.size(), 14u);
+    if (r[0] == "experiment") continue;
+    EXPECT_EQ(r[4], "best");   // NEAT keeps no genomes beside each run's best
+    if (r[2] == "NC" && r[3] == "1") {
+      nodes += r[6] == "node" ? 1 : 0;
+      links += r[6] == "link" ? 1 : 0;
+      if (r[8] == "output") {
         ++outputs;
-        EXPECT_EQ(r[7], "tanh");   // the classical head's activation
+        EXPECT_EQ(r[9], "tanh");   // the classical head's activation
       }
     }
+  }
   EXPECT_GE(nodes, 11);
   EXPECT_GE(links, 18);
   EXPECT_EQ(outputs, 2);
@@ -135,14 +140,26 @@ TEST(Neat, NeatNetworksUnderEverySelectionResumeToTheUnbrokenRun) {
     EXPECT_EQ(esc("export " + reference.string() + " --table " + table).output,
               esc("export " + killed.string() + " --table " + table).output)
         << table;
-  // Every controller's best network has grown hidden nodes in some run, whatever selected it.
+  // Every controller's best network has grown hidden nodes in some run, whatever selected it;
+  // NSGA-II's final fronts and MAP-Elites' final archives are there too, network by network.
   const std::string topology = esc("export " + reference.string() + " --table topology").output;
   for (const std::string& c : controllers) {
     int hidden = 0;
     for (const auto& r : csv_rows(topology))
-      if (r.size() == 12 && r[2] == c && r[6] == "hidden") ++hidden;
+      if (r.size() == 14 && r[2] == c && r[4] == "best" && r[8] == "hidden") ++hidden;
     EXPECT_GT(hidden, 0) << c;
   }
+  std::set<std::string> front_cells, archive_cells, others;
+  for (const auto& r : csv_rows(topology)) {
+    if (r.size() != 14 || r[4] == "best" || r[0] == "experiment") continue;
+    if (r[2] == "NC_nsga2" && r[3] == "1" && r[4] == "front") front_cells.insert(r[5]);
+    else if (r[2] == "NC_me" && r[3] == "1" && r[4] == "archive") archive_cells.insert(r[5]);
+    else if (r[3] == "1") others.insert(r[2] + " " + r[4]);
+  }
+  EXPECT_GT(front_cells.size(), 1u);
+  EXPECT_GT(archive_cells.size(), 10u);
+  // Novelty search without the fitness keeps behaviors, not networks; NEAT its best alone.
+  EXPECT_TRUE(others.empty()) << *others.begin();
   // NSGA-II's fronts (both objectives) and MAP-Elites' archive hold measured members.
   EXPECT_GT(column_where(esc("export " + reference.string() + " --table front").output, 2, "NC_nsga2", 7).size(), 10u);
   EXPECT_GT(column_where(esc("export " + reference.string() + " --table archive").output, 2, "NC_me", 6).size(), 10u);
@@ -211,7 +228,7 @@ TEST(Neat, TheExamplesStudyComparesNeatWithFixedNetworksAcrossConditions) {
   EXPECT_NE(o.output.find("no_inertia"), std::string::npos) << o.output;
   const Outcome topology = esc("export " + dir.string() + " --table topology");
   ASSERT_EQ(topology.status, 0) << topology.output;
-  EXPECT_EQ(column_where(topology.output, 1, "no_inertia", 2).empty(), false);
+  EXPECT_FALSE(column_where(topology.output, 1, "no_inertia", 2).empty());
 }
 
 }  // namespace
