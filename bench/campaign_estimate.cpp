@@ -11,6 +11,7 @@
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/genome/tree/init.hpp"
+#include "runtime/evo/es/es.hpp"
 
 namespace esc::bench {
 
@@ -25,7 +26,9 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
   eval::Evaluator evaluator(e);
   Rng rng(2024);
   std::vector<double> genome(c.genome_size());
-  const evo::gp::GpSettings gp = e.gp.value_or(evo::gp::GpSettings{});
+  const evo::gp::GpSettings gp = e.tree_operators() != nullptr ? *e.tree_operators() : evo::gp::GpSettings{};
+  const auto* given = e.settings_of<evo::EsSettings>(eval::ExperimentSpec::kDefaultNetworks);
+  const evo::EsSettings es = given != nullptr ? *given : evo::EsSettings{};
   std::int64_t steps = 0;
   const double start = thread_cpu_seconds();
   double elapsed = 0.0;
@@ -33,7 +36,7 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
     if (c.is_tree())
       genome = genome::tree::encode(genome::tree::grow(*c.primitives, c.primitives->root(), gp.init_max_depth, rng));
     else
-      for (double& g : genome) g = rng.uniform(e.es.lower, e.es.upper);
+      for (double& g : genome) g = rng.uniform(es.lower, es.upper);
     steps += evaluator.evaluate(c, genome, i).steps;
     const double before = elapsed;
     elapsed = thread_cpu_seconds() - start;
