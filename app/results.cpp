@@ -109,7 +109,7 @@ std::vector<store::RunMembers> graph_members(const std::vector<store::StoredDire
       const auto keeps = [](const store::StoredController& c) {
         const evo::Algorithm* a = evo::find_algorithm(c.algorithm);
         return c.architecture.find(control::kGraphArchitectureMark) != std::string::npos && a != nullptr &&
-               a->name != eval::ExperimentSpec::kNeat;
+               a->name != eval::ExperimentSpec::kDefaultGraphs;
       };
       if (std::none_of(e.controllers.begin(), e.controllers.end(), keeps)) continue;
       // A study's condition directory (STUDY/CONDITION) is read from its study's database.

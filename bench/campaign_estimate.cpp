@@ -10,6 +10,7 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/campaign.hpp"
 #include "runtime/eval/evaluator.hpp"
+#include "runtime/evo/es/es.hpp"
 #include "runtime/genome/graph/graph_variation.hpp"
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/genome/tree/init.hpp"
@@ -27,7 +28,9 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
   eval::Evaluator evaluator(e);
   Rng rng(2024);
   std::vector<double> genome(c.genome_size());
-  const evo::gp::GpSettings gp = e.gp.value_or(evo::gp::GpSettings{});
+  const evo::gp::GpSettings gp = e.tree_operators() != nullptr ? *e.tree_operators() : evo::gp::GpSettings{};
+  const auto* given = e.settings_of<evo::EsSettings>(eval::ExperimentSpec::kDefaultNetworks);
+  const evo::EsSettings es = given != nullptr ? *given : evo::EsSettings{};
   std::optional<genome::graph::GraphVariation> graphs;
   if (c.is_graph()) {
     const evo::Problem p = e.problem_of(c);
@@ -42,7 +45,7 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
     else if (graphs)
       genome = graphs->first(1, rng).front();
     else
-      for (double& g : genome) g = rng.uniform(e.es.lower, e.es.upper);
+      for (double& g : genome) g = rng.uniform(es.lower, es.upper);
     steps += evaluator.evaluate(c, genome, i).steps;
     const double before = elapsed;
     elapsed = thread_cpu_seconds() - start;

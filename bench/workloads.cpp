@@ -11,17 +11,23 @@
 
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/evaluator.hpp"
+#include "runtime/evo/es/es.hpp"
 
 namespace esc::bench {
 
 namespace {
+
+// The paper's ES settings of the workload's experiment.
+const evo::EsSettings& es_of(const Workload& w) {
+  return *w.experiment->settings_of<evo::EsSettings>(eval::ExperimentSpec::kDefaultNetworks);
+}
 
 // Random genomes in the gene bounds: the controllers of an early generation.
 std::vector<std::vector<double>> random_genomes(const Workload& w, std::size_t count) {
   Rng rng(12345);
   std::vector<std::vector<double>> g(count, std::vector<double>(w.controller->genome_size()));
   for (auto& genome : g)
-    for (double& x : genome) x = rng.uniform(w.experiment->es.lower, w.experiment->es.upper);
+    for (double& x : genome) x = rng.uniform(es_of(w).lower, es_of(w).upper);
   return g;
 }
 
@@ -43,7 +49,7 @@ void threads(benchmark::State& state, Workload w) {
   tbb::task_arena arena(t);
   tbb::enumerable_thread_specific<eval::Evaluator> workers([&] { return eval::Evaluator(*w.experiment); });
   // One generation of the experiment (lambda evaluations), as a run evaluates it.
-  const auto batch = static_cast<std::size_t>(w.experiment->es.lambda);
+  const auto batch = static_cast<std::size_t>(es_of(w).lambda);
   const auto genomes = random_genomes(w, batch);
   std::vector<std::int64_t> steps(batch, 0);
   std::int64_t total_steps = 0;

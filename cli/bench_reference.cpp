@@ -17,6 +17,7 @@
 #include "cli/library_path.hpp"
 #include "cli/load.hpp"
 #include "compiler/names.hpp"
+#include "runtime/evo/es/es.hpp"
 
 namespace esc::cli {
 
@@ -39,7 +40,8 @@ struct Loops {
 
   explicit Loops(const PaperWorkloads& w) {
     const auto genomes = [](const PaperWorkload& p) {
-      return bench::random_genomes(p.controller->genome_size(), kGenomes, p.experiment->es.lower, p.experiment->es.upper);
+      const auto& es = *p.experiment->settings_of<evo::EsSettings>(eval::ExperimentSpec::kDefaultNetworks);
+      return bench::random_genomes(p.controller->genome_size(), kGenomes, es.lower, es.upper);
     };
     obstacle_genomes = genomes(w.obstacle);
     energy_genomes = genomes(w.energy);

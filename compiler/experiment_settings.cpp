@@ -44,15 +44,18 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          return n.has_value();
        },
        [](const X& x) { return std::to_string(x.seed); }},
-      {"generations", "generations of the ES and of the GP",
+      {"generations", "the experiment's generations (every network's), and GP's (the trees')",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
          const auto n = read_count(v, r.key, 1, kIntMax, k);
          if (!n) return false;
-         x.es.generations = static_cast<int>(*n);
-         if (x.gp) x.gp->generations = static_cast<int>(*n);
+         x.generations = static_cast<int>(*n);
+         // And an algorithm's own generations where the experiment holds its settings (GP's).
+         for (const AlgorithmOptions& a : algorithm_options())
+           if (std::any* settings = a.held_by(x); settings != nullptr && a.has_key(r.key))
+             (void)a.set(*settings, r.key, v, k);
          return true;
        },
-       [](const X& x) { return std::to_string(x.es_generations()); }},
+       [](const X& x) { return std::to_string(x.experiment_generations()); }},
       // Resolved only when on, so that runs from before it keep their settings.
       {"stop_at_success", "end each run after the generation of its first success (`stop at success`)",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
@@ -77,10 +80,10 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          const auto i = read_word(v, r.key, names, k);
          if (!i) return false;
          x.networks = names[*i];
-         if (const AlgorithmOptions* o = find_further_algorithm(x.networks)) o->settings_in(x);
+         if (const AlgorithmOptions* o = find_algorithm_options(x.networks)) o->settings_in(x);
          return true;
        },
-       [](const X& x) { return x.networks == X::kEs ? std::string() : x.networks; }},
+       [](const X& x) { return x.networks == X::kDefaultNetworks ? std::string() : x.networks; }},
   };
   return table;
 }

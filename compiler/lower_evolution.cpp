@@ -1,12 +1,10 @@
 #include "compiler/lower_evolution.hpp"
 
 #include <algorithm>
-#include <limits>
 
 #include <fmt/format.h>
 
 #include "compiler/algorithm_options.hpp"
-#include "compiler/gp_settings.hpp"
 #include "compiler/names.hpp"
 #include "compiler/setting_values.hpp"
 #include "runtime/evo/registry.hpp"
@@ -53,7 +51,7 @@ bool in_use(const X& x, std::string_view name) {
   for (const control::ControllerSpec& c : x.controllers) {
     const evo::Algorithm* a = x.evolution_of(c).algorithm;
     if (a != nullptr && a->name == name) return true;
-    if (c.is_graph() && name == X::kNeat) return true;
+    if (c.is_graph() && name == X::kGraphOperators) return true;
   }
   return false;
 }
@@ -64,33 +62,29 @@ std::vector<std::string> algorithm_names() {
   return v;
 }
 
-bool is_further_evolve(const ast::ExpItem& item) {
+bool is_algorithm_evolve(const ast::ExpItem& item) {
   return item.kind == ast::ExpItem::Kind::Evolve && !item.refs.empty() &&
-         find_further_algorithm(item.refs[0].text) != nullptr;
+         find_algorithm_options(item.refs[0].text) != nullptr;
 }
 
-void lower_further_evolve(const ast::ExpItem& item, X& x, EvolveItems& items, Sink& sink) {
+void lower_evolve(const ast::ExpItem& item, X& x, EvolveItems& items, Sink& sink) {
   const std::string& name = item.refs[0].text;
-  if (const auto it = items.further.find(name); it != items.further.end()) {
+  if (const ast::ExpItem* first = items.of(name)) {
     sink.error(item.where, fmt::format("`evolve {}` is already given in this experiment", name))
-        .notes.emplace_back(it->second->where, "first given here");
+        .notes.emplace_back(first->where, "first given here");
     return;
   }
-  items.further.emplace(name, &item);
-  items.further_order.push_back(name);
-  const AlgorithmOptions& o = *find_further_algorithm(name);
-  o.lower(item, o.settings_in(x), sink);
-  if (!item.generations || !item.generations->finite) return;
-  if (const auto n = read_count(as_value(*item.generations), "generations", 1, std::numeric_limits<int>::max(), sink))
-    x.es.generations = static_cast<int>(*n);
+  items.given.emplace(name, &item);
+  items.order.push_back(name);
+  find_algorithm_options(name)->lower(item, x, sink);
 }
 
 void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<const ast::Name*>& compared,
                        const std::vector<const ast::Name*>& by, const EvolveItems& items, Sink& sink) {
-  // Networks compared without `by`: the ES, unless the experiment names another algorithm
-  // for networks and not the ES.
-  if (items.es == nullptr)
-    for (const std::string& name : items.further_order)
+  // Networks compared without `by`: the default's (the ES), unless the experiment names
+  // another algorithm for networks and not the default.
+  if (items.of(x.networks) == nullptr)
+    for (const std::string& name : items.order)
       if (evo::find_algorithm(name)->kinds.has(genome::GenomeKind::Vector)) {
         x.networks = name;
         break;
@@ -112,7 +106,8 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
     }
     x.controllers[i].evolved_by = name.text;
   }
-  // The experiment's generations, given once: by the ES or by one other algorithm.
+  // The experiment's generations, given once, by one algorithm's `evolve` (GP's are its own:
+  // the trees').
   const auto generations_of = [](const ast::ExpItem* item) -> const SourceRange* {
     if (item == nullptr) return nullptr;
     if (item->generations) return &item->generations->where;
@@ -120,9 +115,10 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
       if (o.name.text == "generations") return &o.where;
     return nullptr;
   };
-  const SourceRange* first = generations_of(items.es);
-  for (const std::string& name : items.further_order) {
-    const SourceRange* here = generations_of(items.further.at(name));
+  const SourceRange* first = nullptr;
+  for (const std::string& name : items.order) {
+    if (find_algorithm_options(name)->has_key("generations")) continue;
+    const SourceRange* here = generations_of(items.of(name));
     if (here == nullptr) continue;
     if (first == nullptr) {
       first = here;
@@ -136,17 +132,22 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
   bool any_network = false;
   for (const control::ControllerSpec& c : x.controllers)
     any_network = any_network || genome_kind(c) == genome::GenomeKind::Vector;
-  if (first != nullptr && !any_network && items.gp != nullptr && !x.controllers.empty())
+  const ast::ExpItem* operators = items.of(X::kTreeOperators);
+  if (first != nullptr && !any_network && operators != nullptr && !x.controllers.empty())
     sink.error(*first, fmt::format("these generations are the networks', and experiment `{}` compares only trees",
                                    d.name.text))
         .help.push_back("trees run for the GP's generations: `evolve gp(...) for N generations`");
-  // Every algorithm in use has its settings (its defaults when no `evolve` gives them); an
-  // `evolve` of another algorithm that evolves none of the compared controllers is a mistake.
-  for (std::size_t i = 0; i < x.controllers.size(); ++i)
-    if (const AlgorithmOptions* o = find_further_algorithm(algorithm_of(x, i))) o->settings_in(x);
-  for (const std::string& name : items.further_order) {
-    if (in_use(x, name)) continue;
-    const ast::ExpItem& item = *items.further.at(name);
+  // Every algorithm in use has its settings (its defaults when no `evolve` gives them), but
+  // GP, whose settings only the script gives (a tree without them is reported below); an
+  // `evolve` of an algorithm held only where it is used that evolves none of the compared
+  // controllers is a mistake (the ES's settings are in every experiment, GP's vary every tree).
+  for (std::size_t i = 0; i < x.controllers.size(); ++i) {
+    const AlgorithmOptions* o = find_algorithm_options(algorithm_of(x, i));
+    if (o != nullptr && o->scope != evo::SettingsScope::Given) o->settings_in(x);
+  }
+  for (const std::string& name : items.order) {
+    if (find_algorithm_options(name)->scope != evo::SettingsScope::InUse || in_use(x, name)) continue;
+    const ast::ExpItem& item = *items.of(name);
     const evo::Algorithm& a = *evo::find_algorithm(name);
     Diagnostic& diag = sink.error(item.refs[0].where, fmt::format("`evolve {}` evolves none of the controllers "
                                                                   "experiment `{}` compares", name, d.name.text));
@@ -164,42 +165,58 @@ void choose_algorithms(const ast::ExperimentDecl& d, X& x, const std::vector<con
   for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i) {
     const control::ControllerSpec& c = x.controllers[i];
     const std::string a = algorithm_of(x, i);
-    if (c.is_tree() && a == X::kGp && items.gp == nullptr) {
+    if (c.is_tree() && a == X::kTreeOperators && operators == nullptr) {
       sink.error(compared[i]->where, fmt::format("`{}` is a tree controller, but experiment `{}` has no "
                                                  "`evolve gp(...)` to evolve it", c.name, d.name.text))
           .help.push_back("add `evolve gp(population 150, tournament 7) for 50 generations`");
-    } else if (c.is_tree() && items.gp == nullptr) {
+    } else if (c.is_tree() && operators == nullptr) {
       // Every algorithm varies trees with the GP's operators (runtime/genome/tree/tree_variation.hpp).
       sink.error(compared[i]->where, fmt::format("`{}` is a tree controller evolved by `{}`, but experiment `{}` has no "
                                                  "`evolve gp(...)` to give its tree operators", c.name, a, d.name.text))
           .help.push_back(fmt::format("add `evolve gp(max_depth 12, max_size 100) for 50 generations`: `{}` selects, "
                                       "the GP's crossover and mutations vary, for the GP's generations", a));
-    } else if (genome_kind(c) == genome::GenomeKind::Vector && a == X::kEs && items.gp != nullptr &&
-               items.es == nullptr) {
+    } else if (genome_kind(c) == genome::GenomeKind::Vector && a == X::kDefaultNetworks && operators != nullptr &&
+               items.of(X::kDefaultNetworks) == nullptr) {
       sink.error(compared[i]->where, fmt::format("`{}` is a network, but experiment `{}` only evolves trees "
                                                  "(`evolve gp`)", c.name, d.name.text))
           .help.push_back("networks are evolved by the ES: add `evolve es(mu 30, lambda 150) for 250 generations`");
     }
   }
-  if (items.gp != nullptr)
-    if (std::string m = check_gp(x); !m.empty()) sink.error(items.gp->where, m);
-  for (const auto& [name, item] : items.further) check_further_settings(x, item->where, sink, name);
+  if (operators != nullptr)
+    if (std::string m = check_tree_operators(x); !m.empty()) sink.error(operators->where, m);
+  for (const auto& [name, item] : items.given) check_algorithm_settings(x, item->where, sink, name);
 }
 
-void check_further_settings(const X& x, const SourceRange& where, Sink& sink, std::string_view algorithm) {
+void check_algorithm_settings(const X& x, const SourceRange& where, Sink& sink, std::string_view algorithm) {
   for (std::size_t i = 0; i < x.controllers.size(); ++i) {
     const std::string a = algorithm_of(x, i);
-    if (!algorithm.empty() && a != algorithm) continue;
-    const AlgorithmOptions* o = find_further_algorithm(a);
-    const auto s = x.algorithm_settings.find(a);
-    if (o == nullptr || s == x.algorithm_settings.end()) continue;
+    if ((!algorithm.empty() && a != algorithm) || a == X::kTreeOperators) continue;
+    const AlgorithmOptions* o = find_algorithm_options(a);
+    const std::any* s = o != nullptr ? o->held_by(x) : nullptr;
+    if (s == nullptr) continue;
     // A tree without `evolve gp` is reported at its name in `compare` (choose_algorithms).
-    if (x.controllers[i].is_tree() && !x.gp) continue;
-    if (std::string m = o->problem(s->second, x.problem_of(x.controllers[i])); !m.empty()) {
+    if (x.controllers[i].is_tree() && x.tree_operators() == nullptr) continue;
+    if (std::string m = o->problem(*s, x.problem_of(x.controllers[i])); !m.empty()) {
       sink.error(where, fmt::format("impossible {} settings for `{}`: {}", o->what, x.controllers[i].name, m));
       return;
     }
   }
+}
+
+std::string check_tree_operators(const X& x) {
+  const AlgorithmOptions& gp = *find_algorithm_options(X::kTreeOperators);
+  const std::any* s = gp.held_by(x);
+  if (s == nullptr) return {};
+  bool any_tree = false;
+  for (const control::ControllerSpec& c : x.controllers) {
+    if (!c.is_tree()) continue;
+    any_tree = true;
+    if (std::string m = gp.problem(*s, x.problem_of(c)); !m.empty())
+      return fmt::format("impossible {} settings for tree controller `{}`: {}", gp.what, c.name, m);
+  }
+  if (std::string m = any_tree ? std::string() : gp.problem(*s, evo::Problem{}); !m.empty())
+    return fmt::format("impossible {} settings: {}", gp.what, m);
+  return {};
 }
 
 }  // namespace esc::compiler

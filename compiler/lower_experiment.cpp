@@ -7,9 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "compiler/es_options.hpp"
+#include "compiler/algorithm_options.hpp"
 #include "compiler/experiment_settings.hpp"
-#include "compiler/gp_settings.hpp"
 #include "compiler/lower_evolution.hpp"
 #include "compiler/lower_objectives.hpp"
 #include "compiler/lower_success.hpp"
@@ -51,10 +50,6 @@ auto lowered(Resolver& names, Lowering& lowering, const ast::Name& ref, const D*
   return l != nullptr && *l ? &**l : nullptr;
 }
 
-bool is_gp(const ast::ExpItem& item) {
-  return item.kind == K::Evolve && !item.refs.empty() && item.refs[0].text == "gp";
-}
-
 }  // namespace
 
 const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::ExperimentDecl& d) {
@@ -66,6 +61,9 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
 
   eval::ExperimentSpec x;
   x.name = d.name.text;
+  // The settings every experiment holds (the ES's), its defaults until `evolve` gives them.
+  for (const AlgorithmOptions& a : algorithm_options())
+    if (a.scope == evo::SettingsScope::Always) a.settings_in(x);
   Items first;
   const ast::ArenaDecl* arena_decl = nullptr;
   const LoweredArena* arena = nullptr;
@@ -88,25 +86,14 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   };
 
   for (const ast::ExpItem& item : d.items) {
-    // `evolve gp(...)` evolves the trees, beside an `evolve es(...)` for the networks, and
-    // any other algorithm beside them.
-    if (is_further_evolve(item)) {
-      lower_further_evolve(item, x, evolve, sink_);
+    // `evolve NAME(...)`: `es` for the networks, `gp` for the trees, any other beside them.
+    if (is_algorithm_evolve(item)) {
+      lower_evolve(item, x, evolve, sink_);
       continue;
     }
     // Objectives and descriptors: as many as the experiment declares.
     if (item.kind == K::Objective || item.kind == K::Descriptor) {
       (item.kind == K::Objective ? objective_items.objectives : objective_items.descriptors).push_back(&item);
-      continue;
-    }
-    if (is_gp(item)) {
-      if (evolve.gp != nullptr) {
-        sink_.error(item.where, "`evolve gp` is already given in this experiment")
-            .notes.emplace_back(evolve.gp->where, "first given here");
-        continue;
-      }
-      evolve.gp = &item;
-      lower_gp_item(item, x, sink_);
       continue;
     }
     auto [it, fresh] = first.try_emplace(item.kind, &item);
@@ -166,17 +153,13 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
         else ok = false;
         break;
       case K::Evolve: {
+        // Not a registered algorithm's (is_algorithm_evolve, above).
         const ast::Name& method = item.refs[0];
-        if (method.text != "es") {
-          Diagnostic& diag = sink_.error(method.where, fmt::format("unknown evolution method `{}`", method.text));
-          suggest(diag, method.text, algorithm_names());
-          diag.help.push_back("write `evolve es(mu 30, lambda 150, comma) for 250 generations` (networks)");
-          diag.help.push_back("or `evolve gp(population 150, tournament 7) for 50 generations` (tree controllers)");
-          diag.help.push_back(fmt::format("algorithms: {}", quoted_list(algorithm_names())));
-          break;
-        }
-        evolve.es = &item;
-        lower_es_item(item, x.es, sink_);
+        Diagnostic& diag = sink_.error(method.where, fmt::format("unknown evolution method `{}`", method.text));
+        suggest(diag, method.text, algorithm_names());
+        diag.help.push_back("write `evolve es(mu 30, lambda 150, comma) for 250 generations` (networks)");
+        diag.help.push_back("or `evolve gp(population 150, tournament 7) for 50 generations` (tree controllers)");
+        diag.help.push_back(fmt::format("algorithms: {}", quoted_list(algorithm_names())));
         break;
       }
       case K::StartFrom:
@@ -326,10 +309,7 @@ void ExperimentLowering::add_dependencies(eval::ExperimentSpec& x,
 void ExperimentLowering::check_start_from(const ast::ExperimentDecl& from, const Items& first,
                                           const EvolveItems& evolves) {
   const ast::ExpItem& item = *first.at(K::StartFrom);
-  const ast::ExpItem* evolve = evolves.es != nullptr   ? evolves.es
-                               : evolves.gp != nullptr ? evolves.gp
-                               : evolves.further.empty() ? nullptr
-                                                         : evolves.further.at(evolves.further_order.front());
+  const ast::ExpItem* evolve = evolves.order.empty() ? nullptr : evolves.of(evolves.order.front());
   if (item.evaluate_only && evolve != nullptr) {
     Diagnostic& diag =
         sink_.error(evolve->where, "an experiment that evaluates stored controllers evolves nothing");

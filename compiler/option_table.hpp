@@ -1,10 +1,8 @@
 #pragma once
-// The table shape of a settings group whose options scripts write in `evolve es(...)` and
-// `evolve gp(...)`: one row per option (its key in scripts, `--set` and resolved settings,
-// how it is written, how its value is read and checked, its text), the lookups, and the
-// reading of a script's option list, shared by the ES and the GP.
-#include <cmath>
-#include <limits>
+// The table shape of the options scripts write in `evolve NAME(...)`: one row per option
+// (its key in scripts, `--set` and resolved settings, how it is written, how its value is
+// read and checked, its text), the lookups, and the reading of a script's option list
+// (algorithm_options.hpp makes the rows from each algorithm's own table).
 #include <map>
 #include <string>
 #include <string_view>
@@ -14,11 +12,9 @@
 
 #include "compiler/ast.hpp"
 #include "compiler/names.hpp"
-#include "compiler/quantities.hpp"
 #include "compiler/setting_values.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/evo/algorithm_options.hpp"
-#include "runtime/evo/limits.hpp"
 
 namespace esc::compiler {
 
@@ -34,87 +30,12 @@ struct OptionRow {
   std::string (*text)(const OptionRow& o, const Settings& s);
   std::vector<std::string> words = {};   // a choice's values, in the order of its enum
   // False for the ES's `generations`: `--set generations` and the resolved `generations`
-  // are the experiment's, for the ES and the GP alike.
+  // are the experiment's.
   bool own_key = true;
-  // The algorithm's own row, where the table is read from its folder (algorithm_options.hpp).
+  // The algorithm's own row (runtime/evo/algorithm_options.hpp).
   const evo::AlgorithmOption* option = nullptr;
+  std::string example = {};   // a range's, in messages: its default (`[-1, 1]`)
 };
-
-// A whole number of at least Min into an int field; its text. A field, here and below, is
-// a member pointer of Settings or of a base it extends (GP's settings extend the tree
-// kind's operators, runtime/genome/tree/tree_operators.hpp).
-template <class Settings, auto Field, long long Min>
-bool read_whole(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
-  const auto n = read_count(v, o.key, Min, std::numeric_limits<int>::max(), sink);
-  if (n) s.*Field = static_cast<int>(*n);
-  return n.has_value();
-}
-template <class Settings, auto Field>
-std::string whole_text(const OptionRow<Settings>&, const Settings& s) {
-  return std::to_string(s.*Field);
-}
-
-// What a plain number must be.
-enum class RealRange { Probability, Positive, NonNegative };
-
-// A plain number in its range, and at most *Max when given (the algorithm's limit that keeps
-// its arithmetic finite), into a double field; its text. A pointer, since clang 14 (the fuzz
-// build) takes no double template argument.
-template <class Settings, auto Field, RealRange R, const double* Max = nullptr>
-bool read_real(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
-  const auto x = read_quantity(v, o.key, Dim::None, sink);
-  if (!x) return false;
-  const bool ok = R == RealRange::Probability ? *x >= 0.0 && *x <= 1.0
-                  : R == RealRange::Positive  ? *x > 0.0
-                                              : *x >= 0.0;
-  if (!ok) {
-    sink.error(v.where, fmt::format("`{}` {}, found {}", o.key,
-                                    R == RealRange::Probability ? "is a probability in [0, 1]"
-                                    : R == RealRange::Positive  ? "must be greater than 0"
-                                                                : "must be at least 0",
-                                    number_text(*x)));
-    return false;
-  }
-  if constexpr (Max != nullptr) {
-    if (*x > *Max) {
-      sink.error(v.where, fmt::format("`{}` must be at most {}, found {}", o.key, number_text(*Max), number_text(*x)));
-      return false;
-    }
-  }
-  s.*Field = *x;
-  return true;
-}
-template <class Settings, auto Field>
-std::string real_text(const OptionRow<Settings>&, const Settings& s) {
-  return number_text(s.*Field);
-}
-
-// `bounds [LO, HI]` of the genes (a network's weights), within +-evo::kMaxGeneBound, into
-// the `lower` and `upper` fields; its text.
-template <class Settings>
-bool read_gene_bounds(const OptionRow<Settings>& o, Settings& s, const ast::Value& v, Sink& sink) {
-  const auto r = read_range(v, o.key, "[-1, 1]", sink);
-  if (!r) return false;
-  if (std::abs(r->first) > evo::kMaxGeneBound || std::abs(r->second) > evo::kMaxGeneBound) {
-    sink.error(v.where, fmt::format("bounds must lie within [-{0}, {0}], found [{1}, {2}]", number_text(evo::kMaxGeneBound),
-                                    number_text(r->first), number_text(r->second)))
-        .help.push_back("beyond that the steps and the networks' sums lose their precision and can overflow; "
-                        "scale the inputs instead");
-    return false;
-  }
-  if (!(r->first < r->second)) {
-    sink.error(v.where, fmt::format("empty bounds: the lower bound ({}) must be below the upper ({})",
-                                    number_text(r->first), number_text(r->second)));
-    return false;
-  }
-  s.lower = r->first;
-  s.upper = r->second;
-  return true;
-}
-template <class Settings>
-std::string gene_bounds_text(const OptionRow<Settings>&, const Settings& s) {
-  return fmt::format("[{}, {}]", number_text(s.lower), number_text(s.upper));
-}
 
 // The row an option written `word` sets: its key, or one of a choice's words.
 template <class Settings>
@@ -157,12 +78,13 @@ std::vector<std::string> option_keys(const std::vector<OptionRow<Settings>>& tab
 
 // `evolve METHOD(OPTIONS) [for N generations]` into `s`: reports an unknown option (with
 // "did you mean"), one whose setting is already given, one written with the wrong shape,
-// and each value its row refuses. `what` names the group in messages ("ES"); `defaults`
-// gives the example shown for a value written with the wrong shape.
+// and each value its row refuses. `for N generations` is read by the `generations` row where
+// the table has one (else by the caller). `what` names the group in messages ("ES");
+// `defaults` gives the example shown for a value written with the wrong shape.
 template <class Settings>
 void read_options(const ast::ExpItem& item, std::string_view method, std::string_view what,
                   const std::vector<OptionRow<Settings>>& table, Settings& s, Sink& sink,
-                  const Settings& defaults = Settings{}) {
+                  const Settings& defaults) {
   std::map<const OptionRow<Settings>*, const ast::EsOption*> seen;
   for (const ast::EsOption& o : item.options) {
     const std::string& n = o.name.text;
@@ -181,8 +103,8 @@ void read_options(const ast::ExpItem& item, std::string_view method, std::string
     }
     if (const auto v = option_value(o, row->shape, row->text(*row, defaults), sink)) (void)row->read(*row, s, *v, sink);
   }
-  if (!item.generations) return;
   const OptionRow<Settings>* generations = find_option_word(table, "generations");
+  if (!item.generations || generations == nullptr) return;
   if (seen.count(generations) != 0)
     sink.error(item.generations->where, fmt::format("the number of generations is already given in `{}(...)`", method));
   else if (item.generations->finite)

@@ -14,9 +14,7 @@
 #include "compiler/algorithm_options.hpp"
 #include "compiler/arena_settings.hpp"
 #include "compiler/compiler.hpp"
-#include "compiler/es_options.hpp"
 #include "compiler/experiment_settings.hpp"
-#include "compiler/gp_settings.hpp"
 #include "compiler/lower_evolution.hpp"
 #include "compiler/names.hpp"
 #include "compiler/robot_settings.hpp"
@@ -73,8 +71,13 @@ std::optional<std::string_view> in_group(std::string_view key, std::string_view 
   return key.substr(group.size());
 }
 
-// `cmaes.`: the prefix of an algorithm's `--set` keys.
-std::string group_of(const AlgorithmOptions& a) { return std::string(a.name) + "."; }
+// `key` without algorithm a's group (`cmaes.`), when it is one of a's keys or, for a group of
+// its own, names it (an unknown key of a group is reported as that group's).
+std::optional<std::string_view> algorithm_key(const AlgorithmOptions& a, std::string_view key) {
+  const auto name = in_group(key, a.group);
+  if (!name || (a.group.empty() && !a.has_key(*name))) return std::nullopt;
+  return name;
+}
 
 // What the experiment reads has its goal and sensors: a setting may take one away
 // (`robot.radars=0` under a fitness that reads `radar[0]`). One error says it.
@@ -100,57 +103,51 @@ std::string trimmed(std::string_view t) {
 std::vector<std::string> setting_keys() {
   std::vector<std::string> k;
   for (const ExperimentSetting& s : experiment_settings()) k.emplace_back(s.key);
-  for (const auto& group : {option_keys(es_options()), prefixed(kArenaGroup, arena_setting_names()),
-                            prefixed(kRobotGroup, robot_setting_names()), option_keys(gp_options(), kGpGroup)})
+  // The bare keys (the ES's), the arena's and the robot's, then every algorithm's group.
+  for (const AlgorithmOptions& a : algorithm_options())
+    if (a.group.empty()) {
+      const auto keys = a.keys();
+      k.insert(k.end(), keys.begin(), keys.end());
+    }
+  for (const auto& group : {prefixed(kArenaGroup, arena_setting_names()), prefixed(kRobotGroup, robot_setting_names())})
     k.insert(k.end(), group.begin(), group.end());
-  for (const AlgorithmOptions& a : further_algorithms()) {
-    const auto keys = prefixed(group_of(a), a.keys());
-    k.insert(k.end(), keys.begin(), keys.end());
-  }
+  for (const AlgorithmOptions& a : algorithm_options())
+    if (!a.group.empty()) {
+      const auto keys = prefixed(a.group, a.keys());
+      k.insert(k.end(), keys.begin(), keys.end());
+    }
   return k;
 }
 
 bool is_setting_group(std::string_view word) {
-  for (const std::string_view group : {kRobotGroup, kArenaGroup, kGpGroup})
+  for (const std::string_view group : {kRobotGroup, kArenaGroup})
     if (group.substr(0, group.size() - 1) == word) return true;
-  return find_further_algorithm(word) != nullptr;
+  const AlgorithmOptions* a = find_algorithm_options(word);
+  return a != nullptr && !a->group.empty();
 }
 
 bool setting_takes_range(std::string_view key) {
-  if (const EsOption* o = find_option_key(es_options(), key)) return o->shape == OptionShape::Range;
-  for (const AlgorithmOptions& a : further_algorithms())
-    if (const auto name = in_group(key, group_of(a))) return a.takes_range(*name);
-  const auto name = in_group(key, kGpGroup);
-  if (!name) return false;
-  const GpOption* o = find_option_key(gp_options(), *name);
-  return o != nullptr && o->shape == OptionShape::Range;
+  for (const AlgorithmOptions& a : algorithm_options())
+    if (const auto name = algorithm_key(a, key)) return a.takes_range(*name);
+  return false;
 }
 
 bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink,
                  std::string_view scope) {
   const std::string& k = key.text;
   if (const ExperimentSetting* s = find_experiment_setting(k)) return s->read(*s, spec, value, sink);
-  if (const EsOption* o = find_option_key(es_options(), k)) return o->read(*o, spec.es, value, sink);
-  if (const auto name = in_group(k, kGpGroup)) {
-    const GpOption* o = find_option_key(gp_options(), *name);
-    if (o == nullptr) {
-      unknown(sink, key, "GP setting", *name, kGpGroup, option_keys(gp_options()), scope);
-      return false;
-    }
-    // An experiment without GP settings checks the value and ignores it: the experiments
-    // its evolved behaviors come from get the same `--set`.
-    evo::gp::GpSettings scratch = spec.gp.value_or(evo::gp::GpSettings{});
-    if (!o->read(*o, scratch, value, sink)) return false;
-    if (spec.gp) spec.gp = scratch;
-    return true;
-  }
-  for (const AlgorithmOptions& a : further_algorithms()) {
-    const std::string group = group_of(a);
-    const auto name = in_group(k, group);
+  for (const AlgorithmOptions& a : algorithm_options()) {
+    const auto name = algorithm_key(a, k);
     if (!name) continue;
     if (!a.has_key(*name)) {
-      unknown(sink, key, fmt::format("{} setting", a.what), *name, group, a.keys(), scope);
+      unknown(sink, key, fmt::format("{} setting", a.what), *name, a.group, a.keys(), scope);
       return false;
+    }
+    // Settings only the script gives (GP's) are checked and dropped where there are none: the
+    // experiments an experiment's evolved behaviors come from get the same `--set`.
+    if (a.scope == evo::SettingsScope::Given && a.held_by(spec) == nullptr) {
+      std::any scratch = a.defaults();
+      return a.set(scratch, *name, value, sink);
     }
     // Kept even where the algorithm evolves nothing yet: `--set networks=cmaes` may follow.
     return a.set(a.settings_in(spec), *name, value, sink);
@@ -191,9 +188,14 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
 
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
   const int errors = sink.errors();
-  if (const auto p = es_problem(spec.es)) sink.error(where, p->message).help.push_back(p->help);
-  if (std::string m = check_gp(spec); !m.empty()) sink.error(where, m);
-  check_further_settings(spec, where, sink);
+  for (const AlgorithmOptions& a : algorithm_options())
+    if (const std::any* s = a.held_by(spec))
+      if (const evo::OptionRefusal c = a.conflict(*s); !c.empty()) {
+        Diagnostic& d = sink.error(where, c.message);
+        if (!c.help.empty()) d.help.push_back(c.help);
+      }
+  if (std::string m = check_tree_operators(spec); !m.empty()) sink.error(where, m);
+  check_algorithm_settings(spec, where, sink);
   const RuleContext context{&spec.arena, spec.arena_name, &spec.robot};
   const auto robot = sim::robot_problems(spec.robot);
   const auto arena = sim::arena_problems(spec.arena);
@@ -217,8 +219,6 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   if (spec.start_from)
     r["start_from"] = fmt::format("{} from experiment {}", spec.start_from->evaluate_only ? "evaluate" : "start",
                                   spec.start_from->experiment);
-  for (const EsOption& o : es_options())
-    if (o.own_key) r[std::string(o.key)] = o.text(o, spec.es);
   resolve_arena_settings(spec);
   for (const RobotSetting& s : robot_settings())
     r[std::string(kRobotGroup).append(s.name)] = robot_value_text(s, spec.robot);
@@ -227,15 +227,13 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   for (const auto& c : spec.controllers)
     names += (names.empty() ? "" : ", ") + c.name + (c.evolved_by.empty() ? "" : " by " + c.evolved_by);
   r["compare"] = names;
-  resolve_gp_settings(spec);
-  // Another algorithm's settings where it evolves a compared controller, only: a run from
-  // before it keeps its settings, and its dependencies theirs.
-  for (const AlgorithmOptions& a : further_algorithms()) {
-    const std::string group = group_of(a);
-    for (auto it = r.begin(); it != r.end();) it = it->first.starts_with(group) ? r.erase(it) : std::next(it);
-    if (const auto s = spec.algorithm_settings.find(std::string(a.name));
-        s != spec.algorithm_settings.end() && in_use(spec, a.name))
-      a.resolve(s->second, r);
+  // Each algorithm's settings where the experiment holds them, and one held where it is used
+  // only where it evolves a compared controller: a run from before it keeps its settings, and
+  // its dependencies theirs.
+  for (const AlgorithmOptions& a : algorithm_options()) {
+    a.unresolve(r);
+    const std::any* s = a.held_by(spec);
+    if (s != nullptr && (a.scope != evo::SettingsScope::InUse || in_use(spec, a.name))) a.resolve(*s, r);
   }
   for (const eval::DependencySetting& d : spec.dependency_settings)
     r[fmt::format("{}.{}", fmt::join(d.path, "."), d.key)] = d.value;

@@ -1,8 +1,9 @@
 #pragma once
 // Every key of `esc run --set KEY=VALUE`, each read by the table of its group (the
-// experiment's own settings, the ES options, `gp.*`, `robot.*`, `arena.*`) with the script's
-// spellings, units and checks; the checks of a whole experiment's settings (options that
-// relate, the GP engine's, the runtime's rules for the robot and the arena); and the
+// experiment's own settings, each algorithm's: the ES's bare, `gp.*`, `cmaes.*`, ...;
+// `robot.*`, `arena.*`) with the script's spellings, units and checks; the checks of a
+// whole experiment's settings (options that relate, each algorithm's, the tree operators',
+// the runtime's rules for the robot and the arena); and the
 // resolved settings. `apply_setting` (compiler.hpp) is set_setting + check_settings on
 // text; a script construct that varies a key over values written in the script can call
 // the same two functions with its own values and locations.
@@ -19,10 +20,11 @@ namespace esc::compiler {
 // Every `--set` key, for "did you mean" and the documentation.
 [[nodiscard]] std::vector<std::string> setting_keys();
 
-// The groups of settings: `robot.NAME` is read by the robot's table, and so on.
-inline constexpr std::string_view kRobotGroup = "robot.", kArenaGroup = "arena.", kGpGroup = "gp.";
+// The groups of settings: `robot.NAME` is read by the robot's table, and so on; each
+// algorithm's, `gp.NAME`, by its own (algorithm_options.hpp).
+inline constexpr std::string_view kRobotGroup = "robot.", kArenaGroup = "arena.";
 
-// Whether `word` begins the keys of a group of settings: `robot`, `arena`, `gp`.
+// Whether `word` begins the keys of a group of settings: `robot`, `arena`, `gp`, `cmaes`, ...
 [[nodiscard]] bool is_setting_group(std::string_view word);
 
 // Whether `key`'s value is a range (`bounds`, `gp.init_depth`).
@@ -34,8 +36,9 @@ inline constexpr std::string_view kRobotGroup = "robot.", kArenaGroup = "arena."
 bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Value& value, Sink& sink,
                  std::string_view scope = {});
 
-// The checks of the settings together, reported at `where`: ES options that relate (comma
-// needs lambda >= mu), the GP settings against the trees' primitives, and the runtime's
+// The checks of the settings together, reported at `where`: an algorithm's options that
+// relate (the ES's comma needs lambda >= mu), its settings against the controllers it
+// evolves, the tree operators against the trees' primitives, and the runtime's
 // rules for the robot, the arena and the robot in it. False when one fails.
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
 

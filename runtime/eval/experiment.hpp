@@ -15,7 +15,6 @@
 #include "runtime/control/controller.hpp"
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/control/graph_net.hpp"
-#include "runtime/evo/es/es.hpp"
 #include "runtime/evo/gp/gp.hpp"
 #include "runtime/evo/neat/neat_settings.hpp"
 #include "runtime/evo/registry.hpp"
@@ -169,10 +168,18 @@ struct Evolution {
 inline constexpr int kMembersEvery = 10;
 
 struct ExperimentSpec {
-  // The paper's algorithms, whose settings have fields of their own (`es`, `gp`).
-  static constexpr const char* kEs = "es";
-  static constexpr const char* kGp = "gp";
-  static constexpr const char* kNeat = "neat";
+  // What evolves a compared controller the script names no algorithm for: a network, a tree,
+  // a `neat(...)` network.
+  static constexpr const char* kDefaultNetworks = "es";
+  static constexpr const char* kDefaultTrees = "gp";
+  static constexpr const char* kDefaultGraphs = "neat";
+  // The algorithm whose settings hold the tree kind's operators and the trees' generations:
+  // every algorithm that evolves trees varies them with GP's (`evolve gp(...)`).
+  static constexpr const char* kTreeOperators = "gp";
+  // The algorithm whose settings hold the graph kind's operators: every algorithm that
+  // evolves `neat(...)` networks varies them with NEAT's (`evolve neat(...)`, else its
+  // defaults).
+  static constexpr const char* kGraphOperators = "neat";
 
   std::string name;
   std::string arena_name;
@@ -198,15 +205,16 @@ struct ExperimentSpec {
   int steps = 150;                  // control steps per epoch (at most)
   int runs = 10;
   std::uint64_t seed = 1;
-  evo::EsSettings es;                 // the ES's settings, and the experiment's generations
-  // `evolve gp(...)`: evolves the tree controllers (the compiler requires it when one is
-  // compared). Its primitive set is each tree controller's own.
-  std::optional<evo::gp::GpSettings> gp;
-  // The settings of every other algorithm a compared controller is evolved by, by its name
-  // (the algorithm's own settings type: evo::CmaesSettings for `cmaes`, ...).
+  // The experiment's generations: every network's, and a tree's without GP's settings (trees
+  // run for GP's own `generations`, generations_for).
+  int generations = 250;
+  // The settings of the algorithms, by name (the algorithm's own settings type:
+  // evo::EsSettings for `es`, evo::gp::GpSettings for `gp`, ...): the ES's in every compiled
+  // experiment, GP's where the script gives them (`evolve gp(...)`, the trees' operators),
+  // another's where it evolves a compared controller or the script gives them.
   std::map<std::string, std::any> algorithm_settings;
   // What evolves the networks compared without `by` (`--set networks=cmaes`).
-  std::string networks{kEs};
+  std::string networks{kDefaultNetworks};
   std::vector<control::ControllerSpec> controllers;   // the `compare` list, in order
   // Distinct choice ids over the compared controllers (control::Choice::id is below it): the
   // counts an end term can read.
@@ -248,17 +256,26 @@ struct ExperimentSpec {
   }
 
   // The algorithm that evolves `c`: the one its `by` names, else `networks` for a network,
-  // GP for a tree and NEAT for a `neat(...)` network; with its settings (`es`, `gp`, or algorithm_settings).
+  // GP for a tree and NEAT for a `neat(...)` network; with its settings (algorithm_settings).
   [[nodiscard]] Evolution evolution_of(const control::ControllerSpec& c) const {
     const std::string& by = !c.evolved_by.empty() ? c.evolved_by
-                            : c.is_tree()          ? kGp
-                            : c.is_graph()         ? kNeat
+                            : c.is_tree()          ? kDefaultTrees
+                            : c.is_graph()         ? kDefaultGraphs
                                                    : networks;
     Evolution e{evo::find_algorithm(by), {}};
-    if (by == kEs) e.settings = es;
-    else if (by == kGp) e.settings = gp ? std::any(*gp) : std::any();
-    else if (const auto it = algorithm_settings.find(by); it != algorithm_settings.end()) e.settings = it->second;
+    if (const auto it = algorithm_settings.find(by); it != algorithm_settings.end()) e.settings = it->second;
     return e;
+  }
+  // The settings of the algorithm called `algorithm`, of its own type S; null where the
+  // experiment holds none.
+  template <class S>
+  [[nodiscard]] const S* settings_of(const std::string& algorithm) const {
+    const auto it = algorithm_settings.find(algorithm);
+    return it == algorithm_settings.end() ? nullptr : std::any_cast<S>(&it->second);
+  }
+  // The trees' operators and generations (GP's settings); null without `evolve gp`.
+  [[nodiscard]] const evo::gp::GpSettings* tree_operators() const {
+    return settings_of<evo::gp::GpSettings>(kTreeOperators);
   }
 
   // The slot of an end term's first step aggregate: after the frame, `steps` and the counts.
@@ -271,11 +288,12 @@ struct ExperimentSpec {
   [[nodiscard]] bool minimized(std::size_t i) const noexcept { return i < objectives.size() && objectives[i].minimize; }
   // Objective i's value as optimizers see it from the value as declared, and back.
   [[nodiscard]] double as_declared(std::size_t i, double v) const noexcept { return minimized(i) ? -v : v; }
-  // Generations the networks evolve for: 1 when only evaluating stored controllers.
-  [[nodiscard]] int es_generations() const noexcept { return evaluates_only() ? 1 : es.generations; }
-  // Generations a compared controller evolves for: the GP's for a tree, else es_generations().
-  [[nodiscard]] int generations_for(const control::ControllerSpec& c) const noexcept {
-    return c.is_tree() && gp && !evaluates_only() ? gp->generations : es_generations();
+  // The experiment's generations as run: 1 when only evaluating stored controllers.
+  [[nodiscard]] int experiment_generations() const noexcept { return evaluates_only() ? 1 : generations; }
+  // Generations a compared controller evolves for: GP's for a tree, else the experiment's.
+  [[nodiscard]] int generations_for(const control::ControllerSpec& c) const {
+    const evo::gp::GpSettings* trees = c.is_tree() ? tree_operators() : nullptr;
+    return trees != nullptr && !evaluates_only() ? trees->generations : experiment_generations();
   }
   // Individuals a compared controller evaluates in its first generation: its algorithm's
   // population (the ES's lambda, GP's population, ...), or 1 when the experiment only
@@ -296,13 +314,12 @@ struct ExperimentSpec {
     p.genome_size = c.genome_size();
     p.tree.primitives = c.primitives.get();
     if (c.is_graph()) {
-      const auto neat = algorithm_settings.find(kNeat);
+      const evo::NeatSettings* neat = settings_of<evo::NeatSettings>(kGraphOperators);
       p.graph = {c.mlp.inputs.size(), static_cast<std::size_t>(c.output_count()),
                  control::graph_activation(control::output_activation(c.head)),
-                 evo::graph_operators(neat != algorithm_settings.end() ? std::any_cast<const evo::NeatSettings&>(neat->second)
-                                                                       : evo::NeatSettings{})};
+                 evo::graph_operators(neat != nullptr ? *neat : evo::NeatSettings{})};
     }
-    if (c.is_tree() && gp) p.tree.operators = &*gp;
+    if (c.is_tree()) p.tree.operators = tree_operators();
     p.objectives.assign(1 + further.size(), evo::Bounds{-inf, inf});
     for (std::size_t i = 0; i < objectives.size() && i < p.objectives.size(); ++i) {
       const ObjectiveSpec& o = objectives[i];
@@ -313,21 +330,22 @@ struct ExperimentSpec {
     for (const DescriptorSpec& d : descriptors) p.descriptors.push_back({d.range.lower, d.range.upper});
     return p;
   }
-  // The most generations of any compared controller (the ES's when none is compared).
-  [[nodiscard]] int max_generations() const noexcept {
-    int g = controllers.empty() ? es.generations : 0;
+  // The most generations of any compared controller (the experiment's when none is compared).
+  [[nodiscard]] int max_generations() const {
+    int g = controllers.empty() ? generations : 0;
     for (const auto& c : controllers) g = std::max(g, generations_for(c));
     return g;
   }
   // Generations of the whole campaign: every run of every controller.
-  [[nodiscard]] std::int64_t total_generations() const noexcept {
+  [[nodiscard]] std::int64_t total_generations() const {
     std::int64_t n = 0;
     for (const auto& c : controllers) n += static_cast<std::int64_t>(runs) * generations_for(c);
     return n;
   }
   // The size tables show for a controller: its network's weights, or a tree's node limit.
-  [[nodiscard]] std::size_t genome_size_of(const control::ControllerSpec& c) const noexcept {
-    return c.is_tree() && gp ? static_cast<std::size_t>(gp->max_size) : c.genome_size();
+  [[nodiscard]] std::size_t genome_size_of(const control::ControllerSpec& c) const {
+    const evo::gp::GpSettings* trees = c.is_tree() ? tree_operators() : nullptr;
+    return trees != nullptr ? static_cast<std::size_t>(trees->max_size) : c.genome_size();
   }
 };
 

@@ -1,29 +1,65 @@
 #pragma once
 // An algorithm's options in the runtime's own terms, so that the table lives in the
 // algorithm's folder and the compiler reads every algorithm's options alike: each option's
-// key (in `evolve NAME(...)`, `--set NAME.KEY` and the resolved settings), how it is written
-// (a number, one of its words written alone, or a range [LO, HI]), what it means, how a value
-// is taken (the message says why one is not: the compiler reports it at the value, with the
-// script's location) and its text. The paper's ES and GP keep their historic tables
-// (compiler/es_options.*, gp_settings.*) and keys (`mu`, `gp.population`).
+// key (in `evolve NAME(...)`, `--set NAME.KEY` and the resolved settings; the ES's bare,
+// `--set mu`, as the paper's scripts wrote them), how it is written (a number, a whole number,
+// one of its words written alone, a range [LO, HI] of numbers or of whole numbers), what it
+// means, how a value is taken (the refusal says why one is not: the compiler reports it at
+// the value, with the script's location) and its text.
 #include <any>
 #include <cmath>
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 namespace esc::evo {
 
-enum class OptionForm { Number, Word, Range };
+// Count and CountRange are whole numbers of at least AlgorithmOption::least (at most the
+// largest int), checked as the compiler checks every count (`epochs`), in its words.
+enum class OptionForm { Number, Count, Word, Range, CountRange };
 
-// A value as the compiler read it: a plain number, the index of a word, or a range.
+// A value as the compiler read it: a plain number (a count too), the index of a word, or a
+// range.
 struct OptionValue {
   double number = 0.0;
   std::size_t word = 0;
   double lo = 0.0, hi = 0.0;
+};
+
+// Why a value is not taken; empty when it is. The compiler reports `message` at the value
+// after the option's key (`\`sigma\` must be ...`), or alone where `names_option` says it
+// names the option itself (the ES's historic `empty bounds: ...`), with `help` as its help.
+struct OptionRefusal {
+  std::string message;
+  std::string help = {};
+  bool names_option = false;
+
+  OptionRefusal() = default;
+  // One sentence that follows the key: what most rows refuse with.
+  OptionRefusal(std::string why) : message(std::move(why)) {}   // NOLINT(google-explicit-constructor)
+  OptionRefusal(std::string why, std::string what_to_do, bool names)
+      : message(std::move(why)), help(std::move(what_to_do)), names_option(names) {}
+  [[nodiscard]] bool empty() const noexcept { return message.empty(); }
+};
+
+// When an experiment holds an algorithm's settings, and so when its resolved settings list
+// them and what `--set` of one of its keys does in an experiment that holds none.
+enum class SettingsScope {
+  // Where it evolves a compared controller (CMA-ES, ...): `--set` makes its settings (a
+  // `--set networks=` may follow), resolved only where it evolves one, so that runs from
+  // before it keep their settings.
+  InUse,
+  // Where the script gives them (`evolve gp`): GP's are every tree's operators, whichever
+  // algorithm selects; `--set` checks a value and drops it in an experiment without them.
+  Given,
+  // In every experiment: the ES's, which evolve the networks unless the script names another
+  // algorithm; the paper's runs always listed them.
+  Always,
 };
 
 struct AlgorithmOption {
@@ -31,10 +67,14 @@ struct AlgorithmOption {
   OptionForm form = OptionForm::Number;
   std::string_view summary;
   std::vector<std::string> words = {};   // Word: its choices, in the order `set` numbers them
-  // Takes `v` into the settings (the algorithm's own type, in the std::any); "" when taken,
-  // else why not, in one sentence naming the option.
-  std::string (*set)(std::any& settings, const OptionValue& v) = nullptr;
+  // Takes `v` into the settings (the algorithm's own type, in the std::any); empty when taken.
+  OptionRefusal (*set)(std::any& settings, const OptionValue& v) = nullptr;
   std::string (*text)(const std::any& settings) = nullptr;
+  int least = 0;   // Count, CountRange: the smallest whole number taken
+  // The experiment's generations written among the options (the ES's historic `es(generations
+  // N)`, as `for N generations`): a Count read into the experiment, with no `--set` key of
+  // the algorithm's, no set and no text.
+  bool experiments_generations = false;
 };
 
 // Row helpers over a settings type's fields.
@@ -44,7 +84,7 @@ inline std::string number(double v) { return fmt::format("{}", v); }
 
 // A whole number in [Min, Max] into an int field.
 template <class S, int S::*Field, int Min, int Max>
-std::string whole(std::any& s, const OptionValue& v) {
+OptionRefusal whole(std::any& s, const OptionValue& v) {
   if (!(v.number == std::floor(v.number) && v.number >= Min && v.number <= Max))
     return fmt::format("must be a whole number in [{}, {}], found {}", Min, Max, number(v.number));
   std::any_cast<S&>(s).*Field = static_cast<int>(v.number);
@@ -57,7 +97,7 @@ std::string whole_text(const std::any& s) {
 
 // A number between *Min and *Max into a double field; each end excluded when its flag says.
 template <class S, double S::*Field, const double* Min, bool AboveMin, const double* Max, bool BelowMax>
-std::string real(std::any& s, const OptionValue& v) {
+OptionRefusal real(std::any& s, const OptionValue& v) {
   const bool low_ok = AboveMin ? v.number > *Min : v.number >= *Min;
   const bool high_ok = BelowMax ? v.number < *Max : v.number <= *Max;
   if (!(low_ok && high_ok))
@@ -73,14 +113,14 @@ std::string real_text(const std::any& s) {
 
 // A choice of two words into a bool field: the first false, the second true.
 template <class S, bool S::*Field>
-std::string two_words(std::any& s, const OptionValue& v) {
+OptionRefusal two_words(std::any& s, const OptionValue& v) {
   std::any_cast<S&>(s).*Field = v.word == 1;
   return {};
 }
 
 // `bounds [LO, HI]` within +-Bound into the `lower` and `upper` fields.
 template <class S, const double* Bound>
-std::string bounds(std::any& s, const OptionValue& v) {
+OptionRefusal bounds(std::any& s, const OptionValue& v) {
   if (std::abs(v.lo) > *Bound || std::abs(v.hi) > *Bound)
     return fmt::format("must lie within [-{0}, {0}], found [{1}, {2}]", number(*Bound), number(v.lo), number(v.hi));
   if (!(v.lo < v.hi))
@@ -93,6 +133,51 @@ template <class S>
 std::string bounds_text(const std::any& s) {
   const S& x = std::any_cast<const S&>(s);
   return fmt::format("[{}, {}]", number(x.lower), number(x.upper));
+}
+
+// A whole number the compiler checked (a Count, of at least the row's `least`) into an int
+// field: of the settings or of a base they extend (GP's, the tree operators).
+template <class S, auto Field>
+OptionRefusal count(std::any& s, const OptionValue& v) {
+  std::any_cast<S&>(s).*Field = static_cast<int>(v.number);
+  return {};
+}
+template <class S, auto Field>
+std::string count_text(const std::any& s) {
+  return std::to_string(std::any_cast<const S&>(s).*Field);
+}
+
+// What a plain number must be, in the words of the compiler's other settings.
+enum class Sign { Probability, Positive, NonNegative };
+
+// A plain number of that kind, at most *Max where given, into a double field; its text.
+template <class S, auto Field, Sign K, const double* Max = nullptr>
+OptionRefusal signed_real(std::any& s, const OptionValue& v) {
+  const double x = v.number;
+  if (K == Sign::Probability && !(x >= 0.0 && x <= 1.0))
+    return fmt::format("is a probability in [0, 1], found {}", number(x));
+  if (K == Sign::Positive && !(x > 0.0)) return fmt::format("must be greater than 0, found {}", number(x));
+  if (K == Sign::NonNegative && !(x >= 0.0)) return fmt::format("must be at least 0, found {}", number(x));
+  if constexpr (Max != nullptr)
+    if (x > *Max) return fmt::format("must be at most {}, found {}", number(*Max), number(x));
+  std::any_cast<S&>(s).*Field = x;
+  return {};
+}
+template <class S, auto Field>
+std::string signed_real_text(const std::any& s) {
+  return number(std::any_cast<const S&>(s).*Field);
+}
+
+// One of the words into an enum field whose values number them in order; its text.
+template <class S, auto Field>
+OptionRefusal choice(std::any& s, const OptionValue& v) {
+  auto& field = std::any_cast<S&>(s).*Field;
+  field = static_cast<std::remove_reference_t<decltype(field)>>(v.word);
+  return {};
+}
+template <class S, auto Field, const std::vector<std::string>& Words>
+std::string choice_text(const std::any& s) {
+  return Words[static_cast<std::size_t>(std::any_cast<const S&>(s).*Field)];
 }
 
 }  // namespace option

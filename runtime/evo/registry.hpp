@@ -24,8 +24,10 @@ namespace esc::evo {
 
 // What an algorithm's value type provides: its settings type, what it is, and these over
 // its settings. `options()` (its options as scripts write them), `defaults()` (else its
-// settings type's own) and `problem()` (why settings cannot run on a problem; else none)
-// are optional, as pagmo2 detects a problem's optional members.
+// settings type's own), `problem()` (why settings cannot run on a problem; else none),
+// `conflict()` (options that do not go together, whatever the settings evolve; else none),
+// `scope` (else InUse) and `bare_keys` (else false: `--set NAME.KEY`) are optional, as
+// pagmo2 detects a problem's optional members.
 template <class A>
 concept AlgorithmValue = requires(const A a, const typename A::Settings& s, const Problem& p, int generations) {
   { a.name } -> std::convertible_to<std::string_view>;
@@ -41,14 +43,18 @@ class Algorithm {
  public:
   template <AlgorithmValue A>
   explicit Algorithm(A a)
-      : name(a.name), what(a.what), kinds(a.kinds), state_format(a.state_format),
-        model_(std::make_shared<const Model<A>>(std::move(a))) {}
+      : name(a.name), what(a.what), kinds(a.kinds), state_format(a.state_format), scope(scope_of(a)),
+        bare_keys(bare_keys_of(a)), model_(std::make_shared<const Model<A>>(std::move(a))) {}
 
   std::string_view name;          // as scripts and stored states name it
-  std::string_view what;          // in messages: "CMA-ES", "the ES"
+  std::string_view what;          // in messages: "CMA-ES", "ES"
   genome::GenomeKinds kinds;      // what it evolves: a network's weights, trees, ...
   // The layout of save()'s bytes: a stored state of another format is refused, not misread.
   std::uint32_t state_format = 1;
+  SettingsScope scope = SettingsScope::InUse;
+  // Whether scripts write its `--set` keys and resolved settings without `NAME.` (the ES's
+  // `mu`, the paper's spelling); its options are read alike.
+  bool bare_keys = false;
 
   // `settings` holds the algorithm's own settings type (as the compiler made it).
   // A fresh optimizer for one run. Throws std::invalid_argument on impossible settings.
@@ -66,18 +72,30 @@ class Algorithm {
   [[nodiscard]] MemoryPeak memory(const std::any& settings, const Problem& problem, int generations) const {
     return model_->memory(settings, problem, generations);
   }
-  // Its options as scripts write them (none for the paper's ES and GP, whose options the
-  // compiler keeps in tables of their own, with their historic keys), its default settings,
-  // and why settings cannot run on `problem` ("" when they can: an archive's cells need
-  // declared descriptors, ...). A value type without them has none, its settings type's
-  // defaults, and no such reason.
+  // Its options as scripts write them, its default settings, why settings cannot run on
+  // `problem` ("" when they can: an archive's cells need declared descriptors, ...), and the
+  // options of `settings` that do not go together whatever they evolve (the ES's comma
+  // selection needs lambda >= mu; empty when they do). A value type without them has none,
+  // its settings type's defaults, and no such reasons.
   [[nodiscard]] const std::vector<AlgorithmOption>& options() const { return model_->options(); }
   [[nodiscard]] std::any defaults() const { return model_->defaults(); }
   [[nodiscard]] std::string problem(const std::any& settings, const Problem& problem) const {
     return model_->problem(settings, problem);
   }
+  [[nodiscard]] OptionRefusal conflict(const std::any& settings) const { return model_->conflict(settings); }
 
  private:
+  template <class A>
+  static SettingsScope scope_of(const A& a) {
+    if constexpr (requires { a.scope; }) return a.scope;
+    else return SettingsScope::InUse;
+  }
+  template <class A>
+  static bool bare_keys_of(const A& a) {
+    if constexpr (requires { a.bare_keys; }) return a.bare_keys;
+    else return false;
+  }
+
   struct Concept {
     virtual ~Concept() = default;
     [[nodiscard]] virtual std::unique_ptr<Optimizer> make(const std::any& s, const Problem& p) const = 0;
@@ -86,6 +104,7 @@ class Algorithm {
     [[nodiscard]] virtual const std::vector<AlgorithmOption>& options() const = 0;
     [[nodiscard]] virtual std::any defaults() const = 0;
     [[nodiscard]] virtual std::string problem(const std::any& s, const Problem& p) const = 0;
+    [[nodiscard]] virtual OptionRefusal conflict(const std::any& s) const = 0;
   };
 
   template <class A>
@@ -113,6 +132,10 @@ class Algorithm {
     }
     std::string problem(const std::any& s, const Problem& p) const override {
       if constexpr (requires { value.problem(of(s), p); }) return value.problem(of(s), p);
+      else return {};
+    }
+    OptionRefusal conflict(const std::any& s) const override {
+      if constexpr (requires { value.conflict(of(s)); }) return value.conflict(of(s));
       else return {};
     }
 

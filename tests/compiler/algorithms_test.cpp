@@ -6,6 +6,7 @@
 #include "compiler/algorithm_options.hpp"
 #include "helpers.hpp"
 #include "runtime/evo/cmaes/cmaes.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -45,7 +46,7 @@ TEST(Algorithms, EvolveCmaesAloneEvolvesTheNetworksWithItsOptions) {
   EXPECT_DOUBLE_EQ(cmaes(x).sigma, 0.3);
   EXPECT_TRUE(cmaes(x).separable);
   EXPECT_EQ(cmaes(x).restarts, 2);
-  EXPECT_EQ(x.es.generations, 40);   // the experiment's generations
+  EXPECT_EQ(x.generations, 40);   // the experiment's generations
   EXPECT_EQ(x.evaluations_per_generation(x.controllers[0]), 20u);
   EXPECT_EQ(x.resolved_settings.at("networks"), "cmaes");
   EXPECT_EQ(x.resolved_settings.at("cmaes.covariance"), "separable");
@@ -87,7 +88,8 @@ TEST(Algorithms, TheExperimentsGenerationsAreGivenOnce) {
 // their runs and dependency caches keep their fingerprints.
 TEST(Algorithms, ThePaperScriptsResolveAsBefore) {
   const eval::ExperimentSpec x = paper();
-  EXPECT_TRUE(x.algorithm_settings.empty());
+  ASSERT_EQ(x.algorithm_settings.size(), 1U);   // the ES's, which every experiment holds
+  EXPECT_EQ(x.algorithm_settings.count("es"), 1U);
   for (const auto& [key, value] : x.resolved_settings) {
     EXPECT_FALSE(key.starts_with("cmaes.")) << key;
     EXPECT_NE(key, "networks");
@@ -119,8 +121,61 @@ TEST(Algorithms, SetNetworksAndCmaesKeys) {
   EXPECT_EQ(y.networks, "es");
 }
 
-TEST(Algorithms, EveryFurtherAlgorithmIsRegisteredAndHasItsKeys) {
-  for (const AlgorithmOptions& a : further_algorithms()) {
+// The paper's ES and GP are read like every algorithm, from their folders' tables, into
+// algorithm_settings; their historic spellings hold (`mu`, `es(generations N)`, `gp.KEY`), and
+// the experiment's generations are its own, GP's the trees'.
+TEST(Algorithms, TheEsAndGpAreOrdinaryEntriesWithTheirHistoricSpellings) {
+  eval::ExperimentSpec x = compiled(
+      "primitives p { functions + - if <  terminals ir[0..7], erc(-1, 1) }\n"
+      "controller t = tree(wheels, primitives p)\n"
+      "experiment e { arena a  fitness f  evolve es(mu 4, lambda 9, plus, generations 7)\n"
+      "  evolve gp(population 11, init_depth [2, 3]) for 5 generations  compare c, t }");
+  ASSERT_EQ(x.algorithm_settings.size(), 2U);
+  EXPECT_EQ(es_of(x).mu, 4);
+  EXPECT_EQ(es_of(x).selection, evo::Selection::Plus);
+  EXPECT_EQ(gp_of(x).population, 11);
+  EXPECT_EQ(gp_of(x).init_max_depth, 3);
+  EXPECT_EQ(x.generations, 7);   // `es(generations 7)`: the experiment's
+  EXPECT_EQ(gp_of(x).generations, 5);
+  EXPECT_EQ(x.generations_for(x.controllers[0]), 7);
+  EXPECT_EQ(x.generations_for(x.controllers[1]), 5);
+  EXPECT_EQ(x.evolution_of(x.controllers[0]).algorithm->name, "es");
+  EXPECT_EQ(x.evolution_of(x.controllers[1]).algorithm->name, "gp");
+  EXPECT_EQ(x.evaluations_per_generation(x.controllers[0]), 9U);
+  EXPECT_EQ(x.evaluations_per_generation(x.controllers[1]), 11U);
+  EXPECT_EQ(x.resolved_settings.at("mu"), "4");
+  EXPECT_EQ(x.resolved_settings.at("selection"), "plus");
+  EXPECT_EQ(x.resolved_settings.at("generations"), "7");
+  EXPECT_EQ(x.resolved_settings.at("gp.generations"), "5");
+  EXPECT_EQ(x.resolved_settings.at("gp.init_depth"), "[2, 3]");
+  EXPECT_EQ(x.resolved_settings.count("es.mu"), 0U);
+
+  // `--set generations` is the experiment's and GP's; `--set mu` the ES's, bare.
+  EXPECT_EQ(apply_settings(x, {{"generations", "3"}, {"mu", "2"}, {"gp.tournament", "4"}}), "");
+  EXPECT_EQ(x.generations, 3);
+  EXPECT_EQ(gp_of(x).generations, 3);
+  EXPECT_EQ(es_of(x).mu, 2);
+  EXPECT_EQ(gp_of(x).tournament, 4);
+  EXPECT_EQ(x.resolved_settings.at("gp.tournament"), "4");
+  std::string m = apply_setting(x, "es.mu", "3");
+  EXPECT_NE(m.find("unknown setting `es.mu`"), std::string::npos) << m;
+  m = apply_setting(x, "mu", "0");
+  EXPECT_NE(m.find("`mu` must be at least 1, found 0"), std::string::npos) << m;
+  m = apply_setting(x, "gp.init_depth", "[3, 2]");
+  EXPECT_NE(m.find("`init_depth [3, 2]` is empty"), std::string::npos) << m;
+
+  // An experiment without `evolve gp` holds no GP settings: `--set gp.KEY` is checked and dropped.
+  eval::ExperimentSpec y = compiled("experiment e { arena a  fitness f  compare c }");
+  EXPECT_EQ(apply_setting(y, "gp.population", "20"), "");
+  EXPECT_EQ(y.tree_operators(), nullptr);
+  EXPECT_EQ(y.resolved_settings.count("gp.population"), 0U);
+  m = apply_setting(y, "gp.population", "0");
+  EXPECT_NE(m.find("`population` must be at least 1, found 0"), std::string::npos) << m;
+}
+
+TEST(Algorithms, EveryAlgorithmIsRegisteredAndHasItsKeys) {
+  ASSERT_EQ(algorithm_options().size(), evo::algorithms().size());
+  for (const AlgorithmOptions& a : algorithm_options()) {
     const evo::Algorithm* r = evo::find_algorithm(a.name);
     ASSERT_NE(r, nullptr) << a.name;
     EXPECT_FALSE(a.keys().empty());
@@ -128,6 +183,11 @@ TEST(Algorithms, EveryFurtherAlgorithmIsRegisteredAndHasItsKeys) {
     std::map<std::string, std::string> resolved;
     a.resolve(a.defaults(), resolved);
     EXPECT_EQ(resolved.size(), a.keys().size());
+    // Every key but the ES's, the paper's, spells its algorithm: `gp.population`, `cmaes.sigma`.
+    for (const auto& [key, text] : resolved) EXPECT_TRUE(key.starts_with(a.group)) << key;
+    EXPECT_EQ(a.group.empty(), a.name == "es") << a.name;
+    a.unresolve(resolved);
+    EXPECT_TRUE(resolved.empty()) << a.name;
   }
 }
 

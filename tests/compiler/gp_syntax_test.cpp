@@ -8,6 +8,7 @@
 
 #include "helpers.hpp"
 #include "runtime/genome/tree/primitive_set.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -111,10 +112,10 @@ TEST(GpSyntax, EvolveGpBesideEvolveEs) {
   const CompileResult r = compile_source(kScript, "gp.esc", options());
   ASSERT_TRUE(r.ok()) << rendered(r);
   const eval::ExperimentSpec& x = r.experiments.at(0);
-  EXPECT_EQ(x.es.mu, 3);
-  EXPECT_EQ(x.es.generations, 4);
-  ASSERT_TRUE(x.gp.has_value());
-  const gp::GpSettings& s = *x.gp;
+  EXPECT_EQ(es_of(x).mu, 3);
+  EXPECT_EQ(x.generations, 4);
+  ASSERT_NE(x.tree_operators(), nullptr);
+  const gp::GpSettings& s = *x.tree_operators();
   EXPECT_EQ(s.population, 12);
   EXPECT_EQ(s.tournament, 3);
   EXPECT_EQ(s.elitism, 2);
@@ -143,16 +144,16 @@ TEST(GpSyntax, SetOverridesGpSettingsAndGenerationsOfBoth) {
   ASSERT_TRUE(r.ok()) << rendered(r);
   eval::ExperimentSpec x = r.experiments.at(0);
   EXPECT_EQ(apply_setting(x, "gp.population", "50"), "");
-  EXPECT_EQ(x.gp->population, 50);
+  EXPECT_EQ(gp_of(x).population, 50);
   EXPECT_EQ(x.resolved_settings.at("gp.population"), "50");
   EXPECT_EQ(apply_setting(x, "gp.init_depth", "[3, 5]"), "");
-  EXPECT_EQ(x.gp->init_min_depth, 3);
-  EXPECT_EQ(x.gp->init_max_depth, 5);
+  EXPECT_EQ(gp_of(x).init_min_depth, 3);
+  EXPECT_EQ(gp_of(x).init_max_depth, 5);
   EXPECT_EQ(apply_setting(x, "gp.hoist_mutation", "0"), "");
-  EXPECT_EQ(x.gp->hoist_mutation, 0.0);
+  EXPECT_EQ(gp_of(x).hoist_mutation, 0.0);
   EXPECT_EQ(apply_setting(x, "generations", "7"), "");
-  EXPECT_EQ(x.es.generations, 7);
-  EXPECT_EQ(x.gp->generations, 7);
+  EXPECT_EQ(x.generations, 7);
+  EXPECT_EQ(gp_of(x).generations, 7);
   EXPECT_EQ(x.resolved_settings.at("gp.generations"), "7");
 
   const eval::ExperimentSpec before = x;
@@ -166,8 +167,8 @@ TEST(GpSyntax, SetOverridesGpSettingsAndGenerationsOfBoth) {
   EXPECT_NE(m.find("elitism"), std::string::npos) << m;
   m = apply_setting(x, "gp.population", "ten");
   EXPECT_NE(m.find("`population` takes a whole number, found `ten`"), std::string::npos) << m;
-  EXPECT_EQ(x.gp->population, before.gp->population);
-  EXPECT_EQ(x.gp->max_depth, before.gp->max_depth);
+  EXPECT_EQ(gp_of(x).population, gp_of(before).population);
+  EXPECT_EQ(gp_of(x).max_depth, gp_of(before).max_depth);
   EXPECT_EQ(x.resolved_settings, before.resolved_settings);
 }
 
@@ -177,7 +178,7 @@ TEST(GpSyntax, GpSettingsOfAnExperimentWithoutGpAreCheckedAndIgnored) {
   eval::ExperimentSpec x = r.experiments.at(0);
   const auto settings = x.resolved_settings;
   EXPECT_EQ(apply_setting(x, "gp.population", "20"), "");   // a dependency of a GP run gets it too
-  EXPECT_FALSE(x.gp.has_value());
+  EXPECT_EQ(x.tree_operators(), nullptr);
   EXPECT_EQ(x.resolved_settings, settings);
   for (const auto& [key, value] : settings) EXPECT_NE(key.rfind("gp.", 0), 0u) << key;
   EXPECT_NE(apply_setting(x, "gp.crossover", "2").find("probability"), std::string::npos);

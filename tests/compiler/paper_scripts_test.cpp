@@ -7,6 +7,7 @@
 
 #include "helpers.hpp"
 #include "runtime/expr/observables.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -58,14 +59,14 @@ TEST(PaperScripts, ObstacleAvoidanceCompilesToTheSectionThreeSetup) {
   EXPECT_EQ(x.runs, 10);
   EXPECT_EQ(x.seed, 1u);
   EXPECT_TRUE(x.robot.motor.inertia);
-  EXPECT_EQ(x.es.mu, 30);
-  EXPECT_EQ(x.es.lambda, 150);
-  EXPECT_EQ(x.es.selection, evo::Selection::Comma);
-  EXPECT_EQ(x.es.recombination, evo::Recombination::Intermediate);
-  EXPECT_EQ(x.es.step_sizes, evo::StepSizes::PerGene);
-  EXPECT_DOUBLE_EQ(x.es.lower, -1.0);
-  EXPECT_DOUBLE_EQ(x.es.upper, 1.0);
-  EXPECT_EQ(x.es.generations, 250);
+  EXPECT_EQ(es_of(x).mu, 30);
+  EXPECT_EQ(es_of(x).lambda, 150);
+  EXPECT_EQ(es_of(x).selection, evo::Selection::Comma);
+  EXPECT_EQ(es_of(x).recombination, evo::Recombination::Intermediate);
+  EXPECT_EQ(es_of(x).step_sizes, evo::StepSizes::PerGene);
+  EXPECT_DOUBLE_EQ(es_of(x).lower, -1.0);
+  EXPECT_DOUBLE_EQ(es_of(x).upper, 1.0);
+  EXPECT_EQ(x.generations, 250);
 
   // Table 1's three pairs: 8-2 / 8-6, 8-8-2 / 8-8-6, 8-20-2 / 8-14-6.
   ASSERT_EQ(x.controllers.size(), 6u);
@@ -171,11 +172,11 @@ TEST(PaperScripts, ExamplesUseUnitsAndDerivedRobots) {
   EXPECT_NEAR(x.arena.boxes[0].angle_rad, 30 * 3.14159265358979 / 180, 1e-12);
   ASSERT_TRUE(x.arena.fixed_start.has_value());
   EXPECT_DOUBLE_EQ(x.arena.fixed_start->x_m, 0.1);
-  EXPECT_EQ(x.es.selection, evo::Selection::Plus);
-  EXPECT_EQ(x.es.recombination, evo::Recombination::Discrete);
-  EXPECT_EQ(x.es.step_sizes, evo::StepSizes::One);
-  EXPECT_DOUBLE_EQ(x.es.initial_sigma, 0.2);
-  EXPECT_EQ(x.es.generations, 30);
+  EXPECT_EQ(es_of(x).selection, evo::Selection::Plus);
+  EXPECT_EQ(es_of(x).recombination, evo::Recombination::Discrete);
+  EXPECT_EQ(es_of(x).step_sizes, evo::StepSizes::One);
+  EXPECT_DOUBLE_EQ(es_of(x).initial_sigma, 0.2);
+  EXPECT_EQ(x.generations, 30);
   EXPECT_EQ(x.epochs, 4);
   EXPECT_EQ(x.steps, 200);
   EXPECT_EQ(x.controllers[0].mlp.inputs.size(), 9u);   // ir[0..7], speed

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "helpers.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -19,20 +20,20 @@ TEST(ApplySetting, GoodKeysChangeTheSpecAndResolvedSettings) {
   EXPECT_EQ(apply_setting(x, "steps", "50"), "");
   EXPECT_EQ(x.steps, 50);
   EXPECT_EQ(apply_setting(x, "generations", "3"), "");
-  EXPECT_EQ(x.es.generations, 3);
+  EXPECT_EQ(x.generations, 3);
   EXPECT_EQ(apply_setting(x, "runs", "1"), "");
   EXPECT_EQ(apply_setting(x, "seed", "42"), "");
   EXPECT_EQ(x.seed, 42u);
   EXPECT_EQ(apply_setting(x, "mu", "10"), "");
   EXPECT_EQ(apply_setting(x, "lambda", "20"), "");
-  EXPECT_EQ(x.es.lambda, 20);
+  EXPECT_EQ(es_of(x).lambda, 20);
   EXPECT_EQ(apply_setting(x, "selection", "plus"), "");
-  EXPECT_EQ(x.es.selection, evo::Selection::Plus);
+  EXPECT_EQ(es_of(x).selection, evo::Selection::Plus);
   EXPECT_EQ(x.resolved_settings.at("selection"), "plus");
   EXPECT_EQ(apply_setting(x, "sigma", "0.3"), "");
-  EXPECT_DOUBLE_EQ(x.es.initial_sigma, 0.3);
+  EXPECT_DOUBLE_EQ(es_of(x).initial_sigma, 0.3);
   EXPECT_EQ(apply_setting(x, "bounds", "[-10, 10]"), "");
-  EXPECT_DOUBLE_EQ(x.es.upper, 10.0);
+  EXPECT_DOUBLE_EQ(es_of(x).upper, 10.0);
   EXPECT_EQ(apply_setting(x, "robot.inertia", "off"), "");
   EXPECT_FALSE(x.robot.motor.inertia);
   EXPECT_EQ(x.resolved_settings.at("robot.inertia"), "off");
@@ -92,7 +93,7 @@ TEST(ApplySetting, BadKeysAndValuesAreRefusedWithoutChange) {
   m = apply_setting(x, "selection", "comma-ish");
   EXPECT_FALSE(m.empty());
   EXPECT_EQ(x.epochs, before.epochs);
-  EXPECT_EQ(x.es.mu, before.es.mu);
+  EXPECT_EQ(es_of(x).mu, es_of(before).mu);
   EXPECT_EQ(x.robot.motor.inertia, before.robot.motor.inertia);
   EXPECT_EQ(x.resolved_settings, before.resolved_settings);
 }
@@ -101,13 +102,13 @@ TEST(ApplySetting, BadKeysAndValuesAreRefusedWithoutChange) {
 TEST(ApplySetting, EveryEsOptionUnderTheScriptsSpelling) {
   eval::ExperimentSpec x = paper();
   EXPECT_EQ(apply_setting(x, "min_sigma", "1e-5"), "");
-  EXPECT_DOUBLE_EQ(x.es.min_sigma, 1e-5);
+  EXPECT_DOUBLE_EQ(es_of(x).min_sigma, 1e-5);
   EXPECT_EQ(x.resolved_settings.at("min_sigma"), "1e-05");
   EXPECT_EQ(apply_setting(x, "recombination", "no_recombination"), "");
-  EXPECT_EQ(x.es.recombination, evo::Recombination::None);
+  EXPECT_EQ(es_of(x).recombination, evo::Recombination::None);
   EXPECT_EQ(x.resolved_settings.at("recombination"), "no_recombination");
   EXPECT_EQ(apply_setting(x, "step_sizes", "one_sigma"), "");
-  EXPECT_EQ(x.es.step_sizes, evo::StepSizes::One);
+  EXPECT_EQ(es_of(x).step_sizes, evo::StepSizes::One);
   EXPECT_EQ(x.resolved_settings.at("step_sizes"), "one_sigma");
   EXPECT_EQ(apply_setting(x, "arena.sweep_cell", "5cm"), "");
   EXPECT_DOUBLE_EQ(x.arena.sweep_cell_m, 0.05);

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "helpers.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -61,7 +62,7 @@ study s {
   // A condition's settings over the experiment's own.
   const eval::ExperimentSpec& off = s.conditions[1].experiment;
   EXPECT_FALSE(off.robot.motor.inertia);
-  EXPECT_EQ(off.es.mu, 5);
+  EXPECT_EQ(es_of(off).mu, 5);
   EXPECT_EQ(off.resolved_settings.at("mu"), "5");
   EXPECT_EQ(off.resolved_settings.at("robot.inertia"), "off");
   ASSERT_EQ(s.conditions[1].settings.size(), 2u);
@@ -96,8 +97,8 @@ study grid {
   EXPECT_EQ(s.conditions[0].name, "mu=2,selection=comma,max_speed=40mm/s");
   EXPECT_EQ(s.conditions[1].name, "mu=2,selection=comma,max_speed=6cm/s");
   EXPECT_EQ(s.conditions[7].name, "mu=4,selection=plus,max_speed=6cm/s");
-  EXPECT_EQ(s.conditions[7].experiment.es.mu, 4);
-  EXPECT_EQ(s.conditions[7].experiment.es.selection, evo::Selection::Plus);
+  EXPECT_EQ(es_of(s.conditions[7].experiment).mu, 4);
+  EXPECT_EQ(es_of(s.conditions[7].experiment).selection, evo::Selection::Plus);
   EXPECT_DOUBLE_EQ(s.conditions[7].experiment.robot.motor.max_speed_mps, 0.06);
   // A file name: no `/`.
   EXPECT_EQ(s.conditions[0].directory, "mu=2,selection=comma,max_speed=40mm_per_s");
@@ -125,8 +126,8 @@ study b {
   ASSERT_TRUE(r.ok()) << rendered(r);
   const eval::StudySpec& s = study(r, "b");
   EXPECT_EQ(names(s), (std::vector<std::string>{"bounds=[-1,1]", "bounds=[-2,2]", "wide"}));
-  EXPECT_EQ(s.conditions[1].experiment.es.lower, -2.0);
-  EXPECT_EQ(s.conditions[2].experiment.es.upper, 5.0);
+  EXPECT_EQ(es_of(s.conditions[1].experiment).lower, -2.0);
+  EXPECT_EQ(es_of(s.conditions[2].experiment).upper, 5.0);
 }
 
 TEST(Study, RunsAndSeedOfTheStudyOverTheExperimentsAConditionsRunsOverBoth) {
@@ -278,7 +279,7 @@ study st {
   EXPECT_EQ(both[2].key, "seed");
   EXPECT_EQ(st.conditions[0].experiment.resolved_settings.at("middle.mu"), "40");
   // The condition's own experiment is as declared.
-  EXPECT_EQ(st.conditions[0].experiment.es.mu, r.all_experiments.back().es.mu);
+  EXPECT_EQ(es_of(st.conditions[0].experiment).mu, es_of(r.all_experiments.back()).mu);
   const auto& deeper = st.conditions[1].experiment.dependency_settings;
   ASSERT_EQ(deeper.size(), 1u);
   EXPECT_EQ(deeper[0].path, (std::vector<std::string>{"middle", "base"}));

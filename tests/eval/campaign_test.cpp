@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/eval/test_experiment.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::eval {
 namespace {
@@ -52,7 +53,7 @@ TEST(Campaign, RunsDifferAndListenerSeesEverything) {
   const ExperimentSpec spec = testing::small_experiment();
   Recorder rec;
   const CampaignResult res = run_campaign(spec, {2}, rec);
-  EXPECT_EQ(rec.generations, spec.runs * spec.es.generations);
+  EXPECT_EQ(rec.generations, spec.runs * spec.generations);
   EXPECT_EQ(rec.runs, spec.runs);
   const auto& runs = res.controllers.front().runs;
   ASSERT_EQ(runs.size(), 2U);
@@ -63,7 +64,7 @@ TEST(Campaign, RunsDifferAndListenerSeesEverything) {
 
 TEST(Campaign, MeanFitnessImproves) {
   ExperimentSpec spec = testing::small_experiment();
-  spec.es.generations = 10;
+  spec.generations = 10;
   spec.runs = 2;
   const CampaignResult res = run_with_threads(spec, 2);
   double first = 0.0;

@@ -12,6 +12,7 @@
 #include "runtime/genome/tree/print.hpp"
 #include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/gp_experiment.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::eval {
 namespace {
@@ -54,7 +55,7 @@ TEST(GpCampaign, ObstacleAvoidanceImprovesOnTheInitialPopulation) {
 
 TEST(GpCampaign, ContinuingFromAnyGenerationIsBitIdentical) {
   ExperimentSpec spec = testing::gp_experiment();
-  spec.gp->generations = 5;
+  gp_of(spec).generations = 5;
   CampaignListener quiet;
   const CampaignResult whole = run_campaign(spec, {2}, quiet);
   for (int at : {0, 2, 4}) {
@@ -107,7 +108,7 @@ TEST(GpCampaign, TreesBesideNetworksLeaveTheEsRunsUntouched) {
   const ExperimentSpec es_only = testing::small_experiment();
   ExperimentSpec mixed = testing::gp_experiment();
   mixed.controllers.insert(mixed.controllers.begin(), es_only.controllers.front());
-  mixed.gp->generations = 2;
+  gp_of(mixed).generations = 2;
   CampaignListener quiet;
   const CampaignResult a = run_campaign(es_only, {2}, quiet);
   const CampaignResult b = run_campaign(mixed, {2}, quiet);
@@ -146,7 +147,7 @@ TEST(GpCampaign, AStateOfTheOtherAlgorithmIsRefused) {
 
 TEST(GpCampaign, ATreeWithoutGpSettingsIsRefused) {
   ExperimentSpec spec = testing::gp_experiment();
-  spec.gp.reset();
+  spec.algorithm_settings.erase(eval::ExperimentSpec::kTreeOperators);
   CampaignListener quiet;
   EXPECT_THROW((void)run_campaign(spec, {1}, quiet), std::invalid_argument);
 }

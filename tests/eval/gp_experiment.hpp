@@ -50,7 +50,7 @@ inline eval::ExperimentSpec gp_experiment() {
   s.init_max_depth = 4;
   s.max_depth = 8;
   s.max_size = 40;
-  e.gp = s;
+  e.algorithm_settings[eval::ExperimentSpec::kTreeOperators] = s;
   e.controllers = {tree_controller("GW", control::Head::Classical), tree_controller("GS", control::Head::Symbolic)};
   return e;
 }

@@ -14,6 +14,7 @@
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/evo/registry.hpp"
 #include "tests/eval/gp_experiment.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::eval {
 namespace {
@@ -55,10 +56,8 @@ std::vector<Case> cases() {
     if (a.kinds.has(genome::GenomeKind::Tree)) {
       ExperimentSpec x = testing::gp_experiment();
       declare_objectives(x);
-      if (!a.options().empty()) {
-        x.controllers[1].evolved_by = name;
-        x.algorithm_settings[name] = a.defaults();
-      }
+      x.controllers[1].evolved_by = name;
+      x.algorithm_settings.try_emplace(name, a.defaults());   // GP's: the experiment's own
       v.push_back({a.kinds.has(genome::GenomeKind::Vector) ? name + " (trees)" : name, name, std::move(x), 1});
     }
     if (a.kinds.has(genome::GenomeKind::Graph)) {   // the small experiment's CC as a NEAT network
@@ -74,7 +73,7 @@ std::vector<Case> cases() {
     ExperimentSpec x = testing::small_experiment();
     declare_objectives(x);
     x.networks = name;
-    if (!a.options().empty()) x.algorithm_settings[x.networks] = a.defaults();
+    x.algorithm_settings.try_emplace(x.networks, a.defaults());   // the ES's: the experiment's own
     v.push_back({name, name, std::move(x), 0});
   }
   return v;
@@ -134,11 +133,12 @@ TEST(Optimizer, AStateItCouldNotHaveSavedIsRefused) {
   auto es = make(spec, spec.controllers[0]);
   const evo::StateBytes state = es->save();
   ExperimentSpec more = spec;
-  more.es.mu += 1;
-  more.es.lambda += 5;
+  es_of(more).mu += 1;
+  es_of(more).lambda += 5;
   EXPECT_THROW(make(more, more.controllers[0])->load(state), std::invalid_argument);
   const std::size_t n = spec.controllers[0].genome_size();
-  EXPECT_THROW(evo::find_algorithm("es")->make(spec.es, {n + 1, {}, 77, nullptr, {}, {}, {}})->load(state),
+  const std::any& settings = spec.algorithm_settings.at("es");
+  EXPECT_THROW(evo::find_algorithm("es")->make(settings, {n + 1, {}, 77, nullptr, {}, {}, {}})->load(state),
                std::invalid_argument);
 }
 
@@ -182,8 +182,8 @@ TEST(Optimizer, TreeCandidatesAndMembersAreTreesWithinTheGpLimits) {
       const std::vector<evo::Genome> asked = o->ask(g);
       for (const evo::Genome& x : asked) {
         const genome::tree::Tree t = genome::tree::decode(x, *c.primitives);
-        EXPECT_LE(static_cast<int>(t.size()), k.spec.gp->max_size) << k.name;
-        EXPECT_LE(genome::tree::depth(t), k.spec.gp->max_depth) << k.name;
+        EXPECT_LE(static_cast<int>(t.size()), gp_of(k.spec).max_size) << k.name;
+        EXPECT_LE(genome::tree::depth(t), gp_of(k.spec).max_depth) << k.name;
       }
       o->tell(measure(asked));
     }
@@ -247,15 +247,13 @@ TEST(Registry, AnAlgorithmWithoutGraphsRefusesANeatNetwork) {
     x.controllers[0].mlp.kind = control::NetworkKind::Graph;
     x.controllers[0].mlp.hidden.clear();
     x.controllers[0].evolved_by = std::string(a.name);
-    if (!a.options().empty()) x.algorithm_settings[std::string(a.name)] = a.defaults();
+    x.algorithm_settings.try_emplace(std::string(a.name), a.defaults());
     const control::ControllerSpec& c = x.controllers[0];
     try {
       (void)make_run_optimizer(x, c, x.problem_of(c));
       ADD_FAILURE() << a.name << " made an optimizer for a NEAT network";
     } catch (const std::invalid_argument& e) {
-      if (a.name != ExperimentSpec::kGp) {   // GP has no settings here: refused for that first
-        EXPECT_NE(std::string(e.what()).find("does not evolve graph genomes"), std::string::npos) << e.what();
-      }
+      EXPECT_NE(std::string(e.what()).find("does not evolve graph genomes"), std::string::npos) << e.what();
     }
   }
 }

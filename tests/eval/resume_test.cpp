@@ -6,6 +6,7 @@
 #include "runtime/eval/campaign.hpp"
 #include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/test_experiment.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::eval {
 namespace {
@@ -14,7 +15,7 @@ using testing::Snapshotter;
 
 TEST(Resume, ContinuingFromAnyGenerationIsBitIdentical) {
   ExperimentSpec spec = testing::small_experiment();
-  spec.es.generations = 5;
+  spec.generations = 5;
   CampaignListener quiet;
   const CampaignResult whole = run_campaign(spec, {2}, quiet);
   // 4: the last generation is done, the run is not yet closed.

@@ -12,6 +12,7 @@
 #include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/gp_experiment.hpp"
 #include "tests/eval/test_experiment.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::eval {
 namespace {
@@ -24,7 +25,7 @@ using testing::Snapshotter;
 ExperimentSpec mixed_experiment() {
   ExperimentSpec mixed = testing::gp_experiment();
   mixed.controllers.insert(mixed.controllers.begin(), testing::small_experiment().controllers.front());
-  mixed.gp->generations = 2;
+  gp_of(mixed).generations = 2;
   mixed.runs = 3;
   return mixed;
 }
@@ -91,8 +92,8 @@ TEST(RunsTogether, TheAutomaticChoiceFillsTheWorkers) {
   EventOrder big;
   (void)run_campaign(spec, together(1, 0), big);
   EXPECT_EQ(big.most_open, 1);
-  spec.es.mu = 2;
-  spec.es.lambda = 4;
+  es_of(spec).mu = 2;
+  es_of(spec).lambda = 4;
   EventOrder small;
   (void)run_campaign(spec, together(1, 0), small);
   EXPECT_EQ(small.most_open, 3);

@@ -2,6 +2,7 @@
 // A small obstacle-avoidance experiment built directly from runtime objects (no compiler),
 // so the evaluation layer is tested on its own.
 #include "runtime/eval/experiment.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::testing {
 
@@ -39,9 +40,11 @@ inline eval::ExperimentSpec small_experiment() {
   e.steps = 60;
   e.runs = 2;
   e.seed = 7;
-  e.es.mu = 5;
-  e.es.lambda = 20;
-  e.es.generations = 6;
+  evo::EsSettings es;
+  es.mu = 5;
+  es.lambda = 20;
+  e.algorithm_settings[eval::ExperimentSpec::kDefaultNetworks] = es;
+  e.generations = 6;
   control::ControllerSpec c;
   c.name = "CC";
   for (expr::Slot i = 0; i < expr::kIrCount; ++i) c.mlp.inputs.push_back(expr::slot::ir + i);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "runtime/evo/es/es.hpp"
+#include "runtime/evo/gp/gp.hpp"
 #include "runtime/evo/map_elites/map_elites_optimizer.hpp"
 #include "runtime/evo/registry.hpp"
 #include "runtime/genome/tree/tree_space.hpp"
@@ -60,7 +62,10 @@ TEST(Registry, DefaultsOfEveryAlgorithmAreWhatItsOptionsPrintAndItsChecksAccept)
   network.descriptors = {{0, 1}, {0, 1}};
   for (const Algorithm& a : algorithms()) {
     const std::any s = a.defaults();
-    for (const AlgorithmOption& o : a.options()) EXPECT_FALSE(o.text(s).empty()) << a.name << "." << o.key;
+    for (const AlgorithmOption& o : a.options()) {
+      if (o.experiments_generations) continue;   // the experiment's: no text of the algorithm's
+      EXPECT_FALSE(o.text(s).empty()) << a.name << "." << o.key;
+    }
     if (!a.kinds.has(Vector)) continue;
     EXPECT_GT(a.population(s, network), 0U) << a.name;
     EXPECT_GT(a.memory(s, network, 3).bytes, 0.0) << a.name;
@@ -86,13 +91,67 @@ TEST(Registry, CvtMapElitesIsMapElitesUnderItsOwnNameOptionsAndDefaults) {
   EXPECT_EQ(&MapElitesAlgorithm{}.options(), &grid.options());
 }
 
-TEST(Registry, ThePapersAlgorithmsKeepTheCompilersHistoricTablesForNow) {
-  // `evolve es(mu 30)` and `gp.population` are read by compiler/es_options and
-  // compiler/gp_settings: the registry lists no options for them.
-  EXPECT_TRUE(find_algorithm("es")->options().empty());
-  EXPECT_TRUE(find_algorithm("gp")->options().empty());
-  for (const char* name : {"cmaes", "nsga2", "map_elites", "cvt_map_elites", "novelty", "neat"})
-    EXPECT_FALSE(find_algorithm(name)->options().empty()) << name;
+TEST(Registry, EveryAlgorithmListsItsOptionsThePapersWithTheirHistoricSpellings) {
+  for (const Algorithm& a : algorithms()) EXPECT_FALSE(a.options().empty()) << a.name;
+  const Algorithm& es = *find_algorithm("es");
+  const Algorithm& gp = *find_algorithm("gp");
+  // The ES's keys are bare (`--set mu=30`) and its settings in every experiment; GP's are
+  // `gp.KEY`, held where the script gives them; every other's is used where it evolves.
+  EXPECT_TRUE(es.bare_keys);
+  EXPECT_EQ(es.scope, SettingsScope::Always);
+  EXPECT_FALSE(gp.bare_keys);
+  EXPECT_EQ(gp.scope, SettingsScope::Given);
+  for (const char* name : {"cmaes", "nsga2", "map_elites", "cvt_map_elites", "novelty", "neat"}) {
+    EXPECT_FALSE(find_algorithm(name)->bare_keys) << name;
+    EXPECT_EQ(find_algorithm(name)->scope, SettingsScope::InUse) << name;
+  }
+  EXPECT_EQ(keys(es), (std::vector<std::string>{"mu", "lambda", "selection", "recombination", "step_sizes", "bounds",
+                                                 "sigma", "min_sigma", "generations"}));
+  const auto g = keys(gp);
+  EXPECT_EQ(g.size(), 14U);
+  EXPECT_NE(std::find(g.begin(), g.end(), "init_depth"), g.end());
+  // `es(generations N)` is the experiment's generations, GP's `generations` its own.
+  EXPECT_TRUE(es.options().back().experiments_generations);
+  for (const AlgorithmOption& o : gp.options()) EXPECT_FALSE(o.experiments_generations) << o.key;
+
+  // A row takes a value into the algorithm's own settings, or says why not.
+  std::any s = es.defaults();
+  const auto row = [](const Algorithm& a, std::string_view key) {
+    const auto& rows = a.options();
+    return *std::find_if(rows.begin(), rows.end(), [&](const AlgorithmOption& o) { return o.key == key; });
+  };
+  OptionValue v;
+  v.word = 1;
+  EXPECT_TRUE(row(es, "selection").set(s, v).empty());
+  EXPECT_EQ(std::any_cast<const EsSettings&>(s).selection, Selection::Plus);
+  EXPECT_EQ(row(es, "selection").text(s), "plus");
+  v.number = 1e300;
+  EXPECT_EQ(row(es, "sigma").set(s, v).message, "must be at most 1000, found 1e+300");
+  v.lo = 2.0;
+  v.hi = -2.0;
+  const OptionRefusal empty = row(es, "bounds").set(s, v);
+  EXPECT_TRUE(empty.names_option);
+  EXPECT_EQ(empty.message, "empty bounds: the lower bound (2) must be below the upper (-2)");
+  v.lo = 3.0;
+  v.hi = 2.0;
+  std::any t = gp.defaults();
+  EXPECT_EQ(row(gp, "init_depth").set(t, v).message,
+            "`init_depth [3, 2]` is empty: the first depth must not exceed the second");
+  v.number = 1.5;
+  EXPECT_EQ(row(gp, "crossover").set(t, v).message, "is a probability in [0, 1], found 1.5");
+
+  // Options that do not go together, whatever they evolve (the ES's); GP's against a tree's set.
+  EsSettings few;
+  few.mu = 40;
+  few.lambda = 25;
+  const OptionRefusal c = es.conflict(few);
+  EXPECT_EQ(c.message, "comma selection needs `lambda` >= `mu`, found mu 40 and lambda 25");
+  EXPECT_EQ(c.help, "raise `lambda`, or use `plus` selection");
+  EXPECT_TRUE(es.conflict(es.defaults()).empty());
+  gp::GpSettings elitist;
+  elitist.elitism = 1000;
+  EXPECT_EQ(gp.problem(elitist, Problem{}), "elitism must be in [0, population (150)], got 1000");
+  EXPECT_EQ(gp.problem(gp.defaults(), Problem{}), "");
 }
 
 // A value type of an algorithm not in the table: what a new folder defines, erased the same
@@ -118,7 +177,7 @@ struct Counting {
   [[nodiscard]] MemoryPeak memory(const Settings& /*s*/, const Problem& /*p*/, int generations) const {
     return {.bytes = static_cast<double>(generations), .candidates = 0.0, .what = "counted", .setting = {}};
   }
-  // No options() nor defaults(): optional, as the ES's and GP's.
+  // No options() nor defaults(): optional.
   [[nodiscard]] std::string problem(const Settings& s, const Problem& /*p*/) const {
     return s.population > 2 ? "" : "too few";
   }

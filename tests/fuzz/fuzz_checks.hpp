@@ -20,14 +20,14 @@ inline void require_runnable(const eval::ExperimentSpec& x) {
     sim::validate_robot(x.robot);
     for (const control::ControllerSpec& c : x.controllers) {
       if (c.is_tree()) {
-        if (!x.gp || c.primitives == nullptr) std::abort();
-        (void)evo::gp::GeneticProgramming(*x.gp, *c.primitives);
+        if (x.tree_operators() == nullptr || c.primitives == nullptr) std::abort();
+        (void)evo::gp::GeneticProgramming(*x.tree_operators(), *c.primitives);
         continue;
       }
       const eval::Evolution e = x.evolution_of(c);
       if (e.algorithm == nullptr) std::abort();
-      if (e.algorithm->name == eval::ExperimentSpec::kEs) {
-        (void)evo::EvolutionStrategy(x.es, c.genome_size());
+      if (const auto* es = std::any_cast<evo::EsSettings>(&e.settings)) {
+        (void)evo::EvolutionStrategy(*es, c.genome_size());
         continue;
       }
       // Another algorithm (NEAT for a `neat(...)` network, CMA-ES, ...): its settings, or its

@@ -257,7 +257,7 @@ TEST(NeatOptions, EveryRowChecksItsRangeAndNamesTheOption) {
     if (o.form != OptionForm::Number) continue;
     OptionValue v;
     v.number = -1.0;
-    EXPECT_NE(o.set(s, v), "") << o.key << " took -1";
+    EXPECT_NE(o.set(s, v).message, "") << o.key << " took -1";
   }
   NeatSettings bad;
   bad.survival_thresh = 0.0;
@@ -275,7 +275,7 @@ TEST(NeatOptions, EveryRowChecksItsRangeAndNamesTheOption) {
   ASSERT_NE(act, rows.end());
   OptionValue tanh_word;
   tanh_word.word = 1;
-  EXPECT_EQ(act->set(s, tanh_word), "");
+  EXPECT_EQ(act->set(s, tanh_word).message, "");
   EXPECT_EQ(act->text(s), "tanh");
 }
 

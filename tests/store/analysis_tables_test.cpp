@@ -16,6 +16,7 @@
 #include "runtime/store/usage_export.hpp"
 #include "tests/store/older_schema.hpp"
 #include "tests/store/scratch.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::store {
 namespace {
@@ -26,7 +27,7 @@ eval::ExperimentSpec spec(int generations) {
   eval::ExperimentSpec e;
   e.name = "demo";
   e.runs = 2;
-  e.es.generations = generations;
+  e.generations = generations;
   control::ControllerSpec c;
   c.name = "SV";
   c.mlp.inputs = {5};

@@ -21,6 +21,7 @@
 #include "runtime/store/untouched_load.hpp"
 #include "runtime/store/write_ahead_log.hpp"
 #include "tests/store/scratch.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::store {
 namespace {
@@ -33,7 +34,7 @@ eval::ExperimentSpec spec() {
   e.name = "flips";
   e.seed = 77;
   e.runs = 2;
-  e.es.generations = 5;
+  e.generations = 5;
   e.resolved_settings = {{"epochs", "10"}, {"steps", "150"}};
   control::ControllerSpec c;   // a classical head: usage is stored all the same
   c.name = "SC";

@@ -19,6 +19,7 @@
 #include "runtime/store/run_directory.hpp"
 #include "runtime/store/sqlite.hpp"
 #include "tests/store/older_schema.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::store {
 namespace {
@@ -37,7 +38,7 @@ eval::ExperimentSpec spec() {
   e.name = "demo";
   e.seed = 18446744073709551557ULL;   // above INT64_MAX: stored as text
   e.runs = 2;
-  e.es.generations = 3;
+  e.generations = 3;
   e.resolved_settings = {{"epochs", "10"}, {"steps", "150"}};
   e.arena.cylinders.push_back({{0.2, 0.3}, 0.025});
   control::ControllerSpec c;
@@ -306,7 +307,7 @@ TEST(ResultsDb, ARunsFirstSuccessIsStoredAndASchemaSevenDatabaseGetsTheColumn) {
     ASSERT_EQ(c.finished.size(), 1u);
     EXPECT_EQ(c.finished[0].success_evaluation, 4);
     eval::ExperimentSpec longer = spec();
-    longer.es.generations = 5;   // carried on: the finished run continues with its success
+    longer.generations = 5;   // carried on: the finished run continues with its success
     const eval::ResumePoint p = db.resume_point(s, longer);
     ASSERT_EQ(p.in_progress.size(), 2u);
     EXPECT_EQ(p.in_progress[0].state.success_evaluation, 4);

@@ -11,6 +11,7 @@
 #include "tests/eval/test_experiment.hpp"
 #include "tests/store/older_schema.hpp"
 #include "tests/store/scratch.hpp"
+#include "tests/algorithm_settings.hpp"
 
 namespace esc::store {
 namespace {
@@ -95,7 +96,7 @@ TEST(StudyStore, ACarryOnIsRecordedForEveryConditionAtOnce) {
   std::vector<eval::ExperimentSpec> longer;
   for (const eval::ConditionSpec& c : study.conditions) {
     longer.push_back(c.experiment);
-    longer.back().es.generations = 7;
+    longer.back().generations = 7;
     longer.back().resolved_settings["generations"] = "7";
   }
   {

@@ -35,7 +35,7 @@ fs::path fresh_dir(const std::string& name) {
 
 // A real initial population of the Wheels tree, with fitness that no text could round.
 std::vector<evo::gp::Individual> population(const eval::ExperimentSpec& e) {
-  const evo::gp::GeneticProgramming gp(*e.gp, *e.controllers[0].primitives);
+  const evo::gp::GeneticProgramming gp(*e.tree_operators(), *e.controllers[0].primitives);
   Rng rng(99);
   std::vector<evo::gp::Individual> pop = gp.initial(rng);
   for (std::size_t i = 0; i < pop.size(); ++i) pop[i].fitness = 1.0 / (3.0 + static_cast<double>(i));

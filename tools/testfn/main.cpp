@@ -122,8 +122,8 @@ esc::evo::NeatSettings neat_settings(const std::vector<std::string>& sets) {
       if (used == 0 || used != value.size())
         throw std::invalid_argument("--set " + key + ": '" + value + "' is not a number");
     }
-    if (const std::string why = row->set(settings, v); !why.empty())
-      throw std::invalid_argument("--set " + key + " " + why);
+    if (const esc::evo::OptionRefusal why = row->set(settings, v); !why.empty())
+      throw std::invalid_argument("--set " + key + " " + why.message);
   }
   return std::any_cast<esc::evo::NeatSettings>(settings);
 }

@@ -52,8 +52,6 @@ EvolutionStrategy::EvolutionStrategy(const EsSettings& settings, std::size_t gen
   require(s_.min_sigma >= 0.0 && s_.min_sigma <= s_.upper - s_.lower,
           "min_sigma must be in [0, upper - lower], got " + std::to_string(s_.min_sigma));
   require(n_ >= 1, "genome_size must be at least 1, got 0");
-  require(s_.generations >= 0,
-          "generations must be non-negative, got " + std::to_string(s_.generations));
 }
 
 std::vector<Individual> EvolutionStrategy::initial(Rng& rng) const {

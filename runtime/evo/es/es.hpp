@@ -31,7 +31,6 @@ struct EsSettings {
   double initial_sigma = 0.1;   // as a fraction of (upper - lower), at most kMaxStepSize
   double min_sigma = 1e-6;      // absolute floor, keeps self-adaptation from collapsing;
                                 // at most upper - lower
-  int generations = 250;
 };
 
 struct Individual {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "runtime/evo/es/es.hpp"
+#include "runtime/evo/es/es_options.hpp"
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 #include "runtime/genome/kind.hpp"
@@ -30,15 +31,17 @@ namespace esc::evo {
 [[nodiscard]] StateBytes es_state(std::span<const Individual> parents);
 
 // The paper's evolution strategy as the registry holds it (registry.hpp): its name, the
-// genomes it evolves, and how its settings make an optimizer, size a generation and weigh in
-// memory. Its options are still the compiler's own table with their historic keys (`mu`,
-// compiler/es_options.hpp), so it has no options() here.
+// genomes it evolves, how its settings make an optimizer, size a generation and weigh in
+// memory, and its options (es_options.hpp). Every experiment holds its settings, and scripts
+// write its keys bare (`--set mu=30`), as the paper's always did.
 struct EsAlgorithm {
   using Settings = EsSettings;
   std::string_view name = "es";
-  std::string_view what = "the ES";
+  std::string_view what = "ES";
   genome::GenomeKinds kinds{genome::GenomeKind::Vector};
   std::uint32_t state_format = 1;
+  SettingsScope scope = SettingsScope::Always;
+  bool bare_keys = true;
 
   [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const { return make_es(s, p); }
   [[nodiscard]] std::size_t population(const Settings& s, const Problem& p) const {
@@ -47,6 +50,8 @@ struct EsAlgorithm {
   [[nodiscard]] MemoryPeak memory(const Settings& s, const Problem& p, int /*generations*/) const {
     return es_memory_peak(s, p.genome_size);
   }
+  [[nodiscard]] const std::vector<AlgorithmOption>& options() const { return es_options(); }
+  [[nodiscard]] OptionRefusal conflict(const Settings& s) const { return es_conflict(s); }
 };
 
 }  // namespace esc::evo

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "runtime/evo/gp/gp.hpp"
+#include "runtime/evo/gp/gp_options.hpp"
 #include "runtime/evo/memory_peak.hpp"
 #include "runtime/evo/optimizer.hpp"
 #include "runtime/genome/kind.hpp"
@@ -33,15 +34,17 @@ namespace esc::evo::gp {
 [[nodiscard]] StateBytes gp_state(std::span<const Individual> population);
 
 // Generational GP as the registry holds it (registry.hpp): its name, the genomes it evolves
-// (trees), and how its settings make an optimizer, size a generation and weigh in memory.
-// Its options are still the compiler's own table with their historic keys (`gp.population`,
-// compiler/gp_settings.hpp), so it has no options() here.
+// (trees), how its settings make an optimizer, size a generation and weigh in memory, its
+// options (gp_options.hpp) and whether they suit a tree's primitives. An experiment holds
+// its settings where the script gives them (`evolve gp`): they hold the tree operators that
+// every algorithm varies trees with, and the trees' generations.
 struct GpAlgorithm {
   using Settings = GpSettings;
   std::string_view name = "gp";
   std::string_view what = "GP";
   genome::GenomeKinds kinds{genome::GenomeKind::Tree};
   std::uint32_t state_format = 1;
+  SettingsScope scope = SettingsScope::Given;
 
   [[nodiscard]] std::unique_ptr<Optimizer> make(const Settings& s, const Problem& p) const { return make_gp(s, p); }
   [[nodiscard]] std::size_t population(const Settings& s, const Problem& p) const {
@@ -49,6 +52,10 @@ struct GpAlgorithm {
   }
   [[nodiscard]] MemoryPeak memory(const Settings& s, const Problem& p, int /*generations*/) const {
     return gp_memory_peak(s, p.genome_size);
+  }
+  [[nodiscard]] const std::vector<AlgorithmOption>& options() const { return gp_options(); }
+  [[nodiscard]] std::string problem(const Settings& s, const Problem& p) const {
+    return gp_problem(s, p.tree.primitives);
   }
 };
 

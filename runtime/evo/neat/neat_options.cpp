@@ -41,7 +41,7 @@ AlgorithmOption positive(std::string_view key, std::string_view summary) {
   return {key, F::Number, summary, {}, &real<S, Field, &kZero, true, &kMaxCoefficient, false>, &real_text<S, Field>};
 }
 
-std::string set_activation(std::any& s, const OptionValue& v) {
+OptionRefusal set_activation(std::any& s, const OptionValue& v) {
   std::any_cast<S&>(s).activation = static_cast<gg::Activation>(v.word);
   return {};
 }
@@ -50,7 +50,7 @@ std::string activation_text(const std::any& s) {
   return std::string(gg::activation_name(std::any_cast<const S&>(s).activation));
 }
 
-std::string set_score(std::any& s, const OptionValue& v) {
+OptionRefusal set_score(std::any& s, const OptionValue& v) {
   std::any_cast<S&>(s).score = static_cast<NeatScore>(v.word);
   return {};
 }
@@ -168,7 +168,7 @@ std::string neat_problem(const NeatSettings& settings, std::size_t inputs, std::
     OptionValue v;
     const std::string text = o.text(copy);
     v.number = std::stod(text);
-    if (std::string why = o.set(copy, v); !why.empty()) return fmt::format("{} {}", o.key, why);
+    if (OptionRefusal why = o.set(copy, v); !why.empty()) return fmt::format("{} {}", o.key, why.message);
   }
   return {};
 }
