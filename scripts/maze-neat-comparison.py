@@ -5,14 +5,16 @@ of a fixed network (docs/maze-results.md). Reads the stored studies' summary.jso
 program's runs made here; prints Markdown.
 
     python3 scripts/maze-neat-comparison.py medium [--results results/lehman-stanley]
-        [--authors FILE]
+        [--authors FILE] [--authors-fitness FILE]
 
 Per method: runs that solved the maze and the evaluations to the first solution (mean, sd,
 median, range over the solved runs). Then Fisher's exact test (two-sided) of each NEAT
 method's successes against the paper's count for the same method and against esc's
 fixed-network method of the same selection (NEAT by the fitness against CMA-ES, NEAT scored
 by novelty against novelty search). The authors' file has one line per run: MAZE RUN
-EVALUATIONS SOLVED USER_S SYS_S (the runs of /work/peers, docs/maze-results.md).
+EVALUATIONS SOLVED USER_S SYS_S (the runs of /work/peers, docs/maze-results.md); their
+fitness-based runs' file MAZE RUN SOLVED_AT CPU_S, SOLVED_AT the individual that first
+solved it ("none": not within the budget of 250,000).
 """
 import argparse
 import json
@@ -27,6 +29,7 @@ PAPER = {
     "hard": {"fitness": (3, "not reported"), "novelty": (39, "35,109 (30,236)")},
 }
 RUNS_IN_PAPER = 40
+BUDGET = 250_000
 # esc's condition of the same selection, in each study.
 FIXED = {"fitness": "fitness_based", "novelty": "novelty"}
 NEAT = {"fitness": "neat_fitness", "novelty": "neat_novelty"}
@@ -79,6 +82,7 @@ def main():
     parser.add_argument("maze", choices=sorted(PAPER))
     parser.add_argument("--results", default="results/lehman-stanley")
     parser.add_argument("--authors")
+    parser.add_argument("--authors-fitness")
     args = parser.parse_args()
     fixed, neat = (stored(os.path.join(args.results, name)) for name in (args.maze, args.maze + "-neat"))
 
@@ -95,6 +99,13 @@ def main():
         seconds = sum(float(r[4]) + float(r[5]) for r in rows)
         spread, median, extent = stats(solved)
         print(f"| the authors' program here: NEAT, novelty | {len(solved)} of {len(rows)} | {spread} | {median} "
+              f"| {extent} |")
+    if args.authors_fitness:
+        with open(args.authors_fitness) as f:
+            runs = [line.split() for line in f if line.split() and line.split()[0] == args.maze]
+        solved = [int(r[2]) for r in runs if r[2] != "none" and int(r[2]) <= BUDGET]
+        spread, median, extent = stats(solved)
+        print(f"| the authors' program here: NEAT, fitness | {len(solved)} of {len(runs)} | {spread} | {median} "
               f"| {extent} |")
     for selection in ("fitness", "novelty"):
         for label, summary, condition in ((f"esc: fixed network, {FIXED[selection]}", fixed, FIXED[selection]),

@@ -6,9 +6,13 @@ set -euo pipefail
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 printf 'medium 1 4000 1 3.0 0.0\nmedium 2 6000 1 2.0 0.0\nhard 1 9000 1 5.0 0.0\n' >"$out/authors.txt"
-python3 scripts/maze-neat-comparison.py medium --authors "$out/authors.txt" >"$out/table.md"
+printf 'medium 1 3000 1.0\nmedium 2 none 260.0\nmedium 3 260000 200.0\n' >"$out/fitness.txt"
+python3 scripts/maze-neat-comparison.py medium --authors "$out/authors.txt" --authors-fitness "$out/fitness.txt" \
+  >"$out/table.md"
 cat "$out/table.md"
 expect() { grep -qF "$1" "$out/table.md" || { echo "missing: $1"; exit 1; }; }
+# A run solved past the 250,000 evaluations' budget counts as unsolved.
+expect "| the authors' program here: NEAT, fitness | 1 of 3 | 3,000 | 3,000 | 3,000-3,000 |"
 expect "| esc: NEAT, fitness | 40 of 40 | 21,201 (21,460) | 19,260 | 2,615-133,378 |"
 expect "| esc: NEAT, novelty | 40 of 40 | 17,859 (11,226) | 16,015 | 3,603-65,551 |"
 expect "| esc: fixed network, fitness_based | 35 of 40 | 8,680 (5,568) | 7,950 | 1,086-22,181 |"
