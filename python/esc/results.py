@@ -106,9 +106,11 @@ class Run:
         "metrics" (what each optimizer reported per generation), "front" (NSGA-II's first
         front per generation), "archive" (MAP-Elites' and novelty search's archive changes
         per generation: the archive after generation g is
-        `t[t.generation <= g].groupby(["run", "cell"]).last()`) or "success" (Fisher's exact
+        `t[t.generation <= g].groupby(["run", "cell"]).last()`), "success" (Fisher's exact
         test and the censored Mann-Whitney test of every pair the end table compares, for an
-        experiment that declares `success when`). ValueError for another name.
+        experiment that declares `success when`) or "topology" (the nodes and links of each
+        run's best NEAT network and of its final front's or archive's). ValueError for
+        another name.
 
         It is pandas.read_csv of the very text `esc export DIR --table NAME --format csv`
         writes (the `directory` column holds the path as given to esc.open), read with
@@ -117,7 +119,8 @@ class Run:
         default parser may miss the last bit)."""
         import pandas as pd
 
-        return pd.read_csv(io.StringIO(self._stored.table_csv(name)), float_precision="round_trip")
+        text = self._stored.table_csv(name, os.fspath(standard_library()))
+        return pd.read_csv(io.StringIO(text), float_precision="round_trip")
 
     def best(self, controller: str, run: int, condition: Optional[str] = None) -> BestEvaluation:
         """The best evaluation of finished run `run` (from 1) of `controller` (of a study's

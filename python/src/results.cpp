@@ -42,9 +42,14 @@ class StoredRun {
     dir_ = app::read_untouched(dir, warnings);
   }
 
-  // std::invalid_argument (a ValueError) for an unknown table, naming the nearest.
-  [[nodiscard]] std::string table_csv(const std::string& name) const {
-    return app::table_text({dir_}, name.empty() ? std::string("generations") : name, true);
+  // std::invalid_argument (a ValueError) for an unknown table, naming the nearest. The
+  // standard library, when given, compiles the run's stored sources where the topology table
+  // needs them (a front's or archive's NEAT networks), as `esc export` does.
+  [[nodiscard]] std::string table_csv(const std::string& name, const std::filesystem::path& standard_library) const {
+    const std::string table = name.empty() ? std::string("generations") : name;
+    if (standard_library.empty()) return app::table_text({dir_}, table, true);
+    const compiler::CompileOptions options = app::compile_options(standard_library);
+    return app::table_text({dir_}, table, true, &options);
   }
 
   // The study's name, or "" for a plain experiment.
@@ -177,7 +182,7 @@ void bind_results(py::module_& m) {
       .def(py::init<const std::filesystem::path&>(), py::arg("directory"),
            "Reads `directory`'s database from a copy, changing nothing in it. Raises esc.Error when it is not an "
            "esc run directory, is damaged, or holds no committed generation.")
-      .def("table_csv", &StoredRun::table_csv, py::arg("name"),
+      .def("table_csv", &StoredRun::table_csv, py::arg("name"), py::arg("standard_library") = std::filesystem::path(),
            "The table `name` (generations, usage or metrics) as `esc export DIR --table NAME --format csv` writes it.")
       .def_property_readonly("study", &StoredRun::study, "The study's name, or an empty string for an experiment.")
       .def_property_readonly("experiments", &StoredRun::experiments,

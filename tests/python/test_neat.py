@@ -100,3 +100,8 @@ def test_members_of_neat_networks_under_nsga2_and_map_elites_are_networks(tmp_pa
             assert m.genome.nodes["kind"].tolist().count("input") == 8
             fitness = esc.evaluate(compiled, "selections", controller, [m.genome], seed=m.evaluation_seed)
             assert fitness[0] == m.objectives["avoid"]
+    # The topology table holds the same networks: the front's members beside each run's best.
+    topology = run.table("topology")
+    front = topology[(topology.controller == "NC_nsga2") & (topology.member == "front")]
+    assert front.cell.nunique() == len(run.members("NC_nsga2", 1))
+    assert set(topology.member) == {"best", "front", "archive"}
