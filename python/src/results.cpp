@@ -182,8 +182,10 @@ void bind_results(py::module_& m) {
       .def(py::init<const std::filesystem::path&>(), py::arg("directory"),
            "Reads `directory`'s database from a copy, changing nothing in it. Raises esc.Error when it is not an "
            "esc run directory, is damaged, or holds no committed generation.")
-      .def("table_csv", &StoredRun::table_csv, py::arg("name"), py::arg("standard_library") = std::filesystem::path(),
-           "The table `name` (generations, usage or metrics) as `esc export DIR --table NAME --format csv` writes it.")
+      .def("table_csv", &StoredRun::table_csv, py::arg("name"),
+           py::arg("standard_library") = std::filesystem::path(),
+           "The table `name` as `esc export DIR --table NAME --format csv` writes it; the topology table's fronts "
+           "and archives need `standard_library` (without it, each run's best alone).")
       .def_property_readonly("study", &StoredRun::study, "The study's name, or an empty string for an experiment.")
       .def_property_readonly("experiments", &StoredRun::experiments,
                              "The experiments stored: one, or one per condition of a study.")
