@@ -9,6 +9,7 @@ import numpy as np
 
 from esc import _arguments as arguments
 from esc import _esc
+from esc.network import Network
 from esc.script import PathOrSource, Script, as_script
 
 
@@ -132,12 +133,15 @@ class Env:
 
     def policy(self, genome) -> "Policy":
         """The network of `controller` with weights `genome` as a policy for this Env:
-        policy(observation) -> action. Its recurrent state (an Elman network's) starts afresh
-        with every episode of this Env, as the network's does with every epoch in esc.
+        policy(observation) -> action. Its recurrent state (an Elman network's, a NEAT
+        network's) starts afresh with every episode of this Env, as the network's does with
+        every epoch in esc. For a NEAT network, `genome` is an esc.Network or its flat form.
         `genome` is checked as esc.evaluate checks a genome (real, finite numbers)."""
         if self.controller is None:
             raise ValueError("this Env has no controller: its policy would be a network of which controller? "
                              "Make the Env with controller=NAME")
+        if isinstance(genome, Network):
+            genome = genome.encoded()
         return Policy(self, _esc.Policy(self._script._compiled, self.experiment, self.controller,
                                         arguments.finite("genome", genome)))
 

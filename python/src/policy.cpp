@@ -1,10 +1,12 @@
 // A stored genome's network as a policy for Env: its inputs (Env's observation) in, its
 // activated outputs (Env's action) out, with the network's recurrent state kept between
-// calls. The network is the one a controller runs (control::Mlp with the head's activation),
+// calls. The network is the one a controller runs (control::Mlp with the head's activation,
+// or a NEAT network's control::GraphNet, activated once per call as once per control step),
 // fed the same doubles from the observation, so Env driven by it steps as esc's evaluation
 // of the genome does.
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -12,6 +14,7 @@
 #include "python/src/bindings.hpp"
 #include "python/src/compiled_script.hpp"
 #include "runtime/control/controller.hpp"
+#include "runtime/control/graph_net.hpp"
 #include "runtime/control/mlp.hpp"
 
 namespace esc::python {
@@ -26,13 +29,18 @@ const control::ControllerSpec& network(const CompiledScript& script, const std::
                                        const std::string& controller) {
   const control::ControllerSpec& c = find_controller(find_experiment(script, experiment), controller);
   if (c.is_tree()) throw py::value_error("`" + c.name + "` is a tree controller: a policy is a network's");
-  if (c.is_graph())
-    throw py::value_error("`" + c.name + "` is a NEAT network: a policy is a fixed network's weights; evaluate NEAT " +
-                          "genomes with esc.evaluate, or drive esc.Env with your own outputs");
   return c;
 }
 
+// A network's weights, or a NEAT network's graph genome in its flat form.
 std::vector<double> weights(const control::ControllerSpec& c, const Array& genome) {
+  if (c.is_graph()) {
+    const std::span<const double> flat(genome.data(), static_cast<std::size_t>(genome.size()));
+    if (genome.ndim() != 1) throw py::value_error("a graph genome is a 1-D array");
+    if (std::string why = control::graph_genome_problem(c, flat); !why.empty())
+      throw py::value_error("the genome is not a graph genome of `" + c.name + "`: " + why);
+    return {flat.begin(), flat.end()};
+  }
   if (genome.ndim() != 1 || static_cast<std::size_t>(genome.size()) != c.genome_size())
     throw py::value_error("controller `" + c.name + "` (" + c.architecture() + ") has genomes of " +
                           std::to_string(c.genome_size()) + " weights, but the genome given has " +
@@ -47,7 +55,7 @@ class Policy {
       : script_(script),
         controller_(&network(*script, experiment, controller)),
         genome_(weights(*controller_, genome)),
-        net_(controller_->mlp, controller_->output_count(), control::output_activation(controller_->head), genome_) {}
+        net_(make_net(*controller_, genome_)) {}
   Policy(const Policy&) = delete;
   Policy& operator=(const Policy&) = delete;
 
@@ -58,21 +66,31 @@ class Policy {
                             std::to_string(inputs.size()) + " inputs, got " + std::to_string(observation.size()) +
                             " values");
     for (std::size_t i = 0; i < inputs.size(); ++i) frame_[inputs[i]] = observation.data()[i];
-    net_.forward(frame_);
-    py::array_t<double> out(static_cast<py::ssize_t>(net_.output_count()));
+    std::visit([&](auto& net) { net.forward(frame_); }, net_);
+    const auto outputs = static_cast<std::size_t>(controller_->output_count());
+    py::array_t<double> out(static_cast<py::ssize_t>(outputs));
     auto o = out.mutable_unchecked<1>();
-    for (std::size_t i = 0; i < net_.output_count(); ++i) o(static_cast<py::ssize_t>(i)) = net_.output(i);
+    for (std::size_t i = 0; i < outputs; ++i)
+      o(static_cast<py::ssize_t>(i)) = std::visit([i](const auto& net) { return net.output(i); }, net_);
     return out;
   }
 
-  // Zeroes an Elman network's context: the start of an epoch.
-  void reset() noexcept { net_.reset(); }
+  // Zeroes an Elman network's context, or a NEAT network's state: the start of an epoch.
+  void reset() noexcept {
+    std::visit([](auto& net) { net.reset(); }, net_);
+  }
 
  private:
+  using Net = std::variant<control::Mlp, control::GraphNet>;
+  static Net make_net(const control::ControllerSpec& c, const std::vector<double>& genome) {
+    if (c.is_graph()) return Net(std::in_place_type<control::GraphNet>, c.mlp, c.output_count(), genome);
+    return Net(std::in_place_type<control::Mlp>, c.mlp, c.output_count(), control::output_activation(c.head), genome);
+  }
+
   std::shared_ptr<const CompiledScript> script_;   // holds controller_
   const control::ControllerSpec* controller_;
   std::vector<double> genome_;                     // the network points into it
-  control::Mlp net_;
+  Net net_;
   expr::Frame frame_{};                            // the observation at the network's input slots
 };
 

@@ -1,6 +1,7 @@
 """NEAT networks (`neat(...)`, docs/neat.md) from Python: a stored best graph genome evaluated
 with its stored evaluation seed scores its stored fitness exactly; graph genomes are a
-sequence of 1-D arrays, checked; Env drives a NEAT controller's head; Policy refuses it."""
+sequence of 1-D arrays or esc.Network, checked; Env drives a NEAT controller's head, and
+Env.policy of a stored network ends an episode at its stored fitness."""
 
 import numpy as np
 import pytest
@@ -75,14 +76,31 @@ def test_graph_genomes_are_checked(neat_run, neat_script):
         esc.evaluate(neat_script, NEAT["experiment"], "NEAT_8_2", esc.Network.decode(genome))
 
 
-def test_env_drives_a_neat_controllers_head_and_policy_refuses_it(neat_script):
+def test_env_drives_a_neat_controllers_head(neat_script):
     env = esc.Env(neat_script, NEAT["experiment"], "NEAT_8_2", seed=4)
     observation, info = env.reset()
     assert observation.shape == (8,)
     observation, reward, terminated, truncated, info = env.step(np.array([0.5, 0.5]))
     assert info["step"] == 1
-    with pytest.raises(ValueError, match="NEAT network"):
+    with pytest.raises(ValueError, match="not a graph genome of `NEAT_8_2`"):
         env.policy(np.zeros(3))
+
+
+@pytest.mark.parametrize("controller", ["NEAT_8_2", "NEAT_SC"])
+def test_env_driven_by_a_stored_neat_network_scores_its_fitness(neat_run, neat_script, controller):
+    """Env.policy of a stored best NEAT network (an esc.Network, or its flat form): one
+    episode with the best's evaluation seed ends at the stored fitness, bit for bit."""
+    run = esc.open(neat_run)
+    best = run.best(controller, 1)
+    for genome in (run.best_genome(controller, 1), run.best_genome(controller, 1, encoded=True)):
+        env = esc.Env(neat_script, NEAT["experiment"], controller, seed=best.evaluation_seed)
+        policy = env.policy(genome)
+        observation, info = env.reset()
+        while True:
+            observation, reward, terminated, truncated, info = env.step(policy(observation))
+            if terminated or truncated:
+                break
+        assert info["fitness"] == best.fitness
 
 
 def test_members_of_neat_networks_under_nsga2_and_map_elites_are_networks(tmp_path):
