@@ -108,14 +108,12 @@ std::vector<store::RunMembers> graph_members(const std::vector<store::StoredDire
     for (const store::StoredExperiment& e : d.experiments) {
       const auto keeps = [](const store::StoredController& c) {
         const evo::Algorithm* a = evo::find_algorithm(c.algorithm);
-        return c.architecture.find(control::kGraphArchitectureMark) != std::string::npos && a != nullptr &&
+        return control::is_graph_architecture(c.architecture) && a != nullptr &&
                a->name != eval::ExperimentSpec::kDefaultGraphs;
       };
       if (std::none_of(e.controllers.begin(), e.controllers.end(), keeps)) continue;
       // A study's condition directory (STUDY/CONDITION) is read from its study's database.
-      const std::filesystem::path root =
-          std::filesystem::exists(d.path / store::kDatabaseFile) ? d.path : d.path.parent_path();
-      const StoredRun stored{&e, root, d.path};
+      const StoredRun stored{&e, locate_run(d.path).root, d.path};
       Events quiet;   // the script's warnings were the run's, given when it ran
       const eval::ExperimentSpec spec = experiment_of_run(stored, options, quiet);
       for (const store::StoredController& c : e.controllers) {

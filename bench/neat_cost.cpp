@@ -7,11 +7,8 @@
 #include "runtime/control/controller.hpp"
 #include "runtime/eval/evaluator.hpp"
 #include "runtime/evo/registry.hpp"
-#include "runtime/genome/graph/codec.hpp"
 
 namespace esc::bench {
-
-namespace gg = genome::graph;
 
 NeatCost measure_neat_cost(const eval::ExperimentSpec& experiment, const control::ControllerSpec& controller,
                            int generations) {
@@ -51,16 +48,11 @@ NeatCost measure_neat_cost(const eval::ExperimentSpec& experiment, const control
     optimizer->tell(outcomes);
     cost.neat_s += thread_cpu_seconds() - t;
 
-    if (g + 1 == generations) {
-      for (const evo::Genome& genome : candidates) {
-        gg::Graph graph;
-        (void)gg::decode(genome, graph);
-        cost.hidden_nodes += static_cast<double>(gg::count_nodes(graph, gg::NodeKind::Hidden));
-        cost.enabled_links += static_cast<double>(gg::enabled_links(graph));
-      }
-      cost.hidden_nodes /= static_cast<double>(candidates.size());
-      cost.enabled_links /= static_cast<double>(candidates.size());
-    }
+  }
+  // NEAT's own means over the last generation told.
+  for (const evo::Metric& m : optimizer->metrics()) {
+    if (m.name == "hidden_nodes") cost.hidden_nodes = m.value;
+    if (m.name == "enabled_links") cost.enabled_links = m.value;
   }
   cost.generations = generations;
   return cost;

@@ -19,7 +19,7 @@ struct NeatCost {
   double neat_s = 0.0;        // ask and tell
   double build_s = 0.0;       // a Controller built from each genome
   double evaluate_s = 0.0;    // the evaluations, their own building taken out
-  double hidden_nodes = 0.0;  // means over the last generation's networks
+  double hidden_nodes = 0.0;  // NEAT's metrics: means over the last generation's networks
   double enabled_links = 0.0;
   // NEAT's work and the network building against the evaluations'.
   [[nodiscard]] double fraction() const { return (neat_s + build_s) / evaluate_s; }

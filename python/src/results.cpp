@@ -105,7 +105,7 @@ class StoredRun {
       d["objectives"] = objectives;
       d["descriptors"] = py::array_t<double>(static_cast<py::ssize_t>(m.descriptors.size()), m.descriptors.data());
       d["genome"] = py::array_t<double>(static_cast<py::ssize_t>(m.genome.size()), m.genome.data());
-      d["graph"] = !m.genome.empty() && c.architecture.find(control::kGraphArchitectureMark) != std::string::npos;
+      d["graph"] = !m.genome.empty() && control::is_graph_architecture(c.architecture);
       const bool known = m.measured.known();
       d["generation"] = known ? py::object(py::int_(m.measured.generation)) : py::object(py::none());
       d["candidate"] = known ? py::object(py::int_(m.measured.candidate)) : py::object(py::none());
@@ -136,7 +136,7 @@ class StoredRun {
     d["evaluation_seed"] = eval::evaluation_seed(r->seed, r->best_generation, static_cast<std::size_t>(r->best_index));
     d["genome"] = py::array_t<double>(static_cast<py::ssize_t>(r->best_genome.size()), r->best_genome.data());
     d["tree"] = c.head == "tree" ? py::object(py::str(r->best_tree)) : py::object(py::none());
-    d["graph"] = c.architecture.find(control::kGraphArchitectureMark) != std::string::npos;
+    d["graph"] = control::is_graph_architecture(c.architecture);
     return d;
   }
 

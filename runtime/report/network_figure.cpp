@@ -102,7 +102,7 @@ std::string network_svg(const gg::Graph& g, const std::string& title) {
 std::vector<NamedFigure> network_figures(const store::StoredExperiment& e, const std::string& stem) {
   std::vector<NamedFigure> out;
   for (const store::StoredController& c : e.controllers) {
-    if (c.architecture.find(control::kGraphArchitectureMark) == std::string::npos) continue;
+    if (!control::is_graph_architecture(c.architecture)) continue;
     for (std::size_t r = 0; r < c.finished.size(); ++r) {
       gg::Graph g;
       if (!gg::decode(c.finished[r].best_genome, g).empty()) continue;

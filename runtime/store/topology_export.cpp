@@ -44,7 +44,7 @@ void for_each_row(const std::vector<StoredDirectory>& directories, const std::ve
     for (const StoredExperiment& e : d.experiments) {
       const std::string condition = e.condition ? e.condition->name : std::string();
       for (const StoredController& c : e.controllers) {
-        if (c.architecture.find(control::kGraphArchitectureMark) == std::string::npos) continue;
+        if (!control::is_graph_architecture(c.architecture)) continue;
         for (std::size_t r = 0; r < c.finished.size(); ++r)
           rows_of(c.finished[r].best_genome, e.name, condition, c.name, static_cast<int>(r) + 1, "best", std::nullopt);
       }

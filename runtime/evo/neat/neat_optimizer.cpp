@@ -108,11 +108,7 @@ class NeatOptimizer final : public Optimizer {
   // fitness); a generation's changes are the behaviors it added.
   std::optional<Members> members(bool changes) const override {
     if (!archive_) return std::nullopt;
-    Members m{MemberKind::Archive, 0U, archive_->space().size(), {}, {}, {}, {}};
-    const std::vector<std::vector<double>>& points = archive_->points();
-    for (std::size_t i = changes ? archived_before_ : 0; i < points.size(); ++i)
-      m.members.push_back({static_cast<std::int64_t>(i), {}, points[i], {}, {}});
-    return m;
+    return qd::behavior_members(*archive_, changes ? archived_before_ : 0);
   }
 
   StateBytes save() const override {

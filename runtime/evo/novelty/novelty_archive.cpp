@@ -123,4 +123,11 @@ void NoveltyArchive::load(std::span<const std::uint8_t> bytes) {
   stalled_ = static_cast<std::size_t>(stalled);
 }
 
+Members behavior_members(const NoveltyArchive& archive, std::size_t from) {
+  Members m{MemberKind::Archive, 0U, archive.space().size(), {}, {}, {}, {}};
+  const std::vector<std::vector<double>>& points = archive.points();
+  for (std::size_t i = from; i < points.size(); ++i) m.members.push_back({static_cast<std::int64_t>(i), {}, points[i], {}, {}});
+  return m;
+}
+
 }  // namespace esc::evo::qd

@@ -31,6 +31,7 @@
 
 #include "runtime/core/rng.hpp"
 #include "runtime/evo/map_elites/descriptor_space.hpp"
+#include "runtime/evo/optimizer.hpp"
 #include "runtime/evo/state_bytes.hpp"
 
 namespace esc::evo::qd {
@@ -84,5 +85,10 @@ class NoveltyArchive {
   double threshold_;
   std::size_t stalled_ = 0;  // updates in a row that added nothing
 };
+
+// The archive's behaviors from the `from`-th added on (0: all of it; the size before a
+// generation's update: that generation's changes), as an optimizer's members: an archive of
+// points, each its order of addition as its cell, without objectives or genome.
+[[nodiscard]] Members behavior_members(const NoveltyArchive& archive, std::size_t from);
 
 }  // namespace esc::evo::qd

@@ -91,21 +91,14 @@ class NoveltyOptimizer final : public Optimizer {
   // alone: its archive of behaviors (where the search has been), which keeps neither genomes
   // nor fitness; a generation's changes are the behaviors it added.
   std::optional<Members> members(bool changes) const override {
-    Members m{with_fitness_ ? MemberKind::Front : MemberKind::Archive, with_fitness_ ? 2U : 0U,
-              archive_.space().size(), {}, {}, {}, {}};
-    if (with_fitness_) {
-      m.own_objectives = {"novelty"};
-      const std::vector<std::size_t> front = core_.first_front();
-      for (std::size_t i = 0; i < front.size(); ++i) {
-        const std::vector<double>& f = core_.objectives()[front[i]];
-        m.members.push_back({static_cast<std::int64_t>(i), {-f[0], -f[1]}, parent_descriptors_[front[i]],
-                             changes ? Genome{} : core_.population()[front[i]], measured_[front[i]]});
-      }
-      return m;
+    if (!with_fitness_) return qd::behavior_members(archive_, changes ? archived_before_ : 0);
+    Members m{MemberKind::Front, 2U, archive_.space().size(), {"novelty"}, {}, {}, {}};
+    const std::vector<std::size_t> front = core_.first_front();
+    for (std::size_t i = 0; i < front.size(); ++i) {
+      const std::vector<double>& f = core_.objectives()[front[i]];
+      m.members.push_back({static_cast<std::int64_t>(i), {-f[0], -f[1]}, parent_descriptors_[front[i]],
+                           changes ? Genome{} : core_.population()[front[i]], measured_[front[i]]});
     }
-    const std::vector<std::vector<double>>& points = archive_.points();
-    for (std::size_t i = changes ? archived_before_ : 0; i < points.size(); ++i)
-      m.members.push_back({static_cast<std::int64_t>(i), {}, points[i], {}, {}});
     return m;
   }
 
