@@ -39,7 +39,7 @@ string(CONCAT CPACK_DEBIAN_DEV_DESCRIPTION
 # uuid-dev: the ANTLR runtime's CMake target links -luuid, which Debian's
 # libantlr4-runtime-dev does not pull in (found installing esc-dev on a clean bookworm).
 string(CONCAT esc_dev_depends "esc (= ${PROJECT_VERSION}), cmake, libeigen3-dev, libbullet-dev, libfmt-dev, "
-       "libtbb-dev, nlohmann-json3-dev, libantlr4-runtime-dev, uuid-dev, libsqlite3-dev, pkg-config, libboost-dev")
+       "libtbb-dev, nlohmann-json3-dev, libantlr4-runtime-dev, uuid-dev, libsqlite3-dev, zlib1g-dev, pkg-config, libboost-dev")
 if(ESC_WITH_MPI_FOUND)
   string(APPEND esc_dev_depends ", libopenmpi-dev")
 endif()

@@ -15,7 +15,7 @@ JOBS=${JOBS:-$(nproc)}
 # What esc needs to build and run: all `demo` installs.
 REQUIRED=(build-essential cmake ninja-build default-jre-headless antlr4 libantlr4-runtime-dev
           libbullet-dev libeigen3-dev libfmt-dev libtbb-dev libcli11-dev nlohmann-json3-dev libnanoflann-dev
-          libsqlite3-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev)   # uuid-dev: the ANTLR runtime links -luuid
+          libsqlite3-dev zlib1g-dev pkg-config libboost-math-dev libjs-chart.js uuid-dev)   # uuid-dev: the ANTLR runtime links -luuid
 # `test` builds the full variant, every optional part in (docs/install.md says what each needs).
 OPTIONAL=(libopenmpi-dev openmpi-bin                                                           # ESC_WITH_MPI
           libbenchmark-dev                                                                     # ESC_WITH_BENCHMARK

@@ -1,9 +1,9 @@
 #include "runtime/store/optimizer_tables.hpp"
 
-#include <limits>
 #include <string_view>
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/row_checksum.hpp"
@@ -18,37 +18,46 @@ void save_state(sql::Database& db, std::int64_t controller_id, int run, const ev
   seal_row(db, "optimizer_state", db.last_insert_rowid());
 }
 
-std::optional<eval::OptimizerState> load_optimizer_state(sql::Database& db, std::int64_t controller_id, int run) {
-  auto st = db.prepare("SELECT algorithm, format, state FROM optimizer_state WHERE controller_id = ? AND run = ?");
+void compress_state(sql::Database& db, std::int64_t controller_id, int run) {
+  auto st = db.prepare("SELECT rowid, state FROM optimizer_state WHERE controller_id = ? AND run = ? AND raw_size IS NULL");
+  if (!st.bind(1, controller_id).bind(2, run).step()) return;
+  const std::int64_t rowid = st.int64(0);
+  const std::string_view raw = st.bytes(1);
+  uLongf size = compressBound(raw.size());
+  evo::StateBytes packed(size);
+  // Level 9: once per run, a few tens of milliseconds for NEAT's largest.
+  if (compress2(packed.data(), &size, reinterpret_cast<const Bytef*>(raw.data()), raw.size(), 9) != Z_OK)
+    throw StoreError("internal error: zlib could not compress a run's state");
+  packed.resize(size);
+  const auto raw_size = static_cast<std::int64_t>(raw.size());
+  st.reset();
+  db.prepare("UPDATE optimizer_state SET state = ?, raw_size = ? WHERE rowid = ?")
+      .bind_blob(1, std::span<const std::uint8_t>(packed)).bind(2, raw_size).bind(3, rowid)
+      .run();
+  seal_row(db, "optimizer_state", rowid);
+}
+
+std::optional<eval::OptimizerState> load_optimizer_state(sql::Database& db, std::int64_t controller_id, int run,
+                                                         bool has_raw_size, std::string_view damaged) {
+  auto st = db.prepare(fmt::format("SELECT algorithm, format, state, {} FROM optimizer_state "
+                                   "WHERE controller_id = ? AND run = ?",
+                                   has_raw_size ? "raw_size" : "NULL"));
   st.bind(1, controller_id).bind(2, run);
   if (!st.step()) return std::nullopt;
   const std::string_view bytes = st.bytes(2);
-  return eval::OptimizerState{st.text(0), static_cast<std::uint32_t>(st.int64(1)),
-                              evo::StateBytes(bytes.begin(), bytes.end())};
-}
-
-void save_metrics(sql::Database& db, std::int64_t controller_id, int run, const eval::GenerationStats& g) {
-  auto row = db.prepare("INSERT INTO metrics(controller_id, run, generation, idx, name, value) VALUES (?, ?, ?, ?, ?, ?)");
-  for (std::size_t i = 0; i < g.metrics.size(); ++i) {
-    // SQLite keeps NaN as NULL; it reads back as NaN.
-    row.bind(1, controller_id).bind(2, run).bind(3, g.generation).bind(4, static_cast<std::int64_t>(i))
-        .bind(5, g.metrics[i].name).bind(6, g.metrics[i].value)
-        .run();
-    seal_row(db, "metrics", db.last_insert_rowid());
+  eval::OptimizerState s{st.text(0), static_cast<std::uint32_t>(st.int64(1)), {}};
+  if (st.is_null(3)) {
+    s.bytes.assign(bytes.begin(), bytes.end());
+    return s;
   }
-}
-
-void load_metrics(sql::Database& db, std::int64_t controller_id, int run, std::vector<eval::GenerationStats>& gens,
-                  std::string_view damaged) {
-  auto q = db.prepare("SELECT generation, name, value FROM metrics WHERE controller_id = ? AND run = ? "
-                      "ORDER BY generation, idx");
-  q.bind(1, controller_id).bind(2, run);
-  while (q.step()) {
-    const auto g = static_cast<std::size_t>(q.int64(0));
-    if (g >= gens.size())
-      throw StoreError(fmt::format("{}: metrics of generation {}, which the run has not finished", damaged, g));
-    gens[g].metrics.push_back({q.text(1), q.is_null(2) ? std::numeric_limits<double>::quiet_NaN() : q.real(2)});
-  }
+  const std::int64_t raw_size = st.int64(3);
+  uLongf size = raw_size < 0 ? 0 : static_cast<uLongf>(raw_size);
+  s.bytes.resize(size);
+  if (raw_size < 0 ||
+      uncompress(s.bytes.data(), &size, reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()) != Z_OK ||
+      size != static_cast<uLongf>(raw_size))
+    throw StoreError(fmt::format("{}: its stored state does not uncompress to its {} bytes", damaged, raw_size));
+  return s;
 }
 
 }  // namespace esc::store

@@ -1,30 +1,33 @@
 #pragma once
 // What a run's optimizer keeps in the results database (schema 6): its whole state after the
 // run's last finished generation (table optimizer_state: the algorithm, the layout of its
-// bytes, the bytes, as eval::OptimizerState holds them), and its own numbers per generation
-// (table metrics: CMA-ES's step size, ...). The bytes are stored as they are, so a resumed
-// run is bit-identical to the run that was not interrupted.
+// bytes, the bytes, as eval::OptimizerState holds them; its own numbers per generation are
+// in metric_tables.hpp). The bytes are stored as they are, so a resumed run is bit-identical
+// to the run that was not interrupted.
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <vector>
 
 #include "runtime/eval/run_state.hpp"
 #include "runtime/store/sqlite.hpp"
 
 namespace esc::store {
 
-// Writes (or replaces) the state of run `run` of the controller with id `controller_id`.
-void save_state(sql::Database& db, std::int64_t controller_id, int run, const eval::OptimizerState& state);
-// The state stored for that run by schema 6 or later; nullopt when there is none.
-[[nodiscard]] std::optional<eval::OptimizerState> load_optimizer_state(sql::Database& db, std::int64_t controller_id,
-                                                                       int run);
+// Since schema 9 a finished run's state is kept compressed (column optimizer_state.raw_size).
+inline constexpr int kCompressedStateSchemaVersion = 9;
 
-// Writes generation `g`'s metrics of that run.
-void save_metrics(sql::Database& db, std::int64_t controller_id, int run, const eval::GenerationStats& g);
-// Fills each generation's metrics of that run, in the order they were written. Throws
-// StoreError, its message starting with `damaged`, for a generation beyond `gens`.
-void load_metrics(sql::Database& db, std::int64_t controller_id, int run, std::vector<eval::GenerationStats>& gens,
-                  std::string_view damaged);
+// Writes (or replaces) the state of run `run` of the controller with id `controller_id`, as
+// it is: it is rewritten every generation, and compressing each would cost a few percent of
+// a generation's time.
+void save_state(sql::Database& db, std::int64_t controller_id, int run, const eval::OptimizerState& state);
+// Compresses that run's stored state, once it is finished (schema 9): what a finished study
+// keeps of each run, read back only to carry the run on.
+void compress_state(sql::Database& db, std::int64_t controller_id, int run);
+// The state stored for that run by schema 6 or later, uncompressed; nullopt when there is
+// none. Throws StoreError, its message starting with `damaged`, for compressed bytes that do
+// not uncompress to their size.
+[[nodiscard]] std::optional<eval::OptimizerState> load_optimizer_state(sql::Database& db, std::int64_t controller_id,
+                                                                       int run, bool has_raw_size,
+                                                                       std::string_view damaged);
 
 }  // namespace esc::store

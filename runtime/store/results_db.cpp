@@ -10,6 +10,7 @@
 #include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/database_snapshot.hpp"
 #include "runtime/store/member_tables.hpp"
+#include "runtime/store/metric_tables.hpp"
 #include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/page_check.hpp"
 #include "runtime/store/results_schema.hpp"
@@ -105,6 +106,7 @@ ResultsDb ResultsDb::create_empty(const fs::path& dir, const LaunchInfo& launch)
   db.exec(results_schema());
   db.exec(analysis_schema());
   db.exec(member_schema());
+  db.exec(metric_schema());
   auto meta = db.prepare("INSERT INTO meta(key, value) VALUES (?, ?)");
   meta.bind(1, "format").bind(2, "esc results").run();
   meta.bind(1, "schema_version").bind(2, std::to_string(kSchemaVersion)).run();
@@ -262,14 +264,15 @@ ResultsDb ResultsDb::open(const fs::path& dir, bool read_only) {
     if (!read_only && log_damage) r.db_.exec("PRAGMA wal_checkpoint(TRUNCATE);");
     // Stopped while it was being created: no table yet (an esc before this one committed
     // the application id and schema version before the tables).
-    auto tables = r.db_.prepare("SELECT count(*) FROM sqlite_master");
-    if (tables.step() && tables.int64(0) == 0) nothing();
-    auto id = r.db_.prepare("PRAGMA application_id");
-    const std::int64_t app = id.step() ? id.int64(0) : 0;
-    if (app != kApplicationId)
+    // Each statement finished at once: one left pending would lock an upgrade's DROP TABLE.
+    const auto single = [&r](const char* query) {
+      auto q = r.db_.prepare(query);
+      return q.step() ? q.int64(0) : std::int64_t{0};
+    };
+    if (single("SELECT count(*) FROM sqlite_master") == 0) nothing();
+    if (single("PRAGMA application_id") != kApplicationId)
       throw StoreError(fmt::format("{} is an SQLite database but not one written by esc", file.string()));
-    auto ver = r.db_.prepare("PRAGMA user_version");
-    const std::int64_t version = ver.step() ? ver.int64(0) : 0;
+    const std::int64_t version = single("PRAGMA user_version");
     if (version > kSchemaVersion)
       throw StoreError(fmt::format("{} was written by a newer esc (schema {}; this esc reads up to {})",
                                    file.string(), version, kSchemaVersion));
@@ -314,12 +317,14 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   const std::int64_t cid = controller_id(controller);
   const eval::GenerationStats& g = st.generations.back();
   sql::Transaction tx(db_);
-  db_.prepare(
-         "INSERT INTO generations(controller_id, run, generation, best, mean, sd, evaluations, steps, seconds, "
-         "saturated) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
-      .bind(1, cid).bind(2, st.run).bind(3, g.generation).bind(4, g.best).bind(5, g.mean).bind(6, g.sd)
-      .bind(7, g.evaluations).bind(8, g.steps).bind(9, g.seconds).bind(10, g.saturated)
-      .run();
+  const MetricColumns metrics = metric_columns(db_, cid, g.metrics);
+  auto row = db_.prepare(
+      "INSERT INTO generations(controller_id, run, generation, best, mean, sd, evaluations, steps, seconds, "
+      "saturated, metric_names, metrics) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  row.bind(1, cid).bind(2, st.run).bind(3, g.generation).bind(4, g.best).bind(5, g.mean).bind(6, g.sd)
+      .bind(7, g.evaluations).bind(8, g.steps).bind(9, g.seconds).bind(10, g.saturated);
+  if (!metrics.names.empty()) row.bind(11, metrics.names).bind_blob(12, std::span<const double>(metrics.values));
+  row.run();
   seal_row(db_, "generations", db_.last_insert_rowid());
   auto run = db_.prepare(
       "INSERT OR REPLACE INTO runs(controller_id, run, seed, status, generations_done, best_fitness, "
@@ -331,7 +336,6 @@ void ResultsDb::commit_generation(const std::string& controller, const eval::Run
   run.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
   save_state(db_, cid, st.run, st.optimizer);
-  save_metrics(db_, cid, st.run, g);
   if (st.member_layout) save_members(db_, cid, st, g.generation);
   save_usage(db_, cid, st.run, g);
   if (st.transfer) save_transfer(db_, cid, st.run, *st.transfer);
@@ -384,8 +388,9 @@ void ResultsDb::commit_run(const std::string& controller, const eval::RunResult&
   if (run.success_evaluation) row.bind(12, *run.success_evaluation);
   row.run();
   seal_row(db_, "runs", db_.last_insert_rowid());
-  // The run's state (optimizer_state) stays: `esc run --resume DIR --generations G`
+  // The run's state (optimizer_state) stays, compressed: `esc run --resume DIR --generations G`
   // carries a finished run on from it.
+  compress_state(db_, cid, run.run);
   db_.prepare("DELETE FROM behavior_usage WHERE controller_id = ? AND run = ?").bind(1, cid).bind(2, run.run).run();
   auto use = db_.prepare(
       "INSERT INTO behavior_usage(controller_id, run, action_idx, action, steps) VALUES (?, ?, ?, ?, ?)");

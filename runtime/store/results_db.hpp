@@ -42,8 +42,9 @@ inline constexpr const char* kDependencyCache = "deps";
 // controller (controllers.algorithm), and why a run's search ended early (runs.stopped).
 // 8: the evaluation of a run that first met the experiment's success test
 // (runs.success_evaluation), and what an optimizer keeps beside the best, per generation
-// (member_tables.hpp).
-inline constexpr int kSchemaVersion = 8;
+// (member_tables.hpp). 9: the optimizer's metrics in their generation's row, their names
+// once per controller (metric_tables.hpp).
+inline constexpr int kSchemaVersion = 9;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 
@@ -228,6 +229,8 @@ class ResultsDb {
   // parents or GP population converted). Throws StoreError when there is none or the stored
   // state is damaged.
   [[nodiscard]] eval::OptimizerState load_state(const StoredController& c, int run);
+  // The same, nullopt when there is none (damage still throws).
+  [[nodiscard]] std::optional<eval::OptimizerState> find_state(const StoredController& c, int run);
 
   [[nodiscard]] std::int64_t experiment_id() const noexcept { return experiment_id_; }
   // Where the database's log was damaged when it was opened (write_ahead_log.hpp): what
@@ -248,6 +251,7 @@ class ResultsDb {
   // What evolved `c` in a database older than schema 7, which does not say.
   std::string algorithm_before_7(const StoredController& c);
   void upgrade();   // to kSchemaVersion
+  bool table_exists(const std::string& table);
   bool column_exists(const std::string& table, const std::string& column);
 
   std::shared_ptr<const DirectoryLock> lock_;   // written to: no other process writes beside it

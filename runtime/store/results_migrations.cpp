@@ -7,6 +7,8 @@
 
 #include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/member_tables.hpp"
+#include "runtime/store/metric_tables.hpp"
+#include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/results_schema.hpp"
 #include "runtime/store/row_checksum.hpp"
@@ -18,6 +20,10 @@ bool ResultsDb::column_exists(const std::string& table, const std::string& colum
   while (info.step())
     if (info.text(1) == column) return true;
   return false;
+}
+
+bool ResultsDb::table_exists(const std::string& table) {
+  return db_.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?").bind(1, table).step();
 }
 
 void ResultsDb::upgrade() {
@@ -52,10 +58,19 @@ void ResultsDb::upgrade() {
     if (schema_version_ >= 5) seal_table(db_, "runs");   // the rows now hold one more column
     db_.exec(member_schema());
   }
+  if (schema_version_ < kMetricSchemaVersion) {   // 9: metrics in their generation's row, states compressed
+    move_metrics_into_generations(db_, schema_version_ >= 6);
+    if (schema_version_ >= 5) seal_table(db_, "generations");   // the rows now hold two more columns
+    if (schema_version_ >= 6) {   // older ones got the table as this schema has it above
+      db_.exec("ALTER TABLE optimizer_state ADD COLUMN raw_size INTEGER;");
+      seal_table(db_, "optimizer_state");
+    }
+  }
   if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
     for (const std::string_view t : sealed_tables()) {
+      if (!table_exists(std::string(t))) continue;   // one a later schema dropped (metrics, 9)
       if (!column_exists(std::string(t), "checksum"))
         db_.exec(fmt::format("ALTER TABLE {} ADD COLUMN checksum INTEGER NOT NULL DEFAULT 0;", t));
       seal_table(db_, t);

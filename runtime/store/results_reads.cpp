@@ -10,6 +10,7 @@
 #include "runtime/store/analysis_tables.hpp"
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/member_tables.hpp"
+#include "runtime/store/metric_tables.hpp"
 #include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/row_checksum.hpp"
@@ -86,7 +87,9 @@ std::vector<StoredExperiment> ResultsDb::load() {
         if (schema_version_ >= kAnalysisSchemaVersion) c.choices = load_choices(db_, c.id);
         e.controllers.push_back(std::move(c));
       }
+      const bool metrics_in_rows = schema_version_ >= kMetricSchemaVersion;
       for (StoredController& c : e.controllers) {
+        const MetricNames metric_names = metrics_in_rows ? MetricNames(db_, c.id) : MetricNames();
         auto runs = db_.prepare(fmt::format(
             "SELECT run, seed, status, generations_done, best_fitness, best_generation, best_index, best_genome, "
             "best_tree, {}, {}, {} FROM runs WHERE controller_id = ? ORDER BY run",
@@ -97,12 +100,15 @@ std::vector<StoredExperiment> ResultsDb::load() {
           const int run = runs.integer(0);
           std::vector<eval::GenerationStats> gens;
           auto g = db_.prepare(
-              fmt::format("SELECT generation, best, mean, sd, evaluations, steps, seconds, {} FROM generations "
+              fmt::format("SELECT generation, best, mean, sd, evaluations, steps, seconds, {}, {} FROM generations "
                           "WHERE controller_id = ? AND run = ? ORDER BY generation",
-                          has_saturated_ ? "saturated" : "0"));
+                          has_saturated_ ? "saturated" : "0", metrics_in_rows ? "metric_names, metrics" : "NULL, NULL"));
           g.bind(1, c.id).bind(2, run);
-          while (g.step())
+          const std::string damaged = fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name);
+          while (g.step()) {
             gens.push_back({g.integer(0), g.real(1), g.real(2), g.real(3), g.int64(4), g.int64(5), g.real(6), {}, g.int64(7)});
+            if (!g.is_null(8)) gens.back().metrics = metric_names.decode(g.text(8), g.doubles(9), damaged);
+          }
           const auto done = static_cast<std::size_t>(runs.int64(3));
           bool contiguous = gens.size() == done;
           for (std::size_t i = 0; contiguous && i < gens.size(); ++i) contiguous = gens[i].generation == static_cast<int>(i);
@@ -110,12 +116,11 @@ std::vector<StoredExperiment> ResultsDb::load() {
             throw StoreError(fmt::format("{} is damaged: run {} of {} has {} generations stored, {} expected",
                                          file_.string(), run + 1, c.name, gens.size(), done));
           std::optional<eval::Transfer> transfer;
-          const std::string damaged = fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name);
           if (schema_version_ >= kAnalysisSchemaVersion) {
             load_usage(db_, c.id, run, gens, damaged);
             transfer = load_transfer(db_, c.id, run);
           }
-          if (schema_version_ >= 6) load_metrics(db_, c.id, run, gens, damaged);
+          if (schema_version_ >= 6 && !metrics_in_rows) load_legacy_metrics(db_, c.id, run, gens, damaged);
           const bool has_best = !runs.is_null(4);
           const auto success = runs.is_null(11) ? std::nullopt : std::optional<std::int64_t>(runs.int64(11));
           if (runs.text(2) == "finished") {
@@ -182,14 +187,21 @@ std::string ResultsDb::algorithm_before_7(const StoredController& c) {
   return c.head == "tree" ? "gp" : "es";   // before schema 6, only the ES and GP
 }
 
-eval::OptimizerState ResultsDb::load_state(const StoredController& c, int run) {
+std::optional<eval::OptimizerState> ResultsDb::find_state(const StoredController& c, int run) {
   const std::string damaged = fmt::format("{} is damaged: run {} of {}", file_.string(), run + 1, c.name);
   if (schema_version_ >= 6)
-    if (auto s = load_optimizer_state(db_, c.id, run)) return std::move(*s);
-  if (auto es = load_es_state(db_, c.id, run, c.genome_size, damaged)) return std::move(*es);
+    if (auto s = load_optimizer_state(db_, c.id, run, schema_version_ >= kCompressedStateSchemaVersion, damaged))
+      return s;
+  if (auto es = load_es_state(db_, c.id, run, c.genome_size, damaged)) return es;
   if (schema_version_ >= 2)   // a schema-1 database holds no trees
-    if (auto gp = load_tree_state(db_, c.id, run, damaged)) return std::move(*gp);
-  throw StoreError(damaged + " is unfinished but has no state to resume from");
+    if (auto gp = load_tree_state(db_, c.id, run, damaged)) return gp;
+  return std::nullopt;
+}
+
+eval::OptimizerState ResultsDb::load_state(const StoredController& c, int run) {
+  if (auto s = find_state(c, run)) return std::move(*s);
+  throw StoreError(fmt::format("{} is damaged: run {} of {} is unfinished but has no state to resume from",
+                               file_.string(), run + 1, c.name));
 }
 
 void ResultsDb::load_condition(StoredExperiment& e) {
@@ -261,13 +273,12 @@ eval::ResumePoint ResultsDb::resume_point(const StoredExperiment& stored, const 
       s.best_index = f.best_index;
       s.transfer = f.transfer;
       s.success_evaluation = f.success_evaluation;
-      try {
-        s.optimizer = load_state(c, f.run);
-      } catch (const StoreError&) {
+      std::optional<eval::OptimizerState> kept = find_state(c, f.run);
+      if (!kept)
         throw StoreError(fmt::format("run {} of {} in {} finished without keeping the state to carry it on from "
                                      "(it was written by an esc older than schema 4)",
                                      f.run + 1, c.name, file_.string()));
-      }
+      s.optimizer = std::move(*kept);
       p.in_progress.push_back({c.name, std::move(s)});
     }
     for (const auto& s : c.in_progress) p.in_progress.push_back({c.name, s});

@@ -88,6 +88,10 @@ CREATE TABLE generations (
   -- Evaluations whose fitness saturated at +-1e300 (schema 5: an older database gets the
   -- column, 0, when opened for writing and reads as 0 otherwise).
   saturated     INTEGER NOT NULL DEFAULT 0,
+  -- Schema 9: the optimizer's metrics (metric_tables.hpp), NULL when it reports none: the
+  -- indexes of their names in metric_names ("0,1,2") and their values, doubles.
+  metric_names  TEXT,
+  metrics       BLOB,
   checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run, generation)
 );
@@ -136,18 +140,11 @@ CREATE TABLE optimizer_state (
   algorithm     TEXT NOT NULL,
   format        INTEGER NOT NULL,
   state         BLOB NOT NULL,
+  -- Schema 9: NULL while the run goes on (`state` the bytes as saved); a finished run's are
+  -- zlib-compressed, this many bytes once uncompressed (NEAT's 300 KB become about 40).
+  raw_size      INTEGER,
   checksum      INTEGER NOT NULL DEFAULT 0,
   PRIMARY KEY (controller_id, run)
-);
-CREATE TABLE metrics (
-  controller_id INTEGER NOT NULL REFERENCES controllers(id),
-  run           INTEGER NOT NULL,
-  generation    INTEGER NOT NULL,
-  idx           INTEGER NOT NULL,
-  name          TEXT NOT NULL,
-  value         REAL,              -- NULL: NaN
-  checksum      INTEGER NOT NULL DEFAULT 0,
-  PRIMARY KEY (controller_id, run, generation, idx)
 );
 -- Schema 3 (studies); also what opening an older database for writing adds to it.
 CREATE TABLE studies (

@@ -74,7 +74,8 @@ constexpr SealedTable kSealedTables[] = {
     {"run_state", "the population to continue from (ES parents and step sizes)"},
     {"tree_state", "the population to continue from (GP trees)"},
     {"optimizer_state", "the optimizer's state to continue from"},
-    {"metrics", "the optimizer's metrics of a generation"},
+    {"metrics", "the optimizer's metrics of a generation"},   // schemas 6 to 8
+    {"metric_names", "the name of an optimizer's metric"},
     {"member_layouts", "what a controller's optimizer keeps beside the best"},
     {"members", "the front or archive changes of a generation"},
     {"behavior_usage", "the behavior usage"},

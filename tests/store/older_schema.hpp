@@ -1,26 +1,81 @@
 #pragma once
-// Databases as an esc before results schema 6 wrote them, made from a current one: the tests
+// Databases as an older esc wrote them (results schemas 1 to 8), made from a current one: the tests
 // of upgrades and of reading old results start from these.
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <stdexcept>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/state_bytes.hpp"
 #include "runtime/store/es_state.hpp"
+#include "runtime/store/metric_tables.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/sqlite.hpp"
 
 namespace esc::store::test {
 
+// As schemas 6 to 8 kept metrics and states: one row per metric and generation in table
+// metrics (NaN as NULL), not in the generation's row, and every state uncompressed; the
+// tables sealed again.
+inline void as_schema8(sql::Database& raw) {
+  raw.exec(R"sql(
+CREATE TABLE metrics (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  generation    INTEGER NOT NULL,
+  idx           INTEGER NOT NULL,
+  name          TEXT NOT NULL,
+  value         REAL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (controller_id, run, generation, idx)
+);)sql");
+  {   // finished before the columns are dropped
+    auto q = raw.prepare("SELECT controller_id, run, generation, metric_names, metrics FROM generations "
+                         "WHERE metric_names IS NOT NULL");
+    auto row = raw.prepare("INSERT INTO metrics(controller_id, run, generation, idx, name, value) "
+                           "VALUES (?, ?, ?, ?, ?, ?)");
+    while (q.step()) {
+      const MetricNames names(raw, q.int64(0));
+      const std::vector<evo::Metric> metrics = names.decode(q.text(3), q.doubles(4), "test");
+      for (std::size_t i = 0; i < metrics.size(); ++i)
+        row.bind(1, q.int64(0)).bind(2, q.int64(1)).bind(3, q.int64(2)).bind(4, static_cast<std::int64_t>(i))
+            .bind(5, metrics[i].name).bind(6, metrics[i].value)
+            .run();
+    }
+  }
+  std::vector<std::pair<std::int64_t, evo::StateBytes>> states;
+  {
+    auto q = raw.prepare("SELECT rowid, state, raw_size FROM optimizer_state WHERE raw_size IS NOT NULL");
+    while (q.step()) {
+      const std::string_view packed = q.bytes(1);
+      uLongf size = static_cast<uLongf>(q.int64(2));
+      evo::StateBytes bytes(size);
+      if (uncompress(bytes.data(), &size, reinterpret_cast<const Bytef*>(packed.data()), packed.size()) != Z_OK)
+        throw std::runtime_error("test: a state that does not uncompress");
+      states.emplace_back(q.int64(0), std::move(bytes));
+    }
+  }
+  for (const auto& [rowid, bytes] : states)
+    raw.prepare("UPDATE optimizer_state SET state = ? WHERE rowid = ?")
+        .bind_blob(1, std::span<const std::uint8_t>(bytes)).bind(2, rowid)
+        .run();
+  raw.exec("ALTER TABLE generations DROP COLUMN metric_names; ALTER TABLE generations DROP COLUMN metrics; "
+           "DROP TABLE metric_names; ALTER TABLE optimizer_state DROP COLUMN raw_size; PRAGMA user_version=8;");
+  for (const char* t : {"generations", "metrics", "optimizer_state"}) seal_table(raw, t);
+}
+
 // Moves every ES run's state into table run_state, as schema 5 kept it, and drops what
 // schemas 6 to 8 added (tables optimizer_state, metrics, member_layouts and members, columns
 // controllers.algorithm, runs.stopped and runs.success_evaluation).
 inline void keep_state_as_schema5(sql::Database& raw) {
+  as_schema8(raw);
   std::vector<std::tuple<std::int64_t, std::int64_t, std::vector<evo::Individual>>> rows;
   auto q = raw.prepare("SELECT controller_id, run, state FROM optimizer_state WHERE algorithm = 'es'");
   while (q.step()) {
@@ -49,6 +104,7 @@ inline void keep_state_as_schema5(sql::Database& raw) {
 // As schema 7 wrote it: without schema 8's column runs.success_evaluation (the runs sealed
 // again without it) and tables member_layouts and members.
 inline void as_schema7(sql::Database& raw) {
+  as_schema8(raw);
   raw.exec("ALTER TABLE runs DROP COLUMN success_evaluation; DROP TABLE member_layouts; DROP TABLE members; "
            "PRAGMA user_version=7;");
   seal_table(raw, "runs");

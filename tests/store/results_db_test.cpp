@@ -2,6 +2,7 @@
 // foreign, damaged and newer databases give clear errors; exports show what is stored.
 #include "runtime/store/results_db.hpp"
 
+#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -330,6 +331,128 @@ TEST(ResultsDb, ARunsFirstSuccessIsStoredAndASchemaSevenDatabaseGetsTheColumn) {
   ASSERT_TRUE(version.step());
   EXPECT_EQ(version.int64(0), kSchemaVersion);
   EXPECT_EQ(ResultsDb::open(dir, true).load_single().controllers[0].finished[0].success_evaluation, 4);
+}
+
+// Schema 9: metrics in their generation's row, each name once. A schema-8 database (one row
+// per metric in table metrics) reads the same metrics as it is, and when opened for writing
+// moves them into its generations: the same names, values bit for bit, the table gone.
+TEST(ResultsDb, ASchemaEightDatabasesMetricsMoveIntoTheirGenerations) {
+  const fs::path dir = fresh_dir("metrics-8");
+  eval::RunState other = state(1);
+  other.run = 2;
+  other.generations.back().metrics = {{"lambda", 12.0}, {"sigma", -0.0}};   // a name first seen here
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    db.commit_generation("SC", state(1));
+    db.commit_generation("SC", state(2));
+    db.commit_generation("SC", other);
+  }
+  const auto metrics_of = [&dir](bool writable) {
+    std::vector<std::vector<evo::Metric>> out;
+    const StoredExperiment s = ResultsDb::open(dir, !writable).load_single();
+    for (const eval::RunState& r : s.controllers.at(0).in_progress)
+      for (const eval::GenerationStats& g : r.generations) out.push_back(g.metrics);
+    return out;
+  };
+  const auto same = [](const std::vector<std::vector<evo::Metric>>& a, const std::vector<std::vector<evo::Metric>>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t g = 0; g < a.size(); ++g) {
+      if (a[g].size() != b[g].size()) return false;
+      for (std::size_t i = 0; i < a[g].size(); ++i)
+        if (a[g][i].name != b[g][i].name || std::bit_cast<std::uint64_t>(a[g][i].value) !=
+                                                std::bit_cast<std::uint64_t>(b[g][i].value))
+          return false;
+    }
+    return true;
+  };
+  const auto written = metrics_of(false);
+  ASSERT_EQ(written.size(), 3U);
+  EXPECT_EQ(written[1].size(), 3U);
+  EXPECT_EQ(written[2][0].name, "lambda");
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    test::as_schema8(raw);
+  }
+  const auto eight = metrics_of(false);
+  EXPECT_EQ(eight.size(), written.size());
+  EXPECT_EQ(eight[1][1], written[1][1]);
+  EXPECT_TRUE(std::isnan(eight[1][2].value)) << "schema 8 kept NaN as NULL";
+  EXPECT_TRUE(same(metrics_of(true), eight)) << "moved into the generations as schema 8 read them";
+  sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
+  EXPECT_FALSE(raw.prepare("SELECT 1 FROM sqlite_master WHERE name = 'metrics'").step());
+  auto names = raw.prepare("SELECT group_concat(name, ' ') FROM (SELECT name FROM metric_names ORDER BY idx)");
+  ASSERT_TRUE(names.step());
+  EXPECT_EQ(names.text(0), "sigma condition nothing lambda");
+  auto version = raw.prepare("PRAGMA user_version");
+  ASSERT_TRUE(version.step());
+  EXPECT_EQ(version.int64(0), kSchemaVersion);
+}
+
+// Schema 9: a finished run's state is kept compressed, and carrying the run on reads it back
+// byte for byte; compressed bytes that do not uncompress are refused, located.
+TEST(ResultsDb, AFinishedRunsStateIsCompressedAndReadBackExactly) {
+  const fs::path dir = fresh_dir("state-zlib");
+  eval::RunState last = state(2);
+  last.optimizer.bytes.assign(100000, 7);
+  for (std::size_t i = 0; i < last.optimizer.bytes.size(); i += 13) last.optimizer.bytes[i] = static_cast<std::uint8_t>(i);
+  eval::RunResult finished{1, last.seed, last.generations, 9.875, {0.5, 0.25, -0.125}, 1, 17, {7, 3}};
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    db.commit_generation("SC", state(1));
+    db.commit_generation("SC", last);
+    db.commit_run("SC", finished);
+  }
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
+    auto q = raw.prepare("SELECT length(state), raw_size FROM optimizer_state");
+    ASSERT_TRUE(q.step());
+    EXPECT_EQ(q.int64(1), 100000);
+    EXPECT_LT(q.int64(0), 20000) << "stored compressed";
+  }
+  eval::ExperimentSpec longer = spec();
+  longer.generations = 5;
+  {
+    ResultsDb db = ResultsDb::open(dir, true);
+    const eval::ResumePoint p = db.resume_point(db.load_single(), longer);
+    ASSERT_EQ(p.in_progress.size(), 1U);
+    EXPECT_EQ(p.in_progress[0].state.optimizer, last.optimizer) << "carried on from the same bytes";
+  }
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("UPDATE optimizer_state SET raw_size = raw_size + 1");
+    seal_table(raw, "optimizer_state");
+  }
+  ResultsDb db = ResultsDb::open(dir, true);
+  try {
+    (void)db.resume_point(db.load_single(), longer);
+    FAIL() << "carried on from a state of the wrong size";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("is damaged: run 2 of SC: its stored state does not uncompress to its 100001 bytes"),
+              std::string::npos) << e.what();
+  }
+}
+
+// A generation row naming a metric that metric_names lacks is refused, located, even with a
+// checksum that matches (a row rewritten whole).
+TEST(ResultsDb, AGenerationNamingAnUnstoredMetricIsDamage) {
+  const fs::path dir = fresh_dir("metrics-damage");
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    db.commit_generation("SC", state(1));
+    db.commit_generation("SC", state(2));
+  }
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("UPDATE generations SET metric_names = '0,1,9' WHERE generation = 1");
+    seal_table(raw, "generations");
+  }
+  try {
+    (void)ResultsDb::open(dir, true).load_single();
+    FAIL() << "read a metric name that is not stored";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("is damaged: run 2 of SC: a metric name that is not stored"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ResultsDb, ClearErrorsForForeignDamagedAndNewerDatabases) {
