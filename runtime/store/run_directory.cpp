@@ -302,7 +302,7 @@ void RunDirectory::finish(const eval::CampaignResult& result) {
 
 void RunDirectory::write_summary() {
   if (summary_) summary_(partial_);
-  else write_atomically(dir_ / "summary.json", summary_json(partial_).dump(2) + "\n");
+  else write_atomically(dir_ / "summary.json", summary_text(summary_json(partial_)));
 }
 
 }  // namespace esc::store

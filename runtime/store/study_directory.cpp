@@ -101,7 +101,7 @@ RunDirectory StudyDirectory::open_condition(std::size_t i, const eval::ResumePoi
 }
 
 void StudyDirectory::write_summary() const {
-  write_atomically(dir_ / "summary.json", study_summary_json(name_, seed_, summaries_).dump(2) + "\n");
+  write_atomically(dir_ / "summary.json", summary_text(study_summary_json(name_, seed_, summaries_)));
 }
 
 }  // namespace esc::store

@@ -113,4 +113,46 @@ nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_
   return {{"study", study}, {"seed", seed_json(seed)}, {"conditions", list}};
 }
 
+namespace {
+
+bool numbers_only(const nlohmann::ordered_json& array) {
+  for (const nlohmann::ordered_json& e : array)
+    if (!e.is_number() && !e.is_null()) return false;
+  return true;
+}
+
+void write_json(std::string& out, const nlohmann::ordered_json& j, std::size_t depth) {
+  const bool nested = (j.is_object() || j.is_array()) && !j.empty();
+  if (!nested || (j.is_array() && numbers_only(j))) {
+    if (!nested) {
+      out += j.dump();
+      return;
+    }
+    out += '[';
+    for (std::size_t i = 0; i < j.size(); ++i) out += (i == 0 ? "" : ", ") + j[i].dump();
+    out += ']';
+    return;
+  }
+  out += j.is_object() ? "{\n" : "[\n";
+  bool first = true;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!first) out += ",\n";
+    first = false;
+    out.append(2 * (depth + 1), ' ');
+    if (j.is_object()) out += nlohmann::ordered_json(it.key()).dump() + ": ";
+    write_json(out, it.value(), depth + 1);
+  }
+  out += '\n';
+  out.append(2 * depth, ' ');
+  out += j.is_object() ? '}' : ']';
+}
+
+}  // namespace
+
+std::string summary_text(const nlohmann::ordered_json& summary) {
+  std::string out;
+  write_json(out, summary, 0);
+  return out + "\n";
+}
+
 }  // namespace esc::store

@@ -41,4 +41,9 @@ struct ConditionSummary {
 [[nodiscard]] nlohmann::ordered_json study_summary_json(const std::string& study, std::uint64_t seed,
                                                         const std::vector<ConditionSummary>& conditions);
 
+// summary.json's text: nlohmann's two-space layout, except that an array of numbers stays on
+// one line. One number per line made a full-length study's summary.json 10.6 MB, 45 % of it
+// indentation (the committed hard maze study's); the values are written as dump() writes them.
+[[nodiscard]] std::string summary_text(const nlohmann::ordered_json& summary);
+
 }  // namespace esc::store
