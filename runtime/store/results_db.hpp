@@ -43,8 +43,9 @@ inline constexpr const char* kDependencyCache = "deps";
 // 8: the evaluation of a run that first met the experiment's success test
 // (runs.success_evaluation), and what an optimizer keeps beside the best, per generation
 // (member_tables.hpp). 9: the optimizer's metrics in their generation's row, their names
-// once per controller (metric_tables.hpp).
-inline constexpr int kSchemaVersion = 9;
+// once per controller (metric_tables.hpp). 10: a generation's members in one row
+// (member_tables.hpp).
+inline constexpr int kSchemaVersion = 10;
 // PRAGMA application_id of an esc database: "ESC1".
 inline constexpr std::int32_t kApplicationId = 0x45534331;
 

@@ -66,6 +66,8 @@ void ResultsDb::upgrade() {
       seal_table(db_, "optimizer_state");
     }
   }
+  // 10: a row per generation of members (older than 8: created with member_layouts above)
+  if (schema_version_ >= kMemberSchemaVersion && schema_version_ < kPackedMemberSchemaVersion) pack_member_rows(db_);
   if (schema_version_ < 5) {   // saturated evaluations, checksums (the analyses' tables too)
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");

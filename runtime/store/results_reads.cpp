@@ -167,7 +167,9 @@ std::vector<StoredExperiment> ResultsDb::load() {
                                   unpack_trace(rp.doubles(3), columns),
                                   std::find(columns.begin(), columns.end(), kRunningFitness) != columns.end()};
         }
-        if (schema_version_ >= kMemberSchemaVersion) c.members = load_members(db_, c.id);
+        if (schema_version_ >= kMemberSchemaVersion)
+          c.members = load_members(db_, c.id, schema_version_ >= kPackedMemberSchemaVersion,
+                                   fmt::format("{} is damaged: {}", file_.string(), c.name));
       }
     }
     return out;

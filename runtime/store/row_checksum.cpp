@@ -77,7 +77,8 @@ constexpr SealedTable kSealedTables[] = {
     {"metrics", "the optimizer's metrics of a generation"},   // schemas 6 to 8
     {"metric_names", "the name of an optimizer's metric"},
     {"member_layouts", "what a controller's optimizer keeps beside the best"},
-    {"members", "the front or archive changes of a generation"},
+    {"members", "a member of a generation's front or archive changes"},   // schemas 8 and 9
+    {"member_generations", "the front or archive changes of a generation"},
     {"behavior_usage", "the behavior usage"},
     {"replays", "the stored replay"},
     {"studies", "the study's record"},

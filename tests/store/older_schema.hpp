@@ -2,6 +2,7 @@
 // Databases as an older esc wrote them (results schemas 1 to 8), made from a current one: the tests
 // of upgrades and of reading old results start from these.
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <string_view>
 #include <stdexcept>
@@ -21,9 +22,9 @@
 
 namespace esc::store::test {
 
-// As schemas 6 to 8 kept metrics and states: one row per metric and generation in table
-// metrics (NaN as NULL), not in the generation's row, and every state uncompressed; the
-// tables sealed again.
+// As schema 8 kept metrics, states and members: one row per metric and generation in table
+// metrics (NaN as NULL), not in the generation's row, every state uncompressed, and one row
+// per member in table members; the tables sealed again.
 inline void as_schema8(sql::Database& raw) {
   raw.exec(R"sql(
 CREATE TABLE metrics (
@@ -66,6 +67,42 @@ CREATE TABLE metrics (
     raw.prepare("UPDATE optimizer_state SET state = ? WHERE rowid = ?")
         .bind_blob(1, std::span<const std::uint8_t>(bytes)).bind(2, rowid)
         .run();
+  // Members a row each (schemas 8 and 9), from the generations' rows of schema 10.
+  raw.exec(R"sql(
+CREATE TABLE members (
+  controller_id INTEGER NOT NULL REFERENCES controllers(id),
+  run           INTEGER NOT NULL,
+  generation    INTEGER NOT NULL,
+  idx           INTEGER NOT NULL,
+  cell          INTEGER NOT NULL,
+  objectives    BLOB NOT NULL,
+  descriptors   BLOB NOT NULL,
+  checksum      INTEGER NOT NULL DEFAULT 0,
+  PRIMARY KEY (controller_id, run, generation, idx)
+);)sql");
+  {
+    auto q = raw.prepare("SELECT controller_id, run, generation, members, cells, objectives, descriptors "
+                         "FROM member_generations");
+    auto row = raw.prepare("INSERT INTO members(controller_id, run, generation, idx, cell, objectives, descriptors) "
+                           "VALUES (?, ?, ?, ?, ?, ?, ?)");
+    while (q.step()) {
+      const auto n = static_cast<std::size_t>(q.int64(3));
+      const std::string_view cells = q.bytes(4);
+      const std::vector<double> objectives = q.doubles(5), descriptors = q.doubles(6);
+      const std::size_t k = objectives.size() / n, d = descriptors.size() / n;
+      for (std::size_t i = 0; i < n; ++i) {
+        std::int64_t cell = 0;
+        std::memcpy(&cell, cells.data() + i * sizeof cell, sizeof cell);
+        row.bind(1, q.int64(0)).bind(2, q.int64(1)).bind(3, q.int64(2)).bind(4, static_cast<std::int64_t>(i))
+            .bind(5, cell)
+            .bind_blob(6, std::span<const double>(objectives).subspan(i * k, k))
+            .bind_blob(7, std::span<const double>(descriptors).subspan(i * d, d))
+            .run();
+      }
+    }
+  }
+  raw.exec("DROP TABLE member_generations;");
+  seal_table(raw, "members");
   raw.exec("ALTER TABLE generations DROP COLUMN metric_names; ALTER TABLE generations DROP COLUMN metrics; "
            "DROP TABLE metric_names; ALTER TABLE optimizer_state DROP COLUMN raw_size; PRAGMA user_version=8;");
   for (const char* t : {"generations", "metrics", "optimizer_state"}) seal_table(raw, t);

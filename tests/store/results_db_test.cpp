@@ -253,9 +253,53 @@ TEST(ResultsDb, MembersRoundTripAndAnyGenerationsArchiveIsReadBack) {
   EXPECT_EQ(members_at(*c.members, 1, 2).size(), 4U);
   {  // A bit flipped in a stored member is refused.
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    raw.exec("UPDATE members SET cell = 4 WHERE generation = 2 AND idx = 0");
+    raw.exec("UPDATE member_generations SET members = 4 WHERE generation = 2");
   }
   EXPECT_THROW((void)ResultsDb::open(dir, true).load(), StoreError);
+}
+
+// Schema 10: a generation's members in one row. A schema-8 or 9 database (a row per member)
+// reads the same members as it is, and packs them when opened for writing; a row whose
+// values do not fit its count is refused, located, even with a matching checksum.
+TEST(ResultsDb, ASchemaEightDatabasesMembersArePackedWhenWritten) {
+  const fs::path dir = fresh_dir("members-8");
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(), {}, {});
+    for (int g = 1; g <= 3; ++g) db.commit_generation("SC", with_members(g));
+  }
+  const auto rows = [&dir](bool writable) {
+    const StoredExperiment s = ResultsDb::open(dir, !writable).load_single();
+    return s.controllers.at(0).members.value().rows;
+  };
+  const auto same = [](const std::vector<StoredMember>& a, const std::vector<StoredMember>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].run != b[i].run || a[i].generation != b[i].generation || a[i].cell != b[i].cell ||
+          a[i].objectives != b[i].objectives || a[i].descriptors != b[i].descriptors)
+        return false;
+    return true;
+  };
+  const std::vector<StoredMember> written = rows(false);
+  ASSERT_EQ(written.size(), 6U);
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    test::as_schema8(raw);
+  }
+  EXPECT_TRUE(same(rows(false), written)) << "read from a row per member";
+  EXPECT_TRUE(same(rows(true), written)) << "packed, the same members";
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    EXPECT_FALSE(raw.prepare("SELECT 1 FROM sqlite_master WHERE name = 'members'").step());
+    raw.exec("UPDATE member_generations SET members = 3 WHERE generation = 1");
+    seal_table(raw, "member_generations");
+  }
+  try {
+    (void)ResultsDb::open(dir, true).load_single();
+    FAIL() << "read members that do not fit their count";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("is damaged: SC: the members of run 2, generation 1 do not fit their count"),
+              std::string::npos) << e.what();
+  }
 }
 
 // A database from before schema 8 has no member tables: it reads as it is, and gets them
