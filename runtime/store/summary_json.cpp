@@ -64,16 +64,14 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
     for (const auto& r : c.runs) {
       nlohmann::ordered_json best = nlohmann::ordered_json::array();
       nlohmann::ordered_json mean = nlohmann::ordered_json::array();
-      nlohmann::ordered_json sd = nlohmann::ordered_json::array();
       std::int64_t saturated = 0;
       for (const auto& g : r.generations) {
         best.push_back(g.best);
         mean.push_back(g.mean);
-        sd.push_back(g.sd);
         saturated += g.saturated;
       }
       nlohmann::ordered_json run = {{"run", r.run + 1}, {"seed", seed_json(r.seed)}, {"best_fitness", r.best_fitness},
-                                    {"best", best}, {"mean", mean}, {"sd", sd}};
+                                    {"best", best}, {"mean", mean}};
       // Evaluations whose fitness saturated at +-1e300 (docs/language.md), over the run.
       run["saturated_evaluations"] = saturated;
       if (!r.best_tree.empty()) run["best_tree"] = r.best_tree;   // tree controllers, as script code

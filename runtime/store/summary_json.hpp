@@ -2,7 +2,8 @@
 // summary.json: the machine-readable result of a campaign.
 // {"experiment": name, "seed": master seed, "controllers": {NAME: {"architecture": "8-14-6",
 //   "genome_size": 216, "runs": [{"run": 1, "seed": ..., "best_fitness": ...,
-//   "best": [per generation], "mean": [per generation], "sd": [per generation],
+//   "best": [per generation], "mean": [per generation] (the population's sd is in esc.db and
+//   its exports: summary.json keeps what the command-line contract reads),
 //   "best_tree": script code (tree controllers only),
 //   "behavior_usage": {BEHAVIOR: steps in the run's best evaluation} (symbolic heads, supervisors),
 //   "usage": {"behaviors": [names], "best_steps": [[per behavior] per generation],

@@ -35,25 +35,52 @@ std::vector<std::string> golden_files() {
   return names;
 }
 
+// Each run's per-generation sd, which summary.json does not keep, from `esc export --format
+// json`: by condition ("" for an experiment), controller, then run.
+json sds_of(const fs::path& out) {
+  const Outcome o = esc("export " + out.string() + " --format json");
+  EXPECT_EQ(o.status, 0) << o.output;
+  const json doc = json::parse(o.output);
+  json by = json::object();
+  for (const json& e : doc.at("experiments")) {
+    const std::string where = e.value("condition", "");
+    for (const auto& [name, c] : e.at("controllers").items()) {
+      json runs = json::array();
+      for (const json& r : c.at("runs")) {
+        json sd = json::array();
+        for (const json& g : r.at("generations")) sd.push_back(g.at("sd"));
+        runs.push_back(std::move(sd));
+      }
+      by[where][name] = std::move(runs);
+    }
+  }
+  return by;
+}
+
 // The results proper of a summary.json's controllers: per controller, per run, the fitness
-// figures.
-json results_of(const json& controllers) {
+// figures (`sds`: the condition's sd arrays, by controller and run).
+json results_of(const json& controllers, const json& sds) {
   json out = json::object();
   for (const auto& [name, c] : controllers.items()) {
     json runs = json::array();
-    for (const json& r : c.at("runs"))
+    for (std::size_t i = 0; i < c.at("runs").size(); ++i) {
+      const json& r = c.at("runs")[i];
       runs.push_back({{"best_fitness", r.at("best_fitness")}, {"best", r.at("best")}, {"mean", r.at("mean")},
-                      {"sd", r.at("sd")}});
+                      {"sd", sds.at(name).at(i)}});
+    }
     out[name] = runs;
   }
   return out;
 }
 
 // An experiment's results, or a study's: its conditions' by name.
-json summary_results(const json& summary) {
-  if (!summary.contains("conditions")) return results_of(summary.at("controllers"));
+json summary_results(const json& summary, const json& sds) {
+  if (!summary.contains("conditions")) return results_of(summary.at("controllers"), sds.at(""));
   json out = json::object();
-  for (const json& c : summary.at("conditions")) out[c.at("name").get<std::string>()] = results_of(c.at("controllers"));
+  for (const json& c : summary.at("conditions")) {
+    const std::string name = c.at("name").get<std::string>();
+    out[name] = results_of(c.at("controllers"), sds.at(name));
+  }
   return out;
 }
 
@@ -82,7 +109,7 @@ TEST_P(Golden, ShortRunGivesTheRecordedResults) {
   const Outcome o = esc("run " + script + " --experiment " + golden.at("experiment").get<std::string>() + " " +
                         golden.at("args").get<std::string>() + " --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
-  const json got = summary_results(read_json(out / "summary.json"));
+  const json got = summary_results(read_json(out / "summary.json"), sds_of(out));
   const char* key = golden.contains("conditions") ? "conditions" : "controllers";
   if (const char* update = std::getenv("ESC_UPDATE_GOLDEN"); update != nullptr && std::string(update) == "1") {
     golden[key] = got;
