@@ -92,7 +92,8 @@ class Run:
     @property
     def summary(self) -> dict:
         """summary.json as a dict (docs/results-store.md): per controller its runs' best
-        fitness, seeds and per-generation best, mean and sd. Seeds are decimal strings."""
+        fitness, seeds and per-generation best and mean (the population's sd per generation
+        is in `table("generations")`). Seeds are decimal strings."""
         file = os.path.join(self._path, "summary.json")
         try:
             with builtins.open(file, encoding="utf-8") as f:
