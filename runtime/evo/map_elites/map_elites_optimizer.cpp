@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/genome/genome_size.hpp"
 #include "runtime/genome/graph/graph_variation.hpp"
 #include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/map_elites/selection.hpp"
@@ -221,7 +222,7 @@ std::size_t map_elites_population(const MapElitesRunSettings& settings, const Pr
 
 MemoryPeak map_elites_memory_peak(const MapElitesRunSettings& settings, const Problem& problem, int generations) {
   const double cells = cells_of(settings, problem.descriptors.size());
-  const std::size_t genes = genome::tree::genes_at_most(problem);
+  const std::size_t genes = genome::genes_at_most(problem);
   const double candidates = std::max(settings.batch, settings.initial);
   const std::string archive =
       settings.cvt ? fmt::format("CVT-MAP-Elites' archive of {} cells", settings.cells)

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/genome/genome_size.hpp"
 #include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/map_elites/point_tree.hpp"
 #include "runtime/evo/measured_state.hpp"
@@ -199,7 +200,7 @@ std::size_t novelty_population(const NoveltyRunSettings& settings, const Problem
 MemoryPeak novelty_memory_peak(const NoveltyRunSettings& settings, const Problem& problem) {
   const double big_n = static_cast<double>(settings.population);
   const double d = static_cast<double>(problem.descriptors.size());
-  const std::size_t genes = genome::tree::genes_at_most(problem);
+  const std::size_t genes = genome::genes_at_most(problem);
   const double core = nsga2_memory_bytes(variation_of(settings), genes, settings.with_fitness ? 2 : 1);
   // Descriptors: the parents' kept, parents' and children's copied for scoring, the archive's.
   const double descriptors = rows_bytes(4.0 * big_n, d);

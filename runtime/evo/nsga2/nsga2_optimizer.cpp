@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/genome/genome_size.hpp"
 #include "runtime/genome/graph/graph_variation.hpp"
 #include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/measured_state.hpp"
@@ -136,7 +137,7 @@ std::size_t nsga2_population(const Nsga2Settings& settings, const Problem& /*pro
 
 MemoryPeak nsga2_memory_peak(const Nsga2Settings& settings, const Problem& problem) {
   const double big_n = static_cast<double>(settings.population);
-  const std::size_t genes = genome::tree::genes_at_most(problem);
+  const std::size_t genes = genome::genes_at_most(problem);
   return {nsga2_memory_bytes(settings, genes, problem.objectives.size()) + 2.0 * big_n * sizeof(Measured), big_n,
           fmt::format("NSGA-II's {} parents and {} children of {} genes, ranked together", settings.population,
                       settings.population, genes),

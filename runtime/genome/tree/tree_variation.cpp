@@ -1,6 +1,5 @@
 #include "runtime/genome/tree/tree_variation.hpp"
 
-#include "runtime/genome/graph/graph_variation.hpp"
 
 #include "runtime/genome/tree/codec.hpp"
 #include "runtime/genome/tree/init.hpp"
@@ -60,12 +59,6 @@ double TreeVariation::mutation_sum() const noexcept {
 
 double encoded_tree_bytes(const TreeOperators& operators) noexcept {
   return static_cast<double>(kCodedNodeWidth) * static_cast<double>(operators.max_size) * sizeof(double);
-}
-
-std::size_t genes_at_most(const evo::Problem& problem) {
-  if (problem.graph.graphs()) return graph::typical_encoded_size(problem.graph);
-  if (problem.tree.primitives == nullptr || problem.tree.operators == nullptr) return problem.genome_size;
-  return kCodedNodeWidth * static_cast<std::size_t>(problem.tree.operators->max_size);
 }
 
 std::string tree_problem(const evo::Problem& problem, std::string_view algorithm) {

@@ -59,10 +59,6 @@ class TreeVariation final : public Representation {
 // Bytes one encoded tree of at most max_size nodes holds.
 [[nodiscard]] double encoded_tree_bytes(const TreeOperators& operators) noexcept;
 
-// Values per genome at most: a network's weights, an encoded tree of the GP's max_size, or a
-// graph genome grown to twice its start's links (what memory estimates count per candidate).
-[[nodiscard]] std::size_t genes_at_most(const evo::Problem& problem);
-
 // Why `algorithm` cannot vary the problem's trees (the experiment gives no GP settings), or
 // "" (also for a network).
 [[nodiscard]] std::string tree_problem(const evo::Problem& problem, std::string_view algorithm);
