@@ -52,7 +52,13 @@ TEST(HtmlReport, DataHoldsCurvesStatisticsUsageAndReplay) {
   const auto d = report_data({experiment()}, o);
   const auto& e = d["experiments"][0];
   ASSERT_EQ(e["controllers"].size(), 2U);
-  EXPECT_EQ(e["controllers"][0]["runs"][2]["best"], nlohmann::json({3.0, 4.0}));
+  // The fitness curves over the runs (bests 1, 2, 3 then 2, 3, 4): mean and sample sd per
+  // generation; no run's series is embedded.
+  EXPECT_EQ(e["controllers"][0]["curves"]["best"]["mean"], nlohmann::json({2.0, 3.0}));
+  EXPECT_EQ(e["controllers"][0]["curves"]["best"]["sd"], nlohmann::json({1.0, 1.0}));
+  EXPECT_EQ(e["controllers"][0]["curves"]["mean"]["sd"], nlohmann::json({0.0, 0.0}));
+  EXPECT_FALSE(e["controllers"][0]["runs"][2].contains("best"));
+  EXPECT_EQ(e["controllers"][0]["runs"][2]["best_fitness"], 4.0);
   EXPECT_EQ(e["controllers"][1]["usage"].size(), 3U);
   EXPECT_EQ(e["controllers"][1]["replay"]["rows"].size(), 8U);
   EXPECT_EQ(e["controllers"][1]["replay"]["total_steps"], 12);

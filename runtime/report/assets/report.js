@@ -73,16 +73,13 @@
     return canvas;
   }
 
-  // Mean over runs, per generation, of one per-run series ("best" or "mean"), with +-sd.
+  // Mean over runs, per generation, of one per-run series ("best" or "mean"), with +-sd
+  // (computed by esc over the runs that reached each generation: html_report.cpp).
   function curves(controller, key) {
-    const runs = controller.runs;
-    const length = Math.max(0, ...runs.map(r => r[key].length));
-    const mean = [], lo = [], hi = [];
-    for (let g = 0; g < length; ++g) {
-      const [m, sd] = meanSd(runs.filter(r => g < r[key].length).map(r => r[key][g]));
-      mean.push(m); lo.push(m - sd); hi.push(m + sd);
-    }
-    return {mean, lo, hi, length};
+    const {mean, sd} = controller.curves[key];
+    const lo = mean.map((m, g) => m === null ? null : m - sd[g]);
+    const hi = mean.map((m, g) => m === null ? null : m + sd[g]);
+    return {mean, lo, hi, length: mean.length};
   }
 
   function fitnessChart(parent, exp, key, title) {
