@@ -25,6 +25,16 @@ CREATE TABLE metric_names (
 )sql";
 }
 
+namespace {
+
+// A row of schemas 6 to 8's table metrics: its name and value in columns `at` and `at` + 1
+// (SQLite kept NaN as NULL).
+evo::Metric legacy_metric(const sql::Statement& q, int at) {
+  return {q.text(at), q.is_null(at + 1) ? std::numeric_limits<double>::quiet_NaN() : q.real(at + 1)};
+}
+
+}  // namespace
+
 MetricColumns metric_columns(sql::Database& db, std::int64_t controller_id, std::span<const evo::Metric> metrics) {
   MetricColumns c;
   if (metrics.empty()) return c;
@@ -87,8 +97,7 @@ void load_legacy_metrics(sql::Database& db, std::int64_t controller_id, int run,
     const auto g = static_cast<std::size_t>(q.int64(0));
     if (g >= gens.size())
       throw StoreError(fmt::format("{}: metrics of generation {}, which the run has not finished", damaged, g));
-    // SQLite kept NaN as NULL.
-    gens[g].metrics.push_back({q.text(1), q.is_null(2) ? std::numeric_limits<double>::quiet_NaN() : q.real(2)});
+    gens[g].metrics.push_back(legacy_metric(q, 1));
   }
 }
 
@@ -101,9 +110,7 @@ void move_metrics_into_generations(sql::Database& db, bool has_metrics_table) {
   {   // finished before the table is dropped
     auto q = db.prepare("SELECT controller_id, run, generation, name, value FROM metrics "
                         "ORDER BY controller_id, run, generation, idx");
-    while (q.step())
-      rows[{q.int64(0), q.int64(1), q.int64(2)}].push_back(
-          {q.text(3), q.is_null(4) ? std::numeric_limits<double>::quiet_NaN() : q.real(4)});
+    while (q.step()) rows[{q.int64(0), q.int64(1), q.int64(2)}].push_back(legacy_metric(q, 3));
   }
   for (const auto& [key, metrics] : rows) {
     const MetricColumns c = metric_columns(db, std::get<0>(key), metrics);

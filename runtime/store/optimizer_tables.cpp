@@ -37,6 +37,16 @@ void compress_state(sql::Database& db, std::int64_t controller_id, int run) {
   seal_row(db, "optimizer_state", rowid);
 }
 
+std::optional<evo::StateBytes> uncompress_state(std::string_view packed, std::int64_t raw_size) {
+  if (raw_size < 0) return std::nullopt;
+  uLongf size = static_cast<uLongf>(raw_size);
+  evo::StateBytes bytes(size);
+  if (uncompress(bytes.data(), &size, reinterpret_cast<const Bytef*>(packed.data()), packed.size()) != Z_OK ||
+      size != static_cast<uLongf>(raw_size))
+    return std::nullopt;
+  return bytes;
+}
+
 std::optional<eval::OptimizerState> load_optimizer_state(sql::Database& db, std::int64_t controller_id, int run,
                                                          bool has_raw_size, std::string_view damaged) {
   auto st = db.prepare(fmt::format("SELECT algorithm, format, state, {} FROM optimizer_state "
@@ -51,12 +61,9 @@ std::optional<eval::OptimizerState> load_optimizer_state(sql::Database& db, std:
     return s;
   }
   const std::int64_t raw_size = st.int64(3);
-  uLongf size = raw_size < 0 ? 0 : static_cast<uLongf>(raw_size);
-  s.bytes.resize(size);
-  if (raw_size < 0 ||
-      uncompress(s.bytes.data(), &size, reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()) != Z_OK ||
-      size != static_cast<uLongf>(raw_size))
-    throw StoreError(fmt::format("{}: its stored state does not uncompress to its {} bytes", damaged, raw_size));
+  std::optional<evo::StateBytes> raw = uncompress_state(bytes, raw_size);
+  if (!raw) throw StoreError(fmt::format("{}: its stored state does not uncompress to its {} bytes", damaged, raw_size));
+  s.bytes = std::move(*raw);
   return s;
 }
 

@@ -23,6 +23,9 @@ void save_state(sql::Database& db, std::int64_t controller_id, int run, const ev
 // Compresses that run's stored state, once it is finished (schema 9): what a finished study
 // keeps of each run, read back only to carry the run on.
 void compress_state(sql::Database& db, std::int64_t controller_id, int run);
+// A finished run's state as compress_state stored it, uncompressed to its `raw_size` bytes;
+// nullopt when it does not uncompress to exactly that many.
+[[nodiscard]] std::optional<evo::StateBytes> uncompress_state(std::string_view packed, std::int64_t raw_size);
 // The state stored for that run by schema 6 or later, uncompressed; nullopt when there is
 // none. Throws StoreError, its message starting with `damaged`, for compressed bytes that do
 // not uncompress to their size.

@@ -252,7 +252,6 @@ class ResultsDb {
   // What evolved `c` in a database older than schema 7, which does not say.
   std::string algorithm_before_7(const StoredController& c);
   void upgrade();   // to kSchemaVersion
-  bool table_exists(const std::string& table);
   bool column_exists(const std::string& table, const std::string& column);
 
   std::shared_ptr<const DirectoryLock> lock_;   // written to: no other process writes beside it

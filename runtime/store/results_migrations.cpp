@@ -22,10 +22,6 @@ bool ResultsDb::column_exists(const std::string& table, const std::string& colum
   return false;
 }
 
-bool ResultsDb::table_exists(const std::string& table) {
-  return db_.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?").bind(1, table).step();
-}
-
 void ResultsDb::upgrade() {
   // Each step adds what its version needs; what is stored is untouched.
   sql::Transaction tx(db_);
@@ -72,7 +68,7 @@ void ResultsDb::upgrade() {
     if (!column_exists("generations", "saturated"))
       db_.exec("ALTER TABLE generations ADD COLUMN saturated INTEGER NOT NULL DEFAULT 0;");
     for (const std::string_view t : sealed_tables()) {
-      if (!table_exists(std::string(t))) continue;   // one a later schema dropped (metrics, 9)
+      if (!db_.has_table(t)) continue;   // one a later schema dropped (metrics, 9)
       if (!column_exists(std::string(t), "checksum"))
         db_.exec(fmt::format("ALTER TABLE {} ADD COLUMN checksum INTEGER NOT NULL DEFAULT 0;", t));
       seal_table(db_, t);

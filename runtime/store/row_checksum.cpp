@@ -143,8 +143,7 @@ void seal_table(sql::Database& db, std::string_view table) {
 void verify_rows(sql::Database& db, const std::filesystem::path& file) {
   for (const std::string_view table : sealed_tables()) {
     // A table that a later schema added is absent from a database read without upgrading it.
-    auto exists = db.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?");
-    if (!exists.bind(1, table).step()) continue;
+    if (!db.has_table(table)) continue;
     auto q = db.prepare(fmt::format("SELECT * FROM {}", table));
     const int sum = checksum_column(q);
     while (q.step()) {

@@ -40,6 +40,9 @@ class Database {
   // Runs one or more statements without results.
   void exec(std::string_view sql);
   [[nodiscard]] Statement prepare(std::string_view sql);
+  // Whether the database has a table of that name (an older schema may lack one, or still
+  // hold one a later schema dropped).
+  [[nodiscard]] bool has_table(std::string_view name);
   [[nodiscard]] std::int64_t last_insert_rowid() const noexcept;
   [[nodiscard]] sqlite3* handle() const noexcept { return db_; }
 

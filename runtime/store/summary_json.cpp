@@ -120,12 +120,11 @@ bool numbers_only(const nlohmann::ordered_json& array) {
 }
 
 void write_json(std::string& out, const nlohmann::ordered_json& j, std::size_t depth) {
-  const bool nested = (j.is_object() || j.is_array()) && !j.empty();
-  if (!nested || (j.is_array() && numbers_only(j))) {
-    if (!nested) {
-      out += j.dump();
-      return;
-    }
+  if (!j.is_structured() || j.empty()) {
+    out += j.dump();
+    return;
+  }
+  if (j.is_array() && numbers_only(j)) {
     out += '[';
     for (std::size_t i = 0; i < j.size(); ++i) out += (i == 0 ? "" : ", ") + j[i].dump();
     out += ']';

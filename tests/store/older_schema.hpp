@@ -5,18 +5,19 @@
 #include <cstring>
 #include <span>
 #include <string_view>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
-#include <zlib.h>
 
 #include "runtime/evo/es/es.hpp"
 #include "runtime/evo/state_bytes.hpp"
 #include "runtime/store/es_state.hpp"
 #include "runtime/store/metric_tables.hpp"
+#include "runtime/store/optimizer_tables.hpp"
 #include "runtime/store/row_checksum.hpp"
 #include "runtime/store/sqlite.hpp"
 
@@ -55,12 +56,9 @@ CREATE TABLE metrics (
   {
     auto q = raw.prepare("SELECT rowid, state, raw_size FROM optimizer_state WHERE raw_size IS NOT NULL");
     while (q.step()) {
-      const std::string_view packed = q.bytes(1);
-      uLongf size = static_cast<uLongf>(q.int64(2));
-      evo::StateBytes bytes(size);
-      if (uncompress(bytes.data(), &size, reinterpret_cast<const Bytef*>(packed.data()), packed.size()) != Z_OK)
-        throw std::runtime_error("test: a state that does not uncompress");
-      states.emplace_back(q.int64(0), std::move(bytes));
+      std::optional<evo::StateBytes> bytes = uncompress_state(q.bytes(1), q.int64(2));
+      if (!bytes) throw std::runtime_error("test: a state that does not uncompress");
+      states.emplace_back(q.int64(0), std::move(*bytes));
     }
   }
   for (const auto& [rowid, bytes] : states)
@@ -151,8 +149,7 @@ inline void as_schema7(sql::Database& raw) {
 // keep_state_as_schema5 first: the tables of schema 6 and later are gone then).
 inline void drop_checksums(sql::Database& raw) {
   for (const std::string_view t : sealed_tables()) {
-    auto exists = raw.prepare("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?");
-    if (exists.bind(1, t).step()) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
+    if (raw.has_table(t)) raw.exec(fmt::format("ALTER TABLE {} DROP COLUMN checksum;", t));
   }
 }
 

@@ -289,7 +289,7 @@ TEST(ResultsDb, ASchemaEightDatabasesMembersArePackedWhenWritten) {
   EXPECT_TRUE(same(rows(true), written)) << "packed, the same members";
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
-    EXPECT_FALSE(raw.prepare("SELECT 1 FROM sqlite_master WHERE name = 'members'").step());
+    EXPECT_FALSE(raw.has_table("members"));
     raw.exec("UPDATE member_generations SET members = 3 WHERE generation = 1");
     seal_table(raw, "member_generations");
   }
@@ -423,7 +423,7 @@ TEST(ResultsDb, ASchemaEightDatabasesMetricsMoveIntoTheirGenerations) {
   EXPECT_TRUE(std::isnan(eight[1][2].value)) << "schema 8 kept NaN as NULL";
   EXPECT_TRUE(same(metrics_of(true), eight)) << "moved into the generations as schema 8 read them";
   sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
-  EXPECT_FALSE(raw.prepare("SELECT 1 FROM sqlite_master WHERE name = 'metrics'").step());
+  EXPECT_FALSE(raw.has_table("metrics"));
   auto names = raw.prepare("SELECT group_concat(name, ' ') FROM (SELECT name FROM metric_names ORDER BY idx)");
   ASSERT_TRUE(names.step());
   EXPECT_EQ(names.text(0), "sigma condition nothing lambda");
