@@ -9,6 +9,7 @@
 #include <any>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -78,6 +79,22 @@ struct AlgorithmOption {
 };
 
 // Row helpers over a settings type's fields.
+// Why settings cannot run, from checks that throw (an algorithm's own constructor or
+// validation): the std::invalid_argument's message without `prefix` (the algorithm's
+// "CMA-ES: ", which the compiler's message names already), or "" when `check` throws none.
+// What the value types' problem() return.
+template <class Check>
+[[nodiscard]] std::string rejection(Check&& check, std::string_view prefix = {}) {
+  try {
+    check();
+  } catch (const std::invalid_argument& e) {
+    std::string m = e.what();
+    if (m.starts_with(prefix)) m.erase(0, prefix.size());
+    return m;
+  }
+  return {};
+}
+
 namespace option {
 
 inline std::string number(double v) { return fmt::format("{}", v); }

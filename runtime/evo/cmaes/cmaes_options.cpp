@@ -1,6 +1,5 @@
 #include "runtime/evo/cmaes/cmaes_options.hpp"
 
-#include <stdexcept>
 #include <string_view>
 
 #include "runtime/evo/cmaes/cmaes.hpp"
@@ -47,15 +46,7 @@ const std::vector<AlgorithmOption>& cmaes_options() {
 }
 
 std::string cmaes_problem(const CmaesSettings& settings, std::size_t genome_size) {
-  try {
-    (void)Cmaes(settings, genome_size);
-  } catch (const std::invalid_argument& e) {
-    std::string m = e.what();
-    constexpr std::string_view prefix = "CMA-ES: ";
-    if (m.starts_with(prefix)) m.erase(0, prefix.size());
-    return m;
-  }
-  return {};
+  return rejection([&] { (void)Cmaes(settings, genome_size); }, "CMA-ES: ");
 }
 
 }  // namespace esc::evo

@@ -1,6 +1,5 @@
 #include "runtime/evo/gp/gp_options.hpp"
 
-#include <stdexcept>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -77,15 +76,8 @@ const std::vector<AlgorithmOption>& gp_options() {
 }
 
 std::string gp_problem(const GpSettings& settings, const genome::tree::PrimitiveSet* set) {
-  try {
-    (void)GeneticProgramming(settings, set != nullptr ? *set : neutral_set());
-  } catch (const std::invalid_argument& e) {
-    std::string m = e.what();
-    constexpr std::string_view prefix = "genetic programming: ";
-    if (m.starts_with(prefix)) m.erase(0, prefix.size());
-    return m;
-  }
-  return {};
+  return rejection([&] { (void)GeneticProgramming(settings, set != nullptr ? *set : neutral_set()); },
+                   "genetic programming: ");
 }
 
 }  // namespace esc::evo::gp

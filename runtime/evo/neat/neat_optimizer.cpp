@@ -213,12 +213,8 @@ std::string neat_run_problem(const NeatSettings& settings, const Problem& proble
   if (settings.score != NeatScore::Novelty) return {};
   if (problem.descriptors.empty())
     return "score novelty is measured between behavior descriptors: declare some (`descriptor NAME: EXPR in [lo, hi]`)";
-  try {
-    (void)qd::NoveltyArchive(archive_settings(settings), qd::descriptor_space_of(problem.descriptors));
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return {};
+  return rejection(
+      [&] { (void)qd::NoveltyArchive(archive_settings(settings), qd::descriptor_space_of(problem.descriptors)); });
 }
 
 }  // namespace esc::evo

@@ -179,13 +179,10 @@ std::string novelty_problem(const NoveltyRunSettings& settings, const Problem& p
   if (std::string why = genome::tree::tree_problem(problem, "novelty search"); !why.empty()) return why;
   if (problem.descriptors.empty())
     return "novelty is measured between behavior descriptors: declare some (`descriptor NAME: EXPR in [lo, hi]`)";
-  try {
+  return rejection([&] {
     check_nsga2_settings(variation_of(settings));
     (void)qd::NoveltyArchive(archive_settings(settings), qd::descriptor_space_of(problem.descriptors));
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return {};
+  });
 }
 
 std::unique_ptr<Optimizer> make_novelty(const NoveltyRunSettings& settings, const Problem& problem) {

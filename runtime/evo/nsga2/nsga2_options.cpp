@@ -1,7 +1,6 @@
 #include "runtime/evo/nsga2/nsga2_options.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "runtime/genome/tree/tree_variation.hpp"
 #include "runtime/evo/nsga2/nsga2_optimizer.hpp"
@@ -15,14 +14,7 @@ const std::vector<AlgorithmOption>& nsga2_options() {
 
 std::string nsga2_problem(const Nsga2Settings& settings, const Problem& problem) {
   if (std::string why = genome::tree::tree_problem(problem, "NSGA-II"); !why.empty()) return why;
-  try {
-    check_nsga2_settings(settings);
-  } catch (const std::invalid_argument& e) {
-    std::string m = e.what();
-    constexpr std::string_view prefix = "NSGA-II: ";
-    if (m.starts_with(prefix)) m.erase(0, prefix.size());
-    return m;
-  }
+  if (std::string why = rejection([&] { check_nsga2_settings(settings); }, "NSGA-II: "); !why.empty()) return why;
   // The hypervolume metric spans the declared ranges: their product must be a number.
   if (!hypervolume_reference(problem).empty()) {
     double volume = 1.0;
