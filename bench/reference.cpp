@@ -79,7 +79,7 @@ plain::Setup plain_setup(const eval::ExperimentSpec& e) {
   s.width_m = e.arena.width_m;
   s.height_m = e.arena.height_m;
   for (const sim::CylinderObstacle& c : e.arena.cylinders) s.cylinders.push_back({c.center_m.x, c.center_m.y, c.radius_m});
-  const sim::KheperaParams& r = e.robot;
+  const sim::RobotParams& r = e.robot;
   s.radius_m = r.body_radius_m;
   s.wheel_base_m = r.wheel_base_m;
   s.max_speed_mps = r.motor.max_speed_mps;
@@ -108,7 +108,7 @@ StepLoop simulator_loop(const eval::ExperimentSpec& experiment, Situation situat
   constexpr double kInner = 0.6;
   constexpr double kPressing = 0.5;
   const sim::ArenaSpec& arena = experiment.arena;
-  const sim::KheperaParams& robot = experiment.robot;
+  const sim::RobotParams& robot = experiment.robot;
   const double circle_m = 0.5 * robot.wheel_base_m * (kOuter + kInner) / (kOuter - kInner);
   const sim::Pose start = situation == Situation::Free
                               ? sim::Pose{arena.width_m / 2, arena.height_m / 2 - circle_m, 0.0}

@@ -31,7 +31,7 @@ esc::sim::ArenaSpec free_arena() {
 constexpr std::array<std::array<double, 2>, 4> kCommands = {
     {{1.0, 1.0}, {1.0, 0.4}, {0.4, 1.0}, {-1.0, 1.0}}};
 
-void run_steps(benchmark::State& state, esc::sim::KheperaParams robot, bool reset_on_collision) {
+void run_steps(benchmark::State& state, esc::sim::RobotParams robot, bool reset_on_collision) {
   esc::sim::World world(bench_arena(), robot);
   esc::Rng rng(1);
   esc::Rng noise(2);
@@ -59,7 +59,7 @@ void run_steps(benchmark::State& state, esc::sim::KheperaParams robot, bool rese
 
 // Arguments: physics substeps, inertia (0/1).
 void BM_SimStep(benchmark::State& state) {
-  esc::sim::KheperaParams robot;
+  esc::sim::RobotParams robot;
   robot.physics_substeps = static_cast<int>(state.range(0));
   robot.motor.inertia = state.range(1) != 0;
   run_steps(state, robot, true);
@@ -68,14 +68,14 @@ BENCHMARK(BM_SimStep)->Args({2, 1})->Args({1, 1})->Args({5, 1})->Args({10, 1})->
 
 // Never reset: the robot spends much of its time pressed against walls and cylinders.
 void BM_SimStepInContact(benchmark::State& state) {
-  esc::sim::KheperaParams robot;
+  esc::sim::RobotParams robot;
   robot.physics_substeps = static_cast<int>(state.range(0));
   run_steps(state, robot, false);
 }
 BENCHMARK(BM_SimStepInContact)->Arg(2);
 
 void BM_SimReadIr(benchmark::State& state) {
-  esc::sim::KheperaParams robot;
+  esc::sim::RobotParams robot;
   robot.ir.noise_sd = state.range(0) != 0 ? 0.05 : 0.0;
   esc::sim::World world(bench_arena(), robot);
   world.reset({0.1, 0.35, 0.3});  // near a wall and a cylinder
@@ -114,7 +114,7 @@ esc::sim::ArenaSpec homing_arena(int lights) {
 // Ambient light alone, 1 or 2 lights: range(0) lights, range(1) 1 = two cylinders in the
 // arena (some sensors' rays occluded), range(2) 1 = noise.
 void BM_SimReadLight(benchmark::State& state) {
-  esc::sim::KheperaParams robot;
+  esc::sim::RobotParams robot;
   robot.light.noise_sd = state.range(2) != 0 ? 0.05 : 0.0;
   esc::sim::ArenaSpec arena = state.range(1) != 0 ? bench_arena() : free_arena();
   arena.lights.push_back({{0.3, 0.5}, 0.0, 1.0, -1});
@@ -135,7 +135,7 @@ BENCHMARK(BM_SimReadLight)->Args({1, 0, 0})->Args({1, 1, 0})->Args({2, 1, 0})->A
 // (recharge zone tested at every substep), zones, reach and sweep bookkeeping; a new epoch
 // (random zone, random pose) when the accumulator is empty or every 1000 steps.
 void BM_SimStepHoming(benchmark::State& state) {
-  esc::sim::KheperaParams robot;
+  esc::sim::RobotParams robot;
   robot.energy.enabled = true;
   esc::sim::World world(homing_arena(static_cast<int>(state.range(0))), robot);
   esc::Rng rng(1);

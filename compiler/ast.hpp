@@ -39,13 +39,20 @@ struct Expr {
 };
 using ExprPtr = std::unique_ptr<Expr>;
 
+// One parenthesised group of a list: `(68deg, 90deg)`.
+struct QuantityTuple {
+  std::vector<Quantity> items;
+  SourceRange where;
+};
+
 // A setting's value as written, in a script or after `esc run --set KEY=`: `50ms`, `3`, `on`,
-// a word (`comma`), or a range `[-1, 1]`.
+// a word (`comma`), a range `[-1, 1]`, a list or a list of tuples.
 struct Value {
-  enum class Kind { Quantity, Bool, Word, Range, List } kind = Kind::Quantity;
+  enum class Kind { Quantity, Bool, Word, Range, List, Tuples } kind = Kind::Quantity;
   Quantity q;                // Quantity; Range: the lower bound
   Quantity hi;               // Range: the upper bound
   std::vector<Quantity> list;   // List (`[90deg, 0deg, -90deg]`, also `[]`)
+  std::vector<QuantityTuple> tuples;   // Tuples (`[(68deg, 90deg), (43deg, 45deg)]`)
   bool flag = false;         // Bool (`on`, `true`)
   std::string text;          // as written (Word: the word)
   SourceRange where;

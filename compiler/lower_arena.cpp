@@ -252,7 +252,7 @@ const ArenaNames& ArenaLowering::names(const ast::ArenaDecl& d) {
   return it->second;
 }
 
-bool ArenaLowering::check_placement(const ast::ArenaDecl& d, const LoweredArena& a, const sim::KheperaParams& robot,
+bool ArenaLowering::check_placement(const ast::ArenaDecl& d, const LoweredArena& a, const sim::RobotParams& robot,
                                     const SourceRange& use) {
   const auto problems = sim::placement_problems(a.spec, robot);
   for (const sim::Problem& p : problems) {

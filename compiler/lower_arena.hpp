@@ -9,7 +9,7 @@
 #include "compiler/lower_expr.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/sim/arena.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 #include "runtime/sim/validate.hpp"
 
 namespace esc::compiler {
@@ -34,7 +34,7 @@ class ArenaLowering {
   const ArenaNames& names(const ast::ArenaDecl& d);
   // The robot fits the arena and a fixed start keeps it clear of walls and obstacles;
   // reported at the start, or at `use` (where the experiment names the arena or robot).
-  bool check_placement(const ast::ArenaDecl& d, const LoweredArena& a, const sim::KheperaParams& robot,
+  bool check_placement(const ast::ArenaDecl& d, const LoweredArena& a, const sim::RobotParams& robot,
                        const SourceRange& use);
 
  private:

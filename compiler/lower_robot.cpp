@@ -1,4 +1,4 @@
-// Robots: `robot NAME [= BASE] { SETTING VALUE ... }` -> sim::KheperaParams.
+// Robots: `robot NAME [= BASE] { SETTING VALUE ... }` -> sim::RobotParams.
 #include "compiler/lower_robot.hpp"
 
 #include <fmt/format.h>
@@ -40,7 +40,8 @@ bool RobotLowering::apply(LoweredRobot& robot, const std::vector<ast::Setting>& 
       ok = false;
       continue;
     }
-    robot.written[info->name] = {s.value.where, ++order_};
+    LoweredRobot::Written& w = robot.written[info->name] = {s.value.where, ++order_, {}};
+    for (const ast::QuantityTuple& t : s.value.tuples) w.items.push_back(t.where);
   }
   return ok;
 }
@@ -57,7 +58,10 @@ bool RobotLowering::check(const LoweredRobot& robot, const SourceRange& fallback
     consider(rule.setting);
     for (std::string_view s : rule.also) consider(s);
     RuleMessage m = rule_message(p, RuleContext{nullptr, {}, &robot.params});
-    sink_.error(last != nullptr ? last->where : fallback, std::move(m.message)).help = std::move(m.help);
+    SourceRange where = last != nullptr ? last->where : fallback;
+    if (last != nullptr && p.index >= 0 && static_cast<std::size_t>(p.index) < last->items.size())
+      where = last->items[static_cast<std::size_t>(p.index)];
+    sink_.error(where, std::move(m.message)).help = std::move(m.help);
   }
   return problems.empty();
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Lowers `robot` declarations (and an experiment's inline robot settings) to
-// sim::KheperaParams, remembering where the script set each setting, so that a broken
+// sim::RobotParams, remembering where the script set each setting, so that a broken
 // runtime rule (sim::robot_problems) is reported at the setting that broke it.
 #include <map>
 #include <optional>
@@ -11,15 +11,16 @@
 #include "compiler/ast.hpp"
 #include "compiler/resolver.hpp"
 #include "compiler/sink.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 
 namespace esc::compiler {
 
 struct LoweredRobot {
-  sim::KheperaParams params;
+  sim::RobotParams params;
   struct Written {
     SourceRange where;   // the value
     int order;           // later settings have larger orders
+    std::vector<SourceRange> items;   // a list of tuples': each tuple, where a problem names one
   };
   std::map<std::string_view, Written> written;   // by setting keyword: where the script last set it
 };

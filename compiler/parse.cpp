@@ -239,6 +239,12 @@ class Builder {
     v.where = span(c);
     v.text = source(c);
     for (P::QuantityContext* q : c->quantity()) v.list.push_back(quantity(q));
+    if (!c->quantityTuple().empty()) v.kind = ast::Value::Kind::Tuples;
+    for (P::QuantityTupleContext* t : c->quantityTuple()) {
+      ast::QuantityTuple& tuple = v.tuples.emplace_back();
+      tuple.where = span(t);
+      for (P::QuantityContext* q : t->quantity()) tuple.items.push_back(quantity(q));
+    }
     return v;
   }
 

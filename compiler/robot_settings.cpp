@@ -1,6 +1,7 @@
 #include "compiler/robot_settings.hpp"
 
 #include <limits>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -15,81 +16,150 @@ namespace {
 
 using K = RobotSetting::Kind;
 
+// Enki's IR curve is held in its own units (robot_params.hpp). A value written in them
+// (`-0.9cm`) comes back through SI one rounding off (-0.9000000000000001): rounded to 12
+// significant digits it is the number written, so a script restating the Khepera's curve
+// simulates exactly the default one.
+constexpr double kCmPerM = 100.0;
+constexpr double kCm2PerM2 = 1e4;
+double in_enki_units(double si, double scale) { return std::stod(fmt::format("{:.12g}", si * scale)); }
+
+std::string with_unit(double v, Dim d) { return fmt::format("{} {}", number_text(v), si_unit(d)); }
+
+bool read_rangefinders(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  auto angles = read_list(v, name, Dim::Angle, "[90deg, 0deg, -90deg]", sink);
+  if (angles) p.rangefinders.angles_rad = std::move(*angles);
+  return angles.has_value();
+}
+
+std::string rangefinders_text(const sim::RobotParams& p) {
+  std::vector<std::string> items;
+  for (const double a : p.rangefinders.angles_rad) items.push_back(with_unit(a, Dim::Angle));
+  return fmt::format("[{}]", fmt::join(items, ", "));
+}
+
+constexpr Dim kMountDims[] = {Dim::Angle, Dim::Angle, Dim::Length};
+
+bool read_ir_sensors(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  const auto rows = read_tuples(v, name, {kMountDims, 1, "[(68deg, 90deg), (43deg, 45deg, 27mm)]"}, sink);
+  if (!rows) return false;
+  p.ir.mounts.clear();
+  for (const std::vector<double>& r : *rows)
+    p.ir.mounts.push_back({r[0], r[1], r.size() > 2 ? std::optional<double>(r[2]) : std::nullopt});
+  return true;
+}
+
+std::string ir_sensors_text(const sim::RobotParams& p) {
+  std::vector<std::string> items;
+  for (const sim::IrMount& m : p.ir.mounts)
+    items.push_back(fmt::format("({}, {}{})", with_unit(m.bearing_rad, Dim::Angle), with_unit(m.facing_rad, Dim::Angle),
+                                m.radius_m ? ", " + with_unit(*m.radius_m, Dim::Length) : ""));
+  return fmt::format("[{}]", fmt::join(items, ", "));
+}
+
+constexpr Dim kResponseDims[] = {Dim::Length, Dim::None};
+
+bool read_ir_response(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  const auto rows = read_tuples(v, name, {kResponseDims, 0, "[(0cm, 1), (2cm, 0.4), (5cm, 0)]"}, sink);
+  if (!rows) return false;
+  p.ir.response.clear();
+  for (const std::vector<double>& r : *rows) p.ir.response.push_back({r[0], r[1]});
+  return true;
+}
+
+std::string ir_response_text(const sim::RobotParams& p) {
+  std::vector<std::string> items;
+  for (const sim::IrResponsePoint& r : p.ir.response)
+    items.push_back(fmt::format("({}, {})", with_unit(r.distance_m, Dim::Length), number_text(r.reading)));
+  return fmt::format("[{}]", fmt::join(items, ", "));
+}
+
 }  // namespace
 
 const std::vector<RobotSetting>& robot_settings() {
   static const std::vector<RobotSetting> table = {
       {"inertia", K::Flag, Dim::None, "motor inertia on or off",
-       [](const sim::KheperaParams& p) { return p.motor.inertia ? 1.0 : 0.0; },
-       [](sim::KheperaParams& p, double v) { p.motor.inertia = v != 0.0; }},
+       [](const sim::RobotParams& p) { return p.motor.inertia ? 1.0 : 0.0; },
+       [](sim::RobotParams& p, double v) { p.motor.inertia = v != 0.0; }},
       {"max_speed", K::Quantity, Dim::Speed, "wheel speed of command 1.0",
-       [](const sim::KheperaParams& p) { return p.motor.max_speed_mps; },
-       [](sim::KheperaParams& p, double v) { p.motor.max_speed_mps = v; }},
+       [](const sim::RobotParams& p) { return p.motor.max_speed_mps; },
+       [](sim::RobotParams& p, double v) { p.motor.max_speed_mps = v; }},
       {"time_constant", K::Quantity, Dim::Time, "first-order lag of the wheels",
-       [](const sim::KheperaParams& p) { return p.motor.time_constant_s; },
-       [](sim::KheperaParams& p, double v) { p.motor.time_constant_s = v; }},
+       [](const sim::RobotParams& p) { return p.motor.time_constant_s; },
+       [](sim::RobotParams& p, double v) { p.motor.time_constant_s = v; }},
       {"max_accel", K::Quantity, Dim::Accel, "acceleration limit of each wheel",
-       [](const sim::KheperaParams& p) { return p.motor.max_accel_mps2; },
-       [](sim::KheperaParams& p, double v) { p.motor.max_accel_mps2 = v; }},
+       [](const sim::RobotParams& p) { return p.motor.max_accel_mps2; },
+       [](sim::RobotParams& p, double v) { p.motor.max_accel_mps2 = v; }},
       {"body_radius", K::Quantity, Dim::Length, "radius of the cylindrical body",
-       [](const sim::KheperaParams& p) { return p.body_radius_m; },
-       [](sim::KheperaParams& p, double v) { p.body_radius_m = v; }},
+       [](const sim::RobotParams& p) { return p.body_radius_m; },
+       [](sim::RobotParams& p, double v) { p.body_radius_m = v; }},
       {"body_height", K::Quantity, Dim::Length, "height of the body",
-       [](const sim::KheperaParams& p) { return p.body_height_m; },
-       [](sim::KheperaParams& p, double v) { p.body_height_m = v; }},
+       [](const sim::RobotParams& p) { return p.body_height_m; },
+       [](sim::RobotParams& p, double v) { p.body_height_m = v; }},
       {"wheel_base", K::Quantity, Dim::Length, "distance between the wheels",
-       [](const sim::KheperaParams& p) { return p.wheel_base_m; },
-       [](sim::KheperaParams& p, double v) { p.wheel_base_m = v; }},
+       [](const sim::RobotParams& p) { return p.wheel_base_m; },
+       [](sim::RobotParams& p, double v) { p.wheel_base_m = v; }},
       {"mass", K::Quantity, Dim::Mass, "mass of the robot",
-       [](const sim::KheperaParams& p) { return p.mass_kg; },
-       [](sim::KheperaParams& p, double v) { p.mass_kg = v; }},
+       [](const sim::RobotParams& p) { return p.mass_kg; },
+       [](sim::RobotParams& p, double v) { p.mass_kg = v; }},
       {"control_step", K::Quantity, Dim::Time, "duration of one control step",
-       [](const sim::KheperaParams& p) { return p.control_step_s; },
-       [](sim::KheperaParams& p, double v) { p.control_step_s = v; }},
+       [](const sim::RobotParams& p) { return p.control_step_s; },
+       [](sim::RobotParams& p, double v) { p.control_step_s = v; }},
       {"substeps", K::Whole, Dim::None, "physics steps per control step",
-       [](const sim::KheperaParams& p) { return static_cast<double>(p.physics_substeps); },
-       [](sim::KheperaParams& p, double v) { p.physics_substeps = static_cast<int>(v); }},
+       [](const sim::RobotParams& p) { return static_cast<double>(p.physics_substeps); },
+       [](sim::RobotParams& p, double v) { p.physics_substeps = static_cast<int>(v); }},
       {"motor_noise", K::Quantity, Dim::None, "standard deviation of each wheel's speed error (fraction of its command)",
-       [](const sim::KheperaParams& p) { return p.motor.noise_sd; },
-       [](sim::KheperaParams& p, double v) { p.motor.noise_sd = v; }},
+       [](const sim::RobotParams& p) { return p.motor.noise_sd; },
+       [](sim::RobotParams& p, double v) { p.motor.noise_sd = v; }},
       {"ir_range", K::Quantity, Dim::Length, "IR reading is 0 at and beyond this distance",
-       [](const sim::KheperaParams& p) { return p.ir.range_m; },
-       [](sim::KheperaParams& p, double v) { p.ir.range_m = v; }},
+       [](const sim::RobotParams& p) { return p.ir.range_m; },
+       [](sim::RobotParams& p, double v) { p.ir.range_m = v; }},
       {"ir_aperture", K::Quantity, Dim::Angle, "angle spanned by a sensor's rays",
-       [](const sim::KheperaParams& p) { return p.ir.aperture_rad; },
-       [](sim::KheperaParams& p, double v) { p.ir.aperture_rad = v; }},
+       [](const sim::RobotParams& p) { return p.ir.aperture_rad; },
+       [](sim::RobotParams& p, double v) { p.ir.aperture_rad = v; }},
       {"ir_rays", K::Whole, Dim::None, "rays per IR sensor",
-       [](const sim::KheperaParams& p) { return static_cast<double>(p.ir.rays); },
-       [](sim::KheperaParams& p, double v) { p.ir.rays = static_cast<int>(v); }},
+       [](const sim::RobotParams& p) { return static_cast<double>(p.ir.rays); },
+       [](sim::RobotParams& p, double v) { p.ir.rays = static_cast<int>(v); }},
       {"ir_noise", K::Quantity, Dim::None, "standard deviation of IR noise (readings 0..1)",
-       [](const sim::KheperaParams& p) { return p.ir.noise_sd; },
-       [](sim::KheperaParams& p, double v) { p.ir.noise_sd = v; }},
+       [](const sim::RobotParams& p) { return p.ir.noise_sd; },
+       [](sim::RobotParams& p, double v) { p.ir.noise_sd = v; }},
+      {"ir_sensors", K::List, Dim::Angle,
+       "the IR sensors, in the order `ir[i]` reads them: (mount bearing, facing[, distance from the centre]), "
+       "angles from the heading",
+       nullptr, nullptr, read_ir_sensors, ir_sensors_text},
+      {"ir_curve_x0", K::Quantity, Dim::Length, "x0 of Enki's IR curve m (c - x0^2) / (x^2 - 2 x0 x + c)",
+       [](const sim::RobotParams& p) { return p.ir.curve_x0_cm / kCmPerM; },
+       [](sim::RobotParams& p, double v) { p.ir.curve_x0_cm = in_enki_units(v, kCmPerM); }},
+      {"ir_curve_c", K::Quantity, Dim::Area, "c of Enki's IR curve",
+       [](const sim::RobotParams& p) { return p.ir.curve_c_cm2 / kCm2PerM2; },
+       [](sim::RobotParams& p, double v) { p.ir.curve_c_cm2 = in_enki_units(v, kCm2PerM2); }},
+      {"ir_response", K::List, Dim::Length,
+       "a measured IR response instead of the curve: (distance, reading) at increasing distances",
+       nullptr, nullptr, read_ir_response, ir_response_text},
       {"light_half_distance", K::Quantity, Dim::Length, "a unit light straight ahead at this distance reads 0.5",
-       [](const sim::KheperaParams& p) { return p.light.half_distance_m; },
-       [](sim::KheperaParams& p, double v) { p.light.half_distance_m = v; }},
+       [](const sim::RobotParams& p) { return p.light.half_distance_m; },
+       [](sim::RobotParams& p, double v) { p.light.half_distance_m = v; }},
       {"light_noise", K::Quantity, Dim::None, "standard deviation of light noise (readings 0..1)",
-       [](const sim::KheperaParams& p) { return p.light.noise_sd; },
-       [](sim::KheperaParams& p, double v) { p.light.noise_sd = v; }},
+       [](const sim::RobotParams& p) { return p.light.noise_sd; },
+       [](sim::RobotParams& p, double v) { p.light.noise_sd = v; }},
       {"energy", K::Flag, Dim::None, "energy accumulator on or off",
-       [](const sim::KheperaParams& p) { return p.energy.enabled ? 1.0 : 0.0; },
-       [](sim::KheperaParams& p, double v) { p.energy.enabled = v != 0.0; }},
+       [](const sim::RobotParams& p) { return p.energy.enabled ? 1.0 : 0.0; },
+       [](sim::RobotParams& p, double v) { p.energy.enabled = v != 0.0; }},
       {"energy_discharge", K::Whole, Dim::None, "control steps from full to empty",
-       [](const sim::KheperaParams& p) { return static_cast<double>(p.energy.discharge_steps); },
-       [](sim::KheperaParams& p, double v) { p.energy.discharge_steps = static_cast<int>(v); }},
+       [](const sim::RobotParams& p) { return static_cast<double>(p.energy.discharge_steps); },
+       [](sim::RobotParams& p, double v) { p.energy.discharge_steps = static_cast<int>(v); }},
       {"energy_recharge", K::Whole, Dim::None, "control steps from empty to full in a recharge zone",
-       [](const sim::KheperaParams& p) { return static_cast<double>(p.energy.recharge_steps); },
-       [](sim::KheperaParams& p, double v) { p.energy.recharge_steps = static_cast<int>(v); }},
-      {"rangefinders", K::Angles, Dim::Angle,
+       [](const sim::RobotParams& p) { return static_cast<double>(p.energy.recharge_steps); },
+       [](sim::RobotParams& p, double v) { p.energy.recharge_steps = static_cast<int>(v); }},
+      {"rangefinders", K::List, Dim::Angle,
        "rangefinders' angles from the heading (positive = left), in the order `range[i]` reads them",
-       nullptr, nullptr,
-       [](const sim::KheperaParams& p) { return std::span<const double>(p.rangefinders.angles_rad); },
-       [](sim::KheperaParams& p, std::vector<double> v) { p.rangefinders.angles_rad = std::move(v); }},
+       nullptr, nullptr, read_rangefinders, rangefinders_text},
       {"rangefinder_range", K::Quantity, Dim::Length, "rangefinders read 1 at and beyond this distance",
-       [](const sim::KheperaParams& p) { return p.rangefinders.range_m; },
-       [](sim::KheperaParams& p, double v) { p.rangefinders.range_m = v; }},
+       [](const sim::RobotParams& p) { return p.rangefinders.range_m; },
+       [](sim::RobotParams& p, double v) { p.rangefinders.range_m = v; }},
       {"radars", K::Whole, Dim::None, "pie-slice goal radars around the body (0: none)",
-       [](const sim::KheperaParams& p) { return static_cast<double>(p.radars); },
-       [](sim::KheperaParams& p, double v) { p.radars = static_cast<int>(v); }},
+       [](const sim::RobotParams& p) { return static_cast<double>(p.radars); },
+       [](sim::RobotParams& p, double v) { p.radars = static_cast<int>(v); }},
   };
   return table;
 }
@@ -115,35 +185,26 @@ std::optional<double> read_number(const RobotSetting& s, const ast::Value& v, Si
       return std::nullopt;
     }
     case K::Quantity: return read_quantity(v, s.name, s.dim, sink);
-    case K::Angles: break;
+    case K::List: break;
   }
   return std::nullopt;
 }
 
 }  // namespace
 
-bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::KheperaParams& p, Sink& sink) {
-  if (s.kind != K::Angles) {
-    const auto n = read_number(s, v, sink);
-    if (n) s.set(p, *n);
-    return n.has_value();
-  }
-  const auto angles = read_list(v, s.name, s.dim, "[90deg, 0deg, -90deg]", sink);
-  if (angles) s.set_angles(p, std::move(*angles));
-  return angles.has_value();
+bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotParams& p, Sink& sink) {
+  if (s.kind == K::List) return s.read_list(v, s.name, p, sink);
+  const auto n = read_number(s, v, sink);
+  if (n) s.set(p, *n);
+  return n.has_value();
 }
 
-std::string robot_value_text(const RobotSetting& s, const sim::KheperaParams& p) {
-  if (s.kind == K::Angles) {
-    std::vector<std::string> items;
-    for (const double a : s.get_angles(p)) items.push_back(number_text(a) + " rad");
-    return fmt::format("[{}]", fmt::join(items, ", "));
-  }
+std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p) {
+  if (s.kind == K::List) return s.list_text(p);
   const double v = s.get(p);
   if (s.kind == K::Flag) return v != 0.0 ? "on" : "off";
   if (s.kind == K::Whole) return fmt::format("{}", static_cast<long long>(v));
-  const std::string_view u = si_unit(s.dim);
-  return u.empty() ? number_text(v) : fmt::format("{} {}", number_text(v), u);
+  return s.dim == Dim::None ? number_text(v) : with_unit(v, s.dim);
 }
 
 }  // namespace esc::compiler

@@ -1,11 +1,10 @@
 #pragma once
-// The robot settings (sim::KheperaParams): keyword, kind, dimension, meaning, and how to get
+// The robot settings (sim::RobotParams): keyword, kind, dimension, meaning, and how to get
 // and set each. One table for robot blocks in scripts, `esc run --set robot.KEY=VALUE`,
 // resolved settings and the documentation. The table holds no limits of its own beyond
 // the syntax (a whole number, a flag): the ranges are the runtime's rules
 // (runtime/sim/validate.hpp), which the compiler applies to the finished robot.
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,21 +12,22 @@
 #include "compiler/ast.hpp"
 #include "compiler/sink.hpp"
 #include "compiler/units.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 
 namespace esc::compiler {
 
 struct RobotSetting {
   std::string_view name;
-  // Angles: a list of angles (`[90deg, 0deg, -90deg]`, `[]` for none), read and written by
-  // `get_angles` and `set_angles`; the other kinds are one number, by `get` and `set`.
-  enum class Kind { Flag, Quantity, Whole, Angles } kind;
-  Dim dim;
+  // Flag, Quantity and Whole are one number, got and set by `get` and `set`; List is a list
+  // (`rangefinders [90deg, 0deg]`, `ir_sensors [(68deg, 90deg), ...]`), read from the value
+  // as written (reporting its mistakes) by `read_list` and shown by `list_text`.
+  enum class Kind { Flag, Quantity, Whole, List } kind;
+  Dim dim;   // of a number; of a list's first item
   std::string_view summary;
-  double (*get)(const sim::KheperaParams&) = nullptr;
-  void (*set)(sim::KheperaParams&, double) = nullptr;
-  std::span<const double> (*get_angles)(const sim::KheperaParams&) = nullptr;
-  void (*set_angles)(sim::KheperaParams&, std::vector<double>) = nullptr;
+  double (*get)(const sim::RobotParams&) = nullptr;
+  void (*set)(sim::RobotParams&, double) = nullptr;
+  bool (*read_list)(const ast::Value&, std::string_view name, sim::RobotParams&, Sink&) = nullptr;
+  std::string (*list_text)(const sim::RobotParams&) = nullptr;
 };
 
 [[nodiscard]] const std::vector<RobotSetting>& robot_settings();
@@ -36,10 +36,10 @@ struct RobotSetting {
 
 // Reads `v` as setting `s`'s value (SI) into `p`, reporting a mistake at the value; false
 // (and `p` unchanged) on a mistake.
-[[nodiscard]] bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::KheperaParams& p, Sink& sink);
+[[nodiscard]] bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotParams& p, Sink& sink);
 
-// "0.08 m/s", "on", "3", "[1.5707963267948966 rad, 0 rad]": a setting's current value, for
-// resolved settings.
-[[nodiscard]] std::string robot_value_text(const RobotSetting& s, const sim::KheperaParams& p);
+// "0.08 m/s", "on", "3", "[1.5707963267948966 rad, 0 rad]", "[(1.18 rad, 1.57 rad), ...]": a
+// setting's current value, for resolved settings.
+[[nodiscard]] std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p);
 
 }  // namespace esc::compiler

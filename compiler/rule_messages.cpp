@@ -166,6 +166,39 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
       return {fmt::format("a robot has at most {} rangefinders, found {}", shown(p.limit, Dimension::Count),
                           shown(p.found, Dimension::Count)),
               {std::string(p.info().why)}};
+    case Rule::IrCount:
+      return {fmt::format("a robot has at most {} IR sensors, found {}", shown(p.limit, Dimension::Count),
+                          shown(p.found, Dimension::Count)),
+              {std::string(p.info().why)}};
+    case Rule::IrMountRadiusMin:
+      return {fmt::format("IR sensor {} sits {} from the body's centre: a distance is never negative", p.index,
+                          shown(p.found, Dimension::Length)),
+              {}};
+    case Rule::IrMountRadiusMax:
+      return {fmt::format("IR sensor {} sits {} from the body's centre, outside the body (radius {})", p.index,
+                          shown(p.found, Dimension::Length), shown(p.limit, Dimension::Length)),
+              {"leave the distance out for a sensor on the rim"}};
+    case Rule::IrCurve:
+      return {fmt::format("Enki's IR curve needs `ir_curve_c` above `ir_curve_x0` squared; c - x0^2 is {}cm2",
+                          number(p.found)),
+              {"the curve m (c - x0^2) / (x^2 - 2 x0 x + c) has a pole otherwise"}};
+    case Rule::IrResponseCount:
+      return {fmt::format("a measured IR response holds at most {} points, found {}", shown(p.limit, Dimension::Count),
+                          shown(p.found, Dimension::Count)),
+              {}};
+    case Rule::IrResponseStart:
+      return {fmt::format("the response's first distance is {}: a distance is never negative",
+                          shown(p.found, Dimension::Length)),
+              {}};
+    case Rule::IrResponseDistance:
+      return {fmt::format("the response's distances must increase: point {} is at {}, the point before at {}", p.index,
+                          shown(p.found, Dimension::Length), shown(p.limit, Dimension::Length)),
+              {}};
+    case Rule::IrResponseReadingMin:
+    case Rule::IrResponseReadingMax:
+      return {fmt::format("point {} of the response reads {}: readings are normalised, 0 .. 1", p.index,
+                          number(p.found)),
+              {}};
     case Rule::WheelBaseWithinBody:
       return {fmt::format("the wheel base ({}) is wider than the body ({} across)", shown(p.found, Dimension::Length),
                           shown(p.limit, Dimension::Length)),

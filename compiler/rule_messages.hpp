@@ -14,7 +14,7 @@ namespace esc::compiler {
 struct RuleContext {
   const sim::ArenaSpec* arena = nullptr;
   std::string_view arena_name = {};
-  const sim::KheperaParams* robot = nullptr;
+  const sim::RobotParams* robot = nullptr;
 };
 
 struct RuleMessage {

@@ -1,5 +1,6 @@
 #include "compiler/sensor_uses.hpp"
 
+#include <tuple>
 #include <variant>
 
 #include <fmt/format.h>
@@ -43,8 +44,12 @@ void add_behavior(std::set<expr::Slot>& out, const control::Behavior& b) {
 }  // namespace
 
 Navigation navigation_of(const eval::ExperimentSpec& x) {
-  return {x.name, x.arena_name, x.arena.goal.has_value(), static_cast<int>(x.robot.rangefinders.angles_rad.size()),
-          x.robot.radars};
+  return {x.name,
+          x.arena_name,
+          x.arena.goal.has_value(),
+          static_cast<int>(x.robot.rangefinders.angles_rad.size()),
+          x.robot.radars,
+          static_cast<int>(x.robot.ir.mounts.size())};
 }
 
 std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
@@ -58,6 +63,11 @@ std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
       static_cast<int>(slot - expr::slot::range) >= n.rangefinders)
     return beyond(slot, expr::slot::range, n.rangefinders, n, "rangefinder", "range",
                   "rangefinders [90deg, 45deg, 0deg, -45deg, -90deg, 180deg]");
+  // The light sensors are the IR sensors in passive mode: as many, at the same mounts.
+  for (const auto& [first, what, array] : {std::tuple{expr::slot::ir, "IR sensor", "ir"},
+                                          std::tuple{expr::slot::light, "light sensor", "light"}})
+    if (slot >= first && slot < first + expr::kIrCount && static_cast<int>(slot - first) >= n.ir_sensors)
+      return beyond(slot, first, n.ir_sensors, n, what, array, "ir_sensors [(68deg, 90deg), (13deg, 10deg)]");
   return std::nullopt;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The observables that exist only where an experiment declares their sensor: `goal_distance`
 // and `radar[i]` need its arena's `goal`; `radar[i]` also the robot's `radars` (i below their
-// count) and `range[i]` its `rangefinders` (i below their count). Reading one without its
+// count), `range[i]` its `rangefinders` and `ir[i]` and `light[i]` its `ir_sensors` (i below
+// their count). Reading one without its
 // sensor is an error at the read: an expression of a fitness or behavior (lower_expr.cpp), a
 // network input, a GP terminal or a frozen controller in a supervisor (lower_controller.cpp),
 // and a `--set` that takes a sensor away (setting_keys.cpp).
@@ -23,6 +24,7 @@ struct Navigation {
   bool goal = false;
   int rangefinders = 0;
   int radars = 0;
+  int ir_sensors = sim::kMaxIrSensors;
 };
 
 [[nodiscard]] Navigation navigation_of(const eval::ExperimentSpec& x);

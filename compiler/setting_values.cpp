@@ -40,6 +40,34 @@ std::optional<ast::Quantity> quantity_from_text(std::string_view text, const Sou
   return q;
 }
 
+// Quantities separated by commas: false when one is not a quantity.
+bool quantities_from_text(std::string_view text, const SourceRange& where, std::vector<ast::Quantity>& out) {
+  for (;;) {
+    const std::size_t comma = text.find(',');
+    auto q = quantity_from_text(text.substr(0, comma), where);
+    if (!q) return false;
+    out.push_back(std::move(*q));
+    if (comma == std::string_view::npos) return true;
+    text.remove_prefix(comma + 1);
+  }
+}
+
+// `(a, b), (c, d)`: false unless it is tuples of quantities separated by commas.
+bool tuples_from_text(std::string_view text, const SourceRange& where, std::vector<ast::QuantityTuple>& out) {
+  for (;;) {
+    text = trimmed(text);
+    const std::size_t close = text.find(')');
+    if (text.empty() || text.front() != '(' || close == std::string_view::npos) return false;
+    ast::QuantityTuple& t = out.emplace_back();
+    t.where = where;
+    if (!quantities_from_text(text.substr(1, close - 1), where, t.items)) return false;
+    text = trimmed(text.substr(close + 1));
+    if (text.empty()) return true;
+    if (text.front() != ',') return false;
+    text.remove_prefix(1);
+  }
+}
+
 // "`on`", "`[1, 2]`": a value as the user wrote it, for messages.
 std::string shown(const ast::Value& v) { return fmt::format("`{}`", v.text); }
 
@@ -61,16 +89,12 @@ std::optional<ast::Value> value_from_text(std::string_view text_in, const Source
   }
   if (text.size() >= 2 && text.front() == '[' && text.back() == ']') {
     std::string_view inner = text.substr(1, text.size() - 2);
-    if (!trimmed(inner).empty()) {
-      for (;;) {
-        const std::size_t comma = inner.find(',');
-        auto q = quantity_from_text(inner.substr(0, comma), where);
-        if (!q) return std::nullopt;
-        v.list.push_back(std::move(*q));
-        if (comma == std::string_view::npos) break;
-        inner.remove_prefix(comma + 1);
-      }
+    if (!trimmed(inner).empty() && trimmed(inner).front() == '(') {
+      if (!tuples_from_text(trimmed(inner), where, v.tuples)) return std::nullopt;
+      v.kind = ast::Value::Kind::Tuples;
+      return v;
     }
+    if (!trimmed(inner).empty() && !quantities_from_text(inner, where, v.list)) return std::nullopt;
     if (v.list.size() != 2) {
       v.kind = ast::Value::Kind::List;
       return v;
@@ -171,6 +195,35 @@ std::optional<std::vector<double>> read_list(const ast::Value& v, std::string_vi
     const auto x = to_si(q, dim, sink);
     if (!x) return std::nullopt;
     out.push_back(*x);
+  }
+  return out;
+}
+
+std::optional<std::vector<std::vector<double>>> read_tuples(const ast::Value& v, std::string_view name,
+                                                                const TupleShape& shape, Sink& sink) {
+  const bool empty = (v.kind == ast::Value::Kind::List && v.list.empty());
+  if (v.kind != ast::Value::Kind::Tuples && !empty) {
+    sink.error(v.where, fmt::format("`{}` takes a list of tuples, as in `{}`, found {}", name, shape.example, shown(v)))
+        .help.push_back(fmt::format("write `{} {}`", name, shape.example));
+    return std::nullopt;
+  }
+  const std::size_t most = shape.dims.size();
+  const std::size_t least = most - shape.optional;
+  std::vector<std::vector<double>> out;
+  for (const ast::QuantityTuple& t : v.tuples) {
+    if (t.items.size() < least || t.items.size() > most) {
+      const std::string count = least == most ? std::to_string(most) : fmt::format("{} or {}", least, most);
+      sink.error(t.where, fmt::format("each tuple of `{}` holds {} values, this one {}", name, count, t.items.size()))
+          .help.push_back(fmt::format("write `{} {}`", name, shape.example));
+      return std::nullopt;
+    }
+    std::vector<double>& row = out.emplace_back();
+    for (std::size_t i = 0; i < t.items.size(); ++i) {
+      if (!t.items[i].finite) return std::nullopt;   // reported by the parser
+      const auto x = to_si(t.items[i], shape.dims[i], sink);
+      if (!x) return std::nullopt;
+      row.push_back(*x);
+    }
   }
   return out;
 }

@@ -5,6 +5,7 @@
 // spellings and give the same messages, located at the value.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -47,6 +48,17 @@ namespace esc::compiler {
 // or by `--set` (where a list of two reads as a range); `example` is shown in the help line.
 [[nodiscard]] std::optional<std::vector<double>> read_list(const ast::Value& v, std::string_view name, Dim dim,
                                                            std::string_view example, Sink& sink);
+
+// A list of tuples (`[(68deg, 90deg), (43deg, 45deg, 3.5cm)]`, `[]`), each of `dims.size()`
+// quantities, the last `optional` of them may be left out; in SI, each of its dimension.
+// `example` is shown in the help line.
+struct TupleShape {
+  std::span<const Dim> dims;
+  std::size_t optional = 0;
+  std::string_view example;
+};
+[[nodiscard]] std::optional<std::vector<std::vector<double>>> read_tuples(const ast::Value& v, std::string_view name,
+                                                                          const TupleShape& shape, Sink& sink);
 
 // What an option of `evolve es(...)` or `evolve gp(...)` is written with.
 enum class OptionShape {

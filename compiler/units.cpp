@@ -18,6 +18,9 @@ constexpr std::array kUnits = {
     Unit{"mm/s^2", Dim::Accel, 1e-3},   Unit{"cm/s^2", Dim::Accel, 1e-2},
     Unit{"m/s^2", Dim::Accel, 1.0},     Unit{"g", Dim::Mass, 1e-3},
     Unit{"kg", Dim::Mass, 1.0},
+    // Areas: a number's unit is one word (`0.7cm2`), so that `2cm^2` in an expression stays (2 cm)^2.
+    Unit{"mm2", Dim::Area, 1e-6},       Unit{"cm2", Dim::Area, 1e-4},
+    Unit{"m2", Dim::Area, 1.0},
 };
 
 }  // namespace
@@ -48,6 +51,7 @@ std::string_view dim_phrase(Dim d) noexcept {
     case Dim::Speed: return "a speed";
     case Dim::Accel: return "an acceleration";
     case Dim::Mass: return "a mass";
+    case Dim::Area: return "an area";
     case Dim::None: break;
   }
   return "a plain number";
@@ -61,6 +65,7 @@ std::string_view si_unit(Dim d) noexcept {
     case Dim::Speed: return "m/s";
     case Dim::Accel: return "m/s^2";
     case Dim::Mass: return "kg";
+    case Dim::Area: return "m2";
     case Dim::None: break;
   }
   return "";
@@ -74,6 +79,7 @@ std::string_view example_unit(Dim d) noexcept {
     case Dim::Speed: return "cm/s";
     case Dim::Accel: return "m/s^2";
     case Dim::Mass: return "g";
+    case Dim::Area: return "cm2";
     case Dim::None: break;
   }
   return "";

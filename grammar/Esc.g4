@@ -53,10 +53,15 @@ unit : UNIT ('/' UNIT ('^' NUMBER)?)? ;
 // ---- robots -------------------------------------------------------------------------
 robotDecl : ROBOT name=ident ('=' base=ident)? settingsBlock? ;
 settingsBlock : '{' setting* '}' ;
-// A list of quantities only where a setting takes one (`rangefinders [90deg, 0deg, -90deg]`).
+// A list of quantities only where a setting takes one (`rangefinders [90deg, 0deg, -90deg]`),
+// or of tuples (`ir_sensors [(68deg, 90deg), (43deg, 45deg)]`).
 setting : key=ident (value | list=quantityList) ';'? ;
 value : quantity | ON | OFF | TRUE | FALSE ;
-quantityList : '[' (quantity (',' quantity)*)? ']' ;
+quantityList
+  : '[' (quantity (',' quantity)*)? ']'
+  | '[' quantityTuple (',' quantityTuple)* ']'
+  ;
+quantityTuple : '(' quantity (',' quantity)* ')' ;
 
 // ---- behaviors ----------------------------------------------------------------------
 behaviorDecl

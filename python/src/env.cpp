@@ -20,7 +20,7 @@ using Action = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // What the robot senses, the observation without a controller: its IR and light sensors,
 // the rangefinders and goal radars it declares, and the accumulator.
-std::vector<expr::Slot> senses(const sim::KheperaParams& robot) {
+std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
   std::vector<expr::Slot> slots;
   const auto add = [&](expr::Slot first, std::size_t count) {
     for (expr::Slot i = 0; i < count; ++i) slots.push_back(first + i);

@@ -22,7 +22,7 @@
 #include "runtime/expr/program.hpp"
 #include "runtime/expr/step_aggregate.hpp"
 #include "runtime/sim/arena.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 
 namespace esc::eval {
 
@@ -184,7 +184,7 @@ struct ExperimentSpec {
   std::string name;
   std::string arena_name;
   sim::ArenaSpec arena;
-  sim::KheperaParams robot;
+  sim::RobotParams robot;
   FitnessSpec fitness;
   // Declared objectives: empty for an experiment with the fitness alone and no range;
   // otherwise objectives[0] describes `fitness` and objectives[i > 0] is further[i - 1].

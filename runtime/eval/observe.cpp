@@ -44,7 +44,7 @@ void observe_navigation(const sim::World& world, expr::Frame& frame) noexcept {
 void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
                    expr::Frame& frame) noexcept {
   const sim::RobotState& s = world.state();
-  const sim::KheperaParams& p = world.robot();
+  const sim::RobotParams& p = world.robot();
   const double full_step_m = p.motor.max_speed_mps * p.control_step_s;
   const double left = s.wheel_speed_mps[0] / p.motor.max_speed_mps;
   const double right = s.wheel_speed_mps[1] / p.motor.max_speed_mps;

@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -18,6 +18,15 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kAdded{{
     {"robot.rangefinders", "[]"},
     {"robot.rangefinder_range", "0.34375 m"},
     {"robot.radars", "0"},
+    // IR sensors as data (2026-12-05): the Khepera's mounts and Enki's curve for it.
+    {"robot.ir_sensors",
+     "[(1.1868238913561442 rad, 1.5707963267948966 rad), (0.7504915783575618 rad, 0.7853981633974483 rad), "
+     "(0.22689280275926285 rad, 0.17453292519943295 rad), (-0.22689280275926285 rad, -0.17453292519943295 rad), "
+     "(-0.7504915783575618 rad, -0.7853981633974483 rad), (-1.1868238913561442 rad, -1.5707963267948966 rad), "
+     "(2.7576202181510405 rad, 3.141592653589793 rad), (-2.7576202181510405 rad, 3.141592653589793 rad)]"},
+    {"robot.ir_curve_x0", "-0.009000000000000001 m"},
+    {"robot.ir_curve_c", "0.0007 m2"},
+    {"robot.ir_response", "[]"},
 }};
 
 }  // namespace

@@ -282,8 +282,8 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
             {"steps", e.steps},
             {"arena", e.arena},
             {"robot_radius_mm", e.robot_radius_m * 1000.0},
-            {"ir_mount_deg", sim::kIrMountDeg},
-            {"ir_facing_deg", sim::kIrFacingDeg},
+            {"ir_mount_deg", sim::kKheperaIrMountDeg},
+            {"ir_facing_deg", sim::kKheperaIrFacingDeg},
             {"controllers", controllers},
             {"stats", {{"summary", summary}, {"pairs", pairs}}}};
   if (json success = experiment_success_json(e); !success.is_null()) j["success"] = std::move(success);

@@ -36,7 +36,7 @@ btScalar bt(double v) { return static_cast<btScalar>(v); }
 
 }  // namespace
 
-Body::Body(const ArenaSpec& a, const KheperaParams& r, double substep_s, const StaticGeometry2D& geometry)
+Body::Body(const ArenaSpec& a, const RobotParams& r, double substep_s, const StaticGeometry2D& geometry)
     : radius_m_(r.body_radius_m), substep_s_(substep_s), max_travel_m_(r.motor.max_speed_mps * substep_s),
       geometry_(geometry) {
   disable_bullet_profiling();

@@ -15,7 +15,7 @@
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/drive.hpp"
 #include "runtime/sim/geometry2d.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 #include "runtime/sim/planar_integrate.hpp"
 
 namespace esc::sim {
@@ -33,7 +33,7 @@ class Body {
  public:
   // `geometry` is the arena's and must outlive the body. Bullet's arrays are grown here to
   // their working size, so nothing allocates afterwards; place() the body before moving it.
-  Body(const ArenaSpec& arena, const KheperaParams& robot, double substep_s, const StaticGeometry2D& geometry);
+  Body(const ArenaSpec& arena, const RobotParams& robot, double substep_s, const StaticGeometry2D& geometry);
   ~Body();
   // Bullet's objects point at each other.
   Body(const Body&) = delete;

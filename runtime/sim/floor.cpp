@@ -21,7 +21,7 @@ int grid_count(double size_m, double cell_m) {
 
 }  // namespace
 
-Floor::Floor(const ArenaSpec& arena, const KheperaParams& robot) : arena_(arena) {
+Floor::Floor(const ArenaSpec& arena, const RobotParams& robot) : arena_(arena) {
   const std::size_t nz = arena_.zones.size();
   zones_.resize(nz);
   zone_centers_.resize(nz);

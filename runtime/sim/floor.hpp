@@ -14,7 +14,7 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/geometry2d.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 #include "runtime/sim/light_sensor.hpp"
 
 namespace esc::sim {
@@ -39,7 +39,7 @@ class Floor {
   // Zones at their declared positions (random ones at the arena's centre until
   // place_zones), lights above them or where the arena says. The arena and robot must have
   // passed validate_arena / validate_robot.
-  Floor(const ArenaSpec& arena, const KheperaParams& robot);
+  Floor(const ArenaSpec& arena, const RobotParams& robot);
 
   // Draws a position for every zone with random_position, in zone index order, uniform over
   // the centres that keep the zone inside the arena and clear of every obstacle of

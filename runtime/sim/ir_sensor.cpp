@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 
 #include "runtime/sim/validate.hpp"
 
@@ -11,51 +10,71 @@ namespace esc::sim {
 
 namespace {
 constexpr double kCmPerM = 100.0;
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 }  // namespace
 
-double enki_ir_curve(double distance_m) noexcept {
+double enki_ir_curve(double distance_m, double x0_cm, double c_cm2) noexcept {
   const double x = distance_m * kCmPerM;
-  return kEnkiIrM * (kEnkiIrC_cm2 - kEnkiIrX0_cm * kEnkiIrX0_cm) /
-         (x * x - 2.0 * kEnkiIrX0_cm * x + kEnkiIrC_cm2);
+  return kEnkiIrM * (c_cm2 - x0_cm * x0_cm) / (x * x - 2.0 * x0_cm * x + c_cm2);
 }
 
-IrModel::IrModel(const KheperaParams& robot, const StaticGeometry2D& geometry)
+IrResponse::IrResponse(const IrParams& ir)
+    : range_m_(ir.range_m),
+      x0_cm_(ir.curve_x0_cm),
+      c_cm2_(ir.curve_c_cm2),
+      peak_m_(std::max(x0_cm_, 0.0) / kCmPerM),
+      curve_at_range_(enki_ir_curve(ir.range_m, x0_cm_, c_cm2_)),
+      curve_scale_(1.0 / (enki_ir_curve(peak_m_, x0_cm_, c_cm2_) - curve_at_range_)),
+      table_(ir.response) {}
+
+double IrResponse::operator()(double distance_m) const noexcept {
+  if (!(distance_m < range_m_)) return 0.0;
+  if (table_.empty())
+    return std::clamp((enki_ir_curve(std::max(distance_m, peak_m_), x0_cm_, c_cm2_) - curve_at_range_) * curve_scale_,
+                      0.0, 1.0);
+  const double d = std::max(distance_m, 0.0);
+  // Flat before the first point and after the last (validated: distances increase).
+  const auto after = std::upper_bound(table_.begin(), table_.end(), d,
+                                      [](double x, const IrResponsePoint& p) { return x < p.distance_m; });
+  if (after == table_.begin()) return table_.front().reading;
+  if (after == table_.end()) return table_.back().reading;
+  const IrResponsePoint& a = *(after - 1);
+  const double f = (d - a.distance_m) / (after->distance_m - a.distance_m);
+  return std::clamp(a.reading + f * (after->reading - a.reading), 0.0, 1.0);
+}
+
+IrModel::IrModel(const RobotParams& robot, const StaticGeometry2D& geometry)
     : body_radius_m_(robot.body_radius_m),
       range_m_(robot.ir.range_m),
       noise_sd_(robot.ir.noise_sd),
       rays_(robot.ir.rays),
-      curve_at_range_(enki_ir_curve(robot.ir.range_m)),
-      curve_scale_(1.0 / (enki_ir_curve(0.0) - enki_ir_curve(robot.ir.range_m))),
+      sensors_(static_cast<int>(robot.ir.mounts.size())),
+      response_(robot.ir),
       geometry_(geometry),
       near_(geometry.nearby()) {
-  const auto n = static_cast<std::size_t>(8 * rays_);
+  const auto n = static_cast<std::size_t>(sensors_ * rays_);
   for (auto* v : {&mount_x_, &mount_y_, &dir_x_, &dir_y_}) v->resize(n);
-  for (int s = 0; s < 8; ++s) {
-    const double mount = kIrMountDeg[static_cast<std::size_t>(s)] * kRadPerDeg;
-    const double facing = kIrFacingDeg[static_cast<std::size_t>(s)] * kRadPerDeg;
+  for (int s = 0; s < sensors_; ++s) {
+    const IrMount& m = robot.ir.mounts[static_cast<std::size_t>(s)];
+    const double radius = m.radius_m.value_or(body_radius_m_);
     for (int r = 0; r < rays_; ++r) {
       const double offset =
           rays_ == 1 ? 0.0 : robot.ir.aperture_rad * (static_cast<double>(r) / (rays_ - 1) - 0.5);
       const auto i = static_cast<std::size_t>(s * rays_ + r);
-      mount_x_[i] = body_radius_m_ * std::cos(mount);
-      mount_y_[i] = body_radius_m_ * std::sin(mount);
-      dir_x_[i] = std::cos(facing + offset);
-      dir_y_[i] = std::sin(facing + offset);
+      mount_x_[i] = radius * std::cos(m.bearing_rad);
+      mount_y_[i] = radius * std::sin(m.bearing_rad);
+      dir_x_[i] = std::cos(m.facing_rad + offset);
+      dir_y_[i] = std::sin(m.facing_rad + offset);
     }
   }
 }
 
-double IrModel::response(double distance_m) const noexcept {
-  if (!(distance_m < range_m_)) return 0.0;
-  const double v = (enki_ir_curve(std::max(distance_m, 0.0)) - curve_at_range_) * curve_scale_;
-  return std::clamp(v, 0.0, 1.0);
-}
-
 void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const noexcept {
+  const auto sensors = static_cast<std::size_t>(sensors_);
+  std::fill(out.begin() + static_cast<std::ptrdiff_t>(sensors), out.end(), 0.0);
   geometry_.gather({pose.x_m, pose.y_m}, body_radius_m_ + range_m_, near_);
   if (near_.empty()) {
-    for (double& v : out) {
+    for (std::size_t sensor = 0; sensor < sensors; ++sensor) {
+      double& v = out[sensor];
       v = response(range_m_);
       if (noise_sd_ > 0.0) v = std::clamp(v + noise_sd_ * rng.normal(), 0.0, 1.0);
     }
@@ -65,7 +84,7 @@ void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const
   const double s = std::sin(pose.heading_rad);
   const auto rays = static_cast<std::size_t>(rays_);
   std::array<double, kMaxIrRays> dx, dy, t;
-  for (std::size_t sensor = 0; sensor < 8; ++sensor) {
+  for (std::size_t sensor = 0; sensor < sensors; ++sensor) {
     double nearest = range_m_;
     // The rays of a sensor share its mount point.
     const std::size_t first = sensor * rays;

@@ -2,27 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "runtime/sim/ir_sensor.hpp"
 
 namespace esc::sim {
 
-namespace {
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
-}  // namespace
-
-LightModel::LightModel(const KheperaParams& robot)
+LightModel::LightModel(const RobotParams& robot)
     : body_radius_m_(robot.body_radius_m),
       inv_half_distance2_(1.0 / (robot.light.half_distance_m * robot.light.half_distance_m)),
-      noise_sd_(robot.light.noise_sd) {
-  for (std::size_t s = 0; s < static_cast<std::size_t>(kLightSensors); ++s) {
-    const double mount = kIrMountDeg[s] * kRadPerDeg;
-    const double facing = kIrFacingDeg[s] * kRadPerDeg;
-    mount_x_[s] = body_radius_m_ * std::cos(mount);
-    mount_y_[s] = body_radius_m_ * std::sin(mount);
-    face_x_[s] = std::cos(facing);
-    face_y_[s] = std::sin(facing);
+      noise_sd_(robot.light.noise_sd),
+      sensors_(robot.ir.mounts.size()) {
+  for (std::size_t s = 0; s < sensors_; ++s) {
+    const IrMount& m = robot.ir.mounts[s];
+    const double radius = m.radius_m.value_or(body_radius_m_);
+    mount_x_[s] = radius * std::cos(m.bearing_rad);
+    mount_y_[s] = radius * std::sin(m.bearing_rad);
+    face_x_[s] = std::cos(m.facing_rad);
+    face_y_[s] = std::sin(m.facing_rad);
   }
 }
 
@@ -41,7 +37,7 @@ void LightModel::read(const Pose& pose, const StaticGeometry2D& geometry,
     const double c = std::cos(pose.heading_rad);
     const double s = std::sin(pose.heading_rad);
     std::array<double, kLightSensors> px{}, py{}, fx{}, fy{};
-    for (std::size_t i = 0; i < static_cast<std::size_t>(kLightSensors); ++i) {
+    for (std::size_t i = 0; i < sensors_; ++i) {
       px[i] = pose.x_m + c * mount_x_[i] - s * mount_y_[i];
       py[i] = pose.y_m + s * mount_x_[i] + c * mount_y_[i];
       fx[i] = c * face_x_[i] - s * face_y_[i];
@@ -56,7 +52,7 @@ void LightModel::read(const Pose& pose, const StaticGeometry2D& geometry,
       const PlacedLight& light = lights[l];
       const double h2 = light.height_m * light.height_m;
       int rays = 0;
-      for (std::size_t i = 0; i < static_cast<std::size_t>(kLightSensors); ++i) {
+      for (std::size_t i = 0; i < sensors_; ++i) {
         const double ex = light.x_m - px[i];
         const double ey = light.y_m - py[i];
         const double floor2 = ex * ex + ey * ey;
@@ -89,7 +85,8 @@ void LightModel::read(const Pose& pose, const StaticGeometry2D& geometry,
         if (t[k] >= len[k] - kLightOcclusionTolerance_m) out[who[k]] += gain[k];
     }
   }
-  for (double& v : out) {
+  for (std::size_t i = 0; i < sensors_; ++i) {
+    double& v = out[i];
     v = std::min(v, 1.0);
     if (noise_sd_ > 0.0) v = std::clamp(v + noise_sd_ * rng.normal(), 0.0, 1.0);
   }

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "runtime/core/rng.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 
 namespace esc::sim {
 

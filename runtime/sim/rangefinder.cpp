@@ -6,7 +6,7 @@
 
 namespace esc::sim {
 
-RangefinderModel::RangefinderModel(const KheperaParams& robot, const StaticGeometry2D& geometry)
+RangefinderModel::RangefinderModel(const RobotParams& robot, const StaticGeometry2D& geometry)
     : range_m_(robot.rangefinders.range_m), geometry_(geometry), near_(geometry.nearby()) {
   for (const double a : robot.rangefinders.angles_rad) {
     cos_.push_back(std::cos(a));

@@ -9,14 +9,14 @@
 
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/geometry2d.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 
 namespace esc::sim {
 
 class RangefinderModel {
  public:
   // `geometry` is the arena's and must outlive the model.
-  RangefinderModel(const KheperaParams& robot, const StaticGeometry2D& geometry);
+  RangefinderModel(const RobotParams& robot, const StaticGeometry2D& geometry);
 
   // The readings of the robot at `pose`, in the order the robot declares its rangefinders,
   // into out[0 .. count()); `out` holds at least count() values. Uses scratch owned by the

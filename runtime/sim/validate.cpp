@@ -23,6 +23,8 @@ constexpr double kInsideTolerance_m = 1e-9;
 constexpr std::string_view kContactAlso[] = {"max_speed", "control_step", "body_radius", "wheel_base"};
 constexpr std::string_view kSweepAlso[] = {"size"};
 constexpr std::string_view kWheelBaseAlso[] = {"body_radius"};
+constexpr std::string_view kIrMountAlso[] = {"body_radius"};
+constexpr std::string_view kIrCurveAlso[] = {"ir_curve_x0"};
 constexpr std::string_view kFitAlso[] = {"body_radius"};
 
 constexpr std::string_view kInside = "positions are measured from the arena's lower-left inner corner";
@@ -104,6 +106,24 @@ constexpr RuleInfo kRules[] = {
      "the IR model holds at most 64 rays per sensor"},
     {Rule::IrNoise, O::Robot, "ir_noise", {}, R::AtLeast, D::Number, "robot.ir.noise_sd",
      "a standard deviation is never negative"},
+    {Rule::IrCount, O::Robot, "ir_sensors", {}, R::AtMost, D::Count, "robot.ir.mounts count",
+     "the observable frame holds 8 `ir` slots"},
+    {Rule::IrMountRadiusMin, O::Robot, "ir_sensors", {}, R::AtLeast, D::Length, "robot.ir.mounts[{}].radius_m",
+     "a sensor sits on the body"},
+    {Rule::IrMountRadiusMax, O::Robot, "ir_sensors", kIrMountAlso, R::AtMost, D::Length,
+     "robot.ir.mounts[{}].radius_m against the body's radius", "a sensor sits on the body"},
+    {Rule::IrCurve, O::Robot, "ir_curve_c", kIrCurveAlso, R::Above, D::Number,
+     "robot.ir.curve_c_cm2 - curve_x0_cm^2 (cm^2)", "Enki's curve has no pole (c above x0^2)"},
+    {Rule::IrResponseCount, O::Robot, "ir_response", {}, R::AtMost, D::Count, "robot.ir.response count",
+     "a measured response holds at most 64 points"},
+    {Rule::IrResponseStart, O::Robot, "ir_response", {}, R::AtLeast, D::Length, "robot.ir.response[{}].distance_m",
+     "a distance is never negative"},
+    {Rule::IrResponseDistance, O::Robot, "ir_response", {}, R::Above, D::Length,
+     "robot.ir.response[{}].distance_m against the point before it", "a response's distances increase"},
+    {Rule::IrResponseReadingMin, O::Robot, "ir_response", {}, R::AtLeast, D::Number,
+     "robot.ir.response[{}].reading", "readings are normalised, 0 .. 1"},
+    {Rule::IrResponseReadingMax, O::Robot, "ir_response", {}, R::AtMost, D::Number,
+     "robot.ir.response[{}].reading", "readings are normalised, 0 .. 1"},
     {Rule::ControlStep, O::Robot, "control_step", {}, R::Above, D::Time, "robot.control_step_s",
      "time advances at every step"},
     {Rule::SubstepsMin, O::Robot, "substeps", {}, R::AtLeast, D::Count, "robot.physics_substeps",
@@ -270,6 +290,31 @@ void check_lights(const ArenaSpec& a, bool sized, Checker& c) {
   }
 }
 
+// The mounts sit on the body; Enki's curve has no pole; a measured response's distances
+// increase from 0 and its readings are normalised.
+void check_ir_layout(const RobotParams& robot, bool body, Checker& c) {
+  const IrParams& ir = robot.ir;
+  c.at_most(Rule::IrCount, ir.mounts.size(), kMaxIrSensors);
+  for (std::size_t i = 0; i < ir.mounts.size(); ++i) {
+    if (!ir.mounts[i].radius_m) continue;
+    const double r = *ir.mounts[i].radius_m;
+    const int at = static_cast<int>(i);
+    if (c.require(Rule::IrMountRadiusMin, r, 0.0, at) && body) c.require(Rule::IrMountRadiusMax, r, robot.body_radius_m, at);
+  }
+  if (ir.response.empty()) {
+    c.require(Rule::IrCurve, ir.curve_c_cm2 - ir.curve_x0_cm * ir.curve_x0_cm, 0.0);
+    return;
+  }
+  c.at_most(Rule::IrResponseCount, ir.response.size(), kMaxIrResponsePoints);
+  for (std::size_t i = 0; i < ir.response.size(); ++i) {
+    const IrResponsePoint& p = ir.response[i];
+    const int at = static_cast<int>(i);
+    if (i == 0) c.require(Rule::IrResponseStart, p.distance_m, 0.0, at);
+    else c.require(Rule::IrResponseDistance, p.distance_m, ir.response[i - 1].distance_m, at);
+    if (c.require(Rule::IrResponseReadingMin, p.reading, 0.0, at)) c.require(Rule::IrResponseReadingMax, p.reading, 1.0, at);
+  }
+}
+
 [[noreturn]] void throw_first(const std::vector<Problem>& problems) {
   throw std::invalid_argument(problems.front().message());
 }
@@ -324,7 +369,7 @@ std::vector<Problem> arena_problems(const ArenaSpec& a) {
   return out;
 }
 
-std::vector<Problem> placement_problems(const ArenaSpec& a, const KheperaParams& robot) {
+std::vector<Problem> placement_problems(const ArenaSpec& a, const RobotParams& robot) {
   std::vector<Problem> out;
   Checker c(out);
   const double r = robot.body_radius_m;
@@ -348,7 +393,7 @@ std::vector<Problem> placement_problems(const ArenaSpec& a, const KheperaParams&
   return out;
 }
 
-std::vector<Problem> robot_problems(const KheperaParams& robot) {
+std::vector<Problem> robot_problems(const RobotParams& robot) {
   std::vector<Problem> out;
   Checker c(out);
   const bool body = c.require(Rule::BodyRadius, robot.body_radius_m, 0.0);
@@ -365,6 +410,7 @@ std::vector<Problem> robot_problems(const KheperaParams& robot) {
     c.require(Rule::IrApertureMax, robot.ir.aperture_rad, std::numbers::pi);
   if (c.require(Rule::IrRaysMin, robot.ir.rays, 1)) c.require(Rule::IrRaysMax, robot.ir.rays, kMaxIrRays);
   c.require(Rule::IrNoise, robot.ir.noise_sd, 0.0);
+  check_ir_layout(robot, body, c);
   const bool step = c.require(Rule::ControlStep, robot.control_step_s, 0.0);
   const bool substeps = c.require(Rule::SubstepsMin, robot.physics_substeps, 1) &&
                         c.require(Rule::SubstepsMax, robot.physics_substeps, kMaxPhysicsSubsteps);
@@ -390,7 +436,7 @@ void validate_arena(const ArenaSpec& arena) {
   if (const auto problems = arena_problems(arena); !problems.empty()) throw_first(problems);
 }
 
-void validate_robot(const KheperaParams& robot) {
+void validate_robot(const RobotParams& robot) {
   if (const auto problems = robot_problems(robot); !problems.empty()) throw_first(problems);
 }
 

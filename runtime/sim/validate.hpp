@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "runtime/sim/arena.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 
 namespace esc::sim {
 
@@ -33,6 +33,8 @@ inline constexpr std::size_t kMaxObstacles = 30000;
 // The IR model spreads at most this many rays per sensor; the physics step count is capped
 // so that one control step stays a bounded amount of work.
 inline constexpr int kMaxIrRays = 64;
+// A measured IR response holds at most this many points.
+inline constexpr std::size_t kMaxIrResponsePoints = 64;
 inline constexpr int kMaxPhysicsSubsteps = 1000;
 
 // Every rule, one per relation checked (a range is two rules).
@@ -46,7 +48,9 @@ enum class Rule {
   RobotFits, StartClearOfWalls, StartClearOfCylinder, StartClearOfBlock, StartClearOfWall,
   // the robot alone
   BodyRadius, BodyHeight, Mass, WheelBase, WheelBaseWithinBody, MaxSpeed, TimeConstant, MaxAccel, MotorNoise,
-  IrRange, IrApertureMin, IrApertureMax, IrRaysMin, IrRaysMax, IrNoise, ControlStep, SubstepsMin,
+  IrRange, IrApertureMin, IrApertureMax, IrRaysMin, IrRaysMax, IrNoise, IrCount, IrMountRadiusMin,
+  IrMountRadiusMax, IrCurve, IrResponseCount, IrResponseStart, IrResponseDistance, IrResponseReadingMin, IrResponseReadingMax,
+  ControlStep, SubstepsMin,
   SubstepsMax, LightHalfDistance, LightNoise, EnergyDischargeMin, EnergyDischargeMax,
   EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
   ContactLookAhead,
@@ -101,13 +105,13 @@ struct Problem {
 // a valid size (inside the arena, the sweep grid) are skipped while the size is broken;
 // the robot's contact look-ahead only when the values it reads are valid.
 [[nodiscard]] std::vector<Problem> arena_problems(const ArenaSpec& arena);
-[[nodiscard]] std::vector<Problem> robot_problems(const KheperaParams& robot);
+[[nodiscard]] std::vector<Problem> robot_problems(const RobotParams& robot);
 // The robot fits the arena and a fixed start keeps its body clear of walls and obstacles
 // (meaningful only when the arena and the robot are valid on their own).
-[[nodiscard]] std::vector<Problem> placement_problems(const ArenaSpec& arena, const KheperaParams& robot);
+[[nodiscard]] std::vector<Problem> placement_problems(const ArenaSpec& arena, const RobotParams& robot);
 
 // Throw std::invalid_argument with the first problem's message (the World's guard).
 void validate_arena(const ArenaSpec& arena);
-void validate_robot(const KheperaParams& robot);
+void validate_robot(const RobotParams& robot);
 
 }  // namespace esc::sim

@@ -28,7 +28,7 @@ constexpr int kFreePoseTries = 10000;
 // body reads the geometry.
 struct World::Impl {
   ArenaSpec arena;
-  KheperaParams robot;
+  RobotParams robot;
   double substep_s;
   StaticGeometry2D geometry;
   IrModel ir;
@@ -40,7 +40,7 @@ struct World::Impl {
   Body body;
   RobotState state;
 
-  Impl(const ArenaSpec& a, const KheperaParams& r)
+  Impl(const ArenaSpec& a, const RobotParams& r)
       : arena((validate_arena(a), a)),
         robot((validate_robot(r), r)),
         substep_s(r.control_step_s / r.physics_substeps),
@@ -107,7 +107,7 @@ struct World::Impl {
   }
 };
 
-World::World(const ArenaSpec& arena, const KheperaParams& robot)
+World::World(const ArenaSpec& arena, const RobotParams& robot)
     : impl_(std::make_unique<Impl>(arena, robot)) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
@@ -145,7 +145,7 @@ bool World::in_zone(std::size_t zone, Vec2 p) const noexcept { return impl_->flo
 int World::sweep_columns() const noexcept { return impl_->floor.sweep_columns(); }
 int World::sweep_rows() const noexcept { return impl_->floor.sweep_rows(); }
 const RobotState& World::state() const noexcept { return impl_->state; }
-const KheperaParams& World::robot() const noexcept { return impl_->robot; }
+const RobotParams& World::robot() const noexcept { return impl_->robot; }
 const ArenaSpec& World::arena() const noexcept { return impl_->arena; }
 
 }  // namespace esc::sim

@@ -14,12 +14,12 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/floor.hpp"
-#include "runtime/sim/khepera_params.hpp"
+#include "runtime/sim/robot_params.hpp"
 #include "runtime/sim/light_sensor.hpp"
 
 namespace esc::sim {
 
-inline constexpr int kIrSensors = 8;
+inline constexpr int kIrSensors = kMaxIrSensors;   // `ir` slots; a robot fills its sensors' count of them
 
 // Physical state after the last control step; what observables are computed from.
 struct RobotState {
@@ -33,7 +33,7 @@ struct RobotState {
 
 class World {
  public:
-  World(const ArenaSpec& arena, const KheperaParams& robot);
+  World(const ArenaSpec& arena, const RobotParams& robot);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -97,7 +97,7 @@ class World {
   [[nodiscard]] int sweep_rows() const noexcept;
 
   [[nodiscard]] const RobotState& state() const noexcept;
-  [[nodiscard]] const KheperaParams& robot() const noexcept;
+  [[nodiscard]] const RobotParams& robot() const noexcept;
   [[nodiscard]] const ArenaSpec& arena() const noexcept;
 
  private:

@@ -17,7 +17,7 @@ double score(bool inertia, bool alternate, int steps) {
   arena.width_m = 1.0;
   arena.height_m = 1.0;
   arena.fixed_start = sim::Pose{0.5, 0.5, 0.0};
-  sim::KheperaParams robot;
+  sim::RobotParams robot;
   robot.motor.inertia = inertia;
   sim::World world(arena, robot);
   world.reset(*arena.fixed_start);

@@ -83,7 +83,7 @@ ArenaSpec cluttered(int obstacles) {
 
 TEST(SimAlloc, StepAndReadingsDoNotAllocate) {
   btAlignedAllocSetCustom(&bt_counting_alloc, &bt_counting_free);
-  KheperaParams robot;
+  RobotParams robot;
   robot.ir.noise_sd = 0.05;
   robot.light.noise_sd = 0.05;
   robot.energy.enabled = true;

@@ -13,7 +13,7 @@ constexpr double kContactTol = 1e-4;  // documented in docs/robot-model.md
 
 TEST(SimCollision, DrivingIntoAWallStopsTheBodyAtTheWall) {
   for (bool inertia : {false, true}) {
-    const KheperaParams robot = test::robot_with_inertia(inertia);
+    const RobotParams robot = test::robot_with_inertia(inertia);
     const ArenaSpec arena = test::empty_arena(0.6, 0.6);
     World world(arena, robot);
     world.reset({0.3, 0.3, 0.0});
@@ -49,7 +49,7 @@ TEST(SimCollision, ObliqueAndObstacleContactsNeverPenetrate) {
   ArenaSpec arena = test::empty_arena(0.6, 0.6);
   arena.cylinders.push_back({{0.3, 0.45}, 0.03});
   arena.boxes.push_back({{0.15, 0.15}, {0.12, 0.05}, 0.6});
-  const KheperaParams robot = test::robot_with_inertia(true);
+  const RobotParams robot = test::robot_with_inertia(true);
   World world(arena, robot);
   Rng rng(11);
   int collisions = 0;
@@ -75,7 +75,7 @@ TEST(SimCollision, ObliqueAndObstacleContactsNeverPenetrate) {
 }
 
 TEST(SimCollision, NoCollisionFarFromEverything) {
-  const KheperaParams robot = test::robot_with_inertia(true);
+  const RobotParams robot = test::robot_with_inertia(true);
   World world(test::empty_arena(0.6, 0.6), robot);
   world.reset({0.3, 0.3, 1.0});
   for (int i = 0; i < 200; ++i) {

@@ -26,8 +26,8 @@ ArenaSpec cluttered_arena() {
   return a;
 }
 
-KheperaParams noisy_robot() {
-  KheperaParams r;
+RobotParams noisy_robot() {
+  RobotParams r;
   r.ir.noise_sd = 0.05;
   return r;
 }
@@ -79,7 +79,7 @@ TEST(SimDeterminism, ReusedWorldMatchesFreshWorldBitForBit) {
   // Moving keeps the state.
   World moved(std::move(reused));
   EXPECT_TRUE(bit_identical(run(moved, start, 42, steps), expected));
-  World assigned(test::empty_arena(1.0, 1.0), KheperaParams{});
+  World assigned(test::empty_arena(1.0, 1.0), RobotParams{});
   assigned = std::move(moved);
   EXPECT_TRUE(bit_identical(run(assigned, start, 42, steps), expected));
 }
@@ -108,8 +108,8 @@ ArenaSpec homing_arena() {
   return a;
 }
 
-KheperaParams homing_robot() {
-  KheperaParams r = noisy_robot();
+RobotParams homing_robot() {
+  RobotParams r = noisy_robot();
   r.light.noise_sd = 0.03;
   r.energy.enabled = true;
   r.energy.discharge_steps = 120;  // empties within the runs below

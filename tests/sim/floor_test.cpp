@@ -20,7 +20,7 @@ TEST(SimFloor, TheAccumulatorDrainsOutsideAndRefillsInsideARechargeZone) {
   recharge.radius_m = 0.05;
   recharge.recharge = true;
   a.zones.push_back(recharge);
-  KheperaParams r;
+  RobotParams r;
   r.energy.enabled = true;
   r.energy.discharge_steps = 3;   // full = 3 * 2 * 2 substeps = 12 units
   r.energy.recharge_steps = 2;
@@ -58,7 +58,7 @@ TEST(SimFloor, CellsAndReachFollowTheCentre) {
   LightSource lamp;
   lamp.position_m = {0.3, 0.3};
   a.lights.push_back(lamp);                     // reach 4.75 cm
-  Floor floor(a, KheperaParams{});
+  Floor floor(a, RobotParams{});
   ASSERT_EQ(floor.sweep_columns(), 15);
   FloorState s;
   floor.reset({0.1, 0.3}, s);                   // column 2
@@ -89,7 +89,7 @@ TEST(SimFloor, RandomZonesKeepClearOfObstaclesAndCarryTheirLights) {
   LightSource above;
   above.above_zone = 0;
   a.lights.push_back(above);
-  Floor floor(a, KheperaParams{});
+  Floor floor(a, RobotParams{});
   const StaticGeometry2D geometry(a);
   Rng rng(4);
   for (int i = 0; i < 200; ++i) {
@@ -105,7 +105,7 @@ TEST(SimFloor, RandomZonesKeepClearOfObstaclesAndCarryTheirLights) {
   }
   // Without a random zone nothing is drawn.
   a.zones[0].random_position = false;
-  Floor fixed(a, KheperaParams{});
+  Floor fixed(a, RobotParams{});
   Rng before(9);
   Rng after = before;
   fixed.place_zones(after, geometry);

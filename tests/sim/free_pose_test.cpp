@@ -15,7 +15,7 @@ TEST(SimFreePose, NeverOverlapsAnObstacle) {
   arena.cylinders.push_back({{0.5, 0.1}, 0.03});
   arena.boxes.push_back({{0.4, 0.3}, {0.15, 0.03}, 0.5});
   arena.boxes.push_back({{0.1, 0.35}, {0.05, 0.05}, -1.2});
-  const KheperaParams robot;
+  const RobotParams robot;
   World world(arena, robot);
   Rng rng(123);
   const double margin = 0.005;
@@ -40,7 +40,7 @@ TEST(SimFreePose, NeverOverlapsAnObstacle) {
 }
 
 TEST(SimFreePose, SameSeedSamePose) {
-  World world(test::empty_arena(0.6, 0.6), KheperaParams{});
+  World world(test::empty_arena(0.6, 0.6), RobotParams{});
   Rng a(9), b(9);
   for (int i = 0; i < 10; ++i) {
     const Pose p = world.random_free_pose(a);
@@ -54,11 +54,11 @@ TEST(SimFreePose, SameSeedSamePose) {
 TEST(SimFreePose, ThrowsWhenTheArenaIsFull) {
   ArenaSpec full = test::empty_arena(0.6, 0.6);
   full.boxes.push_back({{0.3, 0.3}, {0.58, 0.58}, 0.0});
-  World world(full, KheperaParams{});
+  World world(full, RobotParams{});
   Rng rng(1);
   EXPECT_THROW((void)world.random_free_pose(rng), std::runtime_error);
 
-  World tiny(test::empty_arena(0.05, 0.05), KheperaParams{});  // narrower than the body
+  World tiny(test::empty_arena(0.05, 0.05), RobotParams{});  // narrower than the body
   EXPECT_THROW((void)tiny.random_free_pose(rng), std::runtime_error);
   try {
     (void)tiny.random_free_pose(rng);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "runtime/sim/ir_sensor.hpp"
 #include "sim_test_util.hpp"
 
 namespace esc::sim {
@@ -25,7 +26,7 @@ double expected_reading(double d_m, double range_m) {
 
 class SimIr : public ::testing::Test {
  protected:
-  KheperaParams robot;  // defaults: range 5 cm, 3 rays over 30 deg, no noise
+  RobotParams robot;  // defaults: range 5 cm, 3 rays over 30 deg, no noise
   ArenaSpec arena = test::empty_arena(1.0, 1.0);
   Rng rng{1};
 
@@ -166,6 +167,65 @@ TEST_F(SimIr, NoiseIsDrawnOnlyWhenConfigured) {
     sum_sq += (out[2] - clean[2]) * (out[2] - clean[2]);
   }
   EXPECT_NEAR(std::sqrt(sum_sq / reads), robot.ir.noise_sd, 0.005);  // not clamped there
+}
+
+// The layout is data: a robot with three sensors reads three, the slots after them stay 0,
+// and a mount's distance from the centre moves where its rays start.
+TEST_F(SimIr, AMountListIsTheRobotsSensors) {
+  robot.ir.mounts = {{0.0, 0.0, std::nullopt}, {90 * kDeg, 90 * kDeg, std::nullopt}, {0.0, 0.0, 0.01}};
+  World world(arena, robot);
+  const double r = robot.body_radius_m;
+  const double gap = 0.02;
+  const double px = static_cast<double>(static_cast<float>(1.0 - r - gap));
+  const auto ir = read_at(world, {1.0 - r - gap, 0.5, 0.0});
+  // Straight ahead, the fan's middle ray meets the wall first (1.0 - px - r away); the same
+  // sensor mounted 1 cm from the centre sees it r - 1 cm further.
+  EXPECT_NEAR(ir[0], expected_reading(1.0 - px - r, robot.ir.range_m), 1e-5);
+  EXPECT_NEAR(ir[2], expected_reading(1.0 - px - 0.01, robot.ir.range_m), 1e-5);
+  EXPECT_LT(ir[2], ir[0]);
+  EXPECT_EQ(ir[1], 0.0);   // looks at the far side wall
+  for (std::size_t i = 3; i < ir.size(); ++i) EXPECT_EQ(ir[i], 0.0) << i;
+}
+
+// The Khepera's rim mounts, written out with their radius, read exactly what the default reads.
+TEST_F(SimIr, AMountOnTheRimAtItsRadiusReadsAsTheDefault) {
+  World rim(arena, robot);
+  for (IrMount& m : robot.ir.mounts) m.radius_m = robot.body_radius_m;
+  World explicit_radius(arena, robot);
+  for (const Pose& p : {Pose{0.95, 0.5, 0.3}, Pose{0.05, 0.04, 2.0}, Pose{0.5, 0.97, 1.5}})
+    EXPECT_EQ(read_at(rim, p), read_at(explicit_radius, p));
+}
+
+// Enki's curve for another robot (the e-puck's x0 0.3 cm, c 0.7 cm2): flat at its peak below
+// x0, as Enki holds F = m there, then falling to 0 at the range.
+TEST(SimIrResponse, EnkisCurveIsOneUpToItsPeak) {
+  IrParams ir;
+  ir.range_m = 0.12;
+  ir.curve_x0_cm = 0.3;
+  ir.curve_c_cm2 = 0.7;
+  const IrResponse response(ir);
+  const auto f = [](double x_cm) { return (0.7 - 0.09) / (x_cm * x_cm - 0.6 * x_cm + 0.7); };
+  EXPECT_DOUBLE_EQ(response(0.0), 1.0);
+  EXPECT_DOUBLE_EQ(response(0.002), 1.0);
+  EXPECT_DOUBLE_EQ(response(0.003), 1.0);
+  for (double d_cm : {0.5, 1.0, 2.0, 4.0, 8.0})
+    EXPECT_NEAR(response(d_cm / 100), (f(d_cm) - f(12.0)) / (1.0 - f(12.0)), 1e-12) << d_cm;
+  EXPECT_EQ(response(0.12), 0.0);
+}
+
+// A measured curve: linear between its points, flat before the first and after the last,
+// 0 at and beyond the range.
+TEST(SimIrResponse, AMeasuredTableIsInterpolated) {
+  IrParams ir;
+  ir.range_m = 0.05;
+  ir.response = {{0.005, 0.9}, {0.02, 0.5}, {0.04, 0.1}};
+  const IrResponse response(ir);
+  EXPECT_DOUBLE_EQ(response(0.0), 0.9);
+  EXPECT_DOUBLE_EQ(response(0.005), 0.9);
+  EXPECT_NEAR(response(0.0125), 0.7, 1e-12);
+  EXPECT_NEAR(response(0.03), 0.3, 1e-12);
+  EXPECT_DOUBLE_EQ(response(0.045), 0.1);
+  EXPECT_EQ(response(0.05), 0.0);
 }
 
 }  // namespace

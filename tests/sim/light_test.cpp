@@ -25,7 +25,7 @@ LightSource light_at(double x, double y, double height = 0.0, double intensity =
 }
 
 // The model written out independently: I max(0, cos a) / (1 + (d / d0)^2), unoccluded.
-double expected(const KheperaParams& r, const Pose& p, std::size_t sensor, const LightSource& l) {
+double expected(const RobotParams& r, const Pose& p, std::size_t sensor, const LightSource& l) {
   const double mount = p.heading_rad + kMountDeg[sensor] * kDeg;
   const double facing = p.heading_rad + kFacingDeg[sensor] * kDeg;
   const double sx = p.x_m + r.body_radius_m * std::cos(mount);
@@ -41,7 +41,7 @@ double expected(const KheperaParams& r, const Pose& p, std::size_t sensor, const
 
 class SimLight : public ::testing::Test {
  protected:
-  KheperaParams robot;
+  RobotParams robot;
   Rng rng{1};
 
   std::array<double, kLightSensors> read_at(World& w, Pose p) {
@@ -208,7 +208,7 @@ TEST_F(SimLight, NoiseOnlyWhenConfigured) {
   const auto clean = read_at(quiet, p);
   EXPECT_EQ(rng.next(), before.next());  // no draw without noise
 
-  KheperaParams noisy = robot;
+  RobotParams noisy = robot;
   noisy.light.noise_sd = 0.05;
   World loud(a, noisy);
   Rng n1(7), n2(7);

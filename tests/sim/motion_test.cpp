@@ -12,7 +12,7 @@ using test::empty_arena;
 using test::robot_with_inertia;
 
 TEST(SimMotion, StraightRunWithoutInertiaCoversCommandedDistance) {
-  const KheperaParams robot = robot_with_inertia(false);
+  const RobotParams robot = robot_with_inertia(false);
   World world(empty_arena(2.0, 2.0), robot);
   world.reset({0.1, 1.0, 0.0});
   const int steps = 100;
@@ -30,7 +30,7 @@ TEST(SimMotion, StraightRunWithoutInertiaCoversCommandedDistance) {
 }
 
 TEST(SimMotion, StraightRunWithInertiaFollowsTheLagIntegral) {
-  const KheperaParams robot = robot_with_inertia(true);
+  const RobotParams robot = robot_with_inertia(true);
   const double dt = robot.control_step_s / robot.physics_substeps;
   const double vmax = robot.motor.max_speed_mps;
   const double a = std::exp(-dt / robot.motor.time_constant_s);
@@ -55,7 +55,7 @@ TEST(SimMotion, StraightRunWithInertiaFollowsTheLagIntegral) {
 }
 
 TEST(SimMotion, ReversalUnderInertiaTakesThePredictedTime) {
-  const KheperaParams robot = robot_with_inertia(true);
+  const RobotParams robot = robot_with_inertia(true);
   const double dt = robot.control_step_s / robot.physics_substeps;
   const double vmax = robot.motor.max_speed_mps;
   const double a = std::exp(-dt / robot.motor.time_constant_s);
@@ -98,7 +98,7 @@ TEST(SimMotion, ReversalUnderInertiaTakesThePredictedTime) {
 }
 
 TEST(SimMotion, ReversalWithoutInertiaIsImmediate) {
-  const KheperaParams robot = robot_with_inertia(false);
+  const RobotParams robot = robot_with_inertia(false);
   World world(empty_arena(4.0, 4.0), robot);
   world.reset({1.0, 2.0, 0.0});
   for (int i = 0; i < 5; ++i) world.step(1.0, 1.0);
@@ -109,7 +109,7 @@ TEST(SimMotion, ReversalWithoutInertiaIsImmediate) {
 }
 
 TEST(SimMotion, CommandsAreClampedAndNanIsStop) {
-  const KheperaParams robot = robot_with_inertia(false);
+  const RobotParams robot = robot_with_inertia(false);
   World world(empty_arena(4.0, 4.0), robot);
   world.reset({1.0, 2.0, 0.0});
   world.step(5.0, -7.0);
@@ -120,7 +120,7 @@ TEST(SimMotion, CommandsAreClampedAndNanIsStop) {
 }
 
 TEST(SimMotion, TurningInPlaceRotatesAtTwiceMaxSpeedOverWheelBase) {
-  const KheperaParams robot = robot_with_inertia(false);
+  const RobotParams robot = robot_with_inertia(false);
   World world(empty_arena(1.0, 1.0), robot);
   world.reset({0.5, 0.5, 0.3});
   const double rate = 2 * robot.motor.max_speed_mps / robot.wheel_base_m;  // rad/s
@@ -141,7 +141,7 @@ TEST(SimMotion, TurningInPlaceRotatesAtTwiceMaxSpeedOverWheelBase) {
 
 TEST(SimMotion, ArcRadiusMatchesDifferentialDrive) {
   // Left wheel half speed: v = 0.75 vmax, omega = 0.5 vmax / wheel_base, radius v / omega.
-  const KheperaParams robot = robot_with_inertia(false);
+  const RobotParams robot = robot_with_inertia(false);
   World world(empty_arena(2.0, 2.0), robot);
   world.reset({1.0, 0.8, 0.0});
   const double radius = 0.75 * robot.wheel_base_m / 0.5;

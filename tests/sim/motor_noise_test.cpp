@@ -15,8 +15,8 @@
 namespace esc::sim {
 namespace {
 
-KheperaParams robot(double noise_sd) {
-  KheperaParams r;
+RobotParams robot(double noise_sd) {
+  RobotParams r;
   r.motor.inertia = false;   // the wheel speed is the (noisy) target at once
   r.motor.noise_sd = noise_sd;
   return r;
@@ -32,7 +32,7 @@ TEST(MotorNoise, NoiseFreeMotorsDrawNothing) {
 }
 
 TEST(MotorNoise, ErrorIsUnbiasedWithTheSetSpreadAndWithinTheTopSpeed) {
-  const KheperaParams r = robot(0.1);
+  const RobotParams r = robot(0.1);
   const WheelMotor motor(r.motor, r.control_step_s / r.physics_substeps);
   Rng rng(11);
   const double target = 0.5 * r.motor.max_speed_mps;

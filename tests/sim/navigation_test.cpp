@@ -73,8 +73,8 @@ TEST(SimNavigation, IrAndLightSeeASegmentWallAsItsRectangle) {
   ArenaSpec blocked = test::empty_arena(1.0, 1.0);
   blocked.boxes.push_back(wall_box(walled.walls[0]));
   for (ArenaSpec* a : {&walled, &blocked}) a->lights.push_back({{0.65, 0.2}, 0.0, 1.0, -1});
-  World w(walled, KheperaParams{});
-  World b(blocked, KheperaParams{});
+  World w(walled, RobotParams{});
+  World b(blocked, RobotParams{});
   Rng rng(1);
   // Facing the wall, its face 2.25 cm from the body, the light behind it (ahead, to the right).
   const Pose pose{0.5 - 0.06 / std::sqrt(2.0), 0.4 + 0.06 / std::sqrt(2.0), -45 * kDeg};
@@ -92,7 +92,7 @@ TEST(SimNavigation, IrAndLightSeeASegmentWallAsItsRectangle) {
   // Without the wall, the light ahead-right is seen.
   ArenaSpec lit = test::empty_arena(1.0, 1.0);
   lit.lights = walled.lights;
-  World seen(lit, KheperaParams{});
+  World seen(lit, RobotParams{});
   seen.reset(pose);
   std::array<double, kLightSensors> light_open{};
   seen.read_light(light_open, rng);
@@ -113,7 +113,7 @@ TEST(SimNavigation, SegmentWallsCountInClearances) {
 class SimRangefinders : public ::testing::Test {
  protected:
   ArenaSpec arena = test::empty_arena(1.0, 1.0);
-  KheperaParams robot;
+  RobotParams robot;
 
   void SetUp() override {
     arena.walls.push_back({{0.2, 0.6}, {0.8, 0.6}, 0.01});
@@ -183,7 +183,7 @@ TEST(SimRadar, SlicesFrontLeftBackRight) {
 TEST(SimNavigation, ASegmentWallStopsTheRobotDrivenIntoIt) {
   ArenaSpec arena = test::empty_arena(1.0, 1.0);
   arena.walls.push_back({{0.2, 0.6}, {0.8, 0.6}, 0.01});
-  const KheperaParams robot = test::robot_with_inertia(false);
+  const RobotParams robot = test::robot_with_inertia(false);
   World world(arena, robot);
   world.reset({0.5, 0.4, 90 * kDeg});
   const double r = robot.body_radius_m;
@@ -211,7 +211,7 @@ TEST(SimNavigation, RandomStartsAndZonesKeepClearOfSegmentWalls) {
   z.radius_m = 0.04;
   z.random_position = true;
   arena.zones.push_back(z);
-  const KheperaParams robot;
+  const RobotParams robot;
   World world(arena, robot);
   Rng rng(5);
   int near_a_wall = 0;
@@ -252,17 +252,17 @@ TEST(SimNavigation, RulesOfWallsGoalAndSensors) {
   ArenaSpec start = test::empty_arena(1.0, 1.0);
   start.walls.push_back({{0.2, 0.5}, {0.8, 0.5}, 0.01});
   start.fixed_start = Pose{0.5, 0.52, 0.0};
-  EXPECT_EQ(rules_of(placement_problems(start, KheperaParams{})), std::vector<Rule>{Rule::StartClearOfWall});
+  EXPECT_EQ(rules_of(placement_problems(start, RobotParams{})), std::vector<Rule>{Rule::StartClearOfWall});
   start.fixed_start = Pose{0.5, 0.54, 0.0};   // 3.5 cm from the face: clear of the 2.75 cm body
-  EXPECT_TRUE(placement_problems(start, KheperaParams{}).empty());
+  EXPECT_TRUE(placement_problems(start, RobotParams{}).empty());
   // Sensors: at most 8 rangefinders, a range above 0, 0 .. 8 radar slices.
-  KheperaParams r;
+  RobotParams r;
   r.rangefinders.angles_rad.assign(9, 0.0);
   r.rangefinders.range_m = 0.0;
   r.radars = 9;
   EXPECT_EQ(rules_of(robot_problems(r)),
             (std::vector<Rule>{Rule::RangefinderCount, Rule::RangefinderRange, Rule::RadarsMax}));
-  r = KheperaParams{};
+  r = RobotParams{};
   r.radars = -1;
   EXPECT_EQ(rules_of(robot_problems(r)), std::vector<Rule>{Rule::RadarsMin});
   r.radars = 8;

@@ -58,7 +58,7 @@ TEST(SimObserve, NavigationReachesTheFrame) {
   sim::ArenaSpec a = sim::test::empty_arena(1.0, 1.0);
   a.walls.push_back({{0.2, 0.6}, {0.8, 0.6}, 0.01});
   a.goal = sim::Vec2{0.9, 0.4};
-  sim::KheperaParams p;
+  sim::RobotParams p;
   p.rangefinders.angles_rad = {0.0, 90 * kDeg, -90 * kDeg, 180 * kDeg};
   p.rangefinders.range_m = 0.4;
   p.radars = 4;
@@ -97,7 +97,7 @@ TEST(SimObserve, NavigationReachesTheFrame) {
 // Without a goal, rangefinders or radars, their slots are never written.
 TEST(SimObserve, NavigationSlotsStayZeroWithoutTheirSensors) {
   sim::ArenaSpec a = sim::test::empty_arena(0.6, 0.6);
-  sim::World w(a, sim::KheperaParams{});
+  sim::World w(a, sim::RobotParams{});
   w.reset({0.3, 0.2, 1.0});
   Frame f{};
   observe_robot(w, std::array<double, sim::kIrSensors>{}, f);
@@ -121,7 +121,7 @@ TEST(SimObserve, WorldStateReachesTheFrame) {
   a.zones.push_back(r);                     // zone 1: invisible recharge
   a.lights.push_back({{0.1, 0.1}, 0.0, 1.0, -1});
   a.lights.push_back({{0.0, 0.0}, 0.0, 1.0, 1});  // above zone 1
-  sim::KheperaParams p;
+  sim::RobotParams p;
   p.motor.inertia = false;
   p.energy.enabled = true;
   sim::World w(a, p);

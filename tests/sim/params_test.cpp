@@ -17,41 +17,41 @@ namespace {
 
 struct Case {
   std::string field;
-  std::function<void(ArenaSpec&, KheperaParams&)> spoil;
+  std::function<void(ArenaSpec&, RobotParams&)> spoil;
 };
 
 TEST(SimParams, InvalidValuesThrowNamingTheField) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<Case> cases = {
-      {"arena.width_m", [](ArenaSpec& a, KheperaParams&) { a.width_m = 0.0; }},
-      {"arena.height_m", [](ArenaSpec& a, KheperaParams&) { a.height_m = -1.0; }},
-      {"arena.height_m", [nan](ArenaSpec& a, KheperaParams&) { a.height_m = nan; }},
+      {"arena.width_m", [](ArenaSpec& a, RobotParams&) { a.width_m = 0.0; }},
+      {"arena.height_m", [](ArenaSpec& a, RobotParams&) { a.height_m = -1.0; }},
+      {"arena.height_m", [nan](ArenaSpec& a, RobotParams&) { a.height_m = nan; }},
       {"arena.boxes[0].size_m",
-       [](ArenaSpec& a, KheperaParams&) { a.boxes.push_back({{0.1, 0.1}, {0.1, 0.0}, 0.0}); }},
+       [](ArenaSpec& a, RobotParams&) { a.boxes.push_back({{0.1, 0.1}, {0.1, 0.0}, 0.0}); }},
       {"arena.cylinders[1].radius_m",
-       [](ArenaSpec& a, KheperaParams&) {
+       [](ArenaSpec& a, RobotParams&) {
          a.cylinders.push_back({{0.1, 0.1}, 0.02});
          a.cylinders.push_back({{0.3, 0.1}, -0.02});
        }},
-      {"robot.body_radius_m", [](ArenaSpec&, KheperaParams& r) { r.body_radius_m = 0.0; }},
-      {"robot.body_height_m", [](ArenaSpec&, KheperaParams& r) { r.body_height_m = -0.03; }},
-      {"robot.mass_kg", [](ArenaSpec&, KheperaParams& r) { r.mass_kg = 0.0; }},
-      {"robot.wheel_base_m", [](ArenaSpec&, KheperaParams& r) { r.wheel_base_m = 0.0; }},
-      {"robot.motor.max_speed_mps", [](ArenaSpec&, KheperaParams& r) { r.motor.max_speed_mps = -0.1; }},
-      {"robot.motor.time_constant_s", [](ArenaSpec&, KheperaParams& r) { r.motor.time_constant_s = -1; }},
-      {"robot.motor.max_accel_mps2", [](ArenaSpec&, KheperaParams& r) { r.motor.max_accel_mps2 = 0; }},
-      {"robot.ir.range_m", [](ArenaSpec&, KheperaParams& r) { r.ir.range_m = 0.0; }},
-      {"robot.ir.aperture_rad", [](ArenaSpec&, KheperaParams& r) { r.ir.aperture_rad = 4.0; }},
-      {"robot.ir.rays", [](ArenaSpec&, KheperaParams& r) { r.ir.rays = 0; }},
-      {"robot.ir.noise_sd", [](ArenaSpec&, KheperaParams& r) { r.ir.noise_sd = -0.1; }},
-      {"robot.control_step_s", [](ArenaSpec&, KheperaParams& r) { r.control_step_s = 0.0; }},
-      {"robot.physics_substeps", [](ArenaSpec&, KheperaParams& r) { r.physics_substeps = 0; }},
+      {"robot.body_radius_m", [](ArenaSpec&, RobotParams& r) { r.body_radius_m = 0.0; }},
+      {"robot.body_height_m", [](ArenaSpec&, RobotParams& r) { r.body_height_m = -0.03; }},
+      {"robot.mass_kg", [](ArenaSpec&, RobotParams& r) { r.mass_kg = 0.0; }},
+      {"robot.wheel_base_m", [](ArenaSpec&, RobotParams& r) { r.wheel_base_m = 0.0; }},
+      {"robot.motor.max_speed_mps", [](ArenaSpec&, RobotParams& r) { r.motor.max_speed_mps = -0.1; }},
+      {"robot.motor.time_constant_s", [](ArenaSpec&, RobotParams& r) { r.motor.time_constant_s = -1; }},
+      {"robot.motor.max_accel_mps2", [](ArenaSpec&, RobotParams& r) { r.motor.max_accel_mps2 = 0; }},
+      {"robot.ir.range_m", [](ArenaSpec&, RobotParams& r) { r.ir.range_m = 0.0; }},
+      {"robot.ir.aperture_rad", [](ArenaSpec&, RobotParams& r) { r.ir.aperture_rad = 4.0; }},
+      {"robot.ir.rays", [](ArenaSpec&, RobotParams& r) { r.ir.rays = 0; }},
+      {"robot.ir.noise_sd", [](ArenaSpec&, RobotParams& r) { r.ir.noise_sd = -0.1; }},
+      {"robot.control_step_s", [](ArenaSpec&, RobotParams& r) { r.control_step_s = 0.0; }},
+      {"robot.physics_substeps", [](ArenaSpec&, RobotParams& r) { r.physics_substeps = 0; }},
       // 1 m/s over 50 ms substeps: 5 cm per substep, beyond the contact look-ahead.
-      {"robot.physics_substeps", [](ArenaSpec&, KheperaParams& r) { r.motor.max_speed_mps = 1.0; }},
+      {"robot.physics_substeps", [](ArenaSpec&, RobotParams& r) { r.motor.max_speed_mps = 1.0; }},
   };
   for (const Case& c : cases) {
     ArenaSpec arena = test::empty_arena(0.6, 0.6);
-    KheperaParams robot;
+    RobotParams robot;
     c.spoil(arena, robot);
     try {
       World world(arena, robot);
@@ -64,13 +64,13 @@ TEST(SimParams, InvalidValuesThrowNamingTheField) {
 }
 
 TEST(SimParams, DefaultsAndEdgeValuesAreAccepted) {
-  KheperaParams robot;
+  RobotParams robot;
   robot.motor.time_constant_s = 0.0;  // acceleration limit only
   robot.ir.rays = 1;
   robot.ir.aperture_rad = 0.0;
   robot.physics_substeps = 1;
   EXPECT_NO_THROW(World(test::empty_arena(0.6, 0.6), robot));
-  EXPECT_NO_THROW(World(test::empty_arena(0.6, 0.6), KheperaParams{}));
+  EXPECT_NO_THROW(World(test::empty_arena(0.6, 0.6), RobotParams{}));
 }
 
 }  // namespace
@@ -83,8 +83,8 @@ namespace {
 // the limit, without throwing.
 TEST(SimRules, ProblemsListEveryBrokenRuleWithItsValueAndLimit) {
   EXPECT_TRUE(arena_problems(test::empty_arena(0.6, 0.6)).empty());
-  EXPECT_TRUE(robot_problems(KheperaParams{}).empty());
-  EXPECT_TRUE(placement_problems(test::empty_arena(0.6, 0.6), KheperaParams{}).empty());
+  EXPECT_TRUE(robot_problems(RobotParams{}).empty());
+  EXPECT_TRUE(placement_problems(test::empty_arena(0.6, 0.6), RobotParams{}).empty());
 
   ArenaSpec a = test::empty_arena(0.6, 0.6);
   a.cylinders.push_back({{0.59, 0.3}, 0.025});   // reaches 1.5 cm beyond the right wall
@@ -98,7 +98,7 @@ TEST(SimRules, ProblemsListEveryBrokenRuleWithItsValueAndLimit) {
   EXPECT_EQ(arena[1].info().setting, "light");
   EXPECT_DOUBLE_EQ(arena[1].found, -1.0);
 
-  KheperaParams r;
+  RobotParams r;
   r.ir.aperture_rad = 4.0;
   r.energy.discharge_steps = 20'000'000;
   const auto robot = robot_problems(r);
@@ -113,7 +113,7 @@ TEST(SimRules, ProblemsListEveryBrokenRuleWithItsValueAndLimit) {
 
 // The World's guard throws the first problem's message; the rim, not the centre, counts.
 TEST(SimRules, TheGuardThrowsTheFirstProblemAndTheRimCounts) {
-  KheperaParams r;
+  RobotParams r;
   r.motor.max_speed_mps = 0.19;   // centre 9.5 mm per substep, rim 9.86 mm: fine
   EXPECT_TRUE(robot_problems(r).empty());
   r.motor.max_speed_mps = 0.195;  // centre 9.75 mm, rim 10.12 mm: too far
@@ -127,7 +127,7 @@ TEST(SimRules, TheGuardThrowsTheFirstProblemAndTheRimCounts) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()), problems[0].message());
   }
-  r = KheperaParams{};
+  r = RobotParams{};
   r.wheel_base_m = 0.06;   // wider than the 55 mm body
   ASSERT_EQ(robot_problems(r).size(), 1u);
   EXPECT_EQ(robot_problems(r)[0].rule, Rule::WheelBaseWithinBody);
@@ -135,15 +135,15 @@ TEST(SimRules, TheGuardThrowsTheFirstProblemAndTheRimCounts) {
 
 TEST(SimRules, TheRobotInTheArena) {
   ArenaSpec a = test::empty_arena(0.05, 0.6);
-  EXPECT_EQ(placement_problems(a, KheperaParams{}).at(0).rule, Rule::RobotFits);
+  EXPECT_EQ(placement_problems(a, RobotParams{}).at(0).rule, Rule::RobotFits);
   a = test::empty_arena(0.6, 0.6);
   a.cylinders.push_back({{0.3, 0.3}, 0.05});
   a.fixed_start = Pose{0.32, 0.3, 0.0};
-  const auto p = placement_problems(a, KheperaParams{});
+  const auto p = placement_problems(a, RobotParams{});
   ASSERT_EQ(p.size(), 1u);
   EXPECT_EQ(p[0].rule, Rule::StartClearOfCylinder);
   EXPECT_NEAR(p[0].found, -0.03, 1e-12);   // the centre is 3 cm inside the cylinder
-  EXPECT_DOUBLE_EQ(p[0].limit, KheperaParams{}.body_radius_m);
+  EXPECT_DOUBLE_EQ(p[0].limit, RobotParams{}.body_radius_m);
 }
 
 }  // namespace

@@ -44,8 +44,8 @@ inline void add_homing_features(ArenaSpec& a, const HomingFeatures& f) {
   a.lights.push_back(f.free_light);
 }
 
-inline KheperaParams robot_with_inertia(bool inertia) {
-  KheperaParams r;
+inline RobotParams robot_with_inertia(bool inertia) {
+  RobotParams r;
   r.motor.inertia = inertia;
   return r;
 }

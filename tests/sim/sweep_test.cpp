@@ -11,19 +11,19 @@
 namespace esc::sim {
 namespace {
 
-KheperaParams no_inertia() {
-  KheperaParams r;
+RobotParams no_inertia() {
+  RobotParams r;
   r.motor.inertia = false;
   return r;
 }
 
 TEST(SimSweep, GridSize) {
-  World w(test::empty_arena(0.6, 0.6), KheperaParams{});
+  World w(test::empty_arena(0.6, 0.6), RobotParams{});
   EXPECT_EQ(w.sweep_columns(), 15);  // 0.6 / 0.04, no sliver column from rounding
   EXPECT_EQ(w.sweep_rows(), 15);
   ArenaSpec a = test::empty_arena(0.65, 0.3);
   a.sweep_cell_m = 0.1;
-  World v(a, KheperaParams{});
+  World v(a, RobotParams{});
   EXPECT_EQ(v.sweep_columns(), 7);  // the last column is partial
   EXPECT_EQ(v.sweep_rows(), 3);
 }
@@ -65,7 +65,7 @@ TEST(SimSweep, CountsDistinctCellsOfAWanderingPath) {
   ArenaSpec a = test::empty_arena(0.6, 0.6);
   a.sweep_cell_m = 0.05;
   a.cylinders.push_back({{0.3, 0.3}, 0.05});
-  World w(a, KheperaParams{});
+  World w(a, RobotParams{});
   Rng rng(4);
   w.reset(w.random_free_pose(rng));
   std::set<std::pair<int, int>> cells;

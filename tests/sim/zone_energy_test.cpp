@@ -37,8 +37,8 @@ Zone rectangle(double x, double y, double sx, double sy, bool recharge = false,
   return z;
 }
 
-KheperaParams energy_robot(int discharge = 285, int recharge = 100, int substeps = 2) {
-  KheperaParams r;
+RobotParams energy_robot(int discharge = 285, int recharge = 100, int substeps = 2) {
+  RobotParams r;
   r.motor.inertia = false;  // speed = command at once: substep positions are known
   r.physics_substeps = substeps;
   r.energy.enabled = true;
@@ -50,7 +50,7 @@ KheperaParams energy_robot(int discharge = 285, int recharge = 100, int substeps
 // ---- energy ---------------------------------------------------------------------------
 
 TEST(SimEnergy, FullUntilEnabled) {
-  World world(test::empty_arena(0.6, 0.6), KheperaParams{});
+  World world(test::empty_arena(0.6, 0.6), RobotParams{});
   world.reset({0.3, 0.3, 0.0});
   for (int i = 0; i < 1000; ++i) world.step(0.0, 0.0);
   EXPECT_EQ(world.state().floor.energy, 1.0);
@@ -174,7 +174,7 @@ TEST(SimZones, CentreInsideCircleAndRectangle) {
   a.zones.push_back(circle(0.2, 0.2, 0.05, false, true));   // visible
   a.zones.push_back(rectangle(0.4, 0.3, 0.1, 0.2));          // invisible
   a.zones.push_back(circle(0.45, 0.4, 0.03));                // overlaps the rectangle's corner
-  World w(a, KheperaParams{});
+  World w(a, RobotParams{});
   const auto at = [&](double x, double y) {
     w.reset({x, y, 0.3});
     return std::pair{w.state().floor.in_zone, w.state().floor.ground};
@@ -195,7 +195,7 @@ TEST(SimZones, CentreInsideCircleAndRectangle) {
   ArenaSpec b = test::empty_arena(0.5, 0.5);
   b.zones.push_back(rectangle(0.25, 0.25, 0.25, 0.125));
   b.zones.push_back(circle(0.25, 0.25, 0.125));
-  World wb(b, KheperaParams{});
+  World wb(b, RobotParams{});
   EXPECT_TRUE(wb.in_zone(0, {0.375, 0.3125}));
   EXPECT_FALSE(wb.in_zone(0, {0.375 + 1e-12, 0.3125}));
   EXPECT_FALSE(wb.in_zone(0, {0.375, 0.3125 + 1e-12}));
@@ -229,8 +229,8 @@ ArenaSpec random_zone_arena() {
 
 TEST(SimZones, RandomPlacementInsideClearAndDeterministic) {
   const ArenaSpec a = random_zone_arena();
-  World w(a, KheperaParams{});
-  World other(a, KheperaParams{});
+  World w(a, RobotParams{});
+  World other(a, RobotParams{});
   // Before any placement a random zone sits at the arena's centre.
   EXPECT_EQ(w.zone_centers()[0].x, 0.3);
   EXPECT_EQ(w.zone_centers()[0].y, 0.25);
@@ -283,7 +283,7 @@ TEST(SimZones, LightAboveARandomZoneMovesItsReading) {
   LightSource l;
   l.above_zone = 0;
   a.lights.push_back(l);
-  World w(a, KheperaParams{});
+  World w(a, RobotParams{});
   Rng rng(3);
   std::array<double, kLightSensors> v{};
   for (int i = 0; i < 20; ++i) {
@@ -302,7 +302,7 @@ TEST(SimZones, LightAboveARandomZoneMovesItsReading) {
 TEST(SimZones, NoDrawWithoutRandomZonesAndBeginEpochOrder) {
   ArenaSpec a = test::empty_arena(0.6, 0.6);
   a.zones.push_back(circle(0.3, 0.3, 0.05));
-  World w(a, KheperaParams{});
+  World w(a, RobotParams{});
   Rng rng(5);
   Rng copy = rng;
   w.place_zones(rng);
@@ -317,10 +317,10 @@ TEST(SimZones, NoDrawWithoutRandomZonesAndBeginEpochOrder) {
   EXPECT_EQ(w.state().pose.x_m, p.x_m);
   // With a random zone: zones first, then the pose.
   ArenaSpec b = random_zone_arena();
-  World wb(b, KheperaParams{});
+  World wb(b, RobotParams{});
   Rng f1(11), f2(11);
   const Pose pb = wb.begin_epoch(f1);
-  World ref(b, KheperaParams{});
+  World ref(b, RobotParams{});
   ref.place_zones(f2);
   const Pose qb = ref.random_free_pose(f2);
   EXPECT_EQ(pb.x_m, qb.x_m);
@@ -328,7 +328,7 @@ TEST(SimZones, NoDrawWithoutRandomZonesAndBeginEpochOrder) {
   // A fixed start wins over a random pose.
   ArenaSpec c = b;
   c.fixed_start = Pose{0.05, 0.05, 1.0};
-  World wc(c, KheperaParams{});
+  World wc(c, RobotParams{});
   Rng g(1);
   EXPECT_EQ(wc.begin_epoch(g).x_m, 0.05);
 }
@@ -339,7 +339,7 @@ TEST(SimZones, NoFreePlaceThrows) {
   Zone z = circle(0, 0, 0.1);
   z.random_position = true;
   a.zones.push_back(z);
-  World w(a, KheperaParams{});
+  World w(a, RobotParams{});
   Rng rng(1);
   EXPECT_THROW(w.place_zones(rng), std::runtime_error);
 }
@@ -354,7 +354,7 @@ TEST(SimReached, RisingEdgeCountedOncePerEntry) {
   LightSource far;
   far.position_m = {0.9, 0.5};
   a.lights.push_back(far);
-  KheperaParams r;
+  RobotParams r;
   r.motor.inertia = false;
   World w(a, r);
   w.reset({0.3, 0.3, 0.0});
@@ -394,7 +394,7 @@ TEST(SimReached, RisingEdgeCountedOncePerEntry) {
 
 // ---- validation -------------------------------------------------------------------------
 
-void expect_invalid(const ArenaSpec& a, const KheperaParams& r, const std::string& field) {
+void expect_invalid(const ArenaSpec& a, const RobotParams& r, const std::string& field) {
   try {
     World w(a, r);
     ADD_FAILURE() << "no exception for " << field;
@@ -404,7 +404,7 @@ void expect_invalid(const ArenaSpec& a, const KheperaParams& r, const std::strin
 }
 
 TEST(SimZones, InvalidParametersNameTheField) {
-  const KheperaParams ok;
+  const RobotParams ok;
   ArenaSpec a = test::empty_arena(0.6, 0.6);
   a.zones.push_back(circle(0.58, 0.3, 0.05));
   expect_invalid(a, ok, "arena.zones[0]");
@@ -442,7 +442,7 @@ TEST(SimZones, InvalidParametersNameTheField) {
   a.reach_radius_m = -1;
   expect_invalid(a, ok, "arena.reach_radius_m");
   a.reach_radius_m = 0.05;
-  KheperaParams r;
+  RobotParams r;
   r.energy.discharge_steps = 0;
   expect_invalid(a, r, "robot.energy.discharge_steps");
   r = ok;

@@ -1,6 +1,9 @@
 #pragma once
-// The simulated Khepera's constants, with their defaults and sources in
-// docs/robot-model.md. Every field is settable from a script's `robot` block.
+// A simulated robot's constants: the Khepera's by default, with their sources in
+// docs/robot-model.md. Every field is settable from a script's `robot` block, so another
+// differential-drive body (the e-puck, experiments/lib/epuck.esc) is data, not code.
+#include <array>
+#include <optional>
 #include <vector>
 
 namespace esc::sim {
@@ -15,11 +18,48 @@ struct MotorParams {
   double noise_sd = 0.0;
 };
 
+// Most IR sensors a robot carries: the observable frame holds as many `ir` slots.
+inline constexpr int kMaxIrSensors = 8;
+
+// Where an IR sensor sits on the body and where it looks, radians from the heading
+// (positive = left). The light sensors are the same sensors in passive mode.
+struct IrMount {
+  double bearing_rad = 0.0;          // direction of the mount point from the body's centre
+  double facing_rad = 0.0;           // direction of the sensor's axis
+  std::optional<double> radius_m;    // distance of the mount point from the centre; none: on the rim
+  friend bool operator==(const IrMount&, const IrMount&) = default;
+};
+
+// The Khepera's sensors (index 0..5 front, left to right; 6 back left; 7 back right), on
+// its rim: mount and facing angles, degrees from the heading (docs/robot-model.md, "IR
+// sensors"), and the mounts they make.
+inline constexpr std::array<double, 8> kKheperaIrMountDeg = {68.0, 43.0, 13.0, -13.0, -43.0, -68.0, 158.0, -158.0};
+inline constexpr std::array<double, 8> kKheperaIrFacingDeg = {90.0, 45.0, 10.0, -10.0, -45.0, -90.0, 180.0, 180.0};
+[[nodiscard]] std::vector<IrMount> khepera_ir_mounts();
+
+// A point of a measured response curve: the normalised reading at a distance.
+struct IrResponsePoint {
+  double distance_m = 0.0;
+  double reading = 0.0;
+  friend bool operator==(const IrResponsePoint&, const IrResponsePoint&) = default;
+};
+
 struct IrParams {
   double range_m = 0.05;            // reading is 0 at and beyond this distance
   double aperture_rad = 0.5236;     // total angle spanned by a sensor's rays (30 deg)
   int rays = 3;                     // rays per sensor, spread evenly over the aperture
   double noise_sd = 0.0;            // Gaussian noise on the normalised reading, then clamped to [0, 1]
+  std::vector<IrMount> mounts = khepera_ir_mounts();   // at most kMaxIrSensors; `ir[i]` reads mounts[i]
+  // The response to an obstacle at distance x along a ray: Enki's curve
+  //   F(x) = m (c - x0^2) / (x^2 - 2 x0 x + c)
+  // rescaled to 1 at x = 0 and 0 at the range (m cancels), with Enki's constants for the
+  // Khepera. Held in Enki's units, centimetres, so that the Khepera's curve is computed
+  // from exactly the numbers it always was.
+  double curve_x0_cm = -0.9;
+  double curve_c_cm2 = 7.0;
+  // A measured curve instead, when not empty: readings at increasing distances from 0,
+  // linearly interpolated, 0 at and beyond the range.
+  std::vector<IrResponsePoint> response;
 };
 
 // Ambient light: the same eight sensors in passive mode. A light of intensity I at distance
@@ -56,7 +96,7 @@ struct RangefinderParams {
   double range_m = 0.34375;
 };
 
-struct KheperaParams {
+struct RobotParams {
   double body_radius_m = 0.0275;    // 55 mm diameter
   double body_height_m = 0.03;
   double mass_kg = 0.08;

@@ -1,0 +1,122 @@
+// IR sensors as data: a robot's `ir_sensors` (mounts), Enki's curve (`ir_curve_x0`,
+// `ir_curve_c`) or a measured `ir_response`, read in SI; the Khepera's own values restated
+// give exactly the default robot; mistakes are located at the tuple; reading a sensor the
+// robot does not have is an error at the read.
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <string>
+
+#include "helpers.hpp"
+#include "runtime/eval/fingerprint.hpp"
+
+namespace esc::compiler {
+namespace {
+
+using test::options;
+using test::rendered;
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// A robot with three sensors, one of them 1 cm inside the rim, and a measured response.
+std::string script(const std::string& robot_settings, const std::string& inputs = "ir[0..2]") {
+  return "arena a { size 1m x 1m }\n"
+         "robot r {\n" + robot_settings + "\n}\n"
+         "fitness f { step: speed }\n"
+         "controller c = mlp(" + inputs + " -> wheels)\n"
+         "experiment e { arena a  robot r  fitness f  compare c }\n";
+}
+
+const std::string kThree =
+    "  ir_sensors [(45deg, 45deg), (0deg, 0deg, 1.75cm), (-45deg, -45deg)]\n"
+    "  ir_response [(0mm, 1), (1cm, 0.6), (3cm, 0.1)]";
+
+eval::ExperimentSpec compiled(const std::string& text) {
+  const auto r = compile_source(text, "ir.esc", options());
+  EXPECT_TRUE(r.ok()) << rendered(r);
+  return r.ok() ? r.experiments.at(0) : eval::ExperimentSpec{};
+}
+
+std::string refused(const std::string& text) {
+  const auto r = compile_source(text, "ir.esc", options());
+  EXPECT_FALSE(r.ok());
+  return rendered(r);
+}
+
+TEST(IrLayout, MountsAndResponseInSi) {
+  const eval::ExperimentSpec x = compiled(script(kThree));
+  const auto& m = x.robot.ir.mounts;
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_DOUBLE_EQ(m[0].bearing_rad, 45 * kDeg);
+  EXPECT_DOUBLE_EQ(m[0].facing_rad, 45 * kDeg);
+  EXPECT_FALSE(m[0].radius_m.has_value());
+  ASSERT_TRUE(m[1].radius_m.has_value());
+  EXPECT_DOUBLE_EQ(*m[1].radius_m, 0.0175);
+  EXPECT_DOUBLE_EQ(m[2].facing_rad, -45 * kDeg);
+  ASSERT_EQ(x.robot.ir.response.size(), 3u);
+  EXPECT_DOUBLE_EQ(x.robot.ir.response[1].distance_m, 0.01);
+  EXPECT_DOUBLE_EQ(x.robot.ir.response[1].reading, 0.6);
+  EXPECT_EQ(x.resolved_settings.at("robot.ir_response"), "[(0 m, 1), (0.01 m, 0.6), (0.03 m, 0.1)]");
+}
+
+// The default robot's new settings read as they did before they existed, so fingerprints
+// (and cached evaluations) of earlier runs stay valid.
+TEST(IrLayout, TheDefaultsAreTheirAsBeforeValues) {
+  const eval::ExperimentSpec x = test::paper();
+  EXPECT_EQ(x.resolved_settings.at("robot.ir_response"), "[]");
+  EXPECT_EQ(x.resolved_settings.at("robot.ir_curve_c"), "0.0007 m2");
+  const std::string f = eval::fingerprint(x);
+  for (const char* key : {"robot.ir_sensors", "robot.ir_curve", "robot.ir_response"})
+    EXPECT_EQ(f.find(key), std::string::npos) << key;
+}
+
+// The Khepera's layout and curve written out in a script are the default robot, bit for bit.
+TEST(IrLayout, TheKheperaRestatedIsTheDefault) {
+  const eval::ExperimentSpec restated = compiled(script(
+      "  ir_sensors [(68deg, 90deg), (43deg, 45deg), (13deg, 10deg), (-13deg, -10deg), (-43deg, -45deg),\n"
+      "              (-68deg, -90deg), (158deg, 180deg), (-158deg, 180deg)]\n"
+      "  ir_curve_x0 -0.9cm\n"
+      "  ir_curve_c 7cm2",
+      "ir[0..7]"));
+  const sim::RobotParams khepera;
+  EXPECT_EQ(restated.robot.ir.mounts, khepera.ir.mounts);
+  EXPECT_EQ(restated.robot.ir.curve_x0_cm, khepera.ir.curve_x0_cm);
+  EXPECT_EQ(restated.robot.ir.curve_c_cm2, khepera.ir.curve_c_cm2);
+}
+
+TEST(IrLayout, MistakesAreLocated) {
+  std::string out = refused(script("  ir_sensors [(45deg, 45deg), (0deg)]"));
+  EXPECT_NE(out.find("ir.esc:3:31: error: each tuple of `ir_sensors` holds 2 or 3 values, this one 1"),
+            std::string::npos)
+      << out;
+  out = refused(script("  ir_sensors [45deg, 0deg]"));
+  EXPECT_NE(out.find("ir.esc:3:14: error: `ir_sensors` takes a list of tuples, as in `[(68deg, 90deg), (43deg, "
+                     "45deg, 27mm)]`, found `[45deg, 0deg]`"),
+            std::string::npos)
+      << out;
+  out = refused(script("  ir_sensors [(45deg, 45deg), (0deg, 2cm)]"));
+  EXPECT_NE(out.find("ir.esc:3:39: error: expected an angle, found a length (`cm`)"), std::string::npos) << out;
+  out = refused(script("  ir_response [(0cm, 1), (2cm)]"));
+  EXPECT_NE(out.find("ir.esc:3:26: error: each tuple of `ir_response` holds 2 values, this one 1"), std::string::npos)
+      << out;
+}
+
+TEST(IrLayout, ReadingASensorTheRobotLacksIsAnErrorAtTheRead) {
+  std::string out = refused(script(kThree, "ir[0..7]"));
+  EXPECT_NE(out.find("ir.esc:7:20: error: `ir[3]` reads IR sensor 3, but the robot of experiment `e` has 3 (`ir[0]` .. "
+                     "`ir[2]`)"),
+            std::string::npos)
+      << out;
+  out = refused(script("  ir_sensors []", "light[0]"));
+  EXPECT_NE(out.find("`light[0]` reads light sensor 0, but the robot of experiment `e` has none"), std::string::npos)
+      << out;
+  eval::ExperimentSpec x = compiled(script(kThree));
+  EXPECT_NE(apply_setting(x, "robot.ir_sensors", "[(0deg, 0deg), (10deg, 10deg)]").find("`ir[2]` reads IR sensor 2"),
+            std::string::npos);
+  EXPECT_EQ(apply_setting(x, "robot.ir_sensors", "[(0deg, 0deg), (10deg, 10deg), (20deg, 20deg, 2cm)]"), "");
+  ASSERT_EQ(x.robot.ir.mounts.size(), 3u);
+  EXPECT_DOUBLE_EQ(*x.robot.ir.mounts[2].radius_m, 0.02);
+}
+
+}  // namespace
+}  // namespace esc::compiler
