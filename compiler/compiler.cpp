@@ -138,7 +138,7 @@ class Driver {
     ArenaLowering arenas(sink_);
     RobotLowering robots(sink_, names);
     BehaviorLowering behaviors(sink_, names, arenas);
-    FitnessLowering fitnesses(sink_, arenas);
+    FitnessLowering fitnesses(sink_, names, arenas);
     PrimitivesLowering primitives(sink_, names);
     ControllerLowering controllers(sink_, names, behaviors, primitives);
     ExperimentLowering experiments(sink_, names, Lowerings{arenas, robots, behaviors, fitnesses, controllers});

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -57,7 +58,7 @@ class ControllerLowering {
   std::map<const ast::ControllerDecl*, std::vector<InputSlots>> inputs_;
   // Whether a controller's inputs, terminals and frozen controllers have their sensors, per
   // (controller, goal, rangefinders, radars): reported once, not once per experiment.
-  using SensorKey = std::tuple<const ast::ControllerDecl*, bool, int, int>;
+  using SensorKey = std::tuple<const ast::ControllerDecl*, bool, int, int, int, std::string>;
   std::map<SensorKey, bool> sensors_ok_;
   bool check_sensors(const control::ControllerSpec& c, const ast::ControllerDecl& d, const Navigation& navigation);
   std::set<const ast::ControllerDecl*> supervised_failed_;

@@ -25,7 +25,7 @@ struct LoweredFitness {
 
 class FitnessLowering {
  public:
-  FitnessLowering(Sink& sink, ArenaLowering& arenas) : sink_(sink), arenas_(arenas) {}
+  FitnessLowering(Sink& sink, Resolver& names, ArenaLowering& arenas) : sink_(sink), names_(names), arenas_(arenas) {}
 
   // Memoised per (fitness, arena, experiment); what depends on neither is reported once.
   // `experiment` names whose compared controllers `choices` are, and whose goal and sensors
@@ -38,6 +38,7 @@ class FitnessLowering {
  private:
   using Key = std::tuple<const ast::FitnessDecl*, const ast::ArenaDecl*, const ast::ExperimentDecl*>;
   Sink& sink_;
+  Resolver& names_;
   ArenaLowering& arenas_;
   std::map<Key, std::optional<LoweredFitness>> fitnesses_;
 };

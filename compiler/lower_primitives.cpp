@@ -12,6 +12,7 @@
 
 #include "compiler/names.hpp"
 #include "compiler/quantities.hpp"
+#include "compiler/sensor_uses.hpp"
 #include "compiler/units.hpp"
 #include "runtime/expr/observables.hpp"
 
@@ -140,7 +141,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
     // An observable, all of an array, or a range of it.
     const std::string& name = t.name.text;
     if (name.empty()) continue;
-    const auto o = expr::find_observable(name);
+    const auto o = find_observable(name, &names_.ir_names());
     if (!o) {
       if (names_.find<ast::BehaviorDecl>(name) != nullptr) {
         sink_.error(t.name.where, fmt::format("`{}` is a behavior, not a terminal", name))
@@ -178,7 +179,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
     for (long long i = first; i <= last; ++i) {
       const std::string shown = o->indexed ? fmt::format("{}[{}]", name, i) : name;
       if (!once(shown, t.where)) continue;
-      if (auto p = genome::tree::prim::observable(shown)) list.items.push_back(std::move(*p));
+      list.items.push_back(genome::tree::prim::observable(shown, o->first + static_cast<expr::Slot>(i)));
     }
   }
   if (sink_.errors() == errors) slot = std::move(list);

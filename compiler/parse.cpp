@@ -253,6 +253,14 @@ class Builder {
     if (c == nullptr) return out;
     for (P::SettingContext* s : c->setting()) {
       if (s == nullptr) continue;
+      if (s->word != nullptr) {
+        ast::Value v;
+        v.kind = ast::Value::Kind::Word;
+        v.text = name(s->word).text;
+        v.where = span(s->word);
+        out.push_back({name(s->key), std::move(v)});
+        continue;
+      }
       out.push_back({name(s->key), s->list != nullptr ? list(s->list) : value(s->value())});
     }
     return out;

@@ -43,6 +43,7 @@ void Resolver::add(const Decl& d) {
 
 void Resolver::declare(const ast::Module& m) {
   modules_.push_back(&m);
+  ir_names_.reset();
   // In source order, so that "first declared here" points at the earlier one.
   std::vector<Decl> all;
   const auto collect = [&](const auto& v) {
@@ -86,6 +87,22 @@ const Decl* Resolver::lookup(const ast::Name& ref, const Decl& want) {
   }
   if (head(d).poisoned) return nullptr;
   return &d;
+}
+
+const IrNames& Resolver::ir_names() {
+  if (ir_names_) return *ir_names_;
+  IrNames& names = ir_names_.emplace(IrNames{"ir"});
+  const auto add = [&](const std::vector<ast::Setting>& settings) {
+    for (const ast::Setting& s : settings)
+      if (s.key.text == "ir_name" && s.value.kind == ast::Value::Kind::Word) names.insert(s.value.text);
+  };
+  for (const ast::Module* m : modules_) {
+    for (const ast::RobotDecl& r : m->robots) add(r.settings);
+    for (const ast::ExperimentDecl& x : m->experiments)
+      for (const ast::ExpItem& item : x.items)
+        if (item.kind == ast::ExpItem::Kind::Robot) add(item.settings);
+  }
+  return names;
 }
 
 }  // namespace esc::compiler

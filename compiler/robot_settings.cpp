@@ -9,6 +9,7 @@
 #include "compiler/quantities.hpp"
 #include "compiler/setting_values.hpp"
 #include "compiler/table_lookup.hpp"
+#include "runtime/expr/observables.hpp"
 
 namespace esc::compiler {
 
@@ -55,6 +56,22 @@ std::string ir_sensors_text(const sim::RobotParams& p) {
     items.push_back(fmt::format("({}, {}{})", with_unit(m.bearing_rad, Dim::Angle), with_unit(m.facing_rad, Dim::Angle),
                                 m.radius_m ? ", " + with_unit(*m.radius_m, Dim::Length) : ""));
   return fmt::format("[{}]", fmt::join(items, ", "));
+}
+
+bool read_ir_name(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  if (v.kind != ast::Value::Kind::Word) {
+    sink.error(v.where, fmt::format("`{}` takes a name, as in `{} prox`, found `{}`", name, name, v.text));
+    return false;
+  }
+  // `ir` itself, or a name no observable has: a robot's sensors never hide another reading.
+  if (v.text != "ir" && expr::find_observable(v.text)) {
+    sink.error(v.where, fmt::format("`{}` is an observable of every robot; the IR sensors need a name of their own",
+                                    v.text))
+        .help.push_back(fmt::format("write `{} prox`", name));
+    return false;
+  }
+  p.ir.name = v.text;
+  return true;
 }
 
 constexpr Dim kResponseDims[] = {Dim::Length, Dim::None};
@@ -127,6 +144,8 @@ const std::vector<RobotSetting>& robot_settings() {
        "the IR sensors, in the order `ir[i]` reads them: (mount bearing, facing[, distance from the centre]), "
        "angles from the heading",
        nullptr, nullptr, read_ir_sensors, ir_sensors_text},
+      {"ir_name", K::Name, Dim::None, "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)",
+       nullptr, nullptr, read_ir_name, [](const sim::RobotParams& p) { return p.ir.name; }},
       {"ir_curve_x0", K::Quantity, Dim::Length, "x0 of Enki's IR curve m (c - x0^2) / (x^2 - 2 x0 x + c)",
        [](const sim::RobotParams& p) { return p.ir.curve_x0_cm / kCmPerM; },
        [](sim::RobotParams& p, double v) { p.ir.curve_x0_cm = in_enki_units(v, kCmPerM); }},
@@ -185,7 +204,8 @@ std::optional<double> read_number(const RobotSetting& s, const ast::Value& v, Si
       return std::nullopt;
     }
     case K::Quantity: return read_quantity(v, s.name, s.dim, sink);
-    case K::List: break;
+    case K::List:
+    case K::Name: break;
   }
   return std::nullopt;
 }
@@ -193,14 +213,14 @@ std::optional<double> read_number(const RobotSetting& s, const ast::Value& v, Si
 }  // namespace
 
 bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotParams& p, Sink& sink) {
-  if (s.kind == K::List) return s.read_list(v, s.name, p, sink);
+  if (s.kind == K::List || s.kind == K::Name) return s.read_value(v, s.name, p, sink);
   const auto n = read_number(s, v, sink);
   if (n) s.set(p, *n);
   return n.has_value();
 }
 
 std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p) {
-  if (s.kind == K::List) return s.list_text(p);
+  if (s.kind == K::List || s.kind == K::Name) return s.value_text(p);
   const double v = s.get(p);
   if (s.kind == K::Flag) return v != 0.0 ? "on" : "off";
   if (s.kind == K::Whole) return fmt::format("{}", static_cast<long long>(v));

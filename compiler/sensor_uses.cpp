@@ -49,7 +49,30 @@ Navigation navigation_of(const eval::ExperimentSpec& x) {
           x.arena.goal.has_value(),
           static_cast<int>(x.robot.rangefinders.angles_rad.size()),
           x.robot.radars,
-          static_cast<int>(x.robot.ir.mounts.size())};
+          static_cast<int>(x.robot.ir.mounts.size()),
+          x.robot.ir.name};
+}
+
+namespace {
+
+bool is_ir_name(std::string_view name, const IrNames* ir_names) {
+  return name == "ir" || (ir_names != nullptr && ir_names->count(name) != 0);
+}
+
+}  // namespace
+
+std::optional<expr::Observable> find_observable(std::string_view name, const IrNames* ir_names) {
+  if (is_ir_name(name, ir_names)) return expr::find_observable("ir");
+  return expr::find_observable(name);
+}
+
+std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const IrNames* ir_names) {
+  if (!is_ir_name(name, ir_names) || name == n.ir_name) return std::nullopt;
+  return RuleMessage{fmt::format("`{}` names IR sensors, but {} calls its IR sensors `{}`", name, robot_of(n),
+                                 n.ir_name),
+                     {fmt::format("a controller written for another body: read `{}[i]` on this one, or run it on a "
+                                  "robot with `ir_name {}`",
+                                  n.ir_name, name)}};
 }
 
 std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {

@@ -9,7 +9,10 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "compiler/resolver.hpp"
 #include "compiler/rule_messages.hpp"
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/eval/experiment.hpp"
@@ -25,7 +28,17 @@ struct Navigation {
   int rangefinders = 0;
   int radars = 0;
   int ir_sensors = sim::kMaxIrSensors;
+  std::string ir_name = "ir";   // the name its robot reads its IR sensors by
 };
+
+// The observable a script's name reads: a built-in one, or the IR sensors by any name of
+// `ir_names` (null: `ir` alone).
+[[nodiscard]] std::optional<expr::Observable> find_observable(std::string_view name, const IrNames* ir_names);
+
+// Why `name`, the name of the IR sensors a script reads, is not what the robot under `n`
+// calls them (a controller written for another body), or nullopt when it is or when `name`
+// reads something else.
+[[nodiscard]] std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const IrNames* ir_names);
 
 [[nodiscard]] Navigation navigation_of(const eval::ExperimentSpec& x);
 

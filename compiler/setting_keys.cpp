@@ -158,6 +158,13 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
       unknown(sink, key, "robot setting", *name, kRobotGroup, robot_setting_names(), scope);
       return false;
     }
+    if (!s->settable_later()) {
+      sink.error(key.where, fmt::format("`{}{}` names the robot's sensors in scripts, which are resolved when the "
+                                        "script compiles: it is set in a robot block, not with --set",
+                                        scope, k))
+          .help.push_back(fmt::format("declare `robot r = {} {{ {} ... }}` and use it", "khepera", *name));
+      return false;
+    }
     return apply_robot_value(*s, value, spec.robot, sink);
   }
   if (const auto name = in_group(k, kArenaGroup)) {

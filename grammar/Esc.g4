@@ -54,8 +54,8 @@ unit : UNIT ('/' UNIT ('^' NUMBER)?)? ;
 robotDecl : ROBOT name=ident ('=' base=ident)? settingsBlock? ;
 settingsBlock : '{' setting* '}' ;
 // A list of quantities only where a setting takes one (`rangefinders [90deg, 0deg, -90deg]`),
-// or of tuples (`ir_sensors [(68deg, 90deg), (43deg, 45deg)]`).
-setting : key=ident (value | list=quantityList) ';'? ;
+// or of tuples (`ir_sensors [(68deg, 90deg), (43deg, 45deg)]`); a name (`ir_name prox`).
+setting : key=ident (value | list=quantityList | word=ident) ';'? ;
 value : quantity | ON | OFF | TRUE | FALSE ;
 quantityList
   : '[' (quantity (',' quantity)*)? ']'

@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -27,6 +27,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 10> kAdded{{
     {"robot.ir_curve_x0", "-0.009000000000000001 m"},
     {"robot.ir_curve_c", "0.0007 m2"},
     {"robot.ir_response", "[]"},
+    {"robot.ir_name", "ir"},
 }};
 
 }  // namespace

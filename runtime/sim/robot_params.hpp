@@ -4,6 +4,7 @@
 // differential-drive body (the e-puck, experiments/lib/epuck.esc) is data, not code.
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace esc::sim {
@@ -50,6 +51,9 @@ struct IrParams {
   int rays = 3;                     // rays per sensor, spread evenly over the aperture
   double noise_sd = 0.0;            // Gaussian noise on the normalised reading, then clamped to [0, 1]
   std::vector<IrMount> mounts = khepera_ir_mounts();   // at most kMaxIrSensors; `ir[i]` reads mounts[i]
+  // The name scripts read the sensors by (`ir[i]`; the e-puck's `prox[i]`): the compiler's,
+  // held with the sensors so that a robot declaration carries it.
+  std::string name = "ir";
   // The response to an obstacle at distance x along a ray: Enki's curve
   //   F(x) = m (c - x0^2) / (x^2 - 2 x0 x + c)
   // rescaled to 1 at x = 0 and 0 at the range (m cancels), with Enki's constants for the

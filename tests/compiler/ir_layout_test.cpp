@@ -4,11 +4,13 @@
 // robot does not have is an error at the read.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 #include <string>
 
 #include "helpers.hpp"
 #include "runtime/eval/fingerprint.hpp"
+#include "runtime/expr/observables.hpp"
 
 namespace esc::compiler {
 namespace {
@@ -116,6 +118,83 @@ TEST(IrLayout, ReadingASensorTheRobotLacksIsAnErrorAtTheRead) {
   EXPECT_EQ(apply_setting(x, "robot.ir_sensors", "[(0deg, 0deg), (10deg, 10deg), (20deg, 20deg, 2cm)]"), "");
   ASSERT_EQ(x.robot.ir.mounts.size(), 3u);
   EXPECT_DOUBLE_EQ(*x.robot.ir.mounts[2].radius_m, 0.02);
+}
+
+// The robot names its sensors: a controller written with the e-puck's `prox` reads the same
+// frame slots as `ir`, and on a body whose sensors are called otherwise it is an error at the read.
+const std::string kTwoBodies =
+    "arena a { size 1m x 1m }\n"
+    "robot puck { ir_name prox }\n"
+    "fitness f { step: speed * (1 - prox[0]) }\n"
+    "controller p = mlp(prox[0..7] -> wheels)\n"
+    "primitives terms { functions + *  terminals prox[0..1], speed }\n"
+    "controller t = tree(wheels, primitives terms)\n"
+    "experiment e {\n  arena a  robot puck  fitness f\n  evolve es(mu 2, lambda 4)  evolve gp(population 10)\n  compare p, t\n}\n";
+
+TEST(IrNames, TheRobotNamesItsSensors) {
+  const eval::ExperimentSpec x = compiled(kTwoBodies);
+  EXPECT_EQ(x.robot.ir.name, "prox");
+  ASSERT_EQ(x.controllers.at(0).mlp.inputs.size(), 8u);
+  EXPECT_EQ(x.controllers.at(0).mlp.inputs[3], expr::slot::ir + 3);
+  EXPECT_EQ(x.resolved_settings.at("robot.ir_name"), "prox");
+  EXPECT_EQ(test::paper().resolved_settings.at("robot.ir_name"), "ir");
+}
+
+TEST(IrNames, AControllerForAnotherBodyIsAnErrorAtTheRead) {
+  std::string out = refused(kTwoBodies + "experiment k { arena a  fitness f  compare p }\n");
+  EXPECT_NE(out.find("ir.esc:3:32: error: `prox` names IR sensors, but the robot of experiment `k` calls its IR "
+                     "sensors `ir`"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("ir.esc:4:20: error: `prox` names IR sensors, but the robot of experiment `k` calls its IR "
+                     "sensors `ir`"),
+            std::string::npos)
+      << out;
+  out = refused(kTwoBodies + "controller c = mlp(ir[0..7] -> wheels)\nexperiment k { arena a  robot puck  fitness f  "
+                             "compare c }\n");
+  EXPECT_NE(out.find("ir.esc:12:20: error: `ir` names IR sensors, but the robot of experiment `k` calls its IR sensors "
+                     "`prox`"),
+            std::string::npos)
+      << out;
+  out = refused(kTwoBodies + "fitness g { step: 1 }\nexperiment k { arena a  fitness g  evolve gp(population 10)  "
+                             "compare t }\n");
+  EXPECT_NE(out.find("ir.esc:6:40: error: `prox` names IR sensors, but the robot of experiment `k`"), std::string::npos)
+      << out;
+}
+
+TEST(IrNames, ANameMustBeItsOwnAndIsSetInARobotBlock) {
+  std::string out = refused(script("  ir_name speed"));
+  EXPECT_NE(out.find("ir.esc:3:11: error: `speed` is an observable of every robot; the IR sensors need a name of their "
+                     "own"),
+            std::string::npos)
+      << out;
+  out = refused(script("  ir_name 3"));
+  EXPECT_NE(out.find("ir.esc:3:11: error: `ir_name` takes a name, as in `ir_name prox`, found `3`"), std::string::npos)
+      << out;
+  eval::ExperimentSpec x = compiled(kTwoBodies);
+  EXPECT_NE(apply_setting(x, "robot.ir_name", "ir").find("it is set in a robot block, not with --set"),
+            std::string::npos);
+  EXPECT_EQ(x.robot.ir.name, "prox");
+}
+
+// The standard library's e-puck: the constants docs/robot-model.md cites, read as written.
+TEST(IrNames, TheLibrarysEpuckIsAsCited) {
+  const auto r = compile_file(test::source_dir() / "experiments/bodies/epuck_obstacle_avoidance.esc", options());
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const sim::RobotParams& puck = r.experiments.at(0).robot;
+  EXPECT_DOUBLE_EQ(puck.body_radius_m, 0.037);
+  EXPECT_DOUBLE_EQ(puck.wheel_base_m, 0.053);
+  EXPECT_DOUBLE_EQ(puck.motor.max_speed_mps, 0.128);
+  EXPECT_FALSE(puck.motor.inertia);
+  EXPECT_EQ(puck.ir.name, "prox");
+  ASSERT_EQ(puck.ir.mounts.size(), 8u);
+  // Enki's (3.35, -1.05) cm, its bearing written to the thousandth of a degree (0.2 µm at the rim).
+  EXPECT_NEAR(puck.ir.mounts[0].bearing_rad, std::atan2(-1.05, 3.35), 1e-5);
+  EXPECT_NEAR(*puck.ir.mounts[0].radius_m, std::hypot(0.0335, 0.0105), 1e-6);
+  EXPECT_DOUBLE_EQ(puck.ir.mounts[3].facing_rad, -142 * kDeg);
+  EXPECT_EQ(puck.ir.curve_x0_cm, 0.3);
+  EXPECT_EQ(puck.ir.curve_c_cm2, 0.7);
+  EXPECT_DOUBLE_EQ(puck.ir.range_m, 0.12);
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ TEST(SettingsHistory, AMissingLaterSettingAtItsAsBeforeValueIsTheSame) {
 
 TEST(SettingsHistory, TheFingerprintOmitsALaterSettingAtItsAsBeforeValue) {
   ExperimentSpec a;
-  a.name = "e";
+  a.name = std::string("e");   // from a char literal GCC 12 warns falsely (-Wrestrict, its bug 105329)
   a.resolved_settings = {{"epochs", "10"}};
   ExperimentSpec b = a;
   b.resolved_settings = {{"epochs", "10"}, {"robot.motor_noise", "0"}};

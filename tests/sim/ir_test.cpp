@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "runtime/sim/ir_sensor.hpp"
 #include "sim_test_util.hpp"
@@ -211,6 +212,27 @@ TEST(SimIrResponse, EnkisCurveIsOneUpToItsPeak) {
   for (double d_cm : {0.5, 1.0, 2.0, 4.0, 8.0})
     EXPECT_NEAR(response(d_cm / 100), (f(d_cm) - f(12.0)) / (1.0 - f(12.0)), 1e-12) << d_cm;
   EXPECT_EQ(response(0.12), 0.0);
+}
+
+// The e-puck's sensor 2 (Enki: at (0, -3.3 cm), facing -90 deg, its curve) with a wall on the
+// robot's right reads docs/robot-model.md's table for the e-puck: the response at the
+// distance from the sensor, whose middle ray meets the wall square on.
+TEST(SimIrEpuck, AWallSquareOnReadsTheDocumentedResponse) {
+  RobotParams puck;
+  puck.body_radius_m = 0.037;
+  puck.wheel_base_m = 0.053;
+  puck.ir.range_m = 0.12;
+  puck.ir.curve_x0_cm = 0.3;
+  puck.ir.curve_c_cm2 = 0.7;
+  puck.ir.mounts = {{-90 * kDeg, -90 * kDeg, 0.033}};
+  World world(test::empty_arena(1.0, 1.0), puck);
+  Rng rng(1);
+  for (const auto& [d_cm, documented] : {std::pair{0.5, 0.938}, {1.0, 0.553}, {2.0, 0.171}, {4.0, 0.038}, {8.0, 0.006}}) {
+    world.reset({0.5, 0.033 + d_cm / 100, 0.0});
+    std::array<double, kIrSensors> out{};
+    world.read_ir(out, rng);
+    EXPECT_NEAR(out[0], documented, 6e-4) << d_cm << " cm";
+  }
 }
 
 // A measured curve: linear between its points, flat before the first and after the last,
