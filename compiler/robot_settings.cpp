@@ -1,6 +1,8 @@
 #include "compiler/robot_settings.hpp"
 
+#include <array>
 #include <limits>
+#include <utility>
 #include <string>
 #include <utility>
 
@@ -58,6 +60,23 @@ std::string ir_sensors_text(const sim::RobotParams& p) {
   return fmt::format("[{}]", fmt::join(items, ", "));
 }
 
+constexpr std::array<std::pair<std::string_view, sim::DriveKind>, 2> kDrives{
+    {{"differential", sim::DriveKind::Differential}, {"acceleration", sim::DriveKind::Acceleration}}};
+
+bool read_drive(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  std::vector<std::string> words;
+  for (const auto& [word, kind] : kDrives) words.emplace_back(word);
+  const auto i = read_word(v, name, words, sink);
+  if (i) p.drive = kDrives[*i].second;
+  return i.has_value();
+}
+
+std::string drive_text(const sim::RobotParams& p) {
+  for (const auto& [word, kind] : kDrives)
+    if (kind == p.drive) return std::string(word);
+  return "";
+}
+
 bool read_ir_name(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
   if (v.kind != ast::Value::Kind::Word) {
     sink.error(v.where, fmt::format("`{}` takes a name, as in `{} prox`, found `{}`", name, name, v.text));
@@ -95,6 +114,16 @@ std::string ir_response_text(const sim::RobotParams& p) {
 
 const std::vector<RobotSetting>& robot_settings() {
   static const std::vector<RobotSetting> table = {
+      {"drive", K::Word, Dim::None,
+       "`differential` (two wheels behind motors) or `acceleration` (Lehman & Stanley's navigator: the commands "
+       "accelerate the turn rate and the speed, the body kinematic)",
+       nullptr, nullptr, read_drive, drive_text},
+      {"max_turn_rate", K::Quantity, Dim::TurnRate, "the acceleration drive's top turn rate",
+       [](const sim::RobotParams& p) { return p.turn.max_rate_radps; },
+       [](sim::RobotParams& p, double v) { p.turn.max_rate_radps = v; }},
+      {"max_turn_accel", K::Quantity, Dim::TurnAccel, "the acceleration drive's change of turn rate at command 1",
+       [](const sim::RobotParams& p) { return p.turn.max_accel_radps2; },
+       [](sim::RobotParams& p, double v) { p.turn.max_accel_radps2 = v; }},
       {"inertia", K::Flag, Dim::None, "motor inertia on or off",
        [](const sim::RobotParams& p) { return p.motor.inertia ? 1.0 : 0.0; },
        [](sim::RobotParams& p, double v) { p.motor.inertia = v != 0.0; }},
@@ -144,8 +173,8 @@ const std::vector<RobotSetting>& robot_settings() {
        "the IR sensors, in the order `ir[i]` reads them: (mount bearing, facing[, distance from the centre]), "
        "angles from the heading",
        nullptr, nullptr, read_ir_sensors, ir_sensors_text},
-      {"ir_name", K::Name, Dim::None, "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)",
-       nullptr, nullptr, read_ir_name, [](const sim::RobotParams& p) { return p.ir.name; }},
+      {"ir_name", K::Word, Dim::None, "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)",
+       nullptr, nullptr, read_ir_name, [](const sim::RobotParams& p) { return p.ir.name; }, true},
       {"ir_curve_x0", K::Quantity, Dim::Length, "x0 of Enki's IR curve m (c - x0^2) / (x^2 - 2 x0 x + c)",
        [](const sim::RobotParams& p) { return p.ir.curve_x0_cm / kCmPerM; },
        [](sim::RobotParams& p, double v) { p.ir.curve_x0_cm = in_enki_units(v, kCmPerM); }},
@@ -205,7 +234,7 @@ std::optional<double> read_number(const RobotSetting& s, const ast::Value& v, Si
     }
     case K::Quantity: return read_quantity(v, s.name, s.dim, sink);
     case K::List:
-    case K::Name: break;
+    case K::Word: break;
   }
   return std::nullopt;
 }
@@ -213,14 +242,14 @@ std::optional<double> read_number(const RobotSetting& s, const ast::Value& v, Si
 }  // namespace
 
 bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotParams& p, Sink& sink) {
-  if (s.kind == K::List || s.kind == K::Name) return s.read_value(v, s.name, p, sink);
+  if (s.kind == K::List || s.kind == K::Word) return s.read_value(v, s.name, p, sink);
   const auto n = read_number(s, v, sink);
   if (n) s.set(p, *n);
   return n.has_value();
 }
 
 std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p) {
-  if (s.kind == K::List || s.kind == K::Name) return s.value_text(p);
+  if (s.kind == K::List || s.kind == K::Word) return s.value_text(p);
   const double v = s.get(p);
   if (s.kind == K::Flag) return v != 0.0 ? "on" : "off";
   if (s.kind == K::Whole) return fmt::format("{}", static_cast<long long>(v));

@@ -19,18 +19,20 @@ namespace esc::compiler {
 struct RobotSetting {
   std::string_view name;
   // Flag, Quantity and Whole are one number, got and set by `get` and `set`; List is a list
-  // (`rangefinders [90deg, 0deg]`, `ir_sensors [(68deg, 90deg), ...]`) and Name a name
-  // (`ir_name prox`), read from the value as written (reporting its mistakes) by
-  // `read_value` and shown by `value_text`.
-  enum class Kind { Flag, Quantity, Whole, List, Name } kind;
+  // (`rangefinders [90deg, 0deg]`, `ir_sensors [(68deg, 90deg), ...]`) and Word a word
+  // (`ir_name prox`, `drive acceleration`), read from the value as written (reporting its
+  // mistakes) by `read_value` and shown by `value_text`.
+  enum class Kind { Flag, Quantity, Whole, List, Word } kind;
   Dim dim;   // of a number; of a list's first item
   std::string_view summary;
   double (*get)(const sim::RobotParams&) = nullptr;
   void (*set)(sim::RobotParams&, double) = nullptr;
   bool (*read_value)(const ast::Value&, std::string_view name, sim::RobotParams&, Sink&) = nullptr;
   std::string (*value_text)(const sim::RobotParams&) = nullptr;
-  // Names are resolved when the script compiles: a Name is set in a robot block, not by `--set`.
-  [[nodiscard]] bool settable_later() const noexcept { return kind != Kind::Name; }
+  // Names scripts read by are resolved when the script compiles: such a setting is set in a
+  // robot block, not by `--set`.
+  bool script_only = false;
+  [[nodiscard]] bool settable_later() const noexcept { return !script_only; }
 };
 
 [[nodiscard]] const std::vector<RobotSetting>& robot_settings();

@@ -199,6 +199,11 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
       return {fmt::format("point {} of the response reads {}: readings are normalised, 0 .. 1", p.index,
                           number(p.found)),
               {}};
+    case Rule::NoiseWithoutWheels:
+      return {fmt::format("`motor_noise` is an error of each wheel's speed, but this robot has the acceleration drive "
+                          "(no wheels); found {}",
+                          number(p.found)),
+              {"leave `motor_noise` at 0, or use `drive differential`"}};
     case Rule::WheelBaseWithinBody:
       return {fmt::format("the wheel base ({}) is wider than the body ({} across)", shown(p.found, Dimension::Length),
                           shown(p.limit, Dimension::Length)),
@@ -243,6 +248,8 @@ std::string shown(double si, Dimension d) {
     case Dimension::Speed: return number(si * 100) + "cm/s";
     case Dimension::Acceleration: return number(si) + "m/s^2";
     case Dimension::Mass: return a < 1 ? number(si * 1000) + "g" : number(si) + "kg";
+    case Dimension::TurnRate: return number(si * 180 / std::numbers::pi) + "deg/s";
+    case Dimension::TurnAcceleration: return number(si * 180 / std::numbers::pi) + "deg/s^2";
   }
   return number(si);
 }

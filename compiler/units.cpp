@@ -21,6 +21,8 @@ constexpr std::array kUnits = {
     // Areas: a number's unit is one word (`0.7cm2`), so that `2cm^2` in an expression stays (2 cm)^2.
     Unit{"mm2", Dim::Area, 1e-6},       Unit{"cm2", Dim::Area, 1e-4},
     Unit{"m2", Dim::Area, 1.0},
+    Unit{"deg/s", Dim::TurnRate, kDeg},   Unit{"rad/s", Dim::TurnRate, 1.0},
+    Unit{"deg/s^2", Dim::TurnAccel, kDeg}, Unit{"rad/s^2", Dim::TurnAccel, 1.0},
 };
 
 }  // namespace
@@ -52,6 +54,8 @@ std::string_view dim_phrase(Dim d) noexcept {
     case Dim::Accel: return "an acceleration";
     case Dim::Mass: return "a mass";
     case Dim::Area: return "an area";
+    case Dim::TurnRate: return "a turn rate";
+    case Dim::TurnAccel: return "a turn acceleration";
     case Dim::None: break;
   }
   return "a plain number";
@@ -66,6 +70,8 @@ std::string_view si_unit(Dim d) noexcept {
     case Dim::Accel: return "m/s^2";
     case Dim::Mass: return "kg";
     case Dim::Area: return "m2";
+    case Dim::TurnRate: return "rad/s";
+    case Dim::TurnAccel: return "rad/s^2";
     case Dim::None: break;
   }
   return "";
@@ -80,6 +86,8 @@ std::string_view example_unit(Dim d) noexcept {
     case Dim::Accel: return "m/s^2";
     case Dim::Mass: return "g";
     case Dim::Area: return "cm2";
+    case Dim::TurnRate: return "deg/s";
+    case Dim::TurnAccel: return "deg/s^2";
     case Dim::None: break;
   }
   return "";

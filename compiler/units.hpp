@@ -8,7 +8,7 @@
 
 namespace esc::compiler {
 
-enum class Dim { None, Length, Time, Angle, Speed, Accel, Mass, Area };
+enum class Dim { None, Length, Time, Angle, Speed, Accel, Mass, Area, TurnRate, TurnAccel };
 
 struct Unit {
   std::string_view name;   // as written: "cm", "m/s^2"

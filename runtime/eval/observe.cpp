@@ -46,7 +46,9 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   const sim::RobotState& s = world.state();
   const sim::RobotParams& p = world.robot();
   const double full_step_m = p.motor.max_speed_mps * p.control_step_s;
-  const double left = s.wheel_speed_mps[0] / p.motor.max_speed_mps;
+  // The acceleration drive's actuators are its turn rate and its speed, each over its top.
+  const bool wheeled = p.drive == sim::DriveKind::Differential;
+  const double left = s.wheel_speed_mps[0] / (wheeled ? p.motor.max_speed_mps : p.turn.max_rate_radps);
   const double right = s.wheel_speed_mps[1] / p.motor.max_speed_mps;
   // The body's origin is its centre of mass (a uniform cylinder), so the centre-of-mass
   // speed is `speed`.

@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 14> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -28,6 +28,10 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 11> kAdded{{
     {"robot.ir_curve_c", "0.0007 m2"},
     {"robot.ir_response", "[]"},
     {"robot.ir_name", "ir"},
+    // The acceleration drive (2026-12-05): the differential drive, and the navigator's turning.
+    {"robot.drive", "differential"},
+    {"robot.max_turn_rate", "0.5235987755982988 rad/s"},
+    {"robot.max_turn_accel", "0.8726646259971648 rad/s^2"},
 }};
 
 }  // namespace

@@ -100,7 +100,24 @@ struct RangefinderParams {
   double range_m = 0.34375;
 };
 
+// How the robot moves. Differential: two wheels behind motors (motor.hpp, drive.hpp), the
+// body dynamic in Bullet. Acceleration: Lehman & Stanley's maze navigator (their maze.h): the
+// first command accelerates the turn rate and the second the forward speed, each clamped to
+// its top; the body moves kinematically, and a move that would bring its centre within its
+// radius of a wall or obstacle is cancelled (the speeds kept), with no contact solver.
+enum class DriveKind { Differential, Acceleration };
+
+// The acceleration drive's turning; its forward speed is motor.max_speed_mps at most and
+// changes by motor.max_accel_mps2 at command 1. The navigator's: 3 degrees a step at most,
+// (output - 0.5) degrees a step per step, a step being a control step.
+struct TurnParams {
+  double max_rate_radps = 0.5235987755982988;       // 30 deg/s: 3 deg per 100 ms step
+  double max_accel_radps2 = 0.8726646259971648;     // 50 deg/s^2: command 1 adds 0.5 deg per step per step
+};
+
 struct RobotParams {
+  DriveKind drive = DriveKind::Differential;
+  TurnParams turn;                  // the acceleration drive's
   double body_radius_m = 0.0275;    // 55 mm diameter
   double body_height_m = 0.03;
   double mass_kg = 0.08;

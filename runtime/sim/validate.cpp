@@ -24,6 +24,7 @@ constexpr std::string_view kContactAlso[] = {"max_speed", "control_step", "body_
 constexpr std::string_view kSweepAlso[] = {"size"};
 constexpr std::string_view kWheelBaseAlso[] = {"body_radius"};
 constexpr std::string_view kIrMountAlso[] = {"body_radius"};
+constexpr std::string_view kNoiseAlso[] = {"drive"};
 constexpr std::string_view kIrCurveAlso[] = {"ir_curve_x0"};
 constexpr std::string_view kFitAlso[] = {"body_radius"};
 
@@ -152,6 +153,12 @@ constexpr RuleInfo kRules[] = {
     {Rule::ContactLookAhead, O::Robot, "substeps", kContactAlso, R::AtMost, D::Length,
      "robot.physics_substeps: travel of the body's rim per substep",
      "the contact solver sees walls only 10 mm ahead of the moving body"},
+    {Rule::TurnRate, O::Robot, "max_turn_rate", {}, R::Above, D::TurnRate, "robot.turn.max_rate_radps",
+     "the acceleration drive can turn"},
+    {Rule::TurnAccel, O::Robot, "max_turn_accel", {}, R::Above, D::TurnAcceleration, "robot.turn.max_accel_radps2",
+     "the acceleration drive's turn rate can change"},
+    {Rule::NoiseWithoutWheels, O::Robot, "motor_noise", kNoiseAlso, R::AtMost, D::Number,
+     "robot.motor.noise_sd under the acceleration drive", "motor noise is an error of each wheel's speed"},
 };
 
 constexpr bool in_rule_order() {
@@ -160,7 +167,7 @@ constexpr bool in_rule_order() {
   return true;
 }
 static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
-static_assert(static_cast<std::size_t>(Rule::ContactLookAhead) + 1 == std::size(kRules));
+static_assert(static_cast<std::size_t>(Rule::NoiseWithoutWheels) + 1 == std::size(kRules));
 
 // True when `found` relates to `limit` as `rel` demands; NaN never does.
 bool holds(Relation rel, double found, double limit) {
@@ -423,7 +430,11 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
   c.at_most(Rule::RangefinderCount, robot.rangefinders.angles_rad.size(), kMaxRangefinders);
   c.require(Rule::RangefinderRange, robot.rangefinders.range_m, 0.0);
   if (c.require(Rule::RadarsMin, robot.radars, 0)) c.require(Rule::RadarsMax, robot.radars, kMaxRadars);
-  if (body && wheels && speed && step && substeps) {
+  if (robot.drive == DriveKind::Acceleration) {
+    c.require(Rule::TurnRate, robot.turn.max_rate_radps, 0.0);
+    c.require(Rule::TurnAccel, robot.turn.max_accel_radps2, 0.0);
+    c.require(Rule::NoiseWithoutWheels, robot.motor.noise_sd, 0.0);
+  } else if (body && wheels && speed && step && substeps) {
     // Fastest point of the body: centre speed plus rim speed, at most
     // max_speed * max(1, 2 R / wheel_base) for commands in [-1, 1].
     const double rim = robot.motor.max_speed_mps * std::max(1.0, 2.0 * robot.body_radius_m / robot.wheel_base_m);

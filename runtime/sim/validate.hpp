@@ -53,7 +53,7 @@ enum class Rule {
   ControlStep, SubstepsMin,
   SubstepsMax, LightHalfDistance, LightNoise, EnergyDischargeMin, EnergyDischargeMax,
   EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
-  ContactLookAhead,
+  ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels,
 };
 
 enum class Object { Arena, Placement, Robot };
@@ -62,7 +62,7 @@ enum class Object { Arena, Placement, Robot };
 enum class Relation { Above, AtLeast, Below, AtMost };
 
 // What the value and the limit measure, so that a caller can show them in its own units.
-enum class Dimension { Count, Number, Length, Angle, Time, Speed, Acceleration, Mass };
+enum class Dimension { Count, Number, Length, Angle, Time, Speed, Acceleration, Mass, TurnRate, TurnAcceleration };
 
 struct RuleInfo {
   Rule rule;

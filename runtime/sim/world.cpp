@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "runtime/sim/drive.hpp"
 #include "runtime/sim/floor.hpp"
 #include "runtime/sim/geometry2d.hpp"
+#include "runtime/sim/kinematic_body.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/sim/light_sensor.hpp"
 #include "runtime/sim/motor.hpp"
@@ -37,7 +39,8 @@ struct World::Impl {
   WheelMotor motor;
   DifferentialDrive drive;
   Floor floor;
-  Body body;
+  std::optional<Body> body;          // the differential drive's; the acceleration drive is kinematic
+  KinematicBody kinematic;           // the acceleration drive's
   RobotState state;
 
   Impl(const ArenaSpec& a, const RobotParams& r)
@@ -51,37 +54,60 @@ struct World::Impl {
         motor(r.motor, substep_s),
         drive(r.wheel_base_m, substep_s),
         floor(a, r),
-        body(a, r, substep_s, geometry) {
+        kinematic(r) {
+    if (r.drive == DriveKind::Differential) body.emplace(a, r, substep_s, geometry);
     reset(a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
   }
 
   void reset(const Pose& pose) {
-    body.place(pose);
+    if (body) body->place(pose);
+    else kinematic.place(pose);
     state = RobotState{};
-    state.pose = body.pose();
+    state.pose = body ? body->pose() : kinematic.pose();
     floor.reset({state.pose.x_m, state.pose.y_m}, state.floor);
+  }
+
+  void step(double left_command, double right_command, Rng* rng) {
+    if (body) step_wheels(left_command, right_command, rng);
+    else step_kinematic(left_command, right_command);
   }
 
   // Motors, drive and body substep by substep; the floor counts energy at every substep
   // and observes the rest at the end of the step.
-  void step(double left_command, double right_command, Rng* rng) {
+  void step_wheels(double left_command, double right_command, Rng* rng) {
     const double target_l = motor.noisy(motor.target(left_command), rng);
     const double target_r = motor.noisy(motor.target(right_command), rng);
-    const Vec2 start = body.position();
-    const Vec2 start_heading = body.heading();
+    const Vec2 start = body->position();
+    const Vec2 start_heading = body->heading();
     double vl = state.wheel_speed_mps[0];
     double vr = state.wheel_speed_mps[1];
     bool collided = false;
     for (int i = 0; i < robot.physics_substeps; ++i) {
       vl = motor.step(vl, target_l);
       vr = motor.step(vr, target_r);
-      body.move(drive.velocity(vl, vr, body.heading()));
-      if (body.touching()) collided = true;
-      floor.substep(body.position());
+      body->move(drive.velocity(vl, vr, body->heading()));
+      if (body->touching()) collided = true;
+      floor.substep(body->position());
     }
     state.wheel_speed_mps[0] = vl;
     state.wheel_speed_mps[1] = vr;
-    state.pose = body.pose();
+    finish_step(body->pose(), start, start_heading, collided);
+  }
+
+  // One move of the navigator; the floor counts energy as many times as a wheeled robot's
+  // substeps would, at the position the step ends at.
+  void step_kinematic(double turn_command, double speed_command) {
+    const Pose start = kinematic.pose();
+    const bool collided = !kinematic.move(turn_command, speed_command, geometry);
+    state.wheel_speed_mps[0] = kinematic.turn_radps();
+    state.wheel_speed_mps[1] = kinematic.speed_mps();
+    for (int i = 0; i < robot.physics_substeps; ++i) floor.substep({kinematic.pose().x_m, kinematic.pose().y_m});
+    finish_step(kinematic.pose(), {start.x_m, start.y_m}, {std::cos(start.heading_rad), std::sin(start.heading_rad)},
+                collided);
+  }
+
+  void finish_step(const Pose& pose, Vec2 start, Vec2 start_heading, bool collided) {
+    state.pose = pose;
     const double dx_m = state.pose.x_m - start.x;
     const double dy_m = state.pose.y_m - start.y;
     state.displacement_m = std::hypot(dx_m, dy_m);
@@ -128,7 +154,7 @@ void World::step(double left_command, double right_command, Rng& rng) {
   impl_->step(left_command, right_command, &rng);
 }
 void World::step(double left_command, double right_command) {
-  if (impl_->motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
+  if (impl_->body && impl_->motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
   impl_->step(left_command, right_command, nullptr);
 }
 void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng) const {

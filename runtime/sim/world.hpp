@@ -24,7 +24,10 @@ inline constexpr int kIrSensors = kMaxIrSensors;   // `ir` slots; a robot fills 
 // Physical state after the last control step; what observables are computed from.
 struct RobotState {
   Pose pose;
-  double wheel_speed_mps[2] = {0.0, 0.0};  // measured (after inertia), left and right
+  // The drive's two actuators after the step: the wheels' measured speeds (after inertia),
+  // left and right, in m/s; for the acceleration drive its turn rate (rad/s) and forward
+  // speed (m/s).
+  double wheel_speed_mps[2] = {0.0, 0.0};
   double displacement_m = 0.0;             // |position change| over the last control step
   double forward_displacement_m = 0.0;     // position change projected on the heading
   bool collided = false;                   // contact with a wall or obstacle during the step

@@ -197,5 +197,32 @@ TEST(IrNames, TheLibrarysEpuckIsAsCited) {
   EXPECT_DOUBLE_EQ(puck.ir.range_m, 0.12);
 }
 
+// The standard library's navigator: the acceleration drive with the authors' numbers in their
+// units scaled (docs/robot-model.md), their sensors, no IR; a network reading `ir` is refused.
+TEST(Bodies, TheLibrarysNavigatorIsAsCited) {
+  const std::string maze =
+      "import \"lib/navigator.esc\"\n"
+      "arena m { size 1m x 60cm  wall from (30cm, 0cm) to (30cm, 40cm)  goal at (90cm, 50cm)  start at (10cm, 10cm) }\n"
+      "fitness near { step: 0  epoch: -goal_distance }\n"
+      "controller N = neat(range[0..5], radar[0..3] -> wheels)\n"
+      "experiment e { arena m  robot navigator  fitness near  evolve neat(population 20)  compare N }\n";
+  const eval::ExperimentSpec x = compiled(maze);
+  const sim::RobotParams& n = x.robot;
+  EXPECT_EQ(n.drive, sim::DriveKind::Acceleration);
+  constexpr double kUnit = 0.0034375, kStep = 0.1;
+  EXPECT_DOUBLE_EQ(n.body_radius_m, 8 * kUnit);
+  EXPECT_DOUBLE_EQ(n.motor.max_speed_mps, 3 * kUnit / kStep);
+  EXPECT_DOUBLE_EQ(n.motor.max_accel_mps2 * kStep * kStep, 0.5 * kUnit);
+  EXPECT_DOUBLE_EQ(n.turn.max_rate_radps * kStep, 3 * kDeg);
+  EXPECT_NEAR(n.turn.max_accel_radps2 * kStep * kStep, 0.5 * kDeg, 1e-15);
+  EXPECT_TRUE(n.ir.mounts.empty());
+  EXPECT_EQ(n.rangefinders.angles_rad.size(), 6u);
+  EXPECT_EQ(n.radars, 4);
+  EXPECT_EQ(x.resolved_settings.at("robot.drive"), "acceleration");
+  const std::string out = refused(maze + "controller K = mlp(ir[0..1] -> wheels)\n"
+                                         "experiment k { arena m  robot navigator  fitness near  compare K }\n");
+  EXPECT_NE(out.find("`ir[0]` reads IR sensor 0, but the robot of experiment `k` has none"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace esc::compiler

@@ -174,6 +174,12 @@ const std::vector<Row>& rows() {
        "controller c = mlp(ir[0..7] -> wheels)\nexperiment e { arena a\n robot k { max_speed 30 cm/s }\n fitness f\n"
        " compare c }\n",
        "6:22", "at full speed the rim of the robot moves 15.566mm per physics substep, more than the 10mm"},
+      {Rule::TurnRate, "robot r { drive acceleration  max_turn_rate 0deg/s }", "1:45",
+       "`max_turn_rate` must be greater than 0, found 0"},
+      {Rule::TurnAccel, "robot r { drive acceleration  max_turn_accel -1deg/s^2 }", "1:46",
+       "`max_turn_accel` must be greater than 0, found -1deg/s^2"},
+      {Rule::NoiseWithoutWheels, "robot r { drive acceleration  motor_noise 0.1 }", "1:43",
+       "`motor_noise` is an error of each wheel's speed, but this robot has the acceleration drive"},
   };
   return table;
 }
