@@ -86,6 +86,10 @@ inline double circle_hit(double cx, double cy, double r2, double ox, double oy, 
 // One slab of the box test, along one box axis: narrows [lo, hi] to the ray parameters
 // within `half` of the centre (origin p, direction u along that axis); false when the ray
 // runs parallel to the slab outside it.
+// Rounding room of the ray cull: a ray is skipped only when its nearest hit so far is nearer
+// than the bounding circle by more than this (far above rounding, far below any geometry).
+constexpr double kCullMargin_m = 1e-9;
+
 bool clip_slab(double p, double u, double half, double& lo, double& hi) noexcept {
   if (u == 0.0) return std::abs(p) <= half;
   const double a = (-half - p) / u;
@@ -101,8 +105,10 @@ double StaticGeometry2D::box_hit(const Box& bx, double ox, double oy, double dx,
   // Origin and direction in the box frame, then the slab test.
   const double wx = ox - bx.cx;
   const double wy = oy - bx.cy;
-  const double px = bx.c * wx + bx.s * wy;
-  const double py = -bx.s * wx + bx.c * wy;
+  return box_frame_hit(bx, bx.c * wx + bx.s * wy, -bx.s * wx + bx.c * wy, dx, dy);
+}
+
+double StaticGeometry2D::box_frame_hit(const Box& bx, double px, double py, double dx, double dy) noexcept {
   const double ux = bx.c * dx + bx.s * dy;
   const double uy = -bx.s * dx + bx.c * dy;
   double lo = -kNoHit;
@@ -168,7 +174,16 @@ void StaticGeometry2D::cast_fan(const Nearby& near, Vec2 origin, double range_m,
   }
   for (const std::uint32_t k : near.boxes) {
     if (!fan_meets_box(k, origin, range_m)) continue;
-    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], box_hit(boxes_[k], origin.x, origin.y, dx[i], dy[i]));
+    // The fan's origin in the box's frame, once; a ray whose nearest hit so far is no farther
+    // than the box's bounding circle cannot meet the box nearer (its min stays as it is).
+    const Box& bx = boxes_[k];
+    const double wx = origin.x - bx.cx;
+    const double wy = origin.y - bx.cy;
+    const double px = bx.c * wx + bx.s * wy;
+    const double py = -bx.s * wx + bx.c * wy;
+    const double nearest = std::sqrt(wx * wx + wy * wy) - bx.bound - kCullMargin_m;
+    for (int i = 0; i < n; ++i)
+      if (t[i] > nearest) t[i] = std::min(t[i], box_frame_hit(bx, px, py, dx[i], dy[i]));
   }
 }
 

@@ -71,6 +71,8 @@ class StaticGeometry2D {
   };
   // Where a ray first meets the box (0 from inside it), kNoHit if it does not.
   [[nodiscard]] static double box_hit(const Box& b, double ox, double oy, double dx, double dy) noexcept;
+  // The same from the ray's origin (px, py) in the box's frame.
+  [[nodiscard]] static double box_frame_hit(const Box& b, double px, double py, double dx, double dy) noexcept;
   [[nodiscard]] bool near_walls(Vec2 centre, double reach_m) const noexcept;
   // Whether the offset (ex, ey) is no longer than reach_m.
   [[nodiscard]] static bool within(double ex, double ey, double reach_m) noexcept {
