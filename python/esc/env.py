@@ -52,8 +52,9 @@ class Env:
     which need the whole epoch, are not in the rewards: esc.evaluate gives the whole fitness).
 
     Without `controller`, an action is the two wheel commands (left, right) in [-1, 1] and an
-    observation the robot's senses: ir[0..7], light[0..7], the rangefinders range[i] and goal
-    radars radar[i] the robot declares (the maze navigator's), and energy (observation_names).
+    observation the robot's senses: its IR sensors as its scripts name them (ir[0..7], the
+    e-puck's prox[0..7]), as many light[i], the rangefinders range[i] and goal radars radar[i]
+    the robot declares (the maze navigator's), and energy (observation_names).
     With a network controller, an observation is its network's inputs and an action its
     network's activated outputs, which its head turns into wheel commands as in a run: two
     commands (classical), one score per action then the actions' parameters (symbolic: the

@@ -18,15 +18,15 @@ namespace {
 
 using Action = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// What the robot senses, the observation without a controller: its IR and light sensors,
-// the rangefinders and goal radars it declares, and the accumulator.
+// What the robot senses, the observation without a controller: the IR and light sensors,
+// rangefinders and goal radars it declares, and the accumulator.
 std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
   std::vector<expr::Slot> slots;
   const auto add = [&](expr::Slot first, std::size_t count) {
     for (expr::Slot i = 0; i < count; ++i) slots.push_back(first + i);
   };
-  add(expr::slot::ir, expr::kIrCount);
-  add(expr::slot::light, expr::kLightCount);
+  add(expr::slot::ir, robot.ir.mounts.size());
+  add(expr::slot::light, robot.ir.mounts.size());
   add(expr::slot::range, robot.rangefinders.angles_rad.size());
   add(expr::slot::radar, static_cast<std::size_t>(robot.radars));
   slots.push_back(expr::slot::energy);
@@ -155,7 +155,7 @@ py::dict Env::state() const {
 
 std::vector<std::string> Env::observation_names() const {
   std::vector<std::string> names;
-  for (const expr::Slot s : observed_) names.push_back(slot_name(s));
+  for (const expr::Slot s : observed_) names.push_back(slot_name(s, spec_->robot));
   return names;
 }
 

@@ -10,8 +10,8 @@
 namespace esc::python {
 
 // "ir[3]", "energy", "in[0]" (`in(zone)` of the arena's first zone), "reached[1]",
-// "acting", "param[0]".
-[[nodiscard]] std::string slot_name(expr::Slot slot);
+// "acting", "param[0]"; the IR sensors by the name `robot` reads them by ("prox[3]").
+[[nodiscard]] std::string slot_name(expr::Slot slot, const sim::RobotParams& robot);
 
 struct SlotRange {
   double low = 0.0;

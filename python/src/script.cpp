@@ -81,7 +81,7 @@ void apply_settings(CompiledScript& s, const Settings& settings) {
         throw Error(error);
 }
 
-py::dict controller_info(const control::ControllerSpec& c) {
+py::dict controller_info(const control::ControllerSpec& c, const sim::RobotParams& robot) {
   py::dict d;
   d["name"] = c.name;
   d["architecture"] = c.architecture();
@@ -89,7 +89,7 @@ py::dict controller_info(const control::ControllerSpec& c) {
   d["genome_size"] = c.genome_size();
   std::vector<std::string> inputs;
   if (!c.is_tree())
-    for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot));
+    for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot, robot));
   d["inputs"] = inputs;
   d["choices"] = c.choice_names();
   d["graph"] = c.is_graph();
@@ -98,7 +98,8 @@ py::dict controller_info(const control::ControllerSpec& c) {
 
 py::list controllers(const CompiledScript& s, const std::string& experiment) {
   py::list out;
-  for (const control::ControllerSpec& c : find_experiment(s, experiment).controllers) out.append(controller_info(c));
+  const eval::ExperimentSpec& x = find_experiment(s, experiment);
+  for (const control::ControllerSpec& c : x.controllers) out.append(controller_info(c, x.robot));
   return out;
 }
 
@@ -152,7 +153,8 @@ void bind_script(py::module_& m) {
       .def(
           "controller",
           [](const CompiledScript& s, const std::string& experiment, const std::string& name) {
-            return controller_info(find_controller(find_experiment(s, experiment), name));
+            const eval::ExperimentSpec& x = find_experiment(s, experiment);
+            return controller_info(find_controller(x, name), x.robot);
           },
           py::arg("experiment"), py::arg("name"),
           "Controller `name` of `experiment`, as controllers() describes it; ValueError naming those it compares.")

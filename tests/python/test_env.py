@@ -138,3 +138,24 @@ def test_wrong_uses_are_errors(homing_script, homing_run):
     trees = esc.compile(TREES["script"], TREES["settings"])
     with pytest.raises(ValueError, match="tree controller"):
         esc.Env(trees, TREES["experiment"], "GW")
+
+
+def test_the_observation_is_the_robots_own_senses_by_its_names():
+    """Without a controller an observation is what the body declares, named as its scripts
+    read it: the e-puck's eight `prox` sensors, their light, the accumulator; the navigator's
+    rangefinders and radars, no IR."""
+    from conftest import EXPERIMENTS
+    puck = esc.Env(EXPERIMENTS / "bodies" / "epuck_obstacle_avoidance.esc", seed=1)
+    names = puck.observation_names
+    assert names[:8] == [f"prox[{i}]" for i in range(8)]
+    assert names[8:] == [f"light[{i}]" for i in range(8)] + ["energy"]
+    observation, _ = puck.reset()
+    assert observation.shape == (17,)
+    script = esc.compile(EXPERIMENTS / "bodies" / "epuck_obstacle_avoidance.esc")
+    assert script.controllers["epuck_obstacle_avoidance"]["CC_8_20_2"].inputs == tuple(f"prox[{i}]" for i in range(8))
+    nav = esc.Env('import "lib/navigator.esc"\n'
+                  "arena m { size 1m x 60cm  goal at (90cm, 50cm)  start at (10cm, 10cm) }\n"
+                  "fitness near { step: 0  epoch: -goal_distance }\n"
+                  "controller N = mlp(range[0..5], radar[0..3] -> wheels)\n"
+                  "experiment e { arena m  robot navigator  fitness near  compare N }\n", seed=1)
+    assert nav.observation_names == [f"range[{i}]" for i in range(6)] + [f"radar[{i}]" for i in range(4)] + ["energy"]
