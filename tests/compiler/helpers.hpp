@@ -19,6 +19,21 @@ inline CompileOptions options() {
 
 inline std::string rendered(const CompileResult& r) { return render_all(r.diagnostics, r.sources); }
 
+// The first experiment of script text `text` compiled as file `file` (a test fails if it
+// does not compile).
+inline eval::ExperimentSpec first_experiment(const std::string& text, const std::string& file) {
+  const auto r = compile_source(text, file, options());
+  EXPECT_TRUE(r.ok()) << rendered(r);
+  return r.ok() ? r.experiments.at(0) : eval::ExperimentSpec{};
+}
+
+// The rendered diagnostics of script text that must not compile.
+inline std::string refusal(const std::string& text, const std::string& file) {
+  const auto r = compile_source(text, file, options());
+  EXPECT_FALSE(r.ok());
+  return rendered(r);
+}
+
 // The paper's obstacle-avoidance experiment, compiled (a test fails if it does not compile).
 inline eval::ExperimentSpec paper() {
   const auto r = compile_file(source_dir() / "experiments/paper/obstacle_avoidance.esc", options());

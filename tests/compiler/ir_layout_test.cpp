@@ -33,17 +33,8 @@ const std::string kThree =
     "  ir_sensors [(45deg, 45deg), (0deg, 0deg, 1.75cm), (-45deg, -45deg)]\n"
     "  ir_response [(0mm, 1), (1cm, 0.6), (3cm, 0.1)]";
 
-eval::ExperimentSpec compiled(const std::string& text) {
-  const auto r = compile_source(text, "ir.esc", options());
-  EXPECT_TRUE(r.ok()) << rendered(r);
-  return r.ok() ? r.experiments.at(0) : eval::ExperimentSpec{};
-}
-
-std::string refused(const std::string& text) {
-  const auto r = compile_source(text, "ir.esc", options());
-  EXPECT_FALSE(r.ok());
-  return rendered(r);
-}
+eval::ExperimentSpec compiled(const std::string& text) { return test::first_experiment(text, "ir.esc"); }
+std::string refused(const std::string& text) { return test::refusal(text, "ir.esc"); }
 
 TEST(IrLayout, MountsAndResponseInSi) {
   const eval::ExperimentSpec x = compiled(script(kThree));

@@ -38,18 +38,8 @@ controller N = mlp(range[0..5], radar[0..3] -> hidden 5 -> wheels)
 experiment e { arena maze  robot navigator  fitness near  compare N }
 )";
 
-eval::ExperimentSpec compiled(const std::string& script) {
-  const auto r = compile_source(script, "maze.esc", options());
-  EXPECT_TRUE(r.ok()) << rendered(r);
-  return r.ok() ? r.experiments.at(0) : eval::ExperimentSpec{};
-}
-
-// The rendered diagnostics of a script that must not compile.
-std::string refused(const std::string& script) {
-  const auto r = compile_source(script, "maze.esc", options());
-  EXPECT_FALSE(r.ok());
-  return rendered(r);
-}
+eval::ExperimentSpec compiled(const std::string& script) { return test::first_experiment(script, "maze.esc"); }
+std::string refused(const std::string& script) { return test::refusal(script, "maze.esc"); }
 
 TEST(Navigation, WallsGoalAndSensorsInSi) {
   const eval::ExperimentSpec x = compiled(kMaze);
