@@ -145,7 +145,7 @@ def test_the_observation_is_the_robots_own_senses_by_its_names():
     read it: the e-puck's eight `prox` sensors, their light, the accumulator; the navigator's
     rangefinders and radars, no IR."""
     from conftest import EXPERIMENTS
-    puck = esc.Env(EXPERIMENTS / "bodies" / "epuck_obstacle_avoidance.esc", seed=1)
+    puck = esc.Env(EXPERIMENTS / "bodies" / "epuck_obstacle_avoidance.esc", "epuck_obstacle_avoidance", seed=1)
     names = puck.observation_names
     assert names[:8] == [f"prox[{i}]" for i in range(8)]
     assert names[8:] == [f"light[{i}]" for i in range(8)] + ["energy"]
