@@ -6,20 +6,28 @@
 // time is that of the end of the step, in seconds from the start of the epoch.
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "runtime/eval/evaluator.hpp"
 
 namespace esc::report {
 
-// The header line, without its newline: the robot's `ranges` rangefinders (range0, ...) and
-// `radars` goal radars (radar0, ...) follow the light sensors; a robot without either has no
-// such columns.
-[[nodiscard]] std::string trajectory_csv_header(std::size_t ranges, std::size_t radars);
+// The robot's IR sensors as its scripts read them: their name and count (the Khepera's
+// eight `ir`, the e-puck's eight `prox`, none on the navigator); as many light sensors.
+struct IrColumns {
+  std::string_view name = "ir";
+  std::size_t count = sim::kIrSensors;
+};
+
+// The header line, without its newline: the IR sensors (ir0, ...; prox0, ... on the e-puck)
+// and as many light sensors, then the robot's `ranges` rangefinders (range0, ...) and
+// `radars` goal radars (radar0, ...); a robot without some has no such columns.
+[[nodiscard]] std::string trajectory_csv_header(const IrColumns& ir, std::size_t ranges, std::size_t radars);
 
 // `choices`: the controller's action or behavior names (empty for a classical head, whose
 // `behavior` column stays empty).
 [[nodiscard]] std::string trajectory_csv(std::span<const eval::TraceStep> steps, const std::vector<std::string>& choices,
-                                         double control_step_s);
+                                         double control_step_s, const IrColumns& ir = {});
 
 }  // namespace esc::report

@@ -107,7 +107,7 @@ TEST(TrajectoryCsv, OneRowPerStepCountedFromOne) {
   const auto steps = two_epochs();
   const std::string csv = trajectory_csv(steps, {"forward", "left", "right"}, 0.1);
   EXPECT_EQ(count(csv, "\n"), 1U + steps.size());
-  const std::size_t columns = count(trajectory_csv_header(0, 0), ",") + 1;
+  const std::size_t columns = count(trajectory_csv_header({}, 0, 0), ",") + 1;
   EXPECT_EQ(columns, 30U);
   const std::string second = csv.substr(csv.find('\n') + 1);
   EXPECT_EQ(second.rfind("1,1,0.1,0.10000000000000001,", 0), 0U) << second.substr(0, 60);
@@ -125,11 +125,24 @@ TEST(TrajectoryCsv, RangefindersAndRadarsFollowTheLightsWhereTheRobotHasThem) {
   }
   const std::string csv = trajectory_csv(steps, {}, 0.1);
   const std::string header = csv.substr(0, csv.find('\n'));
-  EXPECT_EQ(header, trajectory_csv_header(2, 4));
+  EXPECT_EQ(header, trajectory_csv_header({}, 2, 4));
   EXPECT_EQ(count(header, ",") + 1, 30U + 6U);
   EXPECT_NE(header.find(",light7,range0,range1,radar0,radar1,radar2,radar3,energy,"), std::string::npos) << header;
   const std::string first = csv.substr(header.size() + 1, csv.find('\n', header.size() + 1) - header.size() - 1);
   EXPECT_NE(first.find(",0.25,1,0,0,1,0,1,,"), std::string::npos) << "ranges, radars, then energy 1 " << first;
+}
+
+TEST(TrajectoryCsv, TheIrColumnsAreTheRobotsSensorsByTheirName) {
+  const auto steps = two_epochs();
+  const std::string puck = trajectory_csv(steps, {}, 0.1, {"prox", 8});
+  EXPECT_EQ(puck.substr(0, puck.find('\n')), trajectory_csv_header({"prox", 8}, 0, 0));
+  EXPECT_NE(puck.find(",right_speed_mps,prox0,prox1,"), std::string::npos);
+  EXPECT_EQ(puck.find(",ir0,"), std::string::npos);
+  const std::string none = trajectory_csv(steps, {}, 0.1, {"ir", 0});
+  const std::string header = none.substr(0, none.find('\n'));
+  EXPECT_NE(header.find(",right_speed_mps,energy,"), std::string::npos) << header;
+  const std::string first = none.substr(header.size() + 1, none.find('\n', header.size() + 1) - header.size() - 1);
+  EXPECT_EQ(count(first, ","), count(header, ","));
 }
 
 }  // namespace
