@@ -1,0 +1,43 @@
+// Bodies from the command line: the library's navigator (acceleration drive, kinematic)
+// evolves NEAT networks that improve, whatever the threads; its replay CSV has the sensors it
+// has (rangefinders and radars, no IR columns) and reproduces the stored fitness.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/esc_process.hpp"
+#include "tests/cli/results_support.hpp"
+
+namespace {
+
+using namespace cli_test;
+
+std::string tiny_navigator() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_navigator.esc"; }
+
+TEST(Bodies, TheNavigatorEvolvesAndImprovesWhateverTheThreads) {
+  const fs::path one = scratch("navigator-threads-1");
+  const fs::path two = scratch("navigator-threads-2");
+  const Outcome a = esc("run " + tiny_navigator() + " --threads 1 --out " + one.string());
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = esc("run " + tiny_navigator() + " --threads 2 --out " + two.string());
+  ASSERT_EQ(b.status, 0) << b.output;
+  expect_same_results(one, two, {"N"}, 2);
+  const auto summary = read_json(one / "summary.json");
+  for (int run = 0; run < 2; ++run) {
+    const auto& r = summary["controllers"]["N"]["runs"][run];
+    EXPECT_GT(r["best_fitness"].get<double>(), r["best"][0].get<double>()) << "run " << run + 1;
+  }
+  const fs::path replay = scratch("navigator-replay");
+  const Outcome shown = esc("replay " + one.string() + " --out " + replay.string());   // the best run's
+  ASSERT_EQ(shown.status, 0) << shown.output;
+  EXPECT_NE(shown.output.find("identical to the stored replay"), std::string::npos) << shown.output;
+  std::string csv;
+  for (const auto& f : fs::directory_iterator(replay))
+    if (f.path().extension() == ".csv") csv = slurp(f.path());
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_NE(header.find(",right_speed_mps,range0,range1,range2,range3,range4,range5,radar0,"), std::string::npos)
+      << header;
+  EXPECT_EQ(header.find(",ir0"), std::string::npos) << header;
+}
+
+}  // namespace
