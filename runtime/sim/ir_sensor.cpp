@@ -17,6 +17,11 @@ double enki_ir_curve(double distance_m, double x0_cm, double c_cm2) noexcept {
   return kEnkiIrM * (c_cm2 - x0_cm * x0_cm) / (x * x - 2.0 * x0_cm * x + c_cm2);
 }
 
+Vec2 mount_point(const IrMount& m, double body_radius_m) noexcept {
+  const double radius = m.radius_m.value_or(body_radius_m);
+  return {radius * std::cos(m.bearing_rad), radius * std::sin(m.bearing_rad)};
+}
+
 IrResponse::IrResponse(const IrParams& ir)
     : range_m_(ir.range_m),
       x0_cm_(ir.curve_x0_cm),
@@ -55,13 +60,13 @@ IrModel::IrModel(const RobotParams& robot, const StaticGeometry2D& geometry)
   for (auto* v : {&mount_x_, &mount_y_, &dir_x_, &dir_y_}) v->resize(n);
   for (int s = 0; s < sensors_; ++s) {
     const IrMount& m = robot.ir.mounts[static_cast<std::size_t>(s)];
-    const double radius = m.radius_m.value_or(body_radius_m_);
+    const Vec2 mount = mount_point(m, body_radius_m_);
     for (int r = 0; r < rays_; ++r) {
       const double offset =
           rays_ == 1 ? 0.0 : robot.ir.aperture_rad * (static_cast<double>(r) / (rays_ - 1) - 0.5);
       const auto i = static_cast<std::size_t>(s * rays_ + r);
-      mount_x_[i] = radius * std::cos(m.bearing_rad);
-      mount_y_[i] = radius * std::sin(m.bearing_rad);
+      mount_x_[i] = mount.x;
+      mount_y_[i] = mount.y;
       dir_x_[i] = std::cos(m.facing_rad + offset);
       dir_y_[i] = std::sin(m.facing_rad + offset);
     }

@@ -17,6 +17,10 @@ inline constexpr double kEnkiIrM = 1200.0;
 
 [[nodiscard]] double enki_ir_curve(double distance_m, double x0_cm, double c_cm2) noexcept;
 
+// Where sensor `m` sits in the body frame (x along the heading): on the rim of a body of
+// `body_radius_m` unless the mount gives its own distance. The light sensors sit there too.
+[[nodiscard]] Vec2 mount_point(const IrMount& m, double body_radius_m) noexcept;
+
 // The sensors' normalised response to an obstacle at a distance, clamped to [0, 1]: from a
 // measured table (IrParams), or Enki's curve rescaled to 0 at the range and 1 at its peak,
 // x0 (Enki holds F = m below x0), or at 0 when x0 is negative (the Khepera's).

@@ -14,9 +14,9 @@ LightModel::LightModel(const RobotParams& robot)
       sensors_(robot.ir.mounts.size()) {
   for (std::size_t s = 0; s < sensors_; ++s) {
     const IrMount& m = robot.ir.mounts[s];
-    const double radius = m.radius_m.value_or(body_radius_m_);
-    mount_x_[s] = radius * std::cos(m.bearing_rad);
-    mount_y_[s] = radius * std::sin(m.bearing_rad);
+    const Vec2 mount = mount_point(m, body_radius_m_);
+    mount_x_[s] = mount.x;
+    mount_y_[s] = mount.y;
     face_x_[s] = std::cos(m.facing_rad);
     face_y_[s] = std::sin(m.facing_rad);
   }
