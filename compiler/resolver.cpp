@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "compiler/names.hpp"
+#include "compiler/robot_settings.hpp"
 
 namespace esc::compiler {
 
@@ -94,7 +95,7 @@ const IrNames& Resolver::ir_names() {
   IrNames& names = ir_names_.emplace(IrNames{"ir"});
   const auto add = [&](const std::vector<ast::Setting>& settings) {
     for (const ast::Setting& s : settings)
-      if (s.key.text == "ir_name" && s.value.kind == ast::Value::Kind::Word) names.insert(s.value.text);
+      if (s.key.text == kIrNameSetting && s.value.kind == ast::Value::Kind::Word) names.insert(s.value.text);
   };
   for (const ast::Module* m : modules_) {
     for (const ast::RobotDecl& r : m->robots) add(r.settings);

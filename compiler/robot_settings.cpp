@@ -2,7 +2,6 @@
 
 #include <array>
 #include <limits>
-#include <utility>
 #include <string>
 #include <utility>
 
@@ -29,6 +28,14 @@ double in_enki_units(double si, double scale) { return std::stod(fmt::format("{:
 
 std::string with_unit(double v, Dim d) { return fmt::format("{} {}", number_text(v), si_unit(d)); }
 
+// A list setting's value as resolved settings show it: `[A, B, ...]`, each item's text.
+template <class Items, class Text>
+std::string bracketed(const Items& items, Text text) {
+  std::vector<std::string> shown;
+  for (const auto& item : items) shown.push_back(text(item));
+  return fmt::format("[{}]", fmt::join(shown, ", "));
+}
+
 bool read_rangefinders(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
   auto angles = read_list(v, name, Dim::Angle, "[90deg, 0deg, -90deg]", sink);
   if (angles) p.rangefinders.angles_rad = std::move(*angles);
@@ -36,9 +43,7 @@ bool read_rangefinders(const ast::Value& v, std::string_view name, sim::RobotPar
 }
 
 std::string rangefinders_text(const sim::RobotParams& p) {
-  std::vector<std::string> items;
-  for (const double a : p.rangefinders.angles_rad) items.push_back(with_unit(a, Dim::Angle));
-  return fmt::format("[{}]", fmt::join(items, ", "));
+  return bracketed(p.rangefinders.angles_rad, [](double a) { return with_unit(a, Dim::Angle); });
 }
 
 constexpr Dim kMountDims[] = {Dim::Angle, Dim::Angle, Dim::Length};
@@ -53,11 +58,10 @@ bool read_ir_sensors(const ast::Value& v, std::string_view name, sim::RobotParam
 }
 
 std::string ir_sensors_text(const sim::RobotParams& p) {
-  std::vector<std::string> items;
-  for (const sim::IrMount& m : p.ir.mounts)
-    items.push_back(fmt::format("({}, {}{})", with_unit(m.bearing_rad, Dim::Angle), with_unit(m.facing_rad, Dim::Angle),
-                                m.radius_m ? ", " + with_unit(*m.radius_m, Dim::Length) : ""));
-  return fmt::format("[{}]", fmt::join(items, ", "));
+  return bracketed(p.ir.mounts, [](const sim::IrMount& m) {
+    return fmt::format("({}, {}{})", with_unit(m.bearing_rad, Dim::Angle), with_unit(m.facing_rad, Dim::Angle),
+                       m.radius_m ? ", " + with_unit(*m.radius_m, Dim::Length) : "");
+  });
 }
 
 constexpr std::array<std::pair<std::string_view, sim::DriveKind>, 2> kDrives{
@@ -104,10 +108,9 @@ bool read_ir_response(const ast::Value& v, std::string_view name, sim::RobotPara
 }
 
 std::string ir_response_text(const sim::RobotParams& p) {
-  std::vector<std::string> items;
-  for (const sim::IrResponsePoint& r : p.ir.response)
-    items.push_back(fmt::format("({}, {})", with_unit(r.distance_m, Dim::Length), number_text(r.reading)));
-  return fmt::format("[{}]", fmt::join(items, ", "));
+  return bracketed(p.ir.response, [](const sim::IrResponsePoint& r) {
+    return fmt::format("({}, {})", with_unit(r.distance_m, Dim::Length), number_text(r.reading));
+  });
 }
 
 }  // namespace
@@ -173,7 +176,7 @@ const std::vector<RobotSetting>& robot_settings() {
        "the IR sensors, in the order `ir[i]` reads them: (mount bearing, facing[, distance from the centre]), "
        "angles from the heading",
        nullptr, nullptr, read_ir_sensors, ir_sensors_text},
-      {"ir_name", K::Word, Dim::None, "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)",
+      {kIrNameSetting, K::Word, Dim::None, "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)",
        nullptr, nullptr, read_ir_name, [](const sim::RobotParams& p) { return p.ir.name; }, true},
       {"ir_curve_x0", K::Quantity, Dim::Length, "x0 of Enki's IR curve m (c - x0^2) / (x^2 - 2 x0 x + c)",
        [](const sim::RobotParams& p) { return p.ir.curve_x0_cm / kCmPerM; },

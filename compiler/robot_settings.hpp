@@ -35,6 +35,10 @@ struct RobotSetting {
   [[nodiscard]] bool settable_later() const noexcept { return !script_only; }
 };
 
+// The setting that names a robot's IR sensors in scripts, which the resolver reads from the
+// syntax tree before any robot is lowered (Resolver::ir_names).
+inline constexpr std::string_view kIrNameSetting = "ir_name";
+
 [[nodiscard]] const std::vector<RobotSetting>& robot_settings();
 [[nodiscard]] const RobotSetting* find_robot_setting(std::string_view name);
 [[nodiscard]] std::vector<std::string> robot_setting_names();

@@ -162,7 +162,7 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
       sink.error(key.where, fmt::format("`{}{}` names the robot's sensors in scripts, which are resolved when the "
                                         "script compiles: it is set in a robot block, not with --set",
                                         scope, k))
-          .help.push_back(fmt::format("declare `robot r = {} {{ {} ... }}` and use it", "khepera", *name));
+          .help.push_back(fmt::format("declare `robot r = khepera {{ {} ... }}` and use it", *name));
       return false;
     }
     return apply_robot_value(*s, value, spec.robot, sink);

@@ -88,13 +88,13 @@ std::optional<ast::Value> value_from_text(std::string_view text_in, const Source
     return v;
   }
   if (text.size() >= 2 && text.front() == '[' && text.back() == ']') {
-    std::string_view inner = text.substr(1, text.size() - 2);
-    if (!trimmed(inner).empty() && trimmed(inner).front() == '(') {
-      if (!tuples_from_text(trimmed(inner), where, v.tuples)) return std::nullopt;
+    const std::string_view inner = trimmed(text.substr(1, text.size() - 2));
+    if (!inner.empty() && inner.front() == '(') {
+      if (!tuples_from_text(inner, where, v.tuples)) return std::nullopt;
       v.kind = ast::Value::Kind::Tuples;
       return v;
     }
-    if (!trimmed(inner).empty() && !quantities_from_text(inner, where, v.list)) return std::nullopt;
+    if (!inner.empty() && !quantities_from_text(inner, where, v.list)) return std::nullopt;
     if (v.list.size() != 2) {
       v.kind = ast::Value::Kind::List;
       return v;
