@@ -51,8 +51,9 @@ const control::ControllerSpec* paper_sc(const eval::ExperimentSpec& e) {
 // the accumulator, a recharge zone drawn at random every epoch); and Lehman & Stanley's
 // medium maze.
 struct TimedWorkload {
-  std::string script;        // under experiments/
-  std::string controller;    // empty: the 8-14-6 symbolic controller
+  std::string script;           // under experiments/
+  std::string experiment_name;  // empty: the first the script declares
+  std::string controller;       // empty: the 8-14-6 symbolic controller
   std::string what;          // how the line is labelled
   compiler::CompileResult compiled;
   const eval::ExperimentSpec* experiment = nullptr;
@@ -64,6 +65,8 @@ bool load_workload(TimedWorkload& w) {
   w.compiled = load_script(script);
   if (!w.compiled.ok() || w.compiled.experiments.empty()) return false;
   w.experiment = &w.compiled.experiments.front();
+  for (const auto& e : w.compiled.experiments)
+    if (e.name == w.experiment_name) w.experiment = &e;
   for (const auto& c : w.experiment->controllers)
     if (c.name == w.controller) w.controller_spec = &c;
   if (w.controller.empty()) w.controller_spec = paper_sc(*w.experiment);
@@ -75,10 +78,12 @@ bool load_workload(TimedWorkload& w) {
 void print_workload(const TimedWorkload& w, const CollectingReporter& reporter, const std::vector<int>& counts) {
   const std::string name = fmt::format("{}/{}", w.experiment->name, w.controller_spec->name);
   const auto one = reporter.values.find("step/" + name);
+  const bool accelerating = w.experiment->robot.drive == sim::DriveKind::Acceleration;
   if (one != reporter.values.end())
-    fmt::print("{} ({} {}, inertia {}): {:.0f} control steps/s per core ({})\n", name,
-               w.controller_spec->architecture(), w.controller_spec->head == control::Head::Symbolic ? "symbolic" : "classical",
-               w.experiment->robot.motor.inertia ? "on" : "off", one->second.at("steps/s"), w.what);
+    fmt::print("{} ({} {}, {}): {:.0f} control steps/s per core ({})\n", name, w.controller_spec->architecture(),
+               w.controller_spec->head == control::Head::Symbolic ? "symbolic" : "classical",
+               accelerating ? "acceleration drive" : w.experiment->robot.motor.inertia ? "inertia on" : "inertia off",
+               one->second.at("steps/s"), w.what);
   const auto base = reporter.values.find(fmt::format("threads/{}/1/real_time", name));
   if (base == reporter.values.end()) return;
   for (int t : counts) {
@@ -92,7 +97,7 @@ void print_workload(const TimedWorkload& w, const CollectingReporter& reporter, 
 }  // namespace
 
 int bench_workloads(const BenchOptions& o) {
-  std::vector<TimedWorkload> workloads(3);
+  std::vector<TimedWorkload> workloads(4);
   workloads[0].script = "paper/obstacle_avoidance.esc";
   workloads[0].what = "IR, physics, network, fitness";
   workloads[1].script = "paper/energy.esc";
@@ -103,6 +108,11 @@ int bench_workloads(const BenchOptions& o) {
   workloads[2].script = "lehman_stanley/mazes.esc";
   workloads[2].controller = "navigator_net";
   workloads[2].what = "6 rangefinders, 4 goal radars, 11 walls, physics, network, fitness, 2 descriptors";
+  // The same maze and network on the authors' own body (issue 44): the kinematic navigator.
+  workloads[3].script = "lehman_stanley/navigator_mazes.esc";
+  workloads[3].experiment_name = "medium_on_navigator";
+  workloads[3].controller = "navigator_net";
+  workloads[3].what = "the navigator: 6 rangefinders, 4 goal radars, 11 walls, kinematic, network, fitness, 2 descriptors";
   for (TimedWorkload& w : workloads)
     if (!load_workload(w)) return kExitBadInput;
   const int max_threads = o.max_threads > 0 ? o.max_threads : static_cast<int>(std::thread::hardware_concurrency());
