@@ -64,6 +64,22 @@ std::string ir_sensors_text(const sim::RobotParams& p) {
   });
 }
 
+constexpr Dim kPointDims[] = {Dim::Length, Dim::Length};
+
+bool read_body_outline(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  const auto rows = read_tuples(v, name, {kPointDims, 0, "[(8cm, 0cm), (0cm, 5.5cm), (-3cm, 0cm), (0cm, -5.5cm)]"}, sink);
+  if (!rows) return false;
+  p.outline.clear();
+  for (const std::vector<double>& r : *rows) p.outline.push_back({r[0], r[1]});
+  return true;
+}
+
+std::string body_outline_text(const sim::RobotParams& p) {
+  return bracketed(p.outline, [](const sim::Vec2& v) {
+    return fmt::format("({}, {})", with_unit(v.x, Dim::Length), with_unit(v.y, Dim::Length));
+  });
+}
+
 constexpr std::array<std::pair<std::string_view, sim::DriveKind>, 2> kDrives{
     {{"differential", sim::DriveKind::Differential}, {"acceleration", sim::DriveKind::Acceleration}}};
 
@@ -139,9 +155,13 @@ const std::vector<RobotSetting>& robot_settings() {
       {"max_accel", K::Quantity, Dim::Accel, "acceleration limit of each wheel",
        [](const sim::RobotParams& p) { return p.motor.max_accel_mps2; },
        [](sim::RobotParams& p, double v) { p.motor.max_accel_mps2 = v; }},
-      {"body_radius", K::Quantity, Dim::Length, "radius of the cylindrical body",
+      {"body_radius", K::Quantity, Dim::Length, "radius of the cylindrical body (with an outline: the circle around it)",
        [](const sim::RobotParams& p) { return p.body_radius_m; },
        [](sim::RobotParams& p, double v) { p.body_radius_m = v; }},
+      {"body_outline", K::List, Dim::Length,
+       "a convex outline instead of the disc: its vertices (x ahead, y to the left of the point the wheels turn "
+       "about), in order round it",
+       nullptr, nullptr, read_body_outline, body_outline_text},
       {"body_height", K::Quantity, Dim::Length, "height of the body",
        [](const sim::RobotParams& p) { return p.body_height_m; },
        [](sim::RobotParams& p, double v) { p.body_height_m = v; }},

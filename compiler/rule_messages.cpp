@@ -204,6 +204,28 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
                           "(no wheels); found {}",
                           number(p.found)),
               {"leave `motor_noise` at 0, or use `drive differential`"}};
+    case Rule::OutlineCountMin:
+      return {fmt::format("an outline needs at least 3 vertices, found {}", shown(p.found, Dimension::Count)), {}};
+    case Rule::OutlineCountMax:
+      return {fmt::format("an outline holds at most {} vertices, found {}", shown(p.limit, Dimension::Count),
+                          shown(p.found, Dimension::Count)),
+              {}};
+    case Rule::OutlineConvex:
+      return {fmt::format("the outline is not convex at vertex {}: it turns the other way there, or not at all",
+                          p.index),
+              {"list a convex outline's vertices in order round the body, either way round"}};
+    case Rule::OutlineAroundCentre:
+      return {fmt::format("the outline does not hold the point the wheels turn about: that point lies {} outside an "
+                          "edge",
+                          shown(-p.found, Dimension::Length)),
+              {"vertices are measured from the point the wheels turn about, x ahead and y to the left"}};
+    case Rule::OutlineWithinRadius:
+      return {fmt::format("outline vertex {} lies {} from the centre, beyond `body_radius` ({})", p.index,
+                          shown(p.found, Dimension::Length), shown(p.limit, Dimension::Length)),
+              {"`body_radius` is the circle around the outline: at least its farthest vertex"}};
+    case Rule::OutlineWithoutWheels:
+      return {"an outline needs the differential drive: the acceleration drive moves a disc",
+              {"leave `body_outline` out, or use `drive differential`"}};
     case Rule::WheelBaseWithinBody:
       return {fmt::format("the wheel base ({}) is wider than the body ({} across)", shown(p.found, Dimension::Length),
                           shown(p.limit, Dimension::Length)),

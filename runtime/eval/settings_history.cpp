@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 14> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 15> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -32,6 +32,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 14> kAdded{{
     {"robot.drive", "differential"},
     {"robot.max_turn_rate", "0.5235987755982988 rad/s"},
     {"robot.max_turn_accel", "0.8726646259971648 rad/s^2"},
+    // Bodies of any convex outline (2026-12-05): the disc.
+    {"robot.body_outline", "[]"},
 }};
 
 }  // namespace

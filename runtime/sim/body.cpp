@@ -1,5 +1,7 @@
 #include "runtime/sim/body.hpp"
 
+#include "runtime/sim/outline.hpp"
+
 #include <cmath>
 #include <mutex>
 #include <numbers>
@@ -33,6 +35,18 @@ void disable_bullet_profiling() {
 }
 
 btScalar bt(double v) { return static_cast<btScalar>(v); }
+
+// The outline (counter-clockwise) as a prism of the body's height, `scale` times its size in
+// the plane: Bullet's hull of its inset, which Bullet's margin grows back to the outline.
+std::unique_ptr<btConvexShape> outline_hull(const std::vector<Vec2>& ccw, double height_m, double scale) {
+  auto hull = std::make_unique<btConvexHullShape>();
+  const double half = height_m / 2 - kCollisionMargin_m;
+  for (const Vec2& v : inset(ccw, kCollisionMargin_m / scale))
+    for (const double z : {-half, half}) hull->addPoint(btVector3(bt(scale * v.x), bt(scale * v.y), bt(z)), false);
+  hull->setMargin(kCollisionMargin_m);
+  hull->recalcLocalAabb();
+  return hull;
+}
 
 }  // namespace
 
@@ -89,16 +103,28 @@ Body::Body(const ArenaSpec& a, const RobotParams& r, double substep_s, const Sta
 
   // The body, added last so its broadphase handle and unique id are the same after
   // every remove-and-add in place().
-  // The body only moves in the plane z = 0, where every static shape is centred, so a
-  // sphere meets a wall exactly where the vertical cylinder of the same radius would, and
-  // Bullet's sphere-box contact is closed-form (with speculative contacts): no GJK at
-  // every substep the robot spends against a wall. (Sphere-sphere contacts are not
-  // speculative, so obstacle cylinders stay cylinders, met by GJK.)
-  body_shape_ = std::make_unique<btSphereShape>(bt(r.body_radius_m));
-  // The inertia of the body, a solid cylinder, not of the sphere standing in for it.
   btVector3 inertia(0, 0, 0);
-  btCylinderShapeZ(btVector3(bt(r.body_radius_m), bt(r.body_radius_m), bt(r.body_height_m / 2)))
-      .calculateLocalInertia(bt(r.mass_kg), inertia);
+  if (r.outline.empty()) {
+    // The body only moves in the plane z = 0, where every static shape is centred, so a
+    // sphere meets a wall exactly where the vertical cylinder of the same radius would, and
+    // Bullet's sphere-box contact is closed-form (with speculative contacts): no GJK at
+    // every substep the robot spends against a wall. (Sphere-sphere contacts are not
+    // speculative, so obstacle cylinders stay cylinders, met by GJK.)
+    body_shape_ = std::make_unique<btSphereShape>(bt(r.body_radius_m));
+    // The inertia of the body, a solid cylinder, not of the sphere standing in for it.
+    btCylinderShapeZ(btVector3(bt(r.body_radius_m), bt(r.body_radius_m), bt(r.body_height_m / 2)))
+        .calculateLocalInertia(bt(r.mass_kg), inertia);
+  } else {
+    outline_ = counter_clockwise(r.outline);
+    placed_.resize(outline_.size());
+    // Both wheels at full speed, opposite ways: the fastest turn.
+    max_sweep_m_ = max_travel_m_ + 2 * r.motor.max_speed_mps / r.wheel_base_m * substep_s * r.body_radius_m;
+    body_shape_ = outline_hull(outline_, r.body_height_m, 1.0);
+    // A uniform plate of the outline turning about the wheels' axle (the body's origin, where
+    // Bullet puts the mass); x and y never turn.
+    const btScalar iz = bt(r.mass_kg * polar_gyration_sq(outline_));
+    inertia = btVector3(iz, iz, iz);
+  }
   btRigidBody::btRigidBodyConstructionInfo info(bt(r.mass_kg), nullptr, body_shape_.get(), inertia);
   info.m_friction = kContactFriction;
   info.m_restitution = kRestitution;
@@ -111,7 +137,7 @@ Body::Body(const ArenaSpec& a, const RobotParams& r, double substep_s, const Sta
   body_->setSleepingThresholds(0, 0);
   world_->addRigidBody(body_.get());
 
-  warm_up(a);
+  warm_up(a, r);
 }
 
 Body::~Body() = default;
@@ -120,11 +146,14 @@ Body::~Body() = default;
 // size of the robot touching every static object at once, so a step never allocates:
 // a body as large as the arena steps a few times in contact with everything, then the
 // real body takes its place (place() removes every trace but the capacities).
-void Body::warm_up(const ArenaSpec& arena) {
+void Body::warm_up(const ArenaSpec& arena, const RobotParams& robot) {
   const double half_diagonal = 0.5 * std::hypot(arena.width_m, arena.height_m) + kWallThickness_m;
-  btSphereShape big(bt(half_diagonal));
+  // The body's own kind of shape, so that its own contact algorithms are the ones grown.
+  const std::unique_ptr<btConvexShape> big =
+      outline_.empty() ? std::unique_ptr<btConvexShape>(std::make_unique<btSphereShape>(bt(half_diagonal)))
+                       : outline_hull(outline_, robot.body_height_m, half_diagonal / robot.body_radius_m);
   world_->removeRigidBody(body_.get());
-  body_->setCollisionShape(&big);
+  body_->setCollisionShape(big.get());
   btTransform tr;
   tr.setIdentity();
   tr.setOrigin(btVector3(bt(arena.width_m / 2), bt(arena.height_m / 2), 0));
@@ -161,6 +190,11 @@ void Body::add_static(std::unique_ptr<btCollisionShape> shape, double x, double 
   world_->addRigidBody(rb.get());
   shapes_.push_back(std::move(shape));
   statics_.push_back(std::move(rb));
+}
+
+double Body::placed_outline_clearance() noexcept {
+  place_outline(outline_, pose(), placed_);
+  return geometry_.clearance(placed_, max_sweep_m_ + 2 * kFreeSpaceMargin_m);
 }
 
 void Body::place(const Pose& pose) {

@@ -1,5 +1,5 @@
 #pragma once
-// The Khepera's rigid body among the arena's walls and obstacles, in Bullet: the shapes,
+// The robot's rigid body (a disc, or a convex outline: outline.hpp) among the arena's walls and obstacles, in Bullet: the shapes,
 // the broadphase, the contact solver, one substep of motion at an imposed velocity, the
 // contact test, and place(), which returns the whole Bullet state to what a fresh world
 // holds so that nothing leaks from one evaluation into the next. Internal to esc_sim: it
@@ -58,7 +58,11 @@ class Body {
     body_->setLinearVelocity(btVector3(static_cast<btScalar>(v.x_mps), static_cast<btScalar>(v.y_mps), 0));
     body_->setAngularVelocity(btVector3(0, 0, static_cast<btScalar>(v.turn_radps)));
     const double keep = radius_m_ + v.travel_m + kFreeSpaceMargin_m;
-    if (has_contact_points() || clearance_m_ <= keep) {
+    // An outline's points sweep at most the centre's travel plus the turn at the circle.
+    const bool near = clearance_m_ <= keep &&
+                      (outline_.empty() || outline_clearance_m_ <= v.travel_m + std::abs(v.turn_radps) * substep_s_ *
+                                                                                   radius_m_ + kFreeSpaceMargin_m);
+    if (has_contact_points() || near) {
       // The solver reads the world inertia tensor, which the free-space path leaves behind.
       if (inertia_stale_) body_->updateInertiaTensor();
       inertia_stale_ = false;
@@ -80,7 +84,7 @@ class Body {
 
   // Whether the body touches a wall or an obstacle (its clearance is at most
   // kContactTolerance_m; the contact solver stops it at about 0).
-  [[nodiscard]] bool touching() const noexcept { return clearance_m_ <= radius_m_ + kContactTolerance_m; }
+  [[nodiscard]] bool touching() const noexcept { return touching_; }
 
   [[nodiscard]] Pose pose() const noexcept {
     const btTransform& tr = body_->getWorldTransform();
@@ -99,7 +103,7 @@ class Body {
   }
 
  private:
-  void warm_up(const ArenaSpec& arena);
+  void warm_up(const ArenaSpec& arena, const RobotParams& robot);
   void add_static_box(double cx, double cy, double hx, double hy, double angle_rad);
   void add_static(std::unique_ptr<btCollisionShape> shape, double x, double y, double angle_rad);
   // The clearance at the body's position, exact up to the farthest any substep's test looks
@@ -108,7 +112,16 @@ class Body {
   void update_clearance() noexcept {
     const double cutoff_m = radius_m_ + max_travel_m_ + 2 * kFreeSpaceMargin_m;
     clearance_m_ = geometry_.clearance(position(), cutoff_m);
+    if (outline_.empty()) {
+      touching_ = clearance_m_ <= radius_m_ + kContactTolerance_m;
+      return;
+    }
+    // An outline comes near a surface only where its circle does: its own distance only then.
+    outline_clearance_m_ = clearance_m_ <= cutoff_m ? placed_outline_clearance() : StaticGeometry2D::kNoHit;
+    touching_ = outline_clearance_m_ <= kContactTolerance_m;
   }
+  // The outline's distance at the current position, exact up to the farthest a substep sweeps it.
+  [[nodiscard]] double placed_outline_clearance() noexcept;
   [[nodiscard]] bool has_contact_points() const noexcept {
     const int n = dispatcher_->getNumManifolds();
     for (int i = 0; i < n; ++i)
@@ -121,6 +134,11 @@ class Body {
   double max_travel_m_;          // the top wheel speed over a substep
   const StaticGeometry2D& geometry_;
   double clearance_m_ = 0.0;     // at the current position (update_clearance)
+  bool touching_ = false;        // at the current position (update_clearance)
+  std::vector<Vec2> outline_;    // counter-clockwise, in the body's frame; empty: a disc
+  std::vector<Vec2> placed_;     // the outline at the current position
+  double outline_clearance_m_ = 0.0;   // its distance to the walls and obstacles (update_clearance)
+  double max_sweep_m_ = 0.0;     // the farthest a point of the outline moves in a substep
   bool inertia_stale_ = false;   // the world inertia tensor is of an earlier orientation
 
   // The dynamics world is declared last so it is destroyed first.
@@ -131,7 +149,7 @@ class Body {
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::vector<std::unique_ptr<btRigidBody>> statics_;
-  std::unique_ptr<btSphereShape> body_shape_;
+  std::unique_ptr<btConvexShape> body_shape_;   // a sphere, or the outline's hull
   std::unique_ptr<btRigidBody> body_;
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
 };

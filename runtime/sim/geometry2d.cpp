@@ -2,8 +2,53 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace esc::sim {
+
+namespace {
+
+double cross(Vec2 a, Vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
+Vec2 minus(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
+
+double point_segment(Vec2 p, Vec2 a, Vec2 b) noexcept {
+  const Vec2 e = minus(b, a), q = minus(p, a);
+  const double len2 = e.x * e.x + e.y * e.y;
+  const double t = len2 > 0.0 ? std::clamp((q.x * e.x + q.y * e.y) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(q.x - t * e.x, q.y - t * e.y);
+}
+
+// Whether segments ab and cd share a point (touching counts).
+bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
+  const double d1 = cross(minus(b, a), minus(c, a)), d2 = cross(minus(b, a), minus(d, a));
+  const double d3 = cross(minus(d, c), minus(a, c)), d4 = cross(minus(d, c), minus(b, c));
+  return ((d1 <= 0.0 && d2 >= 0.0) || (d1 >= 0.0 && d2 <= 0.0)) && ((d3 <= 0.0 && d4 >= 0.0) || (d3 >= 0.0 && d4 <= 0.0));
+}
+
+// Whether p lies in a convex counter-clockwise polygon (its edges count).
+bool polygon_holds(std::span<const Vec2> poly, Vec2 p) noexcept {
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    if (cross(minus(poly[(i + 1) % poly.size()], poly[i]), minus(p, poly[i])) < 0.0) return false;
+  return true;
+}
+
+// The distance between two convex counter-clockwise polygons, 0 when they meet: apart, it is
+// a vertex of one against an edge of the other.
+double polygon_distance(std::span<const Vec2> a, std::span<const Vec2> b) noexcept {
+  if (polygon_holds(b, a[0]) || polygon_holds(a, b[0])) return 0.0;
+  double best = StaticGeometry2D::kNoHit;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2 a0 = a[i], a1 = a[(i + 1) % a.size()];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Vec2 b0 = b[j], b1 = b[(j + 1) % b.size()];
+      if (segments_meet(a0, a1, b0, b1)) return 0.0;
+      best = std::min({best, point_segment(a0, b0, b1), point_segment(b0, a0, a1)});
+    }
+  }
+  return best;
+}
+
+}  // namespace
 
 StaticGeometry2D::StaticGeometry2D(const ArenaSpec& arena)
     : width_(arena.width_m), height_(arena.height_m) {
@@ -24,6 +69,32 @@ StaticGeometry2D::StaticGeometry2D(const ArenaSpec& arena)
 double StaticGeometry2D::clearance(Vec2 p, double cutoff_m) const noexcept {
   return clearance_from(std::min(std::min(p.x, width_ - p.x), std::min(p.y, height_ - p.y)), p,
                         cutoff_m);
+}
+
+double StaticGeometry2D::clearance(std::span<const Vec2> polygon, double cutoff_m) const noexcept {
+  // The walled rectangle: a convex polygon comes nearest it at a vertex.
+  double best = kNoHit;
+  Vec2 centre;
+  for (const Vec2& v : polygon) {
+    best = std::min({best, v.x, width_ - v.x, v.y, height_ - v.y});
+    centre = {centre.x + v.x / static_cast<double>(polygon.size()), centre.y + v.y / static_cast<double>(polygon.size())};
+  }
+  double bound = 0.0;   // the polygon lies within this of `centre`
+  for (const Vec2& v : polygon) bound = std::max(bound, std::hypot(v.x - centre.x, v.y - centre.y));
+  for (const Circle& c : circles_) {
+    if (!within(centre.x - c.cx, centre.y - c.cy, bound + c.r + std::min(best, cutoff_m))) continue;
+    const Vec2 p{c.cx, c.cy};
+    if (polygon_holds(polygon, p)) return -c.r;
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+      best = std::min(best, point_segment(p, polygon[i], polygon[(i + 1) % polygon.size()]) - c.r);
+  }
+  for (const Box& b : boxes_) {
+    if (!within(centre.x - b.cx, centre.y - b.cy, bound + b.bound + std::min(best, cutoff_m))) continue;
+    const auto corner = [&b](double x, double y) { return Vec2{b.cx + b.c * x - b.s * y, b.cy + b.s * x + b.c * y}; };
+    const Vec2 corners[] = {corner(-b.hx, -b.hy), corner(b.hx, -b.hy), corner(b.hx, b.hy), corner(-b.hx, b.hy)};
+    best = std::min(best, polygon_distance(polygon, corners));
+  }
+  return best;
 }
 
 double StaticGeometry2D::obstacle_clearance(Vec2 p, double cutoff_m) const noexcept {

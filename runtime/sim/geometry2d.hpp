@@ -6,6 +6,7 @@
 // are exact and much cheaper than Bullet's ray tests.
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "runtime/sim/arena.hpp"
@@ -22,6 +23,11 @@ class StaticGeometry2D {
   // obstacle or beyond a wall). Shapes farther than `cutoff_m` may be skipped: the result
   // is exact whenever it is below `cutoff_m`, else some value >= cutoff_m.
   [[nodiscard]] double clearance(Vec2 p, double cutoff_m = kNoHit) const noexcept;
+
+  // The same for a convex polygon (vertices counter-clockwise, in the arena's frame): its
+  // distance to the nearest wall or obstacle, exact when positive and below `cutoff_m`, at
+  // most 0 when the polygon reaches one (how deep is not measured).
+  [[nodiscard]] double clearance(std::span<const Vec2> polygon, double cutoff_m = kNoHit) const noexcept;
 
   // The same, counting only the obstacles (boxes, segment walls and cylinders), not the
   // walled rectangle; kNoHit in an arena without obstacles.

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "runtime/sim/arena.hpp"
+
 namespace esc::sim {
 
 struct MotorParams {
@@ -115,10 +117,17 @@ struct TurnParams {
   double max_accel_radps2 = 0.8726646259971648;     // 50 deg/s^2: command 1 adds 0.5 deg per step per step
 };
 
+// Most vertices a body's outline holds.
+inline constexpr int kMaxOutlineVertices = 32;
+
 struct RobotParams {
   DriveKind drive = DriveKind::Differential;
   TurnParams turn;                  // the acceleration drive's
-  double body_radius_m = 0.0275;    // 55 mm diameter
+  double body_radius_m = 0.0275;    // 55 mm diameter; with an outline, the circle around it
+  // A convex outline instead of the disc (outline.hpp): its vertices in the body's frame (x
+  // along the heading, y to the left, from the point the wheels turn about), in order round
+  // it; empty: the disc. The Thymio II's reaches 8 cm ahead of its axle and 3 cm behind.
+  std::vector<Vec2> outline;
   double body_height_m = 0.03;
   double mass_kg = 0.08;
   double wheel_base_m = 0.053;

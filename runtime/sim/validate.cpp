@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "runtime/sim/outline.hpp"
+
 namespace esc::sim {
 
 namespace {
@@ -27,6 +29,7 @@ constexpr std::string_view kIrMountAlso[] = {"body_radius"};
 constexpr std::string_view kNoiseAlso[] = {"drive"};
 constexpr std::string_view kIrCurveAlso[] = {"ir_curve_x0"};
 constexpr std::string_view kFitAlso[] = {"body_radius"};
+constexpr std::string_view kOutlineRadiusAlso[] = {"body_radius"};
 
 constexpr std::string_view kInside = "positions are measured from the arena's lower-left inner corner";
 constexpr std::string_view kStartClear = "a body placed inside a wall or an obstacle is pushed out by the solver";
@@ -159,6 +162,20 @@ constexpr RuleInfo kRules[] = {
      "the acceleration drive's turn rate can change"},
     {Rule::NoiseWithoutWheels, O::Robot, "motor_noise", kNoiseAlso, R::AtMost, D::Number,
      "robot.motor.noise_sd under the acceleration drive", "motor noise is an error of each wheel's speed"},
+    {Rule::OutlineCountMin, O::Robot, "body_outline", {}, R::AtLeast, D::Count, "robot.outline vertex count",
+     "an outline encloses an area"},
+    {Rule::OutlineCountMax, O::Robot, "body_outline", {}, R::AtMost, D::Count, "robot.outline vertex count",
+     "an outline holds at most 32 vertices"},
+    {Rule::OutlineConvex, O::Robot, "body_outline", {}, R::Above, D::Number,
+     "robot.outline[{}]: the sine of its turn there", "an outline is convex, its vertices in order round it"},
+    {Rule::OutlineAroundCentre, O::Robot, "body_outline", {}, R::Above, D::Length,
+     "robot.outline: the depth of its origin inside it", "the point the wheels turn about lies inside the body"},
+    {Rule::OutlineWithinRadius, O::Robot, "body_outline", kOutlineRadiusAlso, R::AtMost, D::Length,
+     "robot.outline[{}] distance from the centre against body_radius",
+     "body_radius is the circle around the outline, which placement and the sensors' reach use"},
+    {Rule::OutlineWithoutWheels, O::Robot, "body_outline", kNoiseAlso, R::AtMost, D::Count,
+     "robot.outline vertex count under the acceleration drive",
+     "the acceleration drive moves a disc (a move that brings its rim to a wall is cancelled)"},
 };
 
 constexpr bool in_rule_order() {
@@ -167,7 +184,7 @@ constexpr bool in_rule_order() {
   return true;
 }
 static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
-static_assert(static_cast<std::size_t>(Rule::NoiseWithoutWheels) + 1 == std::size(kRules));
+static_assert(static_cast<std::size_t>(Rule::OutlineWithoutWheels) + 1 == std::size(kRules));
 
 // True when `found` relates to `limit` as `rel` demands; NaN never does.
 bool holds(Relation rel, double found, double limit) {
@@ -322,6 +339,26 @@ void check_ir_layout(const RobotParams& robot, bool body, Checker& c) {
   }
 }
 
+// A convex outline round the centre, inside the body's circle; none under the acceleration drive.
+void check_outline(const RobotParams& robot, bool body, Checker& c) {
+  const std::vector<Vec2>& outline = robot.outline;
+  if (outline.empty()) return;
+  if (robot.drive == DriveKind::Acceleration) {
+    c.require(Rule::OutlineWithoutWheels, static_cast<double>(outline.size()), 0.0);
+    return;
+  }
+  if (!c.require(Rule::OutlineCountMin, static_cast<double>(outline.size()), 3.0)) return;
+  c.at_most(Rule::OutlineCountMax, outline.size(), kMaxOutlineVertices);
+  int at = -1;
+  const double turn = smallest_turn(outline, at);
+  if (!c.require(Rule::OutlineConvex, turn, 0.0, at)) return;
+  c.require(Rule::OutlineAroundCentre, origin_depth(counter_clockwise(outline)), 0.0);
+  if (!body) return;
+  for (std::size_t i = 0; i < outline.size(); ++i)
+    c.require(Rule::OutlineWithinRadius, std::hypot(outline[i].x, outline[i].y), robot.body_radius_m + kInsideTolerance_m,
+              static_cast<int>(i));
+}
+
 [[noreturn]] void throw_first(const std::vector<Problem>& problems) {
   throw std::invalid_argument(problems.front().message());
 }
@@ -418,6 +455,7 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
   if (c.require(Rule::IrRaysMin, robot.ir.rays, 1)) c.require(Rule::IrRaysMax, robot.ir.rays, kMaxIrRays);
   c.require(Rule::IrNoise, robot.ir.noise_sd, 0.0);
   check_ir_layout(robot, body, c);
+  check_outline(robot, body, c);
   const bool step = c.require(Rule::ControlStep, robot.control_step_s, 0.0);
   const bool substeps = c.require(Rule::SubstepsMin, robot.physics_substeps, 1) &&
                         c.require(Rule::SubstepsMax, robot.physics_substeps, kMaxPhysicsSubsteps);

@@ -53,7 +53,8 @@ enum class Rule {
   ControlStep, SubstepsMin,
   SubstepsMax, LightHalfDistance, LightNoise, EnergyDischargeMin, EnergyDischargeMax,
   EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
-  ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels,
+  ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels, OutlineCountMin, OutlineCountMax, OutlineConvex,
+  OutlineAroundCentre, OutlineWithinRadius, OutlineWithoutWheels,
 };
 
 enum class Object { Arena, Placement, Robot };

@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -44,6 +46,16 @@ std::string many(const std::string& line, int n) {
 std::string numbered(const std::string& before, const std::string& after, int n) {
   std::string s;
   for (int i = 0; i < n; ++i) s += before + std::to_string(i) + after + "\n";
+  return s;
+}
+
+// A regular n-gon of radius 2 cm about the centre, a vertex a line.
+std::string polygon(int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    s += fmt::format("({:.4f}cm, {:.4f}cm){}\n", 2 * std::cos(t), 2 * std::sin(t), i + 1 < n ? "," : "");
+  }
   return s;
 }
 
@@ -180,6 +192,18 @@ const std::vector<Row>& rows() {
        "`max_turn_accel` must be greater than 0, found -1deg/s^2"},
       {Rule::NoiseWithoutWheels, "robot r { drive acceleration  motor_noise 0.1 }", "1:43",
        "`motor_noise` is an error of each wheel's speed, but this robot has the acceleration drive"},
+      {Rule::OutlineCountMin, "robot r { body_outline [(1cm, 0cm), (0cm, 1cm)] }", "1:24",
+       "an outline needs at least 3 vertices, found 2"},
+      {Rule::OutlineCountMax, "robot r { body_outline [\n" + polygon(34) + "] }", "34:1",
+       "an outline holds at most 32 vertices, found 34"},
+      {Rule::OutlineConvex, "robot r { body_outline [(-1cm, -1cm), (1cm, -1cm), (0cm, 0cm), (1cm, 1cm), (-1cm, 1cm)] }",
+       "1:52", "the outline is not convex at vertex 2"},
+      {Rule::OutlineAroundCentre, "robot r { body_outline [(1cm, -1cm), (2cm, -1cm), (2cm, 1cm), (1cm, 1cm)] }",
+       "1:24", "the outline does not hold the point the wheels turn about: that point lies 1cm outside an edge"},
+      {Rule::OutlineWithinRadius, "robot r { body_outline [(-1cm, -1cm), (5cm, 0cm), (-1cm, 1cm)] }", "1:39",
+       "outline vertex 1 lies 5cm from the centre, beyond `body_radius` (2.75cm)"},
+      {Rule::OutlineWithoutWheels, "robot r { drive acceleration  body_outline [(-1cm, -1cm), (1cm, 0cm), (-1cm, 1cm)] }",
+       "1:44", "an outline needs the differential drive: the acceleration drive moves a disc"},
   };
   return table;
 }

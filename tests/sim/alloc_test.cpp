@@ -83,29 +83,31 @@ ArenaSpec cluttered(int obstacles) {
 
 TEST(SimAlloc, StepAndReadingsDoNotAllocate) {
   btAlignedAllocSetCustom(&bt_counting_alloc, &bt_counting_free);
-  RobotParams robot;
-  robot.ir.noise_sd = 0.05;
-  robot.light.noise_sd = 0.05;
-  robot.energy.enabled = true;
-  for (int obstacles : {0, 3, 12, 30}) {
-    World world(cluttered(obstacles), robot);
-    // Free space right after construction, then long trajectories full of contacts
-    // (walls, corners, obstacles, robot wedged between them): nothing is allocated, not
-    // even the first time a contact appears (the constructor sized Bullet's arrays).
-    {
-      Rng noise(1);
-      std::array<double, kIrSensors> ir{};
-      std::array<double, kLightSensors> light{};
-      const long before = g_allocations.load();
-      for (int i = 0; i < 100; ++i) {
-        world.read_ir(ir, noise);
-        world.read_light(light, noise);
-        world.step(0.0, 0.0);
+  // The disc, and a convex outline (its hull's contacts and its own contact test).
+  for (RobotParams robot : {RobotParams{}, test::thymio_like()}) {
+    robot.ir.noise_sd = 0.05;
+    robot.light.noise_sd = 0.05;
+    robot.energy.enabled = true;
+    for (int obstacles : {0, 3, 12, 30}) {
+      World world(cluttered(obstacles), robot);
+      // Free space right after construction, then long trajectories full of contacts
+      // (walls, corners, obstacles, robot wedged between them): nothing is allocated, not
+      // even the first time a contact appears (the constructor sized Bullet's arrays).
+      {
+        Rng noise(1);
+        std::array<double, kIrSensors> ir{};
+        std::array<double, kLightSensors> light{};
+        const long before = g_allocations.load();
+        for (int i = 0; i < 100; ++i) {
+          world.read_ir(ir, noise);
+          world.read_light(light, noise);
+          world.step(0.0, 0.0);
+        }
+        EXPECT_EQ(g_allocations.load() - before, 0) << obstacles << " obstacles";
       }
-      EXPECT_EQ(g_allocations.load() - before, 0) << obstacles << " obstacles";
-    }
-    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-      EXPECT_EQ(run(world, seed, 3000), 0) << obstacles << " obstacles, seed " << seed;
+      for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        EXPECT_EQ(run(world, seed, 3000), 0) << obstacles << " obstacles, seed " << seed;
+      }
     }
   }
 }

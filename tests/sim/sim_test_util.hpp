@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "runtime/sim/world.hpp"
 
@@ -42,6 +43,32 @@ inline void add_homing_features(ArenaSpec& a, const HomingFeatures& f) {
   above.height_m = f.light_height_m;
   a.lights.push_back(above);
   a.lights.push_back(f.free_light);
+}
+
+// A Thymio II as lib/thymio2.esc declares it: its outline (a front arc of 8 cm about the
+// axle over +-asin(5.5 / 8), the back 3 cm behind it, counter-clockwise) and its drive.
+inline std::vector<Vec2> thymio_outline() {
+  std::vector<Vec2> v = {{-0.03, -0.055}};
+  const double a = std::asin(5.5 / 8);
+  for (int i = 0; i <= 10; ++i) {
+    const double t = -a + 2 * a * i / 10;
+    v.push_back({0.08 * std::cos(t) * (1 - 1e-9), 0.08 * std::sin(t) * (1 - 1e-9)});
+  }
+  v.push_back({-0.03, 0.055});
+  return v;
+}
+
+inline RobotParams thymio_like() {
+  RobotParams r;
+  r.outline = thymio_outline();
+  r.body_radius_m = 0.08;
+  r.body_height_m = 0.051;
+  r.mass_kg = 0.2;
+  r.wheel_base_m = 0.094;
+  r.motor.max_speed_mps = 0.166;
+  r.motor.inertia = false;
+  r.physics_substeps = 6;
+  return r;
 }
 
 inline RobotParams robot_with_inertia(bool inertia) {
