@@ -67,7 +67,7 @@ const std::optional<control::Behavior>& BehaviorLowering::lower(const ast::Behav
   ExprScope scope;
   if (arena != nullptr) scope.arena = &arenas_.names(*arena);
   scope.navigation = navigation;
-  scope.ir_names = &names_.ir_names();
+  scope.sensor_names = &names_.sensor_names();
   for (const ast::Name& p : d.params) {
     if (std::find(scope.params.begin(), scope.params.end(), p.text) != scope.params.end()) {
       if (arena == nullptr) sink_.error(p.where, fmt::format("parameter `{}` is listed twice", p.text));

@@ -70,7 +70,7 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   auto& spans = inputs_[&d];
   spans.clear();
   for (const ast::Input& in : d.inputs) {
-    const auto o = find_observable(in.name.text, &names_.ir_names());
+    const auto o = find_observable(in.name.text, &names_.sensor_names());
     if (!o) {
       suggest(sink_.error(in.name.where, fmt::format("unknown input `{}`", in.name.text)), in.name.text, observables,
               {.otherwise = "inputs are observables, such as `ir[0..7]`, `speed` or `wheels[0]`"});
@@ -263,7 +263,7 @@ bool ControllerLowering::check_sensors(const control::ControllerSpec& c, const a
       if (auto m = unavailable(s, navigation)) return report(where, std::move(*m), help);
   };
   for (const InputSlots& in : inputs_[&d]) {
-    if (auto m = misnamed(in.input->name.text, navigation, &names_.ir_names())) {
+    if (auto m = misnamed(in.input->name.text, navigation, &names_.sensor_names())) {
       report(in.input->where, std::move(*m), fmt::format("controller `{}` reads it as a network input", d.name.text));
       continue;
     }
@@ -279,7 +279,7 @@ bool ControllerLowering::check_sensors(const control::ControllerSpec& c, const a
       if (p.kind != genome::tree::Kind::Observable) continue;
       terminals.push_back(p.slot);
       const std::string_view array = std::string_view(p.name).substr(0, p.name.find('['));
-      if (!wrong_body) wrong_body = misnamed(array, navigation, &names_.ir_names());
+      if (!wrong_body) wrong_body = misnamed(array, navigation, &names_.sensor_names());
     }
     if (wrong_body) report(d.primitives.where, std::move(*wrong_body), help);
     else check(terminals, d.primitives.where, help);
@@ -294,8 +294,13 @@ bool ControllerLowering::check_sensors(const control::ControllerSpec& c, const a
 
 bool ControllerLowering::bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena,
                               const Navigation& navigation) {
-  const SensorKey key{&d, navigation.goal, navigation.rangefinders, navigation.radars, navigation.ir_sensors,
-                      navigation.ir_name};
+  const SensorKey key{&d,
+                      navigation.goal,
+                      navigation.rangefinders,
+                      navigation.radars,
+                      navigation.ir_sensors,
+                      navigation.ground_sensors,
+                      navigation.names};
   auto [checked, fresh] = sensors_ok_.try_emplace(key, true);
   if (fresh) checked->second = check_sensors(c, d, navigation);
   bool ok = checked->second;

@@ -164,7 +164,7 @@ class Lowerer {
   Node name(const ast::Expr& e) {
     for (std::size_t i = 0; i < scope_.params.size(); ++i)
       if (scope_.params[i] == e.text) return load(expr::slot::param + static_cast<expr::Slot>(i));
-    if (const auto o = find_observable(e.text, scope_.ir_names)) {
+    if (const auto o = find_observable(e.text, scope_.sensor_names)) {
       if (o->indexed) {
         sink_.error(e.where, fmt::format("`{}` holds {} values; pick one with an index", e.text, o->count))
             .help.push_back(fmt::format("write `{}[0]` .. `{}[{}]`", e.text, e.text, o->count - 1));
@@ -300,13 +300,13 @@ class Lowerer {
   }
 
   Node index(const ast::Expr& e) {
-    const auto o = find_observable(e.text, scope_.ir_names);
+    const auto o = find_observable(e.text, scope_.sensor_names);
     if (!o) {
       unknown_name(e.text, e.unit_where);
       return failed();
     }
     if (scope_.navigation != nullptr)
-      if (auto m = misnamed(e.text, *scope_.navigation, scope_.ir_names)) {
+      if (auto m = misnamed(e.text, *scope_.navigation, scope_.sensor_names)) {
         sink_.error(e.where, std::move(m->message)).help = std::move(m->help);
         return failed();
       }
@@ -376,7 +376,7 @@ class Lowerer {
     for (const Function& k : kFunctions)
       if (k.name == e.text) f = &k;
     if (f == nullptr) {
-      if (find_observable(e.text, scope_.ir_names)) {
+      if (find_observable(e.text, scope_.sensor_names)) {
         sink_.error(e.unit_where, fmt::format("`{}` is an observable, not a function", e.text))
             .help.push_back(fmt::format("index an array with brackets: `{}[0]`", e.text));
         return failed();

@@ -48,9 +48,9 @@ struct ExprScope {
   // The goal and the sensors `goal_distance`, `range[i]` and `radar[i]` need. Null outside
   // an experiment: then they are not checked.
   const Navigation* navigation = nullptr;
-  // The names the program's robots read their IR sensors by (Resolver::ir_names); null: `ir`
-  // alone. Under a `navigation`, only its robot's name reads them.
-  const IrNames* ir_names = nullptr;
+  // The names the program's robots read their renamable sensors by (Resolver::sensor_names);
+  // null: the built-in names alone. Under a `navigation`, only its robot's names read them.
+  const SensorNames* sensor_names = nullptr;
   // Where an end term's step aggregates go (`mean(speed)`, `fraction(collision)`), each read
   // from the slot after the last one's (the first: eval::ExperimentSpec::step_aggregate_slot()).
   // Null where none may be read: a step term, a stop condition, a behavior.

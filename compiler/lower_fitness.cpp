@@ -41,7 +41,7 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
   if (arena != nullptr) scope.arena = &arenas_.names(*arena);
   scope.choices = choices;
   scope.navigation = navigation;
-  scope.ir_names = &names_.ir_names();
+  scope.sensor_names = &names_.sensor_names();
   if (d.steps.empty())
     sink_.error(d.name.where, fmt::format("fitness `{}` has no `step:` term", d.name.text))
         .help.push_back("add `step: forward_speed`, the value added up at every control step");

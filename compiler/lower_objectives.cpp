@@ -145,7 +145,7 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
   scope.arena = &arenas.names(arena);
   scope.choices = &choices;
   scope.navigation = &navigation;
-  scope.ir_names = &names.ir_names();
+  scope.sensor_names = &names.sensor_names();
   std::map<std::string, const ast::ExpItem*> described;
   for (const ast::ExpItem* item : items.descriptors) {
     const ast::Name& name = item->refs[0];

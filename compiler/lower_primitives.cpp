@@ -141,7 +141,7 @@ const std::optional<PrimitiveList>& PrimitivesLowering::lower(const ast::Primiti
     // An observable, all of an array, or a range of it.
     const std::string& name = t.name.text;
     if (name.empty()) continue;
-    const auto o = find_observable(name, &names_.ir_names());
+    const auto o = find_observable(name, &names_.sensor_names());
     if (!o) {
       if (names_.find<ast::BehaviorDecl>(name) != nullptr) {
         sink_.error(t.name.where, fmt::format("`{}` is a behavior, not a terminal", name))

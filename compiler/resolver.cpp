@@ -44,7 +44,7 @@ void Resolver::add(const Decl& d) {
 
 void Resolver::declare(const ast::Module& m) {
   modules_.push_back(&m);
-  ir_names_.reset();
+  sensor_names_.reset();
   // In source order, so that "first declared here" points at the earlier one.
   std::vector<Decl> all;
   const auto collect = [&](const auto& v) {
@@ -90,12 +90,14 @@ const Decl* Resolver::lookup(const ast::Name& ref, const Decl& want) {
   return &d;
 }
 
-const IrNames& Resolver::ir_names() {
-  if (ir_names_) return *ir_names_;
-  IrNames& names = ir_names_.emplace(IrNames{"ir"});
+const SensorNames& Resolver::sensor_names() {
+  if (sensor_names_) return *sensor_names_;
+  SensorNames& names = sensor_names_.emplace();
+  for (const RenamableSensors& r : kRenamableSensors) names.emplace(r.observable, r.observable);
   const auto add = [&](const std::vector<ast::Setting>& settings) {
     for (const ast::Setting& s : settings)
-      if (s.key.text == kIrNameSetting && s.value.kind == ast::Value::Kind::Word) names.insert(s.value.text);
+      for (const RenamableSensors& r : kRenamableSensors)
+        if (s.key.text == r.setting && s.value.kind == ast::Value::Kind::Word) names.emplace(s.value.text, r.observable);
   };
   for (const ast::Module* m : modules_) {
     for (const ast::RobotDecl& r : m->robots) add(r.settings);

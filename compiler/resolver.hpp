@@ -26,7 +26,9 @@ using Decl = std::variant<const ast::ArenaDecl*, const ast::RobotDecl*, const as
 [[nodiscard]] std::string_view kind_name(const Decl& d) noexcept;
 [[nodiscard]] const ast::DeclHead& head(const Decl& d) noexcept;
 
-using IrNames = std::set<std::string, std::less<>>;
+// Every name a script may read a renamable sensor array by (robot_settings.hpp), each with the
+// observable it reads: `ir` -> `ir`, `prox` -> `ir`, `prox_ground` -> `ground_sensor`.
+using SensorNames = std::map<std::string, std::string, std::less<>>;
 
 class Resolver {
  public:
@@ -36,10 +38,11 @@ class Resolver {
   void declare(const ast::Module& m);
   // Every declared module, in the order declared.
   [[nodiscard]] const std::vector<const ast::Module*>& modules() const noexcept { return modules_; }
-  // The names the declared robots read their IR sensors by: `ir`, and every `ir_name`
-  // written in a robot block (`prox`), so that a controller resolves its inputs before an
-  // experiment binds it to a robot (sensor_uses.hpp checks the robot's own name then).
-  [[nodiscard]] const IrNames& ir_names();
+  // The names the declared robots read their renamable sensors by: `ir` and `ground_sensor`,
+  // and every `ir_name` and `ground_name` written in a robot block (`prox`), so that a
+  // controller resolves its inputs before an experiment binds it to a robot (sensor_uses.hpp
+  // checks the robot's own name then).
+  [[nodiscard]] const SensorNames& sensor_names();
 
   // The D named by `ref`. Reports an unknown name (with "did you mean" among the D's) and a
   // name of another kind; null then, and also, silently, when the D holds a syntax error.
@@ -63,7 +66,7 @@ class Resolver {
   void add(const Decl& d);
 
   Sink& sink_;
-  std::optional<IrNames> ir_names_;   // of the modules declared so far
+  std::optional<SensorNames> sensor_names_;   // of the modules declared so far
   std::map<std::string, Decl> symbols_;
   std::vector<const ast::Module*> modules_;
 };

@@ -97,20 +97,38 @@ std::string drive_text(const sim::RobotParams& p) {
   return "";
 }
 
-bool read_ir_name(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+// A name for the sensor array `observable` reads: itself, or a name no observable has (a
+// robot's sensors never hide another reading).
+bool read_sensor_name(const ast::Value& v, std::string_view name, std::string_view observable,
+                      std::string_view example, std::string& out, Sink& sink) {
   if (v.kind != ast::Value::Kind::Word) {
-    sink.error(v.where, fmt::format("`{}` takes a name, as in `{} prox`, found `{}`", name, name, v.text));
+    sink.error(v.where, fmt::format("`{}` takes a name, as in `{} {}`, found `{}`", name, name, example, v.text));
     return false;
   }
-  // `ir` itself, or a name no observable has: a robot's sensors never hide another reading.
-  if (v.text != "ir" && expr::find_observable(v.text)) {
-    sink.error(v.where, fmt::format("`{}` is an observable of every robot; the IR sensors need a name of their own",
+  if (v.text != observable && expr::find_observable(v.text)) {
+    sink.error(v.where, fmt::format("`{}` is an observable of every robot; these sensors need a name of their own",
                                     v.text))
-        .help.push_back(fmt::format("write `{} prox`", name));
+        .help.push_back(fmt::format("write `{} {}`", name, example));
     return false;
   }
-  p.ir.name = v.text;
+  out = v.text;
   return true;
+}
+
+constexpr Dim kGroundDims[] = {Dim::Angle, Dim::Length};
+
+bool read_ground_sensors(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  const auto rows = read_tuples(v, name, {kGroundDims, 0, "[(9deg, 7.3cm), (-9deg, 7.3cm)]"}, sink);
+  if (!rows) return false;
+  p.ground.mounts.clear();
+  for (const std::vector<double>& r : *rows) p.ground.mounts.push_back({r[0], r[1]});
+  return true;
+}
+
+std::string ground_sensors_text(const sim::RobotParams& p) {
+  return bracketed(p.ground.mounts, [](const sim::GroundMount& m) {
+    return fmt::format("({}, {})", with_unit(m.bearing_rad, Dim::Angle), with_unit(m.radius_m, Dim::Length));
+  });
 }
 
 constexpr Dim kResponseDims[] = {Dim::Length, Dim::None};
@@ -196,8 +214,12 @@ const std::vector<RobotSetting>& robot_settings() {
        "the IR sensors, in the order `ir[i]` reads them: (mount bearing, facing[, distance from the centre]), "
        "angles from the heading",
        nullptr, nullptr, read_ir_sensors, ir_sensors_text},
-      {kIrNameSetting, K::Word, Dim::None, "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)",
-       nullptr, nullptr, read_ir_name, [](const sim::RobotParams& p) { return p.ir.name; }, true},
+      {kRenamableSensors[0].setting, K::Word, Dim::None,
+       "the name scripts read the IR sensors by (`ir[i]`; the e-puck's `prox[i]`)", nullptr, nullptr,
+       [](const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+         return read_sensor_name(v, name, kRenamableSensors[0].observable, "prox", p.ir.name, sink);
+       },
+       [](const sim::RobotParams& p) { return p.ir.name; }, true},
       {"ir_curve_x0", K::Quantity, Dim::Length, "x0 of Enki's IR curve m (c - x0^2) / (x^2 - 2 x0 x + c)",
        [](const sim::RobotParams& p) { return p.ir.curve_x0_cm / kCmPerM; },
        [](sim::RobotParams& p, double v) { p.ir.curve_x0_cm = in_enki_units(v, kCmPerM); }},
@@ -231,6 +253,17 @@ const std::vector<RobotSetting>& robot_settings() {
       {"radars", K::Whole, Dim::None, "pie-slice goal radars around the body (0: none)",
        [](const sim::RobotParams& p) { return static_cast<double>(p.radars); },
        [](sim::RobotParams& p, double v) { p.radars = static_cast<int>(v); }},
+      {"ground_sensors", K::List, Dim::Angle,
+       "ground sensors under the body, in the order `ground_sensor[i]` reads them: (bearing from the heading, "
+       "distance from the centre)",
+       nullptr, nullptr, read_ground_sensors, ground_sensors_text},
+      {kRenamableSensors[1].setting, K::Word, Dim::None,
+       "the name scripts read the ground sensors by (`ground_sensor[i]`; the Thymio's `prox_ground[i]`)", nullptr,
+       nullptr,
+       [](const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+         return read_sensor_name(v, name, kRenamableSensors[1].observable, "prox_ground", p.ground.name, sink);
+       },
+       [](const sim::RobotParams& p) { return p.ground.name; }, true},
   };
   return table;
 }

@@ -35,9 +35,19 @@ struct RobotSetting {
   [[nodiscard]] bool settable_later() const noexcept { return !script_only; }
 };
 
-// The setting that names a robot's IR sensors in scripts, which the resolver reads from the
-// syntax tree before any robot is lowered (Resolver::ir_names).
-inline constexpr std::string_view kIrNameSetting = "ir_name";
+// Sensor arrays a robot may name for scripts (the e-puck's `prox`, the Thymio's
+// `prox_horizontal` and `prox_ground`): the setting that names them, which the resolver reads
+// from the syntax tree before any robot is lowered (Resolver::sensor_names), the observable
+// they read, and what they are, for messages.
+struct RenamableSensors {
+  std::string_view setting;
+  std::string_view observable;
+  std::string_view what;
+};
+inline constexpr RenamableSensors kRenamableSensors[] = {
+    {"ir_name", "ir", "IR sensors"},
+    {"ground_name", "ground_sensor", "ground sensors"},
+};
 
 [[nodiscard]] const std::vector<RobotSetting>& robot_settings();
 [[nodiscard]] const RobotSetting* find_robot_setting(std::string_view name);

@@ -204,6 +204,18 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
                           "(no wheels); found {}",
                           number(p.found)),
               {"leave `motor_noise` at 0, or use `drive differential`"}};
+    case Rule::GroundCount:
+      return {fmt::format("a robot has at most {} ground sensors, found {}", shown(p.limit, Dimension::Count),
+                          shown(p.found, Dimension::Count)),
+              {std::string(p.info().why)}};
+    case Rule::GroundMountRadiusMin:
+      return {fmt::format("ground sensor {} sits {} from the body's centre: a distance is never negative", p.index,
+                          shown(p.found, Dimension::Length)),
+              {}};
+    case Rule::GroundMountRadiusMax:
+      return {fmt::format("ground sensor {} sits {} from the body's centre, outside the body (radius {})", p.index,
+                          shown(p.found, Dimension::Length), shown(p.limit, Dimension::Length)),
+              {}};
     case Rule::OutlineCountMin:
       return {fmt::format("an outline needs at least 3 vertices, found {}", shown(p.found, Dimension::Count)), {}};
     case Rule::OutlineCountMax:

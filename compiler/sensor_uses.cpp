@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/robot_settings.hpp"
 #include "runtime/genome/tree/primitive_set.hpp"
 
 namespace esc::compiler {
@@ -50,29 +51,43 @@ Navigation navigation_of(const eval::ExperimentSpec& x) {
           static_cast<int>(x.robot.rangefinders.angles_rad.size()),
           x.robot.radars,
           static_cast<int>(x.robot.ir.mounts.size()),
-          x.robot.ir.name};
+          static_cast<int>(x.robot.ground.mounts.size()),
+          {{"ir", x.robot.ir.name}, {"ground_sensor", x.robot.ground.name}}};
+}
+
+std::string_view Navigation::name_of(std::string_view observable) const {
+  const auto it = names.find(observable);
+  return it == names.end() ? observable : std::string_view(it->second);
 }
 
 namespace {
 
-bool is_ir_name(std::string_view name, const IrNames* ir_names) {
-  return name == "ir" || (ir_names != nullptr && ir_names->count(name) != 0);
+// The renamable array `name` reads under one of its names, or null.
+const RenamableSensors* renamable(std::string_view name, const SensorNames* names) {
+  std::string_view observable = name;
+  if (names != nullptr)
+    if (const auto it = names->find(name); it != names->end()) observable = it->second;
+  for (const RenamableSensors& r : kRenamableSensors)
+    if (r.observable == observable) return &r;
+  return nullptr;
 }
 
 }  // namespace
 
-std::optional<expr::Observable> find_observable(std::string_view name, const IrNames* ir_names) {
-  if (is_ir_name(name, ir_names)) return expr::find_observable("ir");
+std::optional<expr::Observable> find_observable(std::string_view name, const SensorNames* names) {
+  if (const RenamableSensors* r = renamable(name, names)) return expr::find_observable(r->observable);
   return expr::find_observable(name);
 }
 
-std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const IrNames* ir_names) {
-  if (!is_ir_name(name, ir_names) || name == n.ir_name) return std::nullopt;
-  return RuleMessage{fmt::format("`{}` names IR sensors, but {} calls its IR sensors `{}`", name, robot_of(n),
-                                 n.ir_name),
+std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const SensorNames* names) {
+  const RenamableSensors* r = renamable(name, names);
+  if (r == nullptr) return std::nullopt;
+  const std::string_view own = n.name_of(r->observable);
+  if (name == own) return std::nullopt;
+  return RuleMessage{fmt::format("`{}` names {}, but {} calls its {} `{}`", name, r->what, robot_of(n), r->what, own),
                      {fmt::format("a controller written for another body: read `{}[i]` on this one, or run it on a "
-                                  "robot with `ir_name {}`",
-                                  n.ir_name, name)}};
+                                  "robot with `{} {}`",
+                                  own, r->setting, name)}};
 }
 
 std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
@@ -87,10 +102,14 @@ std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
     return beyond(slot, expr::slot::range, n.rangefinders, n, "rangefinder", "range",
                   "rangefinders [90deg, 45deg, 0deg, -45deg, -90deg, 180deg]");
   // The light sensors are the IR sensors in passive mode: as many, at the same mounts.
-  for (const auto& [first, what, array] : {std::tuple{expr::slot::ir, "IR sensor", "ir"},
-                                          std::tuple{expr::slot::light, "light sensor", "light"}})
+  for (const auto& [first, what, array] : {std::tuple{expr::slot::ir, "IR sensor", n.name_of("ir")},
+                                          std::tuple{expr::slot::light, "light sensor", std::string_view("light")}})
     if (slot >= first && slot < first + expr::kIrCount && static_cast<int>(slot - first) >= n.ir_sensors)
       return beyond(slot, first, n.ir_sensors, n, what, array, "ir_sensors [(68deg, 90deg), (13deg, 10deg)]");
+  if (slot >= expr::slot::ground_sensor && slot < expr::slot::ground_sensor + expr::kGroundSensorCount &&
+      static_cast<int>(slot - expr::slot::ground_sensor) >= n.ground_sensors)
+    return beyond(slot, expr::slot::ground_sensor, n.ground_sensors, n, "ground sensor", n.name_of("ground_sensor"),
+                  "ground_sensors [(9deg, 7.3cm), (-9deg, 7.3cm)]");
   return std::nullopt;
 }
 

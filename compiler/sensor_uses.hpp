@@ -6,6 +6,7 @@
 // sensor is an error at the read: an expression of a fitness or behavior (lower_expr.cpp), a
 // network input, a GP terminal or a frozen controller in a supervisor (lower_controller.cpp),
 // and a `--set` that takes a sensor away (setting_keys.cpp).
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -28,17 +29,21 @@ struct Navigation {
   int rangefinders = 0;
   int radars = 0;
   int ir_sensors = sim::kMaxIrSensors;
-  std::string ir_name = "ir";   // the name its robot reads its IR sensors by
+  int ground_sensors = 0;
+  // The names its robot reads its renamable sensors by (robot_settings.hpp), by observable:
+  // `ir` -> `prox` on the e-puck; an observable not listed keeps its own name.
+  std::map<std::string, std::string, std::less<>> names;
+  [[nodiscard]] std::string_view name_of(std::string_view observable) const;
 };
 
-// The observable a script's name reads: a built-in one, or the IR sensors by any name of
-// `ir_names` (null: `ir` alone).
-[[nodiscard]] std::optional<expr::Observable> find_observable(std::string_view name, const IrNames* ir_names);
+// The observable a script's name reads: a built-in one, or a renamable sensor array by any
+// name of `names` (null: the built-in names alone).
+[[nodiscard]] std::optional<expr::Observable> find_observable(std::string_view name, const SensorNames* names);
 
-// Why `name`, the name of the IR sensors a script reads, is not what the robot under `n`
-// calls them (a controller written for another body), or nullopt when it is or when `name`
-// reads something else.
-[[nodiscard]] std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const IrNames* ir_names);
+// Why `name`, the name of a renamable sensor array a script reads, is not what the robot
+// under `n` calls them (a controller written for another body), or nullopt when it is or
+// when `name` reads something else.
+[[nodiscard]] std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const SensorNames* names);
 
 [[nodiscard]] Navigation navigation_of(const eval::ExperimentSpec& x);
 

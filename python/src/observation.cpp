@@ -14,6 +14,8 @@ std::string indexed(std::string_view name, expr::Slot index) { return std::strin
 
 std::string slot_name(expr::Slot slot, const sim::RobotParams& robot) {
   if (slot >= expr::slot::ir && slot < expr::slot::ir + expr::kIrCount) return indexed(robot.ir.name, slot - expr::slot::ir);
+  if (slot >= expr::slot::ground_sensor && slot < expr::slot::ground_sensor + expr::kGroundSensorCount)
+    return indexed(robot.ground.name, slot - expr::slot::ground_sensor);
   for (const expr::Observable& o : expr::kObservables)
     if (slot >= o.first && slot < o.first + o.count) return o.indexed ? indexed(o.name, slot - o.first) : std::string(o.name);
   for (const expr::ParametrisedObservable& o : expr::kParametrised)

@@ -18,6 +18,7 @@ static_assert(expr::kLightCount == sim::kLightSensors);
 static_assert(expr::kIrCount == sim::kIrSensors);
 static_assert(expr::kRangeCount == sim::kMaxRangefinders, "range[i] slots: one per rangefinder a robot may have");
 static_assert(expr::kRadarCount == sim::kMaxRadars, "radar[i] slots: one per radar slice");
+static_assert(expr::kGroundSensorCount == sim::kMaxGroundSensors, "ground_sensor[i] slots: one per ground sensor");
 
 namespace {
 
@@ -30,6 +31,7 @@ void observe_navigation(const sim::World& world, expr::Frame& frame) noexcept {
   frame[expr::slot::y] = pose.y_m;
   frame[expr::slot::heading] = pose.heading_rad;
   world.read_rangefinders(std::span<double>(frame).subspan(expr::slot::range, expr::kRangeCount));
+  world.read_ground(std::span<double>(frame).subspan(expr::slot::ground_sensor, expr::kGroundSensorCount));
   const std::optional<sim::Vec2>& goal = world.arena().goal;
   if (!goal) return;
   frame[expr::slot::goal_distance] = std::hypot(goal->x - pose.x_m, goal->y - pose.y_m);

@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 15> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 17> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -34,6 +34,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 15> kAdded{{
     {"robot.max_turn_accel", "0.8726646259971648 rad/s^2"},
     // Bodies of any convex outline (2026-12-05): the disc.
     {"robot.body_outline", "[]"},
+    // Ground sensors at points under the body (2026-12-05): none.
+    {"robot.ground_sensors", "[]"},
+    {"robot.ground_name", "ground_sensor"},
 }};
 
 }  // namespace

@@ -46,7 +46,9 @@ inline constexpr Slot y = 49;
 inline constexpr Slot heading = 50;       // radians from +x, counter-clockwise, in (-pi, pi]
 inline constexpr Slot goal_distance = 51; // metres from the centre to the arena's goal
 inline constexpr Slot range = 52;         // range[0..7]: rangefinders, distance / range, 1 when clear
-inline constexpr Slot radar = 60;         // radar[0..7]: 1 for the pie slice holding the goal (last)
+inline constexpr Slot radar = 60;         // radar[0..7]: 1 for the pie slice holding the goal
+// Added after the navigator's (issue 44): ground sensors at the robot's points (last).
+inline constexpr Slot ground_sensor = 68;  // ground_sensor[0..3]: 1 over a visible zone
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -57,7 +59,8 @@ inline constexpr Slot kMaxLights = 4;     // = sim::kMaxLights
 inline constexpr Slot kMaxParams = 4;
 inline constexpr Slot kRangeCount = 8;    // = sim::kMaxRangefinders
 inline constexpr Slot kRadarCount = 8;    // = sim::kMaxRadars
-inline constexpr Slot kFrameSize = slot::radar + kRadarCount;
+inline constexpr Slot kGroundSensorCount = 4;   // = sim::kMaxGroundSensors
+inline constexpr Slot kFrameSize = slot::ground_sensor + kGroundSensorCount;
 
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
@@ -66,6 +69,7 @@ static_assert(slot::noise + 1 == slot::acting && slot::acting + 1 == slot::param
 static_assert(slot::param + kMaxParams == slot::x && slot::x + 1 == slot::y && slot::y + 1 == slot::heading);
 static_assert(slot::heading + 1 == slot::goal_distance && slot::goal_distance + 1 == slot::range);
 static_assert(slot::range + kRangeCount == slot::radar);
+static_assert(slot::radar + kRadarCount == slot::ground_sensor);
 
 // The frame's size before `x` and the slots after it existed: what the aggregates' slots
 // (below) are numbered from in a fingerprint (runtime/eval/fingerprint.cpp), so that growing
@@ -144,6 +148,9 @@ inline constexpr std::array kObservables = {
     Observable{"radar", slot::radar, kRadarCount, true, "boolean",
                "goal radars: 1 for the pie slice holding the goal, 0 else; slice 0 ahead, then counter-clockwise "
                "(needs `radars` and a `goal`)"},
+    Observable{"ground_sensor", slot::ground_sensor, kGroundSensorCount, true, "boolean",
+               "ground sensors in the robot's order: 1 over a visible zone, 0 elsewhere (needs `ground_sensors`; "
+               "the robot may name them otherwise, the Thymio's `prox_ground`)"},
 };
 
 // Observables that take an argument naming a thing of the arena, `in(zone)` and

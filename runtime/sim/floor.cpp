@@ -107,6 +107,12 @@ bool Floor::in_zone(std::size_t zone, Vec2 p) const noexcept {
   return zone < zones_.size() && zones_[zone].contains(p.x, p.y);
 }
 
+bool Floor::visible_at(Vec2 p) const noexcept {
+  for (std::uint32_t m = visible_mask_; m != 0; m &= m - 1)
+    if (zones_[static_cast<std::size_t>(std::countr_zero(m))].contains(p.x, p.y)) return true;
+  return false;
+}
+
 void Floor::reset(Vec2 centre, FloorState& state) {
   state = FloorState{};
   energy_units_ = energy_full_;

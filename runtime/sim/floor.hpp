@@ -68,6 +68,8 @@ class Floor {
   [[nodiscard]] std::span<const PlacedLight> lights() const noexcept { return lights_; }
   // Whether `p` lies inside zone `zone` (at its position this epoch; boundary included).
   [[nodiscard]] bool in_zone(std::size_t zone, Vec2 p) const noexcept;
+  // Whether `p` lies over a visible zone: what a ground sensor there reads.
+  [[nodiscard]] bool visible_at(Vec2 p) const noexcept;
   [[nodiscard]] int sweep_columns() const noexcept { return sweep_cols_; }
   [[nodiscard]] int sweep_rows() const noexcept { return sweep_rows_; }
 

@@ -86,6 +86,25 @@ struct EnergyParams {
   int recharge_steps = 100;         // paper: "a full recharge takes 100 time steps"
 };
 
+// Ground sensors under the body (the Thymio II's two, `prox.ground`): each reads 1 where its
+// point is over a visible zone (a dark mark on the floor, as the centre's `ground` does), 0
+// elsewhere. None by default.
+inline constexpr int kMaxGroundSensors = 4;
+
+// A ground sensor's point: its direction from the body's centre (radians from the heading,
+// positive = left) and its distance from it.
+struct GroundMount {
+  double bearing_rad = 0.0;
+  double radius_m = 0.0;
+  friend bool operator==(const GroundMount&, const GroundMount&) = default;
+};
+
+struct GroundSensorParams {
+  std::vector<GroundMount> mounts;   // at most kMaxGroundSensors; `ground_sensor[i]` reads mounts[i]
+  // The name scripts read them by (the Thymio's `prox_ground[i]`), as IrParams::name.
+  std::string name = "ground_sensor";
+};
+
 // Lehman & Stanley's (2011) maze navigator's sensors, on the Khepera (docs/robot-model.md,
 // "Rangefinders" and "Goal radars"). Neither is read unless declared: none by default.
 // Most rangefinders and radar slices: the observable frame holds as many `range` and
@@ -138,6 +157,7 @@ struct RobotParams {
   LightSensorParams light;
   EnergyParams energy;
   RangefinderParams rangefinders;
+  GroundSensorParams ground;
   // Pie-slice goal radars: the circle around the body split into this many equal slices,
   // slice 0 centred on the heading, then counter-clockwise; 0: none. 4 are the navigator's
   // front, left, back and right.

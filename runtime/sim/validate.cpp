@@ -176,6 +176,12 @@ constexpr RuleInfo kRules[] = {
     {Rule::OutlineWithoutWheels, O::Robot, "body_outline", kNoiseAlso, R::AtMost, D::Count,
      "robot.outline vertex count under the acceleration drive",
      "the acceleration drive moves a disc (a move that brings its rim to a wall is cancelled)"},
+    {Rule::GroundCount, O::Robot, "ground_sensors", {}, R::AtMost, D::Count, "robot.ground.mounts count",
+     "the observable frame holds 4 `ground_sensor` slots"},
+    {Rule::GroundMountRadiusMin, O::Robot, "ground_sensors", {}, R::AtLeast, D::Length,
+     "robot.ground.mounts[{}].radius_m", "a sensor sits under the body"},
+    {Rule::GroundMountRadiusMax, O::Robot, "ground_sensors", kIrMountAlso, R::AtMost, D::Length,
+     "robot.ground.mounts[{}].radius_m against the body's radius", "a sensor sits under the body"},
 };
 
 constexpr bool in_rule_order() {
@@ -184,7 +190,7 @@ constexpr bool in_rule_order() {
   return true;
 }
 static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
-static_assert(static_cast<std::size_t>(Rule::OutlineWithoutWheels) + 1 == std::size(kRules));
+static_assert(static_cast<std::size_t>(Rule::GroundMountRadiusMax) + 1 == std::size(kRules));
 
 // True when `found` relates to `limit` as `rel` demands; NaN never does.
 bool holds(Relation rel, double found, double limit) {
@@ -456,6 +462,13 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
   c.require(Rule::IrNoise, robot.ir.noise_sd, 0.0);
   check_ir_layout(robot, body, c);
   check_outline(robot, body, c);
+  c.at_most(Rule::GroundCount, robot.ground.mounts.size(), kMaxGroundSensors);
+  for (std::size_t i = 0; i < robot.ground.mounts.size(); ++i) {
+    const double r = robot.ground.mounts[i].radius_m;
+    const int at = static_cast<int>(i);
+    if (c.require(Rule::GroundMountRadiusMin, r, 0.0, at) && body)
+      c.require(Rule::GroundMountRadiusMax, r, robot.body_radius_m, at);
+  }
   const bool step = c.require(Rule::ControlStep, robot.control_step_s, 0.0);
   const bool substeps = c.require(Rule::SubstepsMin, robot.physics_substeps, 1) &&
                         c.require(Rule::SubstepsMax, robot.physics_substeps, kMaxPhysicsSubsteps);

@@ -54,7 +54,8 @@ enum class Rule {
   SubstepsMax, LightHalfDistance, LightNoise, EnergyDischargeMin, EnergyDischargeMax,
   EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
   ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels, OutlineCountMin, OutlineCountMax, OutlineConvex,
-  OutlineAroundCentre, OutlineWithinRadius, OutlineWithoutWheels,
+  OutlineAroundCentre, OutlineWithinRadius, OutlineWithoutWheels, GroundCount, GroundMountRadiusMin,
+  GroundMountRadiusMax,
 };
 
 enum class Object { Arena, Placement, Robot };

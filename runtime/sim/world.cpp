@@ -165,6 +165,17 @@ void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
   impl_->light.read(impl_->state.pose, impl_->geometry, lights.data(), lights.size(), out, rng);
 }
 void World::read_rangefinders(std::span<double> out) const { impl_->rangefinders.read(impl_->state.pose, out); }
+void World::read_ground(std::span<double> out) const {
+  const Pose& pose = impl_->state.pose;
+  const double c = std::cos(pose.heading_rad), s = std::sin(pose.heading_rad);
+  const std::vector<GroundMount>& mounts = impl_->robot.ground.mounts;
+  for (std::size_t i = 0; i < mounts.size() && i < out.size(); ++i) {
+    const double a = std::cos(mounts[i].bearing_rad) * mounts[i].radius_m;
+    const double b = std::sin(mounts[i].bearing_rad) * mounts[i].radius_m;
+    out[i] = impl_->floor.visible_at({pose.x_m + c * a - s * b, pose.y_m + s * a + c * b}) ? 1.0 : 0.0;
+  }
+}
+
 std::span<const Vec2> World::zone_centers() const noexcept { return impl_->floor.zone_centers(); }
 std::span<const Vec2> World::light_positions() const noexcept { return impl_->floor.light_positions(); }
 bool World::in_zone(std::size_t zone, Vec2 p) const noexcept { return impl_->floor.in_zone(zone, p); }

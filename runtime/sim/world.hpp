@@ -86,6 +86,10 @@ class World {
   // no allocation.
   void read_rangefinders(std::span<double> out) const;
 
+  // Ground sensor readings, 1 over a visible zone and 0 elsewhere, in the order the robot
+  // declares them, into out[0 .. robot().ground.mounts.size()). No noise, no allocation.
+  void read_ground(std::span<double> out) const;
+
   // Where the zones' centres and the lights' floor positions are this epoch (index as in
   // the ArenaSpec), for replays.
   [[nodiscard]] std::span<const Vec2> zone_centers() const noexcept;

@@ -122,7 +122,7 @@ const std::string kTwoBodies =
     "controller t = tree(wheels, primitives terms)\n"
     "experiment e {\n  arena a  robot puck  fitness f\n  evolve es(mu 2, lambda 4)  evolve gp(population 10)\n  compare p, t\n}\n";
 
-TEST(IrNames, TheRobotNamesItsSensors) {
+TEST(SensorNames, TheRobotNamesItsSensors) {
   const eval::ExperimentSpec x = compiled(kTwoBodies);
   EXPECT_EQ(x.robot.ir.name, "prox");
   ASSERT_EQ(x.controllers.at(0).mlp.inputs.size(), 8u);
@@ -131,7 +131,7 @@ TEST(IrNames, TheRobotNamesItsSensors) {
   EXPECT_EQ(test::paper().resolved_settings.at("robot.ir_name"), "ir");
 }
 
-TEST(IrNames, AControllerForAnotherBodyIsAnErrorAtTheRead) {
+TEST(SensorNames, AControllerForAnotherBodyIsAnErrorAtTheRead) {
   std::string out = refused(kTwoBodies + "experiment k { arena a  fitness f  compare p }\n");
   EXPECT_NE(out.find("ir.esc:3:32: error: `prox` names IR sensors, but the robot of experiment `k` calls its IR "
                      "sensors `ir`"),
@@ -153,9 +153,9 @@ TEST(IrNames, AControllerForAnotherBodyIsAnErrorAtTheRead) {
       << out;
 }
 
-TEST(IrNames, ANameMustBeItsOwnAndIsSetInARobotBlock) {
+TEST(SensorNames, ANameMustBeItsOwnAndIsSetInARobotBlock) {
   std::string out = refused(script("  ir_name speed"));
-  EXPECT_NE(out.find("ir.esc:3:11: error: `speed` is an observable of every robot; the IR sensors need a name of their "
+  EXPECT_NE(out.find("ir.esc:3:11: error: `speed` is an observable of every robot; these sensors need a name of their "
                      "own"),
             std::string::npos)
       << out;
@@ -169,7 +169,7 @@ TEST(IrNames, ANameMustBeItsOwnAndIsSetInARobotBlock) {
 }
 
 // The standard library's e-puck: the constants docs/robot-model.md cites, read as written.
-TEST(IrNames, TheLibrarysEpuckIsAsCited) {
+TEST(SensorNames, TheLibrarysEpuckIsAsCited) {
   const auto r = compile_file(test::source_dir() / "experiments/bodies/epuck_obstacle_avoidance.esc", options());
   ASSERT_TRUE(r.ok()) << rendered(r);
   const sim::RobotParams& puck = r.experiments.at(0).robot;
@@ -213,6 +213,42 @@ TEST(Bodies, TheLibrarysNavigatorIsAsCited) {
   const std::string out = refused(maze + "controller K = mlp(ir[0..1] -> wheels)\n"
                                          "experiment k { arena m  robot navigator  fitness near  compare K }\n");
   EXPECT_NE(out.find("`ir[0]` reads IR sensor 0, but the robot of experiment `k` has none"), std::string::npos) << out;
+}
+
+// Ground sensors: their points read in SI, their name the robot's (`prox_ground` on the
+// Thymio), a network input by that name, and a read beyond them or by another body's name an
+// error at the read.
+const std::string kGrounded =
+    "arena a { size 1m x 1m }\n"
+    "robot t { ground_name prox_ground  ground_sensors [(9deg, 2.3cm), (-9deg, 2.3cm)] }\n"
+    "fitness f { step: speed * (1 - prox_ground[0]) }\n"
+    "controller g = mlp(prox_ground[0..1], ir[0..1] -> wheels)\n"
+    "experiment e { arena a  robot t  fitness f  compare g }\n";
+
+TEST(GroundSensors, NamedByTheRobotAndReadInSi) {
+  const eval::ExperimentSpec x = compiled(kGrounded);
+  ASSERT_EQ(x.robot.ground.mounts.size(), 2u);
+  EXPECT_DOUBLE_EQ(x.robot.ground.mounts[1].bearing_rad, -9 * kDeg);
+  EXPECT_DOUBLE_EQ(x.robot.ground.mounts[1].radius_m, 0.023);
+  EXPECT_EQ(x.robot.ground.name, "prox_ground");
+  EXPECT_EQ(x.controllers.at(0).mlp.inputs.at(1), expr::slot::ground_sensor + 1);
+  EXPECT_EQ(test::paper().resolved_settings.at("robot.ground_sensors"), "[]");
+  EXPECT_EQ(test::paper().resolved_settings.at("robot.ground_name"), "ground_sensor");
+}
+
+TEST(GroundSensors, AReadBeyondThemOrByAnotherNameIsAnErrorAtTheRead) {
+  std::string text = kGrounded;
+  text.replace(text.find("prox_ground[0..1]"), 17, "prox_ground[0..2]");
+  std::string out = refused(text);
+  EXPECT_NE(out.find("ir.esc:4:20: error: `ground_sensor[2]` reads ground sensor 2, but the robot of experiment `e` "
+                     "has 2 (`prox_ground[0]` .. `prox_ground[1]`)"),
+            std::string::npos)
+      << out;
+  out = refused(kGrounded + "experiment k { arena a  fitness f  compare g }\n");
+  EXPECT_NE(out.find("`prox_ground` names ground sensors, but the robot of experiment `k` calls its ground sensors "
+                     "`ground_sensor`"),
+            std::string::npos)
+      << out;
 }
 
 }  // namespace

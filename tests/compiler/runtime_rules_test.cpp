@@ -202,6 +202,12 @@ const std::vector<Row>& rows() {
        "1:24", "the outline does not hold the point the wheels turn about: that point lies 1cm outside an edge"},
       {Rule::OutlineWithinRadius, "robot r { body_outline [(-1cm, -1cm), (5cm, 0cm), (-1cm, 1cm)] }", "1:39",
        "outline vertex 1 lies 5cm from the centre, beyond `body_radius` (2.75cm)"},
+      {Rule::GroundCount, "robot r { ground_sensors [(0deg, 1cm), (0deg, 1cm), (0deg, 1cm), (0deg, 1cm), (0deg, 1cm)] }",
+       "1:79", "a robot has at most 4 ground sensors, found 5"},
+      {Rule::GroundMountRadiusMin, "robot r { ground_sensors [(0deg, 1cm), (10deg, -1cm)] }", "1:40",
+       "ground sensor 1 sits -1cm from the body's centre: a distance is never negative"},
+      {Rule::GroundMountRadiusMax, "robot r { ground_sensors [(0deg, 4cm)] }", "1:27",
+       "ground sensor 0 sits 4cm from the body's centre, outside the body (radius 2.75cm)"},
       {Rule::OutlineWithoutWheels, "robot r { drive acceleration  body_outline [(-1cm, -1cm), (1cm, 0cm), (-1cm, 1cm)] }",
        "1:44", "an outline needs the differential drive: the acceleration drive moves a disc"},
   };

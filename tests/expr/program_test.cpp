@@ -113,7 +113,8 @@ TEST(Observables, EveryNameResolvesToItsSlots) {
   EXPECT_EQ(find_observable("goal_distance")->first, slot::goal_distance);
   EXPECT_EQ(find_observable("range")->count, kRangeCount);
   EXPECT_TRUE(find_observable("radar")->indexed);
-  EXPECT_EQ(find_observable("radar")->first + kRadarCount, kFrameSize);
+  EXPECT_EQ(find_observable("radar")->first + kRadarCount, find_observable("ground_sensor")->first);
+  EXPECT_EQ(find_observable("ground_sensor")->first + kGroundSensorCount, kFrameSize);
 }
 
 }  // namespace

@@ -16,11 +16,13 @@ using expr::Frame;
 namespace slot = expr::slot;
 
 TEST(SimObserve, FrameLayout) {
-  // The navigator's observables come after `param`, which kept its slots, and end the frame.
+  // The navigator's observables come after `param`, which kept its slots, then the ground
+  // sensors, which end the frame.
   EXPECT_EQ(slot::param, 44U);
   EXPECT_EQ(expr::kFrameSizeBeforeNavigator, slot::param + expr::kMaxParams);
   EXPECT_EQ(slot::x, expr::kFrameSizeBeforeNavigator);
-  EXPECT_EQ(expr::kFrameSize, slot::radar + expr::kRadarCount);
+  EXPECT_EQ(slot::ground_sensor, slot::radar + expr::kRadarCount);
+  EXPECT_EQ(expr::kFrameSize, slot::ground_sensor + expr::kGroundSensorCount);
   // Every slot belongs to exactly one observable, parametrised block or param.
   std::set<expr::Slot> used;
   const auto claim = [&](expr::Slot first, expr::Slot count) {

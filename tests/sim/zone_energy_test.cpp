@@ -227,6 +227,29 @@ ArenaSpec random_zone_arena() {
   return a;
 }
 
+// Ground sensors read the floor at their own points: 1 over a visible zone, 0 over an
+// invisible one or bare floor, each turning with the body.
+TEST(SimZones, GroundSensorsReadVisibleZonesAtTheirPoints) {
+  ArenaSpec a = test::empty_arena(0.6, 0.6);
+  a.zones.push_back(rectangle(0.45, 0.3, 0.1, 0.2, false, true));   // visible, x 0.40 .. 0.50
+  a.zones.push_back(rectangle(0.15, 0.3, 0.1, 0.2));                // invisible, x 0.10 .. 0.20
+  RobotParams robot;
+  robot.ground.mounts = {{0.0, 0.025}, {std::numbers::pi, 0.025}};   // 2.5 cm ahead and behind
+  World world(a, robot);
+  std::array<double, 2> g{};
+  const auto read = [&](Pose p) {
+    world.reset(p);
+    world.read_ground(g);
+    return std::pair(g[0], g[1]);
+  };
+  EXPECT_EQ(read({0.38, 0.3, 0.0}), std::pair(1.0, 0.0));    // the front point at 0.405
+  EXPECT_EQ(read({0.38, 0.3, std::numbers::pi}), std::pair(0.0, 1.0));   // turned: the back one
+  EXPECT_EQ(read({0.45, 0.3, 0.0}), std::pair(1.0, 1.0));
+  EXPECT_EQ(read({0.45, 0.3, std::numbers::pi / 2}), std::pair(1.0, 1.0));   // along the zone
+  EXPECT_EQ(read({0.15, 0.3, 0.0}), std::pair(0.0, 0.0));    // invisible
+  EXPECT_EQ(read({0.3, 0.1, 0.0}), std::pair(0.0, 0.0));     // bare floor
+}
+
 TEST(SimZones, RandomPlacementInsideClearAndDeterministic) {
   const ArenaSpec a = random_zone_arena();
   World w(a, RobotParams{});
