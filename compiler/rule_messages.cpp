@@ -160,24 +160,29 @@ RuleMessage placement_message(const sim::Problem& p, const RuleContext& c) {
   }
 }
 
+// "a robot has at most 8 IR sensors, found 9", with the rule's reason.
+RuleMessage too_many(const sim::Problem& p, std::string_view what) {
+  return {fmt::format("a robot has at most {} {}, found {}", shown(p.limit, Dimension::Count), what,
+                      shown(p.found, Dimension::Count)),
+          {std::string(p.info().why)}};
+}
+
+// A sensor's mount point off the body: nearer than 0 (limit 0) or beyond the body's radius.
+RuleMessage sits(const sim::Problem& p, std::string_view sensor, std::string_view help) {
+  const std::string where = fmt::format("{} {} sits {} from the body's centre", sensor, p.index,
+                                        shown(p.found, Dimension::Length));
+  if (p.info().relation == sim::Relation::AtLeast) return {where + ": a distance is never negative", {}};
+  RuleMessage m{fmt::format("{}, outside the body (radius {})", where, shown(p.limit, Dimension::Length)), {}};
+  if (!help.empty()) m.help.emplace_back(help);
+  return m;
+}
+
 RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
   switch (p.rule) {
-    case Rule::RangefinderCount:
-      return {fmt::format("a robot has at most {} rangefinders, found {}", shown(p.limit, Dimension::Count),
-                          shown(p.found, Dimension::Count)),
-              {std::string(p.info().why)}};
-    case Rule::IrCount:
-      return {fmt::format("a robot has at most {} IR sensors, found {}", shown(p.limit, Dimension::Count),
-                          shown(p.found, Dimension::Count)),
-              {std::string(p.info().why)}};
-    case Rule::IrMountRadiusMin:
-      return {fmt::format("IR sensor {} sits {} from the body's centre: a distance is never negative", p.index,
-                          shown(p.found, Dimension::Length)),
-              {}};
-    case Rule::IrMountRadiusMax:
-      return {fmt::format("IR sensor {} sits {} from the body's centre, outside the body (radius {})", p.index,
-                          shown(p.found, Dimension::Length), shown(p.limit, Dimension::Length)),
-              {"leave the distance out for a sensor on the rim"}};
+    case Rule::RangefinderCount: return too_many(p, "rangefinders");
+    case Rule::IrCount: return too_many(p, "IR sensors");
+    case Rule::IrMountRadiusMin: return sits(p, "IR sensor", {});
+    case Rule::IrMountRadiusMax: return sits(p, "IR sensor", "leave the distance out for a sensor on the rim");
     case Rule::IrCurve:
       return {fmt::format("Enki's IR curve needs `ir_curve_c` above `ir_curve_x0` squared; c - x0^2 is {}cm2",
                           number(p.found)),
@@ -204,18 +209,9 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
                           "(no wheels); found {}",
                           number(p.found)),
               {"leave `motor_noise` at 0, or use `drive differential`"}};
-    case Rule::GroundCount:
-      return {fmt::format("a robot has at most {} ground sensors, found {}", shown(p.limit, Dimension::Count),
-                          shown(p.found, Dimension::Count)),
-              {std::string(p.info().why)}};
+    case Rule::GroundCount: return too_many(p, "ground sensors");
     case Rule::GroundMountRadiusMin:
-      return {fmt::format("ground sensor {} sits {} from the body's centre: a distance is never negative", p.index,
-                          shown(p.found, Dimension::Length)),
-              {}};
-    case Rule::GroundMountRadiusMax:
-      return {fmt::format("ground sensor {} sits {} from the body's centre, outside the body (radius {})", p.index,
-                          shown(p.found, Dimension::Length), shown(p.limit, Dimension::Length)),
-              {}};
+    case Rule::GroundMountRadiusMax: return sits(p, "ground sensor", {});
     case Rule::OutlineCountMin:
       return {fmt::format("an outline needs at least 3 vertices, found {}", shown(p.found, Dimension::Count)), {}};
     case Rule::OutlineCountMax:
