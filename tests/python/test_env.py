@@ -159,3 +159,18 @@ def test_the_observation_is_the_robots_own_senses_by_its_names():
                   "controller N = mlp(range[0..5], radar[0..3] -> wheels)\n"
                   "experiment e { arena m  robot navigator  fitness near  compare N }\n", seed=1)
     assert nav.observation_names == [f"range[{i}]" for i in range(6)] + [f"radar[{i}]" for i in range(4)] + ["energy"]
+    # The Thymio II's seven horizontal sensors; ground sensors by the name the robot gives them,
+    # 1 over the visible mark the robot starts on.
+    thymio = esc.Env('import "lib/thymio2.esc"\n'
+                     "robot grounded = thymio2 { ground_name prox_ground  ground_sensors [(9deg, 7cm), (-9deg, 7cm)] }\n"
+                     "arena m { size 1m x 1m  zone mark rect 10cm x 20cm at (60cm, 50cm) visible\n"
+                     "  start at (50cm, 50cm) heading 0deg }\n"
+                     "fitness f { step: speed }\n"
+                     "controller C = mlp(prox_horizontal[0..6], prox_ground[0..1] -> wheels)\n"
+                     "experiment e { arena m  robot grounded  fitness f  compare C }\n", seed=1)
+    names = thymio.observation_names
+    assert names[:7] == [f"prox_horizontal[{i}]" for i in range(7)]
+    assert names[-3:] == ["prox_ground[0]", "prox_ground[1]", "energy"]
+    observation, _ = thymio.reset()
+    assert observation.shape == (7 + 7 + 2 + 1,)
+    assert list(observation[-3:-1]) == [1.0, 1.0]
