@@ -296,6 +296,7 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                epochs_text(epochs, spec.epochs), spec.arena_name, s.seed);
   frame.arena = spec.arena;
   frame.robot_radius_m = spec.robot.body_radius_m;
+  frame.robot_outline_m = spec.robot.outline;
   frame.choices = controller->choice_names();
   write_atomically(out / (stem + ".svg"), report::trajectory_svg(done.figure()));
   write_atomically(out / (stem + ".csv"),

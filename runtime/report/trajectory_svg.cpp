@@ -176,11 +176,21 @@ void draw_paths(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
                        first.epoch + 1);
     const double x = at.x(last.pose.x_m);
     const double y = at.y(last.pose.y_m);
-    svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5"/>)~"
-                       "\n" R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="1.5"/>)~" "\n"
-                       R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
-                       x, y, r_mm, x, y, x + r_mm * std::cos(last.pose.heading_rad),
-                       y - r_mm * std::sin(last.pose.heading_rad), x + r_mm + 3.0, y + r_mm + 8.0, last.epoch + 1);
+    constexpr std::string_view kBody = R"~(fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5")~";
+    if (f.robot_outline_m.empty()) {
+      svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" {}/>)~" "\n", x, y, r_mm, kBody);
+    } else {
+      const double c = std::cos(last.pose.heading_rad), s = std::sin(last.pose.heading_rad);
+      std::string points;
+      for (const sim::Vec2& v : f.robot_outline_m)
+        points += fmt::format("{}{:.1f},{:.1f}", points.empty() ? "" : " ", at.x(last.pose.x_m + c * v.x - s * v.y),
+                              at.y(last.pose.y_m + s * v.x + c * v.y));
+      svg += fmt::format(R"~(<polygon points="{}" {}/>)~" "\n", points, kBody);
+    }
+    svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="1.5"/>)~"
+                       "\n" R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
+                       x, y, x + r_mm * std::cos(last.pose.heading_rad), y - r_mm * std::sin(last.pose.heading_rad),
+                       x + r_mm + 3.0, y + r_mm + 8.0, last.epoch + 1);
   }
 }
 

@@ -19,6 +19,7 @@ struct TrajectoryFigure {
   std::string subtitle;                     // under the title (fitness, seed, ...)
   sim::ArenaSpec arena;
   double robot_radius_m = 0.0;
+  std::vector<sim::Vec2> robot_outline_m;   // the body's outline (sim::RobotParams::outline); empty: the disc
   std::vector<std::string> choices;         // action or behavior names; empty: classical head
   std::span<const eval::TraceStep> steps;   // the epochs drawn, each in step order
 };

@@ -1,6 +1,8 @@
 // Bodies from the command line: the library's navigator (acceleration drive, kinematic)
 // evolves NEAT networks that improve, whatever the threads; its replay CSV has the sensors it
-// has (rangefinders and radars, no IR columns) and reproduces the stored fitness.
+// has (rangefinders and radars, no IR columns) and reproduces the stored fitness. The Thymio
+// II's replay draws its outline and names its seven sensors.
+#include <algorithm>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -38,6 +40,32 @@ TEST(Bodies, TheNavigatorEvolvesAndImprovesWhateverTheThreads) {
   EXPECT_NE(header.find(",right_speed_mps,range0,range1,range2,range3,range4,range5,radar0,"), std::string::npos)
       << header;
   EXPECT_EQ(header.find(",ir0"), std::string::npos) << header;
+}
+
+TEST(Bodies, TheThymiosReplayDrawsItsOutlineAndNamesItsSensors) {
+  const fs::path dir = scratch("thymio-run");
+  const Outcome run = esc("run " + std::string(ESC_SOURCE_DIR) +
+                          "/experiments/bodies/thymio_obstacle_avoidance.esc --experiment thymio_obstacle_avoidance "
+                          "--runs 1 --generations 2 --set epochs=1 --set steps=60 --controllers SC_8_14_6 --out " +
+                          dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const fs::path replay = scratch("thymio-replay");
+  const Outcome shown = esc("replay " + dir.string() + " --out " + replay.string());
+  ASSERT_EQ(shown.status, 0) << shown.output;
+  EXPECT_NE(shown.output.find("identical to the stored replay"), std::string::npos) << shown.output;
+  std::string csv, svg;
+  for (const auto& f : fs::directory_iterator(replay)) {
+    if (f.path().extension() == ".csv") csv = slurp(f.path());
+    if (f.path().extension() == ".svg") svg = slurp(f.path());
+  }
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_NE(header.find(",prox_horizontal6,"), std::string::npos) << header;
+  EXPECT_EQ(header.find(",prox_horizontal7"), std::string::npos) << header;
+  // The body at the end of the epoch: its 13 vertices, not a circle.
+  const auto at = svg.find("<polygon points=\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string points = svg.substr(at, svg.find('"', at + 17) - at);
+  EXPECT_EQ(std::count(points.begin(), points.end(), ','), 13) << points;
 }
 
 }  // namespace

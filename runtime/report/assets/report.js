@@ -477,8 +477,19 @@
         values.forEach((v, i) => { fill[i].style.width = `${Math.round(100 * v)}%`; text[i].textContent = v.toFixed(2); });
       }};
     }
-    const irs = bars([0, 1, 2, 3, 4, 5, 6, 7].map(i => `IR ${i}`), 'ir');
-    const lights = bars([0, 1, 2, 3, 4, 5, 6, 7].map(i => `light ${i}`), 'light');
+    // The body and its IR sensors as the stored settings give them ("[(1.18 rad, 1.57 rad), (0.2
+    // rad, 0 rad, 0.035 m)]", an outline "[(-0.03 m, -0.055 m), ...]"): mount bearing, axis and
+    // distance (rim when absent), in radians and millimetres. A run stored before a robot's
+    // sensors were settings has the Khepera's (the report's own arrays) and the disc.
+    const tuples = text => (text.match(/\(([^)]*)\)/g) || []).map(t => t.slice(1, -1).split(',').map(parseFloat));
+    const settings = exp.settings || {};
+    const irMounts = 'robot.ir_sensors' in settings
+      ? tuples(settings['robot.ir_sensors']).map(([b, f, d]) => ({ b, f, mm: d === undefined ? null : d * 1000 }))
+      : exp.ir_mount_deg.map((b, i) => ({ b: b * Math.PI / 180, f: exp.ir_facing_deg[i] * Math.PI / 180, mm: null }));
+    const outlineMm = tuples(settings['robot.body_outline'] || '').map(([px, py]) => [px * 1000, py * 1000]);
+    const irName = settings['robot.ir_name'] || 'IR';
+    const irs = bars(irMounts.map((_, i) => `${irName} ${i}`), 'ir');
+    const lights = bars(irMounts.map((_, i) => `light ${i}`), 'light');
     const accumulator = bars(['energy'], 'energy');
     // The maze navigator's rangefinders and goal radars, where the robot has them (their
     // readings follow the lights in each row). The angles are the stored setting's, as
@@ -608,17 +619,28 @@
       ctx.fillStyle = collisionColour;
       for (let i = start; i <= index; ++i)
         if (rows[i][10]) { ctx.beginPath(); ctx.arc(X(rows[i][2]), Y(rows[i][3]), 3, 0, 2 * Math.PI); ctx.fill(); }
-      // The robot, its heading and its 8 IR sensors (mount and facing angles from the simulator).
+      // The robot (its disc, or its outline), its heading and its IR sensors, where they sit
+      // and where they look.
       const rr = exp.robot_radius_mm;
       ctx.fillStyle = collided ? 'rgba(214,39,40,0.35)' : 'rgba(31,119,180,0.25)';
       ctx.strokeStyle = '#1d2330'; ctx.lineWidth = 1.5;
-      ctx.beginPath(); ctx.arc(X(x), Y(y), rr * scale, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      ctx.beginPath();
+      if (outlineMm.length >= 3) {
+        const c = Math.cos(heading), s = Math.sin(heading);
+        outlineMm.forEach(([px, py], i) => {
+          const vx = X(x + c * px - s * py), vy = Y(y + s * px + c * py);
+          if (i === 0) ctx.moveTo(vx, vy); else ctx.lineTo(vx, vy);
+        });
+        ctx.closePath();
+      } else {
+        ctx.arc(X(x), Y(y), rr * scale, 0, 2 * Math.PI);
+      }
+      ctx.fill(); ctx.stroke();
       ctx.beginPath(); ctx.moveTo(X(x), Y(y));
       ctx.lineTo(X(x + rr * Math.cos(heading)), Y(y + rr * Math.sin(heading))); ctx.stroke();
-      for (let i = 0; i < 8; ++i) {
-        const m = heading + exp.ir_mount_deg[i] * Math.PI / 180;    // where the sensor sits
-        const f = heading + exp.ir_facing_deg[i] * Math.PI / 180;   // where it looks
-        const sx = x + rr * Math.cos(m), sy = y + rr * Math.sin(m);
+      for (let i = 0; i < irMounts.length && i < ir.length; ++i) {
+        const m = heading + irMounts[i].b, f = heading + irMounts[i].f, at = irMounts[i].mm ?? rr;
+        const sx = x + at * Math.cos(m), sy = y + at * Math.sin(m);
         const len = 6 + 30 * ir[i];
         ctx.strokeStyle = alpha('#d9822b', 0.25 + 0.75 * ir[i]); ctx.lineWidth = 2;
         ctx.beginPath(); ctx.moveTo(X(sx), Y(sy));
@@ -645,9 +667,9 @@
           });
         ranges.show(r[rangeAt]);
       }
-      irs.show(ir);
+      irs.show(ir.slice(0, irMounts.length));
       // Replays stored before the light sensors were traced have none.
-      lights.show(light || [0, 0, 0, 0, 0, 0, 0, 0]);
+      lights.show((light || [0, 0, 0, 0, 0, 0, 0, 0]).slice(0, irMounts.length));
       accumulator.show([energy === undefined ? 1 : energy]);
       action.textContent = act >= 0 ? (c.actions[act] || `action ${act}`) : 'wheels (classical head)';
       action.style.background = act >= 0 ? alpha(choiceColour(act, c.actions.length), 0.3) : '#e9eef8';
