@@ -300,6 +300,7 @@ bool ControllerLowering::bind(control::ControllerSpec& c, const ast::ControllerD
                       navigation.radars,
                       navigation.ir_sensors,
                       navigation.ground_sensors,
+                      navigation.bumpers,
                       navigation.names};
   auto [checked, fresh] = sensors_ok_.try_emplace(key, true);
   if (fresh) checked->second = check_sensors(c, d, navigation);

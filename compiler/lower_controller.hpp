@@ -58,7 +58,7 @@ class ControllerLowering {
   std::map<const ast::ControllerDecl*, std::vector<InputSlots>> inputs_;
   // Whether a controller's inputs, terminals and frozen controllers have their sensors, per
   // (controller, goal, rangefinders, radars): reported once, not once per experiment.
-  using SensorKey = std::tuple<const ast::ControllerDecl*, bool, int, int, int, int,
+  using SensorKey = std::tuple<const ast::ControllerDecl*, bool, int, int, int, int, int,
                                std::map<std::string, std::string, std::less<>>>;
   std::map<SensorKey, bool> sensors_ok_;
   bool check_sensors(const control::ControllerSpec& c, const ast::ControllerDecl& d, const Navigation& navigation);

@@ -115,6 +115,22 @@ bool read_sensor_name(const ast::Value& v, std::string_view name, std::string_vi
   return true;
 }
 
+constexpr Dim kSectorDims[] = {Dim::Angle, Dim::Angle};
+
+bool read_bumpers(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
+  const auto rows = read_tuples(v, name, {kSectorDims, 0, "[(-45deg, 45deg), (135deg, 225deg)]"}, sink);
+  if (!rows) return false;
+  p.bumpers.clear();
+  for (const std::vector<double>& r : *rows) p.bumpers.push_back({r[0], r[1]});
+  return true;
+}
+
+std::string bumpers_text(const sim::RobotParams& p) {
+  return bracketed(p.bumpers, [](const sim::BumperSector& b) {
+    return fmt::format("({}, {})", with_unit(b.from_rad, Dim::Angle), with_unit(b.to_rad, Dim::Angle));
+  });
+}
+
 constexpr Dim kGroundDims[] = {Dim::Angle, Dim::Length};
 
 bool read_ground_sensors(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
@@ -257,6 +273,10 @@ const std::vector<RobotSetting>& robot_settings() {
        "ground sensors under the body, in the order `ground_sensor[i]` reads them: (bearing from the heading, "
        "distance from the centre)",
        nullptr, nullptr, read_ground_sensors, ground_sensors_text},
+      {"bumpers", K::List, Dim::Angle,
+       "bumpers in the order `bumper[i]` reads them: (from, to), the sector of the body's edge counter-clockwise "
+       "from one bearing to the other",
+       nullptr, nullptr, read_bumpers, bumpers_text},
       {kRenamableSensors[1].setting, K::Word, Dim::None,
        "the name scripts read the ground sensors by (`ground_sensor[i]`; the Thymio's `prox_ground[i]`)", nullptr,
        nullptr,

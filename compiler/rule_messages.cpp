@@ -210,6 +210,12 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
                           number(p.found)),
               {"leave `motor_noise` at 0, or use `drive differential`"}};
     case Rule::GroundCount: return too_many(p, "ground sensors");
+    case Rule::BumperCount: return too_many(p, "bumpers");
+    case Rule::BumperSectorMin:
+    case Rule::BumperSectorMax:
+      return {fmt::format("bumper {} spans {} from its first angle to its second, counter-clockwise", p.index,
+                          shown(p.found, Dimension::Angle)),
+              {"write a bumper as (from, to) with to above from by at most 360deg: (-45deg, 45deg) is the front quarter"}};
     case Rule::GroundMountRadiusMin:
     case Rule::GroundMountRadiusMax: return sits(p, "ground sensor", {});
     case Rule::OutlineCountMin:

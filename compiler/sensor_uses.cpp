@@ -52,6 +52,7 @@ Navigation navigation_of(const eval::ExperimentSpec& x) {
           x.robot.radars,
           static_cast<int>(x.robot.ir.mounts.size()),
           static_cast<int>(x.robot.ground.mounts.size()),
+          static_cast<int>(x.robot.bumpers.size()),
           {{"ir", x.robot.ir.name}, {"ground_sensor", x.robot.ground.name}}};
 }
 
@@ -110,6 +111,9 @@ std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
       static_cast<int>(slot - expr::slot::ground_sensor) >= n.ground_sensors)
     return beyond(slot, expr::slot::ground_sensor, n.ground_sensors, n, "ground sensor", n.name_of("ground_sensor"),
                   "ground_sensors [(9deg, 7.3cm), (-9deg, 7.3cm)]");
+  if (slot >= expr::slot::bumper && slot < expr::slot::bumper + expr::kBumperCount &&
+      static_cast<int>(slot - expr::slot::bumper) >= n.bumpers)
+    return beyond(slot, expr::slot::bumper, n.bumpers, n, "bumper", "bumper", "bumpers [(-45deg, 45deg)]");
   return std::nullopt;
 }
 

@@ -30,6 +30,7 @@ struct Navigation {
   int radars = 0;
   int ir_sensors = sim::kMaxIrSensors;
   int ground_sensors = 0;
+  int bumpers = 0;
   // The names its robot reads its renamable sensors by (robot_settings.hpp), by observable:
   // `ir` -> `prox` on the e-puck; an observable not listed keeps its own name.
   std::map<std::string, std::string, std::less<>> names;

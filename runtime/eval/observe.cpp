@@ -19,6 +19,7 @@ static_assert(expr::kIrCount == sim::kIrSensors);
 static_assert(expr::kRangeCount == sim::kMaxRangefinders, "range[i] slots: one per rangefinder a robot may have");
 static_assert(expr::kRadarCount == sim::kMaxRadars, "radar[i] slots: one per radar slice");
 static_assert(expr::kGroundSensorCount == sim::kMaxGroundSensors, "ground_sensor[i] slots: one per ground sensor");
+static_assert(expr::kBumperCount == sim::kMaxBumpers, "bumper[i] slots: one per bumper");
 
 namespace {
 
@@ -62,6 +63,7 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   frame[expr::slot::wheels] = left;
   frame[expr::slot::wheels + 1] = right;
   frame[expr::slot::collision] = s.collided ? 1.0 : 0.0;
+  for (expr::Slot i = 0; i < expr::kBumperCount; ++i) frame[expr::slot::bumper + i] = (s.bumped >> i) & 1U ? 1.0 : 0.0;
   for (std::size_t i = 0; i < ir.size(); ++i) frame[expr::slot::ir + i] = ir[i];
   const sim::FloorState& floor = s.floor;
   frame[expr::slot::energy] = floor.energy;

@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 17> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -37,6 +37,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 17> kAdded{{
     // Ground sensors at points under the body (2026-12-05): none.
     {"robot.ground_sensors", "[]"},
     {"robot.ground_name", "ground_sensor"},
+    // Bumpers (2026-12-05): none.
+    {"robot.bumpers", "[]"},
 }};
 
 }  // namespace

@@ -49,6 +49,7 @@ inline constexpr Slot range = 52;         // range[0..7]: rangefinders, distance
 inline constexpr Slot radar = 60;         // radar[0..7]: 1 for the pie slice holding the goal
 // Added after the navigator's (issue 44): ground sensors at the robot's points (last).
 inline constexpr Slot ground_sensor = 68;  // ground_sensor[0..3]: 1 over a visible zone
+inline constexpr Slot bumper = 72;         // bumper[0..3]: 1 on a step the body touched within its sector
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -60,7 +61,8 @@ inline constexpr Slot kMaxParams = 4;
 inline constexpr Slot kRangeCount = 8;    // = sim::kMaxRangefinders
 inline constexpr Slot kRadarCount = 8;    // = sim::kMaxRadars
 inline constexpr Slot kGroundSensorCount = 4;   // = sim::kMaxGroundSensors
-inline constexpr Slot kFrameSize = slot::ground_sensor + kGroundSensorCount;
+inline constexpr Slot kBumperCount = 4;         // = sim::kMaxBumpers
+inline constexpr Slot kFrameSize = slot::bumper + kBumperCount;
 
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
@@ -70,6 +72,7 @@ static_assert(slot::param + kMaxParams == slot::x && slot::x + 1 == slot::y && s
 static_assert(slot::heading + 1 == slot::goal_distance && slot::goal_distance + 1 == slot::range);
 static_assert(slot::range + kRangeCount == slot::radar);
 static_assert(slot::radar + kRadarCount == slot::ground_sensor);
+static_assert(slot::ground_sensor + kGroundSensorCount == slot::bumper);
 
 // The frame's size before `x` and the slots after it existed: what the aggregates' slots
 // (below) are numbered from in a fingerprint (runtime/eval/fingerprint.cpp), so that growing
@@ -85,7 +88,8 @@ using Frame = std::array<double, kFrameSize>;
 [[nodiscard]] constexpr bool describes_last_step(Slot s) noexcept {
   return s == slot::speed || s == slot::forward_speed || s == slot::wheel_diff || s == slot::wheels ||
          s == slot::wheels + 1 || s == slot::collision || s == slot::com_speed || s == slot::new_cell ||
-         (s >= slot::reached && s < slot::reached + kMaxLights) || s == slot::noise || s == slot::acting;
+         (s >= slot::reached && s < slot::reached + kMaxLights) || s == slot::noise || s == slot::acting ||
+         (s >= slot::bumper && s < slot::bumper + kBumperCount);
 }
 
 // The aggregates an end term (a fitness's `epoch:` or `evaluation:` term) reads, in slots
@@ -151,6 +155,9 @@ inline constexpr std::array kObservables = {
     Observable{"ground_sensor", slot::ground_sensor, kGroundSensorCount, true, "boolean",
                "ground sensors in the robot's order: 1 over a visible zone, 0 elsewhere (needs `ground_sensors`; "
                "the robot may name them otherwise, the Thymio's `prox_ground`)"},
+    Observable{"bumper", slot::bumper, kBumperCount, true, "boolean",
+               "bumpers in the robot's order: 1 on a step in which the body touched a wall or obstacle within the "
+               "bumper's sector (needs `bumpers`)"},
 };
 
 // Observables that take an argument naming a thing of the arena, `in(zone)` and

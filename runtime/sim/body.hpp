@@ -85,6 +85,9 @@ class Body {
   // Whether the body touches a wall or an obstacle (its clearance is at most
   // kContactTolerance_m; the contact solver stops it at about 0).
   [[nodiscard]] bool touching() const noexcept { return touching_; }
+  // Where it touches, as a bearing from the heading (radians): towards the point of the walls
+  // and obstacles nearest to the body (geometry2d.hpp). Meaningful while touching().
+  [[nodiscard]] double contact_bearing() noexcept;
 
   [[nodiscard]] Pose pose() const noexcept {
     const btTransform& tr = body_->getWorldTransform();

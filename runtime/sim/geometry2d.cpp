@@ -97,6 +97,92 @@ double StaticGeometry2D::clearance(std::span<const Vec2> polygon, double cutoff_
   return best;
 }
 
+namespace {
+
+// The nearest of candidate contacts (a signed distance and a point of the walls or
+// obstacles); those as near within a micrometre are averaged, so that a flat side against a
+// wall, met at both its ends, touches in its middle, and a corner of two walls between them.
+struct Witness {
+  static constexpr double kTie_m = 1e-6;
+  double distance = StaticGeometry2D::kNoHit;
+  Vec2 sum;
+  int count = 0;
+  void offer(double d, Vec2 p) noexcept {
+    if (d < distance - kTie_m) {
+      *this = {d, p, 1};
+    } else if (d <= distance + kTie_m) {
+      distance = std::min(distance, d);
+      sum = {sum.x + p.x, sum.y + p.y};
+      ++count;
+    }
+  }
+  [[nodiscard]] Vec2 at() const noexcept { return {sum.x / count, sum.y / count}; }
+};
+
+// The point of segment ab nearest to p.
+Vec2 segment_point(Vec2 p, Vec2 a, Vec2 b) noexcept {
+  const Vec2 e = minus(b, a), q = minus(p, a);
+  const double len2 = e.x * e.x + e.y * e.y;
+  const double t = len2 > 0.0 ? std::clamp((q.x * e.x + q.y * e.y) / len2, 0.0, 1.0) : 0.0;
+  return {a.x + t * e.x, a.y + t * e.y};
+}
+
+}  // namespace
+
+Vec2 StaticGeometry2D::nearest_point(Vec2 p) const noexcept {
+  Witness w;
+  w.offer(p.x, {0.0, p.y});
+  w.offer(width_ - p.x, {width_, p.y});
+  w.offer(p.y, {p.x, 0.0});
+  w.offer(height_ - p.y, {p.x, height_});
+  for (const Circle& c : circles_) {
+    const double ex = p.x - c.cx, ey = p.y - c.cy, d = std::hypot(ex, ey);
+    w.offer(d - c.r, d > 0.0 ? Vec2{c.cx + c.r * ex / d, c.cy + c.r * ey / d} : Vec2{c.cx + c.r, c.cy});
+  }
+  for (const Box& b : boxes_) {
+    const double ex = p.x - b.cx, ey = p.y - b.cy;
+    const double lx = b.c * ex + b.s * ey, ly = -b.s * ex + b.c * ey;   // box frame
+    const double qx = std::abs(lx) - b.hx, qy = std::abs(ly) - b.hy;
+    double nx = std::clamp(lx, -b.hx, b.hx), ny = std::clamp(ly, -b.hy, b.hy);
+    if (qx <= 0.0 && qy <= 0.0) {   // inside: out through the nearer side
+      if (qx > qy) nx = std::copysign(b.hx, lx);
+      else ny = std::copysign(b.hy, ly);
+    }
+    const double d = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0);
+    w.offer(d, {b.cx + b.c * nx - b.s * ny, b.cy + b.s * nx + b.c * ny});
+  }
+  return w.at();
+}
+
+Vec2 StaticGeometry2D::nearest_point(std::span<const Vec2> polygon) const noexcept {
+  // Apart, two convex shapes are nearest at a vertex of one against the other: the polygon's
+  // vertices against everything, the boxes' corners and the circles against its edges.
+  Witness w;
+  for (const Vec2& v : polygon) w.offer(clearance(v), nearest_point(v));
+  const auto boundary = [&](Vec2 p) {
+    Vec2 best = polygon[0];
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2 q = segment_point(p, polygon[i], polygon[(i + 1) % polygon.size()]);
+      if (std::hypot(q.x - p.x, q.y - p.y) < std::hypot(best.x - p.x, best.y - p.y)) best = q;
+    }
+    return best;
+  };
+  for (const Circle& c : circles_) {
+    const Vec2 centre{c.cx, c.cy}, q = boundary(centre);
+    const double d = std::hypot(q.x - c.cx, q.y - c.cy);
+    if (polygon_holds(polygon, centre)) w.offer(-c.r, centre);
+    else if (d > 0.0) w.offer(d - c.r, {c.cx + c.r * (q.x - c.cx) / d, c.cy + c.r * (q.y - c.cy) / d});
+  }
+  for (const Box& b : boxes_)
+    for (const double sx : {-1.0, 1.0})
+      for (const double sy : {-1.0, 1.0}) {
+        const Vec2 corner{b.cx + b.c * sx * b.hx - b.s * sy * b.hy, b.cy + b.s * sx * b.hx + b.c * sy * b.hy};
+        const Vec2 q = boundary(corner);
+        w.offer((polygon_holds(polygon, corner) ? -1.0 : 1.0) * std::hypot(q.x - corner.x, q.y - corner.y), corner);
+      }
+  return w.at();
+}
+
 double StaticGeometry2D::obstacle_clearance(Vec2 p, double cutoff_m) const noexcept {
   return clearance_from(kNoHit, p, cutoff_m);
 }

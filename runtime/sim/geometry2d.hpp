@@ -29,6 +29,14 @@ class StaticGeometry2D {
   // most 0 when the polygon reaches one (how deep is not measured).
   [[nodiscard]] double clearance(std::span<const Vec2> polygon, double cutoff_m = kNoHit) const noexcept;
 
+  // The point of the walls and obstacles nearest to `p`, or, from inside one, the nearest
+  // point of its surface: where a disc centred on `p` touches.
+  [[nodiscard]] Vec2 nearest_point(Vec2 p) const noexcept;
+  // Where a convex polygon (counter-clockwise, in the arena's frame) comes nearest to the walls
+  // and obstacles: the point of theirs nearest to it, exact when apart; overlapping, the point
+  // of a vertex's deepest reach.
+  [[nodiscard]] Vec2 nearest_point(std::span<const Vec2> polygon) const noexcept;
+
   // The same, counting only the obstacles (boxes, segment walls and cylinders), not the
   // walled rectangle; kNoHit in an arena without obstacles.
   [[nodiscard]] double obstacle_clearance(Vec2 p, double cutoff_m = kNoHit) const noexcept;

@@ -1,5 +1,6 @@
 #include "runtime/sim/robot_params.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <numbers>
 
@@ -11,6 +12,12 @@ std::vector<IrMount> khepera_ir_mounts() {
   for (std::size_t s = 0; s < mounts.size(); ++s)
     mounts[s] = {kKheperaIrMountDeg[s] * kRadPerDeg, kKheperaIrFacingDeg[s] * kRadPerDeg, std::nullopt};
   return mounts;
+}
+
+bool BumperSector::holds(double b) const noexcept {
+  constexpr double kTurn = 2 * std::numbers::pi;
+  const double from_b = b - from_rad - kTurn * std::floor((b - from_rad) / kTurn);   // in [0, 2 pi)
+  return from_b <= to_rad - from_rad;
 }
 
 }  // namespace esc::sim

@@ -105,6 +105,19 @@ struct GroundSensorParams {
   std::string name = "ground_sensor";
 };
 
+// Bumpers: sectors of the body's edge, each reading 1 on a step in which the body touched a
+// wall or obstacle at a bearing within it (from the heading, counter-clockwise from `from_rad`
+// to `to_rad`, at most a full turn). None by default.
+inline constexpr int kMaxBumpers = 4;
+
+struct BumperSector {
+  double from_rad = 0.0;
+  double to_rad = 0.0;
+  friend bool operator==(const BumperSector&, const BumperSector&) = default;
+  // Whether bearing `b` (radians from the heading) lies in the sector.
+  [[nodiscard]] bool holds(double b) const noexcept;
+};
+
 // Lehman & Stanley's (2011) maze navigator's sensors, on the Khepera (docs/robot-model.md,
 // "Rangefinders" and "Goal radars"). Neither is read unless declared: none by default.
 // Most rangefinders and radar slices: the observable frame holds as many `range` and
@@ -158,6 +171,7 @@ struct RobotParams {
   EnergyParams energy;
   RangefinderParams rangefinders;
   GroundSensorParams ground;
+  std::vector<BumperSector> bumpers;   // at most kMaxBumpers; `bumper[i]` reads bumpers[i]
   // Pie-slice goal radars: the circle around the body split into this many equal slices,
   // slice 0 centred on the heading, then counter-clockwise; 0: none. 4 are the navigator's
   // front, left, back and right.

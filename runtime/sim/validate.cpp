@@ -182,6 +182,12 @@ constexpr RuleInfo kRules[] = {
      "robot.ground.mounts[{}].radius_m", "a sensor sits under the body"},
     {Rule::GroundMountRadiusMax, O::Robot, "ground_sensors", kIrMountAlso, R::AtMost, D::Length,
      "robot.ground.mounts[{}].radius_m against the body's radius", "a sensor sits under the body"},
+    {Rule::BumperCount, O::Robot, "bumpers", {}, R::AtMost, D::Count, "robot.bumpers count",
+     "the observable frame holds 4 `bumper` slots"},
+    {Rule::BumperSectorMin, O::Robot, "bumpers", {}, R::Above, D::Angle, "robot.bumpers[{}] width",
+     "a bumper covers some of the body's edge, counter-clockwise from its first angle to its second"},
+    {Rule::BumperSectorMax, O::Robot, "bumpers", {}, R::AtMost, D::Angle, "robot.bumpers[{}] width",
+     "a bumper covers at most the body's whole edge"},
 };
 
 constexpr bool in_rule_order() {
@@ -190,7 +196,7 @@ constexpr bool in_rule_order() {
   return true;
 }
 static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
-static_assert(static_cast<std::size_t>(Rule::GroundMountRadiusMax) + 1 == std::size(kRules));
+static_assert(static_cast<std::size_t>(Rule::BumperSectorMax) + 1 == std::size(kRules));
 
 // True when `found` relates to `limit` as `rel` demands; NaN never does.
 bool holds(Relation rel, double found, double limit) {
@@ -468,6 +474,13 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
     const int at = static_cast<int>(i);
     if (c.require(Rule::GroundMountRadiusMin, r, 0.0, at) && body)
       c.require(Rule::GroundMountRadiusMax, r, robot.body_radius_m, at);
+  }
+  c.at_most(Rule::BumperCount, robot.bumpers.size(), kMaxBumpers);
+  for (std::size_t i = 0; i < robot.bumpers.size(); ++i) {
+    const double width = robot.bumpers[i].to_rad - robot.bumpers[i].from_rad;
+    const int at = static_cast<int>(i);
+    if (c.require(Rule::BumperSectorMin, width, 0.0, at))
+      c.require(Rule::BumperSectorMax, width, 2 * std::numbers::pi + kInsideTolerance_m, at);
   }
   const bool step = c.require(Rule::ControlStep, robot.control_step_s, 0.0);
   const bool substeps = c.require(Rule::SubstepsMin, robot.physics_substeps, 1) &&

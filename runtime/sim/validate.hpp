@@ -55,7 +55,7 @@ enum class Rule {
   EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
   ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels, OutlineCountMin, OutlineCountMax, OutlineConvex,
   OutlineAroundCentre, OutlineWithinRadius, OutlineWithoutWheels, GroundCount, GroundMountRadiusMin,
-  GroundMountRadiusMax,
+  GroundMountRadiusMax, BumperCount, BumperSectorMin, BumperSectorMax,
 };
 
 enum class Object { Arena, Placement, Robot };

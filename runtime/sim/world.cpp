@@ -82,16 +82,21 @@ struct World::Impl {
     double vl = state.wheel_speed_mps[0];
     double vr = state.wheel_speed_mps[1];
     bool collided = false;
+    std::uint32_t bumped = 0;
     for (int i = 0; i < robot.physics_substeps; ++i) {
       vl = motor.step(vl, target_l);
       vr = motor.step(vr, target_r);
       body->move(drive.velocity(vl, vr, body->heading()));
-      if (body->touching()) collided = true;
+      if (body->touching()) {
+        collided = true;
+        if (!robot.bumpers.empty()) bumped |= bumpers_at(body->contact_bearing());
+      }
       floor.substep(body->position());
     }
     state.wheel_speed_mps[0] = vl;
     state.wheel_speed_mps[1] = vr;
     finish_step(body->pose(), start, start_heading, collided);
+    state.bumped = bumped;
   }
 
   // One move of the navigator; the floor counts energy as many times as a wheeled robot's
@@ -104,6 +109,22 @@ struct World::Impl {
     for (int i = 0; i < robot.physics_substeps; ++i) floor.substep({kinematic.pose().x_m, kinematic.pose().y_m});
     finish_step(kinematic.pose(), {start.x_m, start.y_m}, {std::cos(start.heading_rad), std::sin(start.heading_rad)},
                 collided);
+    // A cancelled move: the body stayed where it was, the wall it would have met nearest.
+    if (collided && !robot.bumpers.empty()) {
+      const Pose& p = state.pose;
+      const Vec2 at = geometry.nearest_point(Vec2{p.x_m, p.y_m});
+      state.bumped = bumpers_at(std::atan2(at.y - p.y_m, at.x - p.x_m) - p.heading_rad);
+    } else {
+      state.bumped = 0;
+    }
+  }
+
+  // The bumpers whose sectors hold a contact at `bearing` (radians from the heading).
+  [[nodiscard]] std::uint32_t bumpers_at(double bearing) const noexcept {
+    std::uint32_t bits = 0;
+    for (std::size_t i = 0; i < robot.bumpers.size(); ++i)
+      if (robot.bumpers[i].holds(bearing)) bits |= 1U << i;
+    return bits;
   }
 
   void finish_step(const Pose& pose, Vec2 start, Vec2 start_heading, bool collided) {

@@ -8,6 +8,7 @@
 // what the world simulated before.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
 
@@ -31,6 +32,7 @@ struct RobotState {
   double displacement_m = 0.0;             // |position change| over the last control step
   double forward_displacement_m = 0.0;     // position change projected on the heading
   bool collided = false;                   // contact with a wall or obstacle during the step
+  std::uint32_t bumped = 0;                // bit i: bumper i touched during the step
   FloorState floor;                        // zones, lights' reach, sweep grid, energy
 };
 

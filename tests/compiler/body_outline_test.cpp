@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <numbers>
 #include <string>
 #include <utility>
 
 #include "helpers.hpp"
 #include "runtime/core/rng.hpp"
+#include "runtime/expr/observables.hpp"
 #include "runtime/sim/world.hpp"
 
 namespace esc::compiler {
@@ -102,6 +104,29 @@ TEST(BodyOutline, MistakesAreLocated) {
   out = test::refusal(script("  drive acceleration\n  body_outline [(-1cm, -1cm), (1cm, 0cm), (-1cm, 1cm)]"),
                       "outline.esc");
   EXPECT_NE(out.find("error: an outline needs the differential drive: the acceleration drive moves a disc"),
+            std::string::npos)
+      << out;
+}
+
+// Bumpers: sectors read in SI and shown as written; `bumper[i]` a network input and a fitness
+// term, beyond the robot's bumpers an error at the read.
+TEST(Bumpers, DeclaredReadAndCheckedAtTheRead) {
+  const std::string text =
+      "arena a { size 1m x 1m }\n"
+      "robot r { bumpers [(-45deg, 45deg), (135deg, 225deg)] }\n"
+      "fitness f { step: speed * (1 - bumper[0]) }\n"
+      "controller c = mlp(ir[0..7], bumper[0..1] -> wheels)\n"
+      "experiment e { arena a  robot r  fitness f  compare c }\n";
+  const eval::ExperimentSpec x = test::first_experiment(text, "bumpers.esc");
+  ASSERT_EQ(x.robot.bumpers.size(), 2u);
+  EXPECT_DOUBLE_EQ(x.robot.bumpers[1].to_rad, 225 * std::numbers::pi / 180);
+  EXPECT_EQ(x.controllers.at(0).mlp.inputs.at(9), expr::slot::bumper + 1);
+  EXPECT_EQ(test::paper().resolved_settings.at("robot.bumpers"), "[]");
+  std::string wide = text;
+  wide.replace(wide.find("bumper[0..1]"), 12, "bumper[0..2]");
+  const std::string out = test::refusal(wide, "bumpers.esc");
+  EXPECT_NE(out.find("bumpers.esc:4:30: error: `bumper[2]` reads bumper 2, but the robot of experiment `e` has 2 "
+                     "(`bumper[0]` .. `bumper[1]`)"),
             std::string::npos)
       << out;
 }

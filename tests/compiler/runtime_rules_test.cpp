@@ -208,6 +208,13 @@ const std::vector<Row>& rows() {
        "ground sensor 1 sits -1cm from the body's centre: a distance is never negative"},
       {Rule::GroundMountRadiusMax, "robot r { ground_sensors [(0deg, 4cm)] }", "1:27",
        "ground sensor 0 sits 4cm from the body's centre, outside the body (radius 2.75cm)"},
+      {Rule::BumperCount,
+       "robot r { bumpers [(0deg, 10deg), (0deg, 10deg), (0deg, 10deg), (0deg, 10deg), (0deg, 10deg)] }", "1:80",
+       "a robot has at most 4 bumpers, found 5"},
+      {Rule::BumperSectorMin, "robot r { bumpers [(45deg, -45deg)] }", "1:20",
+       "bumper 0 spans -90deg from its first angle to its second"},
+      {Rule::BumperSectorMax, "robot r { bumpers [(0deg, 400deg)] }", "1:20",
+       "bumper 0 spans 400deg from its first angle to its second"},
       {Rule::OutlineWithoutWheels, "robot r { drive acceleration  body_outline [(-1cm, -1cm), (1cm, 0cm), (-1cm, 1cm)] }",
        "1:44", "an outline needs the differential drive: the acceleration drive moves a disc"},
   };

@@ -114,7 +114,8 @@ TEST(Observables, EveryNameResolvesToItsSlots) {
   EXPECT_EQ(find_observable("range")->count, kRangeCount);
   EXPECT_TRUE(find_observable("radar")->indexed);
   EXPECT_EQ(find_observable("radar")->first + kRadarCount, find_observable("ground_sensor")->first);
-  EXPECT_EQ(find_observable("ground_sensor")->first + kGroundSensorCount, kFrameSize);
+  EXPECT_EQ(find_observable("ground_sensor")->first + kGroundSensorCount, find_observable("bumper")->first);
+  EXPECT_EQ(find_observable("bumper")->first + kBumperCount, kFrameSize);
 }
 
 }  // namespace

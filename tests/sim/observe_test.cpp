@@ -17,12 +17,13 @@ namespace slot = expr::slot;
 
 TEST(SimObserve, FrameLayout) {
   // The navigator's observables come after `param`, which kept its slots, then the ground
-  // sensors, which end the frame.
+  // sensors and the bumpers, which end the frame.
   EXPECT_EQ(slot::param, 44U);
   EXPECT_EQ(expr::kFrameSizeBeforeNavigator, slot::param + expr::kMaxParams);
   EXPECT_EQ(slot::x, expr::kFrameSizeBeforeNavigator);
   EXPECT_EQ(slot::ground_sensor, slot::radar + expr::kRadarCount);
-  EXPECT_EQ(expr::kFrameSize, slot::ground_sensor + expr::kGroundSensorCount);
+  EXPECT_EQ(slot::bumper, slot::ground_sensor + expr::kGroundSensorCount);
+  EXPECT_EQ(expr::kFrameSize, slot::bumper + expr::kBumperCount);
   // Every slot belongs to exactly one observable, parametrised block or param.
   std::set<expr::Slot> used;
   const auto claim = [&](expr::Slot first, expr::Slot count) {
