@@ -36,6 +36,23 @@ std::string bracketed(const Items& items, Text text) {
   return fmt::format("[{}]", fmt::join(shown, ", "));
 }
 
+// A list of tuples into `out`, each item made by `make` from its numbers (SI).
+template <class Item, class Make>
+bool read_rows(const ast::Value& v, std::string_view name, const TupleShape& shape, std::vector<Item>& out, Make make,
+               Sink& sink) {
+  const auto rows = read_tuples(v, name, shape, sink);
+  if (!rows) return false;
+  out.clear();
+  for (const std::vector<double>& r : *rows) out.push_back(make(r));
+  return true;
+}
+
+// The two numbers of a pair, as an aggregate of two doubles.
+template <class Item>
+Item pair_of(const std::vector<double>& r) {
+  return {r[0], r[1]};
+}
+
 bool read_rangefinders(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
   auto angles = read_list(v, name, Dim::Angle, "[90deg, 0deg, -90deg]", sink);
   if (angles) p.rangefinders.angles_rad = std::move(*angles);
@@ -49,12 +66,11 @@ std::string rangefinders_text(const sim::RobotParams& p) {
 constexpr Dim kMountDims[] = {Dim::Angle, Dim::Angle, Dim::Length};
 
 bool read_ir_sensors(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
-  const auto rows = read_tuples(v, name, {kMountDims, 1, "[(68deg, 90deg), (43deg, 45deg, 27mm)]"}, sink);
-  if (!rows) return false;
-  p.ir.mounts.clear();
-  for (const std::vector<double>& r : *rows)
-    p.ir.mounts.push_back({r[0], r[1], r.size() > 2 ? std::optional<double>(r[2]) : std::nullopt});
-  return true;
+  return read_rows(v, name, {kMountDims, 1, "[(68deg, 90deg), (43deg, 45deg, 27mm)]"}, p.ir.mounts,
+                   [](const std::vector<double>& r) {
+                     return sim::IrMount{r[0], r[1], r.size() > 2 ? std::optional<double>(r[2]) : std::nullopt};
+                   },
+                   sink);
 }
 
 std::string ir_sensors_text(const sim::RobotParams& p) {
@@ -67,11 +83,8 @@ std::string ir_sensors_text(const sim::RobotParams& p) {
 constexpr Dim kPointDims[] = {Dim::Length, Dim::Length};
 
 bool read_body_outline(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
-  const auto rows = read_tuples(v, name, {kPointDims, 0, "[(8cm, 0cm), (0cm, 5.5cm), (-3cm, 0cm), (0cm, -5.5cm)]"}, sink);
-  if (!rows) return false;
-  p.outline.clear();
-  for (const std::vector<double>& r : *rows) p.outline.push_back({r[0], r[1]});
-  return true;
+  return read_rows(v, name, {kPointDims, 0, "[(8cm, 0cm), (0cm, 5.5cm), (-3cm, 0cm), (0cm, -5.5cm)]"}, p.outline,
+                   pair_of<sim::Vec2>, sink);
 }
 
 std::string body_outline_text(const sim::RobotParams& p) {
@@ -118,11 +131,8 @@ bool read_sensor_name(const ast::Value& v, std::string_view name, std::string_vi
 constexpr Dim kSectorDims[] = {Dim::Angle, Dim::Angle};
 
 bool read_bumpers(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
-  const auto rows = read_tuples(v, name, {kSectorDims, 0, "[(-45deg, 45deg), (135deg, 225deg)]"}, sink);
-  if (!rows) return false;
-  p.bumpers.clear();
-  for (const std::vector<double>& r : *rows) p.bumpers.push_back({r[0], r[1]});
-  return true;
+  return read_rows(v, name, {kSectorDims, 0, "[(-45deg, 45deg), (135deg, 225deg)]"}, p.bumpers,
+                   pair_of<sim::BumperSector>, sink);
 }
 
 std::string bumpers_text(const sim::RobotParams& p) {
@@ -134,11 +144,8 @@ std::string bumpers_text(const sim::RobotParams& p) {
 constexpr Dim kGroundDims[] = {Dim::Angle, Dim::Length};
 
 bool read_ground_sensors(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
-  const auto rows = read_tuples(v, name, {kGroundDims, 0, "[(9deg, 7.3cm), (-9deg, 7.3cm)]"}, sink);
-  if (!rows) return false;
-  p.ground.mounts.clear();
-  for (const std::vector<double>& r : *rows) p.ground.mounts.push_back({r[0], r[1]});
-  return true;
+  return read_rows(v, name, {kGroundDims, 0, "[(9deg, 7.3cm), (-9deg, 7.3cm)]"}, p.ground.mounts,
+                   pair_of<sim::GroundMount>, sink);
 }
 
 std::string ground_sensors_text(const sim::RobotParams& p) {
@@ -150,11 +157,8 @@ std::string ground_sensors_text(const sim::RobotParams& p) {
 constexpr Dim kResponseDims[] = {Dim::Length, Dim::None};
 
 bool read_ir_response(const ast::Value& v, std::string_view name, sim::RobotParams& p, Sink& sink) {
-  const auto rows = read_tuples(v, name, {kResponseDims, 0, "[(0cm, 1), (2cm, 0.4), (5cm, 0)]"}, sink);
-  if (!rows) return false;
-  p.ir.response.clear();
-  for (const std::vector<double>& r : *rows) p.ir.response.push_back({r[0], r[1]});
-  return true;
+  return read_rows(v, name, {kResponseDims, 0, "[(0cm, 1), (2cm, 0.4), (5cm, 0)]"}, p.ir.response,
+                   pair_of<sim::IrResponsePoint>, sink);
 }
 
 std::string ir_response_text(const sim::RobotParams& p) {
