@@ -19,7 +19,7 @@ namespace {
 using Action = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // What the robot senses, the observation without a controller: the IR and light sensors,
-// rangefinders, goal radars and ground sensors it declares, and the accumulator.
+// rangefinders, goal radars, ground sensors and bumpers it declares, and the accumulator.
 std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
   std::vector<expr::Slot> slots;
   const auto add = [&](expr::Slot first, std::size_t count) {
@@ -30,6 +30,7 @@ std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
   add(expr::slot::range, robot.rangefinders.angles_rad.size());
   add(expr::slot::radar, static_cast<std::size_t>(robot.radars));
   add(expr::slot::ground_sensor, robot.ground.mounts.size());
+  add(expr::slot::bumper, robot.bumpers.size());
   slots.push_back(expr::slot::energy);
   return slots;
 }

@@ -160,9 +160,10 @@ def test_the_observation_is_the_robots_own_senses_by_its_names():
                   "experiment e { arena m  robot navigator  fitness near  compare N }\n", seed=1)
     assert nav.observation_names == [f"range[{i}]" for i in range(6)] + [f"radar[{i}]" for i in range(4)] + ["energy"]
     # The Thymio II's seven horizontal sensors; ground sensors by the name the robot gives them,
-    # 1 over the visible mark the robot starts on.
+    # 1 over the visible mark the robot starts on; a bumper, 0 away from the walls.
     thymio = esc.Env('import "lib/thymio2.esc"\n'
-                     "robot grounded = thymio2 { ground_name prox_ground  ground_sensors [(9deg, 7cm), (-9deg, 7cm)] }\n"
+                     "robot grounded = thymio2 { ground_name prox_ground  ground_sensors [(9deg, 7cm), (-9deg, 7cm)]\n"
+                     "  bumpers [(-45deg, 45deg)] }\n"
                      "arena m { size 1m x 1m  zone mark rect 10cm x 20cm at (60cm, 50cm) visible\n"
                      "  start at (50cm, 50cm) heading 0deg }\n"
                      "fitness f { step: speed }\n"
@@ -170,7 +171,7 @@ def test_the_observation_is_the_robots_own_senses_by_its_names():
                      "experiment e { arena m  robot grounded  fitness f  compare C }\n", seed=1)
     names = thymio.observation_names
     assert names[:7] == [f"prox_horizontal[{i}]" for i in range(7)]
-    assert names[-3:] == ["prox_ground[0]", "prox_ground[1]", "energy"]
+    assert names[-4:] == ["prox_ground[0]", "prox_ground[1]", "bumper[0]", "energy"]
     observation, _ = thymio.reset()
-    assert observation.shape == (7 + 7 + 2 + 1,)
-    assert list(observation[-3:-1]) == [1.0, 1.0]
+    assert observation.shape == (7 + 7 + 2 + 1 + 1,)
+    assert list(observation[-4:-1]) == [1.0, 1.0, 0.0]
