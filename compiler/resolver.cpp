@@ -94,10 +94,19 @@ const SensorNames& Resolver::sensor_names() {
   if (sensor_names_) return *sensor_names_;
   SensorNames& names = sensor_names_.emplace();
   for (const RenamableSensors& r : kRenamableSensors) names.emplace(r.observable, r.observable);
+  // A name reads one array in the whole program: a second array by the same name is refused
+  // where it is given (once, however often the names are gathered again).
   const auto add = [&](const std::vector<ast::Setting>& settings) {
     for (const ast::Setting& s : settings)
-      for (const RenamableSensors& r : kRenamableSensors)
-        if (s.key.text == r.setting && s.value.kind == ast::Value::Kind::Word) names.emplace(s.value.text, r.observable);
+      for (const RenamableSensors& r : kRenamableSensors) {
+        if (s.key.text != r.setting || s.value.kind != ast::Value::Kind::Word) continue;
+        const auto [it, fresh] = names.emplace(s.value.text, r.observable);
+        if (fresh || it->second == r.observable || !clashes_reported_.insert(&s).second) continue;
+        for (const RenamableSensors& other : kRenamableSensors)
+          if (other.observable == it->second)
+            sink_.error(s.value.where, fmt::format("`{}` already names {} (`{} {}`); the {} need a name of their own",
+                                                   s.value.text, other.what, other.setting, s.value.text, r.what));
+      }
   };
   for (const ast::Module* m : modules_) {
     for (const ast::RobotDecl& r : m->robots) add(r.settings);

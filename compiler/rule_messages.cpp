@@ -215,7 +215,19 @@ RuleMessage robot_message(const sim::Problem& p, const RuleContext& c) {
     case Rule::BumperSectorMax:
       return {fmt::format("bumper {} spans {} from its first angle to its second, counter-clockwise", p.index,
                           shown(p.found, Dimension::Angle)),
-              {"write a bumper as (from, to) with to above from by at most 360deg: (-45deg, 45deg) is the front quarter"}};
+              {"write a bumper as (from, to) with to above from by at most 360deg: (-45deg, 45deg) is the front "
+               "quarter, (135deg, 225deg) the back one"}};
+    case Rule::OutlineCorner:
+      return {fmt::format("the outline's corner at vertex {} is {}, sharper than {}", p.index,
+                          shown(p.found, Dimension::Angle), shown(p.limit, Dimension::Angle)),
+              {std::string(p.info().why)}};
+    case Rule::OutlineThin:
+      return {"the outline is thinner than 2mm somewhere: moved in by 1mm, it turns inside out",
+              {std::string(p.info().why)}};
+    case Rule::GroundUnderOutline:
+      return {fmt::format("ground sensor {} lies {} outside the body's outline", p.index,
+                          shown(-p.found, Dimension::Length)),
+              {"a ground sensor sits under the body"}};
     case Rule::GroundMountRadiusMin:
     case Rule::GroundMountRadiusMax: return sits(p, "ground sensor", {});
     case Rule::OutlineCountMin:

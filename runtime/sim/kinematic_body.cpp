@@ -31,6 +31,7 @@ bool KinematicBody::move(double turn_command, double speed_command, const Static
   speed_mps_ = std::clamp(speed_mps_ + command(speed_command) * speed_step_mps_, -max_speed_mps_, max_speed_mps_);
   const Vec2 next{pose_.x_m + std::cos(pose_.heading_rad) * speed_mps_ * dt_s_,
                   pose_.y_m + std::sin(pose_.heading_rad) * speed_mps_ * dt_s_};
+  attempted_ = next;
   // Headings in (-pi, pi], as the observable `heading` reads them.
   pose_.heading_rad = std::remainder(pose_.heading_rad + turn_radps_ * dt_s_, 2 * std::numbers::pi);
   if (geometry.clearance(next, radius_m_) < radius_m_) return false;

@@ -52,13 +52,29 @@ double smallest_turn(std::span<const Vec2> outline, int& at) noexcept {
   return least;
 }
 
-double origin_depth(std::span<const Vec2> ccw) noexcept {
+double origin_depth(std::span<const Vec2> ccw, Vec2 p) noexcept {
   double least = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < ccw.size(); ++i) {
     const Vec2 a = ccw[i];
     const Vec2 e = minus(ccw[(i + 1) % ccw.size()], a);
-    // The origin's distance to the left of edge a -> a + e.
-    least = std::min(least, cross(e, minus(Vec2{}, a)) / std::hypot(e.x, e.y));
+    // The point's distance to the left of edge a -> a + e.
+    least = std::min(least, cross(e, minus(p, a)) / std::hypot(e.x, e.y));
+  }
+  return least;
+}
+
+double smallest_corner(std::span<const Vec2> ccw, int& at) noexcept {
+  const std::size_t n = ccw.size();
+  double least = std::numbers::pi;
+  at = -1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 back = minus(ccw[(i + n - 1) % n], ccw[i]);
+    const Vec2 ahead = minus(ccw[(i + 1) % n], ccw[i]);
+    const double corner = std::atan2(std::abs(cross(ahead, back)), ahead.x * back.x + ahead.y * back.y);
+    if (corner < least) {
+      least = corner;
+      at = static_cast<int>(i);
+    }
   }
   return least;
 }

@@ -23,9 +23,13 @@ namespace esc::sim {
 // turning one way winds round a second time (a star). Which vertex gives it: `at`.
 [[nodiscard]] double smallest_turn(std::span<const Vec2> outline, int& at) noexcept;
 
-// How far inside the outline its origin lies: the least distance to an edge's line, negative
-// when the origin is outside an edge (a convex, counter-clockwise outline).
-[[nodiscard]] double origin_depth(std::span<const Vec2> ccw) noexcept;
+// How far inside the outline `p` lies (its origin by default): the least distance to an
+// edge's line, negative when it is outside an edge (a convex, counter-clockwise outline).
+[[nodiscard]] double origin_depth(std::span<const Vec2> ccw, Vec2 p = {}) noexcept;
+
+// The smallest interior angle (radians) of a convex, counter-clockwise outline, and at which
+// vertex (`at`).
+[[nodiscard]] double smallest_corner(std::span<const Vec2> ccw, int& at) noexcept;
 
 // The outline moved in by `margin` on every edge (a convex, counter-clockwise outline much
 // larger than the margin): Bullet grows a hull by its collision margin, so the hull of the

@@ -30,6 +30,11 @@ constexpr std::string_view kNoiseAlso[] = {"drive"};
 constexpr std::string_view kIrCurveAlso[] = {"ir_curve_x0"};
 constexpr std::string_view kFitAlso[] = {"body_radius"};
 constexpr std::string_view kOutlineRadiusAlso[] = {"body_radius"};
+constexpr std::string_view kOutlineGroundAlso[] = {"body_outline"};
+// Sharper corners and thinner bodies than these leave Bullet's hull short of the outline
+// (body.cpp builds it from the outline moved in by its 0.5 mm margin).
+constexpr double kMinOutlineCorner_rad = 30 * std::numbers::pi / 180;
+constexpr double kOutlineInset_m = 0.001;
 
 constexpr std::string_view kInside = "positions are measured from the arena's lower-left inner corner";
 constexpr std::string_view kStartClear = "a body placed inside a wall or an obstacle is pushed out by the solver";
@@ -188,6 +193,12 @@ constexpr RuleInfo kRules[] = {
      "a bumper covers some of the body's edge, counter-clockwise from its first angle to its second"},
     {Rule::BumperSectorMax, O::Robot, "bumpers", {}, R::AtMost, D::Angle, "robot.bumpers[{}] width",
      "a bumper covers at most the body's whole edge"},
+    {Rule::OutlineCorner, O::Robot, "body_outline", {}, R::AtLeast, D::Angle, "robot.outline[{}] corner",
+     "Bullet rounds a corner by its 0.5 mm margin: a sharper one's hull falls short of the outline by over 1.4 mm"},
+    {Rule::OutlineThin, O::Robot, "body_outline", {}, R::Above, D::Length,
+     "robot.outline moved in by 1 mm: its narrowest depth", "Bullet's hull is the outline moved in by its 0.5 mm margin"},
+    {Rule::GroundUnderOutline, O::Robot, "ground_sensors", kOutlineGroundAlso, R::AtLeast, D::Length,
+     "robot.ground.mounts[{}] depth inside the outline", "a sensor sits under the body"},
 };
 
 constexpr bool in_rule_order() {
@@ -196,7 +207,7 @@ constexpr bool in_rule_order() {
   return true;
 }
 static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
-static_assert(static_cast<std::size_t>(Rule::BumperSectorMax) + 1 == std::size(kRules));
+static_assert(static_cast<std::size_t>(Rule::GroundUnderOutline) + 1 == std::size(kRules));
 
 // True when `found` relates to `limit` as `rel` demands; NaN never does.
 bool holds(Relation rel, double found, double limit) {
@@ -220,6 +231,7 @@ class Checker {
     return false;
   }
   void fail(Rule rule, double found, double limit, int index) { out_.push_back(Problem{rule, index, found, limit}); }
+  [[nodiscard]] std::size_t count() const noexcept { return out_.size(); }
   // At most `max` parts: the problem is about the first one too many.
   void at_most(Rule rule, std::size_t count, std::size_t max) {
     require(rule, static_cast<double>(count), static_cast<double>(max), static_cast<int>(max));
@@ -364,7 +376,14 @@ void check_outline(const RobotParams& robot, bool body, Checker& c) {
   int at = -1;
   const double turn = smallest_turn(outline, at);
   if (!c.require(Rule::OutlineConvex, turn, 0.0, at)) return;
-  c.require(Rule::OutlineAroundCentre, origin_depth(counter_clockwise(outline)), 0.0);
+  const std::vector<Vec2> ccw = counter_clockwise(outline);
+  if (!c.require(Rule::OutlineCorner, smallest_corner(ccw, at), kMinOutlineCorner_rad, at)) return;
+  // Moved in, a body thinner than twice the inset turns inside out.
+  const std::vector<Vec2> in = inset(ccw, kOutlineInset_m);
+  int unused = -1;
+  const bool kept = twice_signed_area(in) > 0.0 && smallest_turn(in, unused) > 0.0;
+  if (!c.require(Rule::OutlineThin, kept ? 1.0 : 0.0, 0.0)) return;
+  c.require(Rule::OutlineAroundCentre, origin_depth(ccw), 0.0);
   if (!body) return;
   for (std::size_t i = 0; i < outline.size(); ++i)
     c.require(Rule::OutlineWithinRadius, std::hypot(outline[i].x, outline[i].y), robot.body_radius_m + kInsideTolerance_m,
@@ -467,6 +486,7 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
   if (c.require(Rule::IrRaysMin, robot.ir.rays, 1)) c.require(Rule::IrRaysMax, robot.ir.rays, kMaxIrRays);
   c.require(Rule::IrNoise, robot.ir.noise_sd, 0.0);
   check_ir_layout(robot, body, c);
+  const std::size_t problems_before = c.count();
   check_outline(robot, body, c);
   c.at_most(Rule::GroundCount, robot.ground.mounts.size(), kMaxGroundSensors);
   for (std::size_t i = 0; i < robot.ground.mounts.size(); ++i) {
@@ -474,6 +494,14 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
     const int at = static_cast<int>(i);
     if (c.require(Rule::GroundMountRadiusMin, r, 0.0, at) && body)
       c.require(Rule::GroundMountRadiusMax, r, robot.body_radius_m, at);
+  }
+  if (!robot.outline.empty() && robot.drive == DriveKind::Differential && problems_before == c.count()) {
+    const std::vector<Vec2> ccw = counter_clockwise(robot.outline);
+    for (std::size_t i = 0; i < robot.ground.mounts.size(); ++i) {
+      const GroundMount& m = robot.ground.mounts[i];
+      const Vec2 p{m.radius_m * std::cos(m.bearing_rad), m.radius_m * std::sin(m.bearing_rad)};
+      c.require(Rule::GroundUnderOutline, origin_depth(ccw, p), 0.0, static_cast<int>(i));
+    }
   }
   c.at_most(Rule::BumperCount, robot.bumpers.size(), kMaxBumpers);
   for (std::size_t i = 0; i < robot.bumpers.size(); ++i) {

@@ -55,7 +55,8 @@ enum class Rule {
   EnergyRechargeMin, EnergyRechargeMax, RangefinderCount, RangefinderRange, RadarsMin, RadarsMax,
   ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels, OutlineCountMin, OutlineCountMax, OutlineConvex,
   OutlineAroundCentre, OutlineWithinRadius, OutlineWithoutWheels, GroundCount, GroundMountRadiusMin,
-  GroundMountRadiusMax, BumperCount, BumperSectorMin, BumperSectorMax,
+  GroundMountRadiusMax, BumperCount, BumperSectorMin, BumperSectorMax, OutlineCorner, OutlineThin,
+  GroundUnderOutline,
 };
 
 enum class Object { Arena, Placement, Robot };

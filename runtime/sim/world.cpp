@@ -109,10 +109,10 @@ struct World::Impl {
     for (int i = 0; i < robot.physics_substeps; ++i) floor.substep({kinematic.pose().x_m, kinematic.pose().y_m});
     finish_step(kinematic.pose(), {start.x_m, start.y_m}, {std::cos(start.heading_rad), std::sin(start.heading_rad)},
                 collided);
-    // A cancelled move: the body stayed where it was, the wall it would have met nearest.
+    // A cancelled move: towards the wall nearest to where it would have gone, from where it stayed.
     if (collided && !robot.bumpers.empty()) {
       const Pose& p = state.pose;
-      const Vec2 at = geometry.nearest_point(Vec2{p.x_m, p.y_m});
+      const Vec2 at = geometry.nearest_point(kinematic.attempted());
       state.bumped = bumpers_at(std::atan2(at.y - p.y_m, at.x - p.x_m) - p.heading_rad);
     } else {
       state.bumped = 0;

@@ -236,6 +236,22 @@ TEST(GroundSensors, NamedByTheRobotAndReadInSi) {
   EXPECT_EQ(test::paper().resolved_settings.at("robot.ground_name"), "ground_sensor");
 }
 
+// A name reads one array in the whole program: a second array by it is refused where it is
+// given, whichever robot comes first.
+TEST(GroundSensors, ANameNamesOneArray) {
+  const std::string two = "robot e { ir_name prox }\nrobot t { ground_name prox }\n";
+  std::string out = refused(two + "arena a { size 1m x 1m }\nfitness f { step: speed }\n"
+                                  "controller c = mlp(prox[0..1] -> wheels)\n"
+                                  "experiment x { arena a  robot e  fitness f  compare c }\n");
+  EXPECT_NE(out.find("ir.esc:2:23: error: `prox` already names IR sensors (`ir_name prox`); the ground sensors need a "
+                     "name of their own"),
+            std::string::npos)
+      << out;
+  out = refused("robot t { ir_name s  ground_name s }\narena a { size 1m x 1m }\nfitness f { step: speed }\n"
+                "controller c = mlp(s[0..1] -> wheels)\nexperiment x { arena a  robot t  fitness f  compare c }\n");
+  EXPECT_NE(out.find("ir.esc:1:34: error: `s` already names IR sensors"), std::string::npos) << out;
+}
+
 TEST(GroundSensors, AReadBeyondThemOrByAnotherNameIsAnErrorAtTheRead) {
   std::string text = kGrounded;
   text.replace(text.find("prox_ground[0..1]"), 17, "prox_ground[0..2]");

@@ -200,7 +200,7 @@ const std::vector<Row>& rows() {
        "1:52", "the outline is not convex at vertex 2"},
       {Rule::OutlineAroundCentre, "robot r { body_outline [(1cm, -1cm), (2cm, -1cm), (2cm, 1cm), (1cm, 1cm)] }",
        "1:24", "the outline does not hold the point the wheels turn about: that point lies 1cm outside an edge"},
-      {Rule::OutlineWithinRadius, "robot r { body_outline [(-1cm, -1cm), (5cm, 0cm), (-1cm, 1cm)] }", "1:39",
+      {Rule::OutlineWithinRadius, "robot r { body_outline [(-1cm, -2cm), (5cm, 0cm), (-1cm, 2cm)] }", "1:39",
        "outline vertex 1 lies 5cm from the centre, beyond `body_radius` (2.75cm)"},
       {Rule::GroundCount, "robot r { ground_sensors [(0deg, 1cm), (0deg, 1cm), (0deg, 1cm), (0deg, 1cm), (0deg, 1cm)] }",
        "1:79", "a robot has at most 4 ground sensors, found 5"},
@@ -215,6 +215,14 @@ const std::vector<Row>& rows() {
        "bumper 0 spans -90deg from its first angle to its second"},
       {Rule::BumperSectorMax, "robot r { bumpers [(0deg, 400deg)] }", "1:20",
        "bumper 0 spans 400deg from its first angle to its second"},
+      {Rule::OutlineCorner, "robot r { body_radius 9cm  substeps 4  body_outline [(8cm, 0cm), (-3cm, 0.5cm), (-3cm, -0.5cm)] }",
+       "1:54", "the outline's corner at vertex 0 is 5.2"},
+      {Rule::OutlineThin, "robot r { body_outline [(-1cm, -0.05cm), (1cm, -0.05cm), (1cm, 0.05cm), (-1cm, 0.05cm)] }",
+       "1:24", "the outline is thinner than 2mm somewhere: moved in by 1mm, it turns inside out"},
+      {Rule::GroundUnderOutline,
+       "robot r { body_radius 9cm  substeps 4  body_outline [(-3cm, -5cm), (7cm, -5cm), (7cm, 5cm), (-3cm, 5cm)]\n"
+       "  ground_sensors [(180deg, 6cm)] }",
+       "2:19", "ground sensor 0 lies 3cm outside the body's outline"},
       {Rule::OutlineWithoutWheels, "robot r { drive acceleration  body_outline [(-1cm, -1cm), (1cm, 0cm), (-1cm, 1cm)] }",
        "1:44", "an outline needs the differential drive: the acceleration drive moves a disc"},
   };

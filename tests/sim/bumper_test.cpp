@@ -100,6 +100,14 @@ TEST(SimBumpers, TheNavigatorsCancelledMoveBumps) {
   }
   EXPECT_GT(collided, 0);
   EXPECT_EQ(seen, 1u);
+  // Hugging the left wall 1 mm off it, up into the top one: the wall ahead, not the one beside.
+  world.reset({robot.body_radius_m + 0.001, 0.3, std::numbers::pi / 2});
+  seen = 0;
+  for (int i = 0; i < 80; ++i) {
+    world.step(0.0, 1.0);
+    seen |= world.state().bumped;
+  }
+  EXPECT_EQ(seen, 1u);
 }
 
 }  // namespace

@@ -487,7 +487,7 @@
       ? tuples(settings['robot.ir_sensors']).map(([b, f, d]) => ({ b, f, mm: d === undefined ? null : d * 1000 }))
       : exp.ir_mount_deg.map((b, i) => ({ b: b * Math.PI / 180, f: exp.ir_facing_deg[i] * Math.PI / 180, mm: null }));
     const outlineMm = tuples(settings['robot.body_outline'] || '').map(([px, py]) => [px * 1000, py * 1000]);
-    const irName = settings['robot.ir_name'] || 'IR';
+    const irName = (settings['robot.ir_name'] || 'ir') === 'ir' ? 'IR' : settings['robot.ir_name'];
     const irs = bars(irMounts.map((_, i) => `${irName} ${i}`), 'ir');
     const lights = bars(irMounts.map((_, i) => `light ${i}`), 'light');
     const accumulator = bars(['energy'], 'energy');
