@@ -159,11 +159,10 @@ def test_the_observation_is_the_robots_own_senses_by_its_names():
                   "controller N = mlp(range[0..5], radar[0..3] -> wheels)\n"
                   "experiment e { arena m  robot navigator  fitness near  compare N }\n", seed=1)
     assert nav.observation_names == [f"range[{i}]" for i in range(6)] + [f"radar[{i}]" for i in range(4)] + ["energy"]
-    # The Thymio II's seven horizontal sensors; ground sensors by the name the robot gives them,
-    # 1 over the visible mark the robot starts on; a bumper, 0 away from the walls.
+    # The Thymio II's seven horizontal sensors and its two ground sensors, by their Aseba names,
+    # 1 over the visible mark the robot starts on; a bumper added, 0 away from the walls.
     thymio = esc.Env('import "lib/thymio2.esc"\n'
-                     "robot grounded = thymio2 { ground_name prox_ground  ground_sensors [(9deg, 7cm), (-9deg, 7cm)]\n"
-                     "  bumpers [(-45deg, 45deg)] }\n"
+                     "robot grounded = thymio2 { bumpers [(-45deg, 45deg)] }\n"
                      "arena m { size 1m x 1m  zone mark rect 10cm x 20cm at (60cm, 50cm) visible\n"
                      "  start at (50cm, 50cm) heading 0deg }\n"
                      "fitness f { step: speed }\n"
