@@ -20,6 +20,16 @@ struct Vec2 {
   double y = 0.0;
 };
 
+// The plane's two products the outline and polygon routines share: a - b, and a x b (positive
+// when b turns counter-clockwise from a).
+[[nodiscard]] inline Vec2 minus(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
+[[nodiscard]] inline double cross(Vec2 a, Vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
+
+// The point at `distance_m` from the origin along `bearing_rad` (a mount's place on the body).
+[[nodiscard]] inline Vec2 polar(double bearing_rad, double distance_m) noexcept {
+  return {distance_m * std::cos(bearing_rad), distance_m * std::sin(bearing_rad)};
+}
+
 struct Pose {
   double x_m = 0.0;
   double y_m = 0.0;

@@ -192,20 +192,8 @@ void Body::add_static(std::unique_ptr<btCollisionShape> shape, double x, double 
   statics_.push_back(std::move(rb));
 }
 
-double Body::contact_bearing() noexcept {
-  const Pose p = pose();
-  Vec2 at;
-  if (outline_.empty()) {
-    at = geometry_.nearest_point(position());
-  } else {
-    place_outline(outline_, p, placed_);
-    at = geometry_.nearest_point(placed_);
-  }
-  return std::atan2(at.y - p.y_m, at.x - p.x_m) - p.heading_rad;
-}
-
 double Body::placed_outline_clearance() noexcept {
-  place_outline(outline_, pose(), placed_);
+  place_points(outline_, pose(), placed_);
   return geometry_.clearance(placed_, max_sweep_m_ + 2 * kFreeSpaceMargin_m);
 }
 

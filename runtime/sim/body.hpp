@@ -85,9 +85,11 @@ class Body {
   // Whether the body touches a wall or an obstacle (its clearance is at most
   // kContactTolerance_m; the contact solver stops it at about 0).
   [[nodiscard]] bool touching() const noexcept { return touching_; }
-  // Where it touches, as a bearing from the heading (radians): towards the point of the walls
-  // and obstacles nearest to the body (geometry2d.hpp). Meaningful while touching().
-  [[nodiscard]] double contact_bearing() noexcept;
+  // Where it touches: the point of the walls and obstacles nearest to the body
+  // (geometry2d.hpp). Meaningful while touching(), when an outline is placed at the pose.
+  [[nodiscard]] Vec2 contact_point() const noexcept {
+    return outline_.empty() ? geometry_.nearest_point(position()) : geometry_.nearest_point(placed_);
+  }
 
   [[nodiscard]] Pose pose() const noexcept {
     const btTransform& tr = body_->getWorldTransform();
@@ -139,7 +141,7 @@ class Body {
   double clearance_m_ = 0.0;     // at the current position (update_clearance)
   bool touching_ = false;        // at the current position (update_clearance)
   std::vector<Vec2> outline_;    // counter-clockwise, in the body's frame; empty: a disc
-  std::vector<Vec2> placed_;     // the outline at the current position
+  std::vector<Vec2> placed_;     // the outline at the current position, while near a surface
   double outline_clearance_m_ = 0.0;   // its distance to the walls and obstacles (update_clearance)
   double max_sweep_m_ = 0.0;     // the farthest a point of the outline moves in a substep
   bool inertia_stale_ = false;   // the world inertia tensor is of an earlier orientation

@@ -8,14 +8,24 @@ namespace esc::sim {
 
 namespace {
 
-double cross(Vec2 a, Vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
-Vec2 minus(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
+// Where the point q (from a) projects on segment e (from a), as a fraction of it in [0, 1].
+double segment_fraction(Vec2 q, Vec2 e) noexcept {
+  const double len2 = e.x * e.x + e.y * e.y;
+  return len2 > 0.0 ? std::clamp((q.x * e.x + q.y * e.y) / len2, 0.0, 1.0) : 0.0;
+}
 
+// The distance from p to segment ab.
 double point_segment(Vec2 p, Vec2 a, Vec2 b) noexcept {
   const Vec2 e = minus(b, a), q = minus(p, a);
-  const double len2 = e.x * e.x + e.y * e.y;
-  const double t = len2 > 0.0 ? std::clamp((q.x * e.x + q.y * e.y) / len2, 0.0, 1.0) : 0.0;
+  const double t = segment_fraction(q, e);
   return std::hypot(q.x - t * e.x, q.y - t * e.y);
+}
+
+// The point of segment ab nearest to p.
+Vec2 segment_point(Vec2 p, Vec2 a, Vec2 b) noexcept {
+  const Vec2 e = minus(b, a);
+  const double t = segment_fraction(minus(p, a), e);
+  return {a.x + t * e.x, a.y + t * e.y};
 }
 
 // Whether segments ab and cd share a point (touching counts).
@@ -118,14 +128,6 @@ struct Witness {
   }
   [[nodiscard]] Vec2 at() const noexcept { return {sum.x / count, sum.y / count}; }
 };
-
-// The point of segment ab nearest to p.
-Vec2 segment_point(Vec2 p, Vec2 a, Vec2 b) noexcept {
-  const Vec2 e = minus(b, a), q = minus(p, a);
-  const double len2 = e.x * e.x + e.y * e.y;
-  const double t = len2 > 0.0 ? std::clamp((q.x * e.x + q.y * e.y) / len2, 0.0, 1.0) : 0.0;
-  return {a.x + t * e.x, a.y + t * e.y};
-}
 
 }  // namespace
 

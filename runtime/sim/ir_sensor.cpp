@@ -18,8 +18,7 @@ double enki_ir_curve(double distance_m, double x0_cm, double c_cm2) noexcept {
 }
 
 Vec2 mount_point(const IrMount& m, double body_radius_m) noexcept {
-  const double radius = m.radius_m.value_or(body_radius_m);
-  return {radius * std::cos(m.bearing_rad), radius * std::sin(m.bearing_rad)};
+  return polar(m.bearing_rad, m.radius_m.value_or(body_radius_m));
 }
 
 IrResponse::IrResponse(const IrParams& ir)

@@ -8,13 +8,6 @@
 
 namespace esc::sim {
 
-namespace {
-
-double cross(Vec2 a, Vec2 b) noexcept { return a.x * b.y - a.y * b.x; }
-Vec2 minus(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
-
-}  // namespace
-
 double twice_signed_area(std::span<const Vec2> outline) noexcept {
   double sum = 0.0;
   for (std::size_t i = 0; i < outline.size(); ++i) sum += cross(outline[i], outline[(i + 1) % outline.size()]);
@@ -110,7 +103,7 @@ double polar_gyration_sq(std::span<const Vec2> ccw) noexcept {
   return (moment12 / 12.0) / (area2 / 2.0);
 }
 
-void place_outline(std::span<const Vec2> outline, const Pose& pose, std::span<Vec2> out) noexcept {
+void place_points(std::span<const Vec2> outline, const Pose& pose, std::span<Vec2> out) noexcept {
   const double c = std::cos(pose.heading_rad), s = std::sin(pose.heading_rad);
   for (std::size_t i = 0; i < outline.size(); ++i)
     out[i] = {pose.x_m + c * outline[i].x - s * outline[i].y, pose.y_m + s * outline[i].x + c * outline[i].y};

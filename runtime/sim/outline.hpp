@@ -40,7 +40,8 @@ namespace esc::sim {
 // (a convex, counter-clockwise outline): the polar second moment over the area.
 [[nodiscard]] double polar_gyration_sq(std::span<const Vec2> ccw) noexcept;
 
-// The outline at `pose`, into `out` (as many points as the outline).
-void place_outline(std::span<const Vec2> outline, const Pose& pose, std::span<Vec2> out) noexcept;
+// Points of the body's frame (an outline, the ground sensors) at `pose`, into `out` (as many
+// points as `outline`).
+void place_points(std::span<const Vec2> outline, const Pose& pose, std::span<Vec2> out) noexcept;
 
 }  // namespace esc::sim

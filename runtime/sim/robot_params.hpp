@@ -97,6 +97,8 @@ struct GroundMount {
   double bearing_rad = 0.0;
   double radius_m = 0.0;
   friend bool operator==(const GroundMount&, const GroundMount&) = default;
+  // Its point in the body's frame.
+  [[nodiscard]] Vec2 point() const noexcept { return polar(bearing_rad, radius_m); }
 };
 
 struct GroundSensorParams {

@@ -231,10 +231,9 @@ class Checker {
     return false;
   }
   void fail(Rule rule, double found, double limit, int index) { out_.push_back(Problem{rule, index, found, limit}); }
-  [[nodiscard]] std::size_t count() const noexcept { return out_.size(); }
   // At most `max` parts: the problem is about the first one too many.
-  void at_most(Rule rule, std::size_t count, std::size_t max) {
-    require(rule, static_cast<double>(count), static_cast<double>(max), static_cast<int>(max));
+  bool at_most(Rule rule, std::size_t count, std::size_t max) {
+    return require(rule, static_cast<double>(count), static_cast<double>(max), static_cast<int>(max));
   }
   // "Lies inside": `beyond` is how far a part reaches past the walls (NaN fails too).
   bool inside(Rule rule, double beyond, int index) {
@@ -338,17 +337,21 @@ void check_lights(const ArenaSpec& a, bool sized, Checker& c) {
   }
 }
 
+// A sensor's distance from the centre: never negative, and within the body's circle when the
+// body is valid. True when both hold as far as checked.
+bool check_mount_radius(Rule min, Rule max, double r, const RobotParams& robot, bool body, int at, Checker& c) {
+  return c.require(min, r, 0.0, at) && (!body || c.require(max, r, robot.body_radius_m, at));
+}
+
 // The mounts sit on the body; Enki's curve has no pole; a measured response's distances
 // increase from 0 and its readings are normalised.
 void check_ir_layout(const RobotParams& robot, bool body, Checker& c) {
   const IrParams& ir = robot.ir;
   c.at_most(Rule::IrCount, ir.mounts.size(), kMaxIrSensors);
-  for (std::size_t i = 0; i < ir.mounts.size(); ++i) {
-    if (!ir.mounts[i].radius_m) continue;
-    const double r = *ir.mounts[i].radius_m;
-    const int at = static_cast<int>(i);
-    if (c.require(Rule::IrMountRadiusMin, r, 0.0, at) && body) c.require(Rule::IrMountRadiusMax, r, robot.body_radius_m, at);
-  }
+  for (std::size_t i = 0; i < ir.mounts.size(); ++i)
+    if (ir.mounts[i].radius_m)
+      check_mount_radius(Rule::IrMountRadiusMin, Rule::IrMountRadiusMax, *ir.mounts[i].radius_m, robot, body,
+                         static_cast<int>(i), c);
   if (ir.response.empty()) {
     c.require(Rule::IrCurve, ir.curve_c_cm2 - ir.curve_x0_cm * ir.curve_x0_cm, 0.0);
     return;
@@ -363,31 +366,48 @@ void check_ir_layout(const RobotParams& robot, bool body, Checker& c) {
   }
 }
 
-// A convex outline round the centre, inside the body's circle; none under the acceleration drive.
-void check_outline(const RobotParams& robot, bool body, Checker& c) {
+// A convex outline round the centre, inside the body's circle; none under the acceleration
+// drive. True when the robot has one and it holds (what its ground sensors are checked against).
+bool check_outline(const RobotParams& robot, bool body, Checker& c) {
   const std::vector<Vec2>& outline = robot.outline;
-  if (outline.empty()) return;
+  if (outline.empty()) return false;
   if (robot.drive == DriveKind::Acceleration) {
     c.require(Rule::OutlineWithoutWheels, static_cast<double>(outline.size()), 0.0);
-    return;
+    return false;
   }
-  if (!c.require(Rule::OutlineCountMin, static_cast<double>(outline.size()), 3.0)) return;
-  c.at_most(Rule::OutlineCountMax, outline.size(), kMaxOutlineVertices);
+  if (!c.require(Rule::OutlineCountMin, static_cast<double>(outline.size()), 3.0)) return false;
+  bool ok = c.at_most(Rule::OutlineCountMax, outline.size(), kMaxOutlineVertices);
   int at = -1;
   const double turn = smallest_turn(outline, at);
-  if (!c.require(Rule::OutlineConvex, turn, 0.0, at)) return;
+  if (!c.require(Rule::OutlineConvex, turn, 0.0, at)) return false;
   const std::vector<Vec2> ccw = counter_clockwise(outline);
-  if (!c.require(Rule::OutlineCorner, smallest_corner(ccw, at), kMinOutlineCorner_rad, at)) return;
+  if (!c.require(Rule::OutlineCorner, smallest_corner(ccw, at), kMinOutlineCorner_rad, at)) return false;
   // Moved in, a body thinner than twice the inset turns inside out.
   const std::vector<Vec2> in = inset(ccw, kOutlineInset_m);
   int unused = -1;
   const bool kept = twice_signed_area(in) > 0.0 && smallest_turn(in, unused) > 0.0;
-  if (!c.require(Rule::OutlineThin, kept ? 1.0 : 0.0, 0.0)) return;
-  c.require(Rule::OutlineAroundCentre, origin_depth(ccw), 0.0);
-  if (!body) return;
+  if (!c.require(Rule::OutlineThin, kept ? 1.0 : 0.0, 0.0)) return false;
+  ok = c.require(Rule::OutlineAroundCentre, origin_depth(ccw), 0.0) && ok;
+  if (!body) return false;
   for (std::size_t i = 0; i < outline.size(); ++i)
-    c.require(Rule::OutlineWithinRadius, std::hypot(outline[i].x, outline[i].y), robot.body_radius_m + kInsideTolerance_m,
-              static_cast<int>(i));
+    ok = c.require(Rule::OutlineWithinRadius, std::hypot(outline[i].x, outline[i].y),
+                   robot.body_radius_m + kInsideTolerance_m, static_cast<int>(i)) &&
+         ok;
+  return ok;
+}
+
+// At most kMaxGroundSensors, each on the body: within its circle and, with an outline that
+// holds, under it.
+void check_ground(const RobotParams& robot, bool body, bool outline, Checker& c) {
+  c.at_most(Rule::GroundCount, robot.ground.mounts.size(), kMaxGroundSensors);
+  const std::vector<Vec2> ccw = outline ? counter_clockwise(robot.outline) : std::vector<Vec2>{};
+  for (std::size_t i = 0; i < robot.ground.mounts.size(); ++i) {
+    const GroundMount& m = robot.ground.mounts[i];
+    const int at = static_cast<int>(i);
+    if (check_mount_radius(Rule::GroundMountRadiusMin, Rule::GroundMountRadiusMax, m.radius_m, robot, body, at, c) &&
+        outline)
+      c.require(Rule::GroundUnderOutline, origin_depth(ccw, m.point()), 0.0, at);
+  }
 }
 
 [[noreturn]] void throw_first(const std::vector<Problem>& problems) {
@@ -486,23 +506,7 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
   if (c.require(Rule::IrRaysMin, robot.ir.rays, 1)) c.require(Rule::IrRaysMax, robot.ir.rays, kMaxIrRays);
   c.require(Rule::IrNoise, robot.ir.noise_sd, 0.0);
   check_ir_layout(robot, body, c);
-  const std::size_t problems_before = c.count();
-  check_outline(robot, body, c);
-  c.at_most(Rule::GroundCount, robot.ground.mounts.size(), kMaxGroundSensors);
-  for (std::size_t i = 0; i < robot.ground.mounts.size(); ++i) {
-    const double r = robot.ground.mounts[i].radius_m;
-    const int at = static_cast<int>(i);
-    if (c.require(Rule::GroundMountRadiusMin, r, 0.0, at) && body)
-      c.require(Rule::GroundMountRadiusMax, r, robot.body_radius_m, at);
-  }
-  if (!robot.outline.empty() && robot.drive == DriveKind::Differential && problems_before == c.count()) {
-    const std::vector<Vec2> ccw = counter_clockwise(robot.outline);
-    for (std::size_t i = 0; i < robot.ground.mounts.size(); ++i) {
-      const GroundMount& m = robot.ground.mounts[i];
-      const Vec2 p{m.radius_m * std::cos(m.bearing_rad), m.radius_m * std::sin(m.bearing_rad)};
-      c.require(Rule::GroundUnderOutline, origin_depth(ccw, p), 0.0, static_cast<int>(i));
-    }
-  }
+  check_ground(robot, body, check_outline(robot, body, c), c);
   c.at_most(Rule::BumperCount, robot.bumpers.size(), kMaxBumpers);
   for (std::size_t i = 0; i < robot.bumpers.size(); ++i) {
     const double width = robot.bumpers[i].to_rad - robot.bumpers[i].from_rad;

@@ -1,5 +1,6 @@
 #include "runtime/sim/world.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/sim/light_sensor.hpp"
 #include "runtime/sim/motor.hpp"
+#include "runtime/sim/outline.hpp"
 #include "runtime/sim/rangefinder.hpp"
 #include "runtime/sim/validate.hpp"
 
@@ -41,6 +43,7 @@ struct World::Impl {
   Floor floor;
   std::optional<Body> body;          // the differential drive's; the acceleration drive is kinematic
   KinematicBody kinematic;           // the acceleration drive's
+  std::vector<Vec2> ground_points;   // the ground sensors' places in the body's frame
   RobotState state;
 
   Impl(const ArenaSpec& a, const RobotParams& r)
@@ -56,6 +59,7 @@ struct World::Impl {
         floor(a, r),
         kinematic(r) {
     if (r.drive == DriveKind::Differential) body.emplace(a, r, substep_s, geometry);
+    for (const GroundMount& m : r.ground.mounts) ground_points.push_back(m.point());
     reset(a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
   }
 
@@ -89,7 +93,7 @@ struct World::Impl {
       body->move(drive.velocity(vl, vr, body->heading()));
       if (body->touching()) {
         collided = true;
-        if (!robot.bumpers.empty()) bumped |= bumpers_at(body->contact_bearing());
+        if (!robot.bumpers.empty()) bumped |= bumpers_toward(body->pose(), body->contact_point());
       }
       floor.substep(body->position());
     }
@@ -110,17 +114,14 @@ struct World::Impl {
     finish_step(kinematic.pose(), {start.x_m, start.y_m}, {std::cos(start.heading_rad), std::sin(start.heading_rad)},
                 collided);
     // A cancelled move: towards the wall nearest to where it would have gone, from where it stayed.
-    if (collided && !robot.bumpers.empty()) {
-      const Pose& p = state.pose;
-      const Vec2 at = geometry.nearest_point(kinematic.attempted());
-      state.bumped = bumpers_at(std::atan2(at.y - p.y_m, at.x - p.x_m) - p.heading_rad);
-    } else {
-      state.bumped = 0;
-    }
+    state.bumped = collided && !robot.bumpers.empty()
+                       ? bumpers_toward(state.pose, geometry.nearest_point(kinematic.attempted()))
+                       : 0;
   }
 
-  // The bumpers whose sectors hold a contact at `bearing` (radians from the heading).
-  [[nodiscard]] std::uint32_t bumpers_at(double bearing) const noexcept {
+  // The bumpers whose sectors hold a contact at `at`, seen from a body at `from`.
+  [[nodiscard]] std::uint32_t bumpers_toward(const Pose& from, Vec2 at) const noexcept {
+    const double bearing = std::atan2(at.y - from.y_m, at.x - from.x_m) - from.heading_rad;
     std::uint32_t bits = 0;
     for (std::size_t i = 0; i < robot.bumpers.size(); ++i)
       if (robot.bumpers[i].holds(bearing)) bits |= 1U << i;
@@ -187,14 +188,10 @@ void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
 }
 void World::read_rangefinders(std::span<double> out) const { impl_->rangefinders.read(impl_->state.pose, out); }
 void World::read_ground(std::span<double> out) const {
-  const Pose& pose = impl_->state.pose;
-  const double c = std::cos(pose.heading_rad), s = std::sin(pose.heading_rad);
-  const std::vector<GroundMount>& mounts = impl_->robot.ground.mounts;
-  for (std::size_t i = 0; i < mounts.size() && i < out.size(); ++i) {
-    const double a = std::cos(mounts[i].bearing_rad) * mounts[i].radius_m;
-    const double b = std::sin(mounts[i].bearing_rad) * mounts[i].radius_m;
-    out[i] = impl_->floor.visible_at({pose.x_m + c * a - s * b, pose.y_m + s * a + c * b}) ? 1.0 : 0.0;
-  }
+  const std::vector<Vec2>& points = impl_->ground_points;
+  std::array<Vec2, kMaxGroundSensors> at;
+  place_points(points, impl_->state.pose, at);
+  for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = impl_->floor.visible_at(at[i]) ? 1.0 : 0.0;
 }
 
 std::span<const Vec2> World::zone_centers() const noexcept { return impl_->floor.zone_centers(); }

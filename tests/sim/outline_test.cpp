@@ -56,7 +56,7 @@ double sampled_clearance(const ArenaSpec& arena, const std::vector<Vec2>& placed
 
 std::vector<Vec2> placed(const std::vector<Vec2>& outline, const Pose& p) {
   std::vector<Vec2> out(outline.size());
-  place_outline(outline, p, out);
+  place_points(outline, p, out);
   return out;
 }
 
