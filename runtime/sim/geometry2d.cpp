@@ -306,6 +306,13 @@ StaticGeometry2D::Nearby StaticGeometry2D::nearby() const {
   return n;
 }
 
+StaticGeometry2D::Nearby StaticGeometry2D::everything() const {
+  Nearby n{{true, true, true, true}, {}, {}};
+  for (std::uint32_t i = 0; i < circles_.size(); ++i) n.circles.push_back(i);
+  for (std::uint32_t i = 0; i < boxes_.size(); ++i) n.boxes.push_back(i);
+  return n;
+}
+
 void StaticGeometry2D::gather(Vec2 centre, double reach_m, Nearby& out) const noexcept {
   const bool walls = near_walls(centre, reach_m);
   out.walls = {walls, walls, walls, walls};
@@ -331,18 +338,42 @@ void StaticGeometry2D::cast_fan(const Nearby& near, Vec2 origin, double range_m,
     const double r2 = c.r * c.r;
     for (int i = 0; i < n; ++i) t[i] = std::min(t[i], circle_hit(c.cx, c.cy, r2, origin.x, origin.y, dx[i], dy[i]));
   }
+  const double reach_m = range_m + kCullMargin_m;
   for (const std::uint32_t k : near.boxes) {
     if (!fan_meets_box(k, origin, range_m)) continue;
-    // The fan's origin in the box's frame, once; a ray whose nearest hit so far is no farther
-    // than the box's bounding circle cannot meet the box nearer (its min stays as it is).
     const Box& bx = boxes_[k];
     const double wx = origin.x - bx.cx;
     const double wy = origin.y - bx.cy;
     const double px = bx.c * wx + bx.s * wy;
     const double py = -bx.s * wx + bx.c * wy;
-    const double nearest = std::sqrt(wx * wx + wy * wy) - bx.bound - kCullMargin_m;
-    for (int i = 0; i < n; ++i)
-      if (t[i] > nearest) t[i] = std::min(t[i], box_frame_hit(bx, px, py, dx[i], dy[i]));
+    const double ox = std::max(std::abs(px) - bx.hx, 0.0);
+    const double oy = std::max(std::abs(py) - bx.hy, 0.0);
+    const double gap2 = ox * ox + oy * oy;
+    if (gap2 <= reach_m * reach_m) fan_box(k, px, py, gap2, n, dx, dy, t);  // squared: a root's latency showed
+  }
+}
+
+void StaticGeometry2D::fan_box(std::uint32_t k, double px, double py, double gap2, int n, const double* dx,
+                               const double* dy, double* t) const noexcept {
+  // The culls skip only rays the box cannot lower, so the t are those of testing every ray: a
+  // ray whose nearest hit so far is no farther than the box (gap2, the squared distance to
+  // it), one whose line passes the box by more than rounding (the slab test's intervals are
+  // then disjoint by far more than its rounding), and one for which the box lies behind the
+  // origin or beyond t. A maze's long walls have bounding circles that reach everywhere;
+  // these culls do not depend on them.
+  const Box& bx = boxes_[k];
+  for (int i = 0; i < n; ++i) {
+    const double near_m = t[i] + kCullMargin_m;
+    if (near_m * near_m <= gap2) continue;
+    const double ux = bx.c * dx[i] + bx.s * dy[i];
+    const double uy = -bx.s * dx[i] + bx.c * dy[i];
+    const double ax = std::abs(ux);
+    const double ay = std::abs(uy);
+    if (std::abs(ux * py - uy * px) > bx.hx * ay + bx.hy * ax + kCullMargin_m) continue;
+    const double along = -(px * ux + py * uy);
+    const double half = bx.hx * ax + bx.hy * ay + kCullMargin_m;
+    if (along + half < 0.0 || along - half > t[i]) continue;
+    t[i] = std::min(t[i], box_frame_hit(bx, px, py, dx[i], dy[i]));
   }
 }
 

@@ -59,6 +59,9 @@ class StaticGeometry2D {
     [[nodiscard]] bool empty() const noexcept { return !walls.any() && circles.empty() && boxes.empty(); }
   };
   [[nodiscard]] Nearby nearby() const;
+  // Every wall and obstacle: for fans cast from the centre of the reach they would be gathered
+  // for, where cast_fan's own culls by the fan's origin pick the same shapes as gather.
+  [[nodiscard]] Nearby everything() const;
   // The shapes cast_rays(centre, reach_m, ...) tests.
   void gather(Vec2 centre, double reach_m, Nearby& out) const noexcept;
 
@@ -87,6 +90,9 @@ class StaticGeometry2D {
   [[nodiscard]] static double box_hit(const Box& b, double ox, double oy, double dx, double dy) noexcept;
   // The same from the ray's origin (px, py) in the box's frame.
   [[nodiscard]] static double box_frame_hit(const Box& b, double px, double py, double dx, double dy) noexcept;
+  // cast_fan's rays against box k, the fan's origin at (px, py) in its frame, gap2 from it.
+  void fan_box(std::uint32_t k, double px, double py, double gap2, int n, const double* dx, const double* dy,
+               double* t) const noexcept;
   [[nodiscard]] bool near_walls(Vec2 centre, double reach_m) const noexcept;
   // Whether the offset (ex, ey) is no longer than reach_m.
   [[nodiscard]] static bool within(double ex, double ey, double reach_m) noexcept {

@@ -75,6 +75,7 @@ IrModel::IrModel(const RobotParams& robot, const StaticGeometry2D& geometry)
 void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const noexcept {
   const auto sensors = static_cast<std::size_t>(sensors_);
   std::fill(out.begin() + static_cast<std::ptrdiff_t>(sensors), out.end(), 0.0);
+  if (sensors == 0) return;  // the navigator: no search of the arena, no draw
   geometry_.gather({pose.x_m, pose.y_m}, body_radius_m_ + range_m_, near_);
   if (near_.empty()) {
     for (std::size_t sensor = 0; sensor < sensors; ++sensor) {

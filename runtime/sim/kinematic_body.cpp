@@ -22,6 +22,7 @@ KinematicBody::KinematicBody(const RobotParams& robot) noexcept
 
 void KinematicBody::place(const Pose& pose) noexcept {
   pose_ = pose;
+  facing_ = {std::cos(pose.heading_rad), std::sin(pose.heading_rad)};
   speed_mps_ = 0.0;
   turn_radps_ = 0.0;
 }
@@ -29,11 +30,11 @@ void KinematicBody::place(const Pose& pose) noexcept {
 bool KinematicBody::move(double turn_command, double speed_command, const StaticGeometry2D& geometry) noexcept {
   turn_radps_ = std::clamp(turn_radps_ + command(turn_command) * turn_step_radps_, -max_turn_radps_, max_turn_radps_);
   speed_mps_ = std::clamp(speed_mps_ + command(speed_command) * speed_step_mps_, -max_speed_mps_, max_speed_mps_);
-  const Vec2 next{pose_.x_m + std::cos(pose_.heading_rad) * speed_mps_ * dt_s_,
-                  pose_.y_m + std::sin(pose_.heading_rad) * speed_mps_ * dt_s_};
+  const Vec2 next{pose_.x_m + facing_.x * speed_mps_ * dt_s_, pose_.y_m + facing_.y * speed_mps_ * dt_s_};
   attempted_ = next;
   // Headings in (-pi, pi], as the observable `heading` reads them.
   pose_.heading_rad = std::remainder(pose_.heading_rad + turn_radps_ * dt_s_, 2 * std::numbers::pi);
+  facing_ = {std::cos(pose_.heading_rad), std::sin(pose_.heading_rad)};
   if (geometry.clearance(next, radius_m_) < radius_m_) return false;
   pose_.x_m = next.x;
   pose_.y_m = next.y;

@@ -23,6 +23,9 @@ class KinematicBody {
   [[nodiscard]] bool move(double turn_command, double speed_command, const StaticGeometry2D& geometry) noexcept;
 
   [[nodiscard]] const Pose& pose() const noexcept { return pose_; }
+  // (cos, sin) of the pose's heading, computed once per move for the move, the step's
+  // displacement and the rangefinders: the same values each would compute.
+  [[nodiscard]] Vec2 facing() const noexcept { return facing_; }
   // Where the last move would have taken the centre (where it went, unless cancelled).
   [[nodiscard]] Vec2 attempted() const noexcept { return attempted_; }
   [[nodiscard]] double turn_radps() const noexcept { return turn_radps_; }
@@ -34,6 +37,7 @@ class KinematicBody {
   double max_speed_mps_, speed_step_mps_;      // the top speed; its change at command 1 in one step
   double max_turn_radps_, turn_step_radps_;    // the top turn rate; its change at command 1 in one step
   Pose pose_;
+  Vec2 facing_;
   Vec2 attempted_;
   double speed_mps_ = 0.0;
   double turn_radps_ = 0.0;

@@ -7,7 +7,7 @@
 namespace esc::sim {
 
 RangefinderModel::RangefinderModel(const RobotParams& robot, const StaticGeometry2D& geometry)
-    : range_m_(robot.rangefinders.range_m), geometry_(geometry), near_(geometry.nearby()) {
+    : range_m_(robot.rangefinders.range_m), geometry_(geometry), all_(geometry.everything()) {
   for (const double a : robot.rangefinders.angles_rad) {
     cos_.push_back(std::cos(a));
     sin_.push_back(std::sin(a));
@@ -15,19 +15,22 @@ RangefinderModel::RangefinderModel(const RobotParams& robot, const StaticGeometr
 }
 
 void RangefinderModel::read(const Pose& pose, std::span<double> out) const noexcept {
+  if (!cos_.empty()) read(pose, {std::cos(pose.heading_rad), std::sin(pose.heading_rad)}, out);
+}
+
+void RangefinderModel::read(const Pose& pose, Vec2 facing, std::span<double> out) const noexcept {
   const auto n = cos_.size();
   if (n == 0) return;
   const Vec2 centre{pose.x_m, pose.y_m};
-  geometry_.gather(centre, range_m_, near_);
-  const double c = std::cos(pose.heading_rad);
-  const double s = std::sin(pose.heading_rad);
+  const double c = facing.x;
+  const double s = facing.y;
   std::array<double, kMaxRangefinders> dx, dy, t;
   for (std::size_t i = 0; i < n; ++i) {
     dx[i] = c * cos_[i] - s * sin_[i];
     dy[i] = s * cos_[i] + c * sin_[i];
     t[i] = range_m_;
   }
-  geometry_.cast_fan(near_, centre, range_m_, static_cast<int>(n), dx.data(), dy.data(), t.data());
+  geometry_.cast_fan(all_, centre, range_m_, static_cast<int>(n), dx.data(), dy.data(), t.data());
   for (std::size_t i = 0; i < n; ++i) out[i] = t[i] / range_m_;
 }
 

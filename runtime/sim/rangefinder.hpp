@@ -19,9 +19,11 @@ class RangefinderModel {
   RangefinderModel(const RobotParams& robot, const StaticGeometry2D& geometry);
 
   // The readings of the robot at `pose`, in the order the robot declares its rangefinders,
-  // into out[0 .. count()); `out` holds at least count() values. Uses scratch owned by the
-  // model: one reader at a time. No allocation; a robot without rangefinders casts nothing.
+  // into out[0 .. count()); `out` holds at least count() values. No allocation; a robot
+  // without rangefinders casts nothing.
   void read(const Pose& pose, std::span<double> out) const noexcept;
+  // The same with the heading's (cos, sin) already known.
+  void read(const Pose& pose, Vec2 facing, std::span<double> out) const noexcept;
 
   [[nodiscard]] int count() const noexcept { return static_cast<int>(cos_.size()); }
 
@@ -29,7 +31,7 @@ class RangefinderModel {
   double range_m_;
   const StaticGeometry2D& geometry_;
   std::vector<double> cos_, sin_;            // each ray's direction in the body frame
-  mutable StaticGeometry2D::Nearby near_;    // scratch: the shapes within range
+  StaticGeometry2D::Nearby all_;             // cast_fan culls them by the rays' reach
 };
 
 }  // namespace esc::sim

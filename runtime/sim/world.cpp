@@ -107,12 +107,12 @@ struct World::Impl {
   // substeps would, at the position the step ends at.
   void step_kinematic(double turn_command, double speed_command) {
     const Pose start = kinematic.pose();
+    const Vec2 start_facing = kinematic.facing();
     const bool collided = !kinematic.move(turn_command, speed_command, geometry);
     state.wheel_speed_mps[0] = kinematic.turn_radps();
     state.wheel_speed_mps[1] = kinematic.speed_mps();
     for (int i = 0; i < robot.physics_substeps; ++i) floor.substep({kinematic.pose().x_m, kinematic.pose().y_m});
-    finish_step(kinematic.pose(), {start.x_m, start.y_m}, {std::cos(start.heading_rad), std::sin(start.heading_rad)},
-                collided);
+    finish_step(kinematic.pose(), {start.x_m, start.y_m}, start_facing, collided);
     // A cancelled move: towards the wall nearest to where it would have gone, from where it stayed.
     state.bumped = collided && !robot.bumpers.empty()
                        ? bumpers_toward(state.pose, geometry.nearest_point(kinematic.attempted()))
@@ -186,9 +186,13 @@ void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
   const std::span<const PlacedLight> lights = impl_->floor.lights();
   impl_->light.read(impl_->state.pose, impl_->geometry, lights.data(), lights.size(), out, rng);
 }
-void World::read_rangefinders(std::span<double> out) const { impl_->rangefinders.read(impl_->state.pose, out); }
+void World::read_rangefinders(std::span<double> out) const {
+  if (impl_->body) impl_->rangefinders.read(impl_->state.pose, out);
+  else impl_->rangefinders.read(impl_->state.pose, impl_->kinematic.facing(), out);
+}
 void World::read_ground(std::span<double> out) const {
   const std::vector<Vec2>& points = impl_->ground_points;
+  if (points.empty()) return;  // no sine and cosine for a robot without ground sensors
   std::array<Vec2, kMaxGroundSensors> at;
   place_points(points, impl_->state.pose, at);
   for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = impl_->floor.visible_at(at[i]) ? 1.0 : 0.0;

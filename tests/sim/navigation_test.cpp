@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -63,6 +65,60 @@ TEST(SimNavigation, RaysMeetSegmentWallsBoxesCylindersAndTheArenaWalls) {
   ArenaSpec c = test::empty_arena(1.0, 1.0);
   c.cylinders.push_back({{0.5, 0.5}, 0.1});
   EXPECT_NEAR(cast(StaticGeometry2D(c), {0.45, 0.1}, {0, 1}), 0.4 - std::sqrt(0.0075), 1e-12);
+}
+
+// cast_fan's culls (the box's own distance, the ray's line passing it, the box behind the
+// origin or beyond t) skip only what cannot lower a ray: its readings equal testing every
+// shape, bit for bit, also for rays aimed at the boxes' corners and along their faces, where
+// a ray grazes a box within rounding.
+TEST(SimNavigation, FanCullsGiveTheReadingsOfTestingEveryShape) {
+  ArenaSpec a = test::empty_arena(1.0, 0.6);
+  Rng rng(7);
+  for (int i = 0; i < 12; ++i)  // long thin walls as in a maze, and blocks
+    a.walls.push_back({{rng.uniform(0.0, 1.0), rng.uniform(0.0, 0.6)}, {rng.uniform(0.0, 1.0), rng.uniform(0.0, 0.6)},
+                       i % 3 == 0 ? 0.05 : 0.002});
+  a.boxes.push_back({{0.3, 0.3}, {0.1, 0.04}, 0.0});
+  a.cylinders.push_back({{0.7, 0.2}, 0.05});
+  const StaticGeometry2D g(a);
+  const StaticGeometry2D::Nearby all = g.everything();
+  std::vector<Vec2> corners;  // every wall's and box's corners, where grazing rays are aimed
+  for (const WallSegment& w : a.walls) {
+    const BoxObstacle b = wall_box(w);
+    for (const double sx : {-0.5, 0.5})
+      for (const double sy : {-0.5, 0.5}) {
+        const double x = sx * b.size_m.x, y = sy * b.size_m.y;
+        corners.push_back({b.center_m.x + std::cos(b.angle_rad) * x - std::sin(b.angle_rad) * y,
+                           b.center_m.y + std::sin(b.angle_rad) * x + std::cos(b.angle_rad) * y});
+      }
+  }
+  const double range = 0.34375;
+  int compared = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Vec2 o{rng.uniform(0.01, 0.99), rng.uniform(0.01, 0.59)};
+    std::array<double, 6> dx{}, dy{}, t{}, every{};
+    for (std::size_t r = 0; r < dx.size(); ++r) {
+      double angle = rng.uniform(-std::numbers::pi, std::numbers::pi);
+      if (r < 3) {  // at a corner, off by nothing or by about rounding
+        const Vec2 c = corners[static_cast<std::size_t>(rng.uniform(0.0, 1.0) * static_cast<double>(corners.size())) %
+                               corners.size()];
+        angle = std::atan2(c.y - o.y, c.x - o.x) + (r == 0 ? 0.0 : (r == 1 ? 1e-15 : -1e-12));
+      } else if (r == 3) {  // along a face of a random wall
+        angle = wall_box(a.walls[static_cast<std::size_t>(k) % a.walls.size()]).angle_rad;
+      }
+      dx[r] = std::cos(angle);
+      dy[r] = std::sin(angle);
+      t[r] = every[r] = range;
+    }
+    g.cast_fan(all, o, range, 6, dx.data(), dy.data(), t.data());
+    const std::array<double, 6> ox{o.x, o.x, o.x, o.x, o.x, o.x}, oy{o.y, o.y, o.y, o.y, o.y, o.y};
+    g.cast_rays(o, 1e9, 6, ox.data(), oy.data(), dx.data(), dy.data(), every.data());  // no cull
+    for (std::size_t r = 0; r < t.size(); ++r) {
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(t[r]), std::bit_cast<std::uint64_t>(every[r]))
+          << "ray " << r << " from (" << o.x << ", " << o.y << "): " << t[r] << " against " << every[r];
+      compared += every[r] < range;
+    }
+  }
+  EXPECT_GT(compared, 40000);  // most rays meet something within range
 }
 
 // The IR sensors and the light sensors' occlusion see a segment wall as the block of its
