@@ -301,7 +301,7 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
   write_atomically(out / (stem + ".svg"), report::trajectory_svg(done.figure()));
   write_atomically(out / (stem + ".csv"),
                    report::trajectory_csv(done.drawn, frame.choices, spec.robot.control_step_s,
-                                          {spec.robot.ir.name, spec.robot.ir.mounts.size()}));
+                                          {spec.robot.ir.name, spec.robot.ir.mounts.size(), spec.robot.ground.name}));
   return done;
 }
 

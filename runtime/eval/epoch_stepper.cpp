@@ -31,6 +31,10 @@ TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, dou
   t.radar_count = static_cast<std::size_t>(world_->robot().radars);
   std::copy_n(frame_.begin() + expr::slot::range, t.range_count, t.range.begin());
   std::copy_n(frame_.begin() + expr::slot::radar, t.radar_count, t.radar.begin());
+  t.ground_count = world_->robot().ground.mounts.size();
+  t.bumper_count = world_->robot().bumpers.size();
+  std::copy_n(frame_.begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());
+  std::copy_n(frame_.begin() + expr::slot::bumper, t.bumper_count, t.bumper.begin());
   t.left_command = cmd.left;
   t.right_command = cmd.right;
   t.left_speed_mps = state.wheel_speed_mps[0];

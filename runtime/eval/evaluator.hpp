@@ -44,6 +44,12 @@ struct TraceStep {
   std::size_t range_count = 0;
   std::array<double, sim::kMaxRadars> radar{};
   std::size_t radar_count = 0;
+  // The ground sensors (1 over a visible zone) and bumpers (1 on a step with a contact in
+  // their sector) the robot declares, as `ground_sensor` and `bumper` hold them.
+  std::array<double, sim::kMaxGroundSensors> ground{};
+  std::size_t ground_count = 0;
+  std::array<double, sim::kMaxBumpers> bumper{};
+  std::size_t bumper_count = 0;
   double left_command = 0.0;                  // commands in [-1, 1] chosen by the controller
   double right_command = 0.0;
   double left_speed_mps = 0.0;                // measured wheel speeds after the step

@@ -13,21 +13,26 @@
 
 namespace esc::report {
 
-// The robot's IR sensors as its scripts read them: their name and count (the Khepera's
-// eight `ir`, the e-puck's eight `prox`, none on the navigator); as many light sensors.
-struct IrColumns {
-  std::string_view name = "ir";
-  std::size_t count = sim::kIrSensors;
+// The robot's sensors as its scripts read them: the IR sensors' name and count (the
+// Khepera's eight `ir`, the e-puck's eight `prox`, none on the navigator; as many light
+// sensors), and the ground sensors' name (the Thymio II's `prox_ground`).
+struct SensorColumns {
+  std::string_view ir = "ir";
+  std::size_t ir_count = sim::kIrSensors;
+  std::string_view ground = "ground_sensor";
 };
 
 // The header line, without its newline: the IR sensors (ir0, ...; prox0, ... on the e-puck)
-// and as many light sensors, then the robot's `ranges` rangefinders (range0, ...) and
-// `radars` goal radars (radar0, ...); a robot without some has no such columns.
-[[nodiscard]] std::string trajectory_csv_header(const IrColumns& ir, std::size_t ranges, std::size_t radars);
+// and as many light sensors, then the robot's `ranges` rangefinders (range0, ...), `radars`
+// goal radars (radar0, ...), `grounds` ground sensors (ground_sensor0, ...; prox_ground0, ...
+// on the Thymio II) and `bumpers` bumpers (bumper0, ...); a robot without some has no such
+// columns.
+[[nodiscard]] std::string trajectory_csv_header(const SensorColumns& sensors, std::size_t ranges, std::size_t radars,
+                                                std::size_t grounds = 0, std::size_t bumpers = 0);
 
 // `choices`: the controller's action or behavior names (empty for a classical head, whose
 // `behavior` column stays empty).
 [[nodiscard]] std::string trajectory_csv(std::span<const eval::TraceStep> steps, const std::vector<std::string>& choices,
-                                         double control_step_s, const IrColumns& ir = {});
+                                         double control_step_s, const SensorColumns& sensors = {});
 
 }  // namespace esc::report

@@ -13,28 +13,31 @@ namespace esc::store {
 namespace {
 
 // A replay row: the kTraceColumns fixed columns, then the accumulator level, the position
-// of each of the arena's zones in this epoch (x, y), the light sensors, and the rangefinders
-// and goal radars the robot declares. Traces stored before these columns existed have
-// exactly kTraceColumns per row, or no light, range or radar columns: the stored column
-// names say which, so that a trace is read back as it was written.
+// of each of the arena's zones in this epoch (x, y), the light sensors, and the rangefinders,
+// goal radars, ground sensors and bumpers the robot declares. Traces stored before these
+// columns existed have exactly kTraceColumns per row, or no light, range, radar, ground or
+// bumper columns: the stored column names say which, so that a trace is read back as it was
+// written.
 struct TraceLayout {
   bool extended = true;   // the accumulator and zones follow the fixed columns
   std::size_t zones = 0;
   bool lights = true;
   std::size_t ranges = 0;
   std::size_t radars = 0;
+  std::size_t grounds = 0;
+  std::size_t bumpers = 0;
 
   [[nodiscard]] std::size_t width() const noexcept {
     if (!extended) return kTraceColumns;
     return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0) + ranges +
-           radars;
+           radars + grounds + bumpers;
   }
 };
 
 TraceLayout layout_of(std::span<const eval::TraceStep> trace) {
   if (trace.empty()) return {};
   const eval::TraceStep& t = trace.front();
-  return {true, t.zone_count, true, t.range_count, t.radar_count};
+  return {true, t.zone_count, true, t.range_count, t.radar_count, t.ground_count, t.bumper_count};
 }
 
 std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_view prefix) {
@@ -54,6 +57,8 @@ TraceLayout layout_of(const std::vector<std::string>& columns) {
   l.lights = count_prefixed(columns, "light") != 0;
   l.ranges = count_prefixed(columns, "range");
   l.radars = count_prefixed(columns, "radar");
+  l.grounds = count_prefixed(columns, "ground");
+  l.bumpers = count_prefixed(columns, "bumper");
   return l;
 }
 
@@ -85,6 +90,8 @@ std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
     v.insert(v.end(), t.light.begin(), t.light.end());
     v.insert(v.end(), t.range.begin(), t.range.begin() + static_cast<std::ptrdiff_t>(layout.ranges));
     v.insert(v.end(), t.radar.begin(), t.radar.begin() + static_cast<std::ptrdiff_t>(layout.radars));
+    v.insert(v.end(), t.ground.begin(), t.ground.begin() + static_cast<std::ptrdiff_t>(layout.grounds));
+    v.insert(v.end(), t.bumper.begin(), t.bumper.begin() + static_cast<std::ptrdiff_t>(layout.bumpers));
   }
   return v;
 }
@@ -94,7 +101,9 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const st
   const TraceLayout layout = layout_of(columns);
   if (width < kTraceColumns || layout.width() != width || layout.zones > sim::kMaxZones ||
       layout.ranges > static_cast<std::size_t>(sim::kMaxRangefinders) ||
-      layout.radars > static_cast<std::size_t>(sim::kMaxRadars))
+      layout.radars > static_cast<std::size_t>(sim::kMaxRadars) ||
+      layout.grounds > static_cast<std::size_t>(sim::kMaxGroundSensors) ||
+      layout.bumpers > static_cast<std::size_t>(sim::kMaxBumpers))
     throw StoreError(fmt::format("the database is damaged: a replay trace has {} columns", width));
   if (v.size() % width != 0) throw StoreError("the database is damaged: a replay trace has a partial row");
   std::vector<eval::TraceStep> out(v.size() / width);
@@ -123,11 +132,16 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const st
     for (std::size_t k = 0; k < layout.ranges; ++k) t.range[k] = *c++;
     t.radar_count = layout.radars;
     for (std::size_t k = 0; k < layout.radars; ++k) t.radar[k] = *c++;
+    t.ground_count = layout.grounds;
+    for (std::size_t k = 0; k < layout.grounds; ++k) t.ground[k] = *c++;
+    t.bumper_count = layout.bumpers;
+    for (std::size_t k = 0; k < layout.bumpers; ++k) t.bumper[k] = *c++;
   }
   return out;
 }
 
-std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars) {
+std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars,
+                                            std::size_t grounds, std::size_t bumpers) {
   std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
   for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
   for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", kRunningFitness,
@@ -141,6 +155,8 @@ std::vector<std::string> trace_column_names(std::size_t zones, std::size_t range
   for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
   for (std::size_t i = 0; i < ranges; ++i) c.push_back(fmt::format("range{}", i));
   for (std::size_t i = 0; i < radars; ++i) c.push_back(fmt::format("radar{}", i));
+  for (std::size_t i = 0; i < grounds; ++i) c.push_back(fmt::format("ground{}", i));
+  for (std::size_t i = 0; i < bumpers; ++i) c.push_back(fmt::format("bumper{}", i));
   return c;
 }
 

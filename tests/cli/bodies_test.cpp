@@ -61,6 +61,11 @@ TEST(Bodies, TheThymiosReplayDrawsItsOutlineAndNamesItsSensors) {
   const std::string header = csv.substr(0, csv.find('\n'));
   EXPECT_NE(header.find(",prox_horizontal6,"), std::string::npos) << header;
   EXPECT_EQ(header.find(",prox_horizontal7"), std::string::npos) << header;
+  // Its two ground sensors by their name, after the lights (it has no rangefinders, radars or
+  // bumpers), each row reading 0 or 1 there.
+  EXPECT_NE(header.find(",light6,prox_ground0,prox_ground1,energy,"), std::string::npos) << header;
+  const std::string first = csv.substr(header.size() + 1, csv.find('\n', header.size() + 1) - header.size() - 1);
+  EXPECT_EQ(std::count(first.begin(), first.end(), ','), std::count(header.begin(), header.end(), ','));
   // The body at the end of the epoch: its 13 vertices, not a circle.
   const auto at = svg.find("<polygon points=\"");
   ASSERT_NE(at, std::string::npos);

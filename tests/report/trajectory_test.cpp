@@ -132,6 +132,23 @@ TEST(TrajectoryCsv, RangefindersAndRadarsFollowTheLightsWhereTheRobotHasThem) {
   EXPECT_NE(first.find(",0.25,1,0,0,1,0,1,,"), std::string::npos) << "ranges, radars, then energy 1 " << first;
 }
 
+TEST(TrajectoryCsv, GroundSensorsByTheirNameAndBumpersFollowTheRadars) {
+  auto steps = two_epochs();
+  for (eval::TraceStep& t : steps) {
+    t.ground_count = 2;
+    t.ground = {0.0, 1.0};
+    t.bumper_count = 1;
+    t.bumper = {1.0};
+  }
+  const std::string csv = trajectory_csv(steps, {}, 0.1, {"prox_horizontal", 7, "prox_ground"});
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header, trajectory_csv_header({"prox_horizontal", 7, "prox_ground"}, 0, 0, 2, 1));
+  EXPECT_NE(header.find(",light6,prox_ground0,prox_ground1,bumper0,energy,"), std::string::npos) << header;
+  const std::string first = csv.substr(header.size() + 1, csv.find('\n', header.size() + 1) - header.size() - 1);
+  EXPECT_EQ(count(first, ","), count(header, ","));
+  EXPECT_NE(first.find(",0,1,1,1,,"), std::string::npos) << "ground, bumper, then energy 1 " << first;
+}
+
 TEST(TrajectoryCsv, TheIrColumnsAreTheRobotsSensorsByTheirName) {
   const auto steps = two_epochs();
   const std::string puck = trajectory_csv(steps, {}, 0.1, {"prox", 8});

@@ -213,6 +213,33 @@ TEST(AnalysisTables, TheNavigatorsRangefindersAndRadarsTravelWithTheReplay) {
   EXPECT_EQ(steps[1].radar[1], 0.0);
 }
 
+TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
+  const fs::path dir = test::fresh_dir("replay-ground-bumpers");
+  fs::create_directories(dir);
+  ResultsDb db = ResultsDb::create(dir, spec(1), {}, {});
+  eval::TraceStep t;
+  t.radar_count = 1;
+  t.radar = {1.0};
+  t.ground_count = 2;
+  t.ground = {1.0, 0.0};
+  t.bumper_count = 3;
+  t.bumper = {0.0, 0.0, 1.0};
+  db.commit_replay("SV", finished(run_state(0, 1)), std::vector<eval::TraceStep>{t});
+  sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
+  auto columns = raw.prepare("SELECT columns FROM replays");
+  ASSERT_TRUE(columns.step());
+  EXPECT_NE(columns.text(0).find(R"("radar0","ground0","ground1","bumper0","bumper1","bumper2"])"), std::string::npos)
+      << columns.text(0);
+  const StoredExperiment s = ResultsDb::open(dir, true).load_single();
+  const eval::TraceStep& back = s.controllers[0].replay->steps.at(0);
+  EXPECT_EQ(back.radar_count, 1u);
+  EXPECT_EQ(back.ground_count, 2u);
+  EXPECT_EQ(back.ground[0], 1.0);
+  EXPECT_EQ(back.ground[1], 0.0);
+  EXPECT_EQ(back.bumper_count, 3u);
+  EXPECT_EQ(back.bumper[2], 1.0);
+}
+
 TEST(AnalysisTables, ASchemaThreeDatabaseReadsWithoutUsageAndIsUpgradedForWriting) {
   const fs::path dir = finished_dir("schema-3", 1);
   {
