@@ -5,7 +5,7 @@ of a fixed network (docs/maze-results.md). Reads the stored studies' summary.jso
 program's runs made here; prints Markdown.
 
     python3 scripts/maze-neat-comparison.py medium [--results results/lehman-stanley]
-        [--authors FILE] [--authors-fitness FILE]
+        [--authors FILE] [--authors-fitness FILE] [--bodies]
 
 Per method: runs that solved the maze and the evaluations to the first solution (mean, sd,
 median, range over the solved runs). Then Fisher's exact test (two-sided) of each NEAT
@@ -15,6 +15,11 @@ by novelty against novelty search). The authors' file has one line per run: MAZE
 EVALUATIONS SOLVED USER_S SYS_S (the runs of /work/peers, docs/maze-results.md); their
 fitness-based runs' file MAZE RUN SOLVED_AT CPU_S, SOLVED_AT the individual that first
 solved it ("none": not within the budget of 250,000).
+
+With --bodies, also the 2 x 2 of issue 44 from the navigator's study (MAZE-navigator): for
+each selection, the fixed network and NEAT on the Khepera and on Lehman & Stanley's navigator,
+each cell's successes against the paper's count (Fisher), and the body's effect (Khepera
+against navigator) and the representation's (fixed network against NEAT) on each side.
 """
 import argparse
 import json
@@ -83,6 +88,7 @@ def main():
     parser.add_argument("--results", default="results/lehman-stanley")
     parser.add_argument("--authors")
     parser.add_argument("--authors-fitness")
+    parser.add_argument("--bodies", action="store_true")
     args = parser.parse_args()
     fixed, neat = (stored(os.path.join(args.results, name)) for name in (args.maze, args.maze + "-neat"))
 
@@ -127,6 +133,33 @@ def main():
     if args.authors:
         print(f"\nThe authors' program: {evaluations:,} evaluations in {seconds:,.1f} s of CPU time, "
               f"{evaluations / seconds:,.0f} evaluations per second per core.")
+    if args.bodies:
+        bodies(args.maze, fixed, neat, stored(os.path.join(args.results, args.maze + "-navigator")))
+
+
+def bodies(maze, fixed, neat, navigator):
+    """Issue 44's 2 x 2: representation (fixed network, NEAT) by body (Khepera, navigator)."""
+    def cell(summary, condition):
+        solved, runs = solved_of(summary, condition)
+        mean = f", mean {statistics.mean(solved):,.0f}" if solved else ""
+        return len(solved), runs, f"{len(solved)}/{runs}{mean}"
+
+    def fisher(a, b):
+        return p_text(fisher_two_sided(a[0], a[1], b[0], b[1]))
+
+    print("\n| selection | network | Khepera: solved, evaluations | navigator: solved, evaluations "
+          "| Fisher p, Khepera vs navigator | paper (NEAT) | Fisher p vs paper: Khepera | navigator |")
+    print("|---|---|---|---|---|---|---|---|")
+    for selection in ("fitness", "novelty"):
+        paper = (PAPER[maze][selection][0], RUNS_IN_PAPER)
+        cells = {}
+        for network, summary, condition in (("fixed", fixed, FIXED[selection]), ("NEAT", neat, NEAT[selection])):
+            khepera, body = cell(summary, condition), cell(navigator, condition)
+            cells[network] = (khepera, body)
+            print(f"| {selection} | {network} | {khepera[2]} | {body[2]} | {fisher(khepera, body)} "
+                  f"| {paper[0]}/{paper[1]} | {fisher(khepera, paper)} | {fisher(body, paper)} |")
+        (fk, fn), (nk, nn) = cells["fixed"], cells["NEAT"]
+        print(f"| {selection} | fixed vs NEAT, Fisher p | {fisher(fk, nk)} | {fisher(fn, nn)} | | | | |")
 
 
 if __name__ == "__main__":
