@@ -20,14 +20,15 @@ std::string slot_name(expr::Slot slot) {
 // "the robot of experiment `maze`".
 std::string robot_of(const Navigation& n) { return fmt::format("the robot of experiment `{}`", n.experiment); }
 
-// `range[i]` or `radar[i]` beyond the `count` sensors the robot has: what it reads and how many there are.
+// `range[i]` or `radar[i]` beyond the `count` sensors the robot has: what it reads (named as
+// the robot names the array: `prox_ground[2]` on the Thymio II) and how many there are.
 RuleMessage beyond(expr::Slot slot, expr::Slot first, int count, const Navigation& n, std::string_view what,
                    std::string_view array, std::string_view declare) {
   const expr::Slot i = slot - first;
   if (count == 0)
-    return {fmt::format("`{}` reads {} {}, but {} has none", slot_name(slot), what, i, robot_of(n)),
+    return {fmt::format("`{}[{}]` reads {} {}, but {} has none", array, i, what, i, robot_of(n)),
             {fmt::format("declare them in the robot's settings: `{}`", declare)}};
-  return {fmt::format("`{}` reads {} {}, but {} has {} (`{}[0]` .. `{}[{}]`)", slot_name(slot), what, i, robot_of(n),
+  return {fmt::format("`{}[{}]` reads {} {}, but {} has {} (`{}[0]` .. `{}[{}]`)", array, i, what, i, robot_of(n),
                       count, array, array, count - 1),
           {}};
 }

@@ -256,7 +256,7 @@ TEST(GroundSensors, AReadBeyondThemOrByAnotherNameIsAnErrorAtTheRead) {
   std::string text = kGrounded;
   text.replace(text.find("prox_ground[0..1]"), 17, "prox_ground[0..2]");
   std::string out = refused(text);
-  EXPECT_NE(out.find("ir.esc:4:20: error: `ground_sensor[2]` reads ground sensor 2, but the robot of experiment `e` "
+  EXPECT_NE(out.find("ir.esc:4:20: error: `prox_ground[2]` reads ground sensor 2, but the robot of experiment `e` "
                      "has 2 (`prox_ground[0]` .. `prox_ground[1]`)"),
             std::string::npos)
       << out;
