@@ -150,7 +150,7 @@ py::dict Env::state() const {
   d["light"] = array_of({t.light.begin(), t.light.end()});
   d["range"] = array_of({t.range.begin(), t.range.begin() + static_cast<std::ptrdiff_t>(t.range_count)});
   d["radar"] = array_of({t.radar.begin(), t.radar.begin() + static_cast<std::ptrdiff_t>(t.radar_count)});
-  d["ground"] = array_of({t.ground.begin(), t.ground.begin() + static_cast<std::ptrdiff_t>(t.ground_count)});
+  d["ground_sensor"] = array_of({t.ground.begin(), t.ground.begin() + static_cast<std::ptrdiff_t>(t.ground_count)});
   d["bumper"] = array_of({t.bumper.begin(), t.bumper.begin() + static_cast<std::ptrdiff_t>(t.bumper_count)});
   d["energy"] = t.energy;
   d["collided"] = t.collided;

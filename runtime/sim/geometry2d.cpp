@@ -242,13 +242,14 @@ inline double circle_hit(double cx, double cy, double r2, double ox, double oy, 
   return -b - std::sqrt(disc);
 }
 
+// Rounding room of the ray culls: a ray is skipped only when the box is farther than its
+// nearest hit so far, or its line passes the box, by more than this (far above rounding, far
+// below any geometry).
+constexpr double kCullMargin_m = 1e-9;
+
 // One slab of the box test, along one box axis: narrows [lo, hi] to the ray parameters
 // within `half` of the centre (origin p, direction u along that axis); false when the ray
 // runs parallel to the slab outside it.
-// Rounding room of the ray cull: a ray is skipped only when its nearest hit so far is nearer
-// than the bounding circle by more than this (far above rounding, far below any geometry).
-constexpr double kCullMargin_m = 1e-9;
-
 bool clip_slab(double p, double u, double half, double& lo, double& hi) noexcept {
   if (u == 0.0) return std::abs(p) <= half;
   const double a = (-half - p) / u;

@@ -60,7 +60,10 @@ class StaticGeometry2D {
   };
   [[nodiscard]] Nearby nearby() const;
   // Every wall and obstacle: for fans cast from the centre of the reach they would be gathered
-  // for, where cast_fan's own culls by the fan's origin pick the same shapes as gather.
+  // for, where cast_fan's own culls by the fan's origin keep gather's shapes and those beyond
+  // the reach by at most kFanMargin_m. Those can lower no reading: a hit on them lies beyond
+  // the reach unless a ray's computed direction is longer than 1 by rounding and the shape
+  // lies within that rounding of the reach (about 1e-16 of it), where the last bit may differ.
   [[nodiscard]] Nearby everything() const;
   // The shapes cast_rays(centre, reach_m, ...) tests.
   void gather(Vec2 centre, double reach_m, Nearby& out) const noexcept;

@@ -93,7 +93,7 @@ struct LaunchInfo {
 // fixed ones, then (since replays record them) the accumulator, x, y of each of the arena's
 // `zones` in that epoch, the light sensors light0..light7, and the robot's `ranges`
 // rangefinders (range0...), `radars` goal radars (radar0...), `grounds` ground sensors
-// (ground0...) and `bumpers` bumpers (bumper0...).
+// (ground_sensor0...) and `bumpers` bumpers (bumper0...).
 inline constexpr std::size_t kTraceColumns = 20;
 inline constexpr const char* kRunningFitness = "running_fitness";
 [[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars,

@@ -57,7 +57,7 @@ TraceLayout layout_of(const std::vector<std::string>& columns) {
   l.lights = count_prefixed(columns, "light") != 0;
   l.ranges = count_prefixed(columns, "range");
   l.radars = count_prefixed(columns, "radar");
-  l.grounds = count_prefixed(columns, "ground");
+  l.grounds = count_prefixed(columns, "ground_sensor");
   l.bumpers = count_prefixed(columns, "bumper");
   return l;
 }
@@ -155,7 +155,7 @@ std::vector<std::string> trace_column_names(std::size_t zones, std::size_t range
   for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
   for (std::size_t i = 0; i < ranges; ++i) c.push_back(fmt::format("range{}", i));
   for (std::size_t i = 0; i < radars; ++i) c.push_back(fmt::format("radar{}", i));
-  for (std::size_t i = 0; i < grounds; ++i) c.push_back(fmt::format("ground{}", i));
+  for (std::size_t i = 0; i < grounds; ++i) c.push_back(fmt::format("ground_sensor{}", i));
   for (std::size_t i = 0; i < bumpers; ++i) c.push_back(fmt::format("bumper{}", i));
   return c;
 }

@@ -175,5 +175,5 @@ def test_the_observation_is_the_robots_own_senses_by_its_names():
     assert observation.shape == (7 + 7 + 2 + 1 + 1,)
     assert list(observation[-4:-1]) == [1.0, 1.0, 0.0]
     state = thymio.state()
-    assert list(state["ground"]) == [1.0, 1.0]   # both over the mark at the start
+    assert list(state["ground_sensor"]) == [1.0, 1.0]   # both over the mark at the start
     assert list(state["bumper"]) == [0.0]

@@ -81,9 +81,10 @@ TEST(SimNavigation, FanCullsGiveTheReadingsOfTestingEveryShape) {
   a.cylinders.push_back({{0.7, 0.2}, 0.05});
   const StaticGeometry2D g(a);
   const StaticGeometry2D::Nearby all = g.everything();
+  std::vector<BoxObstacle> boxes = a.boxes;
+  for (const WallSegment& w : a.walls) boxes.push_back(wall_box(w));
   std::vector<Vec2> corners;  // every wall's and box's corners, where grazing rays are aimed
-  for (const WallSegment& w : a.walls) {
-    const BoxObstacle b = wall_box(w);
+  for (const BoxObstacle& b : boxes) {
     for (const double sx : {-0.5, 0.5})
       for (const double sy : {-0.5, 0.5}) {
         const double x = sx * b.size_m.x, y = sy * b.size_m.y;
@@ -98,10 +99,11 @@ TEST(SimNavigation, FanCullsGiveTheReadingsOfTestingEveryShape) {
     std::array<double, 6> dx{}, dy{}, t{}, every{};
     for (std::size_t r = 0; r < dx.size(); ++r) {
       double angle = rng.uniform(-std::numbers::pi, std::numbers::pi);
-      if (r < 3) {  // at a corner, off by nothing or by about rounding
+      if (r < 3) {  // at a corner, or passing it by a little more than the culls' margin of 1e-9 m
         const Vec2 c = corners[static_cast<std::size_t>(rng.uniform(0.0, 1.0) * static_cast<double>(corners.size())) %
                                corners.size()];
-        angle = std::atan2(c.y - o.y, c.x - o.x) + (r == 0 ? 0.0 : (r == 1 ? 1e-15 : -1e-12));
+        const double miss_m = r == 0 ? 0.0 : (r == 1 ? 2e-9 : -3e-9);
+        angle = std::atan2(c.y - o.y, c.x - o.x) + miss_m / std::hypot(c.x - o.x, c.y - o.y);
       } else if (r == 3) {  // along a face of a random wall
         angle = wall_box(a.walls[static_cast<std::size_t>(k) % a.walls.size()]).angle_rad;
       }

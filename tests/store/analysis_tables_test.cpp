@@ -228,7 +228,7 @@ TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
   sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
   auto columns = raw.prepare("SELECT columns FROM replays");
   ASSERT_TRUE(columns.step());
-  EXPECT_NE(columns.text(0).find(R"("radar0","ground0","ground1","bumper0","bumper1","bumper2"])"), std::string::npos)
+  EXPECT_NE(columns.text(0).find(R"("radar0","ground_sensor0","ground_sensor1","bumper0","bumper1","bumper2"])"), std::string::npos)
       << columns.text(0);
   const StoredExperiment s = ResultsDb::open(dir, true).load_single();
   const eval::TraceStep& back = s.controllers[0].replay->steps.at(0);
