@@ -48,7 +48,28 @@ std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_
   }));
 }
 
+// Whether this esc knows the stored column: a fixed one (the running fitness also under its
+// first name, `fitness`), the accumulator, or one of a numbered family. A column it does not
+// know was written by a newer esc.
+bool known_column(const std::string& c) {
+  static const std::vector<std::string> fixed = [] {
+    std::vector<std::string> names = trace_column_names(0, 0, 0);
+    names.emplace_back("fitness");
+    return names;
+  }();
+  if (std::find(fixed.begin(), fixed.end(), c) != fixed.end()) return true;
+  if (c.starts_with("zone") && (c.ends_with("_x") || c.ends_with("_y"))) return true;
+  for (const std::string_view family : {"light", "range", "radar", "ground_sensor", "bumper"})
+    if (count_prefixed({c}, family) == 1) return true;
+  return false;
+}
+
 TraceLayout layout_of(const std::vector<std::string>& columns) {
+  for (const std::string& c : columns)
+    if (!known_column(c))
+      throw StoreError(fmt::format("the database was written by a newer esc: its replay traces have a column `{}` "
+                                   "this esc does not know",
+                                   c));
   TraceLayout l;
   l.extended = columns.size() > kTraceColumns;
   l.zones = static_cast<std::size_t>(std::count_if(columns.begin(), columns.end(), [](const std::string& c) {

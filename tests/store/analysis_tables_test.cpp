@@ -240,6 +240,32 @@ TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
   EXPECT_EQ(back.bumper[2], 1.0);
 }
 
+// A replay column this esc does not know (one a newer esc added, sealed as it seals rows) is
+// a newer esc's database, not a damaged one.
+TEST(AnalysisTables, AReplayColumnOfANewerEscIsSaidToBeOne) {
+  const fs::path dir = test::fresh_dir("replay-newer-column");
+  fs::create_directories(dir);
+  {
+    ResultsDb db = ResultsDb::create(dir, spec(1), {}, {});
+    eval::TraceStep t;
+    t.bumper_count = 1;
+    db.commit_replay("SV", finished(run_state(0, 1)), std::vector<eval::TraceStep>{t});
+  }
+  {
+    sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
+    raw.exec("UPDATE replays SET columns = replace(columns, '\"bumper0\"', '\"sonar0\"')");
+    seal_table(raw, "replays");
+  }
+  try {
+    (void)ResultsDb::open(dir, true).load_single();
+    FAIL() << "a column of a newer esc was read";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("written by a newer esc: its replay traces have a column `sonar0`"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(AnalysisTables, ASchemaThreeDatabaseReadsWithoutUsageAndIsUpgradedForWriting) {
   const fs::path dir = finished_dir("schema-3", 1);
   {
