@@ -66,8 +66,8 @@ class Resolver {
   void add(const Decl& d);
 
   Sink& sink_;
-  std::optional<SensorNames> sensor_names_;
-  std::set<const ast::Setting*> clashes_reported_;   // sensor names given to a second array   // of the modules declared so far
+  std::optional<SensorNames> sensor_names_;          // of the modules declared so far
+  std::set<const ast::Setting*> clashes_reported_;   // sensor names given to a second array
   std::map<std::string, Decl> symbols_;
   std::vector<const ast::Module*> modules_;
 };

@@ -39,7 +39,7 @@ for maze in medium hard; do
     made=$(awk '/Maze solved by indiv#/ { print $NF; exit }' "$work/stdout")
     if [ -z "$made" ]; then
       echo "their run $run on the $maze maze did not solve it: counted to its budget" >&2
-      made=$(( $(wc -l < "$peer/$out/record.dat") + 250 ))
+      made=$(( $(wc -l < "$peer/$out/record.dat") + $(awk '$1 == "pop_size" { print $2 }' "$peer/maze.ne") ))
     fi
     evals=$((evals + made))
     seconds=$(awk -v a="$seconds" -v b="$(cpu "$work/cpu")" 'BEGIN { print a + b }')

@@ -17,7 +17,7 @@ std::vector<IrMount> khepera_ir_mounts() {
 bool BumperSector::holds(double b) const noexcept {
   constexpr double kTurn = 2 * std::numbers::pi;
   const double from_b = b - from_rad - kTurn * std::floor((b - from_rad) / kTurn);   // in [0, 2 pi)
-  return from_b <= to_rad - from_rad;
+  return from_b <= width_rad();
 }
 
 }  // namespace esc::sim

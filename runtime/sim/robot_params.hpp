@@ -116,6 +116,8 @@ struct BumperSector {
   double from_rad = 0.0;
   double to_rad = 0.0;
   friend bool operator==(const BumperSector&, const BumperSector&) = default;
+  // How much of the edge it covers, counter-clockwise from `from_rad` (validate.cpp bounds it).
+  [[nodiscard]] double width_rad() const noexcept { return to_rad - from_rad; }
   // Whether bearing `b` (radians from the heading) lies in the sector.
   [[nodiscard]] bool holds(double b) const noexcept;
 };

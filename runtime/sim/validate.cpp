@@ -509,7 +509,7 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
   check_ground(robot, body, check_outline(robot, body, c), c);
   c.at_most(Rule::BumperCount, robot.bumpers.size(), kMaxBumpers);
   for (std::size_t i = 0; i < robot.bumpers.size(); ++i) {
-    const double width = robot.bumpers[i].to_rad - robot.bumpers[i].from_rad;
+    const double width = robot.bumpers[i].width_rad();
     const int at = static_cast<int>(i);
     if (c.require(Rule::BumperSectorMin, width, 0.0, at))
       c.require(Rule::BumperSectorMax, width, 2 * std::numbers::pi + kInsideTolerance_m, at);

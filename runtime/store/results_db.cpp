@@ -346,10 +346,7 @@ void ResultsDb::commit_replay(const std::string& controller, const eval::RunResu
                               std::span<const eval::TraceStep> trace) {
   const std::int64_t cid = controller_id(controller);
   const std::uint64_t seed = eval::evaluation_seed(run.seed, run.best_generation, static_cast<std::size_t>(run.best_index));
-  const eval::TraceStep none;
-  const eval::TraceStep& first = trace.empty() ? none : trace.front();
-  const nlohmann::json columns = trace_column_names(first.zone_count, first.range_count, first.radar_count,
-                                                            first.ground_count, first.bumper_count);
+  const nlohmann::json columns = trace_columns(trace);
   sql::Transaction tx(db_);
   // One replay per controller: its best run's (the earliest run on a tie, whichever order
   // the runs finish in). Replaying the same run again (after a resume, or when the run was

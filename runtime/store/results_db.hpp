@@ -89,15 +89,10 @@ struct LaunchInfo {
   std::string software_version;
 };
 
-// Columns of a stored replay trace, one row of doubles per control step: kTraceColumns
-// fixed ones, then (since replays record them) the accumulator, x, y of each of the arena's
-// `zones` in that epoch, the light sensors light0..light7, and the robot's `ranges`
-// rangefinders (range0...), `radars` goal radars (radar0...), `grounds` ground sensors
-// (ground_sensor0...) and `bumpers` bumpers (bumper0...).
+// The fixed columns of a stored replay trace, the first of each row (the rest:
+// trace_rows.hpp, trace_columns), and the running fitness's name among them.
 inline constexpr std::size_t kTraceColumns = 20;
 inline constexpr const char* kRunningFitness = "running_fitness";
-[[nodiscard]] std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars,
-                                                          std::size_t grounds = 0, std::size_t bumpers = 0);
 
 struct StoredReplay {
   int run = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -18,6 +19,9 @@ namespace {
 // columns existed have exactly kTraceColumns per row, or no light, range, radar, ground or
 // bumper columns: the stored column names say which, so that a trace is read back as it was
 // written.
+// The numbered families after the lights, each named once: rangeK, radarK, ground_sensorK, bumperK.
+constexpr std::string_view kRange = "range", kRadar = "radar", kGround = "ground_sensor", kBumper = "bumper";
+
 struct TraceLayout {
   bool extended = true;   // the accumulator and zones follow the fixed columns
   std::size_t zones = 0;
@@ -32,6 +36,25 @@ struct TraceLayout {
     return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0) + ranges +
            radars + grounds + bumpers;
   }
+
+  // The column names of an extended layout with lights, in pack_trace's order.
+  [[nodiscard]] std::vector<std::string> names() const {
+    std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
+    for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
+    for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", kRunningFitness,
+                          "collided"})
+      c.emplace_back(n);
+    c.emplace_back("energy");
+    for (std::size_t z = 0; z < zones; ++z) {
+      c.push_back(fmt::format("zone{}_x", z));
+      c.push_back(fmt::format("zone{}_y", z));
+    }
+    for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
+    for (const auto& [family, count] : {std::pair{kRange, ranges}, std::pair{kRadar, radars},
+                                        std::pair{kGround, grounds}, std::pair{kBumper, bumpers}})
+      for (std::size_t i = 0; i < count; ++i) c.push_back(fmt::format("{}{}", family, i));
+    return c;
+  }
 };
 
 TraceLayout layout_of(std::span<const eval::TraceStep> trace) {
@@ -40,12 +63,16 @@ TraceLayout layout_of(std::span<const eval::TraceStep> trace) {
   return {true, t.zone_count, true, t.range_count, t.radar_count, t.ground_count, t.bumper_count};
 }
 
+// Whether column `c` is `prefix` followed by a number: light3, range0.
+bool numbered(std::string_view c, std::string_view prefix) {
+  return c.size() > prefix.size() && c.starts_with(prefix) &&
+         std::all_of(c.begin() + static_cast<std::ptrdiff_t>(prefix.size()), c.end(),
+                     [](char ch) { return ch >= '0' && ch <= '9'; });
+}
+
 std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_view prefix) {
-  return static_cast<std::size_t>(std::count_if(columns.begin(), columns.end(), [&](const std::string& c) {
-    return c.size() > prefix.size() && c.starts_with(prefix) &&
-           std::all_of(c.begin() + static_cast<std::ptrdiff_t>(prefix.size()), c.end(),
-                       [](char ch) { return ch >= '0' && ch <= '9'; });
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(columns.begin(), columns.end(), [&](const std::string& c) { return numbered(c, prefix); }));
 }
 
 // Whether this esc knows the stored column: a fixed one (the running fitness also under its
@@ -53,14 +80,14 @@ std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_
 // know was written by a newer esc.
 bool known_column(const std::string& c) {
   static const std::vector<std::string> fixed = [] {
-    std::vector<std::string> names = trace_column_names(0, 0, 0);
+    std::vector<std::string> names = TraceLayout{}.names();
     names.emplace_back("fitness");
     return names;
   }();
   if (std::find(fixed.begin(), fixed.end(), c) != fixed.end()) return true;
   if (c.starts_with("zone") && (c.ends_with("_x") || c.ends_with("_y"))) return true;
-  for (const std::string_view family : {"light", "range", "radar", "ground_sensor", "bumper"})
-    if (count_prefixed({c}, family) == 1) return true;
+  for (const std::string_view family : {kRange, kRadar, kGround, kBumper})
+    if (numbered(c, family)) return true;
   return false;
 }
 
@@ -76,10 +103,10 @@ TraceLayout layout_of(const std::vector<std::string>& columns) {
     return c.starts_with("zone") && c.ends_with("_x");
   }));
   l.lights = count_prefixed(columns, "light") != 0;
-  l.ranges = count_prefixed(columns, "range");
-  l.radars = count_prefixed(columns, "radar");
-  l.grounds = count_prefixed(columns, "ground_sensor");
-  l.bumpers = count_prefixed(columns, "bumper");
+  l.ranges = count_prefixed(columns, kRange);
+  l.radars = count_prefixed(columns, kRadar);
+  l.grounds = count_prefixed(columns, kGround);
+  l.bumpers = count_prefixed(columns, kBumper);
   return l;
 }
 
@@ -161,24 +188,6 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const st
   return out;
 }
 
-std::vector<std::string> trace_column_names(std::size_t zones, std::size_t ranges, std::size_t radars,
-                                            std::size_t grounds, std::size_t bumpers) {
-  std::vector<std::string> c = {"epoch", "step", "x", "y", "heading"};
-  for (int i = 0; i < sim::kIrSensors; ++i) c.push_back(fmt::format("ir{}", i));
-  for (const char* n : {"left_command", "right_command", "left_speed", "right_speed", "action", kRunningFitness,
-                        "collided"})
-    c.emplace_back(n);
-  c.emplace_back("energy");
-  for (std::size_t z = 0; z < zones; ++z) {
-    c.push_back(fmt::format("zone{}_x", z));
-    c.push_back(fmt::format("zone{}_y", z));
-  }
-  for (int i = 0; i < sim::kLightSensors; ++i) c.push_back(fmt::format("light{}", i));
-  for (std::size_t i = 0; i < ranges; ++i) c.push_back(fmt::format("range{}", i));
-  for (std::size_t i = 0; i < radars; ++i) c.push_back(fmt::format("radar{}", i));
-  for (std::size_t i = 0; i < grounds; ++i) c.push_back(fmt::format("ground_sensor{}", i));
-  for (std::size_t i = 0; i < bumpers; ++i) c.push_back(fmt::format("bumper{}", i));
-  return c;
-}
+std::vector<std::string> trace_columns(std::span<const eval::TraceStep> trace) { return layout_of(trace).names(); }
 
 }  // namespace esc::store

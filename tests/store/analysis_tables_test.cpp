@@ -185,10 +185,16 @@ TEST(AnalysisTables, TheReplayIsTheEarliestBestRunWhateverTheOrder) {
   EXPECT_EQ(s.controllers[0].replay->steps.at(0).range_count, 0u);
 }
 
-TEST(AnalysisTables, TheNavigatorsRangefindersAndRadarsTravelWithTheReplay) {
-  const fs::path dir = test::fresh_dir("replay-navigation");
+// A directory whose one run of SV stored `steps` as its replay.
+fs::path with_replay(const std::string& name, const std::vector<eval::TraceStep>& steps) {
+  const fs::path dir = test::fresh_dir(name);
   fs::create_directories(dir);
   ResultsDb db = ResultsDb::create(dir, spec(1), {}, {});
+  db.commit_replay("SV", finished(run_state(0, 1)), steps);
+  return dir;
+}
+
+TEST(AnalysisTables, TheNavigatorsRangefindersAndRadarsTravelWithTheReplay) {
   eval::TraceStep t;
   t.light[7] = 0.5;
   t.range_count = 3;
@@ -198,7 +204,7 @@ TEST(AnalysisTables, TheNavigatorsRangefindersAndRadarsTravelWithTheReplay) {
   eval::TraceStep u = t;
   u.step = 1;
   u.radar = {1.0, 0.0, 0.0, 0.0};
-  db.commit_replay("SV", finished(run_state(0, 1)), std::vector<eval::TraceStep>{t, u});
+  const fs::path dir = with_replay("replay-navigation", {t, u});
   const StoredExperiment s = ResultsDb::open(dir, true).load_single();
   ASSERT_TRUE(s.controllers[0].replay.has_value());
   const auto& steps = s.controllers[0].replay->steps;
@@ -214,9 +220,6 @@ TEST(AnalysisTables, TheNavigatorsRangefindersAndRadarsTravelWithTheReplay) {
 }
 
 TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
-  const fs::path dir = test::fresh_dir("replay-ground-bumpers");
-  fs::create_directories(dir);
-  ResultsDb db = ResultsDb::create(dir, spec(1), {}, {});
   eval::TraceStep t;
   t.radar_count = 1;
   t.radar = {1.0};
@@ -224,7 +227,7 @@ TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
   t.ground = {1.0, 0.0};
   t.bumper_count = 3;
   t.bumper = {0.0, 0.0, 1.0};
-  db.commit_replay("SV", finished(run_state(0, 1)), std::vector<eval::TraceStep>{t});
+  const fs::path dir = with_replay("replay-ground-bumpers", {t});
   sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
   auto columns = raw.prepare("SELECT columns FROM replays");
   ASSERT_TRUE(columns.step());
@@ -243,14 +246,9 @@ TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
 // A replay column this esc does not know (one a newer esc added, sealed as it seals rows) is
 // a newer esc's database, not a damaged one.
 TEST(AnalysisTables, AReplayColumnOfANewerEscIsSaidToBeOne) {
-  const fs::path dir = test::fresh_dir("replay-newer-column");
-  fs::create_directories(dir);
-  {
-    ResultsDb db = ResultsDb::create(dir, spec(1), {}, {});
-    eval::TraceStep t;
-    t.bumper_count = 1;
-    db.commit_replay("SV", finished(run_state(0, 1)), std::vector<eval::TraceStep>{t});
-  }
+  eval::TraceStep t;
+  t.bumper_count = 1;
+  const fs::path dir = with_replay("replay-newer-column", {t});
   {
     sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadWrite);
     raw.exec("UPDATE replays SET columns = replace(columns, '\"bumper0\"', '\"sonar0\"')");
