@@ -1,7 +1,6 @@
 #include "runtime/eval/observe.hpp"
 
 #include "runtime/core/rng.hpp"
-#include "runtime/sim/goal_radar.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +37,7 @@ void observe_navigation(const sim::World& world, expr::Frame& frame) noexcept {
   frame[expr::slot::goal_distance] = std::hypot(goal->x - pose.x_m, goal->y - pose.y_m);
   const int slices = world.robot().radars;
   if (slices == 0) return;
-  const int hit = sim::radar_slice(pose, *goal, slices);
+  const int hit = world.goal_slice();
   for (int i = 0; i < slices; ++i) frame[expr::slot::radar + static_cast<expr::Slot>(i)] = i == hit ? 1.0 : 0.0;
 }
 

@@ -11,6 +11,7 @@
 #include "runtime/sim/drive.hpp"
 #include "runtime/sim/floor.hpp"
 #include "runtime/sim/geometry2d.hpp"
+#include "runtime/sim/goal_radar.hpp"
 #include "runtime/sim/kinematic_body.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/sim/light_sensor.hpp"
@@ -44,6 +45,7 @@ struct World::Impl {
   std::optional<Body> body;          // the differential drive's; the acceleration drive is kinematic
   KinematicBody kinematic;           // the acceleration drive's
   std::vector<Vec2> ground_points;   // the ground sensors' places in the body's frame
+  GoalRadar radar;
   RobotState state;
 
   Impl(const ArenaSpec& a, const RobotParams& r)
@@ -57,7 +59,8 @@ struct World::Impl {
         motor(r.motor, substep_s),
         drive(r.wheel_base_m, substep_s),
         floor(a, r),
-        kinematic(r) {
+        kinematic(r),
+        radar(r.radars) {
     if (r.drive == DriveKind::Differential) body.emplace(a, r, substep_s, geometry);
     for (const GroundMount& m : r.ground.mounts) ground_points.push_back(m.point());
     reset(a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
@@ -196,6 +199,14 @@ void World::read_ground(std::span<double> out) const {
   std::array<Vec2, kMaxGroundSensors> at;
   place_points(points, impl_->state.pose, at);
   for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = impl_->floor.visible_at(at[i]) ? 1.0 : 0.0;
+}
+
+int World::goal_slice() const noexcept {
+  const std::optional<Vec2>& goal = impl_->arena.goal;
+  if (!goal || impl_->robot.radars == 0) return -1;
+  const Pose& pose = impl_->state.pose;
+  const Vec2 facing = impl_->body ? Vec2{std::cos(pose.heading_rad), std::sin(pose.heading_rad)} : impl_->kinematic.facing();
+  return impl_->radar.slice(pose, facing, *goal);
 }
 
 std::span<const Vec2> World::zone_centers() const noexcept { return impl_->floor.zone_centers(); }

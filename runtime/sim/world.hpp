@@ -92,6 +92,10 @@ class World {
   // declares them, into out[0 .. robot().ground.mounts.size()). No noise, no allocation.
   void read_ground(std::span<double> out) const;
 
+  // The goal radar slice (goal_radar.hpp) that holds the arena's goal; -1 for an arena
+  // without a goal or a robot without radars.
+  [[nodiscard]] int goal_slice() const noexcept;
+
   // Where the zones' centres and the lights' floor positions are this epoch (index as in
   // the ArenaSpec), for replays.
   [[nodiscard]] std::span<const Vec2> zone_centers() const noexcept;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "runtime/sim/geometry2d.hpp"
@@ -236,6 +237,35 @@ TEST(SimRadar, SlicesFrontLeftBackRight) {
   // One slice holds everything; a goal at the centre counts as ahead.
   EXPECT_EQ(radar_slice({0, 0, 1.0}, {-1, -1}, 1), 0);
   EXPECT_EQ(radar_slice({0.2, 0.2, 2.0}, {0.2, 0.2}, 4), 0);
+}
+
+// GoalRadar decides without atan2 where a bearing is clear of the edges: it must give
+// radar_slice's answer everywhere, the edges themselves and bearings a rounding from them
+// included (where it hands over to radar_slice).
+TEST(SimRadar, GoalRadarAgreesWithRadarSliceEverywhere) {
+  std::mt19937_64 gen(12);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int slices = 1; slices <= kMaxRadars; ++slices) {
+    const GoalRadar radar(slices);
+    const double width = 2 * std::numbers::pi / slices;
+    for (int i = 0; i < 20000; ++i) {
+      const Pose pose{unit(gen), unit(gen), std::remainder(2 * std::numbers::pi * unit(gen), 2 * std::numbers::pi)};
+      const Vec2 facing{std::cos(pose.heading_rad), std::sin(pose.heading_rad)};
+      // Half the goals at random, half on an edge, some nudged off it by 1e-16 .. 1e-6 rad.
+      double bearing = 2 * std::numbers::pi * unit(gen);
+      if (i % 2 == 1) {
+        bearing = (static_cast<int>(unit(gen) * slices) - 0.5) * width;
+        if (i % 4 == 3) bearing += (unit(gen) < 0.5 ? -1 : 1) * std::pow(10.0, -16 + 10 * unit(gen));
+      }
+      const double reach = 0.01 + unit(gen);
+      const Vec2 goal{pose.x_m + reach * std::cos(pose.heading_rad + bearing),
+                      pose.y_m + reach * std::sin(pose.heading_rad + bearing)};
+      const int expected = radar_slice(pose, goal, slices);
+      ASSERT_EQ(radar.slice(pose, facing, goal), expected) << slices << " slices, bearing " << bearing;
+    }
+    // The goal at the robot's centre counts as ahead.
+    EXPECT_EQ(radar.slice({0.3, 0.3, 1.0}, {std::cos(1.0), std::sin(1.0)}, {0.3, 0.3}), 0);
+  }
 }
 
 TEST(SimNavigation, ASegmentWallStopsTheRobotDrivenIntoIt) {
