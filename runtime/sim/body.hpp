@@ -1,18 +1,19 @@
 #pragma once
-// The robot's rigid body (a disc, or a convex outline: outline.hpp) among the arena's walls and obstacles, in Bullet: the shapes,
-// the broadphase, the contact solver, one substep of motion at an imposed velocity, the
-// contact test, and place(), which returns the whole Bullet state to what a fresh world
-// holds so that nothing leaks from one evaluation into the next. Internal to esc_sim: it
+// A robot's rigid body (a disc, or a convex outline: outline.hpp) in the arena's Bullet world
+// (bullet_world.hpp): its shape, one substep of motion at an imposed velocity, the contact
+// test against walls and obstacles, and place(), which with the world's solver reset returns
+// the whole Bullet state to what a fresh world holds so that nothing leaks from one
+// evaluation into the next. Internal to esc_sim: it
 // includes Bullet, which only esc_sim's sources see (in the precision esc_sim links); World
 // (world.hpp) keeps it behind its pimpl.
-#include <BulletCollision/CollisionDispatch/btSphereBoxCollisionAlgorithm.h>
-#include <btBulletDynamicsCommon.h>
-
 #include <cmath>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "runtime/sim/arena.hpp"
+#include "runtime/sim/bullet_world.hpp"
+#include "runtime/sim/outline.hpp"
 #include "runtime/sim/drive.hpp"
 #include "runtime/sim/geometry2d.hpp"
 #include "runtime/sim/robot_params.hpp"
@@ -27,59 +28,90 @@ inline constexpr double kContactTolerance_m = 1e-4;
 // body during the substep: Body::move integrates it without a Bullet step.
 inline constexpr double kFreeSpaceMargin_m = 0.001;
 
-// The step loop's calls (move, touching, pose, position, heading) are defined here, inline, so
-// that the compiler sees them inside World's step as it did when they were one function.
+// The step loop's calls (the substep's, touching, pose, position, heading) are defined here,
+// inline, so that the compiler sees them inside World's step as it did when they were one
+// function.
 class Body {
  public:
-  // `geometry` is the arena's and must outlive the body. Bullet's arrays are grown here to
+  // `geometry` is the arena's and `bullet` the world the body moves in (its own, or the one a
+  // group of bodies shares); both must outlive the body. Bullet's arrays are grown here to
   // their working size, so nothing allocates afterwards; place() the body before moving it.
-  Body(const ArenaSpec& arena, const RobotParams& robot, double substep_s, const StaticGeometry2D& geometry);
+  Body(const ArenaSpec& arena, const RobotParams& robot, double substep_s, const StaticGeometry2D& geometry,
+       BulletWorld& bullet);
   ~Body();
   // Bullet's objects point at each other.
   Body(const Body&) = delete;
   Body& operator=(const Body&) = delete;
 
-  // The body at rest at `pose`, with no contact, broadphase pair or solver state left from
-  // before: what a freshly built body at `pose` would be.
+  // The body at rest at `pose`, with no contact, broadphase pair or cached contact algorithm
+  // left from before; the world's solver is then reset (BulletWorld::reset_solver) and the
+  // clearance updated: what a freshly built world with the body at `pose` would hold.
   void place(const Pose& pose);
 
-  // One physics substep at the velocity `v` (drive.hpp); walls and obstacles stop the body.
-  // Far from every surface no contact can push the body (a speculative contact acts only on
-  // a body that would reach the surface within the step), and a Bullet step of a lone body
-  // without gravity or damping is exactly its transform integrated at the given velocities:
-  // that is done here, with Bullet's own integrator, without the collision detection,
+  // One physics substep at the velocity `v` (drive.hpp), in three calls: set_velocity, then
+  // either a Bullet step of the world (after prepare_bullet_step) or integrate, then
+  // update_clearance. Walls, obstacles and other bodies stop the body. Far from every surface
+  // no contact can push the body (a speculative contact acts only on a body that would reach
+  // the surface within the step), and a Bullet step of a lone body without gravity or damping
+  // is exactly its transform integrated at the given velocities: that is integrate(), with
+  // Bullet's own integrator, without the collision detection,
   // islands and solver of a full step (2.5-3x the control steps/s of the paper's workloads).
   // While any contact point is still cached (up to 2 cm from a surface) Bullet steps, so
   // that its solver's warm start sees every step it would have seen. Results stay
   // deterministic; against stepping Bullet every substep they differ in the last digits only
   // (about 1e-8 relative on a short run's fitness: the broadphase, updated less often, may
   // list the contact pairs in another order).
-  void move(const PlanarVelocity& v) {
+  // set_velocity returns whether the body is near a wall or obstacle: whether this substep
+  // needs Bullet's step for it.
+  bool set_velocity(const PlanarVelocity& v) noexcept {
     body_->setLinearVelocity(btVector3(static_cast<btScalar>(v.x_mps), static_cast<btScalar>(v.y_mps), 0));
     body_->setAngularVelocity(btVector3(0, 0, static_cast<btScalar>(v.turn_radps)));
     const double keep = radius_m_ + v.travel_m + kFreeSpaceMargin_m;
     // An outline's points sweep at most the centre's travel plus the turn at the circle.
-    const bool near = clearance_m_ <= keep &&
-                      (outline_.empty() || outline_clearance_m_ <= v.travel_m + std::abs(v.turn_radps) * substep_s_ *
-                                                                                   radius_m_ + kFreeSpaceMargin_m);
-    if (has_contact_points() || near) {
-      // The solver reads the world inertia tensor, which the free-space path leaves behind.
-      if (inertia_stale_) body_->updateInertiaTensor();
-      inertia_stale_ = false;
-      world_->stepSimulation(static_cast<btScalar>(substep_s_), 0, static_cast<btScalar>(substep_s_));
-    } else {
-      btTransform next;
-      integrate_planar(body_->getWorldTransform(), body_->getLinearVelocity(), body_->getAngularVelocity(),
-                       static_cast<btScalar>(substep_s_), v, next);
-      // btRigidBody::proceedToTransform(next) but for the world inertia tensor, a function of the
-      // orientation alone that only the solver reads: it is brought up to date before a step.
-      body_->setInterpolationWorldTransform(next);
-      body_->setInterpolationLinearVelocity(body_->getLinearVelocity());
-      body_->setInterpolationAngularVelocity(body_->getAngularVelocity());
-      body_->setWorldTransform(next);
-      inertia_stale_ = true;
+    return clearance_m_ <= keep &&
+           (outline_.empty() || outline_clearance_m_ <= v.travel_m + std::abs(v.turn_radps) * substep_s_ * radius_m_ +
+                                                            kFreeSpaceMargin_m);
+  }
+  // Before a Bullet step: the solver reads the world inertia tensor, which integrate()
+  // leaves behind.
+  void prepare_bullet_step() noexcept {
+    if (inertia_stale_) body_->updateInertiaTensor();
+    inertia_stale_ = false;
+  }
+  void integrate(const PlanarVelocity& v) noexcept {
+    btTransform next;
+    integrate_planar(body_->getWorldTransform(), body_->getLinearVelocity(), body_->getAngularVelocity(),
+                     static_cast<btScalar>(substep_s_), v, next);
+    // btRigidBody::proceedToTransform(next) but for the world inertia tensor, a function of the
+    // orientation alone that only the solver reads: it is brought up to date before a step.
+    body_->setInterpolationWorldTransform(next);
+    body_->setInterpolationLinearVelocity(body_->getLinearVelocity());
+    body_->setInterpolationAngularVelocity(body_->getAngularVelocity());
+    body_->setWorldTransform(next);
+    inertia_stale_ = true;
+  }
+  // The clearance at the body's position, exact up to the farthest any substep's test looks
+  // (radius, a substep's longest travel, the margin): each substep computes it once, for its
+  // own contact test and the next substep's free-space test.
+  void update_clearance() noexcept {
+    const double cutoff_m = radius_m_ + max_travel_m_ + 2 * kFreeSpaceMargin_m;
+    clearance_m_ = geometry_.clearance(position(), cutoff_m);
+    if (outline_.empty()) {
+      touching_ = clearance_m_ <= radius_m_ + kContactTolerance_m;
+      return;
     }
-    update_clearance();
+    // An outline comes near a surface only where its circle does: its own distance only then.
+    outline_clearance_m_ = clearance_m_ <= cutoff_m ? placed_outline_clearance() : StaticGeometry2D::kNoHit;
+    touching_ = outline_clearance_m_ <= kContactTolerance_m;
+  }
+
+  // The body as Bullet knows it, for the world's contacts between bodies.
+  [[nodiscard]] const btCollisionObject* object() const noexcept { return body_.get(); }
+  // The outline placed at the current pose (counter-clockwise, in the arena's frame), for other
+  // robots' rays; empty for a disc.
+  [[nodiscard]] std::span<const Vec2> placed_outline() noexcept {
+    if (!outline_.empty()) place_points(outline_, pose(), placed_);
+    return placed_;
   }
 
   // Whether the body touches a wall or an obstacle (its clearance is at most
@@ -109,30 +141,8 @@ class Body {
 
  private:
   void warm_up(const ArenaSpec& arena, const RobotParams& robot);
-  void add_static_box(double cx, double cy, double hx, double hy, double angle_rad);
-  void add_static(std::unique_ptr<btCollisionShape> shape, double x, double y, double angle_rad);
-  // The clearance at the body's position, exact up to the farthest any substep's test looks
-  // (radius, a substep's longest travel, the margin): each substep computes it once, for its
-  // own contact test and the next substep's free-space test.
-  void update_clearance() noexcept {
-    const double cutoff_m = radius_m_ + max_travel_m_ + 2 * kFreeSpaceMargin_m;
-    clearance_m_ = geometry_.clearance(position(), cutoff_m);
-    if (outline_.empty()) {
-      touching_ = clearance_m_ <= radius_m_ + kContactTolerance_m;
-      return;
-    }
-    // An outline comes near a surface only where its circle does: its own distance only then.
-    outline_clearance_m_ = clearance_m_ <= cutoff_m ? placed_outline_clearance() : StaticGeometry2D::kNoHit;
-    touching_ = outline_clearance_m_ <= kContactTolerance_m;
-  }
   // The outline's distance at the current position, exact up to the farthest a substep sweeps it.
   [[nodiscard]] double placed_outline_clearance() noexcept;
-  [[nodiscard]] bool has_contact_points() const noexcept {
-    const int n = dispatcher_->getNumManifolds();
-    for (int i = 0; i < n; ++i)
-      if (dispatcher_->getManifoldByIndexInternal(i)->getNumContacts() > 0) return true;
-    return false;
-  }
 
   double radius_m_;
   double substep_s_;
@@ -146,17 +156,9 @@ class Body {
   double max_sweep_m_ = 0.0;     // the farthest a point of the outline moves in a substep
   bool inertia_stale_ = false;   // the world inertia tensor is of an earlier orientation
 
-  // The dynamics world is declared last so it is destroyed first.
-  std::unique_ptr<btDefaultCollisionConfiguration> config_;
-  std::unique_ptr<btSphereBoxCollisionAlgorithm::CreateFunc> sphere_box_, box_sphere_;
-  std::unique_ptr<btCollisionDispatcher> dispatcher_;
-  std::unique_ptr<btAxisSweep3> broadphase_;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
-  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
-  std::vector<std::unique_ptr<btRigidBody>> statics_;
+  BulletWorld& bullet_;
   std::unique_ptr<btConvexShape> body_shape_;   // a sphere, or the outline's hull
   std::unique_ptr<btRigidBody> body_;
-  std::unique_ptr<btDiscreteDynamicsWorld> world_;
 };
 
 }  // namespace esc::sim

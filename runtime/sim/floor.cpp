@@ -97,6 +97,13 @@ void Floor::place_zones(Rng& rng, const StaticGeometry2D& geometry) {
   if (moved) place_lights();
 }
 
+void Floor::take_zones(const Floor& other) {
+  zones_ = other.zones_;
+  zone_centers_ = other.zone_centers_;
+  lights_ = other.lights_;
+  light_positions_ = other.light_positions_;
+}
+
 bool Floor::in_recharge(double x, double y) const noexcept {
   for (std::uint32_t m = recharge_mask_; m != 0; m &= m - 1)
     if (zones_[static_cast<std::size_t>(std::countr_zero(m))].contains(x, y)) return true;

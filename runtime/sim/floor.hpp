@@ -47,6 +47,9 @@ class Floor {
   // zones with them. Draws nothing when no zone is random. Throws std::runtime_error if a
   // zone finds no free place.
   void place_zones(Rng& rng, const StaticGeometry2D& geometry);
+  // The zones and lights where `other` (of the same arena) placed them: every robot of a group
+  // has a floor of its own (its accumulator, reach counts, sweep grid) over the same zones.
+  void take_zones(const Floor& other);
 
   // The robot placed with its centre at `centre` (World::reset): accumulator full, only the
   // start cell visited, no reach counted (a light whose reach the robot starts in counts only

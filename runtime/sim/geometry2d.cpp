@@ -229,18 +229,6 @@ inline double wall_exit(double w, double h, StaticGeometry2D::Walls walls, doubl
   return std::max(exit, 0.0);
 }
 
-// The first point of a circle of radius^2 r2 about (cx, cy); 0 from an origin inside it.
-inline double circle_hit(double cx, double cy, double r2, double ox, double oy, double dx, double dy) noexcept {
-  const double px = ox - cx;
-  const double py = oy - cy;
-  const double cc = px * px + py * py - r2;
-  if (cc <= 0.0) return 0.0;  // origin inside the cylinder
-  const double b = px * dx + py * dy;
-  if (b >= 0.0) return StaticGeometry2D::kNoHit;  // pointing away from the centre and outside
-  const double disc = b * b - cc;
-  if (disc < 0.0) return StaticGeometry2D::kNoHit;
-  return -b - std::sqrt(disc);
-}
 
 // Rounding room of the ray culls: a ray is skipped only when the box is farther than its
 // nearest hit so far, or its line passes the box, by more than this (far above rounding, far
@@ -292,7 +280,7 @@ void StaticGeometry2D::cast_rays(Vec2 centre, double reach_m, int n, const doubl
   for (const Circle& c : circles_) {
     if (!within(centre.x - c.cx, centre.y - c.cy, reach_m + c.r)) continue;
     const double r2 = c.r * c.r;
-    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], circle_hit(c.cx, c.cy, r2, ox[i], oy[i], dx[i], dy[i]));
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], ray_circle_hit(c.cx, c.cy, r2, ox[i], oy[i], dx[i], dy[i]));
   }
   for (const Box& bx : boxes_) {
     if (!within(centre.x - bx.cx, centre.y - bx.cy, reach_m + bx.bound)) continue;
@@ -337,7 +325,7 @@ void StaticGeometry2D::cast_fan(const Nearby& near, Vec2 origin, double range_m,
     if (!fan_meets_circle(k, origin, range_m)) continue;
     const Circle& c = circles_[k];
     const double r2 = c.r * c.r;
-    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], circle_hit(c.cx, c.cy, r2, origin.x, origin.y, dx[i], dy[i]));
+    for (int i = 0; i < n; ++i) t[i] = std::min(t[i], ray_circle_hit(c.cx, c.cy, r2, origin.x, origin.y, dx[i], dy[i]));
   }
   const double reach_m = range_m + kCullMargin_m;
   for (const std::uint32_t k : near.boxes) {

@@ -4,6 +4,7 @@
 // poses) against the walled rectangle, rotated boxes, segment walls (their rectangles,
 // wall_box, kept with the boxes) and cylinders. The arena never moves, so these 2D answers
 // are exact and much cheaper than Bullet's ray tests.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -12,6 +13,20 @@
 #include "runtime/sim/arena.hpp"
 
 namespace esc::sim {
+
+// Where a ray from (ox, oy) along the unit (dx, dy) first meets the circle of radius^2 r2 about
+// (cx, cy); 0 from an origin inside it, infinity when it misses.
+[[nodiscard]] inline double ray_circle_hit(double cx, double cy, double r2, double ox, double oy, double dx, double dy) noexcept {
+  const double px = ox - cx;
+  const double py = oy - cy;
+  const double cc = px * px + py * py - r2;
+  if (cc <= 0.0) return 0.0;  // origin inside the cylinder
+  const double b = px * dx + py * dy;
+  if (b >= 0.0) return std::numeric_limits<double>::infinity();  // pointing away from the centre and outside
+  const double disc = b * b - cc;
+  if (disc < 0.0) return std::numeric_limits<double>::infinity();
+  return -b - std::sqrt(disc);
+}
 
 class StaticGeometry2D {
  public:

@@ -72,12 +72,13 @@ IrModel::IrModel(const RobotParams& robot, const StaticGeometry2D& geometry)
   }
 }
 
-void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const noexcept {
+void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng,
+                   std::span<const PlacedBody> others) const noexcept {
   const auto sensors = static_cast<std::size_t>(sensors_);
   std::fill(out.begin() + static_cast<std::ptrdiff_t>(sensors), out.end(), 0.0);
   if (sensors == 0) return;  // the navigator: no search of the arena, no draw
   geometry_.gather({pose.x_m, pose.y_m}, body_radius_m_ + range_m_, near_);
-  if (near_.empty()) {
+  if (near_.empty() && others.empty()) {
     for (std::size_t sensor = 0; sensor < sensors; ++sensor) {
       double& v = out[sensor];
       v = response(range_m_);
@@ -95,13 +96,14 @@ void IrModel::read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const
     const std::size_t first = sensor * rays;
     const Vec2 origin{pose.x_m + c * mount_x_[first] - s * mount_y_[first],
                       pose.y_m + s * mount_x_[first] + c * mount_y_[first]};
-    if (geometry_.fan_meets_any(near_, origin, range_m_)) {
+    if (!others.empty() || geometry_.fan_meets_any(near_, origin, range_m_)) {
       for (std::size_t r = 0; r < rays; ++r) {
         dx[r] = c * dir_x_[first + r] - s * dir_y_[first + r];
         dy[r] = s * dir_x_[first + r] + c * dir_y_[first + r];
         t[r] = range_m_;
       }
       geometry_.cast_fan(near_, origin, range_m_, rays_, dx.data(), dy.data(), t.data());
+      cast_fan_at_bodies(others, origin, rays_, dx.data(), dy.data(), t.data());
       for (std::size_t r = 0; r < rays; ++r) nearest = std::min(nearest, t[r]);
     }
     double v = response(nearest);

@@ -7,6 +7,7 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/geometry2d.hpp"
+#include "runtime/sim/neighbours.hpp"
 #include "runtime/sim/robot_params.hpp"
 
 namespace esc::sim {
@@ -50,8 +51,10 @@ class IrModel {
   // after them (noise from `rng` only when noise_sd > 0, one draw per sensor).
   // Uses scratch owned by the model: one reader at a time. Only the walls and obstacles
   // within reach are tested, and each sensor's fan only against those within range of its
-  // mount point; a robot with nothing in reach reads 0 without casting a ray.
-  void read(const Pose& pose, std::array<double, 8>& out, Rng& rng) const noexcept;
+  // mount point; a robot with nothing in reach reads 0 without casting a ray. `others`: the
+  // bodies of the other robots of a group that may be within reach, which the rays meet too.
+  void read(const Pose& pose, std::array<double, 8>& out, Rng& rng,
+            std::span<const PlacedBody> others = {}) const noexcept;
 
   [[nodiscard]] int rays_per_sensor() const noexcept { return rays_; }
   [[nodiscard]] int sensors() const noexcept { return sensors_; }

@@ -27,7 +27,8 @@ void KinematicBody::place(const Pose& pose) noexcept {
   turn_radps_ = 0.0;
 }
 
-bool KinematicBody::move(double turn_command, double speed_command, const StaticGeometry2D& geometry) noexcept {
+bool KinematicBody::move(double turn_command, double speed_command, const StaticGeometry2D& geometry,
+                         std::span<const PlacedBody> others) noexcept {
   turn_radps_ = std::clamp(turn_radps_ + command(turn_command) * turn_step_radps_, -max_turn_radps_, max_turn_radps_);
   speed_mps_ = std::clamp(speed_mps_ + command(speed_command) * speed_step_mps_, -max_speed_mps_, max_speed_mps_);
   const Vec2 next{pose_.x_m + facing_.x * speed_mps_ * dt_s_, pose_.y_m + facing_.y * speed_mps_ * dt_s_};
@@ -36,6 +37,11 @@ bool KinematicBody::move(double turn_command, double speed_command, const Static
   pose_.heading_rad = std::remainder(pose_.heading_rad + turn_radps_ * dt_s_, 2 * std::numbers::pi);
   facing_ = {std::cos(pose_.heading_rad), std::sin(pose_.heading_rad)};
   if (geometry.clearance(next, radius_m_) < radius_m_) return false;
+  for (const PlacedBody& b : others) {
+    const double keep = radius_m_ + b.radius_m;
+    const double ex = next.x - b.centre.x, ey = next.y - b.centre.y;
+    if (ex * ex + ey * ey < keep * keep) return false;
+  }
   pose_.x_m = next.x;
   pose_.y_m = next.y;
   return true;

@@ -8,6 +8,7 @@
 // obstacle is cancelled (the centre stays, the heading and both speeds are kept), as theirs.
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/geometry2d.hpp"
+#include "runtime/sim/neighbours.hpp"
 #include "runtime/sim/robot_params.hpp"
 
 namespace esc::sim {
@@ -20,7 +21,10 @@ class KinematicBody {
   void place(const Pose& pose) noexcept;
 
   // One control step (commands clamped to [-1, 1], NaN as 0); false when the move was cancelled.
-  [[nodiscard]] bool move(double turn_command, double speed_command, const StaticGeometry2D& geometry) noexcept;
+  // `others`: the other robots of a group that may be within reach, whose bodies (their
+  // bounding discs) cancel a move as walls do.
+  [[nodiscard]] bool move(double turn_command, double speed_command, const StaticGeometry2D& geometry,
+                          std::span<const PlacedBody> others = {}) noexcept;
 
   [[nodiscard]] const Pose& pose() const noexcept { return pose_; }
   // (cos, sin) of the pose's heading, computed once per move for the move, the step's

@@ -14,11 +14,12 @@ RangefinderModel::RangefinderModel(const RobotParams& robot, const StaticGeometr
   }
 }
 
-void RangefinderModel::read(const Pose& pose, std::span<double> out) const noexcept {
-  if (!cos_.empty()) read(pose, {std::cos(pose.heading_rad), std::sin(pose.heading_rad)}, out);
+void RangefinderModel::read(const Pose& pose, std::span<double> out, std::span<const PlacedBody> others) const noexcept {
+  if (!cos_.empty()) read(pose, {std::cos(pose.heading_rad), std::sin(pose.heading_rad)}, out, others);
 }
 
-void RangefinderModel::read(const Pose& pose, Vec2 facing, std::span<double> out) const noexcept {
+void RangefinderModel::read(const Pose& pose, Vec2 facing, std::span<double> out,
+                            std::span<const PlacedBody> others) const noexcept {
   const auto n = cos_.size();
   if (n == 0) return;
   const Vec2 centre{pose.x_m, pose.y_m};
@@ -31,6 +32,7 @@ void RangefinderModel::read(const Pose& pose, Vec2 facing, std::span<double> out
     t[i] = range_m_;
   }
   geometry_.cast_fan(all_, centre, range_m_, static_cast<int>(n), dx.data(), dy.data(), t.data());
+  cast_fan_at_bodies(others, centre, static_cast<int>(n), dx.data(), dy.data(), t.data());
   for (std::size_t i = 0; i < n; ++i) out[i] = t[i] / range_m_;
 }
 

@@ -9,6 +9,7 @@
 
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/geometry2d.hpp"
+#include "runtime/sim/neighbours.hpp"
 #include "runtime/sim/robot_params.hpp"
 
 namespace esc::sim {
@@ -21,9 +22,10 @@ class RangefinderModel {
   // The readings of the robot at `pose`, in the order the robot declares its rangefinders,
   // into out[0 .. count()); `out` holds at least count() values. No allocation; a robot
   // without rangefinders casts nothing.
-  void read(const Pose& pose, std::span<double> out) const noexcept;
+  // `others`: the bodies of the other robots of a group that may be within range.
+  void read(const Pose& pose, std::span<double> out, std::span<const PlacedBody> others = {}) const noexcept;
   // The same with the heading's (cos, sin) already known.
-  void read(const Pose& pose, Vec2 facing, std::span<double> out) const noexcept;
+  void read(const Pose& pose, Vec2 facing, std::span<double> out, std::span<const PlacedBody> others = {}) const noexcept;
 
   [[nodiscard]] int count() const noexcept { return static_cast<int>(cos_.size()); }
 

@@ -1,5 +1,6 @@
 #include "runtime/sim/world.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "runtime/sim/body.hpp"
+#include "runtime/sim/bullet_world.hpp"
 #include "runtime/sim/drive.hpp"
 #include "runtime/sim/floor.hpp"
 #include "runtime/sim/geometry2d.hpp"
@@ -15,6 +17,7 @@
 #include "runtime/sim/kinematic_body.hpp"
 #include "runtime/sim/ir_sensor.hpp"
 #include "runtime/sim/light_sensor.hpp"
+#include "runtime/sim/neighbours.hpp"
 #include "runtime/sim/motor.hpp"
 #include "runtime/sim/outline.hpp"
 #include "runtime/sim/rangefinder.hpp"
@@ -29,13 +32,11 @@ constexpr int kFreePoseTries = 10000;
 
 }  // namespace
 
-// Declared in the order they are built: the models read the validated arena and robot, the
-// body reads the geometry.
-struct World::Impl {
-  ArenaSpec arena;
+// One robot of the world, its members declared in the order they are built: the models read
+// the validated robot, the body reads the geometry and the Bullet world.
+struct Robot {
   RobotParams robot;
   double substep_s;
-  StaticGeometry2D geometry;
   IrModel ir;
   LightModel light;
   RangefinderModel rangefinders;
@@ -47,12 +48,16 @@ struct World::Impl {
   std::vector<Vec2> ground_points;   // the ground sensors' places in the body's frame
   GoalRadar radar;
   RobotState state;
+  // A control step's working values (World::Impl::step_wheels).
+  double target_l = 0.0, target_r = 0.0, vl = 0.0, vr = 0.0;
+  Vec2 start, start_heading;
+  bool collided = false;
+  std::uint32_t bumped = 0;
+  PlanarVelocity v;
 
-  Impl(const ArenaSpec& a, const RobotParams& r)
-      : arena((validate_arena(a), a)),
-        robot((validate_robot(r), r)),
+  Robot(const ArenaSpec& a, const RobotParams& r, const StaticGeometry2D& geometry, BulletWorld* bullet)
+      : robot(r),
         substep_s(r.control_step_s / r.physics_substeps),
-        geometry(a),
         ir(r, geometry),
         light(r),
         rangefinders(r, geometry),
@@ -61,161 +66,405 @@ struct World::Impl {
         floor(a, r),
         kinematic(r),
         radar(r.radars) {
-    if (r.drive == DriveKind::Differential) body.emplace(a, r, substep_s, geometry);
+    if (bullet) body.emplace(a, r, substep_s, geometry, *bullet);
     for (const GroundMount& m : r.ground.mounts) ground_points.push_back(m.point());
-    reset(a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
   }
 
-  void reset(const Pose& pose) {
-    if (body) body->place(pose);
-    else kinematic.place(pose);
-    state = RobotState{};
-    state.pose = body ? body->pose() : kinematic.pose();
-    floor.reset({state.pose.x_m, state.pose.y_m}, state.floor);
+  [[nodiscard]] Pose pose() const noexcept { return body ? body->pose() : kinematic.pose(); }
+  [[nodiscard]] Vec2 centre() const noexcept { return {state.pose.x_m, state.pose.y_m}; }
+  // How far its sensors reach beyond its centre.
+  [[nodiscard]] double sensing_reach_m() const noexcept {
+    return std::max(ir.sensors() > 0 ? robot.body_radius_m + robot.ir.range_m : 0.0,
+                    rangefinders.count() > 0 ? robot.rangefinders.range_m : 0.0);
   }
-
-  void step(double left_command, double right_command, Rng* rng) {
-    if (body) step_wheels(left_command, right_command, rng);
-    else step_kinematic(left_command, right_command);
-  }
-
-  // Motors, drive and body substep by substep; the floor counts energy at every substep
-  // and observes the rest at the end of the step.
-  void step_wheels(double left_command, double right_command, Rng* rng) {
-    const double target_l = motor.noisy(motor.target(left_command), rng);
-    const double target_r = motor.noisy(motor.target(right_command), rng);
-    const Vec2 start = body->position();
-    const Vec2 start_heading = body->heading();
-    double vl = state.wheel_speed_mps[0];
-    double vr = state.wheel_speed_mps[1];
-    bool collided = false;
-    std::uint32_t bumped = 0;
-    for (int i = 0; i < robot.physics_substeps; ++i) {
-      vl = motor.step(vl, target_l);
-      vr = motor.step(vr, target_r);
-      body->move(drive.velocity(vl, vr, body->heading()));
-      if (body->touching()) {
-        collided = true;
-        if (!robot.bumpers.empty()) bumped |= bumpers_toward(body->pose(), body->contact_point());
-      }
-      floor.substep(body->position());
-    }
-    state.wheel_speed_mps[0] = vl;
-    state.wheel_speed_mps[1] = vr;
-    finish_step(body->pose(), start, start_heading, collided);
-    state.bumped = bumped;
-  }
-
-  // One move of the navigator; the floor counts energy as many times as a wheeled robot's
-  // substeps would, at the position the step ends at.
-  void step_kinematic(double turn_command, double speed_command) {
-    const Pose start = kinematic.pose();
-    const Vec2 start_facing = kinematic.facing();
-    const bool collided = !kinematic.move(turn_command, speed_command, geometry);
-    state.wheel_speed_mps[0] = kinematic.turn_radps();
-    state.wheel_speed_mps[1] = kinematic.speed_mps();
-    for (int i = 0; i < robot.physics_substeps; ++i) floor.substep({kinematic.pose().x_m, kinematic.pose().y_m});
-    finish_step(kinematic.pose(), {start.x_m, start.y_m}, start_facing, collided);
-    // A cancelled move: towards the wall nearest to where it would have gone, from where it stayed.
-    state.bumped = collided && !robot.bumpers.empty()
-                       ? bumpers_toward(state.pose, geometry.nearest_point(kinematic.attempted()))
-                       : 0;
-  }
-
-  // The bumpers whose sectors hold a contact at `at`, seen from a body at `from`.
-  [[nodiscard]] std::uint32_t bumpers_toward(const Pose& from, Vec2 at) const noexcept {
+  // The bumpers whose sectors hold a contact at `at`.
+  [[nodiscard]] std::uint32_t bumpers_toward(Vec2 at) const noexcept {
+    const Pose from = pose();
     const double bearing = std::atan2(at.y - from.y_m, at.x - from.x_m) - from.heading_rad;
     std::uint32_t bits = 0;
     for (std::size_t i = 0; i < robot.bumpers.size(); ++i)
       if (robot.bumpers[i].holds(bearing)) bits |= 1U << i;
     return bits;
   }
-
-  void finish_step(const Pose& pose, Vec2 start, Vec2 start_heading, bool collided) {
+  void finish_step(const Pose& pose, Vec2 start_at, Vec2 heading_at_start, bool hit) {
     state.pose = pose;
-    const double dx_m = state.pose.x_m - start.x;
-    const double dy_m = state.pose.y_m - start.y;
+    const double dx_m = state.pose.x_m - start_at.x;
+    const double dy_m = state.pose.y_m - start_at.y;
     state.displacement_m = std::hypot(dx_m, dy_m);
     state.forward_displacement_m =
-        (dx_m * start_heading.x + dy_m * start_heading.y) / std::hypot(start_heading.x, start_heading.y);
-    state.collided = collided;
+        (dx_m * heading_at_start.x + dy_m * heading_at_start.y) / std::hypot(heading_at_start.x, heading_at_start.y);
+    state.collided = hit;
     floor.observe({state.pose.x_m, state.pose.y_m}, state.floor);
   }
+};
 
-  [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m) const {
-    const double keep = robot.body_radius_m + margin_m;
+namespace {
+
+[[nodiscard]] std::vector<RobotParams> validated(const std::vector<RobotParams>& robots) {
+  if (robots.empty()) throw std::invalid_argument("a world needs at least one robot");
+  for (const RobotParams& r : robots) validate_robot(r);
+  const DriveKind kind = robots.front().drive;
+  for (const RobotParams& r : robots)
+    if ((r.drive == DriveKind::Differential) != (kind == DriveKind::Differential))
+      throw std::invalid_argument(
+          "a group cannot mix the acceleration drive (kinematic, outside Bullet) with wheeled bodies");
+  return robots;
+}
+
+}  // namespace
+
+struct World::Impl {
+  ArenaSpec arena;
+  std::vector<RobotParams> params;
+  StaticGeometry2D geometry;
+  std::unique_ptr<BulletWorld> bullet;        // the wheeled robots' world; none for the acceleration drive
+  std::vector<std::unique_ptr<Robot>> robots;
+  // A group's broadphase and scratch, sized once (empty for one robot).
+  std::optional<Neighbours> grid;
+  double largest_radius_m = 0.0;
+  double largest_travel_m = 0.0;              // the farthest a robot moves in a control step
+  double reach_m = 0.0;                       // a robot's sensing reach at most, plus the largest radius
+  std::vector<Vec2> centres;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;   // the step's pairs that may meet
+  mutable std::vector<PlacedBody> seen;                          // the bodies one robot senses
+  std::vector<Pose> starts;                                      // begin_epoch's poses
+
+  Impl(const ArenaSpec& a, const std::vector<RobotParams>& r)
+      : arena((validate_arena(a), a)), params(validated(r)), geometry(a) {
+    if (params.front().drive == DriveKind::Differential) bullet = std::make_unique<BulletWorld>(a, params.size());
+    for (const RobotParams& p : params) robots.push_back(std::make_unique<Robot>(a, p, geometry, bullet.get()));
+    if (robots.size() > 1) {
+      double sensing = 0.0;
+      for (const auto& robot : robots) {
+        largest_radius_m = std::max(largest_radius_m, robot->robot.body_radius_m);
+        largest_travel_m = std::max(largest_travel_m, robot->robot.motor.max_speed_mps * robot->robot.control_step_s);
+        sensing = std::max(sensing, robot->sensing_reach_m());
+      }
+      reach_m = sensing + largest_radius_m;
+      grid.emplace(robots.size(), a.width_m, a.height_m, std::max(reach_m, 4 * largest_radius_m));
+      centres.resize(robots.size());
+      pairs.reserve(robots.size() * (robots.size() - 1) / 2);
+      seen.reserve(robots.size());
+    }
+    starts.reserve(robots.size());
+    std::vector<Pose> poses(robots.size(), a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
+    // A group's robots start side by side along x until an epoch places them.
+    for (std::size_t i = 1; i < poses.size(); ++i) poses[i].x_m = std::fmod(poses[i].x_m + static_cast<double>(i) * 2.5 * largest_radius_m, a.width_m);
+    reset(poses);
+  }
+
+  void reset(std::span<const Pose> poses) {
+    if (poses.size() != robots.size())
+      throw std::invalid_argument("a world of " + std::to_string(robots.size()) + " robots reset with " +
+                                  std::to_string(poses.size()) + " poses");
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      Robot& r = *robots[i];
+      if (r.body) r.body->place(poses[i]);
+      else r.kinematic.place(poses[i]);
+    }
+    if (bullet) bullet->reset_solver();
+    for (const auto& robot : robots) {
+      Robot& r = *robot;
+      if (r.body) r.body->update_clearance();
+      r.state = RobotState{};
+      r.state.pose = r.pose();
+      r.floor.reset({r.state.pose.x_m, r.state.pose.y_m}, r.state.floor);
+    }
+    index_robots();
+  }
+
+  // The grid over the robots where they are now: the next step's pairs, and what they sense.
+  void index_robots() noexcept {
+    if (!grid) return;
+    for (std::size_t i = 0; i < robots.size(); ++i) centres[i] = robots[i]->centre();
+    grid->build(centres);
+  }
+
+  void step(std::span<const DriveCommand> commands, Rng* rng) {
+    if (bullet) step_wheels(commands, rng);
+    else step_kinematic(commands);
+    index_robots();
+  }
+
+  // Motors, drives and bodies substep by substep; the floor counts energy at every substep
+  // and observes the rest at the end of the step. One Bullet step moves every body: it is
+  // taken when any body is near a wall, an obstacle or another body, or a contact point is
+  // cached; otherwise each body is integrated alone.
+  void step_wheels(std::span<const DriveCommand> commands, Rng* rng) {
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      Robot& r = *robots[i];
+      r.target_l = r.motor.noisy(r.motor.target(commands[i].left), rng);
+      r.target_r = r.motor.noisy(r.motor.target(commands[i].right), rng);
+      r.start = r.body->position();
+      r.start_heading = r.body->heading();
+      r.vl = r.state.wheel_speed_mps[0];
+      r.vr = r.state.wheel_speed_mps[1];
+      r.collided = false;
+      r.bumped = 0;
+    }
+    find_pairs();
+    const int substeps = robots.front()->robot.physics_substeps;
+    for (int k = 0; k < substeps; ++k) {
+      bool near = false;
+      for (const auto& robot : robots) {
+        Robot& r = *robot;
+        r.vl = r.motor.step(r.vl, r.target_l);
+        r.vr = r.motor.step(r.vr, r.target_r);
+        r.v = r.drive.velocity(r.vl, r.vr, r.body->heading());
+        near = r.body->set_velocity(r.v) || near;
+      }
+      near = near || pairs_near();
+      const bool stepped = bullet->has_contact_points() || near;
+      if (stepped) {
+        for (const auto& robot : robots) robot->body->prepare_bullet_step();
+        bullet->step(robots.front()->substep_s);
+      } else {
+        for (const auto& robot : robots) robot->body->integrate(robot->v);
+      }
+      for (const auto& robot : robots) {
+        Robot& r = *robot;
+        r.body->update_clearance();
+        if (r.body->touching()) {
+          r.collided = true;
+          if (!r.robot.bumpers.empty()) r.bumped |= r.bumpers_toward(r.body->contact_point());
+        }
+      }
+      if (stepped) touch_pairs();
+      for (const auto& robot : robots) robot->floor.substep(robot->body->position());
+    }
+    for (const auto& robot : robots) {
+      Robot& r = *robot;
+      r.state.wheel_speed_mps[0] = r.vl;
+      r.state.wheel_speed_mps[1] = r.vr;
+      r.finish_step(r.body->pose(), r.start, r.start_heading, r.collided);
+      r.state.bumped = r.bumped;
+    }
+  }
+
+  // The pairs of robots that may come near each other in this control step: their discs
+  // apart by at most both top speeds over the step (and the margins) at its start.
+  void find_pairs() {
+    pairs.clear();
+    if (!grid) return;
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      const Robot& a = *robots[i];
+      const double a_travel = a.robot.motor.max_speed_mps * a.robot.control_step_s;
+      grid->near(centres[i], 2 * largest_radius_m + 2 * a_travel + 2 * kFreeSpaceMargin_m, [&](std::size_t j) {
+        if (j <= i) return;
+        const Robot& b = *robots[j];
+        const double reach = a.robot.body_radius_m + b.robot.body_radius_m + a_travel +
+                             b.robot.motor.max_speed_mps * b.robot.control_step_s + 2 * kFreeSpaceMargin_m;
+        const double ex = centres[j].x - centres[i].x, ey = centres[j].y - centres[i].y;
+        if (ex * ex + ey * ey <= reach * reach)
+          pairs.emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
+      });
+    }
+  }
+
+  // Whether a pair's discs may meet within this substep.
+  [[nodiscard]] bool pairs_near() const noexcept {
+    for (const auto& [i, j] : pairs) {
+      const Robot& a = *robots[i];
+      const Robot& b = *robots[j];
+      const Vec2 pa = a.body->position(), pb = b.body->position();
+      const double keep = a.robot.body_radius_m + b.robot.body_radius_m + a.v.travel_m + b.v.travel_m + kFreeSpaceMargin_m;
+      const double ex = pb.x - pa.x, ey = pb.y - pa.y;
+      if (ex * ex + ey * ey <= keep * keep) return true;
+    }
+    return false;
+  }
+
+  // Robots touching each other after a Bullet step: both collided, each one's bumpers toward
+  // the contact.
+  void touch_pairs() {
+    for (const auto& [i, j] : pairs) {
+      Robot& a = *robots[i];
+      Robot& b = *robots[j];
+      Vec2 at;
+      if (!bullet->contact_between(a.body->object(), b.body->object(), kContactTolerance_m, at)) continue;
+      for (Robot* r : {&a, &b}) {
+        r->collided = true;
+        if (!r->robot.bumpers.empty()) r->bumped |= r->bumpers_toward(at);
+      }
+    }
+  }
+
+  // One move of each navigator, in robot order (a move is cancelled by a robot that has
+  // already moved where it now stands); the floor counts energy as many times as a wheeled
+  // robot's substeps would, at the position the step ends at.
+  void step_kinematic(std::span<const DriveCommand> commands) {
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      Robot& r = *robots[i];
+      const Pose start = r.kinematic.pose();
+      const Vec2 start_facing = r.kinematic.facing();
+      const std::span<const PlacedBody> others = bodies_near(i);
+      const bool collided = !r.kinematic.move(commands[i].left, commands[i].right, geometry, others);
+      r.state.wheel_speed_mps[0] = r.kinematic.turn_radps();
+      r.state.wheel_speed_mps[1] = r.kinematic.speed_mps();
+      for (int k = 0; k < r.robot.physics_substeps; ++k) r.floor.substep({r.kinematic.pose().x_m, r.kinematic.pose().y_m});
+      r.finish_step(r.kinematic.pose(), {start.x_m, start.y_m}, start_facing, collided);
+      if (i + 1 < robots.size()) centres[i] = r.centre();   // the robots after it see where it went
+      // A cancelled move: towards the wall nearest to where it would have gone, or the robot
+      // that stopped it, from where it stayed.
+      r.state.bumped = collided && !r.robot.bumpers.empty() ? r.bumpers_toward(blocker(r, others)) : 0;
+    }
+  }
+
+  // What cancelled a navigator's move: the nearest point of the walls, unless its attempted
+  // centre clears them and another robot's disc held it back.
+  [[nodiscard]] Vec2 blocker(const Robot& r, std::span<const PlacedBody> others) const noexcept {
+    const Vec2 to = r.kinematic.attempted();
+    if (others.empty() || geometry.clearance(to, r.robot.body_radius_m) < r.robot.body_radius_m)
+      return geometry.nearest_point(to);
+    const PlacedBody* nearest = &others.front();
+    double best = StaticGeometry2D::kNoHit;
+    for (const PlacedBody& b : others) {
+      const double d = std::hypot(to.x - b.centre.x, to.y - b.centre.y) - b.radius_m;
+      if (d < best) best = d, nearest = &b;
+    }
+    return nearest->centre;
+  }
+
+  // The bodies of the robots other than `i` that its sensors or its step may reach, placed
+  // where they are now (none for a robot alone).
+  std::span<const PlacedBody> bodies_near(std::size_t i) const {
+    seen.clear();
+    if (!grid) return {};
+    const Robot& a = *robots[i];
+    // The grid's centres may be a step old (navigators moved before this one): their travel too.
+    const double reach = a.sensing_reach_m() + a.robot.body_radius_m + 2 * largest_travel_m;
+    const Vec2 c = a.centre();
+    grid->near(c, reach + largest_radius_m, [&](std::size_t j) {
+      if (j == i) return;
+      Robot& b = *robots[j];
+      const Vec2 at = centres[j];
+      const double keep = reach + b.robot.body_radius_m;   // exact: centres[j] is where it is
+      if ((at.x - c.x) * (at.x - c.x) + (at.y - c.y) * (at.y - c.y) > keep * keep) return;
+      seen.push_back({at, b.robot.body_radius_m, b.body ? b.body->placed_outline() : std::span<const Vec2>{}});
+    });
+    return seen;
+  }
+
+  [[nodiscard]] std::vector<Pose> random_free_poses(Rng& rng, double margin_m, std::size_t count) const {
+    std::vector<Pose> poses;
+    for (std::size_t i = 0; i < count; ++i) poses.push_back(random_free_pose(rng, margin_m, i, poses));
+    return poses;
+  }
+
+  [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m, std::size_t i, std::span<const Pose> before) const {
+    const double radius = robots[i]->robot.body_radius_m;
+    const double keep = radius + margin_m;
+    const auto clear_of_robots = [&](double x, double y) {
+      for (std::size_t k = 0; k < before.size(); ++k) {
+        const double apart = keep + robots[k]->robot.body_radius_m;
+        if ((x - before[k].x_m) * (x - before[k].x_m) + (y - before[k].y_m) * (y - before[k].y_m) < apart * apart)
+          return false;
+      }
+      return true;
+    };
     if (2 * keep < arena.width_m && 2 * keep < arena.height_m) {
-      for (int i = 0; i < kFreePoseTries; ++i) {
+      for (int t = 0; t < kFreePoseTries; ++t) {
         const double x = rng.uniform(keep, arena.width_m - keep);
         const double y = rng.uniform(keep, arena.height_m - keep);
-        if (geometry.clearance({x, y}, keep) >= keep)
+        if (geometry.clearance({x, y}, keep) >= keep && clear_of_robots(x, y))
           return {x, y, rng.uniform(-std::numbers::pi, std::numbers::pi)};
       }
     }
     throw std::runtime_error(
-        "the arena has no free space for the robot (no pose found that keeps the body " +
-        std::to_string(margin_m) + " m clear of every wall and obstacle)");
+        (i == 0 ? std::string("the arena has no free space for the robot")
+                : "the arena has no free space for robot " + std::to_string(i) + " beside the robots before it") +
+        " (no pose found that keeps the body " + std::to_string(margin_m) + " m clear of every wall and obstacle)");
   }
 };
 
 World::World(const ArenaSpec& arena, const RobotParams& robot)
-    : impl_(std::make_unique<Impl>(arena, robot)) {}
+    : impl_(std::make_unique<Impl>(arena, std::vector<RobotParams>{robot})) {}
+World::World(const ArenaSpec& arena, const std::vector<RobotParams>& robots)
+    : impl_(std::make_unique<Impl>(arena, robots)) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-Pose World::random_free_pose(Rng& rng, double margin_m) const {
-  return impl_->random_free_pose(rng, margin_m);
+Pose World::random_free_pose(Rng& rng, double margin_m) const { return impl_->random_free_pose(rng, margin_m, 0, {}); }
+std::vector<Pose> World::random_free_poses(Rng& rng, double margin_m) const {
+  return impl_->random_free_poses(rng, margin_m, impl_->robots.size());
 }
-void World::place_zones(Rng& rng) { impl_->floor.place_zones(rng, impl_->geometry); }
-void World::reset(const Pose& pose) { impl_->reset(pose); }
+std::size_t World::robots() const noexcept { return impl_->robots.size(); }
+void World::place_zones(Rng& rng) {
+  Floor& first = impl_->robots.front()->floor;
+  first.place_zones(rng, impl_->geometry);
+  for (std::size_t i = 1; i < impl_->robots.size(); ++i) impl_->robots[i]->floor.take_zones(first);
+}
+void World::reset(const Pose& pose) { impl_->reset({&pose, 1}); }
+void World::reset(std::span<const Pose> poses) { impl_->reset(poses); }
 Pose World::begin_epoch(Rng& rng) {
   place_zones(rng);
-  const Pose pose = impl_->arena.fixed_start ? *impl_->arena.fixed_start : random_free_pose(rng);
-  impl_->reset(pose);
-  return pose;
+  std::vector<Pose>& poses = impl_->starts;
+  poses.clear();
+  for (std::size_t i = 0; i < impl_->robots.size(); ++i)
+    poses.push_back(i == 0 && impl_->arena.fixed_start ? *impl_->arena.fixed_start
+                                                       : impl_->random_free_pose(rng, 0.005, i, poses));
+  impl_->reset(poses);
+  return poses.front();
 }
 void World::step(double left_command, double right_command, Rng& rng) {
-  impl_->step(left_command, right_command, &rng);
+  const DriveCommand command{left_command, right_command};
+  step({&command, 1}, rng);
 }
 void World::step(double left_command, double right_command) {
-  if (impl_->body && impl_->motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
-  impl_->step(left_command, right_command, nullptr);
+  for (const auto& r : impl_->robots)
+    if (r->body && r->motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
+  const DriveCommand command{left_command, right_command};
+  impl_->step({&command, 1}, nullptr);
 }
-void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng) const {
-  impl_->ir.read(impl_->state.pose, out, rng);
+void World::step(std::span<const DriveCommand> commands, Rng& rng) {
+  if (commands.size() != impl_->robots.size())
+    throw std::invalid_argument("a world of " + std::to_string(impl_->robots.size()) + " robots stepped with " +
+                                std::to_string(commands.size()) + " commands");
+  impl_->step(commands, &rng);
 }
-void World::read_light(std::array<double, kLightSensors>& out, Rng& rng) const {
-  const std::span<const PlacedLight> lights = impl_->floor.lights();
-  impl_->light.read(impl_->state.pose, impl_->geometry, lights.data(), lights.size(), out, rng);
+void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng, std::size_t robot) const {
+  const Robot& r = *impl_->robots[robot];
+  r.ir.read(r.state.pose, out, rng, r.ir.sensors() > 0 ? impl_->bodies_near(robot) : std::span<const PlacedBody>{});
 }
-void World::read_rangefinders(std::span<double> out) const {
-  if (impl_->body) impl_->rangefinders.read(impl_->state.pose, out);
-  else impl_->rangefinders.read(impl_->state.pose, impl_->kinematic.facing(), out);
+void World::read_light(std::array<double, kLightSensors>& out, Rng& rng, std::size_t robot) const {
+  const Robot& r = *impl_->robots[robot];
+  const std::span<const PlacedLight> lights = r.floor.lights();
+  r.light.read(r.state.pose, impl_->geometry, lights.data(), lights.size(), out, rng);
 }
-void World::read_ground(std::span<double> out) const {
-  const std::vector<Vec2>& points = impl_->ground_points;
+void World::read_rangefinders(std::span<double> out, std::size_t robot) const {
+  const Robot& r = *impl_->robots[robot];
+  if (r.rangefinders.count() == 0) return;
+  const std::span<const PlacedBody> others = impl_->bodies_near(robot);
+  if (r.body) r.rangefinders.read(r.state.pose, out, others);
+  else r.rangefinders.read(r.state.pose, r.kinematic.facing(), out, others);
+}
+void World::read_ground(std::span<double> out, std::size_t robot) const {
+  const Robot& r = *impl_->robots[robot];
+  const std::vector<Vec2>& points = r.ground_points;
   if (points.empty()) return;  // no sine and cosine for a robot without ground sensors
   std::array<Vec2, kMaxGroundSensors> at;
-  place_points(points, impl_->state.pose, at);
-  for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = impl_->floor.visible_at(at[i]) ? 1.0 : 0.0;
+  place_points(points, r.state.pose, at);
+  for (std::size_t i = 0; i < points.size() && i < out.size(); ++i) out[i] = r.floor.visible_at(at[i]) ? 1.0 : 0.0;
 }
 
-int World::goal_slice() const noexcept {
+int World::goal_slice(std::size_t robot) const noexcept {
+  const Robot& r = *impl_->robots[robot];
   const std::optional<Vec2>& goal = impl_->arena.goal;
-  if (!goal || impl_->robot.radars == 0) return -1;
-  const Pose& pose = impl_->state.pose;
-  const Vec2 facing = impl_->body ? Vec2{std::cos(pose.heading_rad), std::sin(pose.heading_rad)} : impl_->kinematic.facing();
-  return impl_->radar.slice(pose, facing, *goal);
+  if (!goal || r.robot.radars == 0) return -1;
+  const Pose& pose = r.state.pose;
+  const Vec2 facing = r.body ? Vec2{std::cos(pose.heading_rad), std::sin(pose.heading_rad)} : r.kinematic.facing();
+  return r.radar.slice(pose, facing, *goal);
 }
 
-std::span<const Vec2> World::zone_centers() const noexcept { return impl_->floor.zone_centers(); }
-std::span<const Vec2> World::light_positions() const noexcept { return impl_->floor.light_positions(); }
-bool World::in_zone(std::size_t zone, Vec2 p) const noexcept { return impl_->floor.in_zone(zone, p); }
-int World::sweep_columns() const noexcept { return impl_->floor.sweep_columns(); }
-int World::sweep_rows() const noexcept { return impl_->floor.sweep_rows(); }
-const RobotState& World::state() const noexcept { return impl_->state; }
-const RobotParams& World::robot() const noexcept { return impl_->robot; }
+// The zones and lights are where robot 0's floor placed them, and every floor took them.
+std::span<const Vec2> World::zone_centers() const noexcept { return impl_->robots.front()->floor.zone_centers(); }
+std::span<const Vec2> World::light_positions() const noexcept { return impl_->robots.front()->floor.light_positions(); }
+bool World::in_zone(std::size_t zone, Vec2 p) const noexcept { return impl_->robots.front()->floor.in_zone(zone, p); }
+int World::sweep_columns() const noexcept { return impl_->robots.front()->floor.sweep_columns(); }
+int World::sweep_rows() const noexcept { return impl_->robots.front()->floor.sweep_rows(); }
+const RobotState& World::state(std::size_t robot) const noexcept { return impl_->robots[robot]->state; }
+const RobotParams& World::robot(std::size_t robot) const noexcept { return impl_->robots[robot]->robot; }
 const ArenaSpec& World::arena() const noexcept { return impl_->arena; }
 
 }  // namespace esc::sim

@@ -1,7 +1,10 @@
 #pragma once
-// The simulated Khepera in its arena, as the evaluation loop sees it: the façade over the
-// body in Bullet (body.hpp), the floor (floor.hpp: zones, lights, energy, sweep grid), the
-// motors and the drive (motor.hpp, drive.hpp) and the sensors. A worker builds a World once
+// The simulated robots in their arena, as the evaluation loop sees them: the façade over the
+// bodies in one Bullet world (body.hpp, bullet_world.hpp), the floor (floor.hpp: zones, lights,
+// energy, sweep grid), the motors and the drive (motor.hpp, drive.hpp) and the sensors. One
+// robot, or a group (docs/groups.md): the robots collide through Bullet, and their IR sensors
+// and rangefinders meet each other's bodies, found through a grid (neighbours.hpp) rather than
+// by testing every pair. Calls without a robot index are robot 0's. A worker builds a World once
 // and reuses it for every evaluation: reset() returns it to a state indistinguishable from a
 // freshly built world (body state, contact manifolds, broadphase pairs, solver seed), so a
 // trajectory depends only on its start pose, its commands and its noise stream, never on
@@ -11,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
@@ -31,14 +35,23 @@ struct RobotState {
   double wheel_speed_mps[2] = {0.0, 0.0};
   double displacement_m = 0.0;             // |position change| over the last control step
   double forward_displacement_m = 0.0;     // position change projected on the heading
-  bool collided = false;                   // contact with a wall or obstacle during the step
+  bool collided = false;                   // contact with a wall, an obstacle or another robot during the step
   std::uint32_t bumped = 0;                // bit i: bumper i touched during the step
   FloorState floor;                        // zones, lights' reach, sweep grid, energy
+};
+
+// One robot's wheel commands (or, for the acceleration drive, turn and speed), in [-1, 1].
+struct DriveCommand {
+  double left = 0.0;
+  double right = 0.0;
 };
 
 class World {
  public:
   World(const ArenaSpec& arena, const RobotParams& robot);
+  // A group: robots[i] is robot i's body. Throws std::invalid_argument for an empty group or
+  // one that mixes the acceleration drive (kinematic, outside Bullet) with wheeled bodies.
+  World(const ArenaSpec& arena, const std::vector<RobotParams>& robots);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -48,6 +61,11 @@ class World {
   // A uniformly random pose whose body clears every wall and obstacle by `margin_m`.
   // Throws std::runtime_error if no such pose is found (the arena has no free space).
   [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m = 0.005) const;
+  // For every robot in turn, a uniformly random pose whose body clears every wall and
+  // obstacle, and the robots before it, by `margin_m`; robot 0 draws what random_free_pose does.
+  [[nodiscard]] std::vector<Pose> random_free_poses(Rng& rng, double margin_m = 0.005) const;
+
+  [[nodiscard]] std::size_t robots() const noexcept;
 
   // Draws a position for every zone with random_position (in zone index order: uniform
   // over the centres that keep the zone inside the arena and clear of every obstacle; see
@@ -60,10 +78,13 @@ class World {
   // visited cells (the start cell only), reach flags (a light whose reach the robot starts
   // in counts only after leaving and coming back).
   void reset(const Pose& pose);
+  // The same for a group: poses[i] is robot i's (as many as robots()).
+  void reset(std::span<const Pose> poses);
 
-  // The start of an epoch, in this order: place_zones(rng); the pose is the arena's
-  // fixed_start, else random_free_pose(rng); reset(pose). Returns the pose. With no random
-  // zone it draws exactly what `reset(fixed_start or random_free_pose(rng))` draws.
+  // The start of an epoch, in this order: place_zones(rng); robot 0's pose is the arena's
+  // fixed_start, else random_free_pose(rng), and every other robot's a random pose clear of
+  // those before it; reset(poses). Returns robot 0's pose. With no random zone and one robot
+  // it draws exactly what `reset(fixed_start or random_free_pose(rng))` draws.
   Pose begin_epoch(Rng& rng);
 
   // One control step: commands in [-1, 1] (clamped), motors and body integrated over
@@ -73,28 +94,31 @@ class World {
   // The same for a robot without motor noise, which draws nothing (tests, benchmarks);
   // throws std::logic_error for a robot with motor noise.
   void step(double left_command, double right_command);
+  // A group's control step: commands[i] is robot i's; motor noise drawn robot by robot.
+  void step(std::span<const DriveCommand> commands, Rng& rng);
 
   // IR proximity readings, 0 (nothing within range) .. 1 (touching); noise drawn from
   // `rng` when the model has noise. No allocation.
-  void read_ir(std::array<double, kIrSensors>& out, Rng& rng) const;
+  void read_ir(std::array<double, kIrSensors>& out, Rng& rng, std::size_t robot = 0) const;
 
   // Ambient light readings, 0 dark .. 1 bright, from every light of the arena at its
   // position this epoch; noise drawn from `rng` only when robot.light.noise_sd > 0 (one
   // draw per sensor, in index order). No allocation.
-  void read_light(std::array<double, kLightSensors>& out, Rng& rng) const;
+  // Other robots neither shade nor emit light.
+  void read_light(std::array<double, kLightSensors>& out, Rng& rng, std::size_t robot = 0) const;
 
   // Rangefinder readings (rangefinder.hpp), in the order the robot declares them, into
   // out[0 .. robot().rangefinders.angles_rad.size()); nothing without rangefinders. No noise,
   // no allocation.
-  void read_rangefinders(std::span<double> out) const;
+  void read_rangefinders(std::span<double> out, std::size_t robot = 0) const;
 
   // Ground sensor readings, 1 over a visible zone and 0 elsewhere, in the order the robot
   // declares them, into out[0 .. robot().ground.mounts.size()). No noise, no allocation.
-  void read_ground(std::span<double> out) const;
+  void read_ground(std::span<double> out, std::size_t robot = 0) const;
 
   // The goal radar slice (goal_radar.hpp) that holds the arena's goal; -1 for an arena
   // without a goal or a robot without radars.
-  [[nodiscard]] int goal_slice() const noexcept;
+  [[nodiscard]] int goal_slice(std::size_t robot = 0) const noexcept;
 
   // Where the zones' centres and the lights' floor positions are this epoch (index as in
   // the ArenaSpec), for replays.
@@ -109,8 +133,8 @@ class World {
   [[nodiscard]] int sweep_columns() const noexcept;
   [[nodiscard]] int sweep_rows() const noexcept;
 
-  [[nodiscard]] const RobotState& state() const noexcept;
-  [[nodiscard]] const RobotParams& robot() const noexcept;
+  [[nodiscard]] const RobotState& state(std::size_t robot = 0) const noexcept;
+  [[nodiscard]] const RobotParams& robot(std::size_t robot = 0) const noexcept;
   [[nodiscard]] const ArenaSpec& arena() const noexcept;
 
  private:

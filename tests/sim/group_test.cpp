@@ -1,0 +1,274 @@
+// Several robots in one world (docs/groups.md): they collide through Bullet, their IR sensors
+// and rangefinders meet each other's bodies exactly as they meet a cylinder of the same place
+// and radius, navigators cannot overlap, random starts keep them apart, and the grid finds
+// every robot within a reach.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+#include "runtime/sim/neighbours.hpp"
+#include "runtime/sim/world.hpp"
+#include "sim_test_util.hpp"
+
+namespace esc::sim {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+double distance(const Pose& a, const Pose& b) { return std::hypot(a.x_m - b.x_m, a.y_m - b.y_m); }
+
+// Lehman & Stanley's navigator (acceleration_drive_test.cpp's) with its six rangefinders.
+RobotParams navigator() {
+  constexpr double kUnit = 0.0034375;   // metres per maze unit
+  RobotParams r;
+  r.drive = DriveKind::Acceleration;
+  r.body_radius_m = 8 * kUnit;
+  r.motor.max_speed_mps = 3 * kUnit / r.control_step_s;
+  r.motor.max_accel_mps2 = 0.5 * kUnit / (r.control_step_s * r.control_step_s);
+  r.turn.max_rate_radps = 3 * kDeg / r.control_step_s;
+  r.turn.max_accel_radps2 = 0.5 * kDeg / (r.control_step_s * r.control_step_s);
+  r.ir.mounts.clear();
+  r.rangefinders.angles_rad = {-90 * kDeg, -45 * kDeg, 0.0, 45 * kDeg, 90 * kDeg, 180 * kDeg};
+  r.rangefinders.range_m = 0.34375;
+  return r;
+}
+
+TEST(SimGroup, TwoKheperasDrivenHeadOnStopAtContactWithoutPassingThrough) {
+  World world(test::empty_arena(1.0, 1.0), std::vector<RobotParams>(2, test::robot_with_inertia(false)));
+  const std::array<Pose, 2> starts = {Pose{0.3, 0.5, 0.0}, Pose{0.7, 0.5, std::numbers::pi}};
+  world.reset(starts);
+  const double radius = world.robot().body_radius_m;
+  Rng rng(1);
+  const std::array<DriveCommand, 2> ahead = {DriveCommand{1.0, 1.0}, DriveCommand{1.0, 1.0}};
+  bool met = false;
+  for (int step = 0; step < 200; ++step) {
+    world.step(ahead, rng);
+    const double apart = distance(world.state(0).pose, world.state(1).pose);
+    ASSERT_GT(apart, 2 * radius - 1e-3) << "step " << step;   // Bullet's solver allows a little
+    ASSERT_LT(world.state(0).pose.x_m, world.state(1).pose.x_m);
+    if (world.state(0).collided) {
+      met = true;
+      EXPECT_TRUE(world.state(1).collided);
+      EXPECT_LT(apart, 2 * radius + 1e-3);
+    }
+  }
+  EXPECT_TRUE(met);
+}
+
+TEST(SimGroup, ARobotAloneDrivesAsInItsOwnWorld) {
+  // Far apart, two robots integrate alone, as a robot in its own world does, to the bit.
+  const RobotParams k = test::robot_with_inertia(true);
+  World solo(test::empty_arena(2.0, 1.0), k);
+  World pair(test::empty_arena(2.0, 1.0), std::vector<RobotParams>(2, k));
+  const Pose start{0.4, 0.5, 0.3};
+  solo.reset(start);
+  const std::array<Pose, 2> starts = {start, Pose{1.6, 0.5, 0.0}};
+  pair.reset(starts);
+  Rng a(3), b(3);
+  for (int step = 0; step < 40; ++step) {
+    const double l = 0.3 + 0.01 * step, r = 0.5;
+    solo.step(l, r, a);
+    const std::array<DriveCommand, 2> commands = {DriveCommand{l, r}, DriveCommand{0.0, 0.0}};
+    pair.step(commands, b);
+    ASSERT_EQ(solo.state().pose.x_m, pair.state(0).pose.x_m);
+    ASSERT_EQ(solo.state().pose.y_m, pair.state(0).pose.y_m);
+    ASSERT_EQ(solo.state().pose.heading_rad, pair.state(0).pose.heading_rad);
+  }
+}
+
+// Robot 1 stands where a cylinder of its radius would: robot 0's IR reads the same.
+TEST(SimGroup, IrSeesAnotherRobotAsACylinderOfItsRadius) {
+  const RobotParams k = test::robot_with_inertia(false);
+  for (const double gap : {0.005, 0.02, 0.04, 0.2}) {
+    for (const double bearing : {0.0, 30 * kDeg, -50 * kDeg, 160 * kDeg}) {
+      const Pose p0{0.5, 0.5, 0.2};
+      const double d = 2 * k.body_radius_m + gap;
+      const Vec2 q{p0.x_m + d * std::cos(p0.heading_rad + bearing), p0.y_m + d * std::sin(p0.heading_rad + bearing)};
+      World pair(test::empty_arena(1.0, 1.0), std::vector<RobotParams>(2, k));
+      // Robot 1 faces robot 0.
+      const std::array<Pose, 2> starts = {p0, Pose{q.x, q.y, p0.heading_rad + bearing + std::numbers::pi}};
+      pair.reset(starts);
+      ArenaSpec with_cylinder = test::empty_arena(1.0, 1.0);
+      with_cylinder.cylinders.push_back({q, k.body_radius_m});
+      World alone(with_cylinder, k);
+      alone.reset(p0);
+      std::array<double, kIrSensors> seen{}, expected{};
+      Rng r1(1), r2(1);
+      pair.read_ir(seen, r1);
+      alone.read_ir(expected, r2);
+      EXPECT_EQ(seen, expected) << "gap " << gap << ", bearing " << bearing;
+      if (gap < 0.04 && bearing == 0.0) {
+        EXPECT_GT(*std::max_element(seen.begin(), seen.end()), 0.0);
+      }
+      // And robot 1 sees robot 0 as robot 0 sees it, straight ahead (to rounding: its heading
+      // is robot 0's turned by pi).
+      if (bearing == 0.0) {
+        std::array<double, kIrSensors> back{};
+        pair.read_ir(back, r1, 1);
+        for (std::size_t s = 0; s < kIrSensors; ++s) EXPECT_NEAR(back[s], seen[s], 1e-12) << "gap " << gap;
+      }
+    }
+  }
+}
+
+TEST(SimGroup, RangefindersMeetOtherNavigatorsAndNavigatorsDoNotOverlap) {
+  const RobotParams nav = navigator();
+  World pair(test::empty_arena(2.0, 2.0), std::vector<RobotParams>(2, nav));
+  const std::array<Pose, 2> starts = {Pose{0.5, 1.0, 0.0}, Pose{0.7, 1.0, std::numbers::pi}};
+  pair.reset(starts);
+  ArenaSpec with_cylinder = test::empty_arena(2.0, 2.0);
+  with_cylinder.cylinders.push_back({{0.7, 1.0}, nav.body_radius_m});
+  World alone(with_cylinder, nav);
+  alone.reset(starts[0]);
+  std::array<double, 6> seen{}, expected{};
+  pair.read_rangefinders(seen);
+  alone.read_rangefinders(expected);
+  EXPECT_EQ(seen, expected);
+  EXPECT_NEAR(seen[2] * nav.rangefinders.range_m, 0.2 - nav.body_radius_m, 1e-12);   // from its centre
+  // Full speed at each other: the moves that would overlap are cancelled.
+  Rng rng(1);
+  const std::array<DriveCommand, 2> ahead = {DriveCommand{0.0, 1.0}, DriveCommand{0.0, 1.0}};
+  bool stopped = false;
+  for (int step = 0; step < 100; ++step) {
+    pair.step(ahead, rng);
+    ASSERT_GE(distance(pair.state(0).pose, pair.state(1).pose), 2 * nav.body_radius_m);
+    stopped = stopped || pair.state(0).collided;
+  }
+  EXPECT_TRUE(stopped);
+}
+
+TEST(SimGroup, RandomStartsKeepTheRobotsApartAndRobotZeroDrawsAsAlone) {
+  ArenaSpec arena = test::empty_arena(1.0, 1.0);
+  arena.cylinders.push_back({{0.5, 0.5}, 0.1});
+  const RobotParams k = test::robot_with_inertia(false);
+  World group(arena, std::vector<RobotParams>(30, k));
+  World alone(arena, k);
+  Rng a(7), b(7);
+  const std::vector<Pose> poses = group.random_free_poses(a, 0.005);
+  ASSERT_EQ(poses.size(), 30U);
+  const Pose first = alone.random_free_pose(b, 0.005);
+  EXPECT_EQ(poses[0].x_m, first.x_m);
+  EXPECT_EQ(poses[0].heading_rad, first.heading_rad);
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    for (std::size_t j = i + 1; j < poses.size(); ++j)
+      EXPECT_GE(distance(poses[i], poses[j]), 2 * k.body_radius_m + 0.005) << i << ", " << j;
+  // begin_epoch places every robot so.
+  Rng c(9);
+  group.begin_epoch(c);
+  for (std::size_t i = 0; i < 30; ++i)
+    for (std::size_t j = i + 1; j < 30; ++j)
+      EXPECT_GE(distance(group.state(i).pose, group.state(j).pose), 2 * k.body_radius_m + 0.005);
+  // No room for a 31st in a tiny arena: a clear error naming the robot.
+  World crowded(test::empty_arena(0.12, 0.12), std::vector<RobotParams>(2, k));
+  Rng d(1);
+  try {
+    (void)crowded.random_free_poses(d);
+    FAIL() << "two Kheperas fit in 12 cm";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("robot 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SimGroup, ACrowdStepsTheSameTwice) {
+  const RobotParams k = test::robot_with_inertia(true);
+  const auto run = [&] {
+    World world(test::empty_arena(0.6, 0.6), std::vector<RobotParams>(12, k));
+    Rng rng(5);
+    world.begin_epoch(rng);
+    std::vector<DriveCommand> commands(12);
+    for (int step = 0; step < 300; ++step) {
+      for (std::size_t i = 0; i < commands.size(); ++i)
+        commands[i] = {std::sin(0.1 * step + static_cast<double>(i)), std::cos(0.07 * step - static_cast<double>(i))};
+      world.step(commands, rng);
+    }
+    std::vector<double> out;
+    int collisions = 0;
+    for (std::size_t i = 0; i < 12; ++i) {
+      out.push_back(world.state(i).pose.x_m);
+      out.push_back(world.state(i).pose.heading_rad);
+      collisions += world.state(i).collided;
+    }
+    out.push_back(collisions);
+    return out;
+  };
+  EXPECT_EQ(run(), run());
+}
+
+TEST(SimGroup, BumpersFeelAnotherRobot) {
+  RobotParams k = test::robot_with_inertia(false);
+  k.bumpers = {{-45 * kDeg, 45 * kDeg}, {135 * kDeg, 225 * kDeg}};
+  World world(test::empty_arena(1.0, 1.0), std::vector<RobotParams>(2, k));
+  const std::array<Pose, 2> starts = {Pose{0.3, 0.5, 0.0}, Pose{0.3 + 2 * k.body_radius_m + 0.01, 0.5, 0.0}};
+  world.reset(starts);
+  Rng rng(1);
+  const std::array<DriveCommand, 2> commands = {DriveCommand{1.0, 1.0}, DriveCommand{0.0, 0.0}};
+  std::uint32_t front = 0, back = 0;
+  for (int step = 0; step < 20; ++step) {
+    world.step(commands, rng);
+    front |= world.state(0).bumped;
+    back |= world.state(1).bumped;
+  }
+  EXPECT_EQ(front, 1U);   // robot 0's front bumper
+  EXPECT_EQ(back, 2U);    // robot 1's back bumper
+}
+
+TEST(SimGroup, AGroupMustShareOneKindOfDrive) {
+  std::vector<RobotParams> mixed = {test::robot_with_inertia(false), navigator()};
+  EXPECT_THROW(World(test::empty_arena(1.0, 1.0), mixed), std::invalid_argument);
+  EXPECT_THROW(World(test::empty_arena(1.0, 1.0), std::vector<RobotParams>{}), std::invalid_argument);
+  World pair(test::empty_arena(1.0, 1.0), std::vector<RobotParams>(2, test::robot_with_inertia(false)));
+  const Pose one{0.5, 0.5, 0.0};
+  EXPECT_THROW(pair.reset(one), std::invalid_argument);
+  Rng rng(1);
+  const std::array<DriveCommand, 1> too_few = {};
+  EXPECT_THROW(pair.step(too_few, rng), std::invalid_argument);
+}
+
+TEST(SimGroup, TheGridFindsEveryRobotWithinAReach) {
+  std::mt19937_64 gen(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const std::size_t n : {1U, 2U, 7U, 50U, 300U}) {
+    std::vector<Vec2> centres(n);
+    for (Vec2& c : centres) c = {2.0 * unit(gen), 1.0 * unit(gen)};
+    Neighbours grid(n, 2.0, 1.0, 0.1);
+    grid.build(centres);
+    for (int q = 0; q < 200; ++q) {
+      const Vec2 p{2.2 * unit(gen) - 0.1, 1.2 * unit(gen) - 0.1};
+      const double reach = 0.5 * unit(gen);
+      std::vector<std::size_t> found;
+      grid.near(p, reach, [&](std::size_t j) { found.push_back(j); });
+      const std::set<std::size_t> unique(found.begin(), found.end());
+      ASSERT_EQ(unique.size(), found.size()) << "a robot reported twice";
+      for (std::size_t j = 0; j < n; ++j) {
+        if (std::hypot(centres[j].x - p.x, centres[j].y - p.y) <= reach) {
+          ASSERT_TRUE(unique.count(j)) << n << " robots, robot " << j << " missed";
+        }
+      }
+    }
+  }
+}
+
+TEST(SimGroup, RaysMeetAnOutlineWhereItIs) {
+  // A Thymio-like outline placed at the origin facing +x: its flat back 3 cm behind the axle,
+  // its front arc 8 cm ahead.
+  const std::vector<Vec2> outline = test::thymio_outline();
+  const PlacedBody body{{0.0, 0.0}, 0.08, outline};
+  EXPECT_NEAR(ray_body_hit(body, {-0.5, 0.0}, 1.0, 0.0), 0.47, 1e-12);
+  EXPECT_NEAR(ray_body_hit(body, {0.5, 0.0}, -1.0, 0.0), 0.42, 1e-9);
+  EXPECT_EQ(ray_body_hit(body, {0.0, 0.0}, 1.0, 0.0), 0.0);   // from inside
+  EXPECT_TRUE(std::isinf(ray_body_hit(body, {-0.5, 0.07}, 1.0, 0.0)));   // passes its corner by
+  EXPECT_TRUE(std::isinf(ray_body_hit(body, {-0.5, 0.0}, -1.0, 0.0)));   // points away
+  // A disc: the circle's hit.
+  const PlacedBody disc{{1.0, 1.0}, 0.1, {}};
+  EXPECT_NEAR(ray_body_hit(disc, {0.0, 1.0}, 1.0, 0.0), 0.9, 1e-12);
+}
+
+}  // namespace
+}  // namespace esc::sim
