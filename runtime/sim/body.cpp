@@ -29,7 +29,7 @@ Body::Body(const ArenaSpec& a, const RobotParams& r, double substep_s, const Sta
     : radius_m_(r.body_radius_m), substep_s_(substep_s), max_travel_m_(r.motor.max_speed_mps * substep_s),
       geometry_(geometry), bullet_(bullet) {
   // The body, added after the statics (and the bodies before it) so its broadphase handle and
-  // unique id are the same after every remove-and-add in place().
+  // unique id are the same after every take_out and put_back.
   btVector3 inertia(0, 0, 0);
   if (r.outline.empty()) {
     // The body only moves in the plane z = 0, where every static shape is centred, so a
@@ -72,7 +72,7 @@ Body::~Body() { bullet_.world().removeRigidBody(body_.get()); }
 // Grows Bullet's internal arrays (pair cache, manifolds, islands, solver pools) to the
 // size of the robot touching every static object at once, so a step never allocates:
 // a body as large as the arena steps a few times in contact with everything, then the
-// real body takes its place (place() removes every trace but the capacities).
+// real body takes its place (placing it removes every trace but the capacities).
 void Body::warm_up(const ArenaSpec& arena, const RobotParams& robot) {
   const double half_diagonal = 0.5 * std::hypot(arena.width_m, arena.height_m) + kWallThickness_m;
   // The body's own kind of shape, so that its own contact algorithms are the ones grown.
@@ -103,10 +103,13 @@ double Body::placed_outline_clearance() noexcept {
   return geometry_.clearance(placed_, max_sweep_m_ + 2 * kFreeSpaceMargin_m);
 }
 
-void Body::place(const Pose& pose) {
+void Body::take_out() {
   // Removing the body drops its broadphase pairs, contact manifolds and cached contact
-  // algorithms; adding it back rebuilds its sweep-and-prune handle in the same slot.
+  // algorithms; adding it back (put_back) rebuilds its sweep-and-prune handle in the same slot.
   bullet_.world().removeRigidBody(body_.get());
+}
+
+void Body::put_back(const Pose& pose) {
   btTransform tr;
   tr.setIdentity();
   tr.setOrigin(btVector3(bt(pose.x_m), bt(pose.y_m), 0));

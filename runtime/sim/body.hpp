@@ -1,11 +1,11 @@
 #pragma once
 // A robot's rigid body (a disc, or a convex outline: outline.hpp) in the arena's Bullet world
 // (bullet_world.hpp): its shape, one substep of motion at an imposed velocity, the contact
-// test against walls and obstacles, and place(), which with the world's solver reset returns
-// the whole Bullet state to what a fresh world holds so that nothing leaks from one
-// evaluation into the next. Internal to esc_sim: it
-// includes Bullet, which only esc_sim's sources see (in the precision esc_sim links); World
-// (world.hpp) keeps it behind its pimpl.
+// test against walls and obstacles, and its placing (take_out, put_back), which with the
+// world's solver reset returns the whole Bullet state to what a fresh world holds so that
+// nothing leaks from one evaluation into the next. Internal to esc_sim: it includes Bullet,
+// which only esc_sim's sources see (in the precision esc_sim links); World (world.hpp) keeps
+// it behind its pimpl.
 #include <cmath>
 #include <memory>
 #include <span>
@@ -25,7 +25,7 @@ namespace esc::sim {
 // most this (the contact solver stops it at clearance ~0).
 inline constexpr double kContactTolerance_m = 1e-4;
 // Beyond the body's radius plus a substep's travel plus this, no contact can act on the
-// body during the substep: Body::move integrates it without a Bullet step.
+// body during the substep: it is integrated without a Bullet step (Body::integrate).
 inline constexpr double kFreeSpaceMargin_m = 0.001;
 
 // The step loop's calls (the substep's, touching, pose, position, heading) are defined here,
@@ -35,7 +35,7 @@ class Body {
  public:
   // `geometry` is the arena's and `bullet` the world the body moves in (its own, or the one a
   // group of bodies shares); both must outlive the body. Bullet's arrays are grown here to
-  // their working size, so nothing allocates afterwards; place() the body before moving it.
+  // their working size, so nothing allocates afterwards; place the body before moving it.
   Body(const ArenaSpec& arena, const RobotParams& robot, double substep_s, const StaticGeometry2D& geometry,
        BulletWorld& bullet);
   ~Body();
@@ -43,10 +43,15 @@ class Body {
   Body(const Body&) = delete;
   Body& operator=(const Body&) = delete;
 
-  // The body at rest at `pose`, with no contact, broadphase pair or cached contact algorithm
-  // left from before; the world's solver is then reset (BulletWorld::reset_solver) and the
-  // clearance updated: what a freshly built world with the body at `pose` would hold.
-  void place(const Pose& pose);
+  // Placing the bodies of a world: each taken out of Bullet's world, the last first, then each
+  // put back at rest at its pose, the first first, with no contact, broadphase pair or cached
+  // contact algorithm left from before; then the world's solver is reset
+  // (BulletWorld::reset_solver) and each body's clearance updated. Bullet's world then holds
+  // what a freshly built one with the bodies at those poses would: the same objects in the same
+  // order (Bullet removes an object by moving its last one into its place), each body in its
+  // own broadphase handle.
+  void take_out();
+  void put_back(const Pose& pose);
 
   // One physics substep at the velocity `v` (drive.hpp), in three calls: set_velocity, then
   // either a Bullet step of the world (after prepare_bullet_step) or integrate, then
@@ -105,8 +110,9 @@ class Body {
     touching_ = outline_clearance_m_ <= kContactTolerance_m;
   }
 
-  // The body as Bullet knows it, for the world's contacts between bodies.
-  [[nodiscard]] const btCollisionObject* object() const noexcept { return body_.get(); }
+  // The body's robot index, by which BulletWorld::for_each_body_contact names it (the arena's
+  // statics have none).
+  void set_index(std::size_t robot) noexcept { body_->setUserIndex(static_cast<int>(robot)); }
   // The outline placed at the current pose (counter-clockwise, in the arena's frame), for other
   // robots' rays; empty for a disc.
   [[nodiscard]] std::span<const Vec2> placed_outline() noexcept {

@@ -81,30 +81,6 @@ BulletWorld::BulletWorld(const ArenaSpec& a, std::size_t bodies) {
 
 BulletWorld::~BulletWorld() = default;
 
-bool BulletWorld::contact_between(const btCollisionObject* a, const btCollisionObject* b, double within_m,
-                                  Vec2& at) const noexcept {
-  bool found = false;
-  double nearest = within_m;
-  const int n = dispatcher_->getNumManifolds();
-  for (int i = 0; i < n; ++i) {
-    const btPersistentManifold* m = dispatcher_->getManifoldByIndexInternal(i);
-    const bool ours = (m->getBody0() == a && m->getBody1() == b) || (m->getBody0() == b && m->getBody1() == a);
-    if (!ours) continue;
-    for (int k = 0; k < m->getNumContacts(); ++k) {
-      const btManifoldPoint& p = m->getContactPoint(k);
-      const double d = p.getDistance();
-      if (d > nearest) continue;
-      nearest = d;
-      found = true;
-      // Midway between the two surfaces' points: the contact as either body would feel it.
-      const btVector3& pa = p.getPositionWorldOnA();
-      const btVector3& pb = p.getPositionWorldOnB();
-      at = {(pa.x() + pb.x()) / 2, (pa.y() + pb.y()) / 2};
-    }
-  }
-  return found;
-}
-
 void BulletWorld::add_static_box(double cx, double cy, double hx, double hy, double angle_rad) {
   auto shape = std::make_unique<btBoxShape>(btVector3(bt(hx), bt(hy), bt(kStaticHeight_m / 2)));
   shape->setMargin(kCollisionMargin_m);

@@ -6,6 +6,7 @@
 #include <BulletCollision/CollisionDispatch/btSphereBoxCollisionAlgorithm.h>
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -37,9 +38,29 @@ class BulletWorld {
       if (dispatcher_->getManifoldByIndexInternal(i)->getNumContacts() > 0) return true;
     return false;
   }
-  // The nearest cached contact point between two bodies, or false when they have none within
-  // `within_m` (Bullet's distance: negative in penetration).
-  bool contact_between(const btCollisionObject* a, const btCollisionObject* b, double within_m, Vec2& at) const noexcept;
+  // Calls f(i, j, at) for every pair of robot bodies (user indices i < j, set by Body) whose
+  // cached contact points come within `within_m` (Bullet's distance: negative in penetration),
+  // `at` midway between the two surfaces at the nearest point.
+  template <class F>
+  void for_each_body_contact(double within_m, F&& f) const {
+    const int n = dispatcher_->getNumManifolds();
+    for (int m = 0; m < n; ++m) {
+      const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+      const int a = manifold->getBody0()->getUserIndex();
+      const int b = manifold->getBody1()->getUserIndex();
+      if (a < 0 || b < 0) continue;
+      const btManifoldPoint* nearest = nullptr;
+      for (int k = 0; k < manifold->getNumContacts(); ++k) {
+        const btManifoldPoint& p = manifold->getContactPoint(k);
+        if (p.getDistance() <= within_m && (nearest == nullptr || p.getDistance() < nearest->getDistance())) nearest = &p;
+      }
+      if (nearest == nullptr) continue;
+      const btVector3& pa = nearest->getPositionWorldOnA();
+      const btVector3& pb = nearest->getPositionWorldOnB();
+      f(static_cast<std::size_t>(std::min(a, b)), static_cast<std::size_t>(std::max(a, b)),
+        Vec2{(pa.x() + pb.x()) / 2, (pa.y() + pb.y()) / 2});
+    }
+  }
 
  private:
   void add_static_box(double cx, double cy, double hx, double hy, double angle_rad);

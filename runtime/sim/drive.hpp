@@ -25,7 +25,7 @@ struct PlanarVelocity {
   double turn_radps = 0.0;   // w, counter-clockwise
   double travel_m = 0.0;     // |chord| dt: how far the centre moves in the substep
   // cos and sin of the half turn w dt / 2, which the body's rotation over the substep needs
-  // too (Body::move): computed once.
+  // too (Body::integrate): computed once.
   double cos_half_turn = 1.0;
   double sin_half_turn = 0.0;
 };

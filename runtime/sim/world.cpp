@@ -51,6 +51,7 @@ struct Robot {
   // A control step's working values (World::Impl::step_wheels).
   double target_l = 0.0, target_r = 0.0, vl = 0.0, vr = 0.0;
   Vec2 start, start_heading;
+  Vec2 before;                       // where a Bullet substep found it
   bool collided = false;
   std::uint32_t bumped = 0;
   PlanarVelocity v;
@@ -103,11 +104,15 @@ namespace {
 [[nodiscard]] std::vector<RobotParams> validated(const std::vector<RobotParams>& robots) {
   if (robots.empty()) throw std::invalid_argument("a world needs at least one robot");
   for (const RobotParams& r : robots) validate_robot(r);
-  const DriveKind kind = robots.front().drive;
-  for (const RobotParams& r : robots)
-    if ((r.drive == DriveKind::Differential) != (kind == DriveKind::Differential))
+  const RobotParams& first = robots.front();
+  for (const RobotParams& r : robots) {
+    if ((r.drive == DriveKind::Differential) != (first.drive == DriveKind::Differential))
       throw std::invalid_argument(
           "a group cannot mix the acceleration drive (kinematic, outside Bullet) with wheeled bodies");
+    // One Bullet step moves every body: the robots share its substep.
+    if (r.control_step_s != first.control_step_s || r.physics_substeps != first.physics_substeps)
+      throw std::invalid_argument("the robots of a group must share their control step and physics substeps");
+  }
   return robots;
 }
 
@@ -147,19 +152,33 @@ struct World::Impl {
       seen.reserve(robots.size());
     }
     starts.reserve(robots.size());
-    std::vector<Pose> poses(robots.size(), a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
-    // A group's robots start side by side along x until an epoch places them.
-    for (std::size_t i = 1; i < poses.size(); ++i) poses[i].x_m = std::fmod(poses[i].x_m + static_cast<double>(i) * 2.5 * largest_radius_m, a.width_m);
-    reset(poses);
+    for (std::size_t i = 0; i < robots.size(); ++i)
+      if (robots[i]->body) robots[i]->body->set_index(i);
+    if (robots.size() > 1 && bullet) warm_up_contacts();
+    // Robot 0 where one robot starts; a group's others at random free places (an epoch places
+    // them all again).
+    starts.push_back(a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
+    Rng rng(0);
+    for (std::size_t i = 1; i < robots.size(); ++i) starts.push_back(random_free_pose(rng, 0.005, i, starts));
+    reset(starts);
   }
 
   void reset(std::span<const Pose> poses) {
     if (poses.size() != robots.size())
       throw std::invalid_argument("a world of " + std::to_string(robots.size()) + " robots reset with " +
                                   std::to_string(poses.size()) + " poses");
+    for (std::size_t i = 0; i < robots.size(); ++i)
+      for (std::size_t j = i + 1; j < robots.size(); ++j) {
+        const double apart = robots[i]->robot.body_radius_m + robots[j]->robot.body_radius_m;
+        if (std::hypot(poses[i].x_m - poses[j].x_m, poses[i].y_m - poses[j].y_m) < apart)
+          throw std::invalid_argument("robots " + std::to_string(i) + " and " + std::to_string(j) +
+                                      " would start overlapping");
+      }
+    for (auto r = robots.rbegin(); r != robots.rend(); ++r)
+      if ((*r)->body) (*r)->body->take_out();
     for (std::size_t i = 0; i < robots.size(); ++i) {
       Robot& r = *robots[i];
-      if (r.body) r.body->place(poses[i]);
+      if (r.body) r.body->put_back(poses[i]);
       else r.kinematic.place(poses[i]);
     }
     if (bullet) bullet->reset_solver();
@@ -178,6 +197,12 @@ struct World::Impl {
     if (!grid) return;
     for (std::size_t i = 0; i < robots.size(); ++i) centres[i] = robots[i]->centre();
     grid->build(centres);
+  }
+
+  void check_commands(std::size_t n) const {
+    if (n != robots.size())
+      throw std::invalid_argument("a world of " + std::to_string(robots.size()) + " robots stepped with " +
+                                  std::to_string(n) + " commands");
   }
 
   void step(std::span<const DriveCommand> commands, Rng* rng) {
@@ -216,8 +241,15 @@ struct World::Impl {
       near = near || pairs_near();
       const bool stepped = bullet->has_contact_points() || near;
       if (stepped) {
-        for (const auto& robot : robots) robot->body->prepare_bullet_step();
+        for (const auto& robot : robots) {
+          robot->body->prepare_bullet_step();
+          robot->before = robot->body->position();
+        }
         bullet->step(robots.front()->substep_s);
+        if (grid && pushed()) {   // beyond what the pairs were found for: find them again
+          index_robots();
+          find_pairs();
+        }
       } else {
         for (const auto& robot : robots) robot->body->integrate(robot->v);
       }
@@ -249,7 +281,7 @@ struct World::Impl {
     for (std::size_t i = 0; i < robots.size(); ++i) {
       const Robot& a = *robots[i];
       const double a_travel = a.robot.motor.max_speed_mps * a.robot.control_step_s;
-      grid->near(centres[i], 2 * largest_radius_m + 2 * a_travel + 2 * kFreeSpaceMargin_m, [&](std::size_t j) {
+      grid->near(centres[i], 2 * largest_radius_m + 2 * largest_travel_m + 2 * kFreeSpaceMargin_m, [&](std::size_t j) {
         if (j <= i) return;
         const Robot& b = *robots[j];
         const double reach = a.robot.body_radius_m + b.robot.body_radius_m + a_travel +
@@ -274,18 +306,49 @@ struct World::Impl {
     return false;
   }
 
-  // Robots touching each other after a Bullet step: both collided, each one's bumpers toward
-  // the contact.
+  // Whether the last Bullet step moved a robot farther than its own top speed would (another
+  // robot pushed it).
+  [[nodiscard]] bool pushed() const noexcept {
+    for (const auto& robot : robots) {
+      const Robot& r = *robot;
+      const Vec2 p = r.body->position();
+      const double reach = r.robot.motor.max_speed_mps * r.substep_s + kFreeSpaceMargin_m;
+      if ((p.x - r.before.x) * (p.x - r.before.x) + (p.y - r.before.y) * (p.y - r.before.y) > reach * reach) return true;
+    }
+    return false;
+  }
+
+  // Robots touching each other after a Bullet step, found in Bullet's own contacts (whatever
+  // pushed them there): both collided, each one's bumpers toward the contact.
   void touch_pairs() {
-    for (const auto& [i, j] : pairs) {
-      Robot& a = *robots[i];
-      Robot& b = *robots[j];
-      Vec2 at;
-      if (!bullet->contact_between(a.body->object(), b.body->object(), kContactTolerance_m, at)) continue;
-      for (Robot* r : {&a, &b}) {
+    bullet->for_each_body_contact(kContactTolerance_m, [&](std::size_t i, std::size_t j, Vec2 at) {
+      for (Robot* r : {robots[i].get(), robots[j].get()}) {
         r->collided = true;
         if (!r->robot.bumpers.empty()) r->bumped |= r->bumpers_toward(at);
       }
+    });
+  }
+
+  // Grows Bullet's arrays (pair cache, manifolds, islands, solver pools) to the size of every
+  // robot touching every other at once, so that a crowd's step never allocates: the bodies
+  // piled about the arena's centre step a few times, then reset() places them.
+  void warm_up_contacts() {
+    const Vec2 centre{arena.width_m / 2, arena.height_m / 2};
+    std::vector<Pose> pile;
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      const double angle = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(robots.size());
+      pile.push_back({centre.x + 0.5 * largest_radius_m * std::cos(angle), centre.y + 0.5 * largest_radius_m * std::sin(angle), angle});
+    }
+    for (auto r = robots.rbegin(); r != robots.rend(); ++r) (*r)->body->take_out();
+    for (std::size_t i = 0; i < robots.size(); ++i) robots[i]->body->put_back(pile[i]);
+    constexpr int kWarmUpSteps = 8;
+    for (int k = 0; k < kWarmUpSteps; ++k) {
+      for (const auto& robot : robots) {
+        const Vec2 heading = robot->body->heading();
+        (void)robot->body->set_velocity({0.01 * heading.x, 0.01 * heading.y, 1.0, 0.0005});
+        robot->body->prepare_bullet_step();
+      }
+      bullet->step(robots.front()->substep_s);
     }
   }
 
@@ -412,15 +475,14 @@ void World::step(double left_command, double right_command, Rng& rng) {
   step({&command, 1}, rng);
 }
 void World::step(double left_command, double right_command) {
-  for (const auto& r : impl_->robots)
-    if (r->body && r->motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
   const DriveCommand command{left_command, right_command};
+  impl_->check_commands(1);
+  const Robot& r = *impl_->robots.front();
+  if (r.body && r.motor.has_noise()) throw std::logic_error("World::step: a robot with motor noise needs its noise stream");
   impl_->step({&command, 1}, nullptr);
 }
 void World::step(std::span<const DriveCommand> commands, Rng& rng) {
-  if (commands.size() != impl_->robots.size())
-    throw std::invalid_argument("a world of " + std::to_string(impl_->robots.size()) + " robots stepped with " +
-                                std::to_string(commands.size()) + " commands");
+  impl_->check_commands(commands.size());
   impl_->step(commands, &rng);
 }
 void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng, std::size_t robot) const {

@@ -8,7 +8,9 @@
 #include <array>
 #include <atomic>
 #include <cstdlib>
+#include <cmath>
 #include <new>
+#include <vector>
 
 #include "runtime/sim/world.hpp"
 #include "sim_test_util.hpp"
@@ -108,6 +110,32 @@ TEST(SimAlloc, StepAndReadingsDoNotAllocate) {
       for (std::uint64_t seed = 1; seed <= 8; ++seed) {
         EXPECT_EQ(run(world, seed, 3000), 0) << obstacles << " obstacles, seed " << seed;
       }
+    }
+  }
+}
+
+// A crowd (robots pressed against each other and the walls, one per 15 cm x 15 cm): from the
+// first step of the first epoch on, stepping and reading allocate nothing (the constructor
+// grew Bullet's arrays for every robot touching every other).
+TEST(SimAlloc, ACrowdsStepsAndReadingsDoNotAllocate) {
+  for (const std::size_t n : {2U, 5U, 20U, 50U}) {
+    const double side = 0.15 * std::sqrt(static_cast<double>(n));
+    World world(test::empty_arena(side, side), std::vector<RobotParams>(n, RobotParams{}));
+    std::vector<DriveCommand> commands(n);
+    std::array<double, kIrSensors> ir{};
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Rng rng(seed);
+      const long before = g_allocations.load();
+      world.begin_epoch(rng);
+      for (int step = 0; step < 400; ++step) {
+        for (std::size_t i = 0; i < n; ++i) {
+          world.read_ir(ir, rng, i);
+          const double phase = 0.05 * step + static_cast<double>(i);
+          commands[i] = {std::sin(phase), std::cos(1.3 * phase)};
+        }
+        world.step(commands, rng);
+      }
+      EXPECT_EQ(g_allocations.load() - before, 0) << n << " robots, epoch " << seed;
     }
   }
 }
