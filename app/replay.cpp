@@ -247,6 +247,10 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                         controller->genome_size(), controller->architecture()));
     return done;
   }
+  if (spec.robots > 1)
+    throw Error(ErrorKind::Request, fmt::format("experiment `{}` has a group of {} robots, and replays of a group are "
+                                                "not recorded yet (docs/groups.md); its results and exports are complete",
+                                                spec.name, spec.robots));
   eval::Evaluator evaluator(spec);
   Collect trace;
   const eval::Evaluation result = evaluator.evaluate(*controller, s.genome, s.seed, &trace);

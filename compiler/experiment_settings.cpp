@@ -44,6 +44,14 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          return n.has_value();
        },
        [](const X& x) { return std::to_string(x.seed); }},
+      // Resolved only for a group, so that runs from before it keep their settings.
+      {"robots", "robots of the experiment's body in the arena, each driven by its own copy of the controller",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         const auto n = read_count(v, r.key, 1, eval::kMaxRobots, k);
+         if (n) x.robots = static_cast<int>(*n);
+         return n.has_value();
+       },
+       [](const X& x) { return x.robots == 1 ? std::string() : count_text<&X::robots>(x); }},
       {"generations", "the experiment's generations (every network's), and GP's (the trees')",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
          const auto n = read_count(v, r.key, 1, kIntMax, k);

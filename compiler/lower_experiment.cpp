@@ -120,6 +120,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
           if (!parts_.robots.apply(*robot, item.settings) || !parts_.robots.check(*robot, item.refs[0].where))
             ok = false;
           x.robot = robot->params;
+          if (!item.numbers.empty()) setting("robots", item.numbers[0]);
         } else {
           ok = false;
         }
@@ -244,6 +245,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   if (ok && sink_.errors() == errors && arena != nullptr) {
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);
+    check_group(x, use, sink_);
   }
   if (start_decl != nullptr) check_start_from(*start_decl, first, evolve);
   if (!ok || sink_.errors() != errors) return slot;

@@ -594,6 +594,7 @@ class Builder {
         item.kind = K::Robot;
         item.refs.push_back(name(r->ident()));
         item.settings = settings(r->settingsBlock());
+        if (r->NUMBER() != nullptr) item.numbers.push_back(number(r->NUMBER()));
       } else if (auto* e = dynamic_cast<P::ExpEpochsContext*>(it)) {
         item.kind = K::Epochs;
         for (auto* n : e->NUMBER()) item.numbers.push_back(number(n));

@@ -193,8 +193,25 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   return false;
 }
 
+void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
+  if (spec.robots == 1) return;
+  const auto folds = [](const eval::FitnessSpec& f) { return !f.epoch_aggregates.empty() || !f.evaluation_aggregates.empty(); };
+  std::string what;
+  if (folds(spec.fitness)) what = fmt::format("the fitness `{}`", spec.fitness.name);
+  for (const eval::FitnessSpec& f : spec.further)
+    if (what.empty() && folds(f)) what = fmt::format("the objective `{}`", f.name);
+  for (const eval::DescriptorSpec& d : spec.descriptors)
+    if (what.empty() && !d.aggregates.empty()) what = fmt::format("the descriptor `{}`", d.name);
+  if (what.empty()) return;
+  sink.error(where, fmt::format("{} folds its steps (`mean(...)`, `max(...)` over the steps), which a group of {} "
+                                "robots does not support yet",
+                                what, spec.robots))
+      .help.push_back("read the group's state at the epoch's end instead (`centroid_moved`, `spread`), or use one robot");
+}
+
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
   const int errors = sink.errors();
+  check_group(spec, where, sink);
   for (const AlgorithmOptions& a : algorithm_options())
     if (const std::any* s = a.held_by(spec))
       if (const evo::OptionRefusal c = a.conflict(*s); !c.empty()) {

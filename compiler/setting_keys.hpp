@@ -41,6 +41,9 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
 // evolves, the tree operators against the trees' primitives, and the runtime's
 // rules for the robot, the arena and the robot in it. False when one fails.
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
+// What a group (`robot NAME x N`, `--set robots=N`) cannot do yet: fold its steps into an
+// end term (step aggregates); one error at `where`.
+void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
 
 // Rewrites the keys of resolved_settings that the spec's fields determine, the settings a
 // study gives its dependencies among them (`energy.generations`); keeps the others (robot

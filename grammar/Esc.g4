@@ -130,7 +130,8 @@ primTerminal
 experimentDecl : EXPERIMENT name=ident '{' expItem* '}' ;
 expItem
   : ARENA ident ';'?                                                             # expArena
-  | ROBOT ident settingsBlock? ';'?                                               # expRobot
+  // `robot khepera x 3`: a group of three (docs/groups.md).
+  | ROBOT ident settingsBlock? (X NUMBER)? ';'?                                    # expRobot
   | EPOCHS NUMBER (X NUMBER STEPS)? ';'?                                          # expEpochs
   | STEPS NUMBER ';'?                                                             # expSteps
   // The fitness (the first objective), with the range its values lie in when declared.

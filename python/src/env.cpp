@@ -35,6 +35,15 @@ std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
   return slots;
 }
 
+// A group's Env is PettingZoo's parallel one, keyed by robot (docs/groups.md): not built yet.
+const eval::ExperimentSpec& one_robot(const eval::ExperimentSpec& spec) {
+  if (spec.robots > 1)
+    throw py::value_error("experiment `" + spec.name + "` has a group of " + std::to_string(spec.robots) +
+                          " robots: Env drives one robot (a group's multi-agent Env is not built yet); "
+                          "esc.evaluate evaluates a group");
+  return spec;
+}
+
 const control::ControllerSpec* network_controller(const eval::ExperimentSpec& spec,
                                                   const std::optional<std::string>& name) {
   if (!name) return nullptr;
@@ -60,7 +69,7 @@ py::array_t<double> array_of(const std::vector<double>& v) {
 Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& experiment,
          const std::optional<std::string>& controller, std::uint64_t seed)
     : script_(script),
-      spec_(&find_experiment(*script, experiment)),
+      spec_(&one_robot(find_experiment(*script, experiment))),
       controller_(network_controller(*spec_, controller)),
       observed_(controller_ != nullptr ? controller_->mlp.inputs : senses(spec_->robot)),
       world_(spec_->arena, spec_->robot),

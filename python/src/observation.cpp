@@ -37,8 +37,10 @@ SlotRange slot_range(expr::Slot slot, const eval::ExperimentSpec& spec) {
   if (slot >= s::param && slot < s::param + expr::kMaxParams) return {-kInf, kInf};
   // The navigator's: the body's centre stays in the arena, and no point of it is farther
   // from the goal than the arena's diagonal.
-  if (slot == s::x) return {0.0, spec.arena.width_m};
-  if (slot == s::y) return {0.0, spec.arena.height_m};
+  if (slot == s::x || slot == s::centroid_x) return {0.0, spec.arena.width_m};
+  if (slot == s::y || slot == s::centroid_y) return {0.0, spec.arena.height_m};
+  if (slot == s::robots) return {1.0, static_cast<double>(spec.robots)};
+  if (slot >= s::centroid_moved && slot <= s::spread) return {0.0, std::hypot(spec.arena.width_m, spec.arena.height_m)};
   if (slot == s::heading) return {-std::numbers::pi, std::numbers::pi};
   if (slot == s::goal_distance) return {0.0, std::hypot(spec.arena.width_m, spec.arena.height_m)};
   return {0.0, 1.0};   // speeds, sensors (rangefinders and radars too), booleans, energy, noise

@@ -146,6 +146,13 @@ void replay_best(const ExperimentSpec& spec, const control::ControllerSpec& cont
   if (!options.trace_best && rec.usage.empty()) return;
   const std::uint64_t seed =
       evaluation_seed(result.seed, result.best_generation, static_cast<std::size_t>(result.best_index));
+  // A group's replay is not recorded yet (docs/groups.md): its usage is the evaluation's,
+  // every robot's added.
+  if (spec.robots > 1) {
+    const Evaluation e = replay(ev.workers.local(), seed, nullptr);
+    result.action_usage.assign(e.usage.begin(), e.usage.end());
+    return;
+  }
   (void)replay(ev.workers.local(), seed, &rec);
   result.action_usage = std::move(rec.usage);
   if (options.trace_best) listener.best_traced(controller, result, rec.steps);

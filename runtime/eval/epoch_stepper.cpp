@@ -9,8 +9,9 @@ void EpochStepper::begin(std::uint64_t seed, int epoch) {
   epoch_ = epoch;
   step_ = 0;
   rng_ = Rng(seed, {static_cast<std::uint64_t>(epoch)});
-  world_->begin_epoch(rng_);   // random zones, then the start pose, then reset
-  frame_.fill(0.0);
+  world_->begin_epoch(rng_);   // random zones, then the start poses, then reset
+  for (expr::Frame& frame : frames_) frame.fill(0.0);
+  start_centroid_ = group_ ? centroid(*world_) : sim::Vec2{};
   sense();
 }
 
@@ -24,17 +25,17 @@ TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, dou
   t.epoch = epoch_;
   t.step = step_ - 1;
   t.pose = state.pose;
-  t.ir = ir_;
-  t.light = light_;
+  t.ir = ir_[0];
+  t.light = light_[0];
   // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal).
   t.range_count = world_->robot().rangefinders.angles_rad.size();
   t.radar_count = static_cast<std::size_t>(world_->robot().radars);
-  std::copy_n(frame_.begin() + expr::slot::range, t.range_count, t.range.begin());
-  std::copy_n(frame_.begin() + expr::slot::radar, t.radar_count, t.radar.begin());
+  std::copy_n(frames_[0].begin() + expr::slot::range, t.range_count, t.range.begin());
+  std::copy_n(frames_[0].begin() + expr::slot::radar, t.radar_count, t.radar.begin());
   t.ground_count = world_->robot().ground.mounts.size();
   t.bumper_count = world_->robot().bumpers.size();
-  std::copy_n(frame_.begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());
-  std::copy_n(frame_.begin() + expr::slot::bumper, t.bumper_count, t.bumper.begin());
+  std::copy_n(frames_[0].begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());
+  std::copy_n(frames_[0].begin() + expr::slot::bumper, t.bumper_count, t.bumper.begin());
   t.left_command = cmd.left;
   t.right_command = cmd.right;
   t.left_speed_mps = state.wheel_speed_mps[0];

@@ -9,10 +9,16 @@
 // drives the same calls from outside, one step per call: one step loop, so an Env fed the
 // actions a genome's network takes computes the doubles an evaluation of that genome does.
 // The per-step calls are inline: the evaluator's loop compiles as one function, as before.
+// A group (ExperimentSpec::robots > 1) has a frame per robot: every robot's controller decides
+// on its own frame, then act() steps the group once and each frame observes its robot; the
+// step term is the mean of the robots' terms, and a stop condition of any robot ends the epoch
+// (docs/groups.md). Frame 0 is a robot alone's.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "runtime/control/behavior.hpp"
 #include "runtime/core/rng.hpp"
@@ -39,8 +45,11 @@ class EpochStepper {
  public:
   // `spec` and `world` (built for spec's arena and robot) must outlive the stepper. `noise`:
   // whether anything reads the `noise` observable (reads_slot), which is written only then.
-  EpochStepper(const ExperimentSpec& spec, sim::World& world, bool noise) noexcept
-      : spec_(&spec), world_(&world), noise_(noise) {}
+  // `group`: whether anything reads a group observable (they are written only then);
+  // `pairs`: whether anything reads one made from every pair (nearest_robot, robot_distance).
+  EpochStepper(const ExperimentSpec& spec, sim::World& world, bool noise, bool group = false, bool pairs = false)
+      : spec_(&spec), world_(&world), noise_(noise), group_(group || world.robots() > 1), pairs_(pairs),
+        frames_(world.robots()), ir_(world.robots()), light_(world.robots()), commands_(world.robots()) {}
 
   // Epoch `epoch` (from 0) of the evaluation with seed `seed`, its stream Rng(seed, {epoch}):
   // zones, start pose and reset drawn from it, the frame zeroed, then the first reading.
@@ -49,24 +58,44 @@ class EpochStepper {
   // Writes the clock observables (and `noise`) of the coming step: with the last reading,
   // what the controller decides on.
   void observe() noexcept {
-    observe_clock(epoch_, step_, spec_->robot.control_step_s, frame_);
-    if (noise_) observe_noise(seed_, epoch_, step_, frame_);
+    for (expr::Frame& frame : frames_) {
+      observe_clock(epoch_, step_, spec_->robot.control_step_s, frame);
+      if (noise_) observe_noise(seed_, epoch_, step_, frame);
+    }
   }
 
-  // The frame the controller reads; a symbolic head writes its action's parameters into it.
-  [[nodiscard]] expr::Frame& frame() noexcept { return frame_; }
-  [[nodiscard]] const expr::Frame& frame() const noexcept { return frame_; }
+  // The frame robot `robot`'s controller reads; a symbolic head writes its action's
+  // parameters into it.
+  [[nodiscard]] expr::Frame& frame(std::size_t robot = 0) noexcept { return frames_[robot]; }
+  [[nodiscard]] const expr::Frame& frame(std::size_t robot = 0) const noexcept { return frames_[robot]; }
+  [[nodiscard]] std::size_t robots() const noexcept { return frames_.size(); }
+
+  // The mean over the robots of `program` on their frames (its value on the one frame of a
+  // robot alone).
+  [[nodiscard]] double mean_over_robots(const expr::Program& program) const noexcept {
+    if (frames_.size() == 1) return program.eval(frames_[0]);
+    double sum = 0.0;
+    for (const expr::Frame& frame : frames_) sum += program.eval(frame);
+    return sum / static_cast<double>(frames_.size());
+  }
 
   // The coming step with command `cmd`, chosen by the experiment-wide choice `acting`
   // (control::Choice::id, -1 for none): physics, the reading after it, the step term and
   // the stop conditions, all on the frame of this step.
   StepOutcome act(const control::WheelCommand& cmd, int acting) {
-    frame_[expr::slot::acting] = acting;
+    frames_[0][expr::slot::acting] = acting;
     world_->step(cmd.left, cmd.right, rng_);
-    sense();
-    ++step_;
-    const double term = spec_->fitness.step.eval(frame_);
-    return {term, stops() || world_->state().floor.energy_empty};
+    return after_step();
+  }
+  // A group's step: robot i's command and choice (-1 for none) are cmds[i] and acting[i].
+  StepOutcome act(std::span<const control::WheelCommand> cmds, std::span<const int> acting) {
+    if (frames_.size() == 1) return act(cmds[0], acting[0]);
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      frames_[i][expr::slot::acting] = acting[i];
+      commands_[i] = {cmds[i].left, cmds[i].right};
+    }
+    world_->step(commands_, rng_);
+    return after_step();
   }
 
   // The step just taken as a replay records it: `cmd` and `action` (the controller's choice
@@ -76,37 +105,56 @@ class EpochStepper {
   [[nodiscard]] int epoch() const noexcept { return epoch_; }
   [[nodiscard]] int steps_taken() const noexcept { return step_; }   // in this epoch
   // The last reading (taken after the last step's physics, or at the epoch's start).
-  [[nodiscard]] const std::array<double, sim::kIrSensors>& ir() const noexcept { return ir_; }
-  [[nodiscard]] const std::array<double, sim::kLightSensors>& light() const noexcept { return light_; }
+  [[nodiscard]] const std::array<double, sim::kIrSensors>& ir() const noexcept { return ir_[0]; }
+  [[nodiscard]] const std::array<double, sim::kLightSensors>& light() const noexcept { return light_[0]; }
   [[nodiscard]] const sim::World& world() const noexcept { return *world_; }
 
  private:
   // The reading after each physics step serves that step's fitness term and the next step's
   // control input: the robot has not moved in between.
+  // A group's robots are read in robot order, each its IR then its light (the noise drawn so).
   void sense() {
-    world_->read_ir(ir_, rng_);
-    world_->read_light(light_, rng_);
-    observe_light(light_, frame_);
-    observe_robot(*world_, ir_, frame_);
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      world_->read_ir(ir_[i], rng_, i);
+      world_->read_light(light_[i], rng_, i);
+      observe_light(light_[i], frames_[i]);
+      observe_robot(*world_, i, ir_[i], frames_[i]);
+    }
+    if (group_) observe_group(*world_, start_centroid_, pairs_, frames_);
   }
 
-  // Whether a stop condition of the fitness fires on the frame.
+  StepOutcome after_step() {
+    sense();
+    ++step_;
+    const double term = mean_over_robots(spec_->fitness.step);
+    return {term, stops()};
+  }
+
+  // Whether a stop condition of the fitness fires on a robot's frame, or a robot's
+  // accumulator ran empty.
   [[nodiscard]] bool stops() const noexcept {
-    for (const expr::Program& p : spec_->fitness.stop_when)
-      if (p.eval(frame_) != 0.0) return true;
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      for (const expr::Program& p : spec_->fitness.stop_when)
+        if (p.eval(frames_[i]) != 0.0) return true;
+      if (world_->state(i).floor.energy_empty) return true;
+    }
     return false;
   }
 
   const ExperimentSpec* spec_;
   sim::World* world_;
   bool noise_;
+  bool group_;
+  bool pairs_;
   Rng rng_{0};
   std::uint64_t seed_ = 0;
   int epoch_ = 0;
   int step_ = 0;
-  std::array<double, sim::kIrSensors> ir_{};
-  std::array<double, sim::kLightSensors> light_{};
-  expr::Frame frame_{};
+  sim::Vec2 start_centroid_;
+  std::vector<expr::Frame> frames_;
+  std::vector<std::array<double, sim::kIrSensors>> ir_;
+  std::vector<std::array<double, sim::kLightSensors>> light_;
+  std::vector<sim::DriveCommand> commands_;
 };
 
 }  // namespace esc::eval

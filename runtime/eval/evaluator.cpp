@@ -15,7 +15,7 @@ namespace esc::eval {
 
 Evaluator::Evaluator(const ExperimentSpec& spec)
     : spec_(&spec),
-      world_(spec.arena, spec.robot),
+      world_(spec.arena, std::vector<sim::RobotParams>(static_cast<std::size_t>(spec.robots), spec.robot)),
       folded_(spec),
       end_frame_(spec.step_aggregate_slot() + folded_.widest(), 0.0) {
   const auto check = [&](const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
@@ -42,20 +42,46 @@ Evaluator::Evaluator(const ExperimentSpec& spec)
     if (f->evaluation_end) check(*f->evaluation_end, f->evaluation_aggregates, "fitness '" + f->name + "'");
   }
   for (const DescriptorSpec& d : spec.descriptors) check(d.program, d.aggregates, "descriptor '" + d.name + "'");
+  // The compiler refuses them for a group (lower_experiment.cpp): one robot's steps are folded.
+  if (spec.robots > 1 && folded_.widest() > 0)
+    throw std::invalid_argument("step aggregates (`mean(...)` over the steps) are not supported for a group yet");
+  commands_.resize(static_cast<std::size_t>(spec.robots));
+  acting_.resize(static_cast<std::size_t>(spec.robots));
+  epoch_starts_.resize(static_cast<std::size_t>(spec.robots));
 }
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
                                std::span<const double> genome, std::uint64_t seed,
                                TraceSink* trace) {
   if (controller.is_tree()) return evaluate(controller, genome::tree::decode(genome, *controller.primitives), seed, trace);
-  control::Controller ctl(controller, genome, &tree_control::make_actor);
-  return run(controller, ctl, reads_slot(*spec_, controller, expr::slot::noise), seed, trace);
+  if (spec_->robots == 1) {
+    control::Controller ctl(controller, genome, &tree_control::make_actor);
+    control::Controller* const one = &ctl;
+    return run(controller, std::span<control::Controller* const>(&one, 1), seed, trace);
+  }
+  std::vector<std::unique_ptr<control::Controller>> group;
+  std::vector<control::Controller*> drivers;
+  for (int i = 0; i < spec_->robots; ++i) {
+    group.push_back(std::make_unique<control::Controller>(controller, genome, &tree_control::make_actor));
+    drivers.push_back(group.back().get());
+  }
+  return run(controller, std::span<control::Controller* const>(drivers), seed, trace);
 }
 
 Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const genome::tree::Tree& tree,
                                std::uint64_t seed, TraceSink* trace) {
-  tree_control::TreeDriver ctl(controller, tree);
-  return run(controller, ctl, reads_slot(*spec_, controller, expr::slot::noise), seed, trace);
+  if (spec_->robots == 1) {
+    tree_control::TreeDriver ctl(controller, tree);
+    tree_control::TreeDriver* const one = &ctl;
+    return run(controller, std::span<tree_control::TreeDriver* const>(&one, 1), seed, trace);
+  }
+  std::vector<std::unique_ptr<tree_control::TreeDriver>> group;
+  std::vector<tree_control::TreeDriver*> drivers;
+  for (int i = 0; i < spec_->robots; ++i) {
+    group.push_back(std::make_unique<tree_control::TreeDriver>(controller, tree));
+    drivers.push_back(group.back().get());
+  }
+  return run(controller, std::span<tree_control::TreeDriver* const>(drivers), seed, trace);
 }
 
 double Evaluator::end_term(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
@@ -74,30 +100,51 @@ double Evaluator::end_term(const expr::Program& term, const std::vector<expr::St
   return term.eval(end_frame_);
 }
 
-void Evaluator::reduce_descriptors(const control::ControllerSpec& controller, const expr::Frame& frame,
-                                   std::int64_t steps, std::span<const std::int64_t> usage,
-                                   std::span<const std::int64_t> before, int epoch, std::vector<double>& values) {
+template <class Driver>
+double Evaluator::end_over_robots(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
+                                  const control::ControllerSpec& controller, const EpochStepper& epoch,
+                                  std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch) {
+  const auto value = [&](std::size_t i) {
+    const std::span<const std::int64_t> before =
+        over_epoch ? std::span<const std::int64_t>(epoch_starts_[i]) : std::span<const std::int64_t>{};
+    return end_term(term, folded, controller, epoch.frame(i), steps, drivers[i]->usage(), before);
+  };
+  if (drivers.size() == 1) return value(0);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < drivers.size(); ++i) sum += value(i);
+  return sum / static_cast<double>(drivers.size());
+}
+
+template <class Driver>
+void Evaluator::reduce_descriptors(const control::ControllerSpec& controller, const EpochStepper& epoch,
+                                   std::span<Driver* const> drivers, std::int64_t steps, int e,
+                                   std::vector<double>& values) {
   for (std::size_t i = 0; i < spec_->descriptors.size(); ++i) {
     const DescriptorSpec& d = spec_->descriptors[i];
     if (d.at_evaluation) continue;
-    const double v = end_term(d.program, d.aggregates, controller, frame, steps, usage, before);
+    const double v = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, steps, true);
     double& r = values[i];
     switch (d.reduce) {
       case Reduction::Mean:
       case Reduction::Sum: r += v; break;
-      case Reduction::Min: r = epoch == 0 ? v : std::min(r, v); break;
-      case Reduction::Max: r = epoch == 0 ? v : std::max(r, v); break;
-      case Reduction::First: if (epoch == 0) r = v; break;
+      case Reduction::Min: r = e == 0 ? v : std::min(r, v); break;
+      case Reduction::Max: r = e == 0 ? v : std::max(r, v); break;
+      case Reduction::First: if (e == 0) r = v; break;
       case Reduction::Last: r = v; break;
     }
   }
 }
 
 template <class Driver>
-Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl, bool noise, std::uint64_t seed,
-                          TraceSink* trace) {
+Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<Driver* const> drivers,
+                          std::uint64_t seed, TraceSink* trace) {
   const ExperimentSpec& s = *spec_;
-  EpochStepper epoch(s, world_, noise);
+  if (trace != nullptr && drivers.size() > 1) throw std::invalid_argument("replays of a group are not supported yet");
+  const auto reads = [&](expr::Slot slot) { return reads_slot(s, controller, slot); };
+  bool group = false;
+  for (expr::Slot slot = expr::slot::robots; slot <= expr::slot::spread; ++slot) group = group || reads(slot);
+  EpochStepper epoch(s, world_, reads(expr::slot::noise), group,
+                     reads(expr::slot::nearest_robot) || reads(expr::slot::robot_distance));
   Evaluation result;
   result.objectives.assign(s.further.size(), 0.0);
   result.descriptors.assign(s.descriptors.size(), 0.0);
@@ -115,52 +162,58 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, Driver& ctl
   for (int e = 0; e < s.epochs; ++e) {
     epoch.begin(seed, e);
     folded_.begin_epoch();
-    ctl.reset();
-    epoch_start_.assign(ctl.usage().begin(), ctl.usage().end());   // no allocation once it has grown
+    for (std::size_t i = 0; i < drivers.size(); ++i) {
+      drivers[i]->reset();
+      epoch_starts_[i].assign(drivers[i]->usage().begin(), drivers[i]->usage().end());   // no allocation once grown
+    }
     const std::int64_t steps_before = result.steps;
     while (epoch.steps_taken() < s.steps) {
       epoch.observe();
-      const control::WheelCommand cmd = ctl.step(epoch.frame());
-      const StepOutcome outcome = epoch.act(cmd, controller.choice_id(ctl.last_action()));
+      for (std::size_t i = 0; i < drivers.size(); ++i) {
+        commands_[i] = drivers[i]->step(epoch.frame(i));
+        acting_[i] = controller.choice_id(drivers[i]->last_action());
+      }
+      const StepOutcome outcome = epoch.act(commands_, acting_);
       ++result.steps;
       if (!folded_.empty()) folded_.step(epoch.frame(), epoch.steps_taken() - 1, result.steps - 1);
       result.fitness = add_fitness(result.fitness, outcome.term);
       for (std::size_t k = 0; k < s.further.size(); ++k)
-        result.objectives[k] = add_fitness(result.objectives[k], s.further[k].step.eval(epoch.frame()));
+        result.objectives[k] = add_fitness(result.objectives[k], epoch.mean_over_robots(s.further[k].step));
       if (trace != nullptr) [[unlikely]] {
         if (last_step) trace->on_step(*last_step);
-        last_step = epoch.traced(cmd, ctl.last_action(), result.fitness);
+        last_step = epoch.traced(commands_[0], drivers[0]->last_action(), result.fitness);
       }
       if (outcome.stop) break;
     }
     const std::int64_t epoch_steps = result.steps - steps_before;
     if (s.fitness.epoch_end)
-      result.fitness += end_term(*s.fitness.epoch_end, s.fitness.epoch_aggregates, controller, epoch.frame(),
-                                 epoch_steps, ctl.usage(), epoch_start_);
+      result.fitness +=
+          end_over_robots(*s.fitness.epoch_end, s.fitness.epoch_aggregates, controller, epoch, drivers, epoch_steps, true);
     for (std::size_t k = 0; k < s.further.size(); ++k)
       if (s.further[k].epoch_end)
-        result.objectives[k] +=
-            end_term(*s.further[k].epoch_end, s.further[k].epoch_aggregates, controller, epoch.frame(), epoch_steps,
-                     ctl.usage(), epoch_start_);
-    if (!s.descriptors.empty())
-      reduce_descriptors(controller, epoch.frame(), epoch_steps, ctl.usage(), epoch_start_, e, result.descriptors);
+        result.objectives[k] += end_over_robots(*s.further[k].epoch_end, s.further[k].epoch_aggregates, controller,
+                                                epoch, drivers, epoch_steps, true);
+    if (!s.descriptors.empty()) reduce_descriptors(controller, epoch, drivers, epoch_steps, e, result.descriptors);
     if (e + 1 < s.epochs) tell_last_step();
   }
   if (s.fitness.evaluation_end)
-    result.fitness += end_term(*s.fitness.evaluation_end, s.fitness.evaluation_aggregates, controller, epoch.frame(),
-                               result.steps, ctl.usage(), {});
+    result.fitness += end_over_robots(*s.fitness.evaluation_end, s.fitness.evaluation_aggregates, controller, epoch,
+                                      drivers, result.steps, false);
   tell_last_step();
   for (std::size_t k = 0; k < s.further.size(); ++k)
     if (s.further[k].evaluation_end)
-      result.objectives[k] += end_term(*s.further[k].evaluation_end, s.further[k].evaluation_aggregates, controller,
-                                       epoch.frame(), result.steps, ctl.usage(), {});
+      result.objectives[k] += end_over_robots(*s.further[k].evaluation_end, s.further[k].evaluation_aggregates,
+                                              controller, epoch, drivers, result.steps, false);
   for (std::size_t i = 0; i < s.descriptors.size(); ++i) {
     const DescriptorSpec& d = s.descriptors[i];
     if (d.at_evaluation)
-      result.descriptors[i] = end_term(d.program, d.aggregates, controller, epoch.frame(), result.steps, ctl.usage(), {});
+      result.descriptors[i] = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, result.steps, false);
     else if (d.reduce == Reduction::Mean && s.epochs > 0) result.descriptors[i] /= s.epochs;
   }
-  result.usage.assign(ctl.usage().begin(), ctl.usage().end());
+  // Usage counts add over the robots.
+  result.usage.assign(drivers[0]->usage().begin(), drivers[0]->usage().end());
+  for (std::size_t i = 1; i < drivers.size(); ++i)
+    for (std::size_t k = 0; k < result.usage.size(); ++k) result.usage[k] += drivers[i]->usage()[k];
   return result;
 }
 

@@ -17,6 +17,8 @@
 
 namespace esc::eval {
 
+class EpochStepper;
+
 struct Evaluation {
   double fitness = 0.0;
   std::int64_t steps = 0;   // control steps simulated (epochs may end early)
@@ -92,10 +94,10 @@ class Evaluator {
                                     std::uint64_t seed, TraceSink* trace = nullptr);
 
  private:
-  // The epochs, with any controller that has reset(), step(frame), last_action() and usage().
-  // `noise`: whether anything reads the `noise` observable (it is written only then).
+  // The epochs, with any controller that has reset(), step(frame), last_action() and usage():
+  // one per robot (one alone).
   template <class Driver>
-  Evaluation run(const control::ControllerSpec& controller, Driver& ctl, bool noise, std::uint64_t seed,
+  Evaluation run(const control::ControllerSpec& controller, std::span<Driver* const> drivers, std::uint64_t seed,
                  TraceSink* trace);
   // An end term's value: `term` on the last step's `frame` followed by the aggregates of the
   // `steps` steps in which the choices acted `usage` - `before` times, then its step
@@ -103,17 +105,25 @@ class Evaluator {
   double end_term(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                   const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
                   std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
-
-  // Each descriptor's per-epoch values reduced so far (Reduction::Mean: their sum).
-  void reduce_descriptors(const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
-                          std::span<const std::int64_t> usage, std::span<const std::int64_t> before, int epoch,
-                          std::vector<double>& values);
+  // The mean over the robots of an end term on each robot's last frame and usage, counted
+  // from its epoch's start (`over_epoch`) or from the evaluation's.
+  template <class Driver>
+  double end_over_robots(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
+                         const control::ControllerSpec& controller, const EpochStepper& epoch,
+                         std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch);
+  // Each descriptor's per-epoch values reduced so far (Reduction::Mean: their sum), epoch `e`.
+  template <class Driver>
+  void reduce_descriptors(const control::ControllerSpec& controller, const EpochStepper& epoch,
+                          std::span<Driver* const> drivers, std::int64_t steps, int e, std::vector<double>& values);
 
   const ExperimentSpec* spec_;
   sim::World world_;
   StepAggregates folded_;                   // the end terms' step aggregates
   std::vector<double> end_frame_;           // an end term's frame: expr::Frame, then expr::aggregate
-  std::vector<std::int64_t> epoch_start_;   // usage when the epoch began
+  // Each robot's usage when the epoch began; its command and choice of the step.
+  std::vector<std::vector<std::int64_t>> epoch_starts_;
+  std::vector<control::WheelCommand> commands_;
+  std::vector<int> acting_;
 };
 
 }  // namespace esc::eval

@@ -33,6 +33,9 @@ namespace esc::eval {
 // read the last step's frame followed by the aggregates of expr::aggregate over the epoch
 // (the evaluation), one count per experiment-wide choice id, then the values of the term's
 // step aggregates (`mean(speed)`), aggregate k in slot ExperimentSpec::step_aggregate_slot() + k.
+// The most robots in a group (`robot NAME x N`): the crowd of esc bench's scaling and a margin.
+inline constexpr int kMaxRobots = 256;
+
 struct FitnessSpec {
   std::string name;
   expr::Program step;
@@ -185,6 +188,11 @@ struct ExperimentSpec {
   std::string arena_name;
   sim::ArenaSpec arena;
   sim::RobotParams robot;
+  // The group: this many robots of `robot`'s body in the arena, each driven by its own instance
+  // of the controller evaluated (clonal: one genome); every step term, stop condition and end
+  // term is evaluated on each robot's frame, the terms averaged over the robots
+  // (docs/groups.md). 1: a robot alone.
+  int robots = 1;   // at most kMaxRobots
   FitnessSpec fitness;
   // Declared objectives: empty for an experiment with the fitness alone and no range;
   // otherwise objectives[0] describes `fitness` and objectives[i > 0] is further[i - 1].

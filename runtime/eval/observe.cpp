@@ -25,28 +25,28 @@ namespace {
 // Where the robot is, where the goal lies from it and what the rangefinders read. Slots of
 // rangefinders and radars the robot does not have, and of a goal the arena does not have,
 // are left as they are.
-void observe_navigation(const sim::World& world, expr::Frame& frame) noexcept {
-  const sim::Pose& pose = world.state().pose;
+void observe_navigation(const sim::World& world, std::size_t robot, expr::Frame& frame) noexcept {
+  const sim::Pose& pose = world.state(robot).pose;
   frame[expr::slot::x] = pose.x_m;
   frame[expr::slot::y] = pose.y_m;
   frame[expr::slot::heading] = pose.heading_rad;
-  world.read_rangefinders(std::span<double>(frame).subspan(expr::slot::range, expr::kRangeCount));
-  world.read_ground(std::span<double>(frame).subspan(expr::slot::ground_sensor, expr::kGroundSensorCount));
+  world.read_rangefinders(std::span<double>(frame).subspan(expr::slot::range, expr::kRangeCount), robot);
+  world.read_ground(std::span<double>(frame).subspan(expr::slot::ground_sensor, expr::kGroundSensorCount), robot);
   const std::optional<sim::Vec2>& goal = world.arena().goal;
   if (!goal) return;
   frame[expr::slot::goal_distance] = std::hypot(goal->x - pose.x_m, goal->y - pose.y_m);
-  const int slices = world.robot().radars;
+  const int slices = world.robot(robot).radars;
   if (slices == 0) return;
-  const int hit = world.goal_slice();
+  const int hit = world.goal_slice(robot);
   for (int i = 0; i < slices; ++i) frame[expr::slot::radar + static_cast<expr::Slot>(i)] = i == hit ? 1.0 : 0.0;
 }
 
 }  // namespace
 
-void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
+void observe_robot(const sim::World& world, std::size_t robot, const std::array<double, sim::kIrSensors>& ir,
                    expr::Frame& frame) noexcept {
-  const sim::RobotState& s = world.state();
-  const sim::RobotParams& p = world.robot();
+  const sim::RobotState& s = world.state(robot);
+  const sim::RobotParams& p = world.robot(robot);
   const double full_step_m = p.motor.max_speed_mps * p.control_step_s;
   // The acceleration drive's actuators are its turn rate and its speed, each over its top.
   const bool wheeled = p.drive == sim::DriveKind::Differential;
@@ -73,7 +73,51 @@ void observe_robot(const sim::World& world, const std::array<double, sim::kIrSen
   const sim::ArenaSpec& arena = world.arena();
   for (expr::Slot z = 0; z < arena.zones.size(); ++z) frame[expr::slot::in_zone + z] = (floor.in_zone >> z) & 1U;
   for (expr::Slot l = 0; l < arena.lights.size(); ++l) frame[expr::slot::reached + l] = (floor.reached >> l) & 1U;
-  observe_navigation(world, frame);
+  observe_navigation(world, robot, frame);
+}
+
+sim::Vec2 centroid(const sim::World& world) noexcept {
+  sim::Vec2 sum;
+  for (std::size_t i = 0; i < world.robots(); ++i) {
+    const sim::Pose& p = world.state(i).pose;
+    sum = {sum.x + p.x_m, sum.y + p.y_m};
+  }
+  const auto n = static_cast<double>(world.robots());
+  return {sum.x / n, sum.y / n};
+}
+
+void observe_group(const sim::World& world, sim::Vec2 start, bool pairs, std::span<expr::Frame> frames) noexcept {
+  const std::size_t n = world.robots();
+  const sim::Vec2 c = centroid(world);
+  const auto at = [&](std::size_t i) { return sim::Vec2{world.state(i).pose.x_m, world.state(i).pose.y_m}; };
+  const double diagonal = std::hypot(world.arena().width_m, world.arena().height_m);
+  double spread = 0.0;
+  double pair_sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const sim::Vec2 p = at(i);
+    const double to_centroid = std::hypot(p.x - c.x, p.y - c.y);
+    spread = std::max(spread, to_centroid);
+    frames[i][expr::slot::centroid_distance] = to_centroid;
+    if (!pairs) continue;
+    double nearest2 = diagonal * diagonal;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i) continue;
+      const double d2 = (p.x - at(j).x) * (p.x - at(j).x) + (p.y - at(j).y) * (p.y - at(j).y);
+      nearest2 = std::min(nearest2, d2);
+      if (j > i) pair_sum += std::sqrt(d2);
+    }
+    frames[i][expr::slot::nearest_robot] = std::sqrt(nearest2);
+  }
+  const double pair_count = static_cast<double>(n * (n - 1) / 2);
+  for (std::size_t i = 0; i < n; ++i) {
+    expr::Frame& f = frames[i];
+    f[expr::slot::robots] = static_cast<double>(n);
+    f[expr::slot::centroid_x] = c.x;
+    f[expr::slot::centroid_y] = c.y;
+    f[expr::slot::centroid_moved] = std::hypot(c.x - start.x, c.y - start.y);
+    if (pairs) f[expr::slot::robot_distance] = n > 1 ? pair_sum / pair_count : 0.0;
+    f[expr::slot::spread] = spread;
+  }
 }
 
 void observe_light(const std::array<double, sim::kLightSensors>& light,

@@ -4,6 +4,7 @@
 // (measured wheel speeds, actual displacement), never from the commands.
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include "runtime/control/controller_spec.hpp"
 #include "runtime/eval/experiment.hpp"
@@ -19,8 +20,18 @@ namespace esc::eval {
 // radar[] into `frame`; the slots of zones, lights, rangefinders and radar slices the arena
 // or robot does not have, and goal_distance without a goal, are left as they are (0 in a
 // frame zeroed at the epoch's start, as the evaluator's is).
-void observe_robot(const sim::World& world, const std::array<double, sim::kIrSensors>& ir,
+// Robot `robot`'s (0 alone).
+void observe_robot(const sim::World& world, std::size_t robot, const std::array<double, sim::kIrSensors>& ir,
                    expr::Frame& frame) noexcept;
+
+// The group's centroid (the mean of the robots' centres).
+[[nodiscard]] sim::Vec2 centroid(const sim::World& world) noexcept;
+// Writes the group's observables into every robot's frame (frames[i] robot i's): robots,
+// centroid_x, centroid_y, centroid_moved (from `start`, the centroid at the epoch's start),
+// each robot's centroid_distance, and spread; with `pairs` (something reads them), each
+// robot's nearest_robot and the robot_distance, from every pair's distance (exact for any
+// distance, as a cut of the grid's pairs would not be; a group's size is bounded).
+void observe_group(const sim::World& world, sim::Vec2 start, bool pairs, std::span<expr::Frame> frames) noexcept;
 
 // Writes light[] from an ambient-light reading (World::read_light).
 void observe_light(const std::array<double, sim::kLightSensors>& light,

@@ -50,6 +50,16 @@ inline constexpr Slot radar = 60;         // radar[0..7]: 1 for the pie slice ho
 // Added after the navigator's (issue 44): ground sensors at the robot's points (last).
 inline constexpr Slot ground_sensor = 68;  // ground_sensor[0..3]: 1 over a visible zone
 inline constexpr Slot bumper = 72;         // bumper[0..3]: 1 on a step the body touched within its sector
+// Added after `bumper`, as the navigator's were: a group's observables (docs/groups.md), the
+// same in every robot's frame but for the robot's own distances.
+inline constexpr Slot robots = 76;            // robots in the group, 1 for a robot alone
+inline constexpr Slot centroid_x = 77;        // the group's centroid (its centres' mean), metres
+inline constexpr Slot centroid_y = 78;
+inline constexpr Slot centroid_moved = 79;    // the centroid's distance from where it was at the epoch's start
+inline constexpr Slot centroid_distance = 80; // this robot's centre to the centroid
+inline constexpr Slot nearest_robot = 81;     // this robot's centre to the nearest other robot's centre
+inline constexpr Slot robot_distance = 82;    // the mean distance between two robots' centres
+inline constexpr Slot spread = 83;            // the largest distance of a robot's centre to the centroid
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -62,7 +72,7 @@ inline constexpr Slot kRangeCount = 8;    // = sim::kMaxRangefinders
 inline constexpr Slot kRadarCount = 8;    // = sim::kMaxRadars
 inline constexpr Slot kGroundSensorCount = 4;   // = sim::kMaxGroundSensors
 inline constexpr Slot kBumperCount = 4;         // = sim::kMaxBumpers
-inline constexpr Slot kFrameSize = slot::bumper + kBumperCount;
+inline constexpr Slot kFrameSize = slot::spread + 1;
 
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
@@ -73,6 +83,7 @@ static_assert(slot::heading + 1 == slot::goal_distance && slot::goal_distance + 
 static_assert(slot::range + kRangeCount == slot::radar);
 static_assert(slot::radar + kRadarCount == slot::ground_sensor);
 static_assert(slot::ground_sensor + kGroundSensorCount == slot::bumper);
+static_assert(slot::bumper + kBumperCount == slot::robots);
 
 // The frame's size before `x` and the slots after it existed: what the aggregates' slots
 // (below) are numbered from in a fingerprint (runtime/eval/fingerprint.cpp), so that growing
@@ -156,8 +167,21 @@ inline constexpr std::array kObservables = {
                "ground sensors in the robot's order: 1 over a visible zone, 0 elsewhere (needs `ground_sensors`; "
                "the robot may name them otherwise, the Thymio's `prox_ground`)"},
     Observable{"bumper", slot::bumper, kBumperCount, true, "boolean",
-               "bumpers in the robot's order: 1 on a step in which the body touched a wall or obstacle within the "
-               "bumper's sector (needs `bumpers`)"},
+               "bumpers in the robot's order: 1 on a step in which the body touched a wall, an obstacle or another "
+               "robot within the bumper's sector (needs `bumpers`)"},
+    Observable{"robots", slot::robots, 1, false, "count", "robots in the group (`robot NAME x N`), 1 alone"},
+    Observable{"centroid_x", slot::centroid_x, 1, false, "m", "the group's centroid (the mean of its centres)"},
+    Observable{"centroid_y", slot::centroid_y, 1, false, "m", "the group's centroid (the mean of its centres)"},
+    Observable{"centroid_moved", slot::centroid_moved, 1, false, "m",
+               "how far the group's centroid is from where it was at the epoch's start"},
+    Observable{"centroid_distance", slot::centroid_distance, 1, false, "m",
+               "distance from the robot's centre to the group's centroid (0 alone)"},
+    Observable{"nearest_robot", slot::nearest_robot, 1, false, "m",
+               "distance from the robot's centre to the nearest other robot's (the arena's diagonal alone)"},
+    Observable{"robot_distance", slot::robot_distance, 1, false, "m",
+               "the mean distance between two robots' centres, over every pair (0 alone)"},
+    Observable{"spread", slot::spread, 1, false, "m",
+               "the largest distance of a robot's centre to the group's centroid (0 alone)"},
 };
 
 // Observables that take an argument naming a thing of the arena, `in(zone)` and

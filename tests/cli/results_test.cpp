@@ -57,6 +57,23 @@ TEST(Results, KilledRunResumesBitIdentical) {
   EXPECT_EQ(e["controllers"]["SC"]["runs"][0]["behavior_usage"].size(), 3U);
 }
 
+// A group (`--set robots=3`, docs/groups.md) resumes as one robot does; it stores no replay,
+// which esc replay says.
+TEST(Results, AGroupKilledResumesBitIdentical) {
+  const fs::path reference = scratch("group-reference");
+  const fs::path killed = scratch("group-killed");
+  ASSERT_EQ(esc("run " + tiny() + kLonger + "--set robots=3 --threads 2 --out " + reference.string()).status, 0);
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(tiny(), killed, 40, 400, "1", {"--set", "robots=3"}));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_same_summary(reference, killed);
+  EXPECT_EQ(read_json(killed / "settings.json").dump().find("\"robots\":\"3\"") != std::string::npos, true)
+      << slurp(killed / "settings.json");
+  const Outcome replay = esc("replay " + killed.string() + " --controller CC");
+  EXPECT_EQ(replay.status, 2) << replay.output;
+  EXPECT_NE(replay.output.find("group of 3 robots"), std::string::npos) << replay.output;
+}
+
 TEST(Results, KilledWithSeveralRunsInProgressResumesBitIdentical) {
   // Two threads: tiny's 20 offspring are fewer than 16 per worker, so both runs of a
   // controller advance together and are both in progress when the process is killed.

@@ -36,7 +36,7 @@ double score(bool inertia, bool alternate, int steps) {
     const double command = (alternate && s % 2 == 1) ? -1.0 : 1.0;
     world.step(command, command);
     world.read_ir(ir, rng);
-    observe_robot(world, ir, frame);
+    observe_robot(world, 0, ir, frame);
     fitness += original.eval(frame);
   }
   return fitness;

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import esc
-from conftest import HOMING, TREES, best_json
+from conftest import EXPERIMENTS, HOMING, TREES, best_json, esc_run
 
 
 @pytest.mark.parametrize("controller", ["CC", "SC", "SV"])
@@ -88,3 +88,18 @@ def test_measure_names_every_objective_and_descriptor_as_the_script_does():
     positions = esc.measure(mazes, "medium", "navigator_net", walkers)
     assert list(positions.columns) == ["reach_goal", "final_x", "final_y"]
     assert ((positions[["final_x", "final_y"]] >= 0) & (positions[["final_x", "final_y"]] <= 1.03125)).all().all()
+
+
+def test_a_group_is_evaluated_and_its_best_scores_its_stored_fitness(tmp_path):
+    """experiments/examples/groups.esc: five Kheperas, one genome driving each (docs/groups.md)."""
+    settings = {"epochs": 1, "steps": 40, "mu": 2, "lambda": 4}
+    script_path = EXPERIMENTS / "examples" / "groups.esc"
+    out = esc_run(script_path, tmp_path / "run", settings, "--experiment", "dispersion")
+    stored = best_json(out, "cc")
+    script = esc.compile(script_path, settings)
+    fitness = esc.evaluate(script, "dispersion", "cc", np.array([stored["genome"]]),
+                           seed=int(stored["evaluation_seed"]))
+    assert fitness[0] == stored["fitness"]
+    # Env drives one robot: a group's is refused, saying what to use.
+    with pytest.raises(ValueError, match="group of 5 robots"):
+        esc.Env(script, "dispersion", "cc")

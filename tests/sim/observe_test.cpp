@@ -5,6 +5,8 @@
 #include <array>
 #include <numbers>
 #include <set>
+#include <vector>
+#include <cmath>
 
 #include "runtime/eval/observe.hpp"
 #include "sim_test_util.hpp"
@@ -17,13 +19,14 @@ namespace slot = expr::slot;
 
 TEST(SimObserve, FrameLayout) {
   // The navigator's observables come after `param`, which kept its slots, then the ground
-  // sensors and the bumpers, which end the frame.
+  // sensors and the bumpers, then a group's observables, which end the frame.
   EXPECT_EQ(slot::param, 44U);
   EXPECT_EQ(expr::kFrameSizeBeforeNavigator, slot::param + expr::kMaxParams);
   EXPECT_EQ(slot::x, expr::kFrameSizeBeforeNavigator);
   EXPECT_EQ(slot::ground_sensor, slot::radar + expr::kRadarCount);
   EXPECT_EQ(slot::bumper, slot::ground_sensor + expr::kGroundSensorCount);
-  EXPECT_EQ(expr::kFrameSize, slot::bumper + expr::kBumperCount);
+  EXPECT_EQ(slot::robots, slot::bumper + expr::kBumperCount);
+  EXPECT_EQ(expr::kFrameSize, slot::spread + 1);
   // Every slot belongs to exactly one observable, parametrised block or param.
   std::set<expr::Slot> used;
   const auto claim = [&](expr::Slot first, expr::Slot count) {
@@ -69,7 +72,7 @@ TEST(SimObserve, NavigationReachesTheFrame) {
   w.reset({0.5, 0.4, 90 * kDeg});
   const std::array<double, sim::kIrSensors> ir{};
   Frame f{};
-  observe_robot(w, ir, f);
+  observe_robot(w, 0, ir, f);
   const sim::Pose& at = w.state().pose;   // as Bullet holds it
   EXPECT_NEAR(at.x_m, 0.5, 1e-9);
   EXPECT_EQ(f[slot::x], at.x_m);
@@ -91,7 +94,7 @@ TEST(SimObserve, NavigationReachesTheFrame) {
   EXPECT_EQ(f[slot::radar + 3], 1.0);
   // Turned to face the goal: slice 0, and the slice that fired before is cleared.
   w.reset({0.5, 0.4, 0.0});
-  observe_robot(w, ir, f);
+  observe_robot(w, 0, ir, f);
   EXPECT_EQ(f[slot::radar], 1.0);
   EXPECT_EQ(f[slot::radar + 3], 0.0);
   EXPECT_NEAR(f[slot::range + 1], 0.195 / 0.4, 1e-9);   // the wall is now to the left
@@ -103,7 +106,7 @@ TEST(SimObserve, NavigationSlotsStayZeroWithoutTheirSensors) {
   sim::World w(a, sim::RobotParams{});
   w.reset({0.3, 0.2, 1.0});
   Frame f{};
-  observe_robot(w, std::array<double, sim::kIrSensors>{}, f);
+  observe_robot(w, 0, std::array<double, sim::kIrSensors>{}, f);
   EXPECT_NEAR(f[slot::y], 0.2, 1e-9);
   EXPECT_NEAR(f[slot::heading], 1.0, 1e-9);
   EXPECT_EQ(f[slot::goal_distance], 0.0);
@@ -135,7 +138,7 @@ TEST(SimObserve, WorldStateReachesTheFrame) {
   Frame f{};
   w.read_ir(ir, rng);
   w.read_light(light, rng);
-  observe_robot(w, ir, f);
+  observe_robot(w, 0, ir, f);
   observe_light(light, f);
   EXPECT_EQ(f[slot::energy], 1.0);
   EXPECT_EQ(f[slot::in_zone], 1.0);
@@ -150,7 +153,7 @@ TEST(SimObserve, WorldStateReachesTheFrame) {
   for (int i = 0; i < 20; ++i) {  // drive into the recharge zone, to the light above it
     w.step(1.0, 1.0);
     w.read_ir(ir, rng);
-    observe_robot(w, ir, f);
+    observe_robot(w, 0, ir, f);
     EXPECT_EQ(f[slot::com_speed], f[slot::speed]);
     EXPECT_NEAR(f[slot::speed], 1.0, 1e-6);
     EXPECT_EQ(f[slot::energy], w.state().floor.energy);
@@ -167,6 +170,52 @@ TEST(SimObserve, WorldStateReachesTheFrame) {
   EXPECT_EQ(f[slot::ground], 0.0);  // zone 1 is invisible
   EXPECT_LT(f[slot::energy], 1.0);
   EXPECT_GT(f[slot::energy], 0.9);
+}
+
+// The group's observables, against the robots' centres computed by hand: a 3-4-5 triangle.
+TEST(SimObserve, GroupObservables) {
+  sim::ArenaSpec arena;
+  arena.width_m = 2.0;
+  arena.height_m = 1.0;
+  sim::World w(arena, std::vector<sim::RobotParams>(3, sim::RobotParams{}));
+  const std::array<sim::Pose, 3> poses = {sim::Pose{0.2, 0.2, 0.0}, sim::Pose{0.5, 0.2, 1.0}, sim::Pose{0.2, 0.6, 2.0}};
+  w.reset(poses);
+  std::vector<Frame> frames(3);
+  const sim::Vec2 start{0.0, 0.0};
+  observe_group(w, start, true, frames);
+  const double cx = 0.9 / 3, cy = 1.0 / 3;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Frame& f = frames[i];
+    EXPECT_EQ(f[slot::robots], 3.0);
+    EXPECT_NEAR(f[slot::centroid_x], cx, 1e-15);
+    EXPECT_NEAR(f[slot::centroid_y], cy, 1e-15);
+    EXPECT_NEAR(f[slot::centroid_moved], std::hypot(cx, cy), 1e-15);
+    EXPECT_NEAR(f[slot::centroid_distance], std::hypot(poses[i].x_m - cx, poses[i].y_m - cy), 1e-15);
+    EXPECT_NEAR(f[slot::robot_distance], (0.3 + 0.4 + 0.5) / 3, 1e-15);
+  }
+  EXPECT_NEAR(frames[0][slot::nearest_robot], 0.3, 1e-15);
+  EXPECT_NEAR(frames[1][slot::nearest_robot], 0.3, 1e-15);
+  EXPECT_NEAR(frames[2][slot::nearest_robot], 0.4, 1e-15);
+  double spread = 0.0;
+  for (const sim::Pose& p : poses) spread = std::max(spread, std::hypot(p.x_m - cx, p.y_m - cy));
+  EXPECT_NEAR(frames[0][slot::spread], spread, 1e-15);
+  // Without `pairs`, the observables made from every pair are not written.
+  std::vector<Frame> unpaired(3);
+  observe_group(w, start, false, unpaired);
+  EXPECT_EQ(unpaired[0][slot::nearest_robot], 0.0);
+  EXPECT_EQ(unpaired[0][slot::robot_distance], 0.0);
+  EXPECT_NEAR(unpaired[2][slot::centroid_distance], frames[2][slot::centroid_distance], 0.0);
+  // A robot alone: its own centroid, no neighbour nearer than the arena's diagonal.
+  sim::World alone(arena, sim::RobotParams{});
+  alone.reset(poses[0]);
+  std::vector<Frame> one(1);
+  observe_group(alone, {0.2, 0.2}, true, one);
+  EXPECT_EQ(one[0][slot::robots], 1.0);
+  EXPECT_EQ(one[0][slot::centroid_distance], 0.0);
+  EXPECT_EQ(one[0][slot::centroid_moved], 0.0);
+  EXPECT_EQ(one[0][slot::spread], 0.0);
+  EXPECT_EQ(one[0][slot::robot_distance], 0.0);
+  EXPECT_NEAR(one[0][slot::nearest_robot], std::hypot(2.0, 1.0), 1e-15);
 }
 
 }  // namespace
