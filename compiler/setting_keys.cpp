@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include <optional>
+#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -193,8 +194,27 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   return false;
 }
 
+// The clearance random starts keep around each robot (sim::World::random_free_poses' default).
+constexpr double kStartMargin_m = 0.005;
+
 void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
   if (spec.robots == 1) return;
+  // Random starts place robot after robot by rejection: past about half the floor they jam, and
+  // an epoch would fail to start hours into a run. Refused here instead, with room to spare.
+  constexpr double kMaxCover = 0.4;
+  const sim::ArenaSpec& a = spec.arena;
+  double floor_m2 = a.width_m * a.height_m;
+  for (const sim::BoxObstacle& b : a.boxes) floor_m2 -= b.size_m.x * b.size_m.y;
+  for (const sim::CylinderObstacle& c : a.cylinders) floor_m2 -= std::numbers::pi * c.radius_m * c.radius_m;
+  const double disc = spec.robot.body_radius_m + kStartMargin_m;
+  const double cover = spec.robots * std::numbers::pi * disc * disc / std::max(floor_m2, 1e-12);
+  if (cover > kMaxCover) {
+    sink.error(where, fmt::format("{} robots of radius {:g} cm would cover {:.0f}% of the arena's free floor; random "
+                                  "starts place them at most {:.0f}% of it",
+                                  spec.robots, spec.robot.body_radius_m * 100, cover * 100, kMaxCover * 100))
+        .help.push_back("use fewer robots or a larger arena");
+    return;
+  }
   const auto folds = [](const eval::FitnessSpec& f) { return !f.epoch_aggregates.empty() || !f.evaluation_aggregates.empty(); };
   std::string what;
   if (folds(spec.fitness)) what = fmt::format("the fitness `{}`", spec.fitness.name);

@@ -54,10 +54,9 @@ const control::ControllerSpec* network_controller(const eval::ExperimentSpec& sp
   return &c;
 }
 
-// Whether anything reads the `noise` observable (the evaluator writes it only then).
-bool reads_noise(const eval::ExperimentSpec& spec, const control::ControllerSpec* controller) {
-  return eval::reads_slot(spec.fitness, controller != nullptr ? *controller : control::ControllerSpec{},
-                          expr::slot::noise);
+// What the stepper writes only when read (`noise`, the group's observables), as the evaluator's.
+eval::StepperReads reads_of(const eval::ExperimentSpec& spec, const control::ControllerSpec* controller) {
+  return eval::stepper_reads(spec, controller != nullptr ? *controller : control::ControllerSpec{});
 }
 
 py::array_t<double> array_of(const std::vector<double>& v) {
@@ -73,7 +72,7 @@ Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& exper
       controller_(network_controller(*spec_, controller)),
       observed_(controller_ != nullptr ? controller_->mlp.inputs : senses(spec_->robot)),
       world_(spec_->arena, spec_->robot),
-      stepper_(*spec_, world_, reads_noise(*spec_, controller_)),
+      stepper_(*spec_, world_, reads_of(*spec_, controller_)),
       seed_(seed) {
   if (controller_ == nullptr) return;
   action_size_ = static_cast<std::size_t>(controller_->output_count());

@@ -139,20 +139,20 @@ RunResult close_run(RunState&& st) {
 void replay_best(const ExperimentSpec& spec, const control::ControllerSpec& controller, RunResult& result,
                  const CampaignOptions& options, Evaluators& ev, CampaignListener& listener,
                  const std::function<Evaluation(Evaluator&, std::uint64_t, TraceSink*)>& replay) {
+  const std::uint64_t seed =
+      evaluation_seed(result.seed, result.best_generation, static_cast<std::size_t>(result.best_index));
+  // A group's replay is not recorded yet (docs/groups.md): its usage is the evaluation's.
+  if (spec.robots > 1) {
+    if (controller.choice_names().empty()) return;
+    const Evaluation e = replay(ev.workers.local(), seed, nullptr);
+    result.action_usage.assign(e.usage.begin(), e.usage.end());
+    return;
+  }
   Recorder rec;
   rec.usage.assign(controller.choice_names().size(), 0);
   if (options.trace_best)
     rec.steps.reserve(static_cast<std::size_t>(spec.epochs) * static_cast<std::size_t>(spec.steps));
   if (!options.trace_best && rec.usage.empty()) return;
-  const std::uint64_t seed =
-      evaluation_seed(result.seed, result.best_generation, static_cast<std::size_t>(result.best_index));
-  // A group's replay is not recorded yet (docs/groups.md): its usage is the evaluation's,
-  // every robot's added.
-  if (spec.robots > 1) {
-    const Evaluation e = replay(ev.workers.local(), seed, nullptr);
-    result.action_usage.assign(e.usage.begin(), e.usage.end());
-    return;
-  }
   (void)replay(ev.workers.local(), seed, &rec);
   result.action_usage = std::move(rec.usage);
   if (options.trace_best) listener.best_traced(controller, result, rec.steps);

@@ -43,12 +43,11 @@ struct StepOutcome {
 
 class EpochStepper {
  public:
-  // `spec` and `world` (built for spec's arena and robot) must outlive the stepper. `noise`:
-  // whether anything reads the `noise` observable (reads_slot), which is written only then.
-  // `group`: whether anything reads a group observable (they are written only then);
-  // `pairs`: whether anything reads one made from every pair (nearest_robot, robot_distance).
-  EpochStepper(const ExperimentSpec& spec, sim::World& world, bool noise, bool group = false, bool pairs = false)
-      : spec_(&spec), world_(&world), noise_(noise), group_(group || world.robots() > 1), pairs_(pairs),
+  // `spec` and `world` (built for spec's arena and robots) must outlive the stepper.
+  // `reads`: what anything reads of the observables written only then (stepper_reads); a
+  // group's own observables are always written for a group.
+  EpochStepper(const ExperimentSpec& spec, sim::World& world, const StepperReads& reads)
+      : spec_(&spec), world_(&world), noise_(reads.noise), group_(reads.group || world.robots() > 1), pairs_(reads.pairs),
         frames_(world.robots()), ir_(world.robots()), light_(world.robots()), commands_(world.robots()) {}
 
   // Epoch `epoch` (from 0) of the evaluation with seed `seed`, its stream Rng(seed, {epoch}):

@@ -100,6 +100,28 @@ double Evaluator::end_term(const expr::Program& term, const std::vector<expr::St
   return term.eval(end_frame_);
 }
 
+// A group's usage as a robot's: each choice's steps over the robots divided by their number,
+// the remainders given out largest first (the first choice on a tie) so that the counts still
+// add up to the group's steps, as `steps` counts the group's control steps.
+template <class Driver>
+void Evaluator::share_usage(std::span<Driver* const> drivers, std::vector<std::int64_t>& usage) {
+  const auto n = static_cast<std::int64_t>(drivers.size());
+  std::vector<std::int64_t> remainder(usage.size(), 0);
+  std::int64_t left = 0;
+  for (std::size_t k = 0; k < usage.size(); ++k) {
+    std::int64_t sum = 0;
+    for (Driver* d : drivers) sum += d->usage()[k];
+    usage[k] = sum / n;
+    remainder[k] = sum % n;
+    left += remainder[k];
+  }
+  for (left /= n; left > 0; --left) {
+    const auto most = static_cast<std::size_t>(std::max_element(remainder.begin(), remainder.end()) - remainder.begin());
+    ++usage[most];
+    remainder[most] = -1;
+  }
+}
+
 template <class Driver>
 double Evaluator::end_over_robots(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                                   const control::ControllerSpec& controller, const EpochStepper& epoch,
@@ -140,11 +162,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
                           std::uint64_t seed, TraceSink* trace) {
   const ExperimentSpec& s = *spec_;
   if (trace != nullptr && drivers.size() > 1) throw std::invalid_argument("replays of a group are not supported yet");
-  const auto reads = [&](expr::Slot slot) { return reads_slot(s, controller, slot); };
-  bool group = false;
-  for (expr::Slot slot = expr::slot::robots; slot <= expr::slot::spread; ++slot) group = group || reads(slot);
-  EpochStepper epoch(s, world_, reads(expr::slot::noise), group,
-                     reads(expr::slot::nearest_robot) || reads(expr::slot::robot_distance));
+  EpochStepper epoch(s, world_, stepper_reads(s, controller));
   Evaluation result;
   result.objectives.assign(s.further.size(), 0.0);
   result.descriptors.assign(s.descriptors.size(), 0.0);
@@ -210,10 +228,8 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
       result.descriptors[i] = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, result.steps, false);
     else if (d.reduce == Reduction::Mean && s.epochs > 0) result.descriptors[i] /= s.epochs;
   }
-  // Usage counts add over the robots.
   result.usage.assign(drivers[0]->usage().begin(), drivers[0]->usage().end());
-  for (std::size_t i = 1; i < drivers.size(); ++i)
-    for (std::size_t k = 0; k < result.usage.size(); ++k) result.usage[k] += drivers[i]->usage()[k];
+  if (drivers.size() > 1) share_usage(drivers, result.usage);
   return result;
 }
 

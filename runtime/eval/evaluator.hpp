@@ -111,6 +111,9 @@ class Evaluator {
   double end_over_robots(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                          const control::ControllerSpec& controller, const EpochStepper& epoch,
                          std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch);
+  // A group's usage counts, as one robot's (evaluator.cpp).
+  template <class Driver>
+  static void share_usage(std::span<Driver* const> drivers, std::vector<std::int64_t>& usage);
   // Each descriptor's per-epoch values reduced so far (Reduction::Mean: their sum), epoch `e`.
   template <class Driver>
   void reduce_descriptors(const control::ControllerSpec& controller, const EpochStepper& epoch,

@@ -194,4 +194,13 @@ bool reads_slot(const ExperimentSpec& spec, const control::ControllerSpec& contr
   return reads_slot(spec.fitness, controller, slot);
 }
 
+StepperReads stepper_reads(const ExperimentSpec& spec, const control::ControllerSpec& controller) noexcept {
+  StepperReads r;
+  r.noise = reads_slot(spec, controller, expr::slot::noise);
+  r.pairs = reads_slot(spec, controller, expr::slot::nearest_robot) || reads_slot(spec, controller, expr::slot::robot_distance);
+  r.group = r.pairs;
+  for (expr::Slot s = expr::slot::robots; s < expr::kFrameSize && !r.group; ++s) r.group = reads_slot(spec, controller, s);
+  return r;
+}
+
 }  // namespace esc::eval

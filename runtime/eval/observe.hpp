@@ -53,4 +53,13 @@ void observe_noise(std::uint64_t seed, int epoch, int step, expr::Frame& frame) 
 [[nodiscard]] bool reads_slot(const ExperimentSpec& spec, const control::ControllerSpec& controller,
                               expr::Slot slot) noexcept;
 
+// What an EpochStepper writes only when something reads it: `noise`, the group's
+// observables, and those of them made from every pair (nearest_robot, robot_distance).
+struct StepperReads {
+  bool noise = false;
+  bool group = false;
+  bool pairs = false;
+};
+[[nodiscard]] StepperReads stepper_reads(const ExperimentSpec& spec, const control::ControllerSpec& controller) noexcept;
+
 }  // namespace esc::eval

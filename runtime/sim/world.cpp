@@ -329,15 +329,20 @@ struct World::Impl {
     });
   }
 
-  // Grows Bullet's arrays (pair cache, manifolds, islands, solver pools) to the size of every
-  // robot touching every other at once, so that a crowd's step never allocates: the bodies
-  // piled about the arena's centre step a few times, then reset() places them.
+  // Grows Bullet's arrays (pair cache, manifolds, islands, solver pools) to a crowd's, so that
+  // a crowd's step never allocates: the bodies packed in a square lattice about the arena's
+  // centre, each overlapping its four nearest and within Bullet's contact threshold of the next
+  // four, step a few times, then reset() places them. (Piled all on one spot, N robots would
+  // grow N^2 / 2 manifolds, 70 MB for 256; a crowd holds a few per robot.)
   void warm_up_contacts() {
     const Vec2 centre{arena.width_m / 2, arena.height_m / 2};
+    const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(robots.size()))));
+    const double spacing = 1.6 * largest_radius_m;
     std::vector<Pose> pile;
     for (std::size_t i = 0; i < robots.size(); ++i) {
-      const double angle = 2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(robots.size());
-      pile.push_back({centre.x + 0.5 * largest_radius_m * std::cos(angle), centre.y + 0.5 * largest_radius_m * std::sin(angle), angle});
+      const double col = static_cast<double>(i % side) - 0.5 * static_cast<double>(side - 1);
+      const double row = static_cast<double>(i / side) - 0.5 * static_cast<double>(side - 1);
+      pile.push_back({centre.x + spacing * col, centre.y + spacing * row, static_cast<double>(i)});
     }
     for (auto r = robots.rbegin(); r != robots.rend(); ++r) (*r)->body->take_out();
     for (std::size_t i = 0; i < robots.size(); ++i) robots[i]->body->put_back(pile[i]);

@@ -90,14 +90,55 @@ TEST(Groups, AGroupOfOneIsTheRobotAlone) {
 }
 
 TEST(Groups, AnEpochStopsWhenAnyRobotsConditionHolds) {
-  // Robot 0 starts at the fixed start, beyond the line that stops an epoch; the others start
-  // at random places, nearly all short of it: the group's epochs end after their first step.
+  // Robot 0 starts at the fixed start, far short of the line that stops an epoch; some of the
+  // five others start beyond it (seed 11): a robot other than 0 ends the group's epochs after
+  // their first step, where robot 0's condition alone would let them run their 100.
   const std::string text = "robot bot { inertia on }\n"
-                           "arena w { size 1m x 1m  start at (96cm, 50cm) }\n"
-                           "fitness f { step: 1  stop epoch when x > 94cm }\n"
+                           "arena w { size 1m x 1m  start at (10cm, 50cm) }\n"
+                           "fitness f { step: 1  stop epoch when x > 60cm }\n"
                            "controller c = mlp(ir[0..7] -> wheels)\n"
-                           "experiment e { arena w  fitness f  epochs 2 x 100 steps  compare c  robot bot x 3 }\n";
+                           "experiment e { arena w  fitness f  epochs 2 x 100 steps  compare c  robot bot x 6 }\n";
   EXPECT_EQ(evaluate(first_experiment(text, "g.esc")).steps, 2);
+}
+
+TEST(Groups, ARobotAloneReadsTheGroupsObservablesToo) {
+  // One robot: a group of one, its own centroid, no neighbour nearer than the diagonal.
+  const eval::ExperimentSpec x =
+      first_experiment(script("robot bot", "step: 0  epoch: robots + nearest_robot + 10 * spread"), "g.esc");
+  EXPECT_NEAR(evaluate(x).fitness, 2 * (1 + std::sqrt(2.0)), 1e-12);
+}
+
+TEST(Groups, TheCentroidMovesFromWhereItWasAtTheEpochsStart) {
+  const std::string moved = "step: 0  epoch: centroid_moved";
+  const eval::ExperimentSpec x = first_experiment(script("robot bot x 3", moved), "g.esc");
+  EXPECT_EQ(evaluate(x, 0.0).fitness, 0.0);   // a zero network: the wheels never turn
+  EXPECT_GT(evaluate(x, 0.3).fitness, 0.01);
+}
+
+TEST(Groups, AGroupsUsageCountsAddUpToItsSteps) {
+  const std::string text = "robot bot { inertia on }\n"
+                           "arena a { size 1m x 1m  start random }\n"
+                           "behavior go() { wheels(1, 1) }\nbehavior turn() { wheels(-1, 1) }\n"
+                           "fitness f { step: forward_speed  stop epoch when collision }\n"
+                           "controller sc = symbolic(mlp(ir[0..7] -> hidden 2), actions [go, turn])\n"
+                           "experiment e { arena a  fitness f  epochs 2 x 50 steps  compare sc  robot bot x 3 }\n";
+  const eval::ExperimentSpec x = first_experiment(text, "g.esc");
+  const eval::Evaluation e = evaluate(x);
+  ASSERT_EQ(e.usage.size(), 2U);
+  EXPECT_EQ(e.usage[0] + e.usage[1], e.steps);
+}
+
+TEST(Groups, AGroupMustFitTheArenasFloor) {
+  // 104 Kheperas-sized discs (with the starts' 5 mm) cover 54% of an 80 cm arena.
+  const std::string text = "robot bot { inertia on }\n"
+                           "arena a { size 80cm x 80cm }\n"
+                           "fitness f { step: forward_speed }\n"
+                           "controller c = mlp(ir[0..7] -> wheels)\n"
+                           "experiment e { arena a  fitness f  compare c  robot bot x 104 }\n";
+  const std::string out = refusal(text, "g.esc");
+  EXPECT_NE(out.find("g.esc:5:"), std::string::npos) << out;
+  EXPECT_NE(out.find("104 robots"), std::string::npos) << out;
+  EXPECT_NE(out.find("54%"), std::string::npos) << out;
 }
 
 }  // namespace

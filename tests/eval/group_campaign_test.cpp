@@ -1,6 +1,6 @@
 // A group's campaign (docs/groups.md): four robots avoiding the walls and each other, each
-// driven by its own copy of the evolved network. Bit-identical for any thread count, resumed
-// or not, and its mean fitness improves.
+// driven by its own copy of the evolved network. Bit-identical for any thread count, and its
+// mean fitness improves (resumed after SIGKILL: tests/cli/results_test.cpp).
 #include <gtest/gtest.h>
 
 #include "runtime/eval/campaign.hpp"

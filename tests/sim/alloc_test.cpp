@@ -118,7 +118,7 @@ TEST(SimAlloc, StepAndReadingsDoNotAllocate) {
 // first step of the first epoch on, stepping and reading allocate nothing (the constructor
 // grew Bullet's arrays for every robot touching every other).
 TEST(SimAlloc, ACrowdsStepsAndReadingsDoNotAllocate) {
-  for (const std::size_t n : {2U, 5U, 20U, 50U}) {
+  for (const std::size_t n : {2U, 5U, 20U, 50U, 256U}) {
     const double side = 0.15 * std::sqrt(static_cast<double>(n));
     World world(test::empty_arena(side, side), std::vector<RobotParams>(n, RobotParams{}));
     std::vector<DriveCommand> commands(n);
