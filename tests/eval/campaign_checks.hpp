@@ -26,6 +26,18 @@ struct Snapshotter final : eval::CampaignListener {
   }
 };
 
+// The first controller's population mean fitness at the first and the last generation, summed
+// over its runs.
+inline std::pair<double, double> first_and_last_mean(const eval::CampaignResult& res) {
+  double first = 0.0;
+  double last = 0.0;
+  for (const auto& r : res.controllers.front().runs) {
+    first += r.generations.front().mean;
+    last += r.generations.back().mean;
+  }
+  return {first, last};
+}
+
 inline void expect_same(const eval::CampaignResult& a, const eval::CampaignResult& b) {
   ASSERT_EQ(a.controllers.size(), b.controllers.size());
   for (std::size_t c = 0; c < a.controllers.size(); ++c) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/test_experiment.hpp"
 #include "tests/algorithm_settings.hpp"
 
@@ -66,13 +67,7 @@ TEST(Campaign, MeanFitnessImproves) {
   ExperimentSpec spec = testing::small_experiment();
   spec.generations = 10;
   spec.runs = 2;
-  const CampaignResult res = run_with_threads(spec, 2);
-  double first = 0.0;
-  double last = 0.0;
-  for (const auto& r : res.controllers.front().runs) {
-    first += r.generations.front().mean;
-    last += r.generations.back().mean;
-  }
+  const auto [first, last] = testing::first_and_last_mean(run_with_threads(spec, 2));
   EXPECT_GT(last, first * 1.2) << "mean fitness " << first << " -> " << last;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "runtime/eval/campaign.hpp"
+#include "tests/eval/campaign_checks.hpp"
 #include "tests/eval/test_experiment.hpp"
 
 namespace esc::eval {
@@ -41,13 +42,7 @@ TEST(GroupCampaign, BitIdenticalForAnyThreadCount) {
 TEST(GroupCampaign, MeanFitnessImproves) {
   const ExperimentSpec spec = group_experiment();
   Quiet quiet;
-  const CampaignResult res = run_campaign(spec, {2}, quiet);
-  double first = 0.0;
-  double last = 0.0;
-  for (const auto& r : res.controllers.front().runs) {
-    first += r.generations.front().mean;
-    last += r.generations.back().mean;
-  }
+  const auto [first, last] = testing::first_and_last_mean(run_campaign(spec, {2}, quiet));
   EXPECT_GT(last, first * 1.2) << "mean fitness " << first << " -> " << last;
 }
 

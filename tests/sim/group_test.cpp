@@ -253,14 +253,19 @@ TEST(SimGroup, BumpersFeelAnotherRobot) {
   EXPECT_EQ(back, 2U);    // robot 1's back bumper
 }
 
+// A Khepera of top speed `speed_mps`, stepped in 10 substeps.
+RobotParams at_top_speed(double speed_mps) {
+  RobotParams r = test::robot_with_inertia(false);
+  r.motor.max_speed_mps = speed_mps;
+  r.physics_substeps = 10;
+  return r;
+}
+
 // A fast robot with a higher index than a slow one, driving at it: the pair is found from
 // either end (the grid is searched with the fastest robot's travel).
 TEST(SimGroup, RobotsOfDifferentSpeedsStopAtContact) {
-  RobotParams slow = test::robot_with_inertia(false);
-  slow.motor.max_speed_mps = 0.01;
-  slow.physics_substeps = 10;
-  RobotParams fast = slow;
-  fast.motor.max_speed_mps = 0.5;
+  const RobotParams slow = at_top_speed(0.01);
+  const RobotParams fast = at_top_speed(0.5);
   for (const bool fast_first : {false, true}) {
     World world(test::empty_arena(1.0, 1.0), fast_first ? std::vector<RobotParams>{fast, slow}
                                                          : std::vector<RobotParams>{slow, fast});
@@ -284,11 +289,8 @@ TEST(SimGroup, RobotsOfDifferentSpeedsStopAtContact) {
 // A robot pushed into a third, faster than its own top speed would take it there: the contact
 // is still felt by both.
 TEST(SimGroup, ARobotPushedIntoAnotherCollidesWithIt) {
-  RobotParams slow = test::robot_with_inertia(false);
-  slow.motor.max_speed_mps = 0.001;
-  slow.physics_substeps = 10;
-  RobotParams fast = slow;
-  fast.motor.max_speed_mps = 0.5;
+  const RobotParams slow = at_top_speed(0.001);
+  const RobotParams fast = at_top_speed(0.5);
   World world(test::empty_arena(1.0, 1.0), std::vector<RobotParams>{fast, slow, slow});
   const double r = slow.body_radius_m;
   const std::array<Pose, 3> starts = {Pose{0.5 - 2 * r - 0.001, 0.5, 0.0}, Pose{0.5, 0.5, 0.0},
