@@ -45,6 +45,19 @@ TEST(Mpi, ThreeRanksGiveTheSameSummaryAsOneProcess) {
   EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
 }
 
+// A group (`--set robots=3`, docs/groups.md): each evaluation steps its three robots wherever
+// it runs.
+TEST(Mpi, AGroupUnderThreeRanksGivesOneProcesssResults) {
+  const fs::path one = scratch("mpi-group-1");
+  const fs::path three = scratch("mpi-group-3");
+  const std::string args = "run " + tiny() + " --seed 5 --generations 3 --set robots=3 --out ";
+  const Outcome a = esc(args + one.string() + " --threads 1 --runs-at-once 1");
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Outcome b = shell(mpirun(3) + args + three.string() + " --threads 2");
+  ASSERT_EQ(b.status, 0) << b.output;
+  EXPECT_EQ(results_only(read_json(one / "summary.json")), results_only(read_json(three / "summary.json")));
+}
+
 // Any optimizer: every rank asks the same candidates of the same state.
 TEST(Mpi, ThreeRanksGiveOneProcesssCmaesRuns) {
   const fs::path one = scratch("mpi-cmaes-1");

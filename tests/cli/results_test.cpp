@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -72,6 +73,27 @@ TEST(Results, AGroupKilledResumesBitIdentical) {
   const Outcome replay = esc("replay " + killed.string() + " --controller CC");
   EXPECT_EQ(replay.status, 2) << replay.output;
   EXPECT_NE(replay.output.find("group of 3 robots"), std::string::npos) << replay.output;
+}
+
+// A controller evolved with three robots, tested with five and with three (`evaluate from`,
+// tests/cli/data/group_transfer.esc): each test is its own group's, from the same genomes.
+TEST(Results, AGroupsControllerIsTestedWithAnotherGroupSize) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/group_transfer.esc";
+  const fs::path cache = scratch("group-transfer-cache");
+  std::map<std::string, nlohmann::json> tested;
+  for (const char* experiment : {"tested_with_five", "tested_with_three"}) {
+    const fs::path out = scratch(experiment);
+    const Outcome run = esc("run " + script + " --experiment " + experiment + " --cache " + cache.string() +
+                            " --out " + out.string());
+    ASSERT_EQ(run.status, 0) << run.output;
+    tested[experiment] = read_json(out / "settings.json")["settings"];
+    const auto runs = read_json(out / "summary.json")["controllers"]["CC"]["runs"];
+    ASSERT_EQ(runs.size(), 2U);
+    tested[std::string(experiment) + " fitness"] = runs[0]["best_fitness"];
+  }
+  EXPECT_EQ(tested["tested_with_five"]["robots"], "5");
+  EXPECT_EQ(tested["tested_with_three"]["robots"], "3");
+  EXPECT_NE(tested["tested_with_five fitness"], tested["tested_with_three fitness"]);
 }
 
 TEST(Results, KilledWithSeveralRunsInProgressResumesBitIdentical) {
