@@ -24,6 +24,7 @@
 #include "compiler/setting_values.hpp"
 #include "compiler/text.hpp"
 #include "runtime/sim/validate.hpp"
+#include "runtime/sim/world.hpp"
 
 namespace esc::compiler {
 
@@ -194,9 +195,6 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   return false;
 }
 
-// The clearance random starts keep around each robot (sim::World::random_free_poses' default).
-constexpr double kStartMargin_m = 0.005;
-
 void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
   if (spec.robots == 1) return;
   // Random starts place robot after robot by rejection: past about half the floor they jam, and
@@ -206,7 +204,7 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   double floor_m2 = a.width_m * a.height_m;
   for (const sim::BoxObstacle& b : a.boxes) floor_m2 -= b.size_m.x * b.size_m.y;
   for (const sim::CylinderObstacle& c : a.cylinders) floor_m2 -= std::numbers::pi * c.radius_m * c.radius_m;
-  const double disc = spec.robot.body_radius_m + kStartMargin_m;
+  const double disc = spec.robot.body_radius_m + sim::kStartMargin_m;
   const double cover = spec.robots * std::numbers::pi * disc * disc / std::max(floor_m2, 1e-12);
   if (cover > kMaxCover) {
     sink.error(where, fmt::format("{} robots of radius {:g} cm would cover {:.0f}% of the arena's free floor; random "

@@ -67,7 +67,6 @@ class EpochStepper {
   // parameters into it.
   [[nodiscard]] expr::Frame& frame(std::size_t robot = 0) noexcept { return frames_[robot]; }
   [[nodiscard]] const expr::Frame& frame(std::size_t robot = 0) const noexcept { return frames_[robot]; }
-  [[nodiscard]] std::size_t robots() const noexcept { return frames_.size(); }
 
   // The mean over the robots of `program` on their frames (its value on the one frame of a
   // robot alone).

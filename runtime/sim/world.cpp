@@ -101,7 +101,7 @@ struct Robot {
 
 namespace {
 
-[[nodiscard]] std::vector<RobotParams> validated(const std::vector<RobotParams>& robots) {
+void validate_group(const std::vector<RobotParams>& robots) {
   if (robots.empty()) throw std::invalid_argument("a world needs at least one robot");
   for (const RobotParams& r : robots) validate_robot(r);
   const RobotParams& first = robots.front();
@@ -113,14 +113,12 @@ namespace {
     if (r.control_step_s != first.control_step_s || r.physics_substeps != first.physics_substeps)
       throw std::invalid_argument("the robots of a group must share their control step and physics substeps");
   }
-  return robots;
 }
 
 }  // namespace
 
 struct World::Impl {
   ArenaSpec arena;
-  std::vector<RobotParams> params;
   StaticGeometry2D geometry;
   std::unique_ptr<BulletWorld> bullet;        // the wheeled robots' world; none for the acceleration drive
   std::vector<std::unique_ptr<Robot>> robots;
@@ -128,16 +126,15 @@ struct World::Impl {
   std::optional<Neighbours> grid;
   double largest_radius_m = 0.0;
   double largest_travel_m = 0.0;              // the farthest a robot moves in a control step
-  double reach_m = 0.0;                       // a robot's sensing reach at most, plus the largest radius
   std::vector<Vec2> centres;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;   // the step's pairs that may meet
   mutable std::vector<PlacedBody> seen;                          // the bodies one robot senses
   std::vector<Pose> starts;                                      // begin_epoch's poses
 
   Impl(const ArenaSpec& a, const std::vector<RobotParams>& r)
-      : arena((validate_arena(a), a)), params(validated(r)), geometry(a) {
-    if (params.front().drive == DriveKind::Differential) bullet = std::make_unique<BulletWorld>(a, params.size());
-    for (const RobotParams& p : params) robots.push_back(std::make_unique<Robot>(a, p, geometry, bullet.get()));
+      : arena((validate_arena(a), validate_group(r), a)), geometry(a) {
+    if (r.front().drive == DriveKind::Differential) bullet = std::make_unique<BulletWorld>(a, r.size());
+    for (const RobotParams& p : r) robots.push_back(std::make_unique<Robot>(a, p, geometry, bullet.get()));
     if (robots.size() > 1) {
       double sensing = 0.0;
       for (const auto& robot : robots) {
@@ -145,8 +142,7 @@ struct World::Impl {
         largest_travel_m = std::max(largest_travel_m, robot->robot.motor.max_speed_mps * robot->robot.control_step_s);
         sensing = std::max(sensing, robot->sensing_reach_m());
       }
-      reach_m = sensing + largest_radius_m;
-      grid.emplace(robots.size(), a.width_m, a.height_m, std::max(reach_m, 4 * largest_radius_m));
+      grid.emplace(robots.size(), a.width_m, a.height_m, std::max(sensing + largest_radius_m, 4 * largest_radius_m));
       centres.resize(robots.size());
       pairs.reserve(robots.size() * (robots.size() - 1) / 2);
       seen.reserve(robots.size());
@@ -159,7 +155,7 @@ struct World::Impl {
     // them all again).
     starts.push_back(a.fixed_start.value_or(Pose{a.width_m / 2, a.height_m / 2, 0.0}));
     Rng rng(0);
-    for (std::size_t i = 1; i < robots.size(); ++i) starts.push_back(random_free_pose(rng, 0.005, i, starts));
+    for (std::size_t i = 1; i < robots.size(); ++i) starts.push_back(random_free_pose(rng, kStartMargin_m, i, starts));
     reset(starts);
   }
 
@@ -174,13 +170,7 @@ struct World::Impl {
           throw std::invalid_argument("robots " + std::to_string(i) + " and " + std::to_string(j) +
                                       " would start overlapping");
       }
-    for (auto r = robots.rbegin(); r != robots.rend(); ++r)
-      if ((*r)->body) (*r)->body->take_out();
-    for (std::size_t i = 0; i < robots.size(); ++i) {
-      Robot& r = *robots[i];
-      if (r.body) r.body->put_back(poses[i]);
-      else r.kinematic.place(poses[i]);
-    }
+    place(poses);
     if (bullet) bullet->reset_solver();
     for (const auto& robot : robots) {
       Robot& r = *robot;
@@ -190,6 +180,18 @@ struct World::Impl {
       r.floor.reset({r.state.pose.x_m, r.state.pose.y_m}, r.state.floor);
     }
     index_robots();
+  }
+
+  // Every robot at rest at its pose: the bodies taken out of Bullet's world, the last first, then
+  // put back, the first first (Body::take_out), so that its objects are in a fresh world's order.
+  void place(std::span<const Pose> poses) {
+    for (auto r = robots.rbegin(); r != robots.rend(); ++r)
+      if ((*r)->body) (*r)->body->take_out();
+    for (std::size_t i = 0; i < robots.size(); ++i) {
+      Robot& r = *robots[i];
+      if (r.body) r.body->put_back(poses[i]);
+      else r.kinematic.place(poses[i]);
+    }
   }
 
   // The grid over the robots where they are now: the next step's pairs, and what they sense.
@@ -344,8 +346,7 @@ struct World::Impl {
       const double row = static_cast<double>(i / side) - 0.5 * static_cast<double>(side - 1);
       pile.push_back({centre.x + spacing * col, centre.y + spacing * row, static_cast<double>(i)});
     }
-    for (auto r = robots.rbegin(); r != robots.rend(); ++r) (*r)->body->take_out();
-    for (std::size_t i = 0; i < robots.size(); ++i) robots[i]->body->put_back(pile[i]);
+    place(pile);
     constexpr int kWarmUpSteps = 8;
     for (int k = 0; k < kWarmUpSteps; ++k) {
       for (const auto& robot : robots) {
@@ -471,7 +472,7 @@ Pose World::begin_epoch(Rng& rng) {
   poses.clear();
   for (std::size_t i = 0; i < impl_->robots.size(); ++i)
     poses.push_back(i == 0 && impl_->arena.fixed_start ? *impl_->arena.fixed_start
-                                                       : impl_->random_free_pose(rng, 0.005, i, poses));
+                                                       : impl_->random_free_pose(rng, kStartMargin_m, i, poses));
   impl_->reset(poses);
   return poses.front();
 }

@@ -40,6 +40,10 @@ struct RobotState {
   FloorState floor;                        // zones, lights' reach, sweep grid, energy
 };
 
+// The clearance a random start keeps from the walls, the obstacles and the robots placed before
+// it (random_free_pose's default; the compiler sizes a group's room by it).
+inline constexpr double kStartMargin_m = 0.005;
+
 // One robot's wheel commands (or, for the acceleration drive, turn and speed), in [-1, 1].
 struct DriveCommand {
   double left = 0.0;
@@ -60,10 +64,10 @@ class World {
 
   // A uniformly random pose whose body clears every wall and obstacle by `margin_m`.
   // Throws std::runtime_error if no such pose is found (the arena has no free space).
-  [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m = 0.005) const;
+  [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m = kStartMargin_m) const;
   // For every robot in turn, a uniformly random pose whose body clears every wall and
   // obstacle, and the robots before it, by `margin_m`; robot 0 draws what random_free_pose does.
-  [[nodiscard]] std::vector<Pose> random_free_poses(Rng& rng, double margin_m = 0.005) const;
+  [[nodiscard]] std::vector<Pose> random_free_poses(Rng& rng, double margin_m = kStartMargin_m) const;
 
   [[nodiscard]] std::size_t robots() const noexcept;
 
