@@ -191,6 +191,8 @@ Subject genome_subject(const fs::path& file, const ReplayRequest& o) {
 
 // The first difference between a replay and the stored one, or empty when bit-identical.
 std::string first_difference(std::span<const eval::TraceStep> now, const store::StoredReplay& stored) {
+  // A stored replay keeps at most eval::kMaxReplayRows rows, cut as trace_rows_kept cuts.
+  now = now.first(eval::trace_rows_kept(now, eval::kMaxReplayRows));
   if (now.size() != stored.steps.size())
     return fmt::format("{} steps instead of the stored {}", now.size(), stored.steps.size());
   for (std::size_t i = 0; i < now.size(); ++i) {
@@ -199,12 +201,15 @@ std::string first_difference(std::span<const eval::TraceStep> now, const store::
     // An older esc stored each epoch's last step before the epoch's end terms were counted.
     const bool epoch_end = i + 1 == now.size() || now[i + 1].epoch != a.epoch;
     const bool fitness = a.fitness == b.fitness || (epoch_end && !stored.end_terms_counted);
-    const bool same = a.epoch == b.epoch && a.step == b.step && a.pose.x_m == b.pose.x_m && a.pose.y_m == b.pose.y_m &&
+    const bool same = a.epoch == b.epoch && a.step == b.step && a.robot == b.robot && a.group == b.group &&
+                      a.pose.x_m == b.pose.x_m && a.pose.y_m == b.pose.y_m &&
                       a.pose.heading_rad == b.pose.heading_rad && a.ir == b.ir && a.left_command == b.left_command &&
                       a.right_command == b.right_command && a.left_speed_mps == b.left_speed_mps &&
                       a.right_speed_mps == b.right_speed_mps && a.action == b.action && fitness &&
                       a.collided == b.collided && a.energy == b.energy;
-    if (!same) return fmt::format("it differs from the stored replay at epoch {}, step {}", a.epoch + 1, a.step + 1);
+    if (!same)
+      return fmt::format("it differs from the stored replay at epoch {}, step {}{}", a.epoch + 1, a.step + 1,
+                         a.grouped ? fmt::format(", robot {}", a.robot + 1) : std::string());
   }
   return {};
 }
@@ -247,10 +252,6 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                         controller->genome_size(), controller->architecture()));
     return done;
   }
-  if (spec.robots > 1)
-    throw Error(ErrorKind::Request, fmt::format("experiment `{}` has a group of {} robots, and replays of a group are "
-                                                "not recorded yet (docs/groups.md); its results and exports are complete",
-                                                spec.name, spec.robots));
   eval::Evaluator evaluator(spec);
   Collect trace;
   const eval::Evaluation result = evaluator.evaluate(*controller, s.genome, s.seed, &trace);
@@ -295,9 +296,10 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
   frame.title = fmt::format("{} ({}), run {}{}, in experiment {}", s.controller, controller->architecture(), s.run + 1,
                             s.member.empty() ? "" : ", " + s.member, spec.name);
   const int decimals = report::fitness_decimals(result.fitness, 2);
-  frame.subtitle = fmt::format("fitness {:.{}f} over {} epoch{} of {} steps; {} drawn; arena {}; evaluation seed {}",
+  frame.subtitle = fmt::format("fitness {:.{}f} over {} epoch{} of {} steps; {} drawn; arena {}{}; evaluation seed {}",
                                result.fitness, decimals, spec.epochs, spec.epochs == 1 ? "" : "s", spec.steps,
-                               epochs_text(epochs, spec.epochs), spec.arena_name, s.seed);
+                               epochs_text(epochs, spec.epochs), spec.arena_name,
+                               spec.robots > 1 ? fmt::format(", {} robots", spec.robots) : std::string(), s.seed);
   frame.arena = spec.arena;
   frame.robot_radius_m = spec.robot.body_radius_m;
   frame.robot_outline_m = spec.robot.outline;

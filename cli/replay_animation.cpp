@@ -66,16 +66,18 @@ std::string tail_of(const fs::path& log) {
   return text.size() > 600 ? "..." + text.substr(text.size() - 600) : text;
 }
 
-// The frames: each shows the path of the current epoch so far and the robot at its end.
+// The frames: each shows the path of the current epoch so far and the robot at its end (a
+// group's every robot: a frame ends with a step's last robot).
 std::vector<fs::path> write_frames(const report::TrajectoryFigure& figure, const fs::path& dir) {
   const std::size_t n = figure.steps.size();
-  const std::size_t stride = (n + kMostFrames - 1) / kMostFrames;
+  const std::size_t robots = eval::trace_robots(figure.steps);
+  const std::size_t stride = (n / robots + kMostFrames - 1) / kMostFrames;
   std::vector<fs::path> frames;
   std::size_t epoch_begin = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (i > 0 && figure.steps[i].epoch != figure.steps[i - 1].epoch) epoch_begin = i;
     const bool epoch_end = i + 1 == n || figure.steps[i + 1].epoch != figure.steps[i].epoch;
-    if (i % stride != 0 && !epoch_end) continue;
+    if ((i + 1) % robots != 0 || ((i / robots) % stride != 0 && !epoch_end)) continue;
     report::TrajectoryFigure frame = figure;
     frame.steps = figure.steps.subspan(epoch_begin, i - epoch_begin + 1);
     frames.push_back(dir / fmt::format("frame-{:05}.svg", frames.size()));

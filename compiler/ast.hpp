@@ -168,11 +168,19 @@ struct FitnessTerm {
   SourceRange where;                // the `step` or `stop` keyword
 };
 
+// `over robots min`: how a group's robots' terms make the group's.
+struct FitnessOver {
+  Name what;                        // `robots`
+  Name reduce;                      // mean, sum, min, max
+  SourceRange where;
+};
+
 struct FitnessDecl : DeclHead {
   std::vector<FitnessTerm> steps;   // more than one is an error
   std::vector<FitnessTerm> stops;
   std::vector<FitnessTerm> epoch_ends;        // `epoch:`, at most one
   std::vector<FitnessTerm> evaluation_ends;   // `evaluation:`, at most one
+  std::vector<FitnessOver> overs;             // `over robots R`, at most one
 };
 
 struct Input {
@@ -245,7 +253,7 @@ struct DeclaredRange {
 struct ExpItem {
   enum class Kind {
     Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Success, StopAtSuccess, Evolve, Runs, Seed, Compare,
-    StartFrom
+    StartFrom, Formation
   };
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword
@@ -256,7 +264,8 @@ struct ExpItem {
   // Compare: the algorithm `by` names for controller `refs[i]`; empty text when none.
   std::vector<Name> algorithms;
   std::vector<Setting> settings;    // robot { ... } overrides
-  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed / success's threshold
+  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed / success's threshold / formation's spacing
+  std::optional<Value> list;        // Formation: `at [(x, y, heading), ...]`
   std::vector<EsOption> options;    // evolve es(...)
   std::optional<Quantity> generations;
   bool evaluate_only = false;       // StartFrom: `evaluate from ...` rather than `start from ...`

@@ -1,6 +1,9 @@
 #include "compiler/experiment_settings.hpp"
 
+#include <array>
 #include <limits>
+
+#include <fmt/format.h>
 
 #include "compiler/algorithm_options.hpp"
 #include "compiler/lower_evolution.hpp"
@@ -29,6 +32,11 @@ std::string count_text(const X& x) {
 
 }  // namespace
 
+const std::vector<std::string>& formation_words() {
+  static const std::vector<std::string> words = {"random", "line", "circle", "at"};   // sim::FormationKind's order
+  return words;
+}
+
 const std::vector<ExperimentSetting>& experiment_settings() {
   static const std::vector<ExperimentSetting> table = {
       {"epochs", "evaluations of a controller per generation, each from a new start",
@@ -52,6 +60,45 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          return n.has_value();
        },
        [](const X& x) { return x.robots == 1 ? std::string() : count_text<&X::robots>(x); }},
+      // The formation's rows, resolved only when not random, so that runs from before them keep
+      // their settings; check_formation (setting_keys.cpp) checks them against the group.
+      {"formation", "where a group's robots start each epoch: random, line, circle or at (docs/groups.md)",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         const auto i = read_word(v, r.key, formation_words(), k);
+         if (i) x.formation.kind = static_cast<sim::FormationKind>(*i);
+         return i.has_value();
+       },
+       [](const X& x) {
+         return x.formation.kind == sim::FormationKind::Random
+                    ? std::string()
+                    : formation_words()[static_cast<std::size_t>(x.formation.kind)];
+       }},
+      {"formation_spacing", "a line's distance between neighbours' centres, a circle's radius",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         const auto d = read_quantity(v, r.key, Dim::Length, k);
+         if (d && !(*d > 0.0)) {
+           k.error(v.where, fmt::format("`{}` is a length greater than 0, as in 10cm", r.key));
+           return false;
+         }
+         if (d) x.formation.spacing_m = *d;
+         return d.has_value();
+       },
+       [](const X& x) { return x.formation.spacing_m > 0.0 ? fmt::format("{} m", x.formation.spacing_m) : std::string(); }},
+      {"formation_at", "each robot's start pose (x, y, heading), one per robot, for `formation at`",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         static constexpr std::array kDims = {Dim::Length, Dim::Length, Dim::Angle};
+         const auto rows = read_tuples(v, r.key, {kDims, 0, "[(20cm, 20cm, 90deg), (40cm, 20cm, 90deg)]"}, k);
+         if (!rows) return false;
+         x.formation.at.clear();
+         for (const std::vector<double>& p : *rows) x.formation.at.push_back({p[0], p[1], p[2]});
+         return true;
+       },
+       [](const X& x) {
+         std::string t;
+         for (const sim::Pose& p : x.formation.at)
+           t += fmt::format("{}({} m, {} m, {} rad)", t.empty() ? "[" : ", ", p.x_m, p.y_m, p.heading_rad);
+         return t.empty() ? t : t + "]";
+       }},
       {"generations", "the experiment's generations (every network's), and GP's (the trees')",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
          const auto n = read_count(v, r.key, 1, kIntMax, k);

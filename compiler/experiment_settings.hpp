@@ -3,7 +3,8 @@
 // experiment block, `--set KEY=VALUE` and resolved settings under one name), and
 // `generations` (`--set generations`, for the ES and the GP alike; scripts give it in
 // `evolve es(...)` / `evolve gp(...)`), `stop_at_success` (`stop at success` in a script),
-// `members_every` and `networks`. Each row reads and checks its value.
+// `members_every`, `networks` and a group's `formation`, `formation_spacing` and
+// `formation_at` (`formation line 10cm` in a script). Each row reads and checks its value.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,8 @@ struct ExperimentSetting {
 };
 
 [[nodiscard]] const std::vector<ExperimentSetting>& experiment_settings();
+// The formations' words, in sim::FormationKind's order: random, line, circle, at.
+[[nodiscard]] const std::vector<std::string>& formation_words();
 [[nodiscard]] const ExperimentSetting* find_experiment_setting(std::string_view key);
 
 }  // namespace esc::compiler

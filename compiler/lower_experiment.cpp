@@ -38,6 +38,7 @@ std::string_view item_word(const ast::ExpItem& item) {
     case K::Seed: return "seed";
     case K::Compare: return "compare";
     case K::StartFrom: return item.evaluate_only ? "evaluate from" : "start from";
+    case K::Formation: return "formation";
   }
   return "";
 }
@@ -139,6 +140,9 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
       case K::Runs:
         if (!item.numbers.empty()) setting("runs", item.numbers[0]);
         break;
+      case K::Formation:
+        if (!lower_formation(item, x)) ok = false;
+        break;
       case K::Seed:
         if (!item.numbers.empty()) setting("seed", item.numbers[0]);
         break;
@@ -217,7 +221,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     const ChoiceNames choices = number_choices(x);
     const Navigation navigation = navigation_of(x);
     if (fitness_decl != nullptr) {
-      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices, &navigation);
+      const auto& f = parts_.fitnesses.lower(*fitness_decl, arena_decl, &d, &choices, &navigation, &x.cluster_radii);
       if (f) x.fitness = f->spec;
       else ok = false;
       if (f) fitness = &*f;
@@ -259,11 +263,45 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   // Only when given, so that experiments without end terms resolve as they always did.
   if (!fitness->epoch_text.empty()) x.resolved_settings["fitness.epoch"] = fitness->epoch_text;
   if (!fitness->evaluation_text.empty()) x.resolved_settings["fitness.evaluation"] = fitness->evaluation_text;
+  if (!fitness->over_text.empty()) x.resolved_settings["fitness.over_robots"] = fitness->over_text;
   resolve_settings(x);
   resolve_objectives(x, objective_items);
   resolve_success(x);
   slot = std::move(x);
   return slot;
+}
+
+// `formation line 10cm`, `formation circle 15cm`, `formation at [(x, y, heading), ...]`,
+// `formation random`: read by the rows `formation`, `formation_spacing` and `formation_at`.
+bool ExperimentLowering::lower_formation(const ast::ExpItem& item, eval::ExperimentSpec& x) {
+  const ast::Name& kind = item.refs[0];
+  ast::Value word;
+  word.kind = ast::Value::Kind::Word;
+  word.text = kind.text;
+  word.where = kind.where;
+  const ExperimentSetting& row = *find_experiment_setting("formation");
+  if (kind.text.empty() || !row.read(row, x, word, sink_)) return false;
+  const std::string_view shape = kind.text == "line" || kind.text == "circle" ? "spacing" : kind.text == "at" ? "list" : "";
+  const bool spaced = !item.numbers.empty(), listed = item.list.has_value();
+  if ((shape == "spacing") != spaced || (shape == "list") != listed) {
+    Diagnostic& d = sink_.error(kind.where, shape == "spacing" ? fmt::format("`formation {}` takes a length", kind.text)
+                                            : shape == "list"  ? std::string("`formation at` takes a pose per robot")
+                                                               : std::string("`formation random` takes nothing more"));
+    d.help.push_back(shape == "spacing" ? fmt::format("write `formation {} 10cm` ({})", kind.text,
+                                                      kind.text == "line" ? "between neighbours' centres" : "its radius")
+                     : shape == "list"  ? std::string("write `formation at [(20cm, 20cm, 90deg), (40cm, 20cm, 90deg)]`")
+                                        : std::string("write `formation random`"));
+    return false;
+  }
+  if (spaced) {
+    const ExperimentSetting& spacing = *find_experiment_setting("formation_spacing");
+    if (!item.numbers[0].finite || !spacing.read(spacing, x, as_value(item.numbers[0]), sink_)) return false;
+  }
+  if (listed) {
+    const ExperimentSetting& at = *find_experiment_setting("formation_at");
+    if (!at.read(at, x, *item.list, sink_)) return false;
+  }
+  return true;
 }
 
 ChoiceNames ExperimentLowering::number_choices(eval::ExperimentSpec& x) {

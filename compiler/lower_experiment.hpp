@@ -45,6 +45,8 @@ class ExperimentLowering {
   // `start from` / `evaluate from experiment E`: E compares every controller compared
   // here, and an evaluation evolves nothing, by any algorithm (reported).
   void check_start_from(const ast::ExperimentDecl& from, const Items& first, const EvolveItems& evolves);
+  // `formation ...`: where the group's robots start, read by the formation's setting rows.
+  bool lower_formation(const ast::ExpItem& item, eval::ExperimentSpec& x);
   // Gives each distinct action or behavior of the compared controllers an experiment-wide id
   // (control::Choice::id; x.choice_ids of them) and returns the names that read them.
   static ChoiceNames number_choices(eval::ExperimentSpec& x);

@@ -1,5 +1,6 @@
 #include "compiler/lower_expr.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -342,7 +343,40 @@ class Lowerer {
     return load(s);
   }
 
+  // `clusters(15cm)`: the slot of the radius among the experiment's (added when new).
+  Node within_radius(const ast::Expr& e, const expr::ParametrisedObservable& o) {
+    if (scope_.use == ExprScope::Use::Behavior) {
+      sink_.error(e.where, fmt::format("`{}(...)` is the group's, read by fitness terms, objectives and descriptors, "
+                                       "not by a behavior", o.name));
+      return failed();
+    }
+    // A length written with its unit: the radius is the experiment's, fixed when it compiles.
+    const ast::Expr* arg = e.args.size() == 1 ? e.args[0].get() : nullptr;
+    const auto unit = arg != nullptr && arg->kind == ast::Expr::Kind::Number ? find_unit(arg->unit) : std::nullopt;
+    if (!unit || unit->dim != Dim::Length || !(arg->number > 0.0) || !std::isfinite(arg->number * unit->to_si)) {
+      sink_.error(arg != nullptr ? arg->where : e.where,
+                  fmt::format("`{}` takes a radius, a positive length with its unit, as in `{}(15cm)`", o.name, o.name));
+      return failed();
+    }
+    const Node r = constant(arg->number * unit->to_si);
+    if (scope_.cluster_radii == nullptr) return load(o.first);
+    std::vector<double>& radii = *scope_.cluster_radii;
+    auto at = std::find(radii.begin(), radii.end(), *r.constant);
+    if (at == radii.end()) {
+      if (radii.size() == o.count) {
+        std::string listed;
+        for (const double v : radii) listed += fmt::format("{}{} m", listed.empty() ? "" : ", ", v);
+        sink_.error(e.args[0]->where, fmt::format("an experiment counts clusters within at most {} radii; it reads {} "
+                                                  "already", o.count, listed));
+        return failed();
+      }
+      at = radii.insert(radii.end(), *r.constant);
+    }
+    return load(o.first + static_cast<expr::Slot>(at - radii.begin()));
+  }
+
   Node parametrised(const ast::Expr& e, const expr::ParametrisedObservable& o) {
+    if (o.argument == "radius") return within_radius(e, o);
     if (e.args.size() != 1 || !e.args[0] || e.args[0]->kind != ast::Expr::Kind::Name) {
       sink_.error(e.where, fmt::format("`{}` takes the name of a {} of the arena, as in `{}(NAME)`", o.name,
                                        o.argument, o.name));

@@ -55,6 +55,10 @@ struct ExprScope {
   // from the slot after the last one's (the first: eval::ExperimentSpec::step_aggregate_slot()).
   // Null where none may be read: a step term, a stop condition, a behavior.
   std::vector<expr::StepAggregate>* step_aggregates = nullptr;
+  // The experiment's radii a group's `clusters(15cm)` & co. are counted within, each read from
+  // its index's slots (eval::ExperimentSpec::cluster_radii), a new one added. Null outside an
+  // experiment: then the radius is only checked (and a behavior may not read them).
+  std::vector<double>* cluster_radii = nullptr;
 };
 
 // The first slot of an end term's step aggregates among the choices `choices` numbers.

@@ -2,7 +2,12 @@
 // evaluation: EXPR }` -> eval::FitnessSpec.
 #include "compiler/lower_fitness.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
+
+#include "compiler/lower_objectives.hpp"
+#include "compiler/names.hpp"
 
 namespace esc::compiler {
 
@@ -22,12 +27,36 @@ void end_term(const std::vector<ast::FitnessTerm>& terms, std::string_view word,
   text = terms[0].text;
 }
 
+// `over robots R`: how a group's robots' terms make the group's (mean, sum, min, max).
+void over_robots(const std::vector<ast::FitnessOver>& overs, Sink& sink, LoweredFitness& f) {
+  for (std::size_t i = 1; i < overs.size(); ++i)
+    sink.error(overs[i].where, "the fitness already says how its terms are reduced over the robots")
+        .notes.emplace_back(overs[0].where, "first said here");
+  if (overs.empty() || overs[0].what.text.empty() || overs[0].reduce.text.empty()) return;
+  const ast::FitnessOver& o = overs[0];
+  if (o.what.text != "robots") {
+    sink.error(o.what.where, fmt::format("`over` reduces a group's terms over its robots, not over `{}`", o.what.text))
+        .help.push_back(fmt::format("write `over robots {}`", o.reduce.text));
+    return;
+  }
+  const std::vector<std::string> names(reduction_names().begin(), reduction_names().begin() + 4);
+  const auto r = std::find(names.begin(), names.end(), o.reduce.text);
+  if (r == names.end()) {
+    Diagnostic& diag = sink.error(o.reduce.where, fmt::format("`{}` is not a reduction over the robots", o.reduce.text));
+    suggest(diag, o.reduce.text, names, {{}, fmt::format("reductions over the robots: {}", quoted_list(names))});
+    return;
+  }
+  f.spec.over_robots = static_cast<eval::Reduction>(r - names.begin());
+  f.over_text = *r;
+}
+
 }  // namespace
 
 const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena,
                                                             const ast::ExperimentDecl* experiment,
                                                             const ChoiceNames* choices,
-                                                            const Navigation* navigation) {
+                                                            const Navigation* navigation,
+                                                            std::vector<double>* cluster_radii) {
   const Key key{&d, arena, experiment};
   if (auto it = fitnesses_.find(key); it != fitnesses_.end()) return it->second;
   if ((arena != nullptr || experiment != nullptr) && !lower(d)) return fitnesses_[key];   // reported without them
@@ -42,6 +71,7 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
   scope.choices = choices;
   scope.navigation = navigation;
   scope.sensor_names = &names_.sensor_names();
+  scope.cluster_radii = cluster_radii;
   if (d.steps.empty())
     sink_.error(d.name.where, fmt::format("fitness `{}` has no `step:` term", d.name.text))
         .help.push_back("add `step: forward_speed`, the value added up at every control step");
@@ -60,6 +90,7 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
   end_term(d.epoch_ends, "epoch", scope, sink_, f.spec.epoch_end, f.spec.epoch_aggregates, f.epoch_text);
   end_term(d.evaluation_ends, "evaluation", scope, sink_, f.spec.evaluation_end, f.spec.evaluation_aggregates,
            f.evaluation_text);
+  over_robots(d.overs, sink_, f);
   if (sink_.errors() == errors) slot = std::move(f);
   return slot;
 }

@@ -21,6 +21,7 @@ struct LoweredFitness {
   std::string step_text;                  // source text, for resolved settings
   std::vector<std::string> stop_texts;
   std::string epoch_text, evaluation_text;   // "" when there is no such term
+  std::string over_text;                     // `over robots R`'s R; "" when not given (mean)
 };
 
 class FitnessLowering {
@@ -28,12 +29,13 @@ class FitnessLowering {
   FitnessLowering(Sink& sink, Resolver& names, ArenaLowering& arenas) : sink_(sink), names_(names), arenas_(arenas) {}
 
   // Memoised per (fitness, arena, experiment); what depends on neither is reported once.
-  // `experiment` names whose compared controllers `choices` are, and whose goal and sensors
-  // `navigation` is.
+  // `experiment` names whose compared controllers `choices` are, whose goal and sensors
+  // `navigation` is, and whose clusters' radii `cluster_radii` holds (ExprScope).
   const std::optional<LoweredFitness>& lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena = nullptr,
                                              const ast::ExperimentDecl* experiment = nullptr,
                                              const ChoiceNames* choices = nullptr,
-                                             const Navigation* navigation = nullptr);
+                                             const Navigation* navigation = nullptr,
+                                             std::vector<double>* cluster_radii = nullptr);
 
  private:
   using Key = std::tuple<const ast::FitnessDecl*, const ast::ArenaDecl*, const ast::ExperimentDecl*>;

@@ -126,7 +126,7 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
     }
     const auto* decl = names.lookup<ast::FitnessDecl>(ref);
     if (decl == nullptr) continue;
-    const auto& f = fitnesses.lower(*decl, &arena, &experiment, &choices, &navigation);
+    const auto& f = fitnesses.lower(*decl, &arena, &experiment, &choices, &navigation, &x.cluster_radii);
     if (!f) continue;
     if (!f->spec.stop_when.empty()) {
       sink.error(ref.where, fmt::format("objective `{}` has a `stop epoch when` condition", ref.text))
@@ -146,6 +146,7 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
   scope.choices = &choices;
   scope.navigation = &navigation;
   scope.sensor_names = &names.sensor_names();
+  scope.cluster_radii = &x.cluster_radii;
   std::map<std::string, const ast::ExpItem*> described;
   for (const ast::ExpItem* item : items.descriptors) {
     const ast::Name& name = item->refs[0];
@@ -218,9 +219,15 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
 void resolve_objectives(eval::ExperimentSpec& x, const ObjectiveItems& items) {
   if (!x.objectives.empty()) {
     std::string text;
-    for (const eval::ObjectiveSpec& o : x.objectives)
+    for (std::size_t i = 0; i < x.objectives.size(); ++i) {
+      const eval::ObjectiveSpec& o = x.objectives[i];
+      const eval::FitnessSpec& f = i == 0 ? x.fitness : x.further[i - 1];
       text += fmt::format("{}{}{}{}{}", text.empty() ? "" : "; ", o.name, o.minimize ? " minimize" : "",
                           o.range ? " " : "", o.range ? range_text(*o.range) : std::string());
+      // Only where given, so that objectives without it resolve as they always did.
+      if (f.over_robots != eval::Reduction::Mean)
+        text += fmt::format(" over robots {}", reduction_names()[static_cast<std::size_t>(f.over_robots)]);
+    }
     x.resolved_settings["objectives"] = text;
   }
   std::string text;

@@ -446,6 +446,8 @@ class Builder {
         f.epoch_ends.push_back({expr(s3->expr()), source(s3->expr()), at(s3->getStart())});
       else if (auto* s4 = dynamic_cast<P::FitnessEvaluationContext*>(it))
         f.evaluation_ends.push_back({expr(s4->expr()), source(s4->expr()), at(s4->getStart())});
+      else if (auto* s5 = dynamic_cast<P::FitnessOverContext*>(it))
+        f.overs.push_back({name(s5->what), name(s5->reduce), span(s5)});
     }
     return f;
   }
@@ -595,6 +597,11 @@ class Builder {
         item.refs.push_back(name(r->ident()));
         item.settings = settings(r->settingsBlock());
         if (r->NUMBER() != nullptr) item.numbers.push_back(number(r->NUMBER()));
+      } else if (auto* fm = dynamic_cast<P::ExpFormationContext*>(it)) {
+        item.kind = K::Formation;
+        item.refs.push_back(name(fm->kind));
+        if (fm->spacing != nullptr) item.numbers.push_back(quantity(fm->spacing));
+        if (fm->list != nullptr) item.list = list(fm->list);
       } else if (auto* e = dynamic_cast<P::ExpEpochsContext*>(it)) {
         item.kind = K::Epochs;
         for (auto* n : e->NUMBER()) item.numbers.push_back(number(n));

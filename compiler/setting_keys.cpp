@@ -196,9 +196,20 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
 }
 
 void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
+  if (const std::string why = sim::formation_problem(spec.formation, static_cast<std::size_t>(spec.robots), spec.arena,
+                                                     spec.robot.body_radius_m, sim::kStartMargin_m);
+      !why.empty()) {
+    sink.error(where, fmt::format("the group's `formation {}` cannot be taken in arena `{}`: {}",
+                                  formation_words()[static_cast<std::size_t>(spec.formation.kind)], spec.arena_name, why))
+        .help.push_back(spec.formation.kind == sim::FormationKind::At
+                            ? "give one pose per robot, each clear of the walls, the obstacles and the others"
+                            : "change the spacing, or use fewer robots or a larger arena");
+    return;
+  }
   if (spec.robots == 1) return;
   // Random starts place robot after robot by rejection: past about half the floor they jam, and
   // an epoch would fail to start hours into a run. Refused here instead, with room to spare.
+  // A formation places them together, checked above.
   constexpr double kMaxCover = 0.4;
   const sim::ArenaSpec& a = spec.arena;
   double floor_m2 = a.width_m * a.height_m;
@@ -206,7 +217,7 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   for (const sim::CylinderObstacle& c : a.cylinders) floor_m2 -= std::numbers::pi * c.radius_m * c.radius_m;
   const double disc = spec.robot.body_radius_m + sim::kStartMargin_m;
   const double cover = spec.robots * std::numbers::pi * disc * disc / std::max(floor_m2, 1e-12);
-  if (cover > kMaxCover) {
+  if (cover > kMaxCover && spec.formation.kind == sim::FormationKind::Random) {
     sink.error(where, fmt::format("{} robots of radius {:g} cm would cover {:.0f}% of the arena's free floor; random "
                                   "starts place them at most {:.0f}% of it",
                                   spec.robots, spec.robot.body_radius_m * 100, cover * 100, kMaxCover * 100))

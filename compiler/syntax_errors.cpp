@@ -39,7 +39,8 @@ bool is_wordish(std::size_t type) {
     case EscParser::CONDITIONS: case EscParser::CONDITION: case EscParser::SWEEP: case EscParser::AS:
     case EscParser::BY: case EscParser::EVALUATION: case EscParser::OBJECTIVE: case EscParser::MAXIMIZE:
     case EscParser::MINIMIZE: case EscParser::DESCRIPTOR: case EscParser::IN: case EscParser::WALL:
-    case EscParser::GOAL: case EscParser::TO: case EscParser::THICKNESS: case EscParser::SUCCESS: return true;
+    case EscParser::GOAL: case EscParser::TO: case EscParser::THICKNESS: case EscParser::SUCCESS:
+    case EscParser::OVER: case EscParser::FORMATION: return true;
     default: return false;
   }
 }

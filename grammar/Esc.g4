@@ -85,6 +85,8 @@ fitnessItem
   // Terms added once at the end of each epoch, and of the evaluation, over its aggregates.
   | EPOCH ':' expr ';'?           # fitnessEpoch
   | EVALUATION ':' expr ';'?      # fitnessEvaluation
+  // How a group's robots' terms make the group's (`over robots min`; mean by default).
+  | OVER what=ident ':'? reduce=ident ';'?   # fitnessOver
   ;
 
 // ---- controllers --------------------------------------------------------------------
@@ -132,6 +134,9 @@ expItem
   : ARENA ident ';'?                                                             # expArena
   // `robot khepera x 3`: a group of three (docs/groups.md).
   | ROBOT ident settingsBlock? (X NUMBER)? ';'?                                    # expRobot
+  // Where a group's robots start (docs/groups.md): `formation line 10cm`, `formation circle
+  // 15cm`, `formation at [(20cm, 20cm, 90deg), (40cm, 20cm, 90deg)]`; random by default.
+  | FORMATION kind=ident (spacing=quantity | list=quantityList)? ';'?               # expFormation
   | EPOCHS NUMBER (X NUMBER STEPS)? ';'?                                          # expEpochs
   | STEPS NUMBER ';'?                                                             # expSteps
   // The fitness (the first objective), with the range its values lie in when declared.
@@ -210,7 +215,7 @@ ident
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
   | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN | WALL | GOAL | TO | THICKNESS
-  | SUCCESS
+  | SUCCESS | OVER | FORMATION
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -298,6 +303,8 @@ IN : 'in' ;
 WALL : 'wall' ;
 GOAL : 'goal' ;
 TO : 'to' ;
+OVER : 'over' ;
+FORMATION : 'formation' ;
 THICKNESS : 'thickness' ;
 
 ARROW : '->' ;

@@ -9,6 +9,7 @@ an experiment's epochs like a Gymnasium environment.
     best = run.best("SC_8_14_6", 1)
     esc.evaluate(script, "obstacle_avoidance", "SC_8_14_6", [best.genome], seed=best.evaluation_seed)
     env = esc.Env(script, "obstacle_avoidance", "SC_8_14_6", seed=best.evaluation_seed)
+    group = esc.ParallelEnv(esc.compile("experiments/examples/groups.esc"), "dispersion")   # PettingZoo-shaped
 
 Errors: esc.Error (esc refuses something: the message the esc program prints), its subclass
 esc.ScriptError (a script that does not compile: file, line, column, message), ValueError for
@@ -22,13 +23,14 @@ from esc.env import Box, Env, Policy
 from esc.errors import Diagnostic, Error, ScriptError, ScriptWarning
 from esc.evaluation import evaluate, evaluation_seed, measure, run_seed
 from esc.network import Network
+from esc.parallel_env import ParallelEnv
 from esc.results import BestEvaluation, Member, Run, open
 from esc.running import Generation, resume, run
 from esc.script import Controller, Script, compile
 
 __all__ = [
     "__version__",
-    "Box", "Env", "Policy",
+    "Box", "Env", "ParallelEnv", "Policy",
     "Diagnostic", "Error", "ScriptError", "ScriptWarning",
     "evaluate", "evaluation_seed", "measure", "run_seed", "Network",
     "BestEvaluation", "Member", "Run", "open",

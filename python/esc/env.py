@@ -40,42 +40,23 @@ class Box:
         return f"Box({self.low.min()}, {self.high.max()}, {self.shape}, float64)"
 
 
-class Env:
-    """One experiment's epochs as episodes, stepped from Python like a Gymnasium environment.
+class _Episodes:
+    """What Env and ParallelEnv share: an experiment's epochs as episodes of a seed, the
+    controller, the names of an observation's entries, and policies from genomes."""
 
-    Episode k after reset(seed=S) (or after construction with seed S) is epoch k of esc's
-    evaluation with evaluation seed S: the same start pose, zones, noise and `epoch`
-    observable (esc.evaluate's `seed`). An episode ends when one of the fitness's stop
-    conditions fires (or the accumulator runs empty): terminated; or after the experiment's
-    steps per epoch: truncated. The reward of a step is the fitness's per-step term;
-    info["fitness"] sums them over the episode as esc does (epoch and evaluation end terms,
-    which need the whole epoch, are not in the rewards: esc.evaluate gives the whole fitness).
-
-    Without `controller`, an action is the two wheel commands (left, right) in [-1, 1] and an
-    observation the robot's senses: its IR sensors as its scripts name them (ir[0..7], the
-    e-puck's prox[0..7]), as many light[i], the rangefinders range[i] and goal radars radar[i]
-    the robot declares (the maze navigator's), and energy (observation_names).
-    With a network controller, an observation is its network's inputs and an action its
-    network's activated outputs, which its head turns into wheel commands as in a run: two
-    commands (classical), one score per action then the actions' parameters (symbolic: the
-    highest score acts), one score per behavior (supervisor). policy(genome) computes them
-    from a genome, so driving Env with it replays esc's evaluation of that genome step for
-    step. Tree controllers have no network: use controller=None, or esc.evaluate.
-
-    `experiment` None is the script's one experiment (ValueError when it declares several).
-    `seed` None draws a fresh one (the `seed` attribute tells it); else an integer in
-    0..2^64-1 (TypeError, ValueError otherwise).
-    """
-
-    def __init__(self, script: Union[Script, PathOrSource], experiment: Optional[str] = None,
-                 controller: Optional[str] = None, seed: Optional[int] = None):
+    def __init__(self, script: Union[Script, PathOrSource], experiment: Optional[str],
+                 controller: Optional[str], seed: Optional[int], group: bool):
         self._script = as_script(script)
         self.experiment = self._script.experiment_named(experiment)
         self.controller = controller
         self._env = _esc.Env(self._script._compiled, self.experiment, controller,
                              secrets.randbits(64) if seed is None else arguments.option("seed", seed))
-        self.observation_space = Box(*self._env.observation_bounds)
-        self.action_space = Box(*self._env.action_bounds)
+        if self._env.robots > 1 and not group:
+            raise ValueError(f"experiment `{self.experiment}` has a group of {self._env.robots} robots: Env drives a "
+                             "robot alone; step the group with esc.ParallelEnv (PettingZoo's parallel API), or "
+                             "evaluate it with esc.evaluate")
+        self._observations = Box(*self._env.observation_bounds)
+        self._actions = Box(*self._env.action_bounds)
 
     @property
     def seed(self) -> int:
@@ -108,6 +89,57 @@ class Env:
         """Episodes begun so far (reset() calls)."""
         return self._env.episodes
 
+    def policy(self, genome) -> "Policy":
+        """The network of `controller` with weights `genome` as a policy for this Env:
+        policy(observation) -> action. Its recurrent state (an Elman network's, a NEAT
+        network's) starts afresh with every episode of this Env, as the network's does with
+        every epoch in esc. For a NEAT network, `genome` is an esc.Network or its flat form.
+        `genome` is checked as esc.evaluate checks a genome (real, finite numbers)."""
+        if self.controller is None:
+            raise ValueError("this Env has no controller: its policy would be a network of which controller? "
+                             "Make the Env with controller=NAME")
+        if isinstance(genome, Network):
+            genome = genome.encoded()
+        return Policy(self, _esc.Policy(self._script._compiled, self.experiment, self.controller,
+                                        arguments.finite("genome", genome)))
+
+    def close(self) -> None:
+        """Nothing to release (Gymnasium's interface)."""
+
+
+class Env(_Episodes):
+    """One experiment's epochs as episodes, stepped from Python like a Gymnasium environment.
+
+    Episode k after reset(seed=S) (or after construction with seed S) is epoch k of esc's
+    evaluation with evaluation seed S: the same start pose, zones, noise and `epoch`
+    observable (esc.evaluate's `seed`). An episode ends when one of the fitness's stop
+    conditions fires (or the accumulator runs empty): terminated; or after the experiment's
+    steps per epoch: truncated. The reward of a step is the fitness's per-step term;
+    info["fitness"] sums them over the episode as esc does (epoch and evaluation end terms,
+    which need the whole epoch, are not in the rewards: esc.evaluate gives the whole fitness).
+
+    Without `controller`, an action is the two wheel commands (left, right) in [-1, 1] and an
+    observation the robot's senses: its IR sensors as its scripts name them (ir[0..7], the
+    e-puck's prox[0..7]), as many light[i], the rangefinders range[i] and goal radars radar[i]
+    the robot declares (the maze navigator's), and energy (observation_names).
+    With a network controller, an observation is its network's inputs and an action its
+    network's activated outputs, which its head turns into wheel commands as in a run: two
+    commands (classical), one score per action then the actions' parameters (symbolic: the
+    highest score acts), one score per behavior (supervisor). policy(genome) computes them
+    from a genome, so driving Env with it replays esc's evaluation of that genome step for
+    step. Tree controllers have no network: use controller=None, or esc.evaluate.
+
+    `experiment` None is the script's one experiment (ValueError when it declares several).
+    `seed` None draws a fresh one (the `seed` attribute tells it); else an integer in
+    0..2^64-1 (TypeError, ValueError otherwise).
+    """
+
+    def __init__(self, script: Union[Script, PathOrSource], experiment: Optional[str] = None,
+                 controller: Optional[str] = None, seed: Optional[int] = None):
+        super().__init__(script, experiment, controller, seed, group=False)
+        self.observation_space = self._observations
+        self.action_space = self._actions
+
     def reset(self, seed: Optional[int] = None, options: Optional[dict] = None) -> Tuple[np.ndarray, dict]:
         """Starts the next episode, or with `seed` the first epoch of that evaluation seed's
         (`options` is accepted for Gymnasium's signature and unused). Returns (observation,
@@ -131,23 +163,6 @@ class Env:
         range and radar (the robot's rangefinders and goal radars; empty without them),
         energy, collided, with info's epoch, step, fitness and action."""
         return self._env.state()
-
-    def policy(self, genome) -> "Policy":
-        """The network of `controller` with weights `genome` as a policy for this Env:
-        policy(observation) -> action. Its recurrent state (an Elman network's, a NEAT
-        network's) starts afresh with every episode of this Env, as the network's does with
-        every epoch in esc. For a NEAT network, `genome` is an esc.Network or its flat form.
-        `genome` is checked as esc.evaluate checks a genome (real, finite numbers)."""
-        if self.controller is None:
-            raise ValueError("this Env has no controller: its policy would be a network of which controller? "
-                             "Make the Env with controller=NAME")
-        if isinstance(genome, Network):
-            genome = genome.encoded()
-        return Policy(self, _esc.Policy(self._script._compiled, self.experiment, self.controller,
-                                        arguments.finite("genome", genome)))
-
-    def close(self) -> None:
-        """Nothing to release (Gymnasium's interface)."""
 
     def __repr__(self) -> str:
         return (f"<esc.Env {self.experiment}, controller {self.controller}, seed {self.seed}: "

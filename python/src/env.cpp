@@ -1,5 +1,6 @@
 #include "python/src/env.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <pybind11/stl.h>
@@ -16,7 +17,7 @@ namespace py = pybind11;
 
 namespace {
 
-using Action = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Action = Env::Action;
 
 // What the robot senses, the observation without a controller: the IR and light sensors,
 // rangefinders, goal radars, ground sensors and bumpers it declares, and the accumulator.
@@ -33,15 +34,6 @@ std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
   add(expr::slot::bumper, robot.bumpers.size());
   slots.push_back(expr::slot::energy);
   return slots;
-}
-
-// A group's Env is PettingZoo's parallel one, keyed by robot (docs/groups.md): not built yet.
-const eval::ExperimentSpec& one_robot(const eval::ExperimentSpec& spec) {
-  if (spec.robots > 1)
-    throw py::value_error("experiment `" + spec.name + "` has a group of " + std::to_string(spec.robots) +
-                          " robots: Env drives one robot (a group's multi-agent Env is not built yet); "
-                          "esc.evaluate evaluates a group");
-  return spec;
 }
 
 const control::ControllerSpec* network_controller(const eval::ExperimentSpec& spec,
@@ -68,12 +60,15 @@ py::array_t<double> array_of(const std::vector<double>& v) {
 Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& experiment,
          const std::optional<std::string>& controller, std::uint64_t seed)
     : script_(script),
-      spec_(&one_robot(find_experiment(*script, experiment))),
+      spec_(&find_experiment(*script, experiment)),
       controller_(network_controller(*spec_, controller)),
       observed_(controller_ != nullptr ? controller_->mlp.inputs : senses(spec_->robot)),
-      world_(spec_->arena, spec_->robot),
+      world_(eval::world_of(*spec_)),
       stepper_(*spec_, world_, reads_of(*spec_, controller_)),
-      seed_(seed) {
+      seed_(seed),
+      commands_(stepper_.robots()),
+      actions_(stepper_.robots(), -1),
+      acting_(stepper_.robots(), -1) {
   if (controller_ == nullptr) return;
   action_size_ = static_cast<std::size_t>(controller_->output_count());
   // The head alone acts on the actions (act()): its network is never run, so any genome of
@@ -84,69 +79,124 @@ Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& exper
         genome::graph::Activation::Tanh));
   else
     unused_weights_.assign(controller_->genome_size(), 0.0);
-  head_ = std::make_unique<control::Controller>(*controller_, unused_weights_, &tree_control::make_actor);
+  for (std::size_t i = 0; i < stepper_.robots(); ++i)
+    heads_.push_back(std::make_unique<control::Controller>(*controller_, unused_weights_, &tree_control::make_actor));
 }
 
-py::tuple Env::reset(std::optional<std::uint64_t> seed) {
+void Env::require_alone(const char* call) const {
+  if (robots() > 1)
+    throw py::value_error("experiment `" + spec_->name + "` has a group of " + std::to_string(robots()) +
+                          " robots: " + call + " drives a robot alone; step the group with esc.ParallelEnv "
+                          "(PettingZoo's parallel API), or evaluate it with esc.evaluate");
+}
+
+void Env::begin(std::optional<std::uint64_t> seed) {
   if (seed) {
     seed_ = *seed;
     next_epoch_ = 0;
   }
   stepper_.begin(seed_, next_epoch_++);
-  if (head_) head_->reset();
+  for (const auto& head : heads_) head->reset();
   ++episodes_;
   running_ = true;
   fitness_ = 0.0;
-  command_ = {};
-  action_ = -1;
+  std::fill(commands_.begin(), commands_.end(), control::WheelCommand{});
+  std::fill(actions_.begin(), actions_.end(), -1);
   stepper_.observe();
+}
+
+eval::StepOutcome Env::advance(std::span<const Action> actions) {
+  if (!running_)
+    throw std::runtime_error(episodes_ == 0 ? "call reset() before step()" : "the episode has ended: call reset()");
+  for (std::size_t i = 0; i < actions.size(); ++i) {
+    const Action& action = actions[i];
+    if (action.ndim() != 1 || static_cast<std::size_t>(action.size()) != action_size_)
+      throw py::value_error(std::string(robots() > 1 ? "robot " + std::to_string(i + 1) + "'s action" : "the action") +
+                            " is " + std::to_string(action_size_) + " values (" +
+                            (controller_ != nullptr ? "the outputs of " + controller_->name + "'s network"
+                                                    : std::string("the left and right wheel commands")) +
+                            "), got " + std::to_string(action.size()) + " in " + std::to_string(action.ndim()) +
+                            " dimension(s)");
+    const std::span<const double> a(action.data(), action_size_);
+    if (!heads_.empty()) {
+      commands_[i] = heads_[i]->act(a, stepper_.frame(i));
+      actions_[i] = heads_[i]->last_action();
+    } else {
+      commands_[i] = {a[0], a[1]};
+    }
+    acting_[i] = controller_ != nullptr ? controller_->choice_id(actions_[i]) : -1;
+  }
+  const eval::StepOutcome outcome = stepper_.act(commands_, acting_);
+  fitness_ = eval::add_fitness(fitness_, outcome.term);
+  return outcome;
+}
+
+py::tuple Env::reset(std::optional<std::uint64_t> seed) {
+  require_alone("Env");
+  begin(seed);
   return py::make_tuple(observation(), info());
 }
 
 py::tuple Env::step(const Action& action) {
-  if (!running_)
-    throw std::runtime_error(episodes_ == 0 ? "call reset() before step()" : "the episode has ended: call reset()");
-  if (action.ndim() != 1 || static_cast<std::size_t>(action.size()) != action_size_)
-    throw py::value_error("the action is " + std::to_string(action_size_) + " values (" +
-                          (controller_ != nullptr ? "the outputs of " + controller_->name + "'s network"
-                                                  : std::string("the left and right wheel commands")) +
-                          "), got " + std::to_string(action.size()) + " in " + std::to_string(action.ndim()) +
-                          " dimension(s)");
-  const std::span<const double> a(action.data(), action_size_);
-  if (head_) {
-    command_ = head_->act(a, stepper_.frame());
-    action_ = head_->last_action();
-  } else {
-    command_ = {a[0], a[1]};
-  }
-  const eval::StepOutcome outcome =
-      stepper_.act(command_, controller_ != nullptr ? controller_->choice_id(action_) : -1);
-  fitness_ = eval::add_fitness(fitness_, outcome.term);
+  require_alone("Env");
+  const eval::StepOutcome outcome = advance(std::span<const Action>(&action, 1));
   const bool truncated = !outcome.stop && stepper_.steps_taken() >= spec_->steps;
   running_ = !outcome.stop && !truncated;
   stepper_.observe();
   return py::make_tuple(observation(), outcome.term, outcome.stop, truncated, info());
 }
 
-py::array_t<double> Env::observation() const {
+py::tuple Env::reset_group(std::optional<std::uint64_t> seed) {
+  begin(seed);
+  py::list observations, infos;
+  for (std::size_t i = 0; i < robots(); ++i) {
+    observations.append(observation(i));
+    infos.append(info(i));
+  }
+  return py::make_tuple(observations, infos);
+}
+
+py::tuple Env::step_group(const std::vector<Action>& actions) {
+  if (actions.size() != robots())
+    throw py::value_error("the group has " + std::to_string(robots()) + " robots, but " +
+                          std::to_string(actions.size()) + " actions were given");
+  const eval::StepOutcome outcome = advance(actions);
+  const bool truncated = !outcome.stop && stepper_.steps_taken() >= spec_->steps;
+  running_ = !outcome.stop && !truncated;
+  py::list rewards;
+  for (std::size_t i = 0; i < robots(); ++i) rewards.append(stepper_.term(i));
+  stepper_.observe();
+  py::list observations, infos;
+  for (std::size_t i = 0; i < robots(); ++i) {
+    observations.append(observation(i));
+    infos.append(info(i));
+  }
+  return py::make_tuple(observations, rewards, outcome.stop, truncated, infos);
+}
+
+py::array_t<double> Env::observation(std::size_t robot) const {
   py::array_t<double> obs(static_cast<py::ssize_t>(observed_.size()));
   auto out = obs.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < observed_.size(); ++i) out(static_cast<py::ssize_t>(i)) = stepper_.frame()[observed_[i]];
+  for (std::size_t i = 0; i < observed_.size(); ++i)
+    out(static_cast<py::ssize_t>(i)) = stepper_.frame(robot)[observed_[i]];
   return obs;
 }
 
-py::dict Env::info() const {
+py::dict Env::info(std::size_t robot) const {
   py::dict d;
   d["epoch"] = stepper_.epoch();
   d["step"] = stepper_.steps_taken();
   d["fitness"] = fitness_;
-  d["action"] = action_;
+  d["action"] = actions_[robot];
   return d;
 }
 
-py::dict Env::state() const {
-  const eval::TraceStep t = stepper_.traced(command_, action_, fitness_);
-  py::dict d = info();
+py::dict Env::state(std::size_t robot) const {
+  if (robot >= robots())
+    throw py::value_error("the experiment has " + std::to_string(robots()) + " robots; there is no robot " +
+                          std::to_string(robot + 1));
+  const eval::TraceStep t = stepper_.traced(commands_[robot], actions_[robot], fitness_, robot);
+  py::dict d = info(robot);
   d["x"] = t.pose.x_m;
   d["y"] = t.pose.y_m;
   d["heading"] = t.pose.heading_rad;
@@ -162,6 +212,9 @@ py::dict Env::state() const {
   d["bumper"] = array_of({t.bumper.begin(), t.bumper.begin() + static_cast<std::ptrdiff_t>(t.bumper_count)});
   d["energy"] = t.energy;
   d["collided"] = t.collided;
+  if (t.grouped) {
+    for (std::size_t i = 0; i < t.group.size(); ++i) d[py::str(std::string(eval::kTracedGroupNames[i]))] = t.group[i];
+  }
   return d;
 }
 
@@ -202,7 +255,13 @@ void bind_env(py::module_& m) {
            "Starts the next episode (epoch k of the evaluation with the current seed), or epoch 0 of `seed`: "
            "(observation, info).")
       .def("step", &Env::step, py::arg("action"), "One control step: (observation, reward, terminated, truncated, info).")
-      .def("state", &Env::state, "The robot after the last step, as `esc replay` records it.")
+      .def("state", &Env::state, py::arg("robot") = 0, "Robot `robot` (from 0) after the last step, as `esc replay` "
+           "records it.")
+      .def("reset_group", &Env::reset_group, py::arg("seed") = py::none(),
+           "A group's reset: (observations, infos), lists in robot order.")
+      .def("step_group", &Env::step_group, py::arg("actions"),
+           "A group's step, an action per robot: (observations, rewards, terminated, truncated, infos).")
+      .def_property_readonly("robots", &Env::robots)
       .def_property_readonly("observation_names", &Env::observation_names)
       .def_property_readonly("observation_bounds", &Env::observation_bounds)
       .def_property_readonly("action_bounds", &Env::action_bounds)

@@ -4,6 +4,10 @@
 // code). Episode k after reset(seed=S) is epoch k of the evaluation with seed S: the same
 // start pose, noise and `epoch` observable as that epoch of esc's evaluation.
 //
+// A group's experiment (docs/groups.md) is stepped with every robot's action at once
+// (reset_group, step_group: PettingZoo's parallel API, esc.ParallelEnv); reset and step drive
+// a robot alone.
+//
 // Without a controller, the action is the two wheel commands in [-1, 1] and the observation
 // the robot's senses: ir[0..7], light[0..7], energy. With a network controller, the
 // observation is its network's inputs and the action its network's activated outputs, which
@@ -12,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,13 +39,22 @@ class Env {
   Env(const Env&) = delete;
   Env& operator=(const Env&) = delete;
 
+  using Action = pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;
+
   // The next episode, or epoch 0 of the evaluation with `seed` when one is given:
-  // (observation, info).
+  // (observation, info). ValueError for a group.
   pybind11::tuple reset(std::optional<std::uint64_t> seed);
-  // (observation, reward, terminated, truncated, info).
-  pybind11::tuple step(const pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>& action);
-  // The robot after the last step as a replay records it.
-  [[nodiscard]] pybind11::dict state() const;
+  // (observation, reward, terminated, truncated, info). ValueError for a group.
+  pybind11::tuple step(const Action& action);
+  // A group's: (observations, info), a list of the robots' in robot order.
+  pybind11::tuple reset_group(std::optional<std::uint64_t> seed);
+  // A group's step with robot i's action actions[i]: (observations, rewards, terminated,
+  // truncated, infos), the first two and the last lists in robot order: robot i's reward is
+  // its own fitness step term (the group's is their mean), and an episode ends for every robot.
+  pybind11::tuple step_group(const std::vector<Action>& actions);
+  // Robot `robot` after the last step as a replay records it.
+  [[nodiscard]] pybind11::dict state(std::size_t robot = 0) const;
+  [[nodiscard]] std::size_t robots() const noexcept { return stepper_.robots(); }
 
   [[nodiscard]] std::vector<std::string> observation_names() const;
   [[nodiscard]] pybind11::tuple observation_bounds() const;   // (low, high)
@@ -52,18 +66,22 @@ class Env {
   [[nodiscard]] const eval::ExperimentSpec& spec() const noexcept { return *spec_; }
 
  private:
-  [[nodiscard]] pybind11::array_t<double> observation() const;
-  [[nodiscard]] pybind11::dict info() const;
+  void begin(std::optional<std::uint64_t> seed);
+  // Every robot's action turned into its command, then the step: its outcome.
+  eval::StepOutcome advance(std::span<const Action> actions);
+  [[nodiscard]] pybind11::array_t<double> observation(std::size_t robot = 0) const;
+  [[nodiscard]] pybind11::dict info(std::size_t robot = 0) const;
+  void require_alone(const char* call) const;
 
   std::shared_ptr<const CompiledScript> script_;   // holds spec_ and controller_
   const eval::ExperimentSpec* spec_;
   const control::ControllerSpec* controller_ = nullptr;   // none: the action is the wheel commands
   std::vector<expr::Slot> observed_;
   std::size_t action_size_ = 2;
-  // The controller's head, run on the actions; its network is never run, so its weights are
-  // zeros of the right size (which it points into).
+  // The controller's head of each robot, run on the actions; its network is never run, so its
+  // weights are zeros of the right size (which it points into).
   std::vector<double> unused_weights_;
-  std::unique_ptr<control::Controller> head_;
+  std::vector<std::unique_ptr<control::Controller>> heads_;
   sim::World world_;
   eval::EpochStepper stepper_;
   std::uint64_t seed_;
@@ -71,8 +89,11 @@ class Env {
   int episodes_ = 0;
   bool running_ = false;   // an episode has begun and not ended
   double fitness_ = 0.0;   // this episode's step terms, summed as the evaluator sums them
-  control::WheelCommand command_{};
-  int action_ = -1;        // the controller's choice on the last step (-1: none)
+  // Each robot's command and controller's choice on the last step (-1: none), and that
+  // choice's experiment-wide id.
+  std::vector<control::WheelCommand> commands_;
+  std::vector<int> actions_;
+  std::vector<int> acting_;
 };
 
 }  // namespace esc::python

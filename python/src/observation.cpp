@@ -39,7 +39,8 @@ SlotRange slot_range(expr::Slot slot, const eval::ExperimentSpec& spec) {
   // from the goal than the arena's diagonal.
   if (slot == s::x || slot == s::centroid_x) return {0.0, spec.arena.width_m};
   if (slot == s::y || slot == s::centroid_y) return {0.0, spec.arena.height_m};
-  if (slot == s::robots) return {1.0, static_cast<double>(spec.robots)};
+  if (slot == s::robots || (slot >= s::clusters && slot < s::cluster_size + expr::kMaxClusterRadii))
+    return {1.0, static_cast<double>(spec.robots)};
   if (slot >= s::centroid_moved && slot <= s::spread) return {0.0, std::hypot(spec.arena.width_m, spec.arena.height_m)};
   if (slot == s::heading) return {-std::numbers::pi, std::numbers::pi};
   if (slot == s::goal_distance) return {0.0, std::hypot(spec.arena.width_m, spec.arena.height_m)};

@@ -180,6 +180,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
                                             spec.name, fmt::join(missing, ", ")));
   CampaignResult result;
   result.experiment = spec.name;
+  result.robots = spec.robots;
   result.seed = spec.seed;
   if (spec.success) result.success = spec.success->text();
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();

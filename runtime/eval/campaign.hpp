@@ -86,6 +86,7 @@ struct ControllerResult {
 struct CampaignResult {
   std::string experiment;
   std::uint64_t seed = 0;
+  int robots = 1;   // the group's robots (ExperimentSpec::robots)
   // The experiment's success test as resolved (SuccessSpec::text); empty when it declares
   // none, and then no run's success is shown.
   std::string success{};

@@ -11,12 +11,13 @@ namespace esc::eval::detail {
 
 namespace {
 
-// Collects a traced evaluation and counts the steps each action acted on.
+// Collects a traced evaluation, its first kMaxReplayRows rows and one more (trace_rows_kept
+// then cuts them), and counts the steps each action acted on.
 struct Recorder final : TraceSink {
   std::vector<TraceStep> steps;
   std::vector<std::int64_t> usage;
   void on_step(const TraceStep& t) override {
-    steps.push_back(t);
+    if (steps.size() <= kMaxReplayRows) steps.push_back(t);
     if (t.action >= 0 && static_cast<std::size_t>(t.action) < usage.size()) ++usage[static_cast<std::size_t>(t.action)];
   }
 };
@@ -141,21 +142,16 @@ void replay_best(const ExperimentSpec& spec, const control::ControllerSpec& cont
                  const std::function<Evaluation(Evaluator&, std::uint64_t, TraceSink*)>& replay) {
   const std::uint64_t seed =
       evaluation_seed(result.seed, result.best_generation, static_cast<std::size_t>(result.best_index));
-  // A group's replay is not recorded yet (docs/groups.md): its usage is the evaluation's.
-  if (spec.robots > 1) {
-    if (controller.choice_names().empty()) return;
-    const Evaluation e = replay(ev.workers.local(), seed, nullptr);
-    result.action_usage.assign(e.usage.begin(), e.usage.end());
-    return;
-  }
   Recorder rec;
   rec.usage.assign(controller.choice_names().size(), 0);
-  if (options.trace_best)
-    rec.steps.reserve(static_cast<std::size_t>(spec.epochs) * static_cast<std::size_t>(spec.steps));
+  if (options.trace_best) rec.steps.reserve(replay_rows(spec) + 1);
   if (!options.trace_best && rec.usage.empty()) return;
-  (void)replay(ev.workers.local(), seed, &rec);
-  result.action_usage = std::move(rec.usage);
-  if (options.trace_best) listener.best_traced(controller, result, rec.steps);
+  const Evaluation e = replay(ev.workers.local(), seed, &rec);
+  // A group's trace holds every robot's steps; its usage is a robot's share (the evaluation's).
+  if (spec.robots > 1) result.action_usage.assign(e.usage.begin(), e.usage.end());
+  else result.action_usage = std::move(rec.usage);
+  if (options.trace_best)
+    listener.best_traced(controller, result, std::span(rec.steps).first(trace_rows_kept(rec.steps, kMaxReplayRows)));
 }
 
 }  // namespace esc::eval::detail

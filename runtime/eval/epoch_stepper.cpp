@@ -4,6 +4,12 @@
 
 namespace esc::eval {
 
+sim::World world_of(const ExperimentSpec& spec) {
+  sim::World world(spec.arena, std::vector<sim::RobotParams>(static_cast<std::size_t>(spec.robots), spec.robot));
+  if (spec.formation.kind != sim::FormationKind::Random) world.set_formation(spec.formation);
+  return world;
+}
+
 void EpochStepper::begin(std::uint64_t seed, int epoch) {
   seed_ = seed;
   epoch_ = epoch;
@@ -15,8 +21,10 @@ void EpochStepper::begin(std::uint64_t seed, int epoch) {
   sense();
 }
 
-TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, double fitness) const {
-  const sim::RobotState& state = world_->state();
+TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, double fitness,
+                               std::size_t robot) const {
+  const sim::RobotState& state = world_->state(robot);
+  const expr::Frame& frame = frames_[robot];
   TraceStep t;
   t.energy = state.floor.energy;
   const auto zones = world_->zone_centers();
@@ -24,18 +32,21 @@ TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, dou
   std::copy_n(zones.begin(), t.zone_count, t.zones.begin());
   t.epoch = epoch_;
   t.step = step_ - 1;
+  t.robot = static_cast<int>(robot);
   t.pose = state.pose;
-  t.ir = ir_[0];
-  t.light = light_[0];
+  t.ir = ir_[robot];
+  t.light = light_[robot];
   // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal).
   t.range_count = world_->robot().rangefinders.angles_rad.size();
   t.radar_count = static_cast<std::size_t>(world_->robot().radars);
-  std::copy_n(frames_[0].begin() + expr::slot::range, t.range_count, t.range.begin());
-  std::copy_n(frames_[0].begin() + expr::slot::radar, t.radar_count, t.radar.begin());
+  std::copy_n(frame.begin() + expr::slot::range, t.range_count, t.range.begin());
+  std::copy_n(frame.begin() + expr::slot::radar, t.radar_count, t.radar.begin());
   t.ground_count = world_->robot().ground.mounts.size();
   t.bumper_count = world_->robot().bumpers.size();
-  std::copy_n(frames_[0].begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());
-  std::copy_n(frames_[0].begin() + expr::slot::bumper, t.bumper_count, t.bumper.begin());
+  std::copy_n(frame.begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());
+  std::copy_n(frame.begin() + expr::slot::bumper, t.bumper_count, t.bumper.begin());
+  t.grouped = frames_.size() > 1;
+  if (t.grouped) std::copy_n(frame.begin() + expr::slot::centroid_x, t.group.size(), t.group.begin());
   t.left_command = cmd.left;
   t.right_command = cmd.right;
   t.left_speed_mps = state.wheel_speed_mps[0];

@@ -11,7 +11,8 @@
 // The per-step calls are inline: the evaluator's loop compiles as one function, as before.
 // A group (ExperimentSpec::robots > 1) has a frame per robot: every robot's controller decides
 // on its own frame, then act() steps the group once and each frame observes its robot; the
-// step term is the mean of the robots' terms, and a stop condition of any robot ends the epoch
+// step term is the robots' terms reduced as the fitness says (their mean unless `over robots`
+// says otherwise), and a stop condition of any robot ends the epoch
 // (docs/groups.md). Frame 0 is a robot alone's.
 #include <algorithm>
 #include <array>
@@ -31,6 +32,9 @@
 
 namespace esc::eval {
 
+// The world an evaluation of `spec` steps: its arena, its robots, where they start.
+[[nodiscard]] sim::World world_of(const ExperimentSpec& spec);
+
 // What one control step adds to the evaluation.
 struct StepOutcome {
   double term = 0.0;   // the fitness's step term, evaluated after the step's physics
@@ -48,7 +52,8 @@ class EpochStepper {
   // group's own observables are always written for a group.
   EpochStepper(const ExperimentSpec& spec, sim::World& world, const StepperReads& reads)
       : spec_(&spec), world_(&world), noise_(reads.noise), group_(reads.group || world.robots() > 1), pairs_(reads.pairs),
-        frames_(world.robots()), ir_(world.robots()), light_(world.robots()), commands_(world.robots()) {}
+        frames_(world.robots()), ir_(world.robots()), light_(world.robots()), commands_(world.robots()),
+        cluster_parent_(world.robots()), cluster_size_(world.robots()) {}
 
   // Epoch `epoch` (from 0) of the evaluation with seed `seed`, its stream Rng(seed, {epoch}):
   // zones, start pose and reset drawn from it, the frame zeroed, then the first reading.
@@ -68,13 +73,15 @@ class EpochStepper {
   [[nodiscard]] expr::Frame& frame(std::size_t robot = 0) noexcept { return frames_[robot]; }
   [[nodiscard]] const expr::Frame& frame(std::size_t robot = 0) const noexcept { return frames_[robot]; }
 
-  // The mean over the robots of `program` on their frames (its value on the one frame of a
-  // robot alone).
-  [[nodiscard]] double mean_over_robots(const expr::Program& program) const noexcept {
+  // Robot `robot`'s fitness step term on its frame: the group's step term is their mean.
+  [[nodiscard]] double term(std::size_t robot) const noexcept { return spec_->fitness.step.eval(frames_[robot]); }
+  [[nodiscard]] std::size_t robots() const noexcept { return frames_.size(); }
+
+  // `program` on every robot's frame, reduced by `over` (Mean, Sum, Min or Max): its value on
+  // the one frame of a robot alone.
+  [[nodiscard]] double over_robots(const expr::Program& program, Reduction over) const noexcept {
     if (frames_.size() == 1) return program.eval(frames_[0]);
-    double sum = 0.0;
-    for (const expr::Frame& frame : frames_) sum += program.eval(frame);
-    return sum / static_cast<double>(frames_.size());
+    return reduce_over_robots(frames_.size(), over, [&](std::size_t i) { return program.eval(frames_[i]); });
   }
 
   // The coming step with command `cmd`, chosen by the experiment-wide choice `acting`
@@ -96,9 +103,10 @@ class EpochStepper {
     return after_step();
   }
 
-  // The step just taken as a replay records it: `cmd` and `action` (the controller's choice
-  // index, -1 for none) that led to it, `fitness` the evaluation's so far.
-  [[nodiscard]] TraceStep traced(const control::WheelCommand& cmd, int action, double fitness) const;
+  // The step just taken as a replay records it for robot `robot`: `cmd` and `action` (the
+  // controller's choice index, -1 for none) that led to it, `fitness` the evaluation's so far.
+  [[nodiscard]] TraceStep traced(const control::WheelCommand& cmd, int action, double fitness,
+                                 std::size_t robot = 0) const;
 
   [[nodiscard]] int epoch() const noexcept { return epoch_; }
   [[nodiscard]] int steps_taken() const noexcept { return step_; }   // in this epoch
@@ -119,12 +127,14 @@ class EpochStepper {
       observe_robot(*world_, i, ir_[i], frames_[i]);
     }
     if (group_) observe_group(*world_, start_centroid_, pairs_, frames_);
+    if (!spec_->cluster_radii.empty())
+      observe_clusters(*world_, spec_->cluster_radii, frames_, cluster_parent_, cluster_size_);
   }
 
   StepOutcome after_step() {
     sense();
     ++step_;
-    const double term = mean_over_robots(spec_->fitness.step);
+    const double term = over_robots(spec_->fitness.step, spec_->fitness.over_robots);
     return {term, stops()};
   }
 
@@ -153,6 +163,7 @@ class EpochStepper {
   std::vector<std::array<double, sim::kIrSensors>> ir_;
   std::vector<std::array<double, sim::kLightSensors>> light_;
   std::vector<sim::DriveCommand> commands_;
+  std::vector<std::size_t> cluster_parent_, cluster_size_;   // observe_clusters' scratch, a robot each
 };
 
 }  // namespace esc::eval

@@ -1,7 +1,6 @@
 #include "runtime/eval/evaluator.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -15,7 +14,7 @@ namespace esc::eval {
 
 Evaluator::Evaluator(const ExperimentSpec& spec)
     : spec_(&spec),
-      world_(spec.arena, std::vector<sim::RobotParams>(static_cast<std::size_t>(spec.robots), spec.robot)),
+      world_(world_of(spec)),
       folded_(spec),
       end_frame_(spec.step_aggregate_slot() + folded_.widest(), 0.0) {
   const auto check = [&](const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
@@ -125,16 +124,15 @@ void Evaluator::share_usage(std::span<Driver* const> drivers, std::vector<std::i
 template <class Driver>
 double Evaluator::end_over_robots(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                                   const control::ControllerSpec& controller, const EpochStepper& epoch,
-                                  std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch) {
+                                  std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch,
+                                  Reduction over) {
   const auto value = [&](std::size_t i) {
     const std::span<const std::int64_t> before =
         over_epoch ? std::span<const std::int64_t>(epoch_starts_[i]) : std::span<const std::int64_t>{};
     return end_term(term, folded, controller, epoch.frame(i), steps, drivers[i]->usage(), before);
   };
   if (drivers.size() == 1) return value(0);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < drivers.size(); ++i) sum += value(i);
-  return sum / static_cast<double>(drivers.size());
+  return reduce_over_robots(drivers.size(), over, value);
 }
 
 template <class Driver>
@@ -144,7 +142,7 @@ void Evaluator::reduce_descriptors(const control::ControllerSpec& controller, co
   for (std::size_t i = 0; i < spec_->descriptors.size(); ++i) {
     const DescriptorSpec& d = spec_->descriptors[i];
     if (d.at_evaluation) continue;
-    const double v = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, steps, true);
+    const double v = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, steps, true, Reduction::Mean);
     double& r = values[i];
     switch (d.reduce) {
       case Reduction::Mean:
@@ -161,8 +159,11 @@ template <class Driver>
 Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<Driver* const> drivers,
                           std::uint64_t seed, TraceSink* trace) {
   const ExperimentSpec& s = *spec_;
-  if (trace != nullptr && drivers.size() > 1) throw std::invalid_argument("replays of a group are not supported yet");
-  EpochStepper epoch(s, world_, stepper_reads(s, controller));
+  // A group's replay records every group observable, the pairs' ones too: they are only
+  // written, so the evaluation is the same.
+  StepperReads reads = stepper_reads(s, controller);
+  if (trace != nullptr && drivers.size() > 1) reads.pairs = true;
+  EpochStepper epoch(s, world_, reads);
   Evaluation result;
   result.objectives.assign(s.further.size(), 0.0);
   result.descriptors.assign(s.descriptors.size(), 0.0);
@@ -170,12 +171,13 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
   // told after the epoch's end terms, the evaluation's after its own, so that the last step
   // holds the evaluation's fitness.
   folded_.begin_evaluation();
-  std::optional<TraceStep> last_step;
+  std::vector<TraceStep> last_step;   // the last step's, a TraceStep per robot
   const auto tell_last_step = [&] {
-    if (!last_step) return;
-    last_step->fitness = result.fitness;
-    trace->on_step(*last_step);
-    last_step.reset();
+    for (TraceStep& t : last_step) {
+      t.fitness = result.fitness;
+      trace->on_step(t);
+    }
+    last_step.clear();
   };
   for (int e = 0; e < s.epochs; ++e) {
     epoch.begin(seed, e);
@@ -196,41 +198,60 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
       if (!folded_.empty()) folded_.step(epoch.frame(), epoch.steps_taken() - 1, result.steps - 1);
       result.fitness = add_fitness(result.fitness, outcome.term);
       for (std::size_t k = 0; k < s.further.size(); ++k)
-        result.objectives[k] = add_fitness(result.objectives[k], epoch.mean_over_robots(s.further[k].step));
+        result.objectives[k] =
+            add_fitness(result.objectives[k], epoch.over_robots(s.further[k].step, s.further[k].over_robots));
       if (trace != nullptr) [[unlikely]] {
-        if (last_step) trace->on_step(*last_step);
-        last_step = epoch.traced(commands_[0], drivers[0]->last_action(), result.fitness);
+        for (const TraceStep& t : last_step) trace->on_step(t);
+        last_step.clear();
+        for (std::size_t i = 0; i < drivers.size(); ++i)
+          last_step.push_back(epoch.traced(commands_[i], drivers[i]->last_action(), result.fitness, i));
       }
       if (outcome.stop) break;
     }
     const std::int64_t epoch_steps = result.steps - steps_before;
     if (s.fitness.epoch_end)
-      result.fitness +=
-          end_over_robots(*s.fitness.epoch_end, s.fitness.epoch_aggregates, controller, epoch, drivers, epoch_steps, true);
+      result.fitness += end_over_robots(*s.fitness.epoch_end, s.fitness.epoch_aggregates, controller, epoch, drivers,
+                                        epoch_steps, true, s.fitness.over_robots);
     for (std::size_t k = 0; k < s.further.size(); ++k)
       if (s.further[k].epoch_end)
         result.objectives[k] += end_over_robots(*s.further[k].epoch_end, s.further[k].epoch_aggregates, controller,
-                                                epoch, drivers, epoch_steps, true);
+                                                epoch, drivers, epoch_steps, true, s.further[k].over_robots);
     if (!s.descriptors.empty()) reduce_descriptors(controller, epoch, drivers, epoch_steps, e, result.descriptors);
     if (e + 1 < s.epochs) tell_last_step();
   }
   if (s.fitness.evaluation_end)
     result.fitness += end_over_robots(*s.fitness.evaluation_end, s.fitness.evaluation_aggregates, controller, epoch,
-                                      drivers, result.steps, false);
+                                      drivers, result.steps, false, s.fitness.over_robots);
   tell_last_step();
   for (std::size_t k = 0; k < s.further.size(); ++k)
     if (s.further[k].evaluation_end)
       result.objectives[k] += end_over_robots(*s.further[k].evaluation_end, s.further[k].evaluation_aggregates,
-                                              controller, epoch, drivers, result.steps, false);
+                                              controller, epoch, drivers, result.steps, false, s.further[k].over_robots);
   for (std::size_t i = 0; i < s.descriptors.size(); ++i) {
     const DescriptorSpec& d = s.descriptors[i];
     if (d.at_evaluation)
-      result.descriptors[i] = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, result.steps, false);
+      result.descriptors[i] =
+          end_over_robots(d.program, d.aggregates, controller, epoch, drivers, result.steps, false, Reduction::Mean);
     else if (d.reduce == Reduction::Mean && s.epochs > 0) result.descriptors[i] /= s.epochs;
   }
   result.usage.assign(drivers[0]->usage().begin(), drivers[0]->usage().end());
   if (drivers.size() > 1) share_usage(drivers, result.usage);
   return result;
+}
+
+std::size_t replay_rows(const ExperimentSpec& spec) noexcept {
+  const double rows = static_cast<double>(spec.epochs) * spec.steps * spec.robots;
+  return rows < static_cast<double>(kMaxReplayRows) ? static_cast<std::size_t>(rows) : kMaxReplayRows;
+}
+
+std::size_t trace_rows_kept(std::span<const TraceStep> trace, std::size_t limit) noexcept {
+  if (trace.size() <= limit) return trace.size();
+  std::size_t cut = limit;
+  while (cut > 0 && trace[cut - 1].epoch == trace[limit].epoch) --cut;
+  if (cut > 0) return cut;
+  // Within the first epoch: back to the first robot of the step the limit falls in.
+  for (cut = limit; cut > 0 && trace[cut].robot != 0; --cut) {}
+  return cut > 0 ? cut : limit;
 }
 
 }  // namespace esc::eval

@@ -8,10 +8,12 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "runtime/eval/experiment.hpp"
 #include "runtime/eval/step_aggregates.hpp"
+#include "runtime/expr/observables.hpp"
 #include "runtime/genome/tree/tree.hpp"
 #include "runtime/sim/world.hpp"
 
@@ -32,11 +34,19 @@ struct Evaluation {
   std::vector<double> descriptors;
 };
 
+// A group's observables a replay records (TraceStep::group): centroid_x to spread, named as
+// scripts name them (all in metres).
+inline constexpr std::size_t kTracedGroupObservables = expr::slot::spread + 1 - expr::slot::centroid_x;
+inline constexpr std::array<std::string_view, kTracedGroupObservables> kTracedGroupNames = {
+    "centroid_x", "centroid_y", "centroid_moved", "centroid_distance", "nearest_robot", "robot_distance", "spread"};
+
 // One control step of a traced evaluation (the replay of a controller): the state after
 // the step's physics, the IR reading taken there, the command and the action that led to it.
+// A group's replay has a TraceStep per robot per step, the robots of a step in robot order.
 struct TraceStep {
   int epoch = 0;
   int step = 0;                               // from 0 within the epoch
+  int robot = 0;                              // from 0; a robot alone is robot 0
   sim::Pose pose;                             // after the step
   std::array<double, sim::kIrSensors> ir{};   // read after the step (the next step's input)
   std::array<double, sim::kLightSensors> light{};   // ambient light, read with the IR
@@ -67,7 +77,31 @@ struct TraceStep {
   // first `zone_count` entries, in the arena's order.
   std::array<sim::Vec2, sim::kMaxZones> zones{};
   std::size_t zone_count = 0;
+  // A group's observables from centroid_x to spread (expr::slot order), as this robot's frame
+  // holds them after the step, every one written; `grouped` false for a robot alone, which
+  // has none.
+  std::array<double, kTracedGroupObservables> group{};
+  bool grouped = false;
 };
+
+// The most rows a run's stored replay keeps (a row per step; a group's, a row per robot per
+// step): beyond, its blob would pass SQLite's 1 GB limit for a value, and as much would be
+// held in memory. `esc replay` makes any evaluation again whole.
+inline constexpr std::size_t kMaxReplayRows = std::size_t{1} << 19;
+
+// How many of `trace`'s first rows to keep within `limit`: all that fit; else whole epochs
+// while they fit; else the first epoch's first whole steps (every robot of a step).
+[[nodiscard]] std::size_t trace_rows_kept(std::span<const TraceStep> trace, std::size_t limit) noexcept;
+
+// The robots a trace's steps hold (a group's trace has a row per robot per step; a robot
+// alone's, 1).
+[[nodiscard]] inline std::size_t trace_robots(std::span<const TraceStep> trace) noexcept {
+  return trace.empty() || !trace.front().grouped ? 1 : static_cast<std::size_t>(trace.back().robot) + 1;
+}
+
+// The rows a stored replay of `spec`'s evaluations holds at most: its epochs x steps x robots,
+// at most kMaxReplayRows.
+[[nodiscard]] std::size_t replay_rows(const ExperimentSpec& spec) noexcept;
 
 // Receives every step of a traced evaluation, in order.
 class TraceSink {
@@ -105,12 +139,12 @@ class Evaluator {
   double end_term(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                   const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
                   std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
-  // The mean over the robots of an end term on each robot's last frame and usage, counted
-  // from its epoch's start (`over_epoch`) or from the evaluation's.
+  // An end term on each robot's last frame and usage, counted from its epoch's start
+  // (`over_epoch`) or from the evaluation's, reduced over the robots by `over`.
   template <class Driver>
   double end_over_robots(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                          const control::ControllerSpec& controller, const EpochStepper& epoch,
-                         std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch);
+                         std::span<Driver* const> drivers, std::int64_t steps, bool over_epoch, Reduction over);
   // A group's usage counts, as one robot's (evaluator.cpp).
   template <class Driver>
   static void share_usage(std::span<Driver* const> drivers, std::vector<std::int64_t>& usage);

@@ -22,6 +22,7 @@
 #include "runtime/expr/program.hpp"
 #include "runtime/expr/step_aggregate.hpp"
 #include "runtime/sim/arena.hpp"
+#include "runtime/sim/formation.hpp"
 #include "runtime/sim/robot_params.hpp"
 
 namespace esc::eval {
@@ -36,8 +37,29 @@ namespace esc::eval {
 // The most robots in a group (`robot NAME x N`): the crowd of esc bench's scaling and a margin.
 inline constexpr int kMaxRobots = 256;
 
+// How a descriptor's per-epoch values make the evaluation's, and a group's robots' terms the
+// group's (Mean, Sum, Min, Max only).
+enum class Reduction { Mean, Sum, Min, Max, First, Last };
+
+// `n` robots' values value(0) ... value(n - 1), in robot order, reduced by `over` (Mean, Sum,
+// Min or Max).
+template <class Value>
+[[nodiscard]] double reduce_over_robots(std::size_t n, Reduction over, const Value& value) {
+  if (over == Reduction::Min || over == Reduction::Max) {
+    double r = value(0);
+    for (std::size_t i = 1; i < n; ++i) r = over == Reduction::Min ? std::min(r, value(i)) : std::max(r, value(i));
+    return r;
+  }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) sum += value(i);
+  return over == Reduction::Mean ? sum / static_cast<double>(n) : sum;
+}
+
 struct FitnessSpec {
   std::string name;
+  // Every term (step, epoch, evaluation) is each robot's on its own frame, made the group's by
+  // this (`over robots min`): a robot alone's is its own whatever it says.
+  Reduction over_robots = Reduction::Mean;
   expr::Program step;
   std::vector<expr::Program> stop_when;
   std::optional<expr::Program> epoch_end;
@@ -62,9 +84,6 @@ struct ObjectiveSpec {
   bool minimize = false;
   std::optional<DeclaredRange> range;
 };
-
-// How a descriptor's per-epoch values make the evaluation's.
-enum class Reduction { Mean, Sum, Min, Max, First, Last };
 
 // A behavior descriptor (`descriptor NAME: EXPR in [lo, hi] by REDUCTION`): an end term,
 // evaluated at the end of every epoch and reduced over the epochs, or once at the end of
@@ -193,6 +212,10 @@ struct ExperimentSpec {
   // term is evaluated on each robot's frame, the terms averaged over the robots
   // (docs/groups.md). 1: a robot alone.
   int robots = 1;   // at most kMaxRobots
+  sim::Formation formation;   // where a group's robots start each epoch (`formation line 10cm`)
+  // The radii (m) the group's clusters are counted within, each read from slots clusters + k,
+  // largest_cluster + k and cluster_size + k (`clusters(15cm)`): at most kMaxClusterRadii.
+  std::vector<double> cluster_radii;
   FitnessSpec fitness;
   // Declared objectives: empty for an experiment with the fitness alone and no range;
   // otherwise objectives[0] describes `fitness` and objectives[i > 0] is further[i - 1].

@@ -99,6 +99,18 @@ std::string fingerprint(const ExperimentSpec& spec) {
     w.numbers("arena.zone", std::initializer_list<double>{static_cast<double>(z.shape), z.center_m.x, z.center_m.y,
                                                           z.radius_m, z.size_m.x, z.size_m.y, z.visible ? 1.0 : 0.0,
                                                           z.random_position ? 1.0 : 0.0, z.recharge ? 1.0 : 0.0});
+  // Only where given, so that experiments starting at random keep their fingerprints.
+  if (spec.formation.kind != sim::FormationKind::Random) {
+    w.line("formation", std::to_string(static_cast<int>(spec.formation.kind)));
+    w.number("formation.spacing", spec.formation.spacing_m);
+    for (const sim::Pose& p : spec.formation.at)
+      w.numbers("formation.at", std::initializer_list<double>{p.x_m, p.y_m, p.heading_rad});
+  }
+  // Only where read, so that experiments without clusters keep their fingerprints.
+  if (!spec.cluster_radii.empty()) w.numbers("clusters.radii", spec.cluster_radii);
+  // Only where given, so that fitnesses reduced by the mean keep their fingerprints.
+  if (spec.fitness.over_robots != Reduction::Mean)
+    w.line("fitness.over_robots", std::to_string(static_cast<int>(spec.fitness.over_robots)));
   w.program("fitness.step", spec.fitness.step);
   for (const auto& p : spec.fitness.stop_when) w.program("fitness.stop", p);
   if (spec.fitness.epoch_end) w.program("fitness.epoch", *spec.fitness.epoch_end);

@@ -53,13 +53,14 @@ MemoryNeed memory_need(const ExperimentSpec& spec, bool trace_best) {
     if (evo::MemoryPeak p = run_peak(spec, c); p.bytes > largest.bytes || largest.what.empty()) largest = std::move(p);
     statistics += static_cast<double>(spec.runs) * spec.generations_for(c) * sizeof(GenerationStats);
   }
-  const double trace = trace_best ? static_cast<double>(spec.epochs) * spec.steps * sizeof(TraceStep) : 0.0;
+  const double trace = trace_best ? static_cast<double>(replay_rows(spec)) * sizeof(TraceStep) : 0.0;
   MemoryNeed need{largest.bytes + statistics + trace, fmt::format("{}: {}", largest.what, bytes_text(largest.bytes)),
                   largest.setting};
   if (statistics > largest.bytes && statistics >= trace)
     need = {need.bytes, fmt::format("every run's statistics, {} runs: {}", spec.runs, bytes_text(statistics)), "runs"};
   else if (trace > largest.bytes && trace > statistics)
-    need = {need.bytes, fmt::format("the best run's replay of {} epochs x {} steps: {}", spec.epochs, spec.steps,
+    need = {need.bytes, fmt::format("the best run's replay of {} epochs x {} steps{}: {}", spec.epochs, spec.steps,
+                                    spec.robots > 1 ? fmt::format(" x {} robots", spec.robots) : std::string(),
                                     bytes_text(trace)),
             "steps"};
   return need;

@@ -120,6 +120,45 @@ void observe_group(const sim::World& world, sim::Vec2 start, bool pairs, std::sp
   }
 }
 
+void observe_clusters(const sim::World& world, std::span<const double> radii, std::span<expr::Frame> frames,
+                      std::span<std::size_t> parent, std::span<std::size_t> size) noexcept {
+  const std::size_t n = world.robots();
+  const auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    const double r2 = radii[k] * radii[k];
+    for (std::size_t i = 0; i < n; ++i) {
+      parent[i] = i;
+      size[i] = 1;
+    }
+    std::size_t clusters = n;
+    for (std::size_t i = 0; i < n; ++i) {
+      const sim::Pose& a = world.state(i).pose;
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const sim::Pose& b = world.state(j).pose;
+        const double dx = a.x_m - b.x_m, dy = a.y_m - b.y_m;
+        if (dx * dx + dy * dy > r2) continue;
+        std::size_t ri = root(i), rj = root(j);
+        if (ri == rj) continue;
+        if (size[ri] < size[rj]) std::swap(ri, rj);
+        parent[rj] = ri;
+        size[ri] += size[rj];
+        --clusters;
+      }
+    }
+    std::size_t largest = 0;
+    for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, size[root(i)]);
+    for (std::size_t i = 0; i < n; ++i) {
+      expr::Frame& f = frames[i];
+      f[expr::slot::clusters + k] = static_cast<double>(clusters);
+      f[expr::slot::largest_cluster + k] = static_cast<double>(largest);
+      f[expr::slot::cluster_size + k] = static_cast<double>(size[root(i)]);
+    }
+  }
+}
+
 void observe_light(const std::array<double, sim::kLightSensors>& light,
                    expr::Frame& frame) noexcept {
   for (std::size_t i = 0; i < light.size(); ++i) frame[expr::slot::light + i] = light[i];

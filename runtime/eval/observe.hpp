@@ -33,6 +33,13 @@ void observe_robot(const sim::World& world, std::size_t robot, const std::array<
 // distance, as a cut of the grid's pairs would not be; a group's size is bounded).
 void observe_group(const sim::World& world, sim::Vec2 start, bool pairs, std::span<expr::Frame> frames) noexcept;
 
+// Writes into every robot's frame the group's clusters within each radius radii[k] (robots
+// whose centres are within it of each other, directly or through others, make one):
+// clusters + k, largest_cluster + k and the robot's cluster_size + k. `parent` and `size`
+// are scratch space of a robot each (no allocation).
+void observe_clusters(const sim::World& world, std::span<const double> radii, std::span<expr::Frame> frames,
+                      std::span<std::size_t> parent, std::span<std::size_t> size) noexcept;
+
 // Writes light[] from an ambient-light reading (World::read_light).
 void observe_light(const std::array<double, sim::kLightSensors>& light,
                    expr::Frame& frame) noexcept;

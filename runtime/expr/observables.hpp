@@ -60,6 +60,11 @@ inline constexpr Slot centroid_distance = 80; // this robot's centre to the cent
 inline constexpr Slot nearest_robot = 81;     // this robot's centre to the nearest other robot's centre
 inline constexpr Slot robot_distance = 82;    // the mean distance between two robots' centres
 inline constexpr Slot spread = 83;            // the largest distance of a robot's centre to the centroid
+// A group's clusters, one slot per radius an experiment reads (`clusters(15cm)`: robots whose
+// centres are within the radius of each other, directly or through others, are one cluster).
+inline constexpr Slot clusters = 84;          // clusters[k]: how many clusters, a robot alone one
+inline constexpr Slot largest_cluster = 88;   // largest_cluster[k]: robots in the largest
+inline constexpr Slot cluster_size = 92;      // cluster_size[k]: robots in this robot's cluster
 }  // namespace slot
 
 inline constexpr Slot kIrCount = 8;
@@ -72,7 +77,8 @@ inline constexpr Slot kRangeCount = 8;    // = sim::kMaxRangefinders
 inline constexpr Slot kRadarCount = 8;    // = sim::kMaxRadars
 inline constexpr Slot kGroundSensorCount = 4;   // = sim::kMaxGroundSensors
 inline constexpr Slot kBumperCount = 4;         // = sim::kMaxBumpers
-inline constexpr Slot kFrameSize = slot::spread + 1;
+inline constexpr Slot kMaxClusterRadii = 4;     // radii an experiment's clusters are counted within
+inline constexpr Slot kFrameSize = slot::cluster_size + kMaxClusterRadii;
 
 static_assert(slot::light + kLightCount == slot::energy);
 static_assert(slot::in_zone + kMaxZones == slot::reached);
@@ -84,6 +90,8 @@ static_assert(slot::range + kRangeCount == slot::radar);
 static_assert(slot::radar + kRadarCount == slot::ground_sensor);
 static_assert(slot::ground_sensor + kGroundSensorCount == slot::bumper);
 static_assert(slot::bumper + kBumperCount == slot::robots);
+static_assert(slot::spread + 1 == slot::clusters && slot::clusters + kMaxClusterRadii == slot::largest_cluster);
+static_assert(slot::largest_cluster + kMaxClusterRadii == slot::cluster_size);
 
 // The frame's size before `x` and the slots after it existed: what the aggregates' slots
 // (below) are numbered from in a fingerprint (runtime/eval/fingerprint.cpp), so that growing
@@ -184,16 +192,18 @@ inline constexpr std::array kObservables = {
                "the largest distance of a robot's centre to the group's centroid (0 alone)"},
 };
 
-// Observables that take an argument naming a thing of the arena, `in(zone)` and
-// `reached(light)`: a block of `count` slots from `first`, one per zone (light) in the
-// order the arena declares them, so `in(recharge)` reads slot in_zone + index of zone
-// `recharge`. They are not in kObservables: a bare `in` or `reached` is not an observable,
-// and the GP terminal set and the compiler's name lists do not see them.
+// Observables that take an argument: a thing of the arena, `in(zone)` and `reached(light)`,
+// or a length, a group's `clusters(15cm)`: a block of `count` slots from `first`, one per
+// zone (light) in the order the arena declares them, so `in(recharge)` reads slot in_zone +
+// index of zone `recharge`, or one per radius in the order the experiment first reads them
+// (eval::ExperimentSpec::cluster_radii). They are not in kObservables: a bare `in` or
+// `reached` is not an observable, and the GP terminal set and the compiler's name lists do
+// not see them.
 struct ParametrisedObservable {
   std::string_view name;
   Slot first;
-  Slot count;              // the most arguments an arena may declare
-  std::string_view argument;  // what the argument names: "zone" or "light"
+  Slot count;              // the most arguments an arena (an experiment) may have
+  std::string_view argument;  // what the argument is: "zone", "light" or "radius" (a length)
   std::string_view unit;
   std::string_view summary;
 };
@@ -204,6 +214,13 @@ inline constexpr std::array kParametrised = {
     ParametrisedObservable{"reached", slot::reached, kMaxLights, "light", "boolean (event)",
                            "1 on the step the robot's centre comes within the arena's reach "
                            "radius of the light (rising edge: 0 while it stays there)"},
+    ParametrisedObservable{"clusters", slot::clusters, kMaxClusterRadii, "radius", "count",
+                           "how many clusters the group makes, robots whose centres are within the radius of "
+                           "each other (directly or through others) being one; 1 alone"},
+    ParametrisedObservable{"largest_cluster", slot::largest_cluster, kMaxClusterRadii, "radius", "count",
+                           "robots in the group's largest cluster within the radius; 1 alone"},
+    ParametrisedObservable{"cluster_size", slot::cluster_size, kMaxClusterRadii, "radius", "count",
+                           "robots in this robot's cluster within the radius, itself included; 1 alone"},
 };
 
 [[nodiscard]] constexpr std::optional<Observable> find_observable(std::string_view name) noexcept {

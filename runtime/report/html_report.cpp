@@ -50,13 +50,7 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
   if (!c.replay) return nullptr;
   const auto& steps = c.replay->steps;
   // Whole epochs while they fit, at least the first epoch's beginning.
-  std::size_t keep = std::min(steps.size(), o.max_replay_steps);
-  if (keep < steps.size() && keep > 0) {
-    const int last_epoch = steps[keep].epoch;
-    std::size_t cut = keep;
-    while (cut > 0 && steps[cut - 1].epoch == last_epoch) --cut;
-    if (cut > 0) keep = cut;
-  }
+  const std::size_t keep = eval::trace_rows_kept(steps, o.max_replay_steps);
   const auto readings = [](std::span<const double> values) {
     json a = json::array();
     for (double v : values) a.push_back(round_to(v, 3));
@@ -65,6 +59,8 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
   // A robot with rangefinders or goal radars (the maze navigator) adds their readings to
   // each row; the paper's robots have neither, and their rows stay as they were.
   const bool navigation = !steps.empty() && (steps.front().range_count > 0 || steps.front().radar_count > 0);
+  // A group's rows are a row per robot per step, each ending with its robot (from 0).
+  const bool group = !steps.empty() && steps.front().grouped;
   json rows = json::array();
   for (std::size_t i = 0; i < keep; ++i) {
     const eval::TraceStep& t = steps[i];
@@ -76,6 +72,7 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
       row.push_back(readings(std::span(t.range).first(t.range_count)));
       row.push_back(readings(std::span(t.radar).first(t.radar_count)));
     }
+    if (group) row.push_back(t.robot);
     rows.push_back(std::move(row));
   }
   json columns = {"epoch", "step", "x_mm", "y_mm", "heading", "ir", "left", "right", "action", "fitness", "collided",
@@ -84,6 +81,7 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
     columns.push_back("range");
     columns.push_back("radar");
   }
+  if (group) columns.push_back("robot");
   int epochs = steps.empty() ? 0 : steps.back().epoch + 1;
   // Where the zones were in each epoch (random zones move at every epoch start), in mm.
   json epoch_zones = json::array();
@@ -95,14 +93,17 @@ json replay_json(const store::StoredController& c, const ReportOptions& o) {
       zones.push_back({round_to(t.zones[z].x * 1000.0, 1), round_to(t.zones[z].y * 1000.0, 1)});
     epoch_zones.push_back(std::move(zones));
   }
-  return {{"run", c.replay->run + 1},
+  const std::size_t robots = eval::trace_robots(steps);
+  json replay = {{"run", c.replay->run + 1},
           {"seed", store::seed_json(c.replay->seed)},
           {"fitness", c.replay->fitness},
-          {"total_steps", steps.size()},
+          {"total_steps", steps.size() / robots},
           {"total_epochs", epochs},
           {"columns", columns},
           {"epoch_zones", epoch_zones},
           {"rows", rows}};
+  if (group) replay["robots"] = robots;
+  return replay;
 }
 
 json summary_json(const Summary& s) {

@@ -26,9 +26,11 @@ struct SensorColumns {
 // and as many light sensors, then the robot's `ranges` rangefinders (range0, ...), `radars`
 // goal radars (radar0, ...), `grounds` ground sensors (ground_sensor0, ...; prox_ground0, ...
 // on the Thymio II) and `bumpers` bumpers (bumper0, ...); a robot without some has no such
-// columns.
+// columns. A `group`'s rows (a row per robot per step) have a `robot` column after `step`,
+// numbered from 1, and end with the group's observables as that robot's frame held them
+// after the step (centroid_x_m to spread_m, docs/language.md "Groups").
 [[nodiscard]] std::string trajectory_csv_header(const SensorColumns& sensors, std::size_t ranges, std::size_t radars,
-                                                std::size_t grounds = 0, std::size_t bumpers = 0);
+                                                std::size_t grounds = 0, std::size_t bumpers = 0, bool group = false);
 
 // `choices`: the controller's action or behavior names (empty for a classical head, whose
 // `behavior` column stays empty).

@@ -61,7 +61,12 @@ std::string choice_colour(std::size_t i, std::size_t n) {
   return fmt::format("#{:02x}{:02x}{:02x}", channel(0), channel(8), channel(4));
 }
 
+std::size_t robots_of(const TrajectoryFigure& f) { return eval::trace_robots(f.steps); }
+
+// A group's paths are coloured by robot; a robot alone's by the acting action or behavior, or
+// by epoch for a classical head.
 std::string colour_of(const TrajectoryFigure& f, const eval::TraceStep& t) {
+  if (t.grouped) return choice_colour(static_cast<std::size_t>(t.robot), robots_of(f));
   if (!f.choices.empty() && t.action >= 0) return choice_colour(static_cast<std::size_t>(t.action), f.choices.size());
   return kEpochColours[static_cast<std::size_t>(t.epoch) % kEpochColours.size()];
 }
@@ -134,64 +139,75 @@ void draw_zones_and_lights(std::string& svg, const TrajectoryFigure& f, const Fr
 // indistinguishably: each epoch has its own dash pattern (solid for the first), in the legend.
 constexpr std::array<const char*, 4> kEpochDashes = {"", "9 4", "2 4", "12 4 2 4"};
 
-bool dashed_epochs(const TrajectoryFigure& f) { return !f.choices.empty() && epoch_ranges(f.steps).size() > 1; }
+bool dashed_epochs(const TrajectoryFigure& f) {
+  return (!f.choices.empty() || robots_of(f) > 1) && epoch_ranges(f.steps).size() > 1;
+}
 
 std::string dash_of(const TrajectoryFigure& f, int epoch) {
   const char* dash = kEpochDashes[static_cast<std::size_t>(epoch) % kEpochDashes.size()];
   return dashed_epochs(f) && *dash != '\0' ? fmt::format(R"~( stroke-dasharray="{}")~", dash) : std::string();
 }
 
-// Each epoch's path, one <path> per stretch with the same colour; its start (a small circle
-// numbered with the epoch), its end (the robot, with its heading, numbered too) and its
-// collisions.
-void draw_paths(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
-  svg += R"~(<g fill="none" stroke-width="2" stroke-linejoin="round" stroke-linecap="round">)~" "\n";
-  for (const auto& [begin, end] : epoch_ranges(f.steps)) {
-    std::string d;
-    std::string colour;
-    const std::string dash = dash_of(f, f.steps[begin].epoch);
-    for (std::size_t i = begin + 1; i < end; ++i) {
-      const std::string c = colour_of(f, f.steps[i]);
-      if (c != colour) {
-        if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}"{} d="{}"/>)~" "\n", colour, dash, d);
-        colour = c;
-        d = fmt::format("M{:.1f} {:.1f}", at.x(f.steps[i - 1].pose.x_m), at.y(f.steps[i - 1].pose.y_m));
-      }
-      d += fmt::format(" L{:.1f} {:.1f}", at.x(f.steps[i].pose.x_m), at.y(f.steps[i].pose.y_m));
-    }
-    if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}"{} d="{}"/>)~" "\n", colour, dash, d);
+// Where a robot's epoch starts (a small circle numbered with the epoch) and ends (the robot,
+// with its heading, numbered too; a group's robot filled with its colour).
+void draw_epoch_ends(std::string& svg, const TrajectoryFigure& f, const Frame& at, const eval::TraceStep& first,
+                     const eval::TraceStep& last) {
+  const double r_mm = f.robot_radius_m * 1000.0;
+  svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="4" fill="#fff" stroke="#1d2330" stroke-width="1.5"/>)~"
+                     "\n" R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
+                     at.x(first.pose.x_m), at.y(first.pose.y_m), at.x(first.pose.x_m) + 6.0, at.y(first.pose.y_m) - 6.0,
+                     first.epoch + 1);
+  const double x = at.x(last.pose.x_m);
+  const double y = at.y(last.pose.y_m);
+  const std::string body =
+      last.grouped ? fmt::format(R"~(fill="{}" fill-opacity="0.35" stroke="#1d2330" stroke-width="1.5")~", colour_of(f, last))
+                   : std::string(R"~(fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5")~");
+  if (f.robot_outline_m.empty()) {
+    svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" {}/>)~" "\n", x, y, r_mm, body);
+  } else {
+    const double c = std::cos(last.pose.heading_rad), s = std::sin(last.pose.heading_rad);
+    std::string points;
+    for (const sim::Vec2& v : f.robot_outline_m)
+      points += fmt::format("{}{:.1f},{:.1f}", points.empty() ? "" : " ", at.x(last.pose.x_m + c * v.x - s * v.y),
+                            at.y(last.pose.y_m + s * v.x + c * v.y));
+    svg += fmt::format(R"~(<polygon points="{}" {}/>)~" "\n", points, body);
   }
+  svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="1.5"/>)~"
+                     "\n" R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
+                     x, y, x + r_mm * std::cos(last.pose.heading_rad), y - r_mm * std::sin(last.pose.heading_rad),
+                     x + r_mm + 3.0, y + r_mm + 8.0, last.epoch + 1);
+}
+
+// Each epoch's path of each robot (a group's rows hold every robot of a step, in robot
+// order), one <path> per stretch with the same colour; its start (a small circle numbered
+// with the epoch), its end (the robot, with its heading, numbered too) and its collisions.
+void draw_paths(std::string& svg, const TrajectoryFigure& f, const Frame& at) {
+  const std::size_t robots = robots_of(f);
+  svg += R"~(<g fill="none" stroke-width="2" stroke-linejoin="round" stroke-linecap="round">)~" "\n";
+  for (const auto& [begin, end] : epoch_ranges(f.steps))
+    for (std::size_t r = 0; r < robots; ++r) {
+      std::string d;
+      std::string colour;
+      const std::string dash = dash_of(f, f.steps[begin].epoch);
+      for (std::size_t i = begin + r + robots; i < end; i += robots) {
+        const std::string c = colour_of(f, f.steps[i]);
+        if (c != colour) {
+          if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}"{} d="{}"/>)~" "\n", colour, dash, d);
+          colour = c;
+          d = fmt::format("M{:.1f} {:.1f}", at.x(f.steps[i - robots].pose.x_m), at.y(f.steps[i - robots].pose.y_m));
+        }
+        d += fmt::format(" L{:.1f} {:.1f}", at.x(f.steps[i].pose.x_m), at.y(f.steps[i].pose.y_m));
+      }
+      if (!colour.empty()) svg += fmt::format(R"~(<path stroke="{}"{} d="{}"/>)~" "\n", colour, dash, d);
+    }
   svg += "</g>\n";
   for (const eval::TraceStep& t : f.steps)
     if (t.collided)
       svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="3" fill="{}"/>)~" "\n", at.x(t.pose.x_m), at.y(t.pose.y_m),
                          kCollision);
-  const double r_mm = f.robot_radius_m * 1000.0;
-  for (const auto& [begin, end] : epoch_ranges(f.steps)) {
-    const eval::TraceStep& first = f.steps[begin];
-    const eval::TraceStep& last = f.steps[end - 1];
-    svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="4" fill="#fff" stroke="#1d2330" stroke-width="1.5"/>)~"
-                       "\n" R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
-                       at.x(first.pose.x_m), at.y(first.pose.y_m), at.x(first.pose.x_m) + 6.0, at.y(first.pose.y_m) - 6.0,
-                       first.epoch + 1);
-    const double x = at.x(last.pose.x_m);
-    const double y = at.y(last.pose.y_m);
-    constexpr std::string_view kBody = R"~(fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5")~";
-    if (f.robot_outline_m.empty()) {
-      svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" {}/>)~" "\n", x, y, r_mm, kBody);
-    } else {
-      const double c = std::cos(last.pose.heading_rad), s = std::sin(last.pose.heading_rad);
-      std::string points;
-      for (const sim::Vec2& v : f.robot_outline_m)
-        points += fmt::format("{}{:.1f},{:.1f}", points.empty() ? "" : " ", at.x(last.pose.x_m + c * v.x - s * v.y),
-                              at.y(last.pose.y_m + s * v.x + c * v.y));
-      svg += fmt::format(R"~(<polygon points="{}" {}/>)~" "\n", points, kBody);
-    }
-    svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="1.5"/>)~"
-                       "\n" R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
-                       x, y, x + r_mm * std::cos(last.pose.heading_rad), y - r_mm * std::sin(last.pose.heading_rad),
-                       x + r_mm + 3.0, y + r_mm + 8.0, last.epoch + 1);
-  }
+  for (const auto& [begin, end] : epoch_ranges(f.steps))
+    for (std::size_t r = 0; r < robots && begin + r < end; ++r)
+      draw_epoch_ends(svg, f, at, f.steps[begin + r], f.steps[end - robots + r]);
 }
 
 // A bar of a round length under the arena's lower left corner: the drawing is to scale.
@@ -215,7 +231,14 @@ double draw_scale_bar(std::string& svg, const TrajectoryFigure& f, const Frame& 
 // What each colour and mark means; returns the legend's height.
 double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, double top) {
   std::vector<std::pair<std::string, std::string>> colours;   // colour, label
-  if (!f.choices.empty()) {
+  const std::size_t robots = robots_of(f);
+  if (robots > 1) {
+    std::vector<std::size_t> collisions(robots, 0);
+    for (const eval::TraceStep& t : f.steps) collisions[static_cast<std::size_t>(t.robot)] += t.collided ? 1 : 0;
+    for (std::size_t r = 0; r < robots; ++r)
+      colours.emplace_back(choice_colour(r, robots), fmt::format("robot {} ({} collision step{})", r + 1, collisions[r],
+                                                                 collisions[r] == 1 ? "" : "s"));
+  } else if (!f.choices.empty()) {
     std::vector<std::size_t> steps(f.choices.size(), 0);
     for (const eval::TraceStep& t : f.steps)
       if (t.action >= 0 && static_cast<std::size_t>(t.action) < steps.size()) ++steps[static_cast<std::size_t>(t.action)];
@@ -232,7 +255,7 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
   double y = top;
   svg += fmt::format(R"~(<g class="legend" font-size="13" fill="#1d2330">)~" "\n"
                      R"~(<text x="{:.1f}" y="{:.1f}" font-weight="bold">{}</text>)~" "\n",
-                     left, y, f.choices.empty() ? "path, by epoch" : "path, by acting behavior");
+                     left, y, robots > 1 ? "path, by robot" : f.choices.empty() ? "path, by epoch" : "path, by acting behavior");
   for (const auto& [colour, label] : colours) {
     y += kLegendLine;
     svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="{}" stroke-width="3"/>)~"
@@ -247,7 +270,8 @@ double draw_legend(std::string& svg, const TrajectoryFigure& f, double left, dou
       const int epoch = f.steps[begin].epoch;
       svg += fmt::format(R"~(<line x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}" stroke="#1d2330" stroke-width="2"{}/>)~"
                          R"~(<text x="{:.1f}" y="{:.1f}">epoch {} ({} steps)</text>)~" "\n",
-                         left, y - 4.0, left + 24.0, y - 4.0, dash_of(f, epoch), left + 32.0, y, epoch + 1, end - begin);
+                         left, y - 4.0, left + 24.0, y - 4.0, dash_of(f, epoch), left + 32.0, y, epoch + 1,
+                         (end - begin) / robots);
     }
   }
   y += kLegendLine * 1.5;

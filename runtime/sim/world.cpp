@@ -130,6 +130,7 @@ struct World::Impl {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;   // the step's pairs that may meet
   mutable std::vector<PlacedBody> seen;                          // the bodies one robot senses
   std::vector<Pose> starts;                                      // begin_epoch's poses
+  Formation formation;                                           // where begin_epoch puts them
 
   Impl(const ArenaSpec& a, const std::vector<RobotParams>& r)
       : arena((validate_arena(a), validate_group(r), a)), geometry(a) {
@@ -420,6 +421,29 @@ struct World::Impl {
     return poses;
   }
 
+  // A line's or a circle's poses: a heading, then a centre where the formation's whole reach
+  // stays in the arena, drawn until every body clears the walls and obstacles.
+  void formation_poses(Rng& rng, std::vector<Pose>& poses) const {
+    const std::size_t n = robots.size();
+    double radius = 0.0;
+    for (const auto& r : robots) radius = std::max(radius, r->robot.body_radius_m);
+    const double keep = radius + kStartMargin_m;
+    const double reach = formation_reach(formation, n) + keep;
+    for (int t = 0; t < kFreePoseTries; ++t) {
+      const double heading = rng.uniform(-std::numbers::pi, std::numbers::pi);
+      const Vec2 centre{rng.uniform(reach, arena.width_m - reach), rng.uniform(reach, arena.height_m - reach)};
+      poses.clear();
+      bool clear = true;
+      for (std::size_t i = 0; i < n && clear; ++i) {
+        poses.push_back(formation_pose(formation, n, i, centre, heading));
+        clear = geometry.clearance({poses.back().x_m, poses.back().y_m}, keep) >= keep;
+      }
+      if (clear) return;
+    }
+    throw std::runtime_error("the arena has no free space for the group's formation (no place found that keeps "
+                             "every body " + std::to_string(kStartMargin_m) + " m clear of every wall and obstacle)");
+  }
+
   [[nodiscard]] Pose random_free_pose(Rng& rng, double margin_m, std::size_t i, std::span<const Pose> before) const {
     const double radius = robots[i]->robot.body_radius_m;
     const double keep = radius + margin_m;
@@ -470,11 +494,26 @@ Pose World::begin_epoch(Rng& rng) {
   place_zones(rng);
   std::vector<Pose>& poses = impl_->starts;
   poses.clear();
-  for (std::size_t i = 0; i < impl_->robots.size(); ++i)
-    poses.push_back(i == 0 && impl_->arena.fixed_start ? *impl_->arena.fixed_start
-                                                       : impl_->random_free_pose(rng, kStartMargin_m, i, poses));
+  switch (impl_->formation.kind) {
+    case FormationKind::Random:
+      for (std::size_t i = 0; i < impl_->robots.size(); ++i)
+        poses.push_back(i == 0 && impl_->arena.fixed_start ? *impl_->arena.fixed_start
+                                                           : impl_->random_free_pose(rng, kStartMargin_m, i, poses));
+      break;
+    case FormationKind::At: poses = impl_->formation.at; break;
+    default: impl_->formation_poses(rng, poses); break;
+  }
   impl_->reset(poses);
   return poses.front();
+}
+
+void World::set_formation(const Formation& formation) {
+  double radius = 0.0;
+  for (const auto& r : impl_->robots) radius = std::max(radius, r->robot.body_radius_m);
+  if (const std::string why = formation_problem(formation, impl_->robots.size(), impl_->arena, radius, kStartMargin_m);
+      !why.empty())
+    throw std::invalid_argument("the group's formation: " + why);
+  impl_->formation = formation;
 }
 void World::step(double left_command, double right_command, Rng& rng) {
   const DriveCommand command{left_command, right_command};

@@ -19,6 +19,7 @@
 #include "runtime/core/rng.hpp"
 #include "runtime/sim/arena.hpp"
 #include "runtime/sim/floor.hpp"
+#include "runtime/sim/formation.hpp"
 #include "runtime/sim/robot_params.hpp"
 #include "runtime/sim/light_sensor.hpp"
 
@@ -71,6 +72,12 @@ class World {
 
   [[nodiscard]] std::size_t robots() const noexcept;
 
+  // Where begin_epoch starts the robots from now on (formation.hpp; random by default).
+  // Throws std::invalid_argument for a formation its robots cannot take: `at` poses not one
+  // per robot, outside the arena, overlapping a wall, an obstacle or each other; a line or a
+  // circle whose neighbours would overlap, or that cannot fit in the arena.
+  void set_formation(const Formation& formation);
+
   // Draws a position for every zone with random_position (in zone index order: uniform
   // over the centres that keep the zone inside the arena and clear of every obstacle; see
   // docs/robot-model.md) and moves the lights above those zones with them. Draws nothing
@@ -88,7 +95,9 @@ class World {
   // The start of an epoch, in this order: place_zones(rng); robot 0's pose is the arena's
   // fixed_start, else random_free_pose(rng), and every other robot's a random pose clear of
   // those before it; reset(poses). Returns robot 0's pose. With no random zone and one robot
-  // it draws exactly what `reset(fixed_start or random_free_pose(rng))` draws.
+  // it draws exactly what `reset(fixed_start or random_free_pose(rng))` draws. A formation
+  // (set_formation) places every robot instead: its `at` poses, or a line or circle about a
+  // heading and then a centre drawn uniformly until every body clears the walls and obstacles.
   Pose begin_epoch(Rng& rng);
 
   // One control step: commands in [-1, 1] (clamped), motors and body integrated over

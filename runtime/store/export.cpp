@@ -1,6 +1,7 @@
 #include "runtime/store/export.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 #include <fmt/format.h>
 
@@ -102,6 +103,9 @@ json export_json(const std::vector<StoredDirectory>& directories) {
         if (c.members) controllers[c.name]["members"] = members_json(*c.members);
       }
       json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
+      // A group names its size (its `robots` setting); a robot alone's export is as it always was.
+      if (const auto robots = e.settings.find("robots"); robots != e.settings.end())
+        x["robots"] = std::atoi(robots->second.c_str());
       if (e.condition) {
         json settings = json::object();
         for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;

@@ -1,6 +1,7 @@
 // Everything a results database holds read back (ResultsDb::load and what it builds on), in
 // whichever schema it was written, and where a resume picks it up.
 #include <algorithm>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <vector>
@@ -244,6 +245,8 @@ eval::CampaignResult StoredExperiment::result() const {
   r.experiment = name;
   r.seed = seed;
   if (const auto it = settings.find("success"); it != settings.end()) r.success = it->second;
+  // Resolved only for a group (experiment_settings.cpp): a robot alone has none.
+  if (const auto it = settings.find("robots"); it != settings.end()) r.robots = std::atoi(it->second.c_str());
   for (const StoredController& c : controllers) {
     if (c.finished.empty()) continue;
     r.controllers.push_back({c.name, c.architecture, c.genome_size, c.finished, c.actions});

@@ -172,6 +172,7 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const
   write_atomically(dir_ / "settings.json", settings_json(spec, sources, write_sources(dir_, sources)).dump(2) + "\n");
   partial_.experiment = spec.name;
   partial_.seed = spec.seed;
+  partial_.robots = spec.robots;
   if (spec.success) partial_.success = spec.success->text();
   for (const control::ControllerSpec& c : spec.controllers) controllers_.emplace_back(c.name, spec.genome_size_of(c));
   write_summary();

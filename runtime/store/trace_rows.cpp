@@ -21,6 +21,10 @@ namespace {
 // written.
 // The numbered families after the lights, each named once: rangeK, radarK, ground_sensorK, bumperK.
 constexpr std::string_view kRange = "range", kRadar = "radar", kGround = "ground_sensor", kBumper = "bumper";
+// A group's replay ends each row with the robot (from 0) and its group observables, named as
+// scripts name them.
+constexpr std::string_view kRobot = "robot";
+constexpr const auto& kGroupColumns = eval::kTracedGroupNames;
 
 struct TraceLayout {
   bool extended = true;   // the accumulator and zones follow the fixed columns
@@ -30,11 +34,12 @@ struct TraceLayout {
   std::size_t radars = 0;
   std::size_t grounds = 0;
   std::size_t bumpers = 0;
+  bool group = false;     // the robot and the group observables end the row
 
   [[nodiscard]] std::size_t width() const noexcept {
     if (!extended) return kTraceColumns;
     return kTraceColumns + 1 + 2 * zones + (lights ? static_cast<std::size_t>(sim::kLightSensors) : 0) + ranges +
-           radars + grounds + bumpers;
+           radars + grounds + bumpers + (group ? 1 + kGroupColumns.size() : 0);
   }
 
   // The column names of an extended layout with lights, in pack_trace's order.
@@ -53,6 +58,10 @@ struct TraceLayout {
     for (const auto& [family, count] : {std::pair{kRange, ranges}, std::pair{kRadar, radars},
                                         std::pair{kGround, grounds}, std::pair{kBumper, bumpers}})
       for (std::size_t i = 0; i < count; ++i) c.push_back(fmt::format("{}{}", family, i));
+    if (group) {
+      c.emplace_back(kRobot);
+      c.insert(c.end(), kGroupColumns.begin(), kGroupColumns.end());
+    }
     return c;
   }
 };
@@ -60,7 +69,7 @@ struct TraceLayout {
 TraceLayout layout_of(std::span<const eval::TraceStep> trace) {
   if (trace.empty()) return {};
   const eval::TraceStep& t = trace.front();
-  return {true, t.zone_count, true, t.range_count, t.radar_count, t.ground_count, t.bumper_count};
+  return {true, t.zone_count, true, t.range_count, t.radar_count, t.ground_count, t.bumper_count, t.grouped};
 }
 
 // Whether column `c` is `prefix` followed by a number: light3, range0.
@@ -80,7 +89,7 @@ std::size_t count_prefixed(const std::vector<std::string>& columns, std::string_
 // know was written by a newer esc.
 bool known_column(const std::string& c) {
   static const std::vector<std::string> fixed = [] {
-    std::vector<std::string> names = TraceLayout{}.names();
+    std::vector<std::string> names = TraceLayout{.group = true}.names();
     names.emplace_back("fitness");
     return names;
   }();
@@ -107,6 +116,7 @@ TraceLayout layout_of(const std::vector<std::string>& columns) {
   l.radars = count_prefixed(columns, kRadar);
   l.grounds = count_prefixed(columns, kGround);
   l.bumpers = count_prefixed(columns, kBumper);
+  l.group = std::find(columns.begin(), columns.end(), kRobot) != columns.end();
   return l;
 }
 
@@ -140,6 +150,10 @@ std::vector<double> pack_trace(std::span<const eval::TraceStep> trace) {
     v.insert(v.end(), t.radar.begin(), t.radar.begin() + static_cast<std::ptrdiff_t>(layout.radars));
     v.insert(v.end(), t.ground.begin(), t.ground.begin() + static_cast<std::ptrdiff_t>(layout.grounds));
     v.insert(v.end(), t.bumper.begin(), t.bumper.begin() + static_cast<std::ptrdiff_t>(layout.bumpers));
+    if (layout.group) {
+      v.push_back(t.robot);
+      v.insert(v.end(), t.group.begin(), t.group.end());
+    }
   }
   return v;
 }
@@ -184,6 +198,10 @@ std::vector<eval::TraceStep> unpack_trace(const std::vector<double>& v, const st
     for (std::size_t k = 0; k < layout.grounds; ++k) t.ground[k] = *c++;
     t.bumper_count = layout.bumpers;
     for (std::size_t k = 0; k < layout.bumpers; ++k) t.bumper[k] = *c++;
+    if (!layout.group) continue;
+    t.robot = static_cast<int>(*c++);
+    t.grouped = true;
+    for (double& g : t.group) g = *c++;
   }
   return out;
 }

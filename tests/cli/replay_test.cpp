@@ -208,6 +208,92 @@ TEST(Replay, AnimationWithFfmpeg) {
   }
 }
 
+// A group's replay (docs/groups.md): every robot re-simulated, identical to the stored
+// replay; the CSV has a robot column, and the group quantities in it agree with the robots'
+// positions recomputed from the same CSV; the SVG draws every robot; the report's replay
+// panel shows the group in headless Chromium where it is installed.
+TEST(Replay, AGroupIsReplayedWithEveryRobot) {
+  const fs::path dir = scratch("replay-group");
+  const Outcome run = esc_command("run " + tiny() + " --generations 3 --set robots=3 --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  // summary.json and the export name the group.
+  EXPECT_EQ(read_json(dir / "summary.json")["robots"], 3);
+  const Outcome exported = esc_command("export " + dir.string() + " --format json");
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  EXPECT_NE(exported.output.find("\"robots\": 3"), std::string::npos) << exported.output.substr(0, 400);
+  const Outcome o = esc_command("replay " + dir.string() + " --controller SC");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  fs::path stem;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".csv" && entry.path().filename().string().rfind("replay-SC-run-", 0) == 0)
+      stem = entry.path().parent_path() / entry.path().stem();
+  ASSERT_FALSE(stem.empty()) << o.output;
+
+  const auto csv = read_csv(stem.string() + ".csv");
+  ASSERT_GT(csv.size(), 4U);
+  std::map<std::string, std::size_t> at;
+  for (std::size_t i = 0; i < csv[0].size(); ++i) at[csv[0][i]] = i;
+  for (const char* column : {"robot", "x_m", "y_m", "centroid_x_m", "centroid_y_m", "centroid_distance_m",
+                             "nearest_robot_m", "robot_distance_m", "spread_m"})
+    ASSERT_TRUE(at.count(column)) << column;
+  EXPECT_EQ(at["robot"], 2U) << "after epoch and step";
+  ASSERT_EQ((csv.size() - 1) % 3, 0U) << "a row per robot per step";
+  const auto cell = [&](std::size_t row, const char* column) { return number(csv[row][at[column]]); };
+  for (std::size_t first = 1; first < csv.size(); first += 3) {
+    double cx = 0.0, cy = 0.0;
+    for (std::size_t r = 0; r < 3; ++r) {
+      ASSERT_EQ(csv[first + r][at["robot"]], std::to_string(r + 1));
+      ASSERT_EQ(csv[first + r][1], csv[first][1]) << "one step's rows";
+      cx += cell(first + r, "x_m");
+      cy += cell(first + r, "y_m");
+    }
+    cx /= 3.0;
+    cy /= 3.0;
+    double spread = 0.0, pairs = 0.0;
+    for (std::size_t r = 0; r < 3; ++r) {
+      const double x = cell(first + r, "x_m"), y = cell(first + r, "y_m");
+      double nearest = 1e9;
+      for (std::size_t q = 0; q < 3; ++q) {
+        if (q == r) continue;
+        const double d = std::hypot(x - cell(first + q, "x_m"), y - cell(first + q, "y_m"));
+        nearest = std::min(nearest, d);
+        if (q > r) pairs += d;
+      }
+      spread = std::max(spread, std::hypot(x - cx, y - cy));
+      EXPECT_NEAR(cell(first + r, "centroid_x_m"), cx, 1e-12);
+      EXPECT_NEAR(cell(first + r, "centroid_y_m"), cy, 1e-12);
+      EXPECT_NEAR(cell(first + r, "centroid_distance_m"), std::hypot(x - cx, y - cy), 1e-12);
+      EXPECT_NEAR(cell(first + r, "nearest_robot_m"), nearest, 1e-12);
+    }
+    for (std::size_t r = 0; r < 3; ++r) {
+      EXPECT_NEAR(cell(first + r, "robot_distance_m"), pairs / 3.0, 1e-12);
+      EXPECT_NEAR(cell(first + r, "spread_m"), spread, 1e-12);
+    }
+  }
+
+  const std::string svg = slurp(stem.string() + ".svg");
+  EXPECT_NE(svg.find("path, by robot"), std::string::npos);
+  std::size_t bodies = 0;
+  for (std::size_t i = svg.find(R"(fill-opacity="0.35")"); i != std::string::npos; i = svg.find(R"(fill-opacity="0.35")", i + 1))
+    ++bodies;
+  EXPECT_EQ(bodies, 3U * 3U) << "every robot at the end of each of 3 epochs";
+  EXPECT_NE(svg.find(", 3 robots;"), std::string::npos);
+
+  ASSERT_EQ(esc_command("report " + dir.string()).status, 0);
+  if (std::string(ESC_CHROMIUM).empty())
+    GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
+  const Outcome dom = shell("timeout 60 " + std::string(ESC_CHROMIUM) +
+                            " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --user-data-dir=" +
+                            (dir / "profile").string() + " --virtual-time-budget=3000 --dump-dom file://" +
+                            (dir / "report.html").string() + " 2>/dev/null");
+  ASSERT_EQ(dom.status, 0) << dom.output.substr(0, 2000);
+  EXPECT_NE(dom.output.find("(ready)</title>"), std::string::npos) << dom.output.substr(0, 600);
+  EXPECT_EQ(dom.output.find("class=\"esc-error\""), std::string::npos) << "script error in the page";
+  EXPECT_NE(dom.output.find(">robot 3</option>"), std::string::npos);
+  EXPECT_NE(dom.output.find("A group of 3 robots"), std::string::npos);
+}
+
 TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {
   const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
   const fs::path dir = scratch("replay-supervisor");

@@ -58,8 +58,7 @@ TEST(Results, KilledRunResumesBitIdentical) {
   EXPECT_EQ(e["controllers"]["SC"]["runs"][0]["behavior_usage"].size(), 3U);
 }
 
-// A group (`--set robots=3`, docs/groups.md) resumes as one robot does; it stores no replay,
-// which esc replay says.
+// A group (`--set robots=3`, docs/groups.md) resumes as one robot does, its stored replay too.
 TEST(Results, AGroupKilledResumesBitIdentical) {
   const fs::path reference = scratch("group-reference");
   const fs::path killed = scratch("group-killed");
@@ -71,8 +70,8 @@ TEST(Results, AGroupKilledResumesBitIdentical) {
   EXPECT_EQ(read_json(killed / "settings.json").dump().find("\"robots\":\"3\"") != std::string::npos, true)
       << slurp(killed / "settings.json");
   const Outcome replay = esc("replay " + killed.string() + " --controller CC");
-  EXPECT_EQ(replay.status, 2) << replay.output;
-  EXPECT_NE(replay.output.find("group of 3 robots"), std::string::npos) << replay.output;
+  EXPECT_EQ(replay.status, 0) << replay.output;
+  EXPECT_NE(replay.output.find("identical to the stored replay"), std::string::npos) << replay.output;
 }
 
 // A controller evolved with three robots, tested with five and with three (`evaluate from`,

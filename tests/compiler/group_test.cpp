@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <string>
 #include <vector>
 
 #include "runtime/eval/evaluator.hpp"
@@ -60,6 +62,130 @@ TEST(Groups, StepsFoldedIntoAnEndTermAreRefusedForAGroup) {
   eval::ExperimentSpec x = first_experiment(script("robot bot", folded), "g.esc");
   const std::string error = apply_setting(x, "robots", "3");
   EXPECT_NE(error.find("folds its steps"), std::string::npos) << error;
+}
+
+// `over robots sum|min|max` reduces every term of the fitness over the robots as it says: the
+// spread is the largest centroid distance, so `max` of centroid_distance is it, and the mean
+// lies between min and max; `sum` is the mean times the robots.
+TEST(Groups, OverRobotsReducesEveryTermAsItSays) {
+  const auto fitness = [](const std::string& over, const std::string& term = "centroid_distance") {
+    const std::string body = "step: " + term + "  epoch: " + term + (over.empty() ? "" : "  over robots " + over);
+    return evaluate(first_experiment(script("robot bot x 4", body), "g.esc")).fitness;
+  };
+  const double mean = fitness(""), sum = fitness("sum"), low = fitness("min"), high = fitness("max");
+  EXPECT_EQ(fitness("mean"), mean);
+  EXPECT_NEAR(sum, 4 * mean, 1e-9);
+  EXPECT_LT(low, mean);
+  EXPECT_GT(high, mean);
+  EXPECT_NEAR(high, fitness("", "spread"), 1e-9);
+  const eval::ExperimentSpec x = first_experiment(script("robot bot x 4", "step: 0  over robots: min"), "g.esc");
+  EXPECT_EQ(x.fitness.over_robots, eval::Reduction::Min);
+  EXPECT_EQ(x.resolved_settings.at("fitness.over_robots"), "min");
+  // A robot alone's terms are its own whatever the reduction, and resolve as they always did.
+  const eval::ExperimentSpec alone = first_experiment(script("robot bot", "step: forward_speed  over robots sum"), "g.esc");
+  EXPECT_EQ(evaluate(alone).fitness, evaluate(first_experiment(script("robot bot"), "g.esc")).fitness);
+  EXPECT_FALSE(first_experiment(script("robot bot"), "g.esc").resolved_settings.contains("fitness.over_robots"));
+}
+
+TEST(Groups, OverSomethingElseOrAnUnknownReductionIsALocatedError) {
+  std::string out = refusal(script("robot bot x 2", "step: 0  over robots median"), "g.esc");
+  EXPECT_NE(out.find("g.esc:3:"), std::string::npos) << out;
+  EXPECT_NE(out.find("`median` is not a reduction over the robots"), std::string::npos) << out;
+  out = refusal(script("robot bot x 2", "step: 0  over epochs max"), "g.esc");
+  EXPECT_NE(out.find("not over `epochs`"), std::string::npos) << out;
+  EXPECT_NE(out.find("over robots max"), std::string::npos) << out;
+  out = refusal(script("robot bot x 2", "step: 0  over robots max  over robots min"), "g.esc");
+  EXPECT_NE(out.find("already says how its terms are reduced"), std::string::npos) << out;
+  out = refusal(script("robot bot x 2", "step: 0  over robots mex"), "g.esc");
+  EXPECT_NE(out.find("did you mean `max`?"), std::string::npos) << out;
+}
+
+// `clusters(R)`, `largest_cluster(R)`, `cluster_size(R)`: each radius the experiment reads
+// gets its slots, in the order first read, the same radius the same slots.
+TEST(Groups, ClustersAreCountedWithinEachRadiusTheExperimentReads) {
+  const eval::ExperimentSpec x = first_experiment(
+      script("robot bot x 4", "step: 0  epoch: clusters(15cm) + largest_cluster(0.15m) - cluster_size(30cm)"), "g.esc");
+  EXPECT_EQ(x.cluster_radii, (std::vector<double>{0.15, 0.3}));
+  const std::vector<expr::Instr> code(x.fitness.epoch_end->code().begin(), x.fitness.epoch_end->code().end());
+  std::vector<expr::Slot> loads;
+  for (const expr::Instr& in : code)
+    if (in.op == expr::Op::Load) loads.push_back(in.slot);
+  EXPECT_EQ(loads, (std::vector<expr::Slot>{expr::slot::clusters, expr::slot::largest_cluster, expr::slot::cluster_size + 1}));
+  // Four robots make between one and four clusters, of one to four robots, each epoch.
+  const double f = evaluate(first_experiment(script("robot bot x 4", "step: 0  epoch: clusters(20cm)"), "g.esc")).fitness;
+  EXPECT_GE(f, 2 * 1.0);
+  EXPECT_LE(f, 2 * 4.0);
+  // Alone: one cluster of one.
+  EXPECT_EQ(evaluate(first_experiment(script("robot bot", "step: 0  epoch: clusters(20cm) * cluster_size(1cm)"), "g.esc"))
+                .fitness,
+            2 * 1.0);
+  // A descriptor reads them too, from the same slots.
+  const eval::ExperimentSpec d = first_experiment(
+      script("robot bot x 3", "step: clusters(10cm)", "descriptor apart: largest_cluster(10cm) in [1, 3]"), "g.esc");
+  EXPECT_EQ(d.cluster_radii, (std::vector<double>{0.1}));
+}
+
+TEST(Groups, AClusterRadiusIsAPositiveLengthAndAtMostFourAreRead) {
+  for (const char* bad : {"clusters(15)", "clusters(0cm)", "clusters(1s)", "clusters(speed)", "clusters()"}) {
+    const std::string out = refusal(script("robot bot x 3", std::string("step: ") + bad), "g.esc");
+    EXPECT_NE(out.find("takes a radius, a positive length with its unit"), std::string::npos) << bad << out;
+    EXPECT_NE(out.find("g.esc:3:"), std::string::npos) << out;
+  }
+  const std::string five =
+      refusal(script("robot bot x 3", "step: clusters(1cm) + clusters(2cm) + clusters(3cm) + clusters(4cm) + clusters(5cm)"),
+              "g.esc");
+  EXPECT_NE(five.find("at most 4 radii"), std::string::npos) << five;
+  const std::string behavior = refusal("behavior b() { wheels(clusters(10cm), 0) }\n" + script("robot bot x 2"), "g.esc");
+  EXPECT_NE(behavior.find("not by a behavior"), std::string::npos) << behavior;
+}
+
+// `formation line 10cm`, `formation circle 15cm`, `formation at [...]`: read into the
+// experiment, resolved only when given, settable with `--set`, and checked against the group
+// and the arena with located errors.
+TEST(Groups, AFormationIsDeclaredSetAndChecked) {
+  const eval::ExperimentSpec line = first_experiment(script("robot bot x 3  formation line 10cm"), "g.esc");
+  EXPECT_EQ(line.formation.kind, sim::FormationKind::Line);
+  EXPECT_DOUBLE_EQ(line.formation.spacing_m, 0.1);
+  EXPECT_EQ(line.resolved_settings.at("formation"), "line");
+  EXPECT_EQ(line.resolved_settings.at("formation_spacing"), "0.1 m");
+  const eval::ExperimentSpec at =
+      first_experiment(script("robot bot x 2  formation at [(20cm, 20cm, 90deg), (40cm, 20cm, 0deg)]"), "g.esc");
+  ASSERT_EQ(at.formation.at.size(), 2U);
+  EXPECT_DOUBLE_EQ(at.formation.at[1].x_m, 0.4);
+  EXPECT_NEAR(at.formation.at[0].heading_rad, std::numbers::pi / 2, 1e-15);
+  // Random resolves as it always did; `--set` changes it as it changes any setting.
+  eval::ExperimentSpec x = first_experiment(script("robot bot x 3"), "g.esc");
+  EXPECT_FALSE(x.resolved_settings.contains("formation"));
+  EXPECT_NE(apply_setting(x, "formation", "circle").find("spacing must be a length greater than 0"), std::string::npos);
+  EXPECT_EQ(x.formation.kind, sim::FormationKind::Random) << "unchanged on error";
+  EXPECT_EQ(apply_settings(x, {{"formation", "circle"}, {"formation_spacing", "12cm"}}), "");
+  EXPECT_EQ(x.formation.kind, sim::FormationKind::Circle);
+  EXPECT_EQ(x.resolved_settings.at("formation_spacing"), "0.12 m");
+  // Evaluated as a circle: every robot starts 12 cm from the others' centroid.
+  const eval::ExperimentSpec circle =
+      first_experiment(script("robot bot x 3  formation circle 12cm", "step: 0  epoch: centroid_distance  stop epoch when step >= 0"),
+                       "g.esc");
+  EXPECT_NEAR(evaluate(circle).fitness, 2 * 0.12, 0.01);
+}
+
+TEST(Groups, AFormationTheGroupCannotTakeIsALocatedError) {
+  std::string out = refusal(script("robot bot x 3  formation line"), "g.esc");
+  EXPECT_NE(out.find("`formation line` takes a length"), std::string::npos) << out;
+  EXPECT_NE(out.find("g.esc:5:"), std::string::npos) << out;
+  out = refusal(script("robot bot x 3  formation zigzag 10cm"), "g.esc");
+  EXPECT_NE(out.find("zigzag"), std::string::npos) << out;
+  out = refusal(script("robot bot x 3  formation line 4cm"), "g.esc");
+  EXPECT_NE(out.find("would overlap"), std::string::npos) << out;
+  out = refusal(script("robot bot x 3  formation circle 60cm"), "g.esc");
+  EXPECT_NE(out.find("across and the arena"), std::string::npos) << out;
+  out = refusal(script("robot bot x 3  formation at [(20cm, 20cm, 0deg), (40cm, 20cm, 0deg)]"), "g.esc");
+  EXPECT_NE(out.find("2 poses for 3 robots"), std::string::npos) << out;
+  out = refusal(script("robot bot x 2  formation at [(20cm, 20cm), (40cm, 20cm)]"), "g.esc");
+  EXPECT_NE(out.find("formation_at"), std::string::npos) << out;
+  // `--set robots=3` after two poses is refused the same way.
+  eval::ExperimentSpec x =
+      first_experiment(script("robot bot x 2  formation at [(20cm, 20cm, 0deg), (40cm, 20cm, 0deg)]"), "g.esc");
+  EXPECT_NE(apply_setting(x, "robots", "3").find("2 poses for 3 robots"), std::string::npos);
 }
 
 TEST(Groups, EveryTermIsTheMeanOverTheRobots) {

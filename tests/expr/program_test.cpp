@@ -116,7 +116,8 @@ TEST(Observables, EveryNameResolvesToItsSlots) {
   EXPECT_EQ(find_observable("radar")->first + kRadarCount, find_observable("ground_sensor")->first);
   EXPECT_EQ(find_observable("ground_sensor")->first + kGroundSensorCount, find_observable("bumper")->first);
   EXPECT_EQ(find_observable("bumper")->first + kBumperCount, find_observable("robots")->first);
-  EXPECT_EQ(find_observable("spread")->first + 1, kFrameSize);
+  EXPECT_EQ(find_observable("spread")->first + 1, find_parametrised("clusters")->first);
+  EXPECT_EQ(find_parametrised("cluster_size")->first + kMaxClusterRadii, kFrameSize);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "runtime/report/trajectory_csv.hpp"
@@ -88,7 +89,8 @@ TEST(TrajectorySvg, EpochsColouredByBehaviorAreDashedApartOverAScaleBar) {
 }
 
 TEST(TrajectorySvg, DrawsSegmentWallsAsTheirRectanglesAndTheGoal) {
-  TrajectoryFigure f = figure(two_epochs(), {});
+  const auto steps = two_epochs();   // the figure's span points into it
+  TrajectoryFigure f = figure(steps, {});
   const std::string without = trajectory_svg(f);
   EXPECT_EQ(without.find(">goal</text>"), std::string::npos);
   // A vertical wall 20 cm long, 1 cm thick, centred at (0.5 m, 0.2 m): a 200 x 10 mm rectangle
@@ -101,6 +103,50 @@ TEST(TrajectorySvg, DrawsSegmentWallsAsTheirRectanglesAndTheGoal) {
       << svg;
   EXPECT_EQ(count(svg, R"(stroke="#c51b7d")"), 2U) << "the goal, and its legend mark";
   EXPECT_NE(svg.find(">goal</text>"), std::string::npos);
+}
+
+// Three robots over two epochs: a row per robot per step, in robot order.
+std::vector<eval::TraceStep> a_group() {
+  std::vector<eval::TraceStep> rows;
+  for (const eval::TraceStep& t : two_epochs())
+    for (int r = 0; r < 3; ++r) {
+      eval::TraceStep u = t;
+      u.robot = r;
+      u.grouped = true;
+      u.pose.y_m += 0.05 * r;
+      u.group = {0.25, 0.5, 0.0, 0.05 * r, 0.05, 0.0666, 0.05};
+      rows.push_back(u);
+    }
+  return rows;
+}
+
+// Every robot's path in its own colour, its start and its end, and a legend of the robots.
+TEST(TrajectorySvg, AGroupsRobotsAreDrawnEachInItsColour) {
+  const auto rows = a_group();
+  const std::string svg = trajectory_svg(figure(rows, {"forward", "left", "right"}));
+  EXPECT_NE(svg.find("path, by robot"), std::string::npos);
+  for (const char* colour : {"#4e79a7", "#f28e2b", "#59a14f"})
+    EXPECT_EQ(count(svg, fmt::format(R"(<path stroke="{}")", colour)), 2U) << colour << ": a path per epoch";
+  EXPECT_EQ(count(svg, R"(fill-opacity="0.35")"), 6U) << "every robot at the end of each epoch";
+  EXPECT_NE(svg.find(">robot 3 (1 collision step)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">epoch 2 (4 steps)</text>"), std::string::npos) << "steps, not rows";
+}
+
+// A group's CSV: a robot column after the step, from 1, and the group's observables last.
+TEST(TrajectoryCsv, AGroupHasARobotColumnAndItsObservables) {
+  const auto rows = a_group();
+  const std::string csv = trajectory_csv(rows, {}, 0.1);
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header, trajectory_csv_header({}, 0, 0, 0, 0, true));
+  EXPECT_EQ(header.rfind("epoch,step,robot,time_s,", 0), 0U) << header;
+  EXPECT_NE(header.find(",collided,centroid_x_m,centroid_y_m,centroid_moved_m,centroid_distance_m,nearest_robot_m,"
+                        "robot_distance_m,spread_m"),
+            std::string::npos)
+      << header;
+  EXPECT_EQ(count(csv, "\n"), 1U + rows.size());
+  EXPECT_NE(csv.find("\n1,1,3,0.1,"), std::string::npos);
+  EXPECT_NE(csv.find(",0.25,0.5,0,0.10000000000000001,0.050000000000000003,0.066600000000000006,0.050000000000000003\n"),
+            std::string::npos);
 }
 
 TEST(TrajectoryCsv, OneRowPerStepCountedFromOne) {

@@ -176,6 +176,59 @@ TEST(SimGroup, RandomStartsKeepTheRobotsApartAndRobotZeroDrawsAsAlone) {
   }
 }
 
+// Formations (formation.hpp): a line of robots side by side facing one heading, spaced as
+// asked; a circle about a centre, each facing out; given poses taken as they are; each drawn
+// from the epoch's stream clear of the walls and obstacles; refused where they cannot be taken.
+TEST(SimGroup, FormationsPlaceTheGroupAsDeclared) {
+  ArenaSpec arena = test::empty_arena(1.0, 1.0);
+  arena.cylinders.push_back({{0.5, 0.5}, 0.1});
+  const RobotParams k = test::robot_with_inertia(false);
+  World group(arena, std::vector<RobotParams>(4, k));
+  group.set_formation({FormationKind::Line, 0.1, {}});
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    Rng rng(seed);
+    group.begin_epoch(rng);
+    const double h = group.state(0).pose.heading_rad;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Pose& p = group.state(i).pose;
+      EXPECT_EQ(p.heading_rad, h);
+      EXPECT_GE(std::hypot(p.x_m - 0.5, p.y_m - 0.5), 0.1 + k.body_radius_m) << "clear of the cylinder";
+      if (i == 0) continue;
+      const Pose& q = group.state(i - 1).pose;
+      EXPECT_NEAR(distance(p, q), 0.1, 1e-12);
+      // Side by side: the step from one to the next is perpendicular to the heading.
+      EXPECT_NEAR((p.x_m - q.x_m) * std::cos(h) + (p.y_m - q.y_m) * std::sin(h), 0.0, 1e-12);
+    }
+  }
+  group.set_formation({FormationKind::Circle, 0.15, {}});
+  Rng rng(3), again(3);
+  group.begin_epoch(rng);
+  double cx = 0.0, cy = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    cx += group.state(i).pose.x_m / 4;
+    cy += group.state(i).pose.y_m / 4;
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Pose& p = group.state(i).pose;
+    EXPECT_NEAR(std::hypot(p.x_m - cx, p.y_m - cy), 0.15, 1e-12);
+    EXPECT_NEAR(std::remainder(std::atan2(p.y_m - cy, p.x_m - cx) - p.heading_rad, 2 * std::numbers::pi), 0.0, 1e-9)
+        << "facing out";
+  }
+  const Pose first = group.state(2).pose;
+  group.begin_epoch(again);
+  EXPECT_EQ(group.state(2).pose.x_m, first.x_m) << "drawn from the epoch's stream alone";
+  const std::vector<Pose> at = {{0.1, 0.1, 0.0}, {0.2, 0.1, 1.0}, {0.3, 0.1, 2.0}, {0.4, 0.1, 3.0}};
+  group.set_formation({FormationKind::At, 0.0, at});
+  group.begin_epoch(rng);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(group.state(i).pose.heading_rad, at[i].heading_rad);
+  // Refused: overlapping neighbours, a formation wider than the arena, a pose per robot, a
+  // pose in the cylinder.
+  for (const Formation& bad : {Formation{FormationKind::Line, 0.05, {}}, Formation{FormationKind::Line, 0.4, {}},
+                               Formation{FormationKind::At, 0.0, {at.begin(), at.begin() + 3}},
+                               Formation{FormationKind::At, 0.0, {{0.1, 0.1, 0}, {0.2, 0.1, 0}, {0.5, 0.5, 0}, {0.4, 0.1, 0}}}})
+    EXPECT_THROW(group.set_formation(bad), std::invalid_argument);
+}
+
 // The same epoch twice, in a fresh world and in one that ran other epochs before (a worker
 // reuses its world): Bullet's world after a reset is a fresh one's, its bodies in the same order.
 TEST(SimGroup, ACrowdStepsTheSameInAFreshWorldAndAReusedOne) {

@@ -26,7 +26,8 @@ TEST(SimObserve, FrameLayout) {
   EXPECT_EQ(slot::ground_sensor, slot::radar + expr::kRadarCount);
   EXPECT_EQ(slot::bumper, slot::ground_sensor + expr::kGroundSensorCount);
   EXPECT_EQ(slot::robots, slot::bumper + expr::kBumperCount);
-  EXPECT_EQ(expr::kFrameSize, slot::spread + 1);
+  EXPECT_EQ(slot::clusters, slot::spread + 1);
+  EXPECT_EQ(expr::kFrameSize, slot::cluster_size + expr::kMaxClusterRadii);
   // Every slot belongs to exactly one observable, parametrised block or param.
   std::set<expr::Slot> used;
   const auto claim = [&](expr::Slot first, expr::Slot count) {
@@ -216,6 +217,46 @@ TEST(SimObserve, GroupObservables) {
   EXPECT_EQ(one[0][slot::spread], 0.0);
   EXPECT_EQ(one[0][slot::robot_distance], 0.0);
   EXPECT_NEAR(one[0][slot::nearest_robot], std::hypot(2.0, 1.0), 1e-15);
+}
+
+// Clusters within a radius: five robots, a pair 0.3 m apart beside a chain of three 0.2 m
+// apart (its ends 0.4 m apart), far from the pair. Within 0.25 m: the chain and two
+// singletons; within 0.35 m: the pair and the chain; within 0.1 m: five singletons.
+TEST(SimObserve, ClustersWithinEachRadius) {
+  sim::ArenaSpec arena;
+  arena.width_m = 3.0;
+  arena.height_m = 1.0;
+  sim::World w(arena, std::vector<sim::RobotParams>(5, sim::RobotParams{}));
+  const std::array<sim::Pose, 5> poses = {sim::Pose{0.2, 0.2, 0.0}, sim::Pose{0.5, 0.2, 0.0}, sim::Pose{1.5, 0.5, 0.0},
+                                          sim::Pose{1.7, 0.5, 0.0}, sim::Pose{1.9, 0.5, 0.0}};
+  w.reset(poses);
+  std::vector<Frame> frames(5);
+  std::vector<std::size_t> parent(5), size(5);
+  const std::array<double, 3> radii = {0.25, 0.35, 0.1};
+  observe_clusters(w, radii, frames, parent, size);
+  for (const Frame& f : frames) {
+    EXPECT_EQ(f[slot::clusters + 0], 3.0);
+    EXPECT_EQ(f[slot::largest_cluster + 0], 3.0);
+    EXPECT_EQ(f[slot::clusters + 1], 2.0);
+    EXPECT_EQ(f[slot::largest_cluster + 1], 3.0);
+    EXPECT_EQ(f[slot::clusters + 2], 5.0);
+    EXPECT_EQ(f[slot::largest_cluster + 2], 1.0);
+    EXPECT_EQ(f[slot::clusters + 3], 0.0) << "a radius not read is not written";
+  }
+  const std::array<double, 5> within_25 = {1, 1, 3, 3, 3}, within_35 = {2, 2, 3, 3, 3};
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(frames[i][slot::cluster_size + 0], within_25[i]) << i;
+    EXPECT_EQ(frames[i][slot::cluster_size + 1], within_35[i]) << i;
+    EXPECT_EQ(frames[i][slot::cluster_size + 2], 1.0) << i;
+  }
+  // A robot alone is one cluster of one.
+  sim::World alone(arena, sim::RobotParams{});
+  alone.reset(poses[0]);
+  std::vector<Frame> one(1);
+  observe_clusters(alone, radii, one, std::span(parent).first(1), std::span(size).first(1));
+  EXPECT_EQ(one[0][slot::clusters], 1.0);
+  EXPECT_EQ(one[0][slot::largest_cluster + 1], 1.0);
+  EXPECT_EQ(one[0][slot::cluster_size + 2], 1.0);
 }
 
 }  // namespace

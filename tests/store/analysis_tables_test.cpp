@@ -243,6 +243,42 @@ TEST(AnalysisTables, GroundSensorsAndBumpersTravelWithTheReplayAfterTheRadars) {
   EXPECT_EQ(back.bumper[2], 1.0);
 }
 
+// A group's replay (docs/groups.md): each row ends with its robot and the group observables,
+// read back as written.
+TEST(AnalysisTables, AGroupsRobotAndObservablesTravelWithTheReplay) {
+  std::vector<eval::TraceStep> rows;
+  for (int r = 0; r < 3; ++r) {
+    eval::TraceStep t;
+    t.bumper_count = 1;
+    t.robot = r;
+    t.grouped = true;
+    for (std::size_t g = 0; g < t.group.size(); ++g) t.group[g] = 0.1 * static_cast<double>(r) + static_cast<double>(g);
+    rows.push_back(t);
+  }
+  const fs::path dir = with_replay("replay-group", rows);
+  sql::Database raw(dir / kDatabaseFile, sql::Database::Mode::ReadOnly);
+  auto columns = raw.prepare("SELECT columns FROM replays");
+  ASSERT_TRUE(columns.step());
+  EXPECT_NE(columns.text(0).find(R"("bumper0","robot","centroid_x","centroid_y","centroid_moved","centroid_distance",)"
+                                 R"("nearest_robot","robot_distance","spread"])"),
+            std::string::npos)
+      << columns.text(0);
+  const StoredExperiment s = ResultsDb::open(dir, true).load_single();
+  const auto& back = s.controllers[0].replay->steps;
+  ASSERT_EQ(back.size(), 3U);
+  for (int r = 0; r < 3; ++r) {
+    EXPECT_TRUE(back[static_cast<std::size_t>(r)].grouped);
+    EXPECT_EQ(back[static_cast<std::size_t>(r)].robot, r);
+    EXPECT_EQ(back[static_cast<std::size_t>(r)].group, rows[static_cast<std::size_t>(r)].group);
+  }
+  // A robot alone's replay has neither.
+  const fs::path alone = with_replay("replay-alone", {eval::TraceStep{}});
+  sql::Database one(alone / kDatabaseFile, sql::Database::Mode::ReadOnly);
+  auto names = one.prepare("SELECT columns FROM replays");
+  ASSERT_TRUE(names.step());
+  EXPECT_EQ(names.text(0).find("robot"), std::string::npos) << names.text(0);
+}
+
 // A replay column this esc does not know (one a newer esc added, sealed as it seals rows) is
 // a newer esc's database, not a damaged one.
 TEST(AnalysisTables, AReplayColumnOfANewerEscIsSaidToBeOne) {

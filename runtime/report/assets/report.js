@@ -453,6 +453,7 @@
     const card = el('div', {class: 'card'});
     card.appendChild(el('h3', {text: 'Replay of the best controllers'}));
     const select = el('select');
+    const watch = el('select');   // which robot of a group the bars show
     withReplay.forEach((c, i) => select.appendChild(el('option', {value: String(i), text: `${c.name} (run ${c.replay.run}, fitness ${fmt(c.replay.fitness, fitnessDecimals(c.replay.fitness, 2))})`})));
     const play = el('button', {text: 'Pause'});
     const slider = el('input', {type: 'range', min: '0', max: '0', value: '0'});
@@ -505,7 +506,7 @@
     const ranges = bars([...Array(rangeCount).keys()].map(rangeLabel), 'range');
     const radars = bars([...Array(radarCount).keys()].map(i => `${Math.round(360 * i / radarCount)}°`), 'radar');
     const legend = el('div', {class: 'legend'});
-    card.appendChild(el('div', {class: 'controls'}, [select, play, el('span', {text: 'speed'}), speed, slider]));
+    card.appendChild(el('div', {class: 'controls'}, [select, watch, play, el('span', {text: 'speed'}), speed, slider]));
     const navigation = [];
     if (rangeCount > 0) navigation.push(el('h3', {text: 'Rangefinders (distance / range, by angle from the heading)'}), ranges.box);
     if (radarCount > 0) navigation.push(el('h3', {text: 'Goal radars (by slice centre, counter-clockwise from ahead)'}), radars.box);
@@ -520,7 +521,11 @@
 
     const arena = exp.arena;
     const ctx = canvas.getContext('2d');
+    // A group's rows are a row per robot per step (robot order), each ending with its robot:
+    // `index` counts steps, and the bars and the readout follow the robot `watched`.
     let c = withReplay[0], rows = c.replay.rows, index = 0, playing = true, last = null, carry = 0;
+    let robots = 1, watched = 0;
+    watch.addEventListener('change', () => { watched = Number(watch.value); draw(); });
     const margin = 12;
     const scale = Math.min((canvas.width - 2 * margin) / (arena.width * 1000), (canvas.height - 2 * margin) / (arena.height * 1000));
     canvas.height = Math.ceil(arena.height * 1000 * scale + 2 * margin);
@@ -530,25 +535,82 @@
     function choose(i) {
       c = withReplay[i];
       rows = c.replay.rows;
+      robots = c.replay.robots || 1;
       index = 0;
-      slider.max = String(rows.length - 1);
+      watched = 0;
+      watch.innerHTML = '';
+      for (let k = 0; k < robots; ++k) watch.appendChild(el('option', {value: String(k), text: `robot ${k + 1}`}));
+      watch.style.display = robots > 1 ? '' : 'none';
+      slider.max = String(rows.length / robots - 1);
       const shown = rows.length < c.replay.total_steps
         ? `the first ${rows[rows.length - 1][0] + 1} of ${counted(c.replay.total_epochs, 'epoch')} ` +
-          `(${rows.length} of ${counted(c.replay.total_steps, 'step')})`
-        : c.replay.total_epochs === 1 ? `its one epoch (${counted(rows.length, 'step')})`
-                                      : `all ${c.replay.total_epochs} epochs (${counted(rows.length, 'step')})`;
-      note.textContent = `Run ${c.replay.run}, evaluation seed ${c.replay.seed}: ${shown}. ` +
-        'Trajectory coloured by the acting action or behavior (symbolic heads, supervisors); black dots: collisions.';
+          `(${rows.length / robots} of ${counted(c.replay.total_steps, 'step')})`
+        : c.replay.total_epochs === 1 ? `its one epoch (${counted(rows.length / robots, 'step')})`
+                                      : `all ${c.replay.total_epochs} epochs (${counted(rows.length / robots, 'step')})`;
+      note.textContent = `Run ${c.replay.run}, evaluation seed ${c.replay.seed}: ${shown}. ` + (robots > 1
+        ? `A group of ${robots} robots, each path in its robot's colour; the sensors shown are the chosen robot's; black dots: collisions.`
+        : 'Trajectory coloured by the acting action or behavior (symbolic heads, supervisors); black dots: collisions.');
       legend.innerHTML = '';
       const swatch = (colour, label, dot) => legend.appendChild(el('span', {class: 'swatch'}, [
         el('span', {class: dot ? 'dot' : 'line', style: `background:${colour}`}), el('span', {text: label})]));
-      if (c.actions.length === 0) swatch('#1f77b4', 'path (a classical head chooses no behavior)', false);
-      c.actions.forEach((name, i) => swatch(choiceColour(i, c.actions.length), name, false));
+      if (robots > 1) for (let k = 0; k < robots; ++k) swatch(choiceColour(k, robots), `robot ${k + 1}`, false);
+      else if (c.actions.length === 0) swatch('#1f77b4', 'path (a classical head chooses no behavior)', false);
+      else c.actions.forEach((name, i) => swatch(choiceColour(i, c.actions.length), name, false));
       swatch(collisionColour, 'collision', true);
       draw();
     }
+    // Robot `k` of the step's rows as `row` has it: its disc or outline (a group's robot in its
+    // colour, the watched one outlined thicker), its heading, its IR sensors (where they sit
+    // and where they look) and a navigator's radar slice and rangefinder rays.
+    function drawRobot(row, k) {
+      const [, , x, y, heading, ir, , , , , collided] = row;
+      const rr = exp.robot_radius_mm;
+      ctx.fillStyle = collided ? 'rgba(214,39,40,0.35)' : robots > 1 ? alpha(choiceColour(k, robots), 0.35) : 'rgba(31,119,180,0.25)';
+      ctx.strokeStyle = '#1d2330'; ctx.lineWidth = robots > 1 && k === watched ? 3 : 1.5;
+      ctx.beginPath();
+      if (outlineMm.length >= 3) {
+        const c = Math.cos(heading), s = Math.sin(heading);
+        outlineMm.forEach(([px, py], i) => {
+          const vx = X(x + c * px - s * py), vy = Y(y + s * px + c * py);
+          if (i === 0) ctx.moveTo(vx, vy); else ctx.lineTo(vx, vy);
+        });
+        ctx.closePath();
+      } else {
+        ctx.arc(X(x), Y(y), rr * scale, 0, 2 * Math.PI);
+      }
+      ctx.fill(); ctx.stroke();
+      ctx.beginPath(); ctx.moveTo(X(x), Y(y));
+      ctx.lineTo(X(x + rr * Math.cos(heading)), Y(y + rr * Math.sin(heading))); ctx.stroke();
+      for (let i = 0; i < irMounts.length && i < ir.length; ++i) {
+        const m = heading + irMounts[i].b, f = heading + irMounts[i].f, at = irMounts[i].mm ?? rr;
+        const sx = x + at * Math.cos(m), sy = y + at * Math.sin(m);
+        const len = 6 + 30 * ir[i];
+        ctx.strokeStyle = alpha('#d9822b', 0.25 + 0.75 * ir[i]); ctx.lineWidth = 2;
+        ctx.beginPath(); ctx.moveTo(X(sx), Y(sy));
+        ctx.lineTo(X(sx + len * Math.cos(f)), Y(sy + len * Math.sin(f))); ctx.stroke();
+      }
+      // The radar slice holding the goal, as a faint wedge, and each rangefinder's ray up to
+      // what it reads (its full range, fainter, when nothing is within it).
+      if (radarCount > 0) {
+        const slice = row[radarAt].indexOf(1), half = Math.PI / radarCount;
+        if (slice >= 0) {
+          const mid = heading + 2 * half * slice;
+          ctx.fillStyle = 'rgba(197,27,125,0.12)';
+          ctx.beginPath(); ctx.moveTo(X(x), Y(y));
+          ctx.arc(X(x), Y(y), 3 * rr * scale, -(mid + half), -(mid - half)); ctx.closePath(); ctx.fill();
+        }
+      }
+      if (rangeCount > 0) {
+        if (rangeAngles && rangeAngles.length === rangeCount && rangeMm > 0)
+          row[rangeAt].forEach((v, i) => {
+            const a = heading + parseFloat(rangeAngles[i]), len = v * rangeMm;
+            ctx.strokeStyle = alpha('#17becf', v < 1 ? 0.9 : 0.3); ctx.lineWidth = 1.5;
+            ctx.beginPath(); ctx.moveTo(X(x), Y(y)); ctx.lineTo(X(x + len * Math.cos(a)), Y(y + len * Math.sin(a))); ctx.stroke();
+          });
+      }
+    }
     function draw() {
-      const r = rows[index];
+      const r = rows[index * robots + watched];
       const [epoch, step, x, y, heading, ir, left, right, act, fitness, collided, energy, light] = r;
       ctx.clearRect(0, 0, canvas.width, canvas.height);
       ctx.fillStyle = '#fbfbf8';
@@ -607,66 +669,24 @@
         ctx.fillStyle = energy > 0.2 ? '#2ca02c' : '#d62728'; ctx.fillRect(8, 8, 60 * energy, 8);
         ctx.strokeStyle = '#555'; ctx.lineWidth = 1; ctx.strokeRect(8, 8, 60, 8);
       }
-      // Trajectory of this epoch up to the current step.
+      // Each robot's trajectory in this epoch up to the current step (steps, not rows: a
+      // group's step is `robots` rows).
       let start = index;
-      while (start > 0 && rows[start - 1][0] === epoch) --start;
+      while (start > 0 && rows[(start - 1) * robots][0] === epoch) --start;
       ctx.lineWidth = 2;
-      for (let i = start + 1; i <= index; ++i) {
-        const a = rows[i - 1], b = rows[i];
-        ctx.strokeStyle = b[8] >= 0 ? choiceColour(b[8], c.actions.length) : '#1f77b4';
-        ctx.beginPath(); ctx.moveTo(X(a[2]), Y(a[3])); ctx.lineTo(X(b[2]), Y(b[3])); ctx.stroke();
+      for (let k = 0; k < robots; ++k) {
+        for (let i = start + 1; i <= index; ++i) {
+          const a = rows[(i - 1) * robots + k], b = rows[i * robots + k];
+          ctx.strokeStyle = robots > 1 ? choiceColour(k, robots) : b[8] >= 0 ? choiceColour(b[8], c.actions.length) : '#1f77b4';
+          ctx.beginPath(); ctx.moveTo(X(a[2]), Y(a[3])); ctx.lineTo(X(b[2]), Y(b[3])); ctx.stroke();
+        }
       }
       ctx.fillStyle = collisionColour;
-      for (let i = start; i <= index; ++i)
+      for (let i = start * robots; i < (index + 1) * robots; ++i)
         if (rows[i][10]) { ctx.beginPath(); ctx.arc(X(rows[i][2]), Y(rows[i][3]), 3, 0, 2 * Math.PI); ctx.fill(); }
-      // The robot (its disc, or its outline), its heading and its IR sensors, where they sit
-      // and where they look.
-      const rr = exp.robot_radius_mm;
-      ctx.fillStyle = collided ? 'rgba(214,39,40,0.35)' : 'rgba(31,119,180,0.25)';
-      ctx.strokeStyle = '#1d2330'; ctx.lineWidth = 1.5;
-      ctx.beginPath();
-      if (outlineMm.length >= 3) {
-        const c = Math.cos(heading), s = Math.sin(heading);
-        outlineMm.forEach(([px, py], i) => {
-          const vx = X(x + c * px - s * py), vy = Y(y + s * px + c * py);
-          if (i === 0) ctx.moveTo(vx, vy); else ctx.lineTo(vx, vy);
-        });
-        ctx.closePath();
-      } else {
-        ctx.arc(X(x), Y(y), rr * scale, 0, 2 * Math.PI);
-      }
-      ctx.fill(); ctx.stroke();
-      ctx.beginPath(); ctx.moveTo(X(x), Y(y));
-      ctx.lineTo(X(x + rr * Math.cos(heading)), Y(y + rr * Math.sin(heading))); ctx.stroke();
-      for (let i = 0; i < irMounts.length && i < ir.length; ++i) {
-        const m = heading + irMounts[i].b, f = heading + irMounts[i].f, at = irMounts[i].mm ?? rr;
-        const sx = x + at * Math.cos(m), sy = y + at * Math.sin(m);
-        const len = 6 + 30 * ir[i];
-        ctx.strokeStyle = alpha('#d9822b', 0.25 + 0.75 * ir[i]); ctx.lineWidth = 2;
-        ctx.beginPath(); ctx.moveTo(X(sx), Y(sy));
-        ctx.lineTo(X(sx + len * Math.cos(f)), Y(sy + len * Math.sin(f))); ctx.stroke();
-      }
-      // The radar slice holding the goal, as a faint wedge, and each rangefinder's ray up to
-      // what it reads (its full range, fainter, when nothing is within it).
-      if (radarCount > 0) {
-        const slice = r[radarAt].indexOf(1), half = Math.PI / radarCount;
-        if (slice >= 0) {
-          const mid = heading + 2 * half * slice;
-          ctx.fillStyle = 'rgba(197,27,125,0.12)';
-          ctx.beginPath(); ctx.moveTo(X(x), Y(y));
-          ctx.arc(X(x), Y(y), 3 * rr * scale, -(mid + half), -(mid - half)); ctx.closePath(); ctx.fill();
-        }
-        radars.show(r[radarAt]);
-      }
-      if (rangeCount > 0) {
-        if (rangeAngles && rangeAngles.length === rangeCount && rangeMm > 0)
-          r[rangeAt].forEach((v, i) => {
-            const a = heading + parseFloat(rangeAngles[i]), len = v * rangeMm;
-            ctx.strokeStyle = alpha('#17becf', v < 1 ? 0.9 : 0.3); ctx.lineWidth = 1.5;
-            ctx.beginPath(); ctx.moveTo(X(x), Y(y)); ctx.lineTo(X(x + len * Math.cos(a)), Y(y + len * Math.sin(a))); ctx.stroke();
-          });
-        ranges.show(r[rangeAt]);
-      }
+      for (let k = 0; k < robots; ++k) drawRobot(rows[index * robots + k], k);
+      if (radarCount > 0) radars.show(r[radarAt]);
+      if (rangeCount > 0) ranges.show(r[rangeAt]);
       irs.show(ir.slice(0, irMounts.length));
       // Replays stored before the light sensors were traced have none.
       lights.show((light || [0, 0, 0, 0, 0, 0, 0, 0]).slice(0, irMounts.length));
@@ -674,7 +694,7 @@
       action.textContent = act >= 0 ? (c.actions[act] || `action ${act}`) : 'wheels (classical head)';
       action.style.background = act >= 0 ? alpha(choiceColour(act, c.actions.length), 0.3) : '#e9eef8';
       readout.textContent =
-        `epoch ${epoch + 1}, step ${step + 1}\n` +
+        `epoch ${epoch + 1}, step ${step + 1}${robots > 1 ? `, robot ${watched + 1} of ${robots}` : ''}\n` +
         `position  x ${x.toFixed(1)} mm  y ${y.toFixed(1)} mm  heading ${(heading * 180 / Math.PI).toFixed(0)} deg\n` +
         `commands  left ${left.toFixed(2)}  right ${right.toFixed(2)}\n` +
         `fitness so far  ${fitness.toFixed(3)}${energy !== undefined && energy < 1 ? `\nenergy  ${energy.toFixed(2)}` : ''}${collided ? '\ncollision' : ''}`;
@@ -684,7 +704,7 @@
       if (playing && last !== null) {
         carry += (time - last) / 100 * Number(speed.value);   // one control step is 100 ms
         const n = Math.floor(carry);
-        if (n > 0) { carry -= n; index = (index + n) % rows.length; draw(); }
+        if (n > 0) { carry -= n; index = (index + n) % (rows.length / robots); draw(); }
       }
       last = time;
       requestAnimationFrame(tick);

@@ -1,0 +1,76 @@
+"""esc.ParallelEnv (docs/groups.md): a group stepped with PettingZoo's parallel interface.
+Driven by a stored best genome's networks, one copy per robot (ParallelEnv.policies), it
+reproduces every robot's rows of `esc replay`'s CSV step for step; errors name the agent."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import esc
+from conftest import EXPERIMENTS, HOMING, esc_run, run_esc
+
+SETTINGS = {"epochs": 1, "steps": 40, "mu": 2, "lambda": 4}
+GROUPS = EXPERIMENTS / "examples" / "groups.esc"
+EXACT = {"x_m": "x", "y_m": "y", "heading_rad": "heading", "left_command": "left_command",
+         "right_command": "right_command", "left_speed_mps": "left_speed", "right_speed_mps": "right_speed",
+         "centroid_x_m": "centroid_x", "centroid_y_m": "centroid_y", "centroid_distance_m": "centroid_distance",
+         "nearest_robot_m": "nearest_robot", "spread_m": "spread"}
+
+
+@pytest.fixture(scope="module")
+def group_run(tmp_path_factory):
+    return esc_run(GROUPS, tmp_path_factory.mktemp("group") / "run", SETTINGS, "--experiment", "dispersion")
+
+
+@pytest.mark.parametrize("controller", ["cc", "sc"])
+def test_a_stored_genome_drives_every_robot_as_the_replay_did(group_run, tmp_path, controller):
+    run_esc("replay", group_run, "--controller", controller, "--run", 1, "--out", tmp_path)
+    csv = pd.read_csv(tmp_path / f"replay-{controller}-run-01.csv", float_precision="round_trip", keep_default_na=False)
+    best = esc.open(group_run).best(controller, 1)
+    env = esc.ParallelEnv(esc.compile(GROUPS, SETTINGS), "dispersion", controller, seed=best.evaluation_seed)
+    assert env.possible_agents == [f"robot_{i}" for i in range(1, 6)] and env.agents == []
+    policies = env.policies(best.genome)
+    observations, infos = env.reset()
+    assert env.agents == env.possible_agents and set(observations) == set(env.agents)
+    rows = []
+    while env.agents:
+        actions = {a: policies[a](observations[a]) for a in env.agents}
+        observations, rewards, terminations, truncations, infos = env.step(actions)
+        assert set(rewards) == set(actions) and len(set(terminations.values())) == 1
+        rows.append(env.state())
+    assert len(rows) * 5 == len(csv)
+    for i, (_, row) in enumerate(csv.iterrows()):
+        state = rows[i // 5][f"robot_{row['robot']}"]
+        assert state["step"] == row["step"]
+        for column, key in EXACT.items():
+            assert state[key] == row[column], (column, row["step"], row["robot"])
+        assert state["ir"].tolist() == [row[f"ir{k}"] for k in range(8)]
+        assert (env.choices[state["action"]] if state["action"] >= 0 else "") == row["behavior"]
+    assert truncations["robot_1"] and env.num_agents == 0
+
+
+def test_rewards_are_each_robots_step_term_and_errors_name_the_agent():
+    script = esc.compile(GROUPS, SETTINGS)
+    env = esc.ParallelEnv(script, "aggregation", seed=3)
+    assert env.observation_space("robot_2").shape == (17,) and env.action_space("robot_5").shape == (2,)
+    with pytest.raises(ValueError, match="robot_6"):
+        env.action_space("robot_6")
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step({a: [0.5, 0.5] for a in env.possible_agents})
+    env.reset()
+    with pytest.raises(ValueError, match="no action for robot_5"):
+        env.step({a: [0.5, 0.5] for a in env.possible_agents[:4]})
+    with pytest.raises(ValueError, match="not an agent"):
+        env.step({**{a: [0.5, 0.5] for a in env.possible_agents}, "robot_0": [0, 0]})
+    with pytest.raises(ValueError, match=r"actions\['robot_3'\]\[1\] is nan"):
+        env.step({a: [0.5, np.nan if a == "robot_3" else 0.5] for a in env.possible_agents})
+    with pytest.raises(ValueError, match="robot 2's action is 2 values"):
+        env.step({a: [0.5] * (3 if a == "robot_2" else 2) for a in env.possible_agents})
+    _, rewards, _, _, infos = env.step({a: [1.0, 1.0] for a in env.possible_agents})
+    assert all(r == 0.0 for r in rewards.values())   # aggregation's step term is 0: its epoch term counts
+    assert infos["robot_4"]["step"] == 1
+    # Env drives a robot alone; a robot alone is a ParallelEnv of one.
+    with pytest.raises(ValueError, match="esc.ParallelEnv"):
+        esc.Env(script, "aggregation")
+    alone = esc.ParallelEnv(esc.compile(HOMING["script"], HOMING["settings"]), HOMING["experiment"], seed=1)
+    assert alone.possible_agents == ["robot_1"]
