@@ -191,8 +191,8 @@ Subject genome_subject(const fs::path& file, const ReplayRequest& o) {
 
 // The first difference between a replay and the stored one, or empty when bit-identical.
 std::string first_difference(std::span<const eval::TraceStep> now, const store::StoredReplay& stored) {
-  // A stored replay keeps at most eval::kMaxReplayRows rows, cut as trace_rows_kept cuts.
-  now = now.first(eval::trace_rows_kept(now, eval::kMaxReplayRows));
+  // A group's stored replay keeps at most eval::kMaxReplayRows rows, cut as trace_rows_kept cuts.
+  if (!now.empty() && now.front().grouped) now = now.first(eval::trace_rows_kept(now, eval::kMaxReplayRows));
   if (now.size() != stored.steps.size())
     return fmt::format("{} steps instead of the stored {}", now.size(), stored.steps.size());
   for (std::size_t i = 0; i < now.size(); ++i) {

@@ -54,10 +54,19 @@ std::vector<std::pair<std::string, std::string>> setting_pairs(const Overrides& 
 }
 
 void apply_settings(const Overrides& o, eval::ExperimentSpec& spec, std::string_view where) {
+  // Together, as a script's items are (`--set formation=line --set formation_spacing=10cm`):
+  // each setting that cannot be set names itself; settings that cannot stand together are
+  // named together.
+  const auto pairs = setting_pairs(o);
+  const compiler::SettingsRefusal refusal = compiler::apply_settings_together(spec, pairs);
   Problems problems;
-  for (const auto& [key, value] : setting_pairs(o))
-    if (const std::string error = compiler::apply_setting(spec, key, value); !error.empty())
-      problems.add(fmt::format("{}{}={}: {}", where, key, value, error));
+  for (const auto& [i, why] : refusal.settings)
+    problems.add(fmt::format("{}{}={}: {}", where, pairs[i].first, pairs[i].second, why));
+  if (!refusal.together.empty()) {
+    std::string named;
+    for (const auto& [key, value] : pairs) named += fmt::format("{}{}={}", named.empty() ? "" : " ", key, value);
+    problems.add(fmt::format("{}{}: {}", where, named, refusal.together));
+  }
   problems.throw_if_any(ErrorKind::Setting);
 }
 

@@ -53,5 +53,15 @@ struct CompileResult {
 // items are), as a study condition's settings of an experiment it depends on are applied.
 [[nodiscard]] std::string apply_settings(eval::ExperimentSpec& experiment,
                                          const std::vector<std::pair<std::string, std::string>>& settings);
+// The same, saying which settings could not be set (their index in `settings`, and why) and,
+// when each could, why they cannot stand together (`formation=line` with no spacing). The
+// experiment is unchanged unless nothing is refused.
+struct SettingsRefusal {
+  std::vector<std::pair<std::size_t, std::string>> settings;
+  std::string together;
+  [[nodiscard]] bool empty() const noexcept { return settings.empty() && together.empty(); }
+};
+[[nodiscard]] SettingsRefusal apply_settings_together(eval::ExperimentSpec& experiment,
+                                                      const std::vector<std::pair<std::string, std::string>>& settings);
 
 }  // namespace esc::compiler

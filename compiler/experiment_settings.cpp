@@ -83,7 +83,10 @@ const std::vector<ExperimentSetting>& experiment_settings() {
          if (d) x.formation.spacing_m = *d;
          return d.has_value();
        },
-       [](const X& x) { return x.formation.spacing_m > 0.0 ? fmt::format("{} m", x.formation.spacing_m) : std::string(); }},
+       [](const X& x) {
+         const bool spaced = x.formation.kind == sim::FormationKind::Line || x.formation.kind == sim::FormationKind::Circle;
+         return spaced && x.formation.spacing_m > 0.0 ? fmt::format("{} m", x.formation.spacing_m) : std::string();
+       }},
       {"formation_at", "each robot's start pose (x, y, heading), one per robot, for `formation at`",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
          static constexpr std::array kDims = {Dim::Length, Dim::Length, Dim::Angle};
@@ -95,6 +98,7 @@ const std::vector<ExperimentSetting>& experiment_settings() {
        },
        [](const X& x) {
          std::string t;
+         if (x.formation.kind != sim::FormationKind::At) return t;
          for (const sim::Pose& p : x.formation.at)
            t += fmt::format("{}({} m, {} m, {} rad)", t.empty() ? "[" : ", ", p.x_m, p.y_m, p.heading_rad);
          return t.empty() ? t : t + "]";

@@ -249,7 +249,8 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   if (ok && sink_.errors() == errors && arena != nullptr) {
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);
-    check_group(x, use, sink_);
+    const auto formation = first.find(K::Formation);
+    check_group(x, use, sink_, formation != first.end() ? &formation->second->where : nullptr);
   }
   if (start_decl != nullptr) check_start_from(*start_decl, first, evolve);
   if (!ok || sink_.errors() != errors) return slot;

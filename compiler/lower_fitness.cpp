@@ -47,7 +47,8 @@ void over_robots(const std::vector<ast::FitnessOver>& overs, Sink& sink, Lowered
     return;
   }
   f.spec.over_robots = static_cast<eval::Reduction>(r - names.begin());
-  f.over_text = *r;
+  // The mean, the default, resolves as a fitness without `over` does.
+  if (f.spec.over_robots != eval::Reduction::Mean) f.over_text = *r;
 }
 
 }  // namespace

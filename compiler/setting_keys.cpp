@@ -195,11 +195,11 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   return false;
 }
 
-void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
+void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, const SourceRange* formation) {
   if (const std::string why = sim::formation_problem(spec.formation, static_cast<std::size_t>(spec.robots), spec.arena,
                                                      spec.robot.body_radius_m, sim::kStartMargin_m);
       !why.empty()) {
-    sink.error(where, fmt::format("the group's `formation {}` cannot be taken in arena `{}`: {}",
+    sink.error(formation != nullptr ? *formation : where, fmt::format("the group's `formation {}` cannot be taken in arena `{}`: {}",
                                   formation_words()[static_cast<std::size_t>(spec.formation.kind)], spec.arena_name, why))
         .help.push_back(spec.formation.kind == sim::FormationKind::At
                             ? "give one pose per robot, each clear of the walls, the obstacles and the others"
@@ -222,20 +222,7 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
                                   "starts place them at most {:.0f}% of it",
                                   spec.robots, spec.robot.body_radius_m * 100, cover * 100, kMaxCover * 100))
         .help.push_back("use fewer robots or a larger arena");
-    return;
   }
-  const auto folds = [](const eval::FitnessSpec& f) { return !f.epoch_aggregates.empty() || !f.evaluation_aggregates.empty(); };
-  std::string what;
-  if (folds(spec.fitness)) what = fmt::format("the fitness `{}`", spec.fitness.name);
-  for (const eval::FitnessSpec& f : spec.further)
-    if (what.empty() && folds(f)) what = fmt::format("the objective `{}`", f.name);
-  for (const eval::DescriptorSpec& d : spec.descriptors)
-    if (what.empty() && !d.aggregates.empty()) what = fmt::format("the descriptor `{}`", d.name);
-  if (what.empty()) return;
-  sink.error(where, fmt::format("{} folds its steps (`mean(...)`, `max(...)` over the steps), which a group of {} "
-                                "robots does not support yet",
-                                what, spec.robots))
-      .help.push_back("read the group's state at the epoch's end instead (`centroid_moved`, `spread`), or use one robot");
 }
 
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
@@ -305,34 +292,46 @@ bool out_of_range(const std::string& text) {
 
 }  // namespace
 
-std::string apply_settings(eval::ExperimentSpec& experiment,
-                           const std::vector<std::pair<std::string, std::string>>& settings) {
-  Sink sink;
+SettingsRefusal apply_settings_together(eval::ExperimentSpec& experiment,
+                                        const std::vector<std::pair<std::string, std::string>>& settings) {
+  SettingsRefusal refusal;
   const SourceRange where{"--set", 0, 0, 0};
   eval::ExperimentSpec spec = experiment;   // commit only when everything checks
-  bool all_set = true;
-  for (const auto& [key, value] : settings) {
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    const auto& [key, value] = settings[i];
+    Sink sink;
     const ast::Name name{trimmed(key), where};
     if (const auto v = value_from_text(value, where)) {
-      all_set = set_setting(spec, name, *v, sink) && all_set;
+      (void)set_setting(spec, name, *v, sink);
     } else if (out_of_range(trimmed(value))) {
       sink.error(where, fmt::format("`{}` cannot take `{}`: the number is out of range (a number is at most about "
                                     "1.8e308 in size)",
                                     name.text, trimmed(value)));
-      all_set = false;
     } else {
       sink.error(where, fmt::format("`{}` cannot take `{}`: a value is a number with its unit (`50ms`), `on` or "
                                     "`off`, a word, or a range `[-1, 1]`",
                                     name.text, trimmed(value)));
-      all_set = false;
     }
+    if (sink.errors() != 0) refusal.settings.emplace_back(i, shorten_names(flattened(sink.items())));
   }
+  if (!refusal.settings.empty()) return refusal;
   // Together, as a script's items are: `mu 40  lambda 60` checks lambda >= mu once both hold.
-  if (all_set) (void)check_settings(spec, where, sink);
-  if (sink.errors() != 0) return shorten_names(flattened(sink.items()));
+  Sink sink;
+  if (!check_settings(spec, where, sink)) {
+    refusal.together = shorten_names(flattened(sink.items()));
+    return refusal;
+  }
   resolve_settings(spec);
   experiment = std::move(spec);
-  return {};
+  return refusal;
+}
+
+std::string apply_settings(eval::ExperimentSpec& experiment,
+                           const std::vector<std::pair<std::string, std::string>>& settings) {
+  const SettingsRefusal refusal = apply_settings_together(experiment, settings);
+  std::string text;
+  for (const auto& [i, why] : refusal.settings) text += (text.empty() ? "" : "; ") + why;
+  return text.empty() ? refusal.together : text;
 }
 
 std::string apply_setting(eval::ExperimentSpec& experiment, std::string_view key, std::string_view value) {

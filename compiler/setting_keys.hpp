@@ -41,10 +41,11 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
 // evolves, the tree operators against the trees' primitives, and the runtime's
 // rules for the robot, the arena and the robot in it. False when one fails.
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
-// What a group (`robot NAME x N`, `--set robots=N`) needs: room for its random starts (its
-// robots' discs at most 40% of the arena's free floor), and no end term that folds its steps
-// (step aggregates, not supported yet); one error at `where`.
-void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
+// What a group (`robot NAME x N`, `--set robots=N`) needs: a formation its robots can take
+// (reported at `formation`, where given, else at `where`), else room for its random starts (its
+// robots' discs at most 40% of the arena's free floor); one error.
+void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink,
+                 const SourceRange* formation = nullptr);
 
 // Rewrites the keys of resolved_settings that the spec's fields determine, the settings a
 // study gives its dependencies among them (`energy.generations`); keeps the others (robot

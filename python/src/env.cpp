@@ -46,9 +46,12 @@ const control::ControllerSpec* network_controller(const eval::ExperimentSpec& sp
   return &c;
 }
 
-// What the stepper writes only when read (`noise`, the group's observables), as the evaluator's.
+// What the stepper writes only when read (`noise`, the group's observables), as the evaluator's;
+// a group's every observable, as its replay records them (state() gives them).
 eval::StepperReads reads_of(const eval::ExperimentSpec& spec, const control::ControllerSpec* controller) {
-  return eval::stepper_reads(spec, controller != nullptr ? *controller : control::ControllerSpec{});
+  eval::StepperReads reads = eval::stepper_reads(spec, controller != nullptr ? *controller : control::ControllerSpec{});
+  if (spec.robots > 1) reads.pairs = reads.group = true;
+  return reads;
 }
 
 py::array_t<double> array_of(const std::vector<double>& v) {
@@ -108,6 +111,7 @@ void Env::begin(std::optional<std::uint64_t> seed) {
 eval::StepOutcome Env::advance(std::span<const Action> actions) {
   if (!running_)
     throw std::runtime_error(episodes_ == 0 ? "call reset() before step()" : "the episode has ended: call reset()");
+  // Every action checked before any robot acts: a refused step changes nothing.
   for (std::size_t i = 0; i < actions.size(); ++i) {
     const Action& action = actions[i];
     if (action.ndim() != 1 || static_cast<std::size_t>(action.size()) != action_size_)
@@ -117,7 +121,9 @@ eval::StepOutcome Env::advance(std::span<const Action> actions) {
                                                     : std::string("the left and right wheel commands")) +
                             "), got " + std::to_string(action.size()) + " in " + std::to_string(action.ndim()) +
                             " dimension(s)");
-    const std::span<const double> a(action.data(), action_size_);
+  }
+  for (std::size_t i = 0; i < actions.size(); ++i) {
+    const std::span<const double> a(actions[i].data(), action_size_);
     if (!heads_.empty()) {
       commands_[i] = heads_[i]->act(a, stepper_.frame(i));
       actions_[i] = heads_[i]->last_action();

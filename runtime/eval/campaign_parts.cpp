@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "runtime/eval/moments.hpp"
 #include "runtime/expr/program.hpp"
@@ -11,13 +12,14 @@ namespace esc::eval::detail {
 
 namespace {
 
-// Collects a traced evaluation, its first kMaxReplayRows rows and one more (trace_rows_kept
-// then cuts them), and counts the steps each action acted on.
+// Collects a traced evaluation (a group's, its first kMaxReplayRows rows and one more, which
+// trace_rows_kept then cuts) and counts the steps each action acted on.
 struct Recorder final : TraceSink {
   std::vector<TraceStep> steps;
   std::vector<std::int64_t> usage;
+  std::size_t most = std::numeric_limits<std::size_t>::max();
   void on_step(const TraceStep& t) override {
-    if (steps.size() <= kMaxReplayRows) steps.push_back(t);
+    if (steps.size() < most) steps.push_back(t);
     if (t.action >= 0 && static_cast<std::size_t>(t.action) < usage.size()) ++usage[static_cast<std::size_t>(t.action)];
   }
 };
@@ -142,16 +144,25 @@ void replay_best(const ExperimentSpec& spec, const control::ControllerSpec& cont
                  const std::function<Evaluation(Evaluator&, std::uint64_t, TraceSink*)>& replay) {
   const std::uint64_t seed =
       evaluation_seed(result.seed, result.best_generation, static_cast<std::size_t>(result.best_index));
+  // A group's usage is a robot's share (the evaluation's): its replay is traced only when asked.
+  if (spec.robots > 1) {
+    if (!options.trace_best && controller.choice_names().empty()) return;
+    Recorder rec;
+    rec.most = kMaxReplayRows + 1;
+    if (options.trace_best) rec.steps.reserve(replay_rows(spec) + 1);
+    const Evaluation e = replay(ev.workers.local(), seed, options.trace_best ? &rec : nullptr);
+    result.action_usage.assign(e.usage.begin(), e.usage.end());
+    if (options.trace_best)
+      listener.best_traced(controller, result, std::span(rec.steps).first(trace_rows_kept(rec.steps, kMaxReplayRows)));
+    return;
+  }
   Recorder rec;
   rec.usage.assign(controller.choice_names().size(), 0);
-  if (options.trace_best) rec.steps.reserve(replay_rows(spec) + 1);
+  if (options.trace_best) rec.steps.reserve(replay_rows(spec));
   if (!options.trace_best && rec.usage.empty()) return;
-  const Evaluation e = replay(ev.workers.local(), seed, &rec);
-  // A group's trace holds every robot's steps; its usage is a robot's share (the evaluation's).
-  if (spec.robots > 1) result.action_usage.assign(e.usage.begin(), e.usage.end());
-  else result.action_usage = std::move(rec.usage);
-  if (options.trace_best)
-    listener.best_traced(controller, result, std::span(rec.steps).first(trace_rows_kept(rec.steps, kMaxReplayRows)));
+  (void)replay(ev.workers.local(), seed, &rec);
+  result.action_usage = std::move(rec.usage);
+  if (options.trace_best) listener.best_traced(controller, result, rec.steps);
 }
 
 }  // namespace esc::eval::detail

@@ -15,8 +15,8 @@ namespace esc::eval {
 Evaluator::Evaluator(const ExperimentSpec& spec)
     : spec_(&spec),
       world_(world_of(spec)),
-      folded_(spec),
-      end_frame_(spec.step_aggregate_slot() + folded_.widest(), 0.0) {
+      folded_(static_cast<std::size_t>(spec.robots), StepAggregates(spec)),
+      end_frame_(spec.step_aggregate_slot() + folded_.front().widest(), 0.0) {
   const auto check = [&](const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
                           const std::string& owner) {
     if (!term.complete()) throw std::invalid_argument(owner + ": an end term is incomplete");
@@ -41,9 +41,6 @@ Evaluator::Evaluator(const ExperimentSpec& spec)
     if (f->evaluation_end) check(*f->evaluation_end, f->evaluation_aggregates, "fitness '" + f->name + "'");
   }
   for (const DescriptorSpec& d : spec.descriptors) check(d.program, d.aggregates, "descriptor '" + d.name + "'");
-  // The compiler refuses them for a group (lower_experiment.cpp): one robot's steps are folded.
-  if (spec.robots > 1 && folded_.widest() > 0)
-    throw std::invalid_argument("step aggregates (`mean(...)` over the steps) are not supported for a group yet");
   commands_.resize(static_cast<std::size_t>(spec.robots));
   acting_.resize(static_cast<std::size_t>(spec.robots));
   epoch_starts_.resize(static_cast<std::size_t>(spec.robots));
@@ -84,8 +81,9 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller, const 
 }
 
 double Evaluator::end_term(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
-                           const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
-                           std::span<const std::int64_t> usage, std::span<const std::int64_t> before) {
+                           const StepAggregates& values, const control::ControllerSpec& controller,
+                           const expr::Frame& frame, std::int64_t steps, std::span<const std::int64_t> usage,
+                           std::span<const std::int64_t> before) {
   std::copy(frame.begin(), frame.end(), end_frame_.begin());
   std::fill(end_frame_.begin() + expr::aggregate::steps, end_frame_.end(), 0.0);
   end_frame_[expr::aggregate::steps] = static_cast<double>(steps);
@@ -95,7 +93,7 @@ double Evaluator::end_term(const expr::Program& term, const std::vector<expr::St
     end_frame_[expr::aggregate::count + static_cast<std::size_t>(id)] +=
         static_cast<double>(usage[i] - (i < before.size() ? before[i] : 0));
   }
-  if (!folded.empty()) folded_.write(folded, std::span<double>(end_frame_).subspan(spec_->step_aggregate_slot()));
+  if (!folded.empty()) values.write(folded, std::span<double>(end_frame_).subspan(spec_->step_aggregate_slot()));
   return term.eval(end_frame_);
 }
 
@@ -129,7 +127,7 @@ double Evaluator::end_over_robots(const expr::Program& term, const std::vector<e
   const auto value = [&](std::size_t i) {
     const std::span<const std::int64_t> before =
         over_epoch ? std::span<const std::int64_t>(epoch_starts_[i]) : std::span<const std::int64_t>{};
-    return end_term(term, folded, controller, epoch.frame(i), steps, drivers[i]->usage(), before);
+    return end_term(term, folded, folded_[i], controller, epoch.frame(i), steps, drivers[i]->usage(), before);
   };
   if (drivers.size() == 1) return value(0);
   return reduce_over_robots(drivers.size(), over, value);
@@ -170,7 +168,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
   // A trace's running fitness counts every term where it applies: an epoch's last step is
   // told after the epoch's end terms, the evaluation's after its own, so that the last step
   // holds the evaluation's fitness.
-  folded_.begin_evaluation();
+  for (StepAggregates& f : folded_) f.begin_evaluation();
   std::vector<TraceStep> last_step;   // the last step's, a TraceStep per robot
   const auto tell_last_step = [&] {
     for (TraceStep& t : last_step) {
@@ -181,7 +179,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
   };
   for (int e = 0; e < s.epochs; ++e) {
     epoch.begin(seed, e);
-    folded_.begin_epoch();
+    for (StepAggregates& f : folded_) f.begin_epoch();
     for (std::size_t i = 0; i < drivers.size(); ++i) {
       drivers[i]->reset();
       epoch_starts_[i].assign(drivers[i]->usage().begin(), drivers[i]->usage().end());   // no allocation once grown
@@ -195,7 +193,9 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
       }
       const StepOutcome outcome = epoch.act(commands_, acting_);
       ++result.steps;
-      if (!folded_.empty()) folded_.step(epoch.frame(), epoch.steps_taken() - 1, result.steps - 1);
+      if (!folded_.front().empty())
+        for (std::size_t i = 0; i < folded_.size(); ++i)
+          folded_[i].step(epoch.frame(i), epoch.steps_taken() - 1, result.steps - 1);
       result.fitness = add_fitness(result.fitness, outcome.term);
       for (std::size_t k = 0; k < s.further.size(); ++k)
         result.objectives[k] =
@@ -241,6 +241,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
 
 std::size_t replay_rows(const ExperimentSpec& spec) noexcept {
   const double rows = static_cast<double>(spec.epochs) * spec.steps * spec.robots;
+  if (spec.robots == 1) return static_cast<std::size_t>(rows);
   return rows < static_cast<double>(kMaxReplayRows) ? static_cast<std::size_t>(rows) : kMaxReplayRows;
 }
 
@@ -251,7 +252,7 @@ std::size_t trace_rows_kept(std::span<const TraceStep> trace, std::size_t limit)
   if (cut > 0) return cut;
   // Within the first epoch: back to the first robot of the step the limit falls in.
   for (cut = limit; cut > 0 && trace[cut].robot != 0; --cut) {}
-  return cut > 0 ? cut : limit;
+  return cut;
 }
 
 }  // namespace esc::eval

@@ -84,13 +84,14 @@ struct TraceStep {
   bool grouped = false;
 };
 
-// The most rows a run's stored replay keeps (a row per step; a group's, a row per robot per
-// step): beyond, its blob would pass SQLite's 1 GB limit for a value, and as much would be
-// held in memory. `esc replay` makes any evaluation again whole.
+// The most rows a group's stored replay keeps (a row per robot per step): beyond, its blob
+// could pass SQLite's 1 GB limit for a value, and as much would be held in memory. `esc
+// replay` makes any evaluation again whole. A robot alone's replay is kept whole, as always.
 inline constexpr std::size_t kMaxReplayRows = std::size_t{1} << 19;
 
 // How many of `trace`'s first rows to keep within `limit`: all that fit; else whole epochs
-// while they fit; else the first epoch's first whole steps (every robot of a step).
+// while they fit; else the first epoch's first whole steps (every robot of a step; none when
+// a group's step does not fit).
 [[nodiscard]] std::size_t trace_rows_kept(std::span<const TraceStep> trace, std::size_t limit) noexcept;
 
 // The robots a trace's steps hold (a group's trace has a row per robot per step; a robot
@@ -99,8 +100,8 @@ inline constexpr std::size_t kMaxReplayRows = std::size_t{1} << 19;
   return trace.empty() || !trace.front().grouped ? 1 : static_cast<std::size_t>(trace.back().robot) + 1;
 }
 
-// The rows a stored replay of `spec`'s evaluations holds at most: its epochs x steps x robots,
-// at most kMaxReplayRows.
+// The rows a stored replay of `spec`'s evaluations holds at most: its epochs x steps, and a
+// group's x robots, at most kMaxReplayRows.
 [[nodiscard]] std::size_t replay_rows(const ExperimentSpec& spec) noexcept;
 
 // Receives every step of a traced evaluation, in order.
@@ -135,10 +136,10 @@ class Evaluator {
                  TraceSink* trace);
   // An end term's value: `term` on the last step's `frame` followed by the aggregates of the
   // `steps` steps in which the choices acted `usage` - `before` times, then its step
-  // aggregates `folded`.
+  // aggregates `folded` as `values` (the robot's) folded them.
   double end_term(const expr::Program& term, const std::vector<expr::StepAggregate>& folded,
-                  const control::ControllerSpec& controller, const expr::Frame& frame, std::int64_t steps,
-                  std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
+                  const StepAggregates& values, const control::ControllerSpec& controller, const expr::Frame& frame,
+                  std::int64_t steps, std::span<const std::int64_t> usage, std::span<const std::int64_t> before);
   // An end term on each robot's last frame and usage, counted from its epoch's start
   // (`over_epoch`) or from the evaluation's, reduced over the robots by `over`.
   template <class Driver>
@@ -155,7 +156,7 @@ class Evaluator {
 
   const ExperimentSpec* spec_;
   sim::World world_;
-  StepAggregates folded_;                   // the end terms' step aggregates
+  std::vector<StepAggregates> folded_;      // the end terms' step aggregates, each robot's
   std::vector<double> end_frame_;           // an end term's frame: expr::Frame, then expr::aggregate
   // Each robot's usage when the epoch began; its command and choice of the step.
   std::vector<std::vector<std::int64_t>> epoch_starts_;

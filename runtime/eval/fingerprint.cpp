@@ -102,9 +102,11 @@ std::string fingerprint(const ExperimentSpec& spec) {
   // Only where given, so that experiments starting at random keep their fingerprints.
   if (spec.formation.kind != sim::FormationKind::Random) {
     w.line("formation", std::to_string(static_cast<int>(spec.formation.kind)));
-    w.number("formation.spacing", spec.formation.spacing_m);
-    for (const sim::Pose& p : spec.formation.at)
-      w.numbers("formation.at", std::initializer_list<double>{p.x_m, p.y_m, p.heading_rad});
+    if (spec.formation.kind == sim::FormationKind::At)
+      for (const sim::Pose& p : spec.formation.at)
+        w.numbers("formation.at", std::initializer_list<double>{p.x_m, p.y_m, p.heading_rad});
+    else
+      w.number("formation.spacing", spec.formation.spacing_m);
   }
   // Only where read, so that experiments without clusters keep their fingerprints.
   if (!spec.cluster_radii.empty()) w.numbers("clusters.radii", spec.cluster_radii);

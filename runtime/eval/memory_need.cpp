@@ -60,7 +60,9 @@ MemoryNeed memory_need(const ExperimentSpec& spec, bool trace_best) {
     need = {need.bytes, fmt::format("every run's statistics, {} runs: {}", spec.runs, bytes_text(statistics)), "runs"};
   else if (trace > largest.bytes && trace > statistics)
     need = {need.bytes, fmt::format("the best run's replay of {} epochs x {} steps{}: {}", spec.epochs, spec.steps,
-                                    spec.robots > 1 ? fmt::format(" x {} robots", spec.robots) : std::string(),
+                                    spec.robots > 1 ? fmt::format(" x {} robots, at most {} rows", spec.robots,
+                                                                  kMaxReplayRows)
+                                                    : std::string(),
                                     bytes_text(trace)),
             "steps"};
   return need;

@@ -494,14 +494,16 @@ Pose World::begin_epoch(Rng& rng) {
   place_zones(rng);
   std::vector<Pose>& poses = impl_->starts;
   poses.clear();
-  switch (impl_->formation.kind) {
-    case FormationKind::Random:
-      for (std::size_t i = 0; i < impl_->robots.size(); ++i)
-        poses.push_back(i == 0 && impl_->arena.fixed_start ? *impl_->arena.fixed_start
-                                                           : impl_->random_free_pose(rng, kStartMargin_m, i, poses));
-      break;
-    case FormationKind::At: poses = impl_->formation.at; break;
-    default: impl_->formation_poses(rng, poses); break;
+  const FormationKind kind = impl_->formation.kind;
+  if (kind == FormationKind::At) {
+    poses = impl_->formation.at;
+  } else if (kind == FormationKind::Random || impl_->robots.size() == 1) {
+    // A line or a circle of one robot is no formation: it starts where a robot alone does.
+    for (std::size_t i = 0; i < impl_->robots.size(); ++i)
+      poses.push_back(i == 0 && impl_->arena.fixed_start ? *impl_->arena.fixed_start
+                                                         : impl_->random_free_pose(rng, kStartMargin_m, i, poses));
+  } else {
+    impl_->formation_poses(rng, poses);
   }
   impl_->reset(poses);
   return poses.front();

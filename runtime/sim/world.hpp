@@ -97,7 +97,8 @@ class World {
   // those before it; reset(poses). Returns robot 0's pose. With no random zone and one robot
   // it draws exactly what `reset(fixed_start or random_free_pose(rng))` draws. A formation
   // (set_formation) places every robot instead: its `at` poses, or a line or circle about a
-  // heading and then a centre drawn uniformly until every body clears the walls and obstacles.
+  // heading and then a centre drawn uniformly until every body clears the walls and obstacles
+  // (a line or circle of one robot starts it as without one).
   Pose begin_epoch(Rng& rng);
 
   // One control step: commands in [-1, 1] (clamped), motors and body integrated over

@@ -214,8 +214,11 @@ TEST(Replay, AnimationWithFfmpeg) {
 // panel shows the group in headless Chromium where it is installed.
 TEST(Replay, AGroupIsReplayedWithEveryRobot) {
   const fs::path dir = scratch("replay-group");
-  const Outcome run = esc_command("run " + tiny() + " --generations 3 --set robots=3 --threads 2 --out " + dir.string());
+  // Started in a line, set from the command line: several `--set` apply together.
+  const Outcome run = esc_command("run " + tiny() + " --generations 3 --set robots=3 --set formation=line "
+                                  "--set formation_spacing=12cm --threads 2 --out " + dir.string());
   ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(read_json(dir / "settings.json")["settings"]["formation_spacing"], "0.12 m");
   // summary.json and the export name the group.
   EXPECT_EQ(read_json(dir / "summary.json")["robots"], 3);
   const Outcome exported = esc_command("export " + dir.string() + " --format json");

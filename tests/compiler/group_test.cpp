@@ -53,15 +53,23 @@ TEST(Groups, ACountOutOfRangeIsALocatedError) {
   EXPECT_EQ(x.robots, 1) << "left unchanged on error";
 }
 
-TEST(Groups, StepsFoldedIntoAnEndTermAreRefusedForAGroup) {
-  const std::string folded = "step: 0  epoch: mean(forward_speed)";
-  const std::string out = refusal(script("robot bot x 3", folded), "g.esc");
-  EXPECT_NE(out.find("folds its steps"), std::string::npos) << out;
-  EXPECT_NE(out.find("g.esc:5:"), std::string::npos) << out;
-  // Alone it compiles; `--set robots=3` is then refused the same way.
-  eval::ExperimentSpec x = first_experiment(script("robot bot", folded), "g.esc");
-  const std::string error = apply_setting(x, "robots", "3");
-  EXPECT_NE(error.find("folds its steps"), std::string::npos) << error;
+// A term that folds the steps (`mean(...)` over the steps) folds each robot's own steps: the
+// group's is the robots' reduced. `mean(robots)` is the group's size whatever the steps;
+// `max(nearest_robot)` of a robot is at least its nearest robot at the epoch's end.
+TEST(Groups, StepsFoldedIntoAnEndTermAreEachRobots) {
+  EXPECT_EQ(evaluate(first_experiment(script("robot bot x 3", "step: 0  epoch: mean(robots)"), "g.esc")).fitness, 2 * 3.0);
+  const double folded = evaluate(first_experiment(script("robot bot x 3", "step: 0  epoch: max(nearest_robot)"), "g.esc")).fitness;
+  const double last = evaluate(first_experiment(script("robot bot x 3", "step: 0  epoch: nearest_robot"), "g.esc")).fitness;
+  EXPECT_GE(folded, last);
+  EXPECT_GT(folded, 0.0);
+  // The worst robot's mean forward speed, and the best one's.
+  const double low = evaluate(first_experiment(script("robot bot x 3", "step: 0  epoch: mean(forward_speed)  over robots min"), "g.esc")).fitness;
+  const double high = evaluate(first_experiment(script("robot bot x 3", "step: 0  epoch: mean(forward_speed)  over robots max"), "g.esc")).fitness;
+  EXPECT_LE(low, high);
+  // `--set robots=3` on a robot alone's folding experiment is a group's as well.
+  eval::ExperimentSpec x = first_experiment(script("robot bot", "step: 0  epoch: mean(robots)"), "g.esc");
+  EXPECT_EQ(apply_setting(x, "robots", "3"), "");
+  EXPECT_EQ(evaluate(x).fitness, 2 * 3.0);
 }
 
 // `over robots sum|min|max` reduces every term of the fitness over the robots as it says: the

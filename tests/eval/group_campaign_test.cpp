@@ -128,7 +128,7 @@ TEST(GroupCampaign, AStoredReplayIsCutAtWholeEpochsOrWholeSteps) {
   EXPECT_EQ(trace_rows_kept(rows, 89), 60U);   // two whole epochs
   EXPECT_EQ(trace_rows_kept(rows, 31), 30U);   // the first epoch
   EXPECT_EQ(trace_rows_kept(rows, 29), 27U);   // its first nine steps, every robot
-  EXPECT_EQ(trace_rows_kept(rows, 2), 2U);     // less than a step: what fits
+  EXPECT_EQ(trace_rows_kept(rows, 2), 0U);     // less than a step: none
 }
 
 }  // namespace

@@ -13,8 +13,9 @@ SETTINGS = {"epochs": 1, "steps": 40, "mu": 2, "lambda": 4}
 GROUPS = EXPERIMENTS / "examples" / "groups.esc"
 EXACT = {"x_m": "x", "y_m": "y", "heading_rad": "heading", "left_command": "left_command",
          "right_command": "right_command", "left_speed_mps": "left_speed", "right_speed_mps": "right_speed",
-         "centroid_x_m": "centroid_x", "centroid_y_m": "centroid_y", "centroid_distance_m": "centroid_distance",
-         "nearest_robot_m": "nearest_robot", "spread_m": "spread"}
+         "centroid_x_m": "centroid_x", "centroid_y_m": "centroid_y", "centroid_moved_m": "centroid_moved",
+         "centroid_distance_m": "centroid_distance", "nearest_robot_m": "nearest_robot",
+         "robot_distance_m": "robot_distance", "spread_m": "spread"}
 
 
 @pytest.fixture(scope="module")
@@ -64,8 +65,12 @@ def test_rewards_are_each_robots_step_term_and_errors_name_the_agent():
         env.step({**{a: [0.5, 0.5] for a in env.possible_agents}, "robot_0": [0, 0]})
     with pytest.raises(ValueError, match=r"actions\['robot_3'\]\[1\] is nan"):
         env.step({a: [0.5, np.nan if a == "robot_3" else 0.5] for a in env.possible_agents})
+    before = env.state("robot_1")
     with pytest.raises(ValueError, match="robot 2's action is 2 values"):
         env.step({a: [0.5] * (3 if a == "robot_2" else 2) for a in env.possible_agents})
+    assert env.state("robot_1")["left_command"] == before["left_command"], "a refused step changes nothing"
+    # Every group observable is the replay's, whatever the fitness reads (aggregation reads no pair).
+    assert env.state("robot_1")["nearest_robot"] > 0 and env.state("robot_1")["robot_distance"] > 0
     _, rewards, _, _, infos = env.step({a: [1.0, 1.0] for a in env.possible_agents})
     assert all(r == 0.0 for r in rewards.values())   # aggregation's step term is 0: its epoch term counts
     assert infos["robot_4"]["step"] == 1

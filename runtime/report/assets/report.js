@@ -542,7 +542,7 @@
       for (let k = 0; k < robots; ++k) watch.appendChild(el('option', {value: String(k), text: `robot ${k + 1}`}));
       watch.style.display = robots > 1 ? '' : 'none';
       slider.max = String(rows.length / robots - 1);
-      const shown = rows.length < c.replay.total_steps
+      const shown = rows.length / robots < c.replay.total_steps
         ? `the first ${rows[rows.length - 1][0] + 1} of ${counted(c.replay.total_epochs, 'epoch')} ` +
           `(${rows.length / robots} of ${counted(c.replay.total_steps, 'step')})`
         : c.replay.total_epochs === 1 ? `its one epoch (${counted(rows.length / robots, 'step')})`
