@@ -278,6 +278,7 @@ struct ExpItem {
   std::string text;
   bool at_evaluation = false;
   Name reduce;
+  std::vector<FitnessOver> overs;   // Descriptor: `over robots R`, at most one
   // Success: `success when refs[0] CMP numbers[0]`; the comparison as written (`<=`) and where.
   std::string compare;
   SourceRange compare_where;

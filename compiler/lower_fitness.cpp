@@ -27,31 +27,28 @@ void end_term(const std::vector<ast::FitnessTerm>& terms, std::string_view word,
   text = terms[0].text;
 }
 
-// `over robots R`: how a group's robots' terms make the group's (mean, sum, min, max).
-void over_robots(const std::vector<ast::FitnessOver>& overs, Sink& sink, LoweredFitness& f) {
+}  // namespace
+
+std::optional<eval::Reduction> lower_over_robots(const std::vector<ast::FitnessOver>& overs, Sink& sink) {
   for (std::size_t i = 1; i < overs.size(); ++i)
-    sink.error(overs[i].where, "the fitness already says how its terms are reduced over the robots")
-        .notes.emplace_back(overs[0].where, "first said here");
-  if (overs.empty() || overs[0].what.text.empty() || overs[0].reduce.text.empty()) return;
+    sink.error(overs[i].where, "the reduction over the robots is already given")
+        .notes.emplace_back(overs[0].where, "first given here");
+  if (overs.empty() || overs[0].what.text.empty() || overs[0].reduce.text.empty()) return eval::Reduction::Mean;
   const ast::FitnessOver& o = overs[0];
   if (o.what.text != "robots") {
     sink.error(o.what.where, fmt::format("`over` reduces a group's terms over its robots, not over `{}`", o.what.text))
         .help.push_back(fmt::format("write `over robots {}`", o.reduce.text));
-    return;
+    return std::nullopt;
   }
   const std::vector<std::string> names(reduction_names().begin(), reduction_names().begin() + 4);
   const auto r = std::find(names.begin(), names.end(), o.reduce.text);
   if (r == names.end()) {
     Diagnostic& diag = sink.error(o.reduce.where, fmt::format("`{}` is not a reduction over the robots", o.reduce.text));
     suggest(diag, o.reduce.text, names, {{}, fmt::format("reductions over the robots: {}", quoted_list(names))});
-    return;
+    return std::nullopt;
   }
-  f.spec.over_robots = static_cast<eval::Reduction>(r - names.begin());
-  // The mean, the default, resolves as a fitness without `over` does.
-  if (f.spec.over_robots != eval::Reduction::Mean) f.over_text = *r;
+  return static_cast<eval::Reduction>(r - names.begin());
 }
-
-}  // namespace
 
 const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDecl& d, const ast::ArenaDecl* arena,
                                                             const ast::ExperimentDecl* experiment,
@@ -91,7 +88,11 @@ const std::optional<LoweredFitness>& FitnessLowering::lower(const ast::FitnessDe
   end_term(d.epoch_ends, "epoch", scope, sink_, f.spec.epoch_end, f.spec.epoch_aggregates, f.epoch_text);
   end_term(d.evaluation_ends, "evaluation", scope, sink_, f.spec.evaluation_end, f.spec.evaluation_aggregates,
            f.evaluation_text);
-  over_robots(d.overs, sink_, f);
+  if (const auto over = lower_over_robots(d.overs, sink_)) {
+    f.spec.over_robots = *over;
+    // The mean, the default, resolves as a fitness without `over` does.
+    if (*over != eval::Reduction::Mean) f.over_text = reduction_names()[static_cast<std::size_t>(*over)];
+  }
   if (sink_.errors() == errors) slot = std::move(f);
   return slot;
 }

@@ -24,6 +24,10 @@ struct LoweredFitness {
   std::string over_text;                     // `over robots R`'s R; "" when not given (mean)
 };
 
+// `over robots R` (a fitness's, a descriptor's; at most one of `overs`): the reduction over a
+// group's robots, Mean when none is given; nullopt after reporting a bad one to `sink`.
+[[nodiscard]] std::optional<eval::Reduction> lower_over_robots(const std::vector<ast::FitnessOver>& overs, Sink& sink);
+
 class FitnessLowering {
  public:
   FitnessLowering(Sink& sink, Resolver& names, ArenaLowering& arenas) : sink_(sink), names_(names), arenas_(arenas) {}

@@ -178,6 +178,7 @@ bool lower_objectives(const ObjectiveItems& items, const ast::ExperimentDecl& ex
         d.reduce = static_cast<eval::Reduction>(r - all.begin());
       }
     }
+    if (const auto over = lower_over_robots(item->overs, sink)) d.over_robots = *over;
     if (item->range) {
       if (const auto r = declared(*item->range, fmt::format("descriptor `{}`", name.text), sink)) d.range = *r;
     }
@@ -240,6 +241,9 @@ void resolve_objectives(eval::ExperimentSpec& x, const ObjectiveItems& items) {
                         d.at_evaluation ? "evaluation: " : "", item->text, range_text(d.range));
     if (!d.at_evaluation && d.reduce != eval::Reduction::Mean)
       text += fmt::format(" by {}", reduction_names()[static_cast<std::size_t>(d.reduce)]);
+    // Only where given, so that descriptors without it resolve as they always did.
+    if (d.over_robots != eval::Reduction::Mean)
+      text += fmt::format(" over robots {}", reduction_names()[static_cast<std::size_t>(d.over_robots)]);
     const ast::Expr* call = positions_call(*item);
     const auto k = call != nullptr ? positions_count(*call, nullptr) : std::nullopt;
     i += k ? 2 * static_cast<std::size_t>(*k) : 1;

@@ -625,6 +625,7 @@ class Builder {
         item.at_evaluation = de->EVALUATION() != nullptr;
         item.range = range(de->objRange());
         if (de->reduce != nullptr) item.reduce = name(de->reduce);
+        if (de->over != nullptr) item.overs.push_back({name(de->what), name(de->over), span(de)});
       } else if (auto* su = dynamic_cast<P::ExpSuccessContext*>(it)) {
         item.kind = K::Success;
         item.refs.push_back(name(su->obj));

@@ -145,7 +145,8 @@ expItem
   | OBJECTIVE ident dir=(MAXIMIZE | MINIMIZE)? objRange? ';'?                     # expObjective
   // A behavior descriptor: an end term at each epoch's end (reduced over the epochs, by
   // mean unless `by` says otherwise) or, after `evaluation:`, once over the evaluation.
-  | DESCRIPTOR name=ident ':' (EVALUATION ':')? expr objRange (BY reduce=ident)? ';'?   # expDescriptor
+  // `over robots R`: a group's robots' values reduced by R (mean by default).
+  | DESCRIPTOR name=ident ':' (EVALUATION ':')? expr objRange (BY reduce=ident)? (OVER what=ident over=ident)? ';'?   # expDescriptor
   // When an evaluation counts as a success: a test of the fitness, a further objective or a
   // descriptor, as measured (`success when reach_goal > -17.1875mm`).
   | SUCCESS WHEN obj=ident cmp=('<' | '<=' | '>' | '>=') threshold=quantity ';'?    # expSuccess

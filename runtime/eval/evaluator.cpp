@@ -140,7 +140,7 @@ void Evaluator::reduce_descriptors(const control::ControllerSpec& controller, co
   for (std::size_t i = 0; i < spec_->descriptors.size(); ++i) {
     const DescriptorSpec& d = spec_->descriptors[i];
     if (d.at_evaluation) continue;
-    const double v = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, steps, true, Reduction::Mean);
+    const double v = end_over_robots(d.program, d.aggregates, controller, epoch, drivers, steps, true, d.over_robots);
     double& r = values[i];
     switch (d.reduce) {
       case Reduction::Mean:
@@ -231,7 +231,7 @@ Evaluation Evaluator::run(const control::ControllerSpec& controller, std::span<D
     const DescriptorSpec& d = s.descriptors[i];
     if (d.at_evaluation)
       result.descriptors[i] =
-          end_over_robots(d.program, d.aggregates, controller, epoch, drivers, result.steps, false, Reduction::Mean);
+          end_over_robots(d.program, d.aggregates, controller, epoch, drivers, result.steps, false, d.over_robots);
     else if (d.reduce == Reduction::Mean && s.epochs > 0) result.descriptors[i] /= s.epochs;
   }
   result.usage.assign(drivers[0]->usage().begin(), drivers[0]->usage().end());

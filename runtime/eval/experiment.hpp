@@ -97,6 +97,7 @@ struct DescriptorSpec {
   bool at_evaluation = false;
   Reduction reduce = Reduction::Mean;
   DeclaredRange range;
+  Reduction over_robots = Reduction::Mean;   // a group's robots' values made the group's (`over robots max`)
 };
 
 // `success when NAME CMP THRESHOLD`: an evaluation succeeds when the value it measured of an

@@ -89,6 +89,15 @@ TEST(Groups, OverRobotsReducesEveryTermAsItSays) {
   const eval::ExperimentSpec x = first_experiment(script("robot bot x 4", "step: 0  over robots: min"), "g.esc");
   EXPECT_EQ(x.fitness.over_robots, eval::Reduction::Min);
   EXPECT_EQ(x.resolved_settings.at("fitness.over_robots"), "min");
+  // A descriptor's too: `over robots max` of the centroid distance is the spread.
+  const eval::ExperimentSpec d = first_experiment(
+      script("robot bot x 4", "step: 0",
+             "descriptor far: centroid_distance in [0, 1] over robots max  descriptor spread: spread in [0, 1]"),
+      "g.esc");
+  EXPECT_EQ(d.descriptors[0].over_robots, eval::Reduction::Max);
+  const eval::Evaluation e = evaluate(d);
+  EXPECT_NEAR(e.descriptors[0], e.descriptors[1], 1e-12);
+  EXPECT_NE(d.resolved_settings.at("descriptors").find("over robots max"), std::string::npos);
   // A robot alone's terms are its own whatever the reduction, and resolve as they always did.
   const eval::ExperimentSpec alone = first_experiment(script("robot bot", "step: forward_speed  over robots sum"), "g.esc");
   EXPECT_EQ(evaluate(alone).fitness, evaluate(first_experiment(script("robot bot"), "g.esc")).fitness);
@@ -103,7 +112,7 @@ TEST(Groups, OverSomethingElseOrAnUnknownReductionIsALocatedError) {
   EXPECT_NE(out.find("not over `epochs`"), std::string::npos) << out;
   EXPECT_NE(out.find("over robots max"), std::string::npos) << out;
   out = refusal(script("robot bot x 2", "step: 0  over robots max  over robots min"), "g.esc");
-  EXPECT_NE(out.find("already says how its terms are reduced"), std::string::npos) << out;
+  EXPECT_NE(out.find("the reduction over the robots is already given"), std::string::npos) << out;
   out = refusal(script("robot bot x 2", "step: 0  over robots mex"), "g.esc");
   EXPECT_NE(out.find("did you mean `max`?"), std::string::npos) << out;
 }
