@@ -50,7 +50,7 @@ const control::ControllerSpec* network_controller(const eval::ExperimentSpec& sp
 // a group's every observable, as its replay records them (state() gives them).
 eval::StepperReads reads_of(const eval::ExperimentSpec& spec, const control::ControllerSpec* controller) {
   eval::StepperReads reads = eval::stepper_reads(spec, controller != nullptr ? *controller : control::ControllerSpec{});
-  if (spec.robots > 1) reads.pairs = reads.group = true;
+  if (spec.robots > 1) reads.pairs = true;
   return reads;
 }
 
@@ -108,7 +108,7 @@ void Env::begin(std::optional<std::uint64_t> seed) {
   stepper_.observe();
 }
 
-eval::StepOutcome Env::advance(std::span<const Action> actions) {
+Env::Advanced Env::advance(std::span<const Action> actions) {
   if (!running_)
     throw std::runtime_error(episodes_ == 0 ? "call reset() before step()" : "the episode has ended: call reset()");
   // Every action checked before any robot acts: a refused step changes nothing.
@@ -134,7 +134,18 @@ eval::StepOutcome Env::advance(std::span<const Action> actions) {
   }
   const eval::StepOutcome outcome = stepper_.act(commands_, acting_);
   fitness_ = eval::add_fitness(fitness_, outcome.term);
-  return outcome;
+  const bool truncated = !outcome.stop && stepper_.steps_taken() >= spec_->steps;
+  running_ = !outcome.stop && !truncated;
+  return {outcome, truncated};
+}
+
+py::tuple Env::every_robot() const {
+  py::list observations, infos;
+  for (std::size_t i = 0; i < robots(); ++i) {
+    observations.append(observation(i));
+    infos.append(info(i));
+  }
+  return py::make_tuple(observations, infos);
 }
 
 py::tuple Env::reset(std::optional<std::uint64_t> seed) {
@@ -145,39 +156,26 @@ py::tuple Env::reset(std::optional<std::uint64_t> seed) {
 
 py::tuple Env::step(const Action& action) {
   require_alone("Env");
-  const eval::StepOutcome outcome = advance(std::span<const Action>(&action, 1));
-  const bool truncated = !outcome.stop && stepper_.steps_taken() >= spec_->steps;
-  running_ = !outcome.stop && !truncated;
+  const auto [outcome, truncated] = advance(std::span<const Action>(&action, 1));
   stepper_.observe();
   return py::make_tuple(observation(), outcome.term, outcome.stop, truncated, info());
 }
 
 py::tuple Env::reset_group(std::optional<std::uint64_t> seed) {
   begin(seed);
-  py::list observations, infos;
-  for (std::size_t i = 0; i < robots(); ++i) {
-    observations.append(observation(i));
-    infos.append(info(i));
-  }
-  return py::make_tuple(observations, infos);
+  return every_robot();
 }
 
 py::tuple Env::step_group(const std::vector<Action>& actions) {
   if (actions.size() != robots())
     throw py::value_error("the group has " + std::to_string(robots()) + " robots, but " +
                           std::to_string(actions.size()) + " actions were given");
-  const eval::StepOutcome outcome = advance(actions);
-  const bool truncated = !outcome.stop && stepper_.steps_taken() >= spec_->steps;
-  running_ = !outcome.stop && !truncated;
-  py::list rewards;
+  const auto [outcome, truncated] = advance(actions);
+  py::list rewards;   // read before observe() moves the clock on
   for (std::size_t i = 0; i < robots(); ++i) rewards.append(stepper_.term(i));
   stepper_.observe();
-  py::list observations, infos;
-  for (std::size_t i = 0; i < robots(); ++i) {
-    observations.append(observation(i));
-    infos.append(info(i));
-  }
-  return py::make_tuple(observations, rewards, outcome.stop, truncated, infos);
+  const py::tuple robots_now = every_robot();
+  return py::make_tuple(robots_now[0], rewards, outcome.stop, truncated, robots_now[1]);
 }
 
 py::array_t<double> Env::observation(std::size_t robot) const {

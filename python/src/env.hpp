@@ -67,8 +67,15 @@ class Env {
 
  private:
   void begin(std::optional<std::uint64_t> seed);
-  // Every robot's action turned into its command, then the step: its outcome.
-  eval::StepOutcome advance(std::span<const Action> actions);
+  // Every robot's action turned into its command, then the step: its outcome, and whether the
+  // epoch's steps ran out (the episode ends on either).
+  struct Advanced {
+    eval::StepOutcome outcome;
+    bool truncated = false;
+  };
+  Advanced advance(std::span<const Action> actions);
+  // Every robot's observation and info, as lists in robot order.
+  [[nodiscard]] pybind11::tuple every_robot() const;
   [[nodiscard]] pybind11::array_t<double> observation(std::size_t robot = 0) const;
   [[nodiscard]] pybind11::dict info(std::size_t robot = 0) const;
   void require_alone(const char* call) const;

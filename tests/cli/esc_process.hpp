@@ -47,6 +47,15 @@ inline std::string tiny() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/dat
 // A network and two tree controllers, evolved by the ES and by GP (tests/cli/data/tiny_gp.esc).
 inline std::string tiny_gp() { return std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_gp.esc"; }
 
+// The DOM of DIR/report.html once headless Chromium (ESC_CHROMIUM, empty where not
+// configured) has run its script for 3 s of virtual time, its profile in DIR/profile.
+inline Outcome report_dom(const fs::path& dir) {
+  return shell("timeout 60 " + std::string(ESC_CHROMIUM) +
+               " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --user-data-dir=" +
+               (dir / "profile").string() + " --virtual-time-budget=3000 --dump-dom file://" +
+               (dir / "report.html").string() + " 2>/dev/null");
+}
+
 inline std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;

@@ -286,10 +286,7 @@ TEST(Replay, AGroupIsReplayedWithEveryRobot) {
   ASSERT_EQ(esc_command("report " + dir.string()).status, 0);
   if (std::string(ESC_CHROMIUM).empty())
     GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
-  const Outcome dom = shell("timeout 60 " + std::string(ESC_CHROMIUM) +
-                            " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --user-data-dir=" +
-                            (dir / "profile").string() + " --virtual-time-budget=3000 --dump-dom file://" +
-                            (dir / "report.html").string() + " 2>/dev/null");
+  const Outcome dom = cli_test::report_dom(dir);
   ASSERT_EQ(dom.status, 0) << dom.output.substr(0, 2000);
   EXPECT_NE(dom.output.find("(ready)</title>"), std::string::npos) << dom.output.substr(0, 600);
   EXPECT_EQ(dom.output.find("class=\"esc-error\""), std::string::npos) << "script error in the page";

@@ -110,10 +110,7 @@ TEST(Success, AStudyCountsComparesAndReportsSuccess) {
   EXPECT_NE(html.find("\"success_evaluation\""), std::string::npos);
   if (std::string(ESC_CHROMIUM).empty())
     GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
-  const Outcome dom = shell("timeout 60 " + std::string(ESC_CHROMIUM) +
-                            " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --user-data-dir=" +
-                            (out / "profile").string() + " --virtual-time-budget=3000 --dump-dom file://" +
-                            (out / "report.html").string() + " 2>/dev/null");
+  const Outcome dom = report_dom(out);
   ASSERT_EQ(dom.status, 0);
   EXPECT_NE(dom.output.find("(ready)</title>"), std::string::npos) << dom.output.substr(0, 600);
   EXPECT_EQ(dom.output.find("class=\"esc-error\""), std::string::npos) << "script error in the page";
