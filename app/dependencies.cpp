@@ -15,9 +15,8 @@
 #include "app/partial_run.hpp"
 #include "app/ranks.hpp"
 #include "compiler/setting_keys.hpp"
-#include "runtime/control/graph_net.hpp"
 #include "runtime/eval/fingerprint.hpp"
-#include "runtime/genome/tree/codec.hpp"
+#include "runtime/eval/genome_fit.hpp"
 #include "runtime/store/results_db.hpp"
 #include "runtime/store/run_directory.hpp"
 
@@ -237,26 +236,6 @@ Prepared run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
   return finish_dependency(cx, name, key, partial, p);
 }
 
-// Why `genome` cannot be controller `c`'s here ("" when it can): a network's weights must be
-// as many as its network has, a tree must be a well-typed tree of its primitive set, a graph
-// a graph genome of its NEAT network's inputs and outputs.
-std::string genome_problem(const control::ControllerSpec& c, const std::vector<double>& genome) {
-  if (c.is_graph()) {
-    const std::string why = control::graph_genome_problem(c, genome);
-    return why.empty() ? why : fmt::format("it is not a genome of `{}`'s NEAT network here: {}", c.name, why);
-  }
-  if (!c.is_tree())
-    return genome.size() == c.genome_size()
-               ? std::string()
-               : fmt::format("it has {} genes, `{}` has {} here", genome.size(), c.name, c.genome_size());
-  try {
-    (void)genome::tree::decode(genome, *c.primitives);
-    return {};
-  } catch (const std::invalid_argument& e) {
-    return fmt::format("it is not a tree of `{}`'s primitives here: {}", c.name, e.what());
-  }
-}
-
 const store::StoredController& stored_controller(const Prepared& p, const std::string& name) {
   const auto& cs = p.stored.controllers;
   const auto it = std::find_if(cs.begin(), cs.end(), [&](const store::StoredController& c) { return c.name == name; });
@@ -275,8 +254,13 @@ void freeze_behaviors(const DependencyContext& cx, eval::ExperimentSpec& spec, c
   const eval::RunResult* best = &sc->finished.front();
   for (const eval::RunResult& r : sc->finished)
     if (r.best_fitness > best->best_fitness) best = &r;
+  if (p.spec.roles > 1)
+    throw Error(ErrorKind::Dependency,
+                fmt::format("{}: `{}` evolves {} roles of `{}` together, and a behavior is one network: freeze a "
+                            "controller of an experiment with one role",
+                            p.dir.string(), p.spec.name, p.spec.roles, dep.controller));
   auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
-  if (const std::string why = genome_problem(*frozen, best->best_genome); !why.empty())
+  if (const std::string why = eval::genome_problem(*frozen, best->best_genome); !why.empty())
     throw Error(ErrorKind::Dependency,
                 fmt::format("{}: the best genome of `{}` cannot be frozen: {}", p.dir.string(), dep.controller, why));
   tell(cx, "dependency {}: controller {} frozen with the best genome of {} run{} (fitness {:.1f}, run {})",
@@ -294,11 +278,18 @@ void freeze_behaviors(const DependencyContext& cx, eval::ExperimentSpec& spec, c
 void fill_start_genomes(const DependencyContext& cx, eval::ExperimentSpec& spec, const Prepared& p) {
   eval::StartFrom& start = *spec.start_from;
   start.genomes.clear();
+  // A genome holds one network per role: another number of roles reads other networks.
+  if (p.spec.roles != spec.roles)
+    throw Error(ErrorKind::Dependency,
+                fmt::format("{}: `{}` evolves {} role{} together and `{}` has {}: a genome holds one network per role, "
+                            "so both need the same roles (the group's size may differ)",
+                            p.dir.string(), p.spec.name, p.spec.roles, p.spec.roles == 1 ? "" : "s", spec.name,
+                            spec.roles));
   for (const control::ControllerSpec& c : spec.controllers) {
     const store::StoredController& sc = stored_controller(p, c.name);
     auto& runs = start.genomes.emplace_back();
     for (const eval::RunResult& r : sc.finished) {
-      if (const std::string why = genome_problem(c, r.best_genome); !why.empty())
+      if (const std::string why = eval::genome_problem(c, r.best_genome, spec.roles); !why.empty())
         throw Error(ErrorKind::Dependency, fmt::format("{}: the best genome of run {} of `{}` cannot start a run here: {}",
                                                        p.dir.string(), r.run + 1, c.name, why));
       runs.push_back({r.run, r.best_fitness, r.best_genome});

@@ -16,8 +16,8 @@
 #include "app/store_errors.hpp"
 #include "app/stored_run.hpp"
 #include "compiler/names.hpp"
-#include "runtime/control/graph_net.hpp"
 #include "runtime/eval/campaign.hpp"
+#include "runtime/eval/genome_fit.hpp"
 #include "runtime/report/fitness_decimals.hpp"
 #include "runtime/report/trajectory_csv.hpp"
 
@@ -240,16 +240,9 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                         s.controller, compiler::quoted_list(names, " and ")));
     return done;
   }
-  if (controller->is_graph()) {
-    if (const std::string why = control::graph_genome_problem(*controller, s.genome); !why.empty()) {
-      done.problems.push_back(fmt::format("the stored genome of {} does not fit {} in experiment `{}`: {}", s.controller,
-                                          s.controller, spec.name, why));
-      return done;
-    }
-  } else if (!controller->is_tree() && s.genome.size() != controller->genome_size()) {
-    done.problems.push_back(fmt::format("the stored genome of {} has {} genes, but {} in experiment `{}` has {} ({})",
-                                        s.controller, s.genome.size(), s.controller, spec.name,
-                                        controller->genome_size(), controller->architecture()));
+  if (const std::string why = eval::genome_problem(*controller, s.genome, spec.roles); !why.empty()) {
+    done.problems.push_back(
+        fmt::format("the stored genome of {} does not fit {} in experiment `{}`: {}", s.controller, s.controller, spec.name, why));
     return done;
   }
   eval::Evaluator evaluator(spec);

@@ -27,7 +27,7 @@ double measure_rate(const eval::ExperimentSpec& e, const control::ControllerSpec
                     std::vector<double>& lengths) {
   eval::Evaluator evaluator(e);
   Rng rng(2024);
-  std::vector<double> genome(c.genome_size());
+  std::vector<double> genome(e.genome_length(c));
   const evo::gp::GpSettings gp = e.tree_operators() != nullptr ? *e.tree_operators() : evo::gp::GpSettings{};
   const auto* given = e.settings_of<evo::EsSettings>(eval::ExperimentSpec::kDefaultNetworks);
   const evo::EsSettings es = given != nullptr ? *given : evo::EsSettings{};

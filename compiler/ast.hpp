@@ -253,7 +253,7 @@ struct DeclaredRange {
 struct ExpItem {
   enum class Kind {
     Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Success, StopAtSuccess, Evolve, Runs, Seed, Compare,
-    StartFrom, Formation
+    StartFrom, Formation, Roles
   };
   Kind kind = Kind::Arena;
   SourceRange where;                // the keyword
@@ -264,7 +264,7 @@ struct ExpItem {
   // Compare: the algorithm `by` names for controller `refs[i]`; empty text when none.
   std::vector<Name> algorithms;
   std::vector<Setting> settings;    // robot { ... } overrides
-  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed / success's threshold / formation's spacing
+  std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed / success's threshold / formation's spacing / roles
   std::optional<Value> list;        // Formation: `at [(x, y, heading), ...]`
   std::vector<EsOption> options;    // evolve es(...)
   std::optional<Quantity> generations;

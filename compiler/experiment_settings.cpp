@@ -53,13 +53,22 @@ const std::vector<ExperimentSetting>& experiment_settings() {
        },
        [](const X& x) { return std::to_string(x.seed); }},
       // Resolved only for a group, so that runs from before it keep their settings.
-      {"robots", "robots of the experiment's body in the arena, each driven by its own copy of the controller",
+      {"robots", "robots of the experiment's body in the arena, each driven by its own copy of its role's controller",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
          const auto n = read_count(v, r.key, 1, eval::kMaxRobots, k);
          if (n) x.robots = static_cast<int>(*n);
          return n.has_value();
        },
        [](const X& x) { return x.robots == 1 ? std::string() : count_text<&X::robots>(x); }},
+      // Resolved only for several roles, so that runs from before it keep their settings;
+      // check_group checks it against the group and the controllers.
+      {"roles", "genomes evolved together, one per role: robot i plays role i mod roles (1: the clonal team)",
+       [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         const auto n = read_count(v, r.key, 1, eval::kMaxRobots, k);
+         if (n) x.roles = static_cast<int>(*n);
+         return n.has_value();
+       },
+       [](const X& x) { return x.roles == 1 ? std::string() : count_text<&X::roles>(x); }},
       // The formation's rows, resolved only when not random, so that runs from before them keep
       // their settings; check_formation (setting_keys.cpp) checks them against the group.
       {"formation", "where a group's robots start each epoch: random, line, circle or at (docs/groups.md)",

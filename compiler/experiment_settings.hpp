@@ -3,7 +3,7 @@
 // experiment block, `--set KEY=VALUE` and resolved settings under one name), and
 // `generations` (`--set generations`, for the ES and the GP alike; scripts give it in
 // `evolve es(...)` / `evolve gp(...)`), `stop_at_success` (`stop at success` in a script),
-// `members_every`, `networks` and a group's `formation`, `formation_spacing` and
+// `members_every`, `networks` and a group's `roles`, `formation`, `formation_spacing` and
 // `formation_at` (`formation line 10cm` in a script). Each row reads and checks its value.
 #include <string>
 #include <string_view>

@@ -39,6 +39,7 @@ std::string_view item_word(const ast::ExpItem& item) {
     case K::Compare: return "compare";
     case K::StartFrom: return item.evaluate_only ? "evaluate from" : "start from";
     case K::Formation: return "formation";
+    case K::Roles: return "roles";
   }
   return "";
 }
@@ -142,6 +143,9 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
         break;
       case K::Formation:
         if (!lower_formation(item, x)) ok = false;
+        break;
+      case K::Roles:
+        if (!item.numbers.empty()) setting("roles", item.numbers[0]);
         break;
       case K::Seed:
         if (!item.numbers.empty()) setting("seed", item.numbers[0]);
@@ -249,8 +253,8 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   if (ok && sink_.errors() == errors && arena != nullptr) {
     const SourceRange use = robot_item != nullptr ? robot_item->where : first[K::Arena]->where;
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);
-    const auto formation = first.find(K::Formation);
-    check_group(x, use, sink_, formation != first.end() ? &formation->second->where : nullptr);
+    const auto where = [&](K kind) { return first.contains(kind) ? &first[kind]->where : nullptr; };
+    check_group(x, use, sink_, {.formation = where(K::Formation), .roles = where(K::Roles)});
   }
   if (start_decl != nullptr) check_start_from(*start_decl, first, evolve);
   if (!ok || sink_.errors() != errors) return slot;

@@ -602,6 +602,9 @@ class Builder {
         item.refs.push_back(name(fm->kind));
         if (fm->spacing != nullptr) item.numbers.push_back(quantity(fm->spacing));
         if (fm->list != nullptr) item.list = list(fm->list);
+      } else if (auto* ro = dynamic_cast<P::ExpRolesContext*>(it)) {
+        item.kind = K::Roles;
+        item.numbers.push_back(number(ro->NUMBER()));
       } else if (auto* e = dynamic_cast<P::ExpEpochsContext*>(it)) {
         item.kind = K::Epochs;
         for (auto* n : e->NUMBER()) item.numbers.push_back(number(n));

@@ -195,7 +195,33 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
   return false;
 }
 
-void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, const SourceRange* formation) {
+namespace {
+
+void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
+  if (spec.roles == 1) return;
+  if (spec.roles > spec.robots) {
+    sink.error(where, fmt::format("{} roles need at least {} robots, and the group has {}", spec.roles, spec.roles,
+                                  spec.robots))
+        .help.push_back(fmt::format("use `roles {}` or fewer, or more robots (`robot NAME x {}`)", spec.robots, spec.roles));
+    return;
+  }
+  // A role is a slice of one vector genome: a tree or a NEAT graph has no fixed length to
+  // slice, and their operators vary one individual.
+  for (const control::ControllerSpec& c : spec.controllers)
+    if (c.is_tree() || c.is_graph()) {
+      sink.error(where, fmt::format("`{}` is a {}: roles are networks of fixed topology, whose weights make one genome "
+                                    "for every role",
+                                    c.name, c.is_tree() ? "tree" : "NEAT network"))
+          .help.push_back("compare it in another experiment, with the clonal team (`roles 1`, the default)");
+      return;
+    }
+}
+
+}  // namespace
+
+void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, GroupItems items) {
+  check_roles(spec, items.roles != nullptr ? *items.roles : where, sink);
+  const SourceRange* formation = items.formation;
   if (const std::string why = sim::formation_problem(spec.formation, static_cast<std::size_t>(spec.robots), spec.arena,
                                                      spec.robot.body_radius_m, sim::kStartMargin_m);
       !why.empty()) {

@@ -41,11 +41,15 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
 // evolves, the tree operators against the trees' primitives, and the runtime's
 // rules for the robot, the arena and the robot in it. False when one fails.
 bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink);
-// What a group (`robot NAME x N`, `--set robots=N`) needs: a formation its robots can take
-// (reported at `formation`, where given, else at `where`), else room for its random starts (its
-// robots' discs at most 40% of the arena's free floor); one error.
-void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink,
-                 const SourceRange* formation = nullptr);
+// The items a group's errors point at, where given (else at check_group's `where`).
+struct GroupItems {
+  const SourceRange* formation = nullptr;
+  const SourceRange* roles = nullptr;
+};
+// What a group (`robot NAME x N`, `--set robots=N`) needs: roles no more than its robots, each a
+// network of fixed topology; a formation its robots can take, else room for its random starts
+// (its robots' discs at most 40% of the arena's free floor); one error each.
+void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, GroupItems items = {});
 
 // Rewrites the keys of resolved_settings that the spec's fields determine, the settings a
 // study gives its dependencies among them (`energy.generations`); keeps the others (robot

@@ -137,6 +137,9 @@ expItem
   // Where a group's robots start (docs/groups.md): `formation line 10cm`, `formation circle
   // 15cm`, `formation at [(20cm, 20cm, 90deg), (40cm, 20cm, 90deg)]`; random by default.
   | FORMATION kind=ident (spacing=quantity | list=quantityList)? ';'?               # expFormation
+  // `roles 3`: a genome per role, evolved together as one genome; robot i plays role i mod 3
+  // (docs/groups.md). One role, the default, is the clonal team.
+  | ROLES NUMBER ';'?                                                             # expRoles
   | EPOCHS NUMBER (X NUMBER STEPS)? ';'?                                          # expEpochs
   | STEPS NUMBER ';'?                                                             # expSteps
   // The fitness (the first objective), with the range its values lie in when declared.
@@ -216,7 +219,7 @@ ident
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
   | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN | WALL | GOAL | TO | THICKNESS
-  | SUCCESS | OVER | FORMATION
+  | SUCCESS | OVER | FORMATION | ROLES
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -306,6 +309,7 @@ GOAL : 'goal' ;
 TO : 'to' ;
 OVER : 'over' ;
 FORMATION : 'formation' ;
+ROLES : 'roles' ;
 THICKNESS : 'thickness' ;
 
 ARROW : '->' ;

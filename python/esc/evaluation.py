@@ -35,7 +35,8 @@ def evaluate(script: Union[Script, PathOrSource], experiment: Optional[str], con
 
     `script` is an esc.Script (esc.compile, with its settings) or a path or text to compile.
     `genomes` is, for a network controller, a 2-D float array with one genome (all the
-    network's weights, Controller.genome_size of them) per row; for a tree controller, a
+    network's weights, Controller.genome_size of them: with `roles N`, N networks' weights one
+    after the other) per row; for a tree controller, a
     sequence of encoded trees (1-D float arrays, as Run.best_genome(..., encoded=True) gives
     them); for a NEAT network (Controller.is_graph), a sequence of graph genomes, each an
     esc.Network (as Run.best_genome(controller, run) gives it) or its flat form (a 1-D float

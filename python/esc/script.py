@@ -18,9 +18,11 @@ SOURCE_NAME = "<script>"
 class Controller:
     """A controller an experiment compares: its name, architecture ("8-14-6", "8-neat-2",
     "tree actions"), head ("classical", "symbolic", "supervisor" or "tree"), genome size (a
-    network's weights; 0 for a tree or a NEAT network, whose genomes vary in length), its
-    network's inputs by observable name ("ir[0]"), its choices (the actions or behaviors it
-    picks from, in order) and whether it is a NEAT network (`neat(...)`, its genome a graph)."""
+    network's weights, once per role; 0 for a tree or a NEAT network, whose genomes vary in
+    length), its network's inputs by observable name ("ir[0]"), its choices (the actions or
+    behaviors it picks from, in order), whether it is a NEAT network (`neat(...)`, its genome a
+    graph) and the experiment's roles (`roles N`: a genome holds N networks' weights, role r's
+    the r-th slice, driving robots r, r + N, ...; 1 for the clonal team)."""
 
     name: str
     architecture: str
@@ -29,6 +31,7 @@ class Controller:
     inputs: Tuple[str, ...]
     choices: Tuple[str, ...]
     is_graph: bool = False
+    roles: int = 1
 
     @property
     def is_tree(self) -> bool:
@@ -38,7 +41,7 @@ class Controller:
 
 def _controller(d: dict) -> Controller:
     return Controller(d["name"], d["architecture"], d["head"], d["genome_size"], tuple(d["inputs"]),
-                      tuple(d["choices"]), d["graph"])
+                      tuple(d["choices"]), d["graph"], d["roles"])
 
 
 class Script:

@@ -37,10 +37,13 @@ std::vector<std::vector<double>> network_genomes(const control::ControllerSpec& 
   if (a.ndim() != 2)
     throw py::value_error("genomes of network controller `" + c.name + "` are a 2-D array, one row per genome");
   const auto n = static_cast<std::size_t>(a.shape(1));
-  if (n != c.genome_size())
+  if (n != spec.genome_length(c))
     throw py::value_error("controller `" + c.name + "` (" + c.architecture() + ") of experiment `" + spec.name +
-                          "` has genomes of " + std::to_string(c.genome_size()) + " weights, but the rows given have " +
-                          std::to_string(n));
+                          "` has genomes of " + std::to_string(spec.genome_length(c)) + " weights" +
+                          (spec.roles > 1 ? " (" + std::to_string(spec.roles) + " roles of " +
+                                                std::to_string(c.genome_size()) + ")"
+                                          : std::string()) +
+                          ", but the rows given have " + std::to_string(n));
   std::vector<std::vector<double>> rows(static_cast<std::size_t>(a.shape(0)));
   for (std::size_t i = 0; i < rows.size(); ++i) rows[i].assign(a.data(static_cast<py::ssize_t>(i)), a.data(static_cast<py::ssize_t>(i)) + n);
   return rows;

@@ -81,15 +81,16 @@ void apply_settings(CompiledScript& s, const Settings& settings) {
         throw Error(error);
 }
 
-py::dict controller_info(const control::ControllerSpec& c, const sim::RobotParams& robot) {
+py::dict controller_info(const control::ControllerSpec& c, const eval::ExperimentSpec& x) {
   py::dict d;
   d["name"] = c.name;
   d["architecture"] = c.architecture();
   d["head"] = c.head_name();
-  d["genome_size"] = c.genome_size();
+  d["genome_size"] = x.genome_length(c);
+  d["roles"] = x.roles;
   std::vector<std::string> inputs;
   if (!c.is_tree())
-    for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot, robot));
+    for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot, x.robot));
   d["inputs"] = inputs;
   d["choices"] = c.choice_names();
   d["graph"] = c.is_graph();
@@ -99,7 +100,7 @@ py::dict controller_info(const control::ControllerSpec& c, const sim::RobotParam
 py::list controllers(const CompiledScript& s, const std::string& experiment) {
   py::list out;
   const eval::ExperimentSpec& x = find_experiment(s, experiment);
-  for (const control::ControllerSpec& c : x.controllers) out.append(controller_info(c, x.robot));
+  for (const control::ControllerSpec& c : x.controllers) out.append(controller_info(c, x));
   return out;
 }
 
@@ -149,12 +150,13 @@ void bind_script(py::module_& m) {
           "The main file's studies, in declaration order, each with its conditions.")
       .def("controllers", &controllers, py::arg("experiment"),
            "The controllers `experiment` compares, in order: dicts of name, architecture, head, genome_size "
-           "(0 for a tree), inputs (the network's, by observable name) and choices (actions or behaviors).")
+           "(0 for a tree; a network's weights times roles), roles (the genomes evolved together, one per role), "
+           "inputs (the network's, by observable name) and choices (actions or behaviors).")
       .def(
           "controller",
           [](const CompiledScript& s, const std::string& experiment, const std::string& name) {
             const eval::ExperimentSpec& x = find_experiment(s, experiment);
-            return controller_info(find_controller(x, name), x.robot);
+            return controller_info(find_controller(x, name), x);
           },
           py::arg("experiment"), py::arg("name"),
           "Controller `name` of `experiment`, as controllers() describes it; ValueError naming those it compares.")

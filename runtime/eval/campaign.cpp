@@ -181,6 +181,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
   CampaignResult result;
   result.experiment = spec.name;
   result.robots = spec.robots;
+  result.roles = spec.roles;
   result.seed = spec.seed;
   if (spec.success) result.success = spec.success->text();
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();

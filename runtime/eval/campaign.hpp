@@ -87,6 +87,7 @@ struct CampaignResult {
   std::string experiment;
   std::uint64_t seed = 0;
   int robots = 1;   // the group's robots (ExperimentSpec::robots)
+  int roles = 1;    // and its roles (ExperimentSpec::roles)
   // The experiment's success test as resolved (SuccessSpec::text); empty when it declares
   // none, and then no run's success is shown.
   std::string success{};

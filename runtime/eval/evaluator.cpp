@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "runtime/control/controller.hpp"
 #include "runtime/eval/epoch_stepper.hpp"
 #include "runtime/eval/observe.hpp"
@@ -55,10 +57,17 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
     control::Controller* const one = &ctl;
     return run(controller, std::span<control::Controller* const>(&one, 1), seed, trace);
   }
+  // Role r's network is the genome's r-th slice (the whole genome for the clonal team).
+  const auto roles = static_cast<std::size_t>(spec_->roles);
+  if (roles > 1 && genome.size() != spec_->genome_length(controller))
+    throw std::invalid_argument(fmt::format("a genome of `{}` here holds {} roles of {} weights, got {} values",
+                                            controller.name, roles, controller.genome_size(), genome.size()));
+  const std::size_t role_size = genome.size() / roles;
   std::vector<std::unique_ptr<control::Controller>> group;
   std::vector<control::Controller*> drivers;
-  for (int i = 0; i < spec_->robots; ++i) {
-    group.push_back(std::make_unique<control::Controller>(controller, genome, &tree_control::make_actor));
+  for (std::size_t i = 0; i < static_cast<std::size_t>(spec_->robots); ++i) {
+    const std::span<const double> role = genome.subspan((i % roles) * role_size, role_size);
+    group.push_back(std::make_unique<control::Controller>(controller, role, &tree_control::make_actor));
     drivers.push_back(group.back().get());
   }
   return run(controller, std::span<control::Controller* const>(drivers), seed, trace);

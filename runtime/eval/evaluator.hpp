@@ -120,7 +120,8 @@ class Evaluator {
   // Deterministic in (controller, genome, seed) whatever this evaluator ran before.
   // With a `trace`, every step is also reported to it; the result is the same either way
   // (the untraced path pays one predictable branch per step). A tree controller's genome
-  // is its encoded tree (runtime/genome/tree/codec.hpp).
+  // is its encoded tree (runtime/genome/tree/codec.hpp); a network's holds spec.roles
+  // networks' weights (spec.genome_length), role r's driving robots r, r + roles, ...
   [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller,
                                     std::span<const double> genome, std::uint64_t seed,
                                     TraceSink* trace = nullptr);

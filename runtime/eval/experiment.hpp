@@ -209,10 +209,13 @@ struct ExperimentSpec {
   sim::ArenaSpec arena;
   sim::RobotParams robot;
   // The group: this many robots of `robot`'s body in the arena, each driven by its own instance
-  // of the controller evaluated (clonal: one genome); every step term, stop condition and end
-  // term is evaluated on each robot's frame, the terms averaged over the robots
-  // (docs/groups.md). 1: a robot alone.
+  // of the controller evaluated; every step term, stop condition and end term is evaluated on
+  // each robot's frame, the terms averaged over the robots (docs/groups.md). 1: a robot alone.
   int robots = 1;   // at most kMaxRobots
+  // A network's genome holds this many networks' weights, one per role, evolved together;
+  // robot i is driven by role i mod roles. 1: the clonal team, one genome for every robot.
+  // At most `robots`, and only for networks of fixed topology (check_group).
+  int roles = 1;
   sim::Formation formation;   // where a group's robots start each epoch (`formation line 10cm`)
   // The radii (m) the group's clusters are counted within, each read from slots clusters + k,
   // largest_cluster + k and cluster_size + k (`clusters(15cm)`): at most kMaxClusterRadii.
@@ -343,7 +346,7 @@ struct ExperimentSpec {
   [[nodiscard]] evo::Problem problem_of(const control::ControllerSpec& c) const {
     constexpr double inf = std::numeric_limits<double>::infinity();
     evo::Problem p;
-    p.genome_size = c.genome_size();
+    p.genome_size = genome_length(c);
     p.tree.primitives = c.primitives.get();
     if (c.is_graph()) {
       const evo::NeatSettings* neat = settings_of<evo::NeatSettings>(kGraphOperators);
@@ -374,10 +377,15 @@ struct ExperimentSpec {
     for (const auto& c : controllers) n += static_cast<std::int64_t>(runs) * generations_for(c);
     return n;
   }
-  // The size tables show for a controller: its network's weights, or a tree's node limit.
+  // A genome of `c` here: its network's weights once per role (a tree's and a graph's, of any
+  // length, have genome_size() 0).
+  [[nodiscard]] std::size_t genome_length(const control::ControllerSpec& c) const {
+    return c.genome_size() * static_cast<std::size_t>(roles);
+  }
+  // The size tables show for a controller: its genome's weights, or a tree's node limit.
   [[nodiscard]] std::size_t genome_size_of(const control::ControllerSpec& c) const {
     const evo::gp::GpSettings* trees = c.is_tree() ? tree_operators() : nullptr;
-    return trees != nullptr ? static_cast<std::size_t>(trees->max_size) : c.genome_size();
+    return trees != nullptr ? static_cast<std::size_t>(trees->max_size) : genome_length(c);
   }
 };
 

@@ -103,9 +103,10 @@ json export_json(const std::vector<StoredDirectory>& directories) {
         if (c.members) controllers[c.name]["members"] = members_json(*c.members);
       }
       json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
-      // A group names its size (its `robots` setting); a robot alone's export is as it always was.
-      if (const auto robots = e.settings.find("robots"); robots != e.settings.end())
-        x["robots"] = std::atoi(robots->second.c_str());
+      // A group names its size and roles (its `robots` and `roles` settings, each resolved only
+      // when not 1); a robot alone's export is as it always was.
+      for (const char* key : {"robots", "roles"})
+        if (const auto it = e.settings.find(key); it != e.settings.end()) x[key] = std::atoi(it->second.c_str());
       if (e.condition) {
         json settings = json::object();
         for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;

@@ -173,6 +173,7 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const
   partial_.experiment = spec.name;
   partial_.seed = spec.seed;
   partial_.robots = spec.robots;
+  partial_.roles = spec.roles;
   if (spec.success) partial_.success = spec.success->text();
   for (const control::ControllerSpec& c : spec.controllers) controllers_.emplace_back(c.name, spec.genome_size_of(c));
   write_summary();

@@ -95,6 +95,32 @@ TEST(Results, AGroupsControllerIsTestedWithAnotherGroupSize) {
   EXPECT_NE(tested["tested_with_five fitness"], tested["tested_with_three fitness"]);
 }
 
+// Roles (docs/groups.md): the genome of two roles holds both networks; it is tested with six
+// robots of the same two roles, replayed as stored, and refused by a clonal team.
+TEST(Results, RolesEvolvedTogetherAreTestedWithAnotherGroupSize) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/roles_transfer.esc";
+  const fs::path cache = scratch("roles-cache");
+  const fs::path six = scratch("roles-of-six");
+  const Outcome run = esc("run " + script + " --experiment two_roles_of_six --cache " + cache.string() + " --out " +
+                          six.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json summary = read_json(six / "summary.json");
+  EXPECT_EQ(summary["robots"], 6);
+  EXPECT_EQ(summary["roles"], 2);
+  EXPECT_EQ(summary["controllers"]["CC"]["genome_size"], 2 * 46);   // CC: 8-4-2, 46 weights a role
+  const nlohmann::json best = read_json(six / "CC" / "run-01.best.json");
+  EXPECT_EQ(best["genome"].size(), 2U * 46U);
+  const fs::path replayed = scratch("roles-replay");
+  const Outcome replay = esc("replay " + six.string() + " --controller CC --run 1 --out " + replayed.string());
+  EXPECT_EQ(replay.status, 0) << replay.output;
+  EXPECT_EQ(replay.output.find("differ"), std::string::npos) << replay.output;
+  const Outcome clonal = esc("run " + script + " --experiment one_role --cache " + cache.string() + " --out " +
+                             scratch("one-role").string());
+  EXPECT_NE(clonal.status, 0);
+  EXPECT_NE(clonal.output.find("`two_roles` evolves 2 roles together and `one_role` has 1"), std::string::npos)
+      << clonal.output;
+}
+
 TEST(Results, KilledWithSeveralRunsInProgressResumesBitIdentical) {
   // Two threads: tiny's 20 offspring are fewer than 16 per worker, so both runs of a
   // controller advance together and are both in progress when the process is killed.

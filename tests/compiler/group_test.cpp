@@ -271,6 +271,44 @@ TEST(Groups, AGroupsUsageCountsAddUpToItsSteps) {
   EXPECT_EQ(e.usage[0] + e.usage[1], e.steps);
 }
 
+// `roles N`: N networks in one genome, robot i driven by role i mod N; resolved only when
+// several, settable with `--set`, at most the group's robots, networks of fixed topology only.
+TEST(Groups, RolesAreDeclaredSetAndChecked) {
+  const eval::ExperimentSpec x = first_experiment(script("robot bot x 4  roles 2"), "g.esc");
+  const control::ControllerSpec& c = x.controllers.front();
+  EXPECT_EQ(x.roles, 2);
+  EXPECT_EQ(x.genome_length(c), 2 * c.genome_size());
+  EXPECT_EQ(x.resolved_settings.at("roles"), "2");
+  eval::ExperimentSpec clonal = first_experiment(script("robot bot x 4"), "g.esc");
+  EXPECT_EQ(clonal.roles, 1);
+  EXPECT_FALSE(clonal.resolved_settings.contains("roles"));
+  EXPECT_EQ(apply_setting(clonal, "roles", "4"), "");
+  EXPECT_EQ(clonal.genome_length(c), 4 * c.genome_size());
+  EXPECT_NE(apply_setting(clonal, "roles", "5").find("5 roles need at least 5 robots, and the group has 4"),
+            std::string::npos);
+  EXPECT_NE(apply_setting(clonal, "robots", "3").find("4 roles need at least 4 robots"), std::string::npos);
+  // `roles` is still a name elsewhere.
+  std::string named = script("robot bot x 2  roles 2");
+  for (std::size_t at; (at = named.find("arena a")) != std::string::npos;) named.replace(at, 7, "arena roles");
+  EXPECT_EQ(first_experiment(named, "g.esc").roles, 2);
+}
+
+TEST(Groups, RolesTheGroupOrTheControllersCannotHaveAreLocatedErrors) {
+  std::string out = refusal(script("robot bot x 3", "step: forward_speed", "  roles 4"), "g.esc");
+  EXPECT_NE(out.find("g.esc:6:3: error: 4 roles need at least 4 robots, and the group has 3"), std::string::npos) << out;
+  out = refusal(script("robot bot x 3", "step: forward_speed", "  roles 0"), "g.esc");
+  EXPECT_NE(out.find("g.esc:6:"), std::string::npos) << out;
+  const std::string trees = "robot bot { inertia on }\n"
+                            "arena a { size 1m x 1m  start random }\n"
+                            "fitness f { step: forward_speed }\n"
+                            "primitives p { functions + - terminals ir[0..7] }\n"
+                            "controller t = tree(wheels, primitives p)\n"
+                            "experiment e { arena a  fitness f  compare t  robot bot x 2\n"
+                            "  roles 2 evolve gp(population 10) }\n";
+  out = refusal(trees, "g.esc");
+  EXPECT_NE(out.find("g.esc:7:3: error: `t` is a tree: roles are networks of fixed topology"), std::string::npos) << out;
+}
+
 TEST(Groups, AGroupMustFitTheArenasFloor) {
   // 104 Kheperas-sized discs (with the starts' 5 mm) cover 54% of an 80 cm arena.
   const std::string text = "robot bot { inertia on }\n"

@@ -19,16 +19,29 @@ EXACT = {"x_m": "x", "y_m": "y", "heading_rad": "heading", "left_command": "left
 
 
 @pytest.fixture(scope="module")
-def group_run(tmp_path_factory):
-    return esc_run(GROUPS, tmp_path_factory.mktemp("group") / "run", SETTINGS, "--experiment", "dispersion")
+def group_runs(tmp_path_factory):
+    """The dispersion group's run directory for a number of roles, run once each."""
+    runs = {}
+
+    def run(roles):
+        if roles not in runs:
+            runs[roles] = esc_run(GROUPS, tmp_path_factory.mktemp("group") / "run", {**SETTINGS, "roles": roles},
+                                  "--experiment", "dispersion")
+        return runs[roles]
+    return run
 
 
-@pytest.mark.parametrize("controller", ["cc", "sc"])
-def test_a_stored_genome_drives_every_robot_as_the_replay_did(group_run, tmp_path, controller):
+# Three roles of five robots: robots 1 and 4 are role 1's, 2 and 5 role 2's, 3 role 3's.
+@pytest.mark.parametrize("controller,roles", [("cc", 1), ("sc", 1), ("cc", 3)])
+def test_a_stored_genome_drives_every_robot_as_the_replay_did(group_runs, tmp_path, controller, roles):
+    group_run = group_runs(roles)
     run_esc("replay", group_run, "--controller", controller, "--run", 1, "--out", tmp_path)
     csv = pd.read_csv(tmp_path / f"replay-{controller}-run-01.csv", float_precision="round_trip", keep_default_na=False)
     best = esc.open(group_run).best(controller, 1)
-    env = esc.ParallelEnv(esc.compile(GROUPS, SETTINGS), "dispersion", controller, seed=best.evaluation_seed)
+    script = esc.compile(GROUPS, {**SETTINGS, "roles": roles})
+    assert len(best.genome) == script.controller("dispersion", controller).genome_size
+    assert script.controller("dispersion", controller).roles == roles
+    env = esc.ParallelEnv(script, "dispersion", controller, seed=best.evaluation_seed)
     assert env.possible_agents == [f"robot_{i}" for i in range(1, 6)] and env.agents == []
     policies = env.policies(best.genome)
     observations, infos = env.reset()
@@ -48,6 +61,22 @@ def test_a_stored_genome_drives_every_robot_as_the_replay_did(group_run, tmp_pat
         assert state["ir"].tolist() == [row[f"ir{k}"] for k in range(8)]
         assert (env.choices[state["action"]] if state["action"] >= 0 else "") == row["behavior"]
     assert truncations["robot_1"] and env.num_agents == 0
+
+
+def test_a_genome_holds_every_roles_weights():
+    script = esc.compile(GROUPS, {**SETTINGS, "roles": 5})
+    c = script.controller("dispersion", "cc")
+    assert c.roles == 5
+    one = c.genome_size // 5
+    with pytest.raises(ValueError, match=f"holds its 5 roles' weights, {c.genome_size} in all"):
+        esc.ParallelEnv(script, "dispersion", "cc", seed=1).policies(np.zeros(one))
+    with pytest.raises(ValueError, match=f"has genomes of {c.genome_size} weights \\(5 roles of {one}\\)"):
+        esc.evaluate(script, "dispersion", "cc", np.zeros((1, one)))
+    # Five equal roles are the clonal team; five different ones are not.
+    weights = np.random.default_rng(4).uniform(-1, 1, (5, one))
+    clonal = esc.evaluate(esc.compile(GROUPS, SETTINGS), "dispersion", "cc", weights[:1], seed=9)
+    assert esc.evaluate(script, "dispersion", "cc", np.tile(weights[0], 5)[None], seed=9)[0] == clonal[0]
+    assert esc.evaluate(script, "dispersion", "cc", weights.reshape(1, -1), seed=9)[0] != clonal[0]
 
 
 def test_rewards_are_each_robots_step_term_and_errors_name_the_agent():
