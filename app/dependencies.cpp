@@ -143,6 +143,25 @@ Prepared finish_dependency(const DependencyContext& cx, const std::string& name,
   return load_into(p);
 }
 
+// Whether the genomes `dependency` stores can serve `user` as it uses them, refused before the
+// dependency runs: a genome holds one network per role, so a start or an evaluation needs as
+// many roles, and a frozen behavior (one network) an experiment of one role.
+void check_roles(const eval::ExperimentSpec& user, const eval::ExperimentSpec& dependency) {
+  if (user.start_from && user.start_from->experiment == dependency.name && dependency.roles != user.roles)
+    throw Error(ErrorKind::Dependency,
+                fmt::format("`{}` evolves {} role{} in one genome and `{}` has {}: a genome holds one network per "
+                            "role, so both need the same roles (the group's size may differ)",
+                            dependency.name, dependency.roles, dependency.roles == 1 ? "" : "s", user.name,
+                            user.roles));
+  for (const eval::Dependency& dep : user.dependencies)
+    if (dep.experiment == dependency.name && dependency.roles > 1)
+      throw Error(ErrorKind::Dependency,
+                  fmt::format("`{}` evolves {} roles of `{}` in one genome, and a behavior of `{}` is one network: "
+                              "freeze a controller of an experiment with one role (`--set roles` applies to "
+                              "dependencies too)",
+                              dependency.name, dependency.roles, dep.controller, user.name));
+}
+
 // Runs experiment `name` into the cache, or reuses a finished run of the same fingerprint.
 Prepared run_or_reuse(const std::string& name, const eval::ExperimentSpec& user, const DependencyContext& cx,
                       int depth) {
@@ -154,6 +173,7 @@ Prepared run_or_reuse(const std::string& name, const eval::ExperimentSpec& user,
   // The script's settings before the command line's, as for the experiment run itself.
   apply_dependency_settings(p.spec, user.dependency_settings, user.name);
   cx.apply_overrides(p.spec);
+  check_roles(user, p.spec);
   prepare(p.spec, cx, depth + 1);
   const std::string key = fmt::format("esc {}\n{}", cx.version, eval::fingerprint(p.spec));
   p.dir = cx.cache / fmt::format("{}-{:016x}", name, store::content_hash(key));
@@ -254,11 +274,6 @@ void freeze_behaviors(const DependencyContext& cx, eval::ExperimentSpec& spec, c
   const eval::RunResult* best = &sc->finished.front();
   for (const eval::RunResult& r : sc->finished)
     if (r.best_fitness > best->best_fitness) best = &r;
-  if (p.spec.roles > 1)
-    throw Error(ErrorKind::Dependency,
-                fmt::format("{}: `{}` evolves {} roles of `{}` together, and a behavior is one network: freeze a "
-                            "controller of an experiment with one role",
-                            p.dir.string(), p.spec.name, p.spec.roles, dep.controller));
   auto frozen = std::make_shared<const control::ControllerSpec>(*ctl);
   if (const std::string why = eval::genome_problem(*frozen, best->best_genome); !why.empty())
     throw Error(ErrorKind::Dependency,
@@ -278,13 +293,6 @@ void freeze_behaviors(const DependencyContext& cx, eval::ExperimentSpec& spec, c
 void fill_start_genomes(const DependencyContext& cx, eval::ExperimentSpec& spec, const Prepared& p) {
   eval::StartFrom& start = *spec.start_from;
   start.genomes.clear();
-  // A genome holds one network per role: another number of roles reads other networks.
-  if (p.spec.roles != spec.roles)
-    throw Error(ErrorKind::Dependency,
-                fmt::format("{}: `{}` evolves {} role{} together and `{}` has {}: a genome holds one network per role, "
-                            "so both need the same roles (the group's size may differ)",
-                            p.dir.string(), p.spec.name, p.spec.roles, p.spec.roles == 1 ? "" : "s", spec.name,
-                            spec.roles));
   for (const control::ControllerSpec& c : spec.controllers) {
     const store::StoredController& sc = stored_controller(p, c.name);
     auto& runs = start.genomes.emplace_back();

@@ -250,6 +250,14 @@ struct DeclaredRange {
   SourceRange where;
 };
 
+// A group's body after the first (`robot khepera x 2, lit_khepera x 3`): its robot, inline
+// settings and count (1 when not given).
+struct GroupMember {
+  Name ref;
+  std::vector<Setting> settings;
+  std::optional<Quantity> count;
+};
+
 struct ExpItem {
   enum class Kind {
     Arena, Robot, Epochs, Steps, Fitness, Objective, Descriptor, Success, StopAtSuccess, Evolve, Runs, Seed, Compare,
@@ -264,6 +272,7 @@ struct ExpItem {
   // Compare: the algorithm `by` names for controller `refs[i]`; empty text when none.
   std::vector<Name> algorithms;
   std::vector<Setting> settings;    // robot { ... } overrides
+  std::vector<GroupMember> members;   // Robot: the group's further bodies, in order
   std::vector<Quantity> numbers;    // epochs [, steps] / steps / runs / seed / success's threshold / formation's spacing / roles
   std::optional<Value> list;        // Formation: `at [(x, y, heading), ...]`
   std::vector<EsOption> options;    // evolve es(...)

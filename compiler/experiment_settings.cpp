@@ -55,6 +55,10 @@ const std::vector<ExperimentSetting>& experiment_settings() {
       // Resolved only for a group, so that runs from before it keep their settings.
       {"robots", "robots of the experiment's body in the arena, each driven by its own copy of its role's controller",
        [](const Row& r, X& x, const ast::Value& v, Sink& k) {
+         if (x.bodies.size() > 1) {
+           k.error(v.where, "the group is of several bodies, each with its count: change them in the `robot` item");
+           return false;
+         }
          const auto n = read_count(v, r.key, 1, eval::kMaxRobots, k);
          if (n) x.robots = static_cast<int>(*n);
          return n.has_value();

@@ -13,6 +13,7 @@
 #include "compiler/lower_objectives.hpp"
 #include "compiler/lower_success.hpp"
 #include "compiler/names.hpp"
+#include "compiler/robot_settings.hpp"
 #include "compiler/setting_keys.hpp"
 #include "compiler/setting_values.hpp"
 
@@ -123,6 +124,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
             ok = false;
           x.robot = robot->params;
           if (!item.numbers.empty()) setting("robots", item.numbers[0]);
+          if (!item.members.empty() && !lower_bodies(item, robot->params, x)) ok = false;
         } else {
           ok = false;
         }
@@ -274,6 +276,55 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   resolve_success(x);
   slot = std::move(x);
   return slot;
+}
+
+bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::RobotParams& first,
+                                      eval::ExperimentSpec& x) {
+  bool ok = true;
+  long long total = x.robots;
+  x.bodies = {{item.refs[0].text, first, x.robots}};
+  for (const ast::GroupMember& m : item.members) {
+    long long count = 1;
+    if (m.count) {
+      const auto n = read_count(as_value(*m.count), "robots", 1, eval::kMaxRobots, sink_);
+      if (!n) {
+        ok = false;
+        continue;
+      }
+      count = *n;
+    }
+    const ast::RobotDecl* rd = nullptr;
+    const LoweredRobot* declared = lowered(names_, parts_.robots, m.ref, rd);
+    if (declared == nullptr) {
+      ok = false;
+      continue;
+    }
+    LoweredRobot body = *declared;
+    if (!parts_.robots.apply(body, m.settings) || !parts_.robots.check(body, m.ref.where)) {
+      ok = false;
+      continue;
+    }
+    if (const std::string key = shape_difference(first, body.params); !key.empty()) {
+      const RobotSetting& s = *find_robot_setting(key);
+      sink_.error(m.ref.where, fmt::format("`{}` has another `{}` than `{}` ({} against {}): the bodies of a group share "
+                                           "their shape, sensors and step",
+                                           m.ref.text, key, item.refs[0].text, robot_value_text(s, body.params),
+                                           robot_value_text(s, first)))
+          .help.push_back(fmt::format("declare it from `{}` (`robot {} = {} {{ ... }}`) and change only what else differs",
+                                      item.refs[0].text, m.ref.text, item.refs[0].text));
+      ok = false;
+      continue;
+    }
+    total += count;
+    x.bodies.push_back({m.ref.text, body.params, static_cast<int>(count)});
+  }
+  if (ok && total > eval::kMaxRobots) {
+    sink_.error(item.where, fmt::format("the group's bodies add up to {} robots, and a group holds at most {}", total,
+                                        eval::kMaxRobots));
+    ok = false;
+  }
+  if (ok) x.robots = static_cast<int>(total);
+  return ok;
 }
 
 // `formation line 10cm`, `formation circle 15cm`, `formation at [(x, y, heading), ...]`,

@@ -594,9 +594,17 @@ class Builder {
         item.refs.push_back(name(a->ident()));
       } else if (auto* r = dynamic_cast<P::ExpRobotContext*>(it)) {
         item.kind = K::Robot;
-        item.refs.push_back(name(r->ident()));
-        item.settings = settings(r->settingsBlock());
-        if (r->NUMBER() != nullptr) item.numbers.push_back(number(r->NUMBER()));
+        for (P::GroupMemberContext* m : r->groupMember()) {
+          ast::GroupMember member{name(m->ident()), settings(m->settingsBlock()), std::nullopt};
+          if (m->NUMBER() != nullptr) member.count = number(m->NUMBER());
+          if (item.refs.empty()) {   // the first body: the robot item as it always was
+            item.refs.push_back(member.ref);
+            item.settings = std::move(member.settings);
+            if (member.count) item.numbers.push_back(*member.count);
+          } else {
+            item.members.push_back(std::move(member));
+          }
+        }
       } else if (auto* fm = dynamic_cast<P::ExpFormationContext*>(it)) {
         item.kind = K::Formation;
         item.refs.push_back(name(fm->kind));

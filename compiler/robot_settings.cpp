@@ -255,6 +255,13 @@ const std::vector<RobotSetting>& robot_settings() {
       {"light_noise", K::Quantity, Dim::None, "standard deviation of light noise (readings 0..1)",
        [](const sim::RobotParams& p) { return p.light.noise_sd; },
        [](sim::RobotParams& p, double v) { p.light.noise_sd = v; }},
+      {"emission", K::Quantity, Dim::None,
+       "light the robot gives off, seen by the other robots' light sensors as an arena light of this intensity; 0: none",
+       [](const sim::RobotParams& p) { return p.emission.intensity; },
+       [](sim::RobotParams& p, double v) { p.emission.intensity = v; }},
+      {"emission_height", K::Quantity, Dim::Length, "height of the robot's light above the sensors' plane",
+       [](const sim::RobotParams& p) { return p.emission.height_m; },
+       [](sim::RobotParams& p, double v) { p.emission.height_m = v; }},
       {"energy", K::Flag, Dim::None, "energy accumulator on or off",
        [](const sim::RobotParams& p) { return p.energy.enabled ? 1.0 : 0.0; },
        [](sim::RobotParams& p, double v) { p.energy.enabled = v != 0.0; }},
@@ -326,6 +333,17 @@ bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotPar
   const auto n = read_number(s, v, sink);
   if (n) s.set(p, *n);
   return n.has_value();
+}
+
+std::string shape_difference(const sim::RobotParams& a, const sim::RobotParams& b) {
+  static constexpr std::string_view kShared[] = {"drive",      "body_radius",    "body_outline", "control_step",
+                                                 "substeps",   "ir_sensors",     "ir_name",      "rangefinders",
+                                                 "radars",     "ground_sensors", "ground_name",  "bumpers"};
+  for (const std::string_view key : kShared) {
+    const RobotSetting& s = *find_robot_setting(key);
+    if (robot_value_text(s, a) != robot_value_text(s, b)) return std::string(key);
+  }
+  return {};
 }
 
 std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p) {

@@ -167,7 +167,10 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
           .help.push_back(fmt::format("declare `robot r = khepera {{ {} ... }}` and use it", *name));
       return false;
     }
-    return apply_robot_value(*s, value, spec.robot, sink);
+    // Every body of a group alike: a shape changed so stays shared.
+    if (!apply_robot_value(*s, value, spec.robot, sink)) return false;
+    for (eval::ExperimentSpec::GroupBody& b : spec.bodies) (void)apply_robot_value(*s, value, b.params, sink);
+    return true;
   }
   if (const auto name = in_group(k, kArenaGroup)) {
     const ArenaSetting* s = find_arena_setting(*name);
@@ -202,7 +205,10 @@ void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   if (spec.roles > spec.robots) {
     sink.error(where, fmt::format("{} roles need at least {} robots, and the group has {}", spec.roles, spec.roles,
                                   spec.robots))
-        .help.push_back(fmt::format("use `roles {}` or fewer, or more robots (`robot NAME x {}`)", spec.robots, spec.roles));
+        .help.push_back(spec.robots == 1 ? std::string("a robot alone has one role: make a group (`robot NAME x N`)")
+                                         : fmt::format("use at most `roles {}`, or more robots (`robot NAME x {}`, "
+                                                       "`--set robots={}`)",
+                                                       spec.robots, spec.roles, spec.roles));
     return;
   }
   // A role is a slice of one vector genome: a tree or a NEAT graph has no fixed length to
@@ -222,8 +228,11 @@ void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
 void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, GroupItems items) {
   check_roles(spec, items.roles != nullptr ? *items.roles : where, sink);
   const SourceRange* formation = items.formation;
+  const std::vector<sim::RobotParams> bodies = spec.robot_params();
+  double radius = 0.0;
+  for (const sim::RobotParams& b : bodies) radius = std::max(radius, b.body_radius_m);
   if (const std::string why = sim::formation_problem(spec.formation, static_cast<std::size_t>(spec.robots), spec.arena,
-                                                     spec.robot.body_radius_m, sim::kStartMargin_m);
+                                                     radius, sim::kStartMargin_m);
       !why.empty()) {
     sink.error(formation != nullptr ? *formation : where, fmt::format("the group's `formation {}` cannot be taken in arena `{}`: {}",
                                   formation_words()[static_cast<std::size_t>(spec.formation.kind)], spec.arena_name, why))
@@ -241,8 +250,10 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   double floor_m2 = a.width_m * a.height_m;
   for (const sim::BoxObstacle& b : a.boxes) floor_m2 -= b.size_m.x * b.size_m.y;
   for (const sim::CylinderObstacle& c : a.cylinders) floor_m2 -= std::numbers::pi * c.radius_m * c.radius_m;
-  const double disc = spec.robot.body_radius_m + sim::kStartMargin_m;
-  const double cover = spec.robots * std::numbers::pi * disc * disc / std::max(floor_m2, 1e-12);
+  double discs_m2 = 0.0;
+  for (const sim::RobotParams& b : bodies)
+    discs_m2 += std::numbers::pi * (b.body_radius_m + sim::kStartMargin_m) * (b.body_radius_m + sim::kStartMargin_m);
+  const double cover = discs_m2 / std::max(floor_m2, 1e-12);
   if (cover > kMaxCover && spec.formation.kind == sim::FormationKind::Random) {
     sink.error(where, fmt::format("{} robots of radius {:g} cm would cover {:.0f}% of the arena's free floor; random "
                                   "starts place them at most {:.0f}% of it",
@@ -263,9 +274,14 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   if (std::string m = check_tree_operators(spec); !m.empty()) sink.error(where, m);
   check_algorithm_settings(spec, where, sink);
   const RuleContext context{&spec.arena, spec.arena_name, &spec.robot};
-  const auto robot = sim::robot_problems(spec.robot);
-  const auto arena = sim::arena_problems(spec.arena);
+  auto robot = sim::robot_problems(spec.robot);
   report(sink, robot, context, where);
+  // A group's further bodies, each as the first (`--set robot.KEY` changes them all alike).
+  for (std::size_t i = 1; i < spec.bodies.size() && robot.empty(); ++i) {
+    robot = sim::robot_problems(spec.bodies[i].params);
+    report(sink, robot, {&spec.arena, spec.arena_name, &spec.bodies[i].params}, where);
+  }
+  const auto arena = sim::arena_problems(spec.arena);
   report(sink, arena, context, where);
   if (robot.empty() && arena.empty()) {
     report(sink, sim::placement_problems(spec.arena, spec.robot), context, where);
@@ -273,6 +289,27 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   }
   return sink.errors() == errors;
 }
+
+namespace {
+
+// A group of several bodies: `bodies` lists them with their counts ("khepera x 2, lit x 3"),
+// and `body2.KEY` ... each further body's settings where they differ from the first's (the
+// first's are `robot.KEY`). Only for several bodies, so that every other run keeps its settings.
+void resolve_bodies(eval::ExperimentSpec& spec) {
+  auto& r = spec.resolved_settings;
+  std::erase_if(r, [](const auto& kv) { return kv.first == "bodies" || kv.first.starts_with("body"); });
+  if (spec.bodies.size() <= 1) return;
+  std::string listed;
+  for (const eval::ExperimentSpec::GroupBody& b : spec.bodies)
+    listed += fmt::format("{}{} x {}", listed.empty() ? "" : ", ", b.name, b.count);
+  r["bodies"] = listed;
+  for (std::size_t i = 1; i < spec.bodies.size(); ++i)
+    for (const RobotSetting& s : robot_settings())
+      if (std::string t = robot_value_text(s, spec.bodies[i].params); t != robot_value_text(s, spec.robot))
+        r[fmt::format("body{}.{}", i + 1, s.name)] = std::move(t);
+}
+
+}  // namespace
 
 void resolve_settings(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;
@@ -288,6 +325,7 @@ void resolve_settings(eval::ExperimentSpec& spec) {
   resolve_arena_settings(spec);
   for (const RobotSetting& s : robot_settings())
     r[std::string(kRobotGroup).append(s.name)] = robot_value_text(s, spec.robot);
+  resolve_bodies(spec);
   r["fitness"] = spec.fitness.name;
   std::string names;
   for (const auto& c : spec.controllers)

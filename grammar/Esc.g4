@@ -132,8 +132,9 @@ primTerminal
 experimentDecl : EXPERIMENT name=ident '{' expItem* '}' ;
 expItem
   : ARENA ident ';'?                                                             # expArena
-  // `robot khepera x 3`: a group of three (docs/groups.md).
-  | ROBOT ident settingsBlock? (X NUMBER)? ';'?                                    # expRobot
+  // `robot khepera x 3`: a group of three; `robot khepera x 2, lit_khepera`: of two bodies
+  // (docs/groups.md).
+  | ROBOT groupMember (',' groupMember)* ';'?                                      # expRobot
   // Where a group's robots start (docs/groups.md): `formation line 10cm`, `formation circle
   // 15cm`, `formation at [(20cm, 20cm, 90deg), (40cm, 20cm, 90deg)]`; random by default.
   | FORMATION kind=ident (spacing=quantity | list=quantityList)? ';'?               # expFormation
@@ -165,6 +166,7 @@ expItem
   // first): `evaluate` only evaluates it here; `start` evolves on from it.
   | kw=(START | EVALUATE) FROM EXPERIMENT ident ';'?                              # expStartFrom
   ;
+groupMember : ident settingsBlock? (X NUMBER)? ;
 objRange : IN '[' lo=quantity ',' hi=quantity ']' ;
 esOption : ident ('[' lo=quantity ',' hi=quantity ']' | quantity)? ;
 compared : ctl=ident (BY algo=ident)? (AS alias=ident)? ;

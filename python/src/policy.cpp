@@ -32,8 +32,9 @@ const control::ControllerSpec& network(const CompiledScript& script, const std::
   return c;
 }
 
-// A network's weights, or a NEAT network's graph genome in its flat form.
-std::vector<double> weights(const control::ControllerSpec& c, const Array& genome) {
+// A network's weights (one role's, with `roles` roles), or a NEAT network's graph genome in its
+// flat form.
+std::vector<double> weights(const control::ControllerSpec& c, const Array& genome, int roles) {
   if (c.is_graph()) {
     const std::span<const double> flat(genome.data(), static_cast<std::size_t>(genome.size()));
     if (genome.ndim() != 1) throw py::value_error("a graph genome is a 1-D array");
@@ -42,9 +43,11 @@ std::vector<double> weights(const control::ControllerSpec& c, const Array& genom
     return {flat.begin(), flat.end()};
   }
   if (genome.ndim() != 1 || static_cast<std::size_t>(genome.size()) != c.genome_size())
-    throw py::value_error("controller `" + c.name + "` (" + c.architecture() + ") has genomes of " +
-                          std::to_string(c.genome_size()) + " weights, but the genome given has " +
-                          std::to_string(genome.size()));
+    throw py::value_error("controller `" + c.name + "` (" + c.architecture() + ") has " +
+                          (roles > 1 ? "networks of " + std::to_string(c.genome_size()) + " weights (its genomes hold " +
+                                           std::to_string(roles) + " roles' networks: ParallelEnv.policies splits one)"
+                                     : "genomes of " + std::to_string(c.genome_size()) + " weights") +
+                          ", but the genome given has " + std::to_string(genome.size()));
   return {genome.data(), genome.data() + genome.size()};
 }
 
@@ -54,7 +57,7 @@ class Policy {
          const Array& genome)
       : script_(script),
         controller_(&network(*script, experiment, controller)),
-        genome_(weights(*controller_, genome)),
+        genome_(weights(*controller_, genome, find_experiment(*script, experiment).roles)),
         net_(make_net(*controller_, genome_)) {}
   Policy(const Policy&) = delete;
   Policy& operator=(const Policy&) = delete;

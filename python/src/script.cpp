@@ -63,14 +63,20 @@ py::list diagnostics(const CompiledScript& s) {
 using Settings = std::vector<std::pair<std::string, std::string>>;
 
 // The settings, (key, value) in order, applied to every experiment of the main file and every
-// study condition's, each as `esc run --set` applies it. Throws Error on the first problem, worded
-// as the CLI words it ("experiment `x`: KEY=VALUE: what is wrong").
+// study condition's, together as `esc run --set` applies them (so `robots=2, roles=2` after
+// `roles 3` is one change). Throws Error on the first problem, worded as the CLI words it
+// ("experiment `x`: KEY=VALUE: what is wrong").
 void apply_settings(CompiledScript& s, const Settings& settings) {
   const auto apply = [&settings](eval::ExperimentSpec& e, const std::string& where) -> std::string {
-    for (const auto& [key, value] : settings)
-      if (const std::string error = compiler::apply_setting(e, key, value); !error.empty())
-        return where + ": " + key + "=" + value + ": " + error;
-    return {};
+    const compiler::SettingsRefusal refused = compiler::apply_settings_together(e, settings);
+    if (!refused.settings.empty()) {
+      const auto& [index, why] = refused.settings.front();
+      return where + ": " + settings[index].first + "=" + settings[index].second + ": " + why;
+    }
+    if (refused.together.empty()) return {};
+    std::string named;
+    for (const auto& [key, value] : settings) named += (named.empty() ? "" : " ") + key + "=" + value;
+    return where + ": " + named + ": " + refused.together;
   };
   for (eval::ExperimentSpec& e : s.result.experiments)
     if (std::string error = apply(e, "experiment `" + e.name + "`"); !error.empty()) throw Error(error);

@@ -5,7 +5,7 @@
 namespace esc::eval {
 
 sim::World world_of(const ExperimentSpec& spec) {
-  sim::World world(spec.arena, std::vector<sim::RobotParams>(static_cast<std::size_t>(spec.robots), spec.robot));
+  sim::World world(spec.arena, spec.robot_params());
   if (spec.formation.kind != sim::FormationKind::Random) world.set_formation(spec.formation);
   return world;
 }

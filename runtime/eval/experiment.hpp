@@ -212,6 +212,16 @@ struct ExperimentSpec {
   // of the controller evaluated; every step term, stop condition and end term is evaluated on
   // each robot's frame, the terms averaged over the robots (docs/groups.md). 1: a robot alone.
   int robots = 1;   // at most kMaxRobots
+  // A group of several bodies (`robot khepera x 2, lit_khepera x 3`): each body and its robots,
+  // in robot order (robots 0 and 1 the first body's, ...), `robot` the first body, the counts
+  // adding up to `robots`. Empty: every robot has `robot`'s body. The bodies share their shape
+  // and sensors (the compiler checks it), and differ in anything else.
+  struct GroupBody {
+    std::string name;
+    sim::RobotParams params;
+    int count = 1;
+  };
+  std::vector<GroupBody> bodies;
   // A network's genome holds this many networks' weights, one per role, evolved together;
   // robot i is driven by role i mod roles. 1: the clonal team, one genome for every robot.
   // At most `robots`, and only for networks of fixed topology (check_group).
@@ -376,6 +386,13 @@ struct ExperimentSpec {
     std::int64_t n = 0;
     for (const auto& c : controllers) n += static_cast<std::int64_t>(runs) * generations_for(c);
     return n;
+  }
+  // Every robot's body, in robot order.
+  [[nodiscard]] std::vector<sim::RobotParams> robot_params() const {
+    if (bodies.empty()) return std::vector<sim::RobotParams>(static_cast<std::size_t>(robots), robot);
+    std::vector<sim::RobotParams> all;
+    for (const GroupBody& b : bodies) all.insert(all.end(), static_cast<std::size_t>(b.count), b.params);
+    return all;
   }
   // A genome of `c` here: its network's weights once per role (a tree's and a graph's, of any
   // length, have genome_size() 0).

@@ -10,7 +10,7 @@ namespace esc::eval {
 namespace {
 
 // (key, value as resolved_settings writes it), in the order they were added.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kAdded{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 20> kAdded{{
     {"robot.motor_noise", "0"},   // 2026-12-02
     // The maze navigator's walls, goal and sensors: none, and the rangefinders' default range.
     {"arena.walls", "0"},
@@ -39,6 +39,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kAdded{{
     {"robot.ground_name", "ground_sensor"},
     // Bumpers (2026-12-05): none.
     {"robot.bumpers", "[]"},
+    // Light given off by a robot, for the others' light sensors (2026-12-06): none.
+    {"robot.emission", "0"},
+    {"robot.emission_height", "0 m"},
 }};
 
 }  // namespace

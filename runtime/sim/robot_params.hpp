@@ -77,6 +77,15 @@ struct LightSensorParams {
   double noise_sd = 0.0;            // Gaussian noise on the normalised reading, then clamped
 };
 
+// Light the robot gives off (a beacon on top, or its IR emitters as others' sensors see them
+// in passive mode): a point source of `intensity` at its centre, `height_m` above the sensors'
+// plane, which the other robots' light sensors read as they read an arena's light there (walls
+// and obstacles shade it, robots do not). 0: none, the default.
+struct EmissionParams {
+  double intensity = 0.0;
+  double height_m = 0.0;
+};
+
 // The accumulator of the homing experiment (paper section 4): full to empty in
 // discharge_steps control steps outside recharge zones, empty to full in recharge_steps
 // control steps inside one. Integrated exactly (integer units) at the physics substep rate.
@@ -172,6 +181,7 @@ struct RobotParams {
   double control_step_s = 0.1;      // one sense-control-act cycle
   int physics_substeps = 2;         // fixed physics steps per control step
   LightSensorParams light;
+  EmissionParams emission;
   EnergyParams energy;
   RangefinderParams rangefinders;
   GroundSensorParams ground;

@@ -199,6 +199,10 @@ constexpr RuleInfo kRules[] = {
      "robot.outline moved in by 1 mm: its narrowest depth", "Bullet's hull is the outline moved in by its 0.5 mm margin"},
     {Rule::GroundUnderOutline, O::Robot, "ground_sensors", kOutlineGroundAlso, R::AtLeast, D::Length,
      "robot.ground.mounts[{}] depth inside the outline", "a sensor sits under the body"},
+    {Rule::EmissionIntensity, O::Robot, "emission", {}, R::AtLeast, D::Number, "robot.emission.intensity",
+     "a light gives off no negative light"},
+    {Rule::EmissionHeight, O::Robot, "emission_height", {}, R::AtLeast, D::Length, "robot.emission.height_m",
+     "the source is at or above the sensors' plane"},
 };
 
 constexpr bool in_rule_order() {
@@ -207,7 +211,7 @@ constexpr bool in_rule_order() {
   return true;
 }
 static_assert(in_rule_order(), "kRules must list every Rule in the order of the enum");
-static_assert(static_cast<std::size_t>(Rule::GroundUnderOutline) + 1 == std::size(kRules));
+static_assert(static_cast<std::size_t>(Rule::EmissionHeight) + 1 == std::size(kRules));
 
 // True when `found` relates to `limit` as `rel` demands; NaN never does.
 bool holds(Relation rel, double found, double limit) {
@@ -519,6 +523,8 @@ std::vector<Problem> robot_problems(const RobotParams& robot) {
                         c.require(Rule::SubstepsMax, robot.physics_substeps, kMaxPhysicsSubsteps);
   c.require(Rule::LightHalfDistance, robot.light.half_distance_m, 0.0);
   c.require(Rule::LightNoise, robot.light.noise_sd, 0.0);
+  c.require(Rule::EmissionIntensity, robot.emission.intensity, 0.0);
+  c.require(Rule::EmissionHeight, robot.emission.height_m, 0.0);
   if (c.require(Rule::EnergyDischargeMin, robot.energy.discharge_steps, 1))
     c.require(Rule::EnergyDischargeMax, robot.energy.discharge_steps, kMaxEnergySteps);
   if (c.require(Rule::EnergyRechargeMin, robot.energy.recharge_steps, 1))

@@ -56,7 +56,7 @@ enum class Rule {
   ContactLookAhead, TurnRate, TurnAccel, NoiseWithoutWheels, OutlineCountMin, OutlineCountMax, OutlineConvex,
   OutlineAroundCentre, OutlineWithinRadius, OutlineWithoutWheels, GroundCount, GroundMountRadiusMin,
   GroundMountRadiusMax, BumperCount, BumperSectorMin, BumperSectorMax, OutlineCorner, OutlineThin,
-  GroundUnderOutline,
+  GroundUnderOutline, EmissionIntensity, EmissionHeight,
 };
 
 enum class Object { Arena, Placement, Robot };

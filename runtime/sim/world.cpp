@@ -129,6 +129,10 @@ struct World::Impl {
   std::vector<Vec2> centres;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;   // the step's pairs that may meet
   mutable std::vector<PlacedBody> seen;                          // the bodies one robot senses
+  // Whether any robot gives off light, and the lights one robot reads then: the arena's and
+  // the other robots' where they are.
+  bool emitting = false;
+  mutable std::vector<PlacedLight> lit;
   std::vector<Pose> starts;                                      // begin_epoch's poses
   Formation formation;                                           // where begin_epoch puts them
 
@@ -149,6 +153,8 @@ struct World::Impl {
       seen.reserve(robots.size());
     }
     starts.reserve(robots.size());
+    emitting = std::any_of(r.begin(), r.end(), [](const RobotParams& p) { return p.emission.intensity > 0.0; });
+    if (emitting) lit.reserve(a.lights.size() + robots.size());
     for (std::size_t i = 0; i < robots.size(); ++i)
       if (robots[i]->body) robots[i]->body->set_index(i);
     if (robots.size() > 1 && bullet) warm_up_contacts();
@@ -538,7 +544,18 @@ void World::read_ir(std::array<double, kIrSensors>& out, Rng& rng, std::size_t r
 }
 void World::read_light(std::array<double, kLightSensors>& out, Rng& rng, std::size_t robot) const {
   const Robot& r = *impl_->robots[robot];
-  const std::span<const PlacedLight> lights = r.floor.lights();
+  std::span<const PlacedLight> lights = r.floor.lights();
+  if (impl_->emitting) {
+    std::vector<PlacedLight>& lit = impl_->lit;
+    lit.assign(lights.begin(), lights.end());
+    for (std::size_t j = 0; j < impl_->robots.size(); ++j) {
+      const Robot& other = *impl_->robots[j];
+      if (j == robot || !(other.robot.emission.intensity > 0.0)) continue;
+      lit.push_back({other.state.pose.x_m, other.state.pose.y_m, other.robot.emission.height_m,
+                     other.robot.emission.intensity});
+    }
+    lights = lit;
+  }
   r.light.read(r.state.pose, impl_->geometry, lights.data(), lights.size(), out, rng);
 }
 void World::read_rangefinders(std::span<double> out, std::size_t robot) const {

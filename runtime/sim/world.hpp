@@ -116,9 +116,9 @@ class World {
   void read_ir(std::array<double, kIrSensors>& out, Rng& rng, std::size_t robot = 0) const;
 
   // Ambient light readings, 0 dark .. 1 bright, from every light of the arena at its
-  // position this epoch; noise drawn from `rng` only when robot.light.noise_sd > 0 (one
-  // draw per sensor, in index order). No allocation.
-  // Other robots neither shade nor emit light.
+  // position this epoch and every other robot's emission (RobotParams::emission) where that
+  // robot is; noise drawn from `rng` only when robot.light.noise_sd > 0 (one draw per sensor,
+  // in index order). No allocation. Other robots do not shade light.
   void read_light(std::array<double, kLightSensors>& out, Rng& rng, std::size_t robot = 0) const;
 
   // Rangefinder readings (rangefinder.hpp), in the order the robot declares them, into

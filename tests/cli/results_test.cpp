@@ -117,8 +117,14 @@ TEST(Results, RolesEvolvedTogetherAreTestedWithAnotherGroupSize) {
   const Outcome clonal = esc("run " + script + " --experiment one_role --cache " + cache.string() + " --out " +
                              scratch("one-role").string());
   EXPECT_NE(clonal.status, 0);
-  EXPECT_NE(clonal.output.find("`two_roles` evolves 2 roles together and `one_role` has 1"), std::string::npos)
+  EXPECT_NE(clonal.output.find("`two_roles` evolves 2 roles in one genome and `one_role` has 1"), std::string::npos)
       << clonal.output;
+  // Refused before the dependency runs: no run of it is started for nothing.
+  const fs::path fresh = scratch("roles-fresh-cache");
+  const Outcome early = esc("run " + script + " --experiment one_role --cache " + fresh.string() + " --out " +
+                            scratch("one-role-early").string());
+  EXPECT_NE(early.status, 0);
+  EXPECT_EQ(early.output.find("running into"), std::string::npos) << early.output;
 }
 
 TEST(Results, KilledWithSeveralRunsInProgressResumesBitIdentical) {

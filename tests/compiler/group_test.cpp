@@ -309,6 +309,53 @@ TEST(Groups, RolesTheGroupOrTheControllersCannotHaveAreLocatedErrors) {
   EXPECT_NE(out.find("g.esc:7:3: error: `t` is a tree: roles are networks of fixed topology"), std::string::npos) << out;
 }
 
+// `robot bot x 2, lit x 3`: a group of two bodies, in robot order, sharing their shape and
+// sensors; resolved as `bodies` and each further body's settings that differ; `--set
+// robot.KEY` changes every body, `--set robots` is refused.
+TEST(Groups, AGroupOfSeveralBodiesListsThemInRobotOrder) {
+  const std::string lit = "robot lit = bot { emission 1  max_speed 5cm/s }\n";
+  eval::ExperimentSpec x = first_experiment(lit + script("robot bot x 2, lit x 3"), "g.esc");
+  EXPECT_EQ(x.robots, 5);
+  ASSERT_EQ(x.bodies.size(), 2U);
+  const std::vector<sim::RobotParams> every = x.robot_params();
+  ASSERT_EQ(every.size(), 5U);
+  EXPECT_EQ(every[1].emission.intensity, 0.0);
+  EXPECT_EQ(every[2].emission.intensity, 1.0);
+  EXPECT_DOUBLE_EQ(every[4].motor.max_speed_mps, 0.05);
+  EXPECT_EQ(x.resolved_settings.at("bodies"), "bot x 2, lit x 3");
+  EXPECT_EQ(x.resolved_settings.at("body2.emission"), "1");
+  EXPECT_FALSE(x.resolved_settings.contains("body2.ir_range")) << "only what differs from the first body";
+  EXPECT_FALSE(first_experiment(script("robot bot x 3"), "g.esc").resolved_settings.contains("bodies"));
+  EXPECT_EQ(first_experiment(lit + script("robot bot, lit"), "g.esc").robots, 2);
+  EXPECT_NE(apply_setting(x, "robots", "4").find("several bodies"), std::string::npos);
+  EXPECT_EQ(apply_setting(x, "robot.ir_noise", "0.1"), "");
+  EXPECT_DOUBLE_EQ(x.robot_params()[4].ir.noise_sd, 0.1);
+  EXPECT_DOUBLE_EQ(x.robot_params()[0].ir.noise_sd, 0.1);
+  // Two bodies alike are the group of one body, to the bit.
+  const std::string same = "robot twin = bot { }\n";
+  EXPECT_EQ(evaluate(first_experiment(same + script("robot bot x 2, twin x 2"), "g.esc")).fitness,
+            evaluate(first_experiment(script("robot bot x 4"), "g.esc")).fitness);
+  // And the lit body's light reaches the others' light sensors.
+  const std::string reads_light = "step: 0  epoch: light[2]";
+  EXPECT_GT(evaluate(first_experiment(lit + script("robot bot x 2, lit x 2", reads_light), "g.esc")).fitness,
+            evaluate(first_experiment(lit + script("robot bot x 4", reads_light), "g.esc")).fitness);
+}
+
+TEST(Groups, BodiesOfAnotherShapeOrTooManyRobotsAreLocatedErrors) {
+  std::string out = refusal("robot big = bot { body_radius 4cm }\n" + script("robot bot x 2, big"), "g.esc");
+  EXPECT_NE(out.find("g.esc:6:83: error: `big` has another `body_radius` than `bot` (0.04 m against 0.0275 m)"),
+            std::string::npos)
+      << out;
+  out = refusal("robot e = bot { ir_name prox }\n" + script("robot bot, e"), "g.esc");
+  EXPECT_NE(out.find("`e` has another `ir_name` than `bot`"), std::string::npos) << out;
+  out = refusal(script("robot bot x 200, bot x 100"), "g.esc");
+  EXPECT_NE(out.find("the group's bodies add up to 300 robots, and a group holds at most 256"), std::string::npos) << out;
+  out = refusal(script("robot bot x 2, bot x 0"), "g.esc");
+  EXPECT_NE(out.find("g.esc:5:"), std::string::npos) << out;
+  out = refusal(script("robot bot x 2, nobody"), "g.esc");
+  EXPECT_NE(out.find("nobody"), std::string::npos) << out;
+}
+
 TEST(Groups, AGroupMustFitTheArenasFloor) {
   // 104 Kheperas-sized discs (with the starts' 5 mm) cover 54% of an 80 cm arena.
   const std::string text = "robot bot { inertia on }\n"

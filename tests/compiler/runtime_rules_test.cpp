@@ -225,6 +225,9 @@ const std::vector<Row>& rows() {
        "2:19", "ground sensor 0 lies 3cm outside the body's outline"},
       {Rule::OutlineWithoutWheels, "robot r { drive acceleration  body_outline [(-1cm, -1cm), (1cm, 0cm), (-1cm, 1cm)] }",
        "1:44", "an outline needs the differential drive: the acceleration drive moves a disc"},
+      {Rule::EmissionIntensity, "robot r { emission -0.5 }", "1:20", "`emission` must be at least 0, found -0.5"},
+      {Rule::EmissionHeight, "robot r { emission 1  emission_height -1cm }", "1:39",
+       "`emission_height` must be at least 0, found -1cm"},
   };
   return table;
 }

@@ -77,6 +77,10 @@ def test_a_genome_holds_every_roles_weights():
     clonal = esc.evaluate(esc.compile(GROUPS, SETTINGS), "dispersion", "cc", weights[:1], seed=9)
     assert esc.evaluate(script, "dispersion", "cc", np.tile(weights[0], 5)[None], seed=9)[0] == clonal[0]
     assert esc.evaluate(script, "dispersion", "cc", weights.reshape(1, -1), seed=9)[0] != clonal[0]
+    # Settings apply together, as `esc run --set` applies them: six roles of six robots is one change.
+    assert esc.compile(GROUPS, {"roles": 6, "robots": 6}).controller("dispersion", "cc").roles == 6
+    with pytest.raises(esc.Error, match="7 roles need at least 7 robots, and the group has 6"):
+        esc.compile(GROUPS, {"roles": 7, "robots": 6})
 
 
 def test_rewards_are_each_robots_step_term_and_errors_name_the_agent():

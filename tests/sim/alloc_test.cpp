@@ -120,9 +120,13 @@ TEST(SimAlloc, StepAndReadingsDoNotAllocate) {
 TEST(SimAlloc, ACrowdsStepsAndReadingsDoNotAllocate) {
   for (const std::size_t n : {2U, 5U, 20U, 50U, 256U}) {
     const double side = 0.15 * std::sqrt(static_cast<double>(n));
-    World world(test::empty_arena(side, side), std::vector<RobotParams>(n, RobotParams{}));
+    // Every eighth robot gives off light, which the others read as a light where it is.
+    std::vector<RobotParams> robots(n);
+    for (std::size_t i = 0; i < n; i += 8) robots[i].emission = {0.5, 0.01};
+    World world(test::empty_arena(side, side), robots);
     std::vector<DriveCommand> commands(n);
     std::array<double, kIrSensors> ir{};
+    std::array<double, kLightSensors> light{};
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       Rng rng(seed);
       const long before = g_allocations.load();
@@ -130,6 +134,7 @@ TEST(SimAlloc, ACrowdsStepsAndReadingsDoNotAllocate) {
       for (int step = 0; step < 400; ++step) {
         for (std::size_t i = 0; i < n; ++i) {
           world.read_ir(ir, rng, i);
+          world.read_light(light, rng, i);
           const double phase = 0.05 * step + static_cast<double>(i);
           commands[i] = {std::sin(phase), std::cos(1.3 * phase)};
         }

@@ -119,6 +119,34 @@ TEST(SimGroup, IrSeesAnotherRobotAsACylinderOfItsRadius) {
   }
 }
 
+// A robot's emission is read by the others' light sensors exactly as an arena's light of its
+// intensity and height where the robot stands; not by the robot itself.
+TEST(SimGroup, ARobotsEmissionIsReadAsAnArenaLightWhereItIs) {
+  RobotParams dark = test::robot_with_inertia(false);
+  RobotParams lit = dark;
+  lit.emission = {0.8, 0.02};
+  for (const double bearing : {0.0, 40 * kDeg, -100 * kDeg, 180 * kDeg}) {
+    const Pose p0{0.5, 0.5, 0.3};
+    const double d = 0.12;
+    const Vec2 q{p0.x_m + d * std::cos(p0.heading_rad + bearing), p0.y_m + d * std::sin(p0.heading_rad + bearing)};
+    World pair(test::empty_arena(1.0, 1.0), std::vector<RobotParams>{dark, lit});
+    const std::array<Pose, 2> starts = {p0, Pose{q.x, q.y, 1.0}};
+    pair.reset(starts);
+    ArenaSpec with_light = test::empty_arena(1.0, 1.0);
+    with_light.lights.push_back({q, 0.02, 0.8, -1});
+    World alone(with_light, dark);
+    alone.reset(p0);
+    std::array<double, kLightSensors> seen{}, expected{}, own{};
+    Rng r1(1), r2(1);
+    pair.read_light(seen, r1);
+    alone.read_light(expected, r2);
+    EXPECT_EQ(seen, expected) << "bearing " << bearing;
+    EXPECT_GT(*std::max_element(seen.begin(), seen.end()), 0.05) << "bearing " << bearing;
+    pair.read_light(own, r1, 1);
+    EXPECT_EQ(*std::max_element(own.begin(), own.end()), 0.0) << "a robot does not read its own light";
+  }
+}
+
 TEST(SimGroup, RangefindersMeetOtherNavigatorsAndNavigatorsDoNotOverlap) {
   const RobotParams nav = navigator();
   World pair(test::empty_arena(2.0, 2.0), std::vector<RobotParams>(2, nav));
