@@ -120,11 +120,13 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
           robot = *declared;
           robot_name = item.refs[0].text;
           // The inline settings and the runtime's rules for the robot they make.
-          if (!parts_.robots.apply(*robot, item.settings) || !parts_.robots.check(*robot, item.refs[0].where))
-            ok = false;
+          const bool first_ok =
+              parts_.robots.apply(*robot, item.settings) && parts_.robots.check(*robot, item.refs[0].where);
+          if (!first_ok) ok = false;
           x.robot = robot->params;
           if (!item.numbers.empty()) setting("robots", item.numbers[0]);
-          if (!item.members.empty() && !lower_bodies(item, robot->params, x)) ok = false;
+          // Further bodies are compared with the first: not with one its errors left half set.
+          if (first_ok && !item.members.empty() && !lower_bodies(item, robot->params, x)) ok = false;
         } else {
           ok = false;
         }
@@ -306,12 +308,17 @@ bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::Robot
     }
     if (const std::string key = shape_difference(first, body.params); !key.empty()) {
       const RobotSetting& s = *find_robot_setting(key);
-      sink_.error(m.ref.where, fmt::format("`{}` has another `{}` than `{}` ({} against {}): the bodies of a group share "
-                                           "their shape, sensors and step",
-                                           m.ref.text, key, item.refs[0].text, robot_value_text(s, body.params),
-                                           robot_value_text(s, first)))
-          .help.push_back(fmt::format("declare it from `{}` (`robot {} = {} {{ ... }}`) and change only what else differs",
-                                      item.refs[0].text, m.ref.text, item.refs[0].text));
+      Diagnostic& d = sink_.error(m.ref.where, fmt::format("`{}` has another `{}` than `{}` ({} against {}): the bodies "
+                                                           "of a group share their shape, sensors and step",
+                                                           m.ref.text, key, item.refs[0].text,
+                                                           robot_value_text(s, body.params), robot_value_text(s, first)));
+      if (const auto set = body.written.find(s.name); set != body.written.end())
+        d.notes.emplace_back(set->second.where, fmt::format("`{}`'s `{}` is set here", m.ref.text, key));
+      const bool derived = rd != nullptr && rd->base && rd->base->text == item.refs[0].text;
+      d.help.push_back(derived ? fmt::format("give both bodies the same `{}`", key)
+                               : fmt::format("declare it from `{}` (`robot {} = {} {{ ... }}`) and change only what "
+                                             "else differs",
+                                             item.refs[0].text, m.ref.text, item.refs[0].text));
       ok = false;
       continue;
     }

@@ -338,7 +338,8 @@ bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotPar
 std::string shape_difference(const sim::RobotParams& a, const sim::RobotParams& b) {
   static constexpr std::string_view kShared[] = {"drive",      "body_radius",    "body_outline", "control_step",
                                                  "substeps",   "ir_sensors",     "ir_name",      "rangefinders",
-                                                 "radars",     "ground_sensors", "ground_name",  "bumpers"};
+                                                 "radars",     "ground_sensors", "ground_name",  "bumpers",
+                                                 "rangefinder_range"};
   for (const std::string_view key : kShared) {
     const RobotSetting& s = *find_robot_setting(key);
     if (robot_value_text(s, a) != robot_value_text(s, b)) return std::string(key);

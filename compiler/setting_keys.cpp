@@ -1,6 +1,7 @@
 #include "compiler/setting_keys.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 
@@ -167,10 +168,19 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
           .help.push_back(fmt::format("declare `robot r = khepera {{ {} ... }}` and use it", *name));
       return false;
     }
-    // Every body of a group alike: a shape changed so stays shared.
+    // Every body of a group alike: a shape changed so stays shared. A body the value does not
+    // suit is named.
     if (!apply_robot_value(*s, value, spec.robot, sink)) return false;
-    for (eval::ExperimentSpec::GroupBody& b : spec.bodies) (void)apply_robot_value(*s, value, b.params, sink);
-    return true;
+    bool ok = true;
+    for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+      Sink body;
+      if (apply_robot_value(*s, value, spec.bodies[i].params, body)) continue;
+      ok = false;
+      for (Diagnostic& d : body.items())
+        sink.error(d.where, fmt::format("body {} of the group (`{}`): {}", i + 1, spec.bodies[i].name, d.message)).help =
+            std::move(d.help);
+    }
+    return ok;
   }
   if (const auto name = in_group(k, kArenaGroup)) {
     const ArenaSetting* s = find_arena_setting(*name);
@@ -205,10 +215,13 @@ void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   if (spec.roles > spec.robots) {
     sink.error(where, fmt::format("{} roles need at least {} robots, and the group has {}", spec.roles, spec.roles,
                                   spec.robots))
-        .help.push_back(spec.robots == 1 ? std::string("a robot alone has one role: make a group (`robot NAME x N`)")
-                                         : fmt::format("use at most `roles {}`, or more robots (`robot NAME x {}`, "
-                                                       "`--set robots={}`)",
-                                                       spec.robots, spec.roles, spec.roles));
+        .help.push_back(spec.robots == 1     ? std::string("a robot alone has one role: make a group (`robot NAME x N`)")
+                        : spec.bodies.size() > 1 ? fmt::format("use at most `roles {}`, or give the `robot` item's bodies "
+                                                               "more robots",
+                                                               spec.robots)
+                                                 : fmt::format("use at most `roles {}`, or more robots (`robot NAME x {}`, "
+                                                               "`--set robots={}`)",
+                                                               spec.robots, spec.roles, spec.roles));
     return;
   }
   // A role is a slice of one vector genome: a tree or a NEAT graph has no fixed length to
@@ -279,7 +292,11 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   // A group's further bodies, each as the first (`--set robot.KEY` changes them all alike).
   for (std::size_t i = 1; i < spec.bodies.size() && robot.empty(); ++i) {
     robot = sim::robot_problems(spec.bodies[i].params);
+    const std::size_t before = sink.items().size();
     report(sink, robot, {&spec.arena, spec.arena_name, &spec.bodies[i].params}, where);
+    for (std::size_t k = before; k < sink.items().size(); ++k)
+      sink.items()[k].message = fmt::format("body {} of the group (`{}`): {}", i + 1, spec.bodies[i].name,
+                                            sink.items()[k].message);
   }
   const auto arena = sim::arena_problems(spec.arena);
   report(sink, arena, context, where);
@@ -297,7 +314,10 @@ namespace {
 // first's are `robot.KEY`). Only for several bodies, so that every other run keeps its settings.
 void resolve_bodies(eval::ExperimentSpec& spec) {
   auto& r = spec.resolved_settings;
-  std::erase_if(r, [](const auto& kv) { return kv.first == "bodies" || kv.first.starts_with("body"); });
+  std::erase_if(r, [](const auto& kv) {
+    const std::string& k = kv.first;
+    return k == "bodies" || (k.starts_with("body") && k.size() > 4 && std::isdigit(static_cast<unsigned char>(k[4])));
+  });
   if (spec.bodies.size() <= 1) return;
   std::string listed;
   for (const eval::ExperimentSpec::GroupBody& b : spec.bodies)

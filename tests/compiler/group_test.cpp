@@ -354,6 +354,18 @@ TEST(Groups, BodiesOfAnotherShapeOrTooManyRobotsAreLocatedErrors) {
   EXPECT_NE(out.find("g.esc:5:"), std::string::npos) << out;
   out = refusal(script("robot bot x 2, nobody"), "g.esc");
   EXPECT_NE(out.find("nobody"), std::string::npos) << out;
+  // A mistake in the first body is that mistake alone, not also a difference of shape.
+  out = refusal("robot lit = bot { }\n" + script("robot bot { body_radius 4cm  ir_rangex 1cm }, lit"), "g.esc");
+  EXPECT_NE(out.find("ir_rangex"), std::string::npos) << out;
+  EXPECT_EQ(out.find("another `body_radius`"), std::string::npos) << out;
+  // A body derived from the first is told to match it, and where it differs.
+  out = refusal("robot lit = bot { body_radius 3cm }\n" + script("robot bot, lit"), "g.esc");
+  EXPECT_NE(out.find("note: `lit`'s `body_radius` is set here"), std::string::npos) << out;
+  EXPECT_NE(out.find("help: give both bodies the same `body_radius`"), std::string::npos) << out;
+  // --set robot.KEY that breaks a further body's rules names that body.
+  eval::ExperimentSpec x = first_experiment("robot lit = bot { ir_curve_x0 -1.5cm }\n" + script("robot bot, lit"), "g.esc");
+  EXPECT_NE(apply_setting(x, "robot.ir_curve_c", "1cm2").find("body 2 of the group (`lit`)"), std::string::npos)
+      << apply_setting(x, "robot.ir_curve_c", "1cm2");
 }
 
 TEST(Groups, AGroupMustFitTheArenasFloor) {

@@ -510,8 +510,10 @@
     const navigation = [];
     if (rangeCount > 0) navigation.push(el('h3', {text: 'Rangefinders (distance / range, by angle from the heading)'}), ranges.box);
     if (radarCount > 0) navigation.push(el('h3', {text: 'Goal radars (by slice centre, counter-clockwise from ahead)'}), radars.box);
-    // Light sensors read 0 in an arena without lights: their bars only where there are some.
-    const lit = (exp.arena.lights || []).length > 0 ? [el('h3', {text: 'Light sensors'}), lights.box] : [];
+    // Light sensors read 0 in an arena without lights: their bars only where there are some, or
+    // where a robot gives off light (`emission`, a further body's `bodyK.emission`).
+    const emitting = Object.entries(settings).some(([k, v]) => /^(robot|body\d+)\.emission$/.test(k) && parseFloat(v) > 0);
+    const lit = (exp.arena.lights || []).length > 0 || emitting ? [el('h3', {text: 'Light sensors'}), lights.box] : [];
     card.appendChild(el('div', {class: 'replay'}, [el('div', {}, [canvas, legend]), el('div', {}, [
       el('div', {}, [el('span', {text: 'acting: '}), action]), ...navigation, el('h3', {text: 'IR sensors'}), irs.box,
       ...lit, el('h3', {text: 'Accumulator'}), accumulator.box, el('h3', {text: 'State'}), readout])]));
