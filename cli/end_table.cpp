@@ -134,9 +134,14 @@ report::StudyTable study_table_of(const std::vector<ConditionResult>& conditions
 }  // namespace
 
 void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& result) {
-  fmt::print("\n{}: {} run{} x {}, {} epoch{} x {} steps, seed {}\n", spec.name, spec.runs,
+  // A group says its size and roles: the genes below are every role's.
+  const std::string group =
+      spec.robots == 1 ? std::string()
+                       : fmt::format(", {} robots{}", spec.robots,
+                                     spec.roles > 1 ? fmt::format(" in {} roles", spec.roles) : std::string());
+  fmt::print("\n{}: {} run{} x {}, {} epoch{} x {} steps{}, seed {}\n", spec.name, spec.runs,
              spec.runs == 1 ? "" : "s", app::generations_text(spec), spec.epochs, spec.epochs == 1 ? "" : "s",
-             spec.steps, spec.seed);
+             spec.steps, group, spec.seed);
   fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
              "best fitness mean ± sd", "median", "best run");
   std::vector<std::vector<double>> finals;

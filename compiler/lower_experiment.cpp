@@ -259,6 +259,9 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     (void)parts_.arenas.check_placement(*arena_decl, *arena, x.robot, use);
     const auto where = [&](K kind) { return first.contains(kind) ? &first[kind]->where : nullptr; };
     check_group(x, use, sink_, {.formation = where(K::Formation), .roles = where(K::Roles)});
+    if (x.robots == 1 && x.robot.emission.intensity > 0.0)
+      sink_.warning(use, "a robot alone does not read its own light: `emission` has no effect without other robots")
+          .help.push_back("make a group (`robot NAME x N`), or remove `emission`");
   }
   if (start_decl != nullptr) check_start_from(*start_decl, first, evolve);
   if (!ok || sink_.errors() != errors) return slot;

@@ -104,6 +104,7 @@ TEST(Results, RolesEvolvedTogetherAreTestedWithAnotherGroupSize) {
   const Outcome run = esc("run " + script + " --experiment two_roles_of_six --cache " + cache.string() + " --out " +
                           six.string());
   ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("2 epochs x 60 steps, 6 robots in 2 roles, seed 4"), std::string::npos) << run.output;
   const nlohmann::json summary = read_json(six / "summary.json");
   EXPECT_EQ(summary["robots"], 6);
   EXPECT_EQ(summary["roles"], 2);

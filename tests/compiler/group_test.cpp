@@ -341,6 +341,18 @@ TEST(Groups, AGroupOfSeveralBodiesListsThemInRobotOrder) {
             evaluate(first_experiment(lit + script("robot bot x 4", reads_light), "g.esc")).fitness);
 }
 
+// A robot's light is for the others: alone, `emission` compiles with a warning saying so.
+TEST(Groups, EmissionWithoutOtherRobotsIsAWarning) {
+  const auto alone = compile_source(script("robot bot { emission 1 }"), "g.esc", options());
+  ASSERT_TRUE(alone.ok()) << rendered(alone);
+  EXPECT_NE(rendered(alone).find("g.esc:5:"), std::string::npos) << rendered(alone);
+  EXPECT_NE(rendered(alone).find("warning: a robot alone does not read its own light"), std::string::npos)
+      << rendered(alone);
+  const auto group = compile_source(script("robot bot { emission 1 } x 2"), "g.esc", options());
+  ASSERT_TRUE(group.ok()) << rendered(group);
+  EXPECT_TRUE(group.diagnostics.empty()) << rendered(group);
+}
+
 TEST(Groups, BodiesOfAnotherShapeOrTooManyRobotsAreLocatedErrors) {
   std::string out = refusal("robot big = bot { body_radius 4cm }\n" + script("robot bot x 2, big"), "g.esc");
   EXPECT_NE(out.find("g.esc:6:83: error: `big` has another `body_radius` than `bot` (0.04 m against 0.0275 m)"),
