@@ -63,9 +63,9 @@ inline constexpr RenamableSensors kRenamableSensors[] = {
 
 // The first setting of a body's shape, sensors or stepping (body_radius, body_outline, the
 // sensors and their names, the rangefinders' range, drive, control_step, substeps) in which `a`
-// and `b` differ; empty
-// when none. The bodies of one group share these: one controller reads every robot's sensors
-// by the same names, the replay draws every robot from one shape, one Bullet step moves them.
+// and `b` differ; empty when none. The bodies of one group share these: one controller reads
+// every robot's sensors by the same names, the replay draws every robot from one shape, one
+// Bullet step moves them.
 [[nodiscard]] std::string shape_difference(const sim::RobotParams& a, const sim::RobotParams& b);
 
 }  // namespace esc::compiler

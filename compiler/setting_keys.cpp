@@ -101,6 +101,11 @@ std::string trimmed(std::string_view t) {
   return std::string(t);
 }
 
+// "body 2 of the group (`lit`): ", before a message about body i of a group of several.
+std::string body_label(const eval::ExperimentSpec& spec, std::size_t i) {
+  return fmt::format("body {} of the group (`{}`): ", i + 1, spec.bodies[i].name);
+}
+
 }  // namespace
 
 std::vector<std::string> setting_keys() {
@@ -177,8 +182,7 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
       if (apply_robot_value(*s, value, spec.bodies[i].params, body)) continue;
       ok = false;
       for (Diagnostic& d : body.items())
-        sink.error(d.where, fmt::format("body {} of the group (`{}`): {}", i + 1, spec.bodies[i].name, d.message)).help =
-            std::move(d.help);
+        sink.error(d.where, body_label(spec, i) + d.message).help = std::move(d.help);
     }
     return ok;
   }
@@ -241,11 +245,9 @@ void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
 void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, GroupItems items) {
   check_roles(spec, items.roles != nullptr ? *items.roles : where, sink);
   const SourceRange* formation = items.formation;
-  const std::vector<sim::RobotParams> bodies = spec.robot_params();
-  double radius = 0.0;
-  for (const sim::RobotParams& b : bodies) radius = std::max(radius, b.body_radius_m);
+  // A group's bodies share their radius (compiler::shape_difference): the first's is every robot's.
   if (const std::string why = sim::formation_problem(spec.formation, static_cast<std::size_t>(spec.robots), spec.arena,
-                                                     radius, sim::kStartMargin_m);
+                                                     spec.robot.body_radius_m, sim::kStartMargin_m);
       !why.empty()) {
     sink.error(formation != nullptr ? *formation : where, fmt::format("the group's `formation {}` cannot be taken in arena `{}`: {}",
                                   formation_words()[static_cast<std::size_t>(spec.formation.kind)], spec.arena_name, why))
@@ -263,10 +265,8 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   double floor_m2 = a.width_m * a.height_m;
   for (const sim::BoxObstacle& b : a.boxes) floor_m2 -= b.size_m.x * b.size_m.y;
   for (const sim::CylinderObstacle& c : a.cylinders) floor_m2 -= std::numbers::pi * c.radius_m * c.radius_m;
-  double discs_m2 = 0.0;
-  for (const sim::RobotParams& b : bodies)
-    discs_m2 += std::numbers::pi * (b.body_radius_m + sim::kStartMargin_m) * (b.body_radius_m + sim::kStartMargin_m);
-  const double cover = discs_m2 / std::max(floor_m2, 1e-12);
+  const double disc = spec.robot.body_radius_m + sim::kStartMargin_m;
+  const double cover = spec.robots * std::numbers::pi * disc * disc / std::max(floor_m2, 1e-12);
   if (cover > kMaxCover && spec.formation.kind == sim::FormationKind::Random) {
     sink.error(where, fmt::format("{} robots of radius {:g} cm would cover {:.0f}% of the arena's free floor; random "
                                   "starts place them at most {:.0f}% of it",
@@ -295,8 +295,7 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
     const std::size_t before = sink.items().size();
     report(sink, robot, {&spec.arena, spec.arena_name, &spec.bodies[i].params}, where);
     for (std::size_t k = before; k < sink.items().size(); ++k)
-      sink.items()[k].message = fmt::format("body {} of the group (`{}`): {}", i + 1, spec.bodies[i].name,
-                                            sink.items()[k].message);
+      sink.items()[k].message = body_label(spec, i) + sink.items()[k].message;
   }
   const auto arena = sim::arena_problems(spec.arena);
   report(sink, arena, context, where);

@@ -110,21 +110,17 @@ class ParallelEnv(_Episodes):
         recurrent state, started afresh with every episode), as Env.policy makes one. With
         `roles N`, `genome` holds N networks' weights, one after the other (as esc evolves and
         stores them), and robot_i's network is role (i - 1) mod N's."""
-        roles = self._roles()
+        c = self._script.controller(self.experiment, self.controller) if self.controller is not None else None
+        roles = c.roles if c is not None else 1   # without a controller, policy() says what is missing
         if roles == 1:
             return {a: self.policy(genome) for a in self.possible_agents}
         weights = arguments.finite("genome", genome)
-        size = self._script.controller(self.experiment, self.controller).genome_size
+        size = c.genome_size
         if weights.ndim != 1 or weights.size != size:
             raise ValueError(f"a genome of `{self.controller}` in experiment `{self.experiment}` holds its {roles} "
                              f"roles' weights, {size} in all; got shape {weights.shape}")
         parts = np.split(weights, roles)
         return {a: self.policy(parts[i % roles]) for i, a in enumerate(self.possible_agents)}
-
-    def _roles(self) -> int:
-        if self.controller is None:
-            return 1   # policy() says what is missing
-        return self._script.controller(self.experiment, self.controller).roles
 
     def render(self) -> None:
         """No rendering: `esc replay` draws a group's evaluation."""
