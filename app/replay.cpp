@@ -294,8 +294,7 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                epochs_text(epochs, spec.epochs), spec.arena_name,
                                spec.robots > 1 ? fmt::format(", {} robots", spec.robots) : std::string(), s.seed);
   frame.arena = spec.arena;
-  frame.robot_radius_m = spec.robot.body_radius_m;
-  frame.robot_outline_m = spec.robot.outline;
+  for (const sim::RobotParams& r : spec.robot_params()) frame.bodies.push_back({r.body_radius_m, r.outline});
   frame.choices = controller->choice_names();
   write_atomically(out / (stem + ".svg"), report::trajectory_svg(done.figure()));
   write_atomically(out / (stem + ".csv"),

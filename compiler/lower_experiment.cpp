@@ -309,19 +309,24 @@ bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::Robot
       ok = false;
       continue;
     }
-    if (const std::string key = shape_difference(first, body.params); !key.empty()) {
-      const RobotSetting& s = *find_robot_setting(key);
-      Diagnostic& d = sink_.error(m.ref.where, fmt::format("`{}` has another `{}` than `{}` ({} against {}): the bodies "
-                                                           "of a group share their shape, sensors and step",
-                                                           m.ref.text, key, item.refs[0].text,
-                                                           robot_value_text(s, body.params), robot_value_text(s, first)));
+    if (const auto differ = group_difference(first, body.params)) {
+      const RobotSetting& s = *find_robot_setting(differ->key);
+      Diagnostic& d = sink_.error(
+          m.ref.where, fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share the sensors "
+                                   "their controller reads, their drive and their control step",
+                                   m.ref.text, differ->counted ? "another number of" : "another", differ->key,
+                                   item.refs[0].text, differ->other, differ->first));
       if (const auto set = body.written.find(s.name); set != body.written.end())
-        d.notes.emplace_back(set->second.where, fmt::format("`{}`'s `{}` is set here", m.ref.text, key));
-      const bool derived = rd != nullptr && rd->base && rd->base->text == item.refs[0].text;
-      d.help.push_back(derived ? fmt::format("give both bodies the same `{}`", key)
-                               : fmt::format("declare it from `{}` (`robot {} = {} {{ ... }}`) and change only what "
-                                             "else differs",
-                                             item.refs[0].text, m.ref.text, item.refs[0].text));
+        d.notes.emplace_back(set->second.where, fmt::format("`{}`'s `{}` is set here", m.ref.text, differ->key));
+      d.help.push_back(
+          differ->counted
+              ? std::string("bodies that read other sensors need a controller each, which is not built yet "
+                            "(docs/groups.md); compare them in experiments of their own")
+          : differ->key.ends_with("_name")
+              ? fmt::format("name its sensors as `{}` does, in the group's list: `{} {{ {} {} }}`", item.refs[0].text,
+                            m.ref.text, differ->key, differ->first)
+              : fmt::format("give both bodies the same `{}`, in a declaration or in the group's list (`{} {{ {} ... }}`)",
+                            differ->key, m.ref.text, differ->key));
       ok = false;
       continue;
     }

@@ -335,16 +335,33 @@ bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotPar
   return n.has_value();
 }
 
-std::string shape_difference(const sim::RobotParams& a, const sim::RobotParams& b) {
-  static constexpr std::string_view kShared[] = {"drive",      "body_radius",    "body_outline", "control_step",
-                                                 "substeps",   "ir_sensors",     "ir_name",      "rangefinders",
-                                                 "radars",     "ground_sensors", "ground_name",  "bumpers",
-                                                 "rangefinder_range"};
-  for (const std::string_view key : kShared) {
+std::optional<BodyDifference> group_difference(const sim::RobotParams& first, const sim::RobotParams& other) {
+  // What the controller reads first: a difference there has no remedy but another body.
+  using Count = std::size_t (*)(const sim::RobotParams&);
+  static constexpr std::pair<std::string_view, Count> kCounted[] = {
+      {"ir_sensors", [](const sim::RobotParams& p) { return p.ir.mounts.size(); }},
+      {"ground_sensors", [](const sim::RobotParams& p) { return p.ground.mounts.size(); }},
+      {"rangefinders", [](const sim::RobotParams& p) { return p.rangefinders.angles_rad.size(); }},
+      {"bumpers", [](const sim::RobotParams& p) { return p.bumpers.size(); }},
+      {"radars", [](const sim::RobotParams& p) { return static_cast<std::size_t>(p.radars); }},
+  };
+  for (const auto& [key, count] : kCounted)
+    if (count(first) != count(other))
+      return BodyDifference{std::string(key), true, fmt::format("{}", count(first)), fmt::format("{}", count(other))};
+  const auto differ = [&](std::string_view key) -> std::optional<BodyDifference> {
     const RobotSetting& s = *find_robot_setting(key);
-    if (robot_value_text(s, a) != robot_value_text(s, b)) return std::string(key);
-  }
-  return {};
+    std::string a = robot_value_text(s, first), b = robot_value_text(s, other);
+    if (a == b) return std::nullopt;
+    return BodyDifference{std::string(key), false, std::move(a), std::move(b)};
+  };
+  // A name matters only for sensors the bodies have.
+  if (!first.ir.mounts.empty())
+    if (auto d = differ("ir_name")) return d;
+  if (!first.ground.mounts.empty())
+    if (auto d = differ("ground_name")) return d;
+  for (const std::string_view key : {"drive", "control_step", "substeps"})
+    if (auto d = differ(key)) return d;
+  return std::nullopt;
 }
 
 std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p) {

@@ -61,11 +61,17 @@ inline constexpr RenamableSensors kRenamableSensors[] = {
 // setting's current value, for resolved settings.
 [[nodiscard]] std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p);
 
-// The first setting of a body's shape, sensors or stepping (body_radius, body_outline, the
-// sensors and their names, the rangefinders' range, drive, control_step, substeps) in which `a`
-// and `b` differ; empty when none. The bodies of one group share these: one controller reads
-// every robot's sensors by the same names, the replay draws every robot from one shape, one
-// Bullet step moves them.
-[[nodiscard]] std::string shape_difference(const sim::RobotParams& a, const sim::RobotParams& b);
+// How a group's further body differs from its first where the bodies of one group must agree,
+// in this order: the sensors one controller reads (the number of each kind, then the IR and
+// ground sensors' names where there are some), the drive, the control step and the substeps. Where each sensor sits, the body's
+// radius and outline, speeds, ranges, curves and noise may differ: every robot is stepped and
+// sensed with its own body, and the replay draws each one's shape.
+struct BodyDifference {
+  std::string key;             // the robot setting
+  bool counted = false;        // the number of sensors `key` lists differs, not its text
+  std::string first, other;    // the two values, as a message gives them
+};
+[[nodiscard]] std::optional<BodyDifference> group_difference(const sim::RobotParams& first,
+                                                             const sim::RobotParams& other);
 
 }  // namespace esc::compiler

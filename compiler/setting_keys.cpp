@@ -106,6 +106,19 @@ std::string body_label(const eval::ExperimentSpec& spec, std::size_t i) {
   return fmt::format("body {} of the group (`{}`): ", i + 1, spec.bodies[i].name);
 }
 
+// Body i's problems (0: the first body, `robot`), reported as the first's are, a further
+// body's named; true when there are none.
+bool report_body(const eval::ExperimentSpec& spec, std::size_t i, const std::vector<sim::Problem>& problems,
+                 const SourceRange& where, Sink& sink) {
+  const sim::RobotParams& body = i == 0 ? spec.robot : spec.bodies[i].params;
+  const std::size_t before = sink.items().size();
+  report(sink, problems, {&spec.arena, spec.arena_name, &body}, where);
+  if (i > 0)
+    for (std::size_t k = before; k < sink.items().size(); ++k)
+      sink.items()[k].message = body_label(spec, i) + sink.items()[k].message;
+  return problems.empty();
+}
+
 }  // namespace
 
 std::vector<std::string> setting_keys() {
@@ -173,8 +186,8 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
           .help.push_back(fmt::format("declare `robot r = khepera {{ {} ... }}` and use it", *name));
       return false;
     }
-    // Every body of a group alike: a shape changed so stays shared. A body the value does not
-    // suit is named.
+    // Every body of a group alike (a study's `robot.time_constant` is the robots'): bodies of
+    // other shapes take the one value too. A body the value does not suit is named.
     if (!apply_robot_value(*s, value, spec.robot, sink)) return false;
     bool ok = true;
     for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
@@ -245,9 +258,9 @@ void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
 void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink, GroupItems items) {
   check_roles(spec, items.roles != nullptr ? *items.roles : where, sink);
   const SourceRange* formation = items.formation;
-  // A group's bodies share their radius (compiler::shape_difference): the first's is every robot's.
-  if (const std::string why = sim::formation_problem(spec.formation, static_cast<std::size_t>(spec.robots), spec.arena,
-                                                     spec.robot.body_radius_m, sim::kStartMargin_m);
+  std::vector<double> radii;
+  for (const sim::RobotParams& r : spec.robot_params()) radii.push_back(r.body_radius_m);
+  if (const std::string why = sim::formation_problem(spec.formation, spec.arena, radii, sim::kStartMargin_m);
       !why.empty()) {
     sink.error(formation != nullptr ? *formation : where, fmt::format("the group's `formation {}` cannot be taken in arena `{}`: {}",
                                   formation_words()[static_cast<std::size_t>(spec.formation.kind)], spec.arena_name, why))
@@ -257,6 +270,11 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
     return;
   }
   if (spec.robots == 1) return;
+  // Only robot 0 takes the arena's start; a further body must fit the arena.
+  sim::ArenaSpec unplaced = spec.arena;
+  unplaced.fixed_start.reset();
+  for (std::size_t i = 1; i < spec.bodies.size(); ++i)
+    if (!report_body(spec, i, sim::placement_problems(unplaced, spec.bodies[i].params), where, sink)) return;
   // Random starts place robot after robot by rejection: past about half the floor they jam, and
   // an epoch would fail to start hours into a run. Refused here instead, with room to spare.
   // A formation places them together, checked above.
@@ -265,12 +283,16 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
   double floor_m2 = a.width_m * a.height_m;
   for (const sim::BoxObstacle& b : a.boxes) floor_m2 -= b.size_m.x * b.size_m.y;
   for (const sim::CylinderObstacle& c : a.cylinders) floor_m2 -= std::numbers::pi * c.radius_m * c.radius_m;
-  const double disc = spec.robot.body_radius_m + sim::kStartMargin_m;
-  const double cover = spec.robots * std::numbers::pi * disc * disc / std::max(floor_m2, 1e-12);
+  double discs_m2 = 0.0;
+  for (const double r : radii) discs_m2 += std::numbers::pi * (r + sim::kStartMargin_m) * (r + sim::kStartMargin_m);
+  const double cover = discs_m2 / std::max(floor_m2, 1e-12);
   if (cover > kMaxCover && spec.formation.kind == sim::FormationKind::Random) {
-    sink.error(where, fmt::format("{} robots of radius {:g} cm would cover {:.0f}% of the arena's free floor; random "
-                                  "starts place them at most {:.0f}% of it",
-                                  spec.robots, spec.robot.body_radius_m * 100, cover * 100, kMaxCover * 100))
+    const auto [small, large] = std::minmax_element(radii.begin(), radii.end());
+    const std::string sizes = *small == *large ? fmt::format("of radius {:g} cm", *small * 100)
+                                               : fmt::format("of radii {:g} to {:g} cm", *small * 100, *large * 100);
+    sink.error(where, fmt::format("{} robots {} would cover {:.0f}% of the arena's free floor; random starts place "
+                                  "them at most {:.0f}% of it",
+                                  spec.robots, sizes, cover * 100, kMaxCover * 100))
         .help.push_back("use fewer robots or a larger arena");
   }
 }
@@ -287,19 +309,14 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   if (std::string m = check_tree_operators(spec); !m.empty()) sink.error(where, m);
   check_algorithm_settings(spec, where, sink);
   const RuleContext context{&spec.arena, spec.arena_name, &spec.robot};
-  auto robot = sim::robot_problems(spec.robot);
-  report(sink, robot, context, where);
-  // A group's further bodies, each as the first (`--set robot.KEY` changes them all alike).
-  for (std::size_t i = 1; i < spec.bodies.size() && robot.empty(); ++i) {
-    robot = sim::robot_problems(spec.bodies[i].params);
-    const std::size_t before = sink.items().size();
-    report(sink, robot, {&spec.arena, spec.arena_name, &spec.bodies[i].params}, where);
-    for (std::size_t k = before; k < sink.items().size(); ++k)
-      sink.items()[k].message = body_label(spec, i) + sink.items()[k].message;
-  }
+  // The first body's problems, then each further body's as the first's (`--set robot.KEY`
+  // changes them all alike), up to the first body that has some. True when none has.
+  bool robot = true;
+  for (std::size_t i = 0; i < std::max<std::size_t>(spec.bodies.size(), 1) && robot; ++i)
+    robot = report_body(spec, i, sim::robot_problems(i == 0 ? spec.robot : spec.bodies[i].params), where, sink);
   const auto arena = sim::arena_problems(spec.arena);
   report(sink, arena, context, where);
-  if (robot.empty() && arena.empty()) {
+  if (robot && arena.empty()) {
     report(sink, sim::placement_problems(spec.arena, spec.robot), context, where);
     check_navigation(spec, where, sink);
   }

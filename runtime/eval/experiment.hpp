@@ -214,8 +214,9 @@ struct ExperimentSpec {
   int robots = 1;   // at most kMaxRobots
   // A group of several bodies (`robot khepera x 2, lit_khepera x 3`): each body and its robots,
   // in robot order (robots 0 and 1 the first body's, ...), `robot` the first body, the counts
-  // adding up to `robots`. Empty: every robot has `robot`'s body. The bodies share their shape
-  // and sensors (the compiler checks it), and differ in anything else.
+  // adding up to `robots`. Empty: every robot has `robot`'s body. The bodies share what one
+  // controller reads, their drive and their step (compiler::group_difference checks it), and
+  // may differ in anything else, their shapes included.
   struct GroupBody {
     std::string name;
     sim::RobotParams params;

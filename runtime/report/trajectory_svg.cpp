@@ -152,7 +152,10 @@ std::string dash_of(const TrajectoryFigure& f, int epoch) {
 // with its heading, numbered too; a group's robot filled with its colour).
 void draw_epoch_ends(std::string& svg, const TrajectoryFigure& f, const Frame& at, const eval::TraceStep& first,
                      const eval::TraceStep& last) {
-  const double r_mm = f.robot_radius_m * 1000.0;
+  static const TrajectoryFigure::Body kPoint;
+  const TrajectoryFigure::Body& b =
+      f.bodies.empty() ? kPoint : f.bodies[std::min(static_cast<std::size_t>(last.robot), f.bodies.size() - 1)];
+  const double r_mm = b.radius_m * 1000.0;
   svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="4" fill="#fff" stroke="#1d2330" stroke-width="1.5"/>)~"
                      "\n" R"~(<text x="{:.1f}" y="{:.1f}" font-size="11" fill="#1d2330">{}</text>)~" "\n",
                      at.x(first.pose.x_m), at.y(first.pose.y_m), at.x(first.pose.x_m) + 6.0, at.y(first.pose.y_m) - 6.0,
@@ -162,12 +165,12 @@ void draw_epoch_ends(std::string& svg, const TrajectoryFigure& f, const Frame& a
   const std::string body =
       last.grouped ? fmt::format(R"~(fill="{}" fill-opacity="0.35" stroke="#1d2330" stroke-width="1.5")~", colour_of(f, last))
                    : std::string(R"~(fill="rgba(31,119,180,0.2)" stroke="#1d2330" stroke-width="1.5")~");
-  if (f.robot_outline_m.empty()) {
+  if (b.outline_m.empty()) {
     svg += fmt::format(R"~(<circle cx="{:.1f}" cy="{:.1f}" r="{:.1f}" {}/>)~" "\n", x, y, r_mm, body);
   } else {
     const double c = std::cos(last.pose.heading_rad), s = std::sin(last.pose.heading_rad);
     std::string points;
-    for (const sim::Vec2& v : f.robot_outline_m)
+    for (const sim::Vec2& v : b.outline_m)
       points += fmt::format("{}{:.1f},{:.1f}", points.empty() ? "" : " ", at.x(last.pose.x_m + c * v.x - s * v.y),
                             at.y(last.pose.y_m + s * v.x + c * v.y));
     svg += fmt::format(R"~(<polygon points="{}" {}/>)~" "\n", points, body);

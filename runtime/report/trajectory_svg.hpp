@@ -18,8 +18,13 @@ struct TrajectoryFigure {
   std::string title;                        // above the arena
   std::string subtitle;                     // under the title (fitness, seed, ...)
   sim::ArenaSpec arena;
-  double robot_radius_m = 0.0;
-  std::vector<sim::Vec2> robot_outline_m;   // the body's outline (sim::RobotParams::outline); empty: the disc
+  // Robot k's body (sim::RobotParams' body_radius_m and outline; an empty outline: the disc) is
+  // bodies[k], or the last one for the robots beyond it (one for a robot alone, or robots alike).
+  struct Body {
+    double radius_m = 0.0;
+    std::vector<sim::Vec2> outline_m;
+  };
+  std::vector<Body> bodies;
   std::vector<std::string> choices;         // action or behavior names; empty: classical head
   std::span<const eval::TraceStep> steps;   // the epochs drawn, each in step order
 };

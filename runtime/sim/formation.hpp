@@ -35,11 +35,12 @@ struct Formation {
 // for one robot).
 [[nodiscard]] double formation_closest(const Formation& f, std::size_t n) noexcept;
 
-// Why `n` robots of radius `radius_m` cannot take formation `f` in `arena`, each body kept
-// `margin_m` clear of the walls, the obstacles and each other; empty when they can. Line and
-// Circle: a spacing that makes neighbours overlap, or a formation wider than the arena. At:
-// not one pose per robot, a pose whose body is not clear, two bodies overlapping.
-[[nodiscard]] std::string formation_problem(const Formation& f, std::size_t n, const ArenaSpec& arena, double radius_m,
+// Why robots of radii `radii_m` (robot i's, one per robot) cannot take formation `f` in
+// `arena`, each body kept `margin_m` clear of the walls, the obstacles and each other; empty
+// when they can. Line and Circle (every place kept as the largest body is): a spacing that
+// makes neighbours overlap, or a formation wider than the arena. At: not one pose per robot,
+// a pose whose body is not clear, two bodies overlapping.
+[[nodiscard]] std::string formation_problem(const Formation& f, const ArenaSpec& arena, std::span<const double> radii_m,
                                             double margin_m);
 
 }  // namespace esc::sim

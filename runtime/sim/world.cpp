@@ -516,10 +516,9 @@ Pose World::begin_epoch(Rng& rng) {
 }
 
 void World::set_formation(const Formation& formation) {
-  double radius = 0.0;
-  for (const auto& r : impl_->robots) radius = std::max(radius, r->robot.body_radius_m);
-  if (const std::string why = formation_problem(formation, impl_->robots.size(), impl_->arena, radius, kStartMargin_m);
-      !why.empty())
+  std::vector<double> radii;
+  for (const auto& r : impl_->robots) radii.push_back(r->robot.body_radius_m);
+  if (const std::string why = formation_problem(formation, impl_->arena, radii, kStartMargin_m); !why.empty())
     throw std::invalid_argument("the group's formation: " + why);
   impl_->formation = formation;
 }

@@ -294,6 +294,41 @@ TEST(Replay, AGroupIsReplayedWithEveryRobot) {
   EXPECT_NE(dom.output.find("A group of 3 robots"), std::string::npos);
 }
 
+// A group of two bodies (Kheperas' discs and an e-puck's larger one): the replay draws each
+// robot with its own body, and the report's panel names each robot's.
+TEST(Replay, AGroupOfTwoBodiesIsDrawnEachWithItsOwn) {
+  const fs::path dir = scratch("replay-two-bodies");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/two_bodies.esc";
+  const Outcome run = esc_command("run " + script + " --experiment two_bodies --threads 2 --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(read_json(dir / "settings.json")["settings"]["bodies"], "khepera x 2, epuck_ir x 1");
+  EXPECT_EQ(read_json(dir / "settings.json")["settings"]["body2.body_radius"], "0.037 m");
+  const Outcome o = esc_command("replay " + dir.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  std::string svg;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".svg" && entry.path().filename().string().rfind("replay-CC-run-01", 0) == 0)
+      svg = slurp(entry.path());
+  ASSERT_FALSE(svg.empty()) << o.output;
+  const auto count = [&svg](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t i = svg.find(what); i != std::string::npos; i = svg.find(what, i + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count(R"(r="27.5" fill=")"), 2U * 2U) << "the Kheperas at the end of each of 2 epochs";
+  EXPECT_EQ(count(R"(r="37.0" fill=")"), 2U) << "the e-puck at the end of each epoch";
+
+  ASSERT_EQ(esc_command("report " + dir.string()).status, 0);
+  if (std::string(ESC_CHROMIUM).empty())
+    GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
+  const Outcome dom = cli_test::report_dom(dir);
+  ASSERT_EQ(dom.status, 0) << dom.output.substr(0, 2000);
+  EXPECT_NE(dom.output.find("(ready)</title>"), std::string::npos) << dom.output.substr(0, 600);
+  EXPECT_EQ(dom.output.find("class=\"esc-error\""), std::string::npos) << "script error in the page";
+  EXPECT_NE(dom.output.find(">robot 3 (epuck_ir)</option>"), std::string::npos);
+}
+
 TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {
   const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/evolved.esc";
   const fs::path dir = scratch("replay-supervisor");

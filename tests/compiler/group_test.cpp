@@ -309,8 +309,8 @@ TEST(Groups, RolesTheGroupOrTheControllersCannotHaveAreLocatedErrors) {
   EXPECT_NE(out.find("g.esc:7:3: error: `t` is a tree: roles are networks of fixed topology"), std::string::npos) << out;
 }
 
-// `robot bot x 2, lit x 3`: a group of two bodies, in robot order, sharing their shape and
-// sensors; resolved as `bodies` and each further body's settings that differ; `--set
+// `robot bot x 2, lit x 3`: a group of two bodies, in robot order, reading the same sensors;
+// resolved as `bodies` and each further body's settings that differ; `--set
 // robot.KEY` changes every body, `--set robots` is refused.
 TEST(Groups, AGroupOfSeveralBodiesListsThemInRobotOrder) {
   const std::string lit = "robot lit = bot { emission 1  max_speed 5cm/s }\n";
@@ -353,27 +353,62 @@ TEST(Groups, EmissionWithoutOtherRobotsIsAWarning) {
   EXPECT_TRUE(group.diagnostics.empty()) << rendered(group);
 }
 
-TEST(Groups, BodiesOfAnotherShapeOrTooManyRobotsAreLocatedErrors) {
-  std::string out = refusal("robot big = bot { body_radius 4cm }\n" + script("robot bot x 2, big"), "g.esc");
-  EXPECT_NE(out.find("g.esc:6:83: error: `big` has another `body_radius` than `bot` (0.04 m against 0.0275 m)"),
+// Bodies of other shapes join a group (each robot is stepped, sensed and drawn with its own);
+// what one controller reads, the drive and the step are the group's.
+TEST(Groups, BodiesOfOtherShapesJoinAGroupThatReadsTheSameSensors) {
+  const std::string big = "robot big = bot { body_radius 4cm  ir_range 8cm }\n";
+  eval::ExperimentSpec x = first_experiment(big + script("robot bot x 2, big"), "g.esc");
+  ASSERT_EQ(x.robots, 3);
+  EXPECT_DOUBLE_EQ(x.robot_params()[1].body_radius_m, 0.0275);
+  EXPECT_DOUBLE_EQ(x.robot_params()[2].body_radius_m, 0.04);
+  EXPECT_EQ(x.resolved_settings.at("body2.body_radius"), "0.04 m");
+  EXPECT_TRUE(std::isfinite(evaluate(x).fitness));
+  // The largest body decides a formation's spacing; robot i's own radius its place.
+  EXPECT_NE(refusal(big + script("robot bot x 2, big  formation line 7cm"), "g.esc").find("would overlap"),
+            std::string::npos);
+  (void)first_experiment(big + script("robot bot x 2, big  formation line 9cm"), "g.esc");
+  EXPECT_NE(refusal(big + script("robot bot, big  formation at [(20cm, 20cm, 0deg), (26cm, 20cm, 0deg)]"), "g.esc")
+                .find("robots 1 and 2 would start overlapping"),
+            std::string::npos);
+  (void)first_experiment(big + script("robot bot, big  formation at [(20cm, 20cm, 0deg), (27.5cm, 20cm, 0deg)]"),
+                         "g.esc");
+  // A further body too large for the arena is named.
+  const std::string huge = "robot huge = bot { body_radius 60cm  wheel_base 10cm  max_speed 1cm/s }\n";
+  EXPECT_NE(refusal(huge + script("robot bot, huge"), "g.esc").find("body 2 of the group (`huge`)"), std::string::npos)
+      << refusal(huge + script("robot bot, huge"), "g.esc");
+}
+
+TEST(Groups, BodiesReadingOtherSensorsOrTooManyRobotsAreLocatedErrors) {
+  std::string out = refusal("robot ep { body_radius 37mm  ir_name prox }\n" + script("robot bot x 2, ep"), "g.esc");
+  EXPECT_NE(out.find("g.esc:6:83: error: `ep` has another `ir_name` than `bot` (prox against ir): the bodies of a "
+                     "group share the sensors their controller reads"),
             std::string::npos)
       << out;
-  out = refusal("robot e = bot { ir_name prox }\n" + script("robot bot, e"), "g.esc");
-  EXPECT_NE(out.find("`e` has another `ir_name` than `bot`"), std::string::npos) << out;
+  EXPECT_NE(out.find("help: name its sensors as `bot` does, in the group's list: `ep { ir_name ir }`"),
+            std::string::npos)
+      << out;
+  (void)first_experiment("robot ep { body_radius 37mm  ir_name prox }\n" + script("robot bot x 2, ep { ir_name ir }"),
+                         "g.esc");
+  // The number of sensors first: no other change makes such bodies one group.
+  out = refusal("robot few = bot { substeps 6  ir_sensors [(0deg, 0deg)] }\n" + script("robot bot, few"), "g.esc");
+  EXPECT_NE(out.find("`few` has another number of `ir_sensors` than `bot` (1 against 8)"), std::string::npos) << out;
+  EXPECT_NE(out.find("help: bodies that read other sensors need a controller each"), std::string::npos) << out;
+  // A name matters only for sensors the bodies have.
+  (void)first_experiment("robot g = bot { ground_name floor }\n" + script("robot bot, g"), "g.esc");
   out = refusal(script("robot bot x 200, bot x 100"), "g.esc");
   EXPECT_NE(out.find("the group's bodies add up to 300 robots, and a group holds at most 256"), std::string::npos) << out;
   out = refusal(script("robot bot x 2, bot x 0"), "g.esc");
   EXPECT_NE(out.find("g.esc:5:"), std::string::npos) << out;
   out = refusal(script("robot bot x 2, nobody"), "g.esc");
   EXPECT_NE(out.find("nobody"), std::string::npos) << out;
-  // A mistake in the first body is that mistake alone, not also a difference of shape.
-  out = refusal("robot lit = bot { }\n" + script("robot bot { body_radius 4cm  ir_rangex 1cm }, lit"), "g.esc");
+  // A mistake in the first body is that mistake alone, not also a difference between the bodies.
+  out = refusal("robot lit = bot { }\n" + script("robot bot { control_step 200ms  ir_rangex 1cm }, lit"), "g.esc");
   EXPECT_NE(out.find("ir_rangex"), std::string::npos) << out;
-  EXPECT_EQ(out.find("another `body_radius`"), std::string::npos) << out;
+  EXPECT_EQ(out.find("another `control_step`"), std::string::npos) << out;
   // A body derived from the first is told to match it, and where it differs.
-  out = refusal("robot lit = bot { body_radius 3cm }\n" + script("robot bot, lit"), "g.esc");
-  EXPECT_NE(out.find("note: `lit`'s `body_radius` is set here"), std::string::npos) << out;
-  EXPECT_NE(out.find("help: give both bodies the same `body_radius`"), std::string::npos) << out;
+  out = refusal("robot lit = bot { control_step 200ms }\n" + script("robot bot, lit"), "g.esc");
+  EXPECT_NE(out.find("note: `lit`'s `control_step` is set here"), std::string::npos) << out;
+  EXPECT_NE(out.find("help: give both bodies the same `control_step`"), std::string::npos) << out;
   // --set robot.KEY that breaks a further body's rules names that body.
   eval::ExperimentSpec x = first_experiment("robot lit = bot { ir_curve_x0 -1.5cm }\n" + script("robot bot, lit"), "g.esc");
   EXPECT_NE(apply_setting(x, "robot.ir_curve_c", "1cm2").find("body 2 of the group (`lit`)"), std::string::npos)

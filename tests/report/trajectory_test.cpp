@@ -40,7 +40,7 @@ TrajectoryFigure figure(const std::vector<eval::TraceStep>& steps, std::vector<s
   zone.random_position = true;
   zone.recharge = true;
   f.arena.zones.push_back(zone);
-  f.robot_radius_m = 0.0275;
+  f.bodies = {{0.0275, {}}};
   f.choices = std::move(choices);
   f.steps = steps;
   return f;
@@ -130,6 +130,19 @@ TEST(TrajectorySvg, AGroupsRobotsAreDrawnEachInItsColour) {
   EXPECT_EQ(count(svg, R"(fill-opacity="0.35")"), 6U) << "every robot at the end of each epoch";
   EXPECT_NE(svg.find(">robot 3 (1 collision step)</text>"), std::string::npos);
   EXPECT_NE(svg.find(">epoch 2 (4 steps)</text>"), std::string::npos) << "steps, not rows";
+}
+
+// A group of several bodies: each robot drawn with its own, a disc or an outline.
+TEST(TrajectorySvg, AGroupsRobotsAreDrawnEachWithItsBody) {
+  const auto rows = a_group();
+  TrajectoryFigure f = figure(rows, {});
+  f.bodies = {{0.0275, {}}, {0.037, {}}, {0.05, {{-0.03, -0.04}, {0.05, 0.0}, {-0.03, 0.04}}}};
+  const std::string svg = trajectory_svg(f);
+  EXPECT_EQ(count(svg, R"(r="27.5" fill=")"), 2U) << "robot 1 at the end of each epoch, a Khepera's disc";
+  EXPECT_EQ(count(svg, R"(r="37.0" fill=")"), 2U) << "robot 2, an e-puck's";
+  EXPECT_EQ(count(svg, "<polygon points="), 2U) << "robot 3, its outline";
+  f.bodies.resize(1);
+  EXPECT_EQ(count(trajectory_svg(f), R"(r="27.5" fill=")"), 6U) << "one body for all";
 }
 
 // A group's CSV: a robot column after the step, from 1, and the group's observables last.

@@ -409,6 +409,48 @@ TEST(SimGroup, TwoThymiosMeetAtTheirOutlines) {
   EXPECT_LT(distance(world.state(0).pose, world.state(1).pose), 0.16 + 2e-3);
 }
 
+// Bodies of different shapes in one world: a Khepera's disc and a Thymio's outline meet where
+// their surfaces do (the Thymio's front arc 8 cm ahead of its axle), and a Khepera's IR sees a
+// larger disc (an e-puck's 3.7 cm) exactly as a cylinder of that radius.
+TEST(SimGroup, BodiesOfDifferentShapesMeetAndSeeEachOtherAsTheyAre) {
+  const RobotParams thymio = test::thymio_like();
+  RobotParams k = test::robot_with_inertia(false);
+  k.physics_substeps = thymio.physics_substeps;   // one Bullet step moves both
+  World world(test::empty_arena(1.0, 1.0), std::vector<RobotParams>{k, thymio});
+  const std::array<Pose, 2> starts = {Pose{0.3, 0.5, 0.0}, Pose{0.7, 0.5, std::numbers::pi}};
+  world.reset(starts);
+  Rng rng(1);
+  const std::array<DriveCommand, 2> ahead = {DriveCommand{1, 1}, DriveCommand{1, 1}};
+  const double touching = k.body_radius_m + 0.08;
+  bool met = false;
+  for (int step = 0; step < 60; ++step) {
+    world.step(ahead, rng);
+    ASSERT_GT(distance(world.state(0).pose, world.state(1).pose), touching - 1e-3) << step;
+    met = met || (world.state(0).collided && world.state(1).collided);
+  }
+  EXPECT_TRUE(met);
+  EXPECT_LT(distance(world.state(0).pose, world.state(1).pose), touching + 2e-3);
+
+  RobotParams epuck = k;
+  epuck.body_radius_m = 0.037;
+  const Pose p0{0.5, 0.5, 0.2};
+  const Vec2 q{p0.x_m + (k.body_radius_m + epuck.body_radius_m + 0.01) * std::cos(p0.heading_rad),
+               p0.y_m + (k.body_radius_m + epuck.body_radius_m + 0.01) * std::sin(p0.heading_rad)};
+  World pair(test::empty_arena(1.0, 1.0), std::vector<RobotParams>{k, epuck});
+  const std::array<Pose, 2> facing = {p0, Pose{q.x, q.y, p0.heading_rad + std::numbers::pi}};
+  pair.reset(facing);
+  ArenaSpec with_cylinder = test::empty_arena(1.0, 1.0);
+  with_cylinder.cylinders.push_back({q, epuck.body_radius_m});
+  World alone(with_cylinder, k);
+  alone.reset(p0);
+  std::array<double, kIrSensors> seen{}, expected{};
+  Rng r1(1), r2(1);
+  pair.read_ir(seen, r1);
+  alone.read_ir(expected, r2);
+  EXPECT_EQ(seen, expected);
+  EXPECT_GT(*std::max_element(seen.begin(), seen.end()), 0.0);
+}
+
 TEST(SimGroup, AGroupMustShareItsDriveAndItsStepAndStartApart) {
   std::vector<RobotParams> mixed = {test::robot_with_inertia(false), navigator()};
   EXPECT_THROW(World(test::empty_arena(1.0, 1.0), mixed), std::invalid_argument);

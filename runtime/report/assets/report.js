@@ -482,12 +482,30 @@
     // rad, 0 rad, 0.035 m)]", an outline "[(-0.03 m, -0.055 m), ...]"): mount bearing, axis and
     // distance (rim when absent), in radians and millimetres. A run stored before a robot's
     // sensors were settings has the Khepera's (the report's own arrays) and the disc.
+    // A group of several bodies lists them in robot order ("khepera x 2, epuck x 3"), and a
+    // further body's setting is `bodyK.KEY` where it differs from the first's `robot.KEY`:
+    // each robot is drawn with its own body (the sensors a controller reads are alike).
     const tuples = text => (text.match(/\(([^)]*)\)/g) || []).map(t => t.slice(1, -1).split(',').map(parseFloat));
     const settings = exp.settings || {};
-    const irMounts = 'robot.ir_sensors' in settings
-      ? tuples(settings['robot.ir_sensors']).map(([b, f, d]) => ({ b, f, mm: d === undefined ? null : d * 1000 }))
-      : exp.ir_mount_deg.map((b, i) => ({ b: b * Math.PI / 180, f: exp.ir_facing_deg[i] * Math.PI / 180, mm: null }));
-    const outlineMm = tuples(settings['robot.body_outline'] || '').map(([px, py]) => [px * 1000, py * 1000]);
+    const listed = (settings.bodies || '').split(', ').map(b => b.match(/^(.*) x ([0-9]+)$/)).filter(m => m);
+    const robotBody = listed.flatMap(([, , count], b) => Array(Number(count)).fill(b));
+    const setting = (b, key) => settings[`body${b + 1}.${key}`] ?? settings[`robot.${key}`];
+    const shapes = (listed.length > 0 ? listed : [null]).map((_, b) => {
+      const radius = settings[`body${b + 1}.body_radius`];
+      const mounts = setting(b, 'ir_sensors');
+      return {
+        rr: radius === undefined ? exp.robot_radius_mm : parseFloat(radius) * 1000,
+        irMounts: mounts !== undefined
+          ? tuples(mounts).map(([b, f, d]) => ({ b, f, mm: d === undefined ? null : d * 1000 }))
+          : exp.ir_mount_deg.map((b, i) => ({ b: b * Math.PI / 180, f: exp.ir_facing_deg[i] * Math.PI / 180, mm: null })),
+        outlineMm: tuples(setting(b, 'body_outline') || '').map(([px, py]) => [px * 1000, py * 1000]),
+        rangeAngles: (setting(b, 'rangefinders') || '').match(/-?[0-9.]+(e[-+]?[0-9]+)?(?= rad)/g),
+        rangeMm: parseFloat(setting(b, 'rangefinder_range')) * 1000,
+      };
+    });
+    const shapeOf = k => shapes[robotBody[k] ?? 0];
+    const robotLabel = k => listed.length > 1 ? `robot ${k + 1} (${listed[robotBody[k] ?? 0][1]})` : `robot ${k + 1}`;
+    const irMounts = shapes[0].irMounts;
     const irName = (settings['robot.ir_name'] || 'ir') === 'ir' ? 'IR' : settings['robot.ir_name'];
     const irs = bars(irMounts.map((_, i) => `${irName} ${i}`), 'ir');
     const lights = bars(irMounts.map((_, i) => `light ${i}`), 'light');
@@ -499,8 +517,8 @@
     const rangeAt = columns.indexOf('range'), radarAt = columns.indexOf('radar');
     const first = withReplay[0].replay.rows[0];
     const rangeCount = rangeAt >= 0 ? first[rangeAt].length : 0, radarCount = radarAt >= 0 ? first[radarAt].length : 0;
-    const rangeAngles = ((exp.settings || {})['robot.rangefinders'] || '').match(/-?[0-9.]+(e[-+]?[0-9]+)?(?= rad)/g);
-    const rangeMm = parseFloat((exp.settings || {})['robot.rangefinder_range']) * 1000;
+    // Labelled by angle where every body has the first's angles, else by number.
+    const rangeAngles = shapes.every(b => String(b.rangeAngles) === String(shapes[0].rangeAngles)) ? shapes[0].rangeAngles : null;
     const rangeLabel = i => rangeAngles && rangeAngles.length === rangeCount
       ? `${Math.round(parseFloat(rangeAngles[i]) * 180 / Math.PI)}°` : `range ${i}`;
     const ranges = bars([...Array(rangeCount).keys()].map(rangeLabel), 'range');
@@ -541,7 +559,7 @@
       index = 0;
       watched = 0;
       watch.innerHTML = '';
-      for (let k = 0; k < robots; ++k) watch.appendChild(el('option', {value: String(k), text: `robot ${k + 1}`}));
+      for (let k = 0; k < robots; ++k) watch.appendChild(el('option', {value: String(k), text: robotLabel(k)}));
       watch.style.display = robots > 1 ? '' : 'none';
       slider.max = String(rows.length / robots - 1);
       const shown = rows.length / robots < c.replay.total_steps
@@ -555,7 +573,7 @@
       legend.innerHTML = '';
       const swatch = (colour, label, dot) => legend.appendChild(el('span', {class: 'swatch'}, [
         el('span', {class: dot ? 'dot' : 'line', style: `background:${colour}`}), el('span', {text: label})]));
-      if (robots > 1) for (let k = 0; k < robots; ++k) swatch(choiceColour(k, robots), `robot ${k + 1}`, false);
+      if (robots > 1) for (let k = 0; k < robots; ++k) swatch(choiceColour(k, robots), robotLabel(k), false);
       else if (c.actions.length === 0) swatch('#1f77b4', 'path (a classical head chooses no behavior)', false);
       else c.actions.forEach((name, i) => swatch(choiceColour(i, c.actions.length), name, false));
       swatch(collisionColour, 'collision', true);
@@ -566,7 +584,7 @@
     // and where they look) and a navigator's radar slice and rangefinder rays.
     function drawRobot(row, k) {
       const [, , x, y, heading, ir, , , , , collided] = row;
-      const rr = exp.robot_radius_mm;
+      const { rr, irMounts, outlineMm, rangeAngles, rangeMm } = shapeOf(k);
       ctx.fillStyle = collided ? 'rgba(214,39,40,0.35)' : robots > 1 ? alpha(choiceColour(k, robots), 0.35) : 'rgba(31,119,180,0.25)';
       ctx.strokeStyle = '#1d2330'; ctx.lineWidth = robots > 1 && k === watched ? 3 : 1.5;
       ctx.beginPath();
