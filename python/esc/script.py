@@ -74,15 +74,29 @@ class Script:
         return {name: list(conditions) for name, conditions in self._compiled.studies}
 
     @property
+    def refused(self) -> Dict[str, str]:
+        """The experiments and studies that refused the settings esc.compile was given, each
+        with why, as `esc run --set` says it (`esc run --experiment E` fails for E alone, so the
+        file's other experiments stay usable); empty when every one took them. Using a refused
+        experiment (esc.Env, esc.evaluate, Script.controller) raises esc.Error with it."""
+        return dict(self._compiled.refused)
+
+    @property
     def controllers(self) -> Dict[str, Dict[str, Controller]]:
-        """Per experiment, the controllers it compares in order: name -> Controller."""
-        return {e: {c["name"]: _controller(c) for c in self._compiled.controllers(e)} for e in self.experiments}
+        """Per experiment, the controllers it compares in order: name -> Controller (the
+        experiments that refused the settings given left out: Script.refused)."""
+        return {e: {c["name"]: _controller(c) for c in self._compiled.controllers(e)} for e in self._usable()}
 
     @property
     def settings(self) -> Dict[str, Dict[str, str]]:
         """Per experiment, every setting as resolved with the settings given applied, as
-        settings.json holds them ("epochs" -> "10", ...)."""
-        return {e: dict(self._compiled.settings(e)) for e in self.experiments}
+        settings.json holds them ("epochs" -> "10", ...) (the experiments that refused the
+        settings given left out: Script.refused)."""
+        return {e: dict(self._compiled.settings(e)) for e in self._usable()}
+
+    def _usable(self) -> List[str]:
+        refused = self._compiled.refused
+        return [e for e in self.experiments if e not in refused]
 
     def controller(self, experiment: Optional[str], name: str) -> Controller:
         """Controller `name` of `experiment` (None: the script's one experiment); ValueError
@@ -145,7 +159,9 @@ def compile(path_or_source: PathOrSource, settings: Optional[Mapping[str, object
 
     Raises FileNotFoundError for a missing file, IsADirectoryError for a directory,
     esc.ScriptError for a script with errors (its first error's file, line, column and
-    message), esc.Error for a setting refused. Warnings are issued as esc.ScriptWarning.
+    message), esc.Error for settings that every experiment and study refuses (an unknown key);
+    settings that only some refuse (`robots` on a group of several bodies) leave those out,
+    named in Script.refused. Warnings are issued as esc.ScriptWarning.
     """
     pairs = [(str(k), _setting_text(v)) for k, v in (settings or {}).items()]
     if _is_path(path_or_source):

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include "compiler/names.hpp"
+#include "python/src/errors.hpp"
 
 namespace esc::python {
 
@@ -24,8 +25,12 @@ namespace {
 const eval::ExperimentSpec& find_experiment(const CompiledScript& script, const std::string& name) {
   std::vector<std::string> names;
   for (const eval::ExperimentSpec& e : script.result.experiments) {
-    if (e.name == name) return e;
-    names.push_back(e.name);
+    if (e.name != name) {
+      names.push_back(e.name);
+      continue;
+    }
+    if (const auto refused = script.refused.find(name); refused != script.refused.end()) throw Error(refused->second);
+    return e;
   }
   no_such(script.file.string() + " has no experiment", name, "declares", names);
 }

@@ -3,6 +3,7 @@
 // applied, shared (std::shared_ptr) by every object made from it, an Env or a Policy, which
 // point into its experiments. Never changed once compiled and set.
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -13,12 +14,16 @@ namespace esc::python {
 struct CompiledScript {
   compiler::CompileResult result;
   std::filesystem::path file;   // as given; for a script given as text, its pseudo file name
+  // The experiments and studies (by name) that refused the caller's settings, each with the
+  // refusal as `esc run --set` words it: `esc run --experiment E --set ...` fails for E alone,
+  // so the file's other experiments stay usable. find_experiment raises it.
+  std::map<std::string, std::string, std::less<>> refused;
 };
 
 using ScriptPtr = std::shared_ptr<const CompiledScript>;
 
 // The experiment `name` of the script's main file. Raises ValueError naming the experiments
-// it declares (and the closest one).
+// it declares (and the closest one), and esc.Error where it refused the settings given.
 [[nodiscard]] const eval::ExperimentSpec& find_experiment(const CompiledScript& script, const std::string& name);
 
 // The compared controller `name` of `experiment`. Raises ValueError naming those it compares.

@@ -64,8 +64,10 @@ using Settings = std::vector<std::pair<std::string, std::string>>;
 
 // The settings, (key, value) in order, applied to every experiment of the main file and every
 // study condition's, together as `esc run --set` applies them (so `robots=2, roles=2` after
-// `roles 3` is one change). Throws Error on the first problem, worded as the CLI words it
-// ("experiment `x`: KEY=VALUE: what is wrong").
+// `roles 3` is one change). An experiment or a study that refuses them is recorded with the
+// refusal, worded as the CLI words it ("experiment `x`: KEY=VALUE: what is wrong"), as `esc
+// run --experiment` would fail for it alone; when every one refuses them (an unknown key),
+// throws Error with the first refusal.
 void apply_settings(CompiledScript& s, const Settings& settings) {
   const auto apply = [&settings](eval::ExperimentSpec& e, const std::string& where) -> std::string {
     const compiler::SettingsRefusal refused = compiler::apply_settings_together(e, settings);
@@ -78,13 +80,21 @@ void apply_settings(CompiledScript& s, const Settings& settings) {
     for (const auto& [key, value] : settings) named += (named.empty() ? "" : " ") + key + "=" + value;
     return where + ": " + named + ": " + refused.together;
   };
-  for (eval::ExperimentSpec& e : s.result.experiments)
-    if (std::string error = apply(e, "experiment `" + e.name + "`"); !error.empty()) throw Error(error);
+  std::string first;
+  std::size_t took = 0;
+  const auto record = [&](const std::string& name, std::string error) {
+    if (error.empty()) {
+      ++took;
+      return;
+    }
+    if (first.empty()) first = error;
+    s.refused.try_emplace(name, std::move(error));
+  };
+  for (eval::ExperimentSpec& e : s.result.experiments) record(e.name, apply(e, "experiment `" + e.name + "`"));
   for (eval::StudySpec& study : s.result.studies)
     for (eval::ConditionSpec& c : study.conditions)
-      if (std::string error = apply(c.experiment, "study `" + study.name + "`, condition `" + c.name + "`");
-          !error.empty())
-        throw Error(error);
+      record(study.name, apply(c.experiment, "study `" + study.name + "`, condition `" + c.name + "`"));
+  if (took == 0 && !first.empty()) throw Error(first);
 }
 
 py::dict controller_info(const control::ControllerSpec& c, const eval::ExperimentSpec& x) {
@@ -114,7 +124,7 @@ py::list controllers(const CompiledScript& s, const std::string& experiment) {
 // diagnostics.
 std::shared_ptr<CompiledScript> compiled(compiler::CompileResult result, std::filesystem::path file,
                                          const Settings& settings) {
-  auto s = std::make_shared<CompiledScript>(CompiledScript{std::move(result), std::move(file)});
+  auto s = std::make_shared<CompiledScript>(CompiledScript{std::move(result), std::move(file), {}});
   if (s->result.ok()) apply_settings(*s, settings);
   return s;
 }
@@ -142,6 +152,9 @@ void bind_script(py::module_& m) {
             return names;
           },
           "The main file's experiments, in declaration order.")
+      .def_property_readonly(
+          "refused", [](const CompiledScript& s) { return s.refused; },
+          "The experiments and studies that refused the settings given, each with why, as `esc run --set` says it.")
       .def_property_readonly(
           "studies",
           [](const CompiledScript& s) {

@@ -40,6 +40,25 @@ def test_a_setting_refused_is_an_error_with_the_clis_message():
         esc.compile(HOMING["script"], {"mu": 0})
 
 
+def test_settings_some_experiments_refuse_leave_the_others_usable():
+    # beacons.esc: `robots` suits its one-body experiment, not its group of two bodies (whose
+    # counts are each body's), as `esc run --experiment E --set robots=3` fails for that E alone.
+    script = esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"robots": 3})
+    assert sorted(script.refused) == ["beacons_or_dark", "leader_aggregation"]
+    assert "experiment `leader_aggregation`: robots=3:" in script.refused["leader_aggregation"]
+    assert "several bodies" in script.refused["leader_aggregation"]
+    assert script.settings["beacon_aggregation"]["robots"] == "3"
+    assert list(script.settings) == list(script.controllers) == ["beacon_aggregation"]
+    env = esc.ParallelEnv(script, "beacon_aggregation")
+    assert len(env.possible_agents) == 3
+    with pytest.raises(esc.Error, match="experiment `leader_aggregation`: robots=3: .*several bodies"):
+        esc.ParallelEnv(script, "leader_aggregation")
+    with pytest.raises(esc.Error, match="several bodies"):
+        script.controller("leader_aggregation", "seeing")
+    assert esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"robots": 5}).refused != {}
+    assert esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"epochs": 2}).refused == {}
+
+
 def test_text_compiles_with_the_standard_library_and_a_study():
     script = esc.compile(STUDY_TEXT)
     assert script.file == "<script>"
