@@ -26,7 +26,7 @@ from esc.network import Network
 from esc.parallel_env import ParallelEnv
 from esc.results import BestEvaluation, Member, Run, open
 from esc.running import Generation, resume, run
-from esc.script import Controller, Script, compile
+from esc.script import Body, Controller, Script, compile
 
 __all__ = [
     "__version__",
@@ -35,5 +35,5 @@ __all__ = [
     "evaluate", "evaluation_seed", "measure", "run_seed", "Network",
     "BestEvaluation", "Member", "Run", "open",
     "Generation", "resume", "run",
-    "Controller", "Script", "compile",
+    "Body", "Controller", "Script", "compile",
 ]

@@ -39,6 +39,22 @@ class Controller:
         return self.head == "tree"
 
 
+@dataclass(frozen=True)
+class Body:
+    """A body an experiment's robots have (docs/robot-model.md): its robot declaration's name,
+    how many robots have it (a group of several bodies lists them in robot order), its drive
+    ("differential" or "acceleration"), its radius in metres, its outline (the corners from the
+    axle, in metres; empty for a disc) and the sensors it offers a controller, by the names its
+    scripts read them ("prox[0]", ..., "light[0]", ..., "energy")."""
+
+    name: str
+    robots: int
+    drive: str
+    radius_m: float
+    outline_m: Tuple[Tuple[float, float], ...]
+    sensors: Tuple[str, ...]
+
+
 def _controller(d: dict) -> Controller:
     return Controller(d["name"], d["architecture"], d["head"], d["genome_size"], tuple(d["inputs"]),
                       tuple(d["choices"]), d["graph"], d["roles"])
@@ -86,6 +102,15 @@ class Script:
         """Per experiment, the controllers it compares in order: name -> Controller (the
         experiments that refused the settings given left out: Script.refused)."""
         return {e: {c["name"]: _controller(c) for c in self._compiled.controllers(e)} for e in self._usable()}
+
+    @property
+    def bodies(self) -> Dict[str, List[Body]]:
+        """Per experiment, the bodies of its robots in robot order: one for a robot alone or a
+        group of one body, several for `robot khepera x 2, epuck { ir_name ir } x 3` (the
+        experiments that refused the settings given left out: Script.refused)."""
+        return {e: [Body(b["name"], b["robots"], b["drive"], b["radius_m"],
+                         tuple(tuple(v) for v in b["outline_m"]), tuple(b["sensors"]))
+                    for b in self._compiled.bodies(e)] for e in self._usable()}
 
     @property
     def settings(self) -> Dict[str, Dict[str, str]]:

@@ -19,23 +19,6 @@ namespace {
 
 using Action = Env::Action;
 
-// What the robot senses, the observation without a controller: the IR and light sensors,
-// rangefinders, goal radars, ground sensors and bumpers it declares, and the accumulator.
-std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
-  std::vector<expr::Slot> slots;
-  const auto add = [&](expr::Slot first, std::size_t count) {
-    for (expr::Slot i = 0; i < count; ++i) slots.push_back(first + i);
-  };
-  add(expr::slot::ir, robot.ir.mounts.size());
-  add(expr::slot::light, robot.ir.mounts.size());
-  add(expr::slot::range, robot.rangefinders.angles_rad.size());
-  add(expr::slot::radar, static_cast<std::size_t>(robot.radars));
-  add(expr::slot::ground_sensor, robot.ground.mounts.size());
-  add(expr::slot::bumper, robot.bumpers.size());
-  slots.push_back(expr::slot::energy);
-  return slots;
-}
-
 const control::ControllerSpec* network_controller(const eval::ExperimentSpec& spec,
                                                   const std::optional<std::string>& name) {
   if (!name) return nullptr;

@@ -47,4 +47,19 @@ SlotRange slot_range(expr::Slot slot, const eval::ExperimentSpec& spec) {
   return {0.0, 1.0};   // speeds, sensors (rangefinders and radars too), booleans, energy, noise
 }
 
+std::vector<expr::Slot> senses(const sim::RobotParams& robot) {
+  std::vector<expr::Slot> slots;
+  const auto add = [&](expr::Slot first, std::size_t count) {
+    for (expr::Slot i = 0; i < count; ++i) slots.push_back(first + i);
+  };
+  add(expr::slot::ir, robot.ir.mounts.size());
+  add(expr::slot::light, robot.ir.mounts.size());
+  add(expr::slot::range, robot.rangefinders.angles_rad.size());
+  add(expr::slot::radar, static_cast<std::size_t>(robot.radars));
+  add(expr::slot::ground_sensor, robot.ground.mounts.size());
+  add(expr::slot::bumper, robot.bumpers.size());
+  slots.push_back(expr::slot::energy);
+  return slots;
+}
+
 }  // namespace esc::python

@@ -12,6 +12,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "app/import_path.hpp"
+#include "compiler/robot_settings.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/compiled_script.hpp"
 #include "python/src/errors.hpp"
@@ -120,6 +121,31 @@ py::list controllers(const CompiledScript& s, const std::string& experiment) {
   return out;
 }
 
+// Each body of `experiment`'s robots, in robot order: dicts of name (its robot declaration),
+// robots (how many have it), drive, radius_m, outline_m (its corners from the axle; empty: the
+// disc) and sensors (what it offers a controller, by the names its scripts read them).
+py::list bodies(const CompiledScript& s, const std::string& experiment) {
+  const eval::ExperimentSpec& x = find_experiment(s, experiment);
+  std::vector<eval::ExperimentSpec::GroupBody> listed = x.bodies;
+  if (listed.empty()) listed.push_back({x.resolved_settings.at("robot"), x.robot, x.robots});
+  py::list out;
+  for (const eval::ExperimentSpec::GroupBody& b : listed) {
+    py::dict d;
+    d["name"] = b.name;
+    d["robots"] = b.count;
+    d["drive"] = compiler::robot_value_text(*compiler::find_robot_setting("drive"), b.params);
+    d["radius_m"] = b.params.body_radius_m;
+    std::vector<std::pair<double, double>> outline;
+    for (const sim::Vec2& v : b.params.outline) outline.emplace_back(v.x, v.y);
+    d["outline_m"] = outline;
+    std::vector<std::string> sensors;
+    for (const expr::Slot slot : senses(b.params)) sensors.push_back(slot_name(slot, b.params));
+    d["sensors"] = sensors;
+    out.append(std::move(d));
+  }
+  return out;
+}
+
 // A script that compiled gets its settings; one with errors is returned as it is, for its
 // diagnostics.
 std::shared_ptr<CompiledScript> compiled(compiler::CompileResult result, std::filesystem::path file,
@@ -179,6 +205,9 @@ void bind_script(py::module_& m) {
           },
           py::arg("experiment"), py::arg("name"),
           "Controller `name` of `experiment`, as controllers() describes it; ValueError naming those it compares.")
+      .def("bodies", &bodies, py::arg("experiment"),
+           "The bodies of `experiment`'s robots, in robot order: dicts of name, robots (how many have it), drive, "
+           "radius_m, outline_m and sensors (by the names its scripts read them).")
       .def(
           "settings", [](const CompiledScript& s, const std::string& e) { return find_experiment(s, e).resolved_settings; },
           py::arg("experiment"), "Every setting of `experiment` as resolved (what settings.json holds).");

@@ -59,6 +59,18 @@ def test_settings_some_experiments_refuse_leave_the_others_usable():
     assert esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"epochs": 2}).refused == {}
 
 
+def test_bodies_name_each_experiments_robots_and_their_sensors():
+    mixed = esc.compile(EXPERIMENTS / "examples" / "two_bodies.esc").bodies["mixed_dispersion"]
+    assert [(b.name, b.robots, b.drive) for b in mixed] == [("khepera", 3, "differential"), ("epuck_ir", 3, "differential")]
+    assert (mixed[0].radius_m, mixed[1].radius_m) == (0.0275, 0.037)
+    assert mixed[0].outline_m == mixed[1].outline_m == ()
+    assert mixed[1].sensors == tuple(f"ir[{i}]" for i in range(8)) + tuple(f"light[{i}]" for i in range(8)) + ("energy",)
+    [thymio] = esc.compile(EXPERIMENTS / "bodies" / "thymio_obstacle_avoidance.esc").bodies["thymio_obstacle_avoidance"]
+    assert (thymio.name, thymio.robots, thymio.radius_m) == ("thymio2", 1, 0.08)
+    assert len(thymio.outline_m) > 3 and all(len(corner) == 2 for corner in thymio.outline_m)
+    assert thymio.sensors[0] == "prox_horizontal[0]" and "prox_ground[1]" in thymio.sensors
+
+
 def test_text_compiles_with_the_standard_library_and_a_study():
     script = esc.compile(STUDY_TEXT)
     assert script.file == "<script>"
