@@ -182,6 +182,8 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
   result.experiment = spec.name;
   result.robots = spec.robots;
   result.roles = spec.roles;
+  if (const auto it = spec.resolved_settings.find("bodies"); it != spec.resolved_settings.end())
+    result.bodies = it->second;
   result.seed = spec.seed;
   if (spec.success) result.success = spec.success->text();
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();

@@ -88,6 +88,8 @@ struct CampaignResult {
   std::uint64_t seed = 0;
   int robots = 1;   // the group's robots (ExperimentSpec::robots)
   int roles = 1;    // and its roles (ExperimentSpec::roles)
+  // A group of several bodies: its `bodies` setting ("khepera x 2, lit x 3"); empty otherwise.
+  std::string bodies;
   // The experiment's success test as resolved (SuccessSpec::text); empty when it declares
   // none, and then no run's success is shown.
   std::string success{};

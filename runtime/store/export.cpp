@@ -103,10 +103,11 @@ json export_json(const std::vector<StoredDirectory>& directories) {
         if (c.members) controllers[c.name]["members"] = members_json(*c.members);
       }
       json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
-      // A group names its size and roles (its `robots` and `roles` settings, each resolved only
-      // when not 1); a robot alone's export is as it always was.
+      // A group names its size, roles and bodies (its `robots`, `roles` and `bodies` settings,
+      // each resolved only when not 1); a robot alone's export is as it always was.
       for (const char* key : {"robots", "roles"})
         if (const auto it = e.settings.find(key); it != e.settings.end()) x[key] = std::atoi(it->second.c_str());
+      if (const auto it = e.settings.find("bodies"); it != e.settings.end()) x["bodies"] = it->second;
       if (e.condition) {
         json settings = json::object();
         for (const eval::ConditionSetting& st : e.condition->settings) settings[st.key] = st.value;

@@ -248,6 +248,7 @@ eval::CampaignResult StoredExperiment::result() const {
   // Resolved only for a group, and several roles (experiment_settings.cpp): a robot alone has none.
   if (const auto it = settings.find("robots"); it != settings.end()) r.robots = std::atoi(it->second.c_str());
   if (const auto it = settings.find("roles"); it != settings.end()) r.roles = std::atoi(it->second.c_str());
+  if (const auto it = settings.find("bodies"); it != settings.end()) r.bodies = it->second;
   for (const StoredController& c : controllers) {
     if (c.finished.empty()) continue;
     r.controllers.push_back({c.name, c.architecture, c.genome_size, c.finished, c.actions});

@@ -92,8 +92,10 @@ nlohmann::ordered_json summary_json(const eval::CampaignResult& result) {
     if (declares_success) controllers[c.name]["success"] = success_json(eval::count_successes(c.runs));
   }
   json summary = {{"experiment", result.experiment}, {"seed", seed_json(result.seed)}};
-  // A group names its size, and its roles when several; a robot alone's summary is as it always was.
+  // A group names its size, its bodies and its roles when several; a robot alone's summary is
+  // as it always was.
   if (result.robots > 1) summary["robots"] = result.robots;
+  if (!result.bodies.empty()) summary["bodies"] = result.bodies;
   if (result.roles > 1) summary["roles"] = result.roles;
   if (declares_success) summary["success"] = result.success;
   summary["controllers"] = std::move(controllers);

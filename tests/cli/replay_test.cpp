@@ -303,6 +303,12 @@ TEST(Replay, AGroupOfTwoBodiesIsDrawnEachWithItsOwn) {
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(read_json(dir / "settings.json")["settings"]["bodies"], "khepera x 2, epuck_ir x 1");
   EXPECT_EQ(read_json(dir / "settings.json")["settings"]["body2.body_radius"], "0.037 m");
+  // summary.json and the export name the bodies.
+  EXPECT_EQ(read_json(dir / "summary.json")["bodies"], "khepera x 2, epuck_ir x 1");
+  const Outcome exported = esc_command("export " + dir.string() + " --format json");
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  EXPECT_NE(exported.output.find("\"bodies\": \"khepera x 2, epuck_ir x 1\""), std::string::npos)
+      << exported.output.substr(0, 400);
   const Outcome o = esc_command("replay " + dir.string());
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
