@@ -92,9 +92,11 @@ class Script:
     @property
     def refused(self) -> Dict[str, str]:
         """The experiments and studies that refused the settings esc.compile was given, each
-        with why, as `esc run --set` says it (`esc run --experiment E` fails for E alone, so the
-        file's other experiments stay usable); empty when every one took them. Using a refused
-        experiment (esc.Env, esc.evaluate, Script.controller) raises esc.Error with it."""
+        with why, as `esc run --set` says it (`esc run --experiment E` fails for E, so the
+        file's other experiments stay usable); empty when every one took them. Each experiment
+        and study condition is checked on its own: the settings on an experiment's dependencies
+        are checked when esc.run runs it. Using a refused experiment (esc.Env, esc.evaluate,
+        Script.controller) raises esc.Error with it."""
         return dict(self._compiled.refused)
 
     @property
@@ -125,7 +127,8 @@ class Script:
 
     def controller(self, experiment: Optional[str], name: str) -> Controller:
         """Controller `name` of `experiment` (None: the script's one experiment); ValueError
-        naming the experiments or controllers there are (and the closest)."""
+        naming the experiments or controllers there are (and the closest), esc.Error where the
+        experiment refused the settings given (Script.refused)."""
         return _controller(self._compiled.controller(self.experiment_named(experiment), name))
 
     def experiment_named(self, experiment: Optional[str]) -> str:

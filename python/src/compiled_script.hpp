@@ -15,8 +15,8 @@ struct CompiledScript {
   compiler::CompileResult result;
   std::filesystem::path file;   // as given; for a script given as text, its pseudo file name
   // The experiments and studies (by name) that refused the caller's settings, each with the
-  // refusal as `esc run --set` words it: `esc run --experiment E --set ...` fails for E alone,
-  // so the file's other experiments stay usable. find_experiment raises it.
+  // refusal as `esc run --set` words it: `esc run --experiment E --set ...` fails for E, so
+  // the file's other experiments stay usable. find_experiment raises it.
   std::map<std::string, std::string, std::less<>> refused;
 };
 

@@ -65,10 +65,10 @@ using Settings = std::vector<std::pair<std::string, std::string>>;
 
 // The settings, (key, value) in order, applied to every experiment of the main file and every
 // study condition's, together as `esc run --set` applies them (so `robots=2, roles=2` after
-// `roles 3` is one change). An experiment or a study that refuses them is recorded with the
-// refusal, worded as the CLI words it ("experiment `x`: KEY=VALUE: what is wrong"), as `esc
-// run --experiment` would fail for it alone; when every one refuses them (an unknown key),
-// throws Error with the first refusal.
+// `roles 3` is one change). An experiment or a study (any of its conditions) that refuses them
+// is recorded with the refusal, worded as the CLI words it ("experiment `x`: KEY=VALUE: what is
+// wrong"), as `esc run --experiment` would fail for it; when every one refuses them (an
+// unknown key), throws Error with the first refusal.
 void apply_settings(CompiledScript& s, const Settings& settings) {
   const auto apply = [&settings](eval::ExperimentSpec& e, const std::string& where) -> std::string {
     const compiler::SettingsRefusal refused = compiler::apply_settings_together(e, settings);
@@ -82,20 +82,17 @@ void apply_settings(CompiledScript& s, const Settings& settings) {
     return where + ": " + named + ": " + refused.together;
   };
   std::string first;
-  std::size_t took = 0;
   const auto record = [&](const std::string& name, std::string error) {
-    if (error.empty()) {
-      ++took;
-      return;
-    }
+    if (error.empty()) return;
     if (first.empty()) first = error;
     s.refused.try_emplace(name, std::move(error));
   };
   for (eval::ExperimentSpec& e : s.result.experiments) record(e.name, apply(e, "experiment `" + e.name + "`"));
+  // A study takes the settings when every condition does.
   for (eval::StudySpec& study : s.result.studies)
     for (eval::ConditionSpec& c : study.conditions)
       record(study.name, apply(c.experiment, "study `" + study.name + "`, condition `" + c.name + "`"));
-  if (took == 0 && !first.empty()) throw Error(first);
+  if (!first.empty() && s.refused.size() == s.result.experiments.size() + s.result.studies.size()) throw Error(first);
 }
 
 py::dict controller_info(const control::ControllerSpec& c, const eval::ExperimentSpec& x) {

@@ -170,6 +170,18 @@ bool room_for_another_run(std::size_t active_runs, std::size_t pooled_evaluation
   return pooled_evaluations < kEvaluationsPerWorker * workers;
 }
 
+CampaignResult campaign_result_of(const ExperimentSpec& spec) {
+  CampaignResult result;
+  result.experiment = spec.name;
+  result.seed = spec.seed;
+  result.robots = spec.robots;
+  result.roles = spec.roles;
+  if (const auto it = spec.resolved_settings.find("bodies"); it != spec.resolved_settings.end())
+    result.bodies = it->second;
+  if (spec.success) result.success = spec.success->text();
+  return result;
+}
+
 CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& options,
                             CampaignListener& listener) {
   // Unfilled, a supervisor would act with empty behaviors and a `start from` run from random
@@ -178,14 +190,7 @@ CampaignResult run_campaign(const ExperimentSpec& spec, const CampaignOptions& o
     throw std::invalid_argument(fmt::format("experiment {} needs the results of {} first: prepare its dependencies "
                                             "(esc::app::prepare_dependencies) before running it",
                                             spec.name, fmt::join(missing, ", ")));
-  CampaignResult result;
-  result.experiment = spec.name;
-  result.robots = spec.robots;
-  result.roles = spec.roles;
-  if (const auto it = spec.resolved_settings.find("bodies"); it != spec.resolved_settings.end())
-    result.bodies = it->second;
-  result.seed = spec.seed;
-  if (spec.success) result.success = spec.success->text();
+  CampaignResult result = campaign_result_of(spec);
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   // Honour a thread count above the core count too (results do not depend on it).
   const tbb::global_control allow(tbb::global_control::max_allowed_parallelism,

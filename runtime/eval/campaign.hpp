@@ -96,6 +96,10 @@ struct CampaignResult {
   std::vector<ControllerResult> controllers;
 };
 
+// `spec`'s result before any run: its name, seed, group and success test, no controllers.
+// What a campaign's result and a run directory's first summary.json start from.
+[[nodiscard]] CampaignResult campaign_result_of(const ExperimentSpec& spec);
+
 inline constexpr double kRoundProgressInterval_s = 2.0;
 
 // Told about progress as the campaign goes; called from the thread that called

@@ -104,7 +104,8 @@ json export_json(const std::vector<StoredDirectory>& directories) {
       }
       json x = {{"name", e.name}, {"directory", d.path.generic_string()}};
       // A group names its size, roles and bodies (its `robots`, `roles` and `bodies` settings,
-      // each resolved only when not 1); a robot alone's export is as it always was.
+      // each resolved only for a group, several roles, several bodies); a robot alone's export
+      // is as it always was.
       for (const char* key : {"robots", "roles"})
         if (const auto it = e.settings.find(key); it != e.settings.end()) x[key] = std::atoi(it->second.c_str());
       if (const auto it = e.settings.find("bodies"); it != e.settings.end()) x["bodies"] = it->second;

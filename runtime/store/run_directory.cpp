@@ -170,11 +170,7 @@ RunDirectory::RunDirectory(fs::path dir, const eval::ExperimentSpec& spec, const
                            const LaunchInfo& launch)
     : RunDirectory(create_new(std::move(dir), spec, sources, launch)) {
   write_atomically(dir_ / "settings.json", settings_json(spec, sources, write_sources(dir_, sources)).dump(2) + "\n");
-  partial_.experiment = spec.name;
-  partial_.seed = spec.seed;
-  partial_.robots = spec.robots;
-  partial_.roles = spec.roles;
-  if (spec.success) partial_.success = spec.success->text();
+  partial_ = eval::campaign_result_of(spec);
   for (const control::ControllerSpec& c : spec.controllers) controllers_.emplace_back(c.name, spec.genome_size_of(c));
   write_summary();
 }

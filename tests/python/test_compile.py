@@ -55,8 +55,14 @@ def test_settings_some_experiments_refuse_leave_the_others_usable():
         esc.ParallelEnv(script, "leader_aggregation")
     with pytest.raises(esc.Error, match="several bodies"):
         script.controller("leader_aggregation", "seeing")
-    assert esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"robots": 5}).refused != {}
     assert esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"epochs": 2}).refused == {}
+    # Refused by every experiment and by every study (one condition is enough): an error.
+    two = 'import "lib/khepera.esc"\narena a { size 1m x 1m }\nfitness f { step: forward_speed }\n' \
+          'controller c = mlp(ir[0..7] -> wheels)\n' \
+          'experiment e { arena a  fitness f  compare c  robot khepera x 2 }\n' \
+          'study s { condition a = e  condition b = e { robots 4 } }\n'
+    with pytest.raises(esc.Error, match="roles=3"):
+        esc.compile(two, {"roles": 3})
 
 
 def test_bodies_name_each_experiments_robots_and_their_sensors():

@@ -86,6 +86,22 @@ TEST(RunDirectory, RunsFinishingInAnyOrderKeepTheExperimentsOrder) {
   fs::remove_all(dir);
 }
 
+// Before any run finishes (a run killed early leaves this one), summary.json already names the
+// group: its robots, roles and bodies, as the finished campaign's and a resumed one's do.
+TEST(RunDirectory, TheFirstSummaryNamesTheGroup) {
+  const fs::path dir = fresh_dir("group");
+  eval::ExperimentSpec e = spec();
+  e.robots = 5;
+  e.roles = 2;
+  e.resolved_settings["bodies"] = "khepera x 2, lit x 3";
+  RunDirectory rd(dir, e, {});
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["robots"], 5);
+  EXPECT_EQ(summary["roles"], 2);
+  EXPECT_EQ(summary["bodies"], "khepera x 2, lit x 3");
+  fs::remove_all(dir);
+}
+
 TEST(RunDirectory, NeverOverwritesExistingResults) {
   const fs::path dir = fresh_dir("exists");
   fs::create_directories(dir);
