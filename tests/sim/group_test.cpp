@@ -85,6 +85,18 @@ TEST(SimGroup, ARobotAloneDrivesAsInItsOwnWorld) {
 }
 
 // Robot 1 stands where a cylinder of its radius would: robot 0's IR reads the same.
+// What robot `k` at `p0` alone reads of a cylinder of `radius_m` at `q` (its noise stream Rng(1)).
+std::array<double, kIrSensors> ir_beside_cylinder(const RobotParams& k, const Pose& p0, Vec2 q, double radius_m) {
+  ArenaSpec with_cylinder = test::empty_arena(1.0, 1.0);
+  with_cylinder.cylinders.push_back({q, radius_m});
+  World alone(with_cylinder, k);
+  alone.reset(p0);
+  std::array<double, kIrSensors> expected{};
+  Rng rng(1);
+  alone.read_ir(expected, rng);
+  return expected;
+}
+
 TEST(SimGroup, IrSeesAnotherRobotAsACylinderOfItsRadius) {
   const RobotParams k = test::robot_with_inertia(false);
   for (const double gap : {0.005, 0.02, 0.04, 0.2}) {
@@ -96,15 +108,10 @@ TEST(SimGroup, IrSeesAnotherRobotAsACylinderOfItsRadius) {
       // Robot 1 faces robot 0.
       const std::array<Pose, 2> starts = {p0, Pose{q.x, q.y, p0.heading_rad + bearing + std::numbers::pi}};
       pair.reset(starts);
-      ArenaSpec with_cylinder = test::empty_arena(1.0, 1.0);
-      with_cylinder.cylinders.push_back({q, k.body_radius_m});
-      World alone(with_cylinder, k);
-      alone.reset(p0);
-      std::array<double, kIrSensors> seen{}, expected{};
-      Rng r1(1), r2(1);
+      std::array<double, kIrSensors> seen{};
+      Rng r1(1);
       pair.read_ir(seen, r1);
-      alone.read_ir(expected, r2);
-      EXPECT_EQ(seen, expected) << "gap " << gap << ", bearing " << bearing;
+      EXPECT_EQ(seen, ir_beside_cylinder(k, p0, q, k.body_radius_m)) << "gap " << gap << ", bearing " << bearing;
       if (gap < 0.04 && bearing == 0.0) {
         EXPECT_GT(*std::max_element(seen.begin(), seen.end()), 0.0);
       }
@@ -439,15 +446,10 @@ TEST(SimGroup, BodiesOfDifferentShapesMeetAndSeeEachOtherAsTheyAre) {
   World pair(test::empty_arena(1.0, 1.0), std::vector<RobotParams>{k, epuck});
   const std::array<Pose, 2> facing = {p0, Pose{q.x, q.y, p0.heading_rad + std::numbers::pi}};
   pair.reset(facing);
-  ArenaSpec with_cylinder = test::empty_arena(1.0, 1.0);
-  with_cylinder.cylinders.push_back({q, epuck.body_radius_m});
-  World alone(with_cylinder, k);
-  alone.reset(p0);
-  std::array<double, kIrSensors> seen{}, expected{};
-  Rng r1(1), r2(1);
+  std::array<double, kIrSensors> seen{};
+  Rng r1(1);
   pair.read_ir(seen, r1);
-  alone.read_ir(expected, r2);
-  EXPECT_EQ(seen, expected);
+  EXPECT_EQ(seen, ir_beside_cylinder(k, p0, q, epuck.body_radius_m));
   EXPECT_GT(*std::max_element(seen.begin(), seen.end()), 0.0);
 }
 
