@@ -106,25 +106,6 @@ std::string body_label(const eval::ExperimentSpec& spec, std::size_t i) {
   return fmt::format("body {} of the group (`{}`): ", i + 1, spec.bodies[i].name);
 }
 
-// `body2.KEY` -> (1, "KEY"): a further body's setting, by its index in ExperimentSpec::bodies.
-std::optional<std::pair<std::size_t, std::string_view>> body_key(std::string_view k) {
-  if (!k.starts_with("body")) return std::nullopt;
-  std::size_t digits = 4;
-  while (digits < k.size() && std::isdigit(static_cast<unsigned char>(k[digits]))) ++digits;
-  if (digits == 4 || digits >= k.size() || k[digits] != '.' || digits > 8) return std::nullopt;
-  const std::size_t number = std::stoul(std::string(k.substr(4, digits - 4)));
-  return std::pair{number == 0 ? std::size_t{0} : number - 1, k.substr(digits + 1)};
-}
-
-// Setting `s` of body i of the group (ExperimentSpec::bodies), its mistakes named by the body.
-bool apply_to_body(eval::ExperimentSpec& spec, std::size_t i, const RobotSetting& s, const ast::Value& value,
-                   Sink& sink) {
-  Sink body;
-  if (apply_robot_value(s, value, spec.bodies[i].params, body)) return true;
-  for (Diagnostic& d : body.items()) sink.error(d.where, body_label(spec, i) + d.message).help = std::move(d.help);
-  return false;
-}
-
 // Body i's problems (0: the first body, `robot`), reported as the first's are, a further
 // body's named; true when there are none.
 bool report_body(const eval::ExperimentSpec& spec, std::size_t i, const std::vector<sim::Problem>& problems,
@@ -192,14 +173,10 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     // Kept even where the algorithm evolves nothing yet: `--set networks=cmaes` may follow.
     return a.set(a.settings_in(spec), *name, value, sink);
   }
-  // `robot.KEY`, every body of a group alike; `body2.KEY`, a further body of a group of several
-  // alone, as the resolved settings name it (`body1` is `robot`).
-  const auto further = body_key(k);
-  if (const auto name = further ? std::optional<std::string_view>(further->second) : in_group(k, kRobotGroup)) {
-    const std::string_view group = further ? std::string_view(k).substr(0, k.size() - name->size()) : kRobotGroup;
+  if (const auto name = in_group(k, kRobotGroup)) {
     const RobotSetting* s = find_robot_setting(*name);
     if (s == nullptr) {
-      unknown(sink, key, "robot setting", *name, group, robot_setting_names(), scope);
+      unknown(sink, key, "robot setting", *name, kRobotGroup, robot_setting_names(), scope);
       return false;
     }
     if (!s->settable_later()) {
@@ -209,24 +186,17 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
           .help.push_back(fmt::format("declare `robot r = khepera {{ {} ... }}` and use it", *name));
       return false;
     }
-    if (further) {
-      const std::size_t i = further->first;
-      if (i == 0 || i >= spec.bodies.size()) {
-        sink.error(key.where, spec.bodies.size() < 2
-                                  ? fmt::format("`{}{}`: the experiment's robots have one body", scope, k)
-                                  : fmt::format("`{}{}`: the group has {} bodies, `body2` to `body{}` besides the "
-                                                "first (`robot`)",
-                                                scope, k, spec.bodies.size(), spec.bodies.size()))
-            .help.push_back(fmt::format("set the first body's as `robot.{}`", *name));
-        return false;
-      }
-      return apply_to_body(spec, i, *s, value, sink);
-    }
     // Every body of a group alike (a study's `robot.time_constant` is the robots'): bodies of
     // other shapes take the one value too. A body the value does not suit is named.
     if (!apply_robot_value(*s, value, spec.robot, sink)) return false;
     bool ok = true;
-    for (std::size_t i = 0; i < spec.bodies.size(); ++i) ok = apply_to_body(spec, i, *s, value, sink) && ok;
+    for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+      Sink body;
+      if (apply_robot_value(*s, value, spec.bodies[i].params, body)) continue;
+      ok = false;
+      for (Diagnostic& d : body.items())
+        sink.error(d.where, body_label(spec, i) + d.message).help = std::move(d.help);
+    }
     return ok;
   }
   if (const auto name = in_group(k, kArenaGroup)) {
@@ -249,7 +219,6 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     else if (const std::string g = s.substr(0, dot + 1) + "*"; std::find(groups.begin(), groups.end(), g) == groups.end())
       groups.push_back(g);
   }
-  groups.emplace_back("body2.* (a group's further bodies)");
   suggest(sink.error(key.where, fmt::format("unknown setting `{}{}`", scope, k)), k, setting_keys(),
           {.prefix = scope,
            .otherwise = fmt::format("settings: {}; and the groups {}", fmt::join(plain, ", "), fmt::join(groups, ", "))});
@@ -301,12 +270,6 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
     return;
   }
   if (spec.robots == 1) return;
-  // A further body set on its own (`--set body2.control_step=...`) still agrees with the first.
-  for (std::size_t i = 1; i < spec.bodies.size(); ++i)
-    if (const auto differ = group_difference(spec.robot, spec.bodies[i].params)) {
-      sink.error(where, group_difference_message(*differ, spec.bodies[i].name, spec.bodies[0].name));
-      return;
-    }
   // Only robot 0 takes the arena's start; a further body must fit the arena.
   sim::ArenaSpec unplaced = spec.arena;
   unplaced.fixed_start.reset();

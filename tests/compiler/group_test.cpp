@@ -331,22 +331,6 @@ TEST(Groups, AGroupOfSeveralBodiesListsThemInRobotOrder) {
   EXPECT_EQ(apply_setting(x, "robot.ir_noise", "0.1"), "");
   EXPECT_DOUBLE_EQ(x.robot_params()[4].ir.noise_sd, 0.1);
   EXPECT_DOUBLE_EQ(x.robot_params()[0].ir.noise_sd, 0.1);
-  // `body2.KEY` sets a further body alone, by the resolved settings' name; the bodies must
-  // still agree in what they share.
-  EXPECT_EQ(apply_setting(x, "body2.max_speed", "6cm/s"), "");
-  EXPECT_DOUBLE_EQ(x.robot_params()[4].motor.max_speed_mps, 0.06);
-  EXPECT_DOUBLE_EQ(x.robot_params()[1].motor.max_speed_mps, x.robot.motor.max_speed_mps);
-  EXPECT_EQ(x.resolved_settings.at("body2.max_speed"), "0.06 m/s");
-  EXPECT_NE(apply_setting(x, "body2.control_step", "200ms").find("`lit` has another `control_step` than `bot`"),
-            std::string::npos)
-      << apply_setting(x, "body2.control_step", "200ms");
-  EXPECT_NE(apply_setting(x, "body3.emission", "0").find("the group has 2 bodies"), std::string::npos);
-  EXPECT_NE(apply_setting(x, "body1.emission", "0").find("`robot.emission`"), std::string::npos)
-      << apply_setting(x, "body1.emission", "0");
-  EXPECT_NE(apply_setting(x, "body2.emision", "0").find("unknown robot setting"), std::string::npos)
-      << apply_setting(x, "body2.emision", "0");
-  eval::ExperimentSpec alone = first_experiment(script("robot bot x 3"), "g.esc");
-  EXPECT_NE(apply_setting(alone, "body2.emission", "1").find("one body"), std::string::npos);
   // Two bodies alike are the group of one body, to the bit.
   const std::string same = "robot twin = bot { }\n";
   EXPECT_EQ(evaluate(first_experiment(same + script("robot bot x 2, twin x 2"), "g.esc")).fitness,
