@@ -310,13 +310,12 @@ bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::Robot
       continue;
     }
     if (const auto differ = group_difference(first, body.params)) {
-      const RobotSetting& s = *find_robot_setting(differ->key);
       Diagnostic& d = sink_.error(
           m.ref.where, fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share the sensors "
                                    "their controller reads, their drive and their control step",
                                    m.ref.text, differ->counted ? "another number of" : "another", differ->key,
                                    item.refs[0].text, differ->other, differ->first));
-      if (const auto set = body.written.find(s.name); set != body.written.end())
+      if (const auto set = body.written.find(differ->key); set != body.written.end())
         d.notes.emplace_back(set->second.where, fmt::format("`{}`'s `{}` is set here", m.ref.text, differ->key));
       d.help.push_back(
           differ->counted

@@ -48,7 +48,7 @@ class ExperimentLowering {
   // `formation ...`: where the group's robots start, read by the formation's setting rows.
   bool lower_formation(const ast::ExpItem& item, eval::ExperimentSpec& x);
   // `robot khepera x 2, lit_khepera x 3`: the group's bodies after the first (`first`, its
-  // robots counted already), each of the first's shape and sensors, and their robots.
+  // robots counted already), each reading the first's sensors (group_difference), and their robots.
   bool lower_bodies(const ast::ExpItem& item, const sim::RobotParams& first, eval::ExperimentSpec& x);
   // Gives each distinct action or behavior of the compared controllers an experiment-wide id
   // (control::Choice::id; x.choice_ids of them) and returns the names that read them.

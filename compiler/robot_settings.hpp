@@ -63,9 +63,10 @@ inline constexpr RenamableSensors kRenamableSensors[] = {
 
 // How a group's further body differs from its first where the bodies of one group must agree,
 // in this order: the sensors one controller reads (the number of each kind, then the IR and
-// ground sensors' names where there are some), the drive, the control step and the substeps. Where each sensor sits, the body's
-// radius and outline, speeds, ranges, curves and noise may differ: every robot is stepped and
-// sensed with its own body, and the replay draws each one's shape.
+// ground sensors' names where there are some), the drive, the control step and the substeps.
+// Where each sensor sits, the body's radius and outline, speeds, ranges, curves and noise may
+// differ: every robot is stepped and sensed with its own body, and the replay draws each one's
+// shape.
 struct BodyDifference {
   std::string key;             // the robot setting
   bool counted = false;        // the number of sensors `key` lists differs, not its text
