@@ -93,6 +93,25 @@ TEST(Study, AConditionGivesItsExperimentsResultsWhateverElseTheStudyHolds) {
   EXPECT_EQ(condition(s_all, "no_inertia")["controllers"], read_json(off / "summary.json")["controllers"]);
 }
 
+TEST(Study, AKeyEveryConditionResolvesAlikeIsSetForTheWholeStudy) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/alike_study.esc";
+  const std::string shorter = " --set generations=1 --runs 1 --set epochs=1 --out ";
+  for (const std::string study : {"alike", "alike_by_default"}) {
+    const fs::path out = scratch("study-alike-" + study);
+    const Outcome o = esc("run " + script + " --experiment " + study + shorter + out.string());
+    ASSERT_EQ(o.status, 0) << o.output;
+    for (const json& c : read_json(out / "summary.json")["conditions"])
+      EXPECT_EQ(c["controllers"]["CC"]["runs"][0]["best"].size(), 1u) << c.dump();
+  }
+  // What the conditions resolve apart stays refused.
+  const fs::path out = scratch("study-alike-apart");
+  const Outcome apart = esc("run " + script + " --experiment alike --set robot.inertia=on --out " + out.string());
+  EXPECT_EQ(apart.status, 1);
+  EXPECT_NE(apart.output.find("study `alike` varies `robot.inertia` across its conditions"), std::string::npos)
+      << apart.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Study, ThreadsAndRunsAtOnceChangeNothing) {
   const fs::path a = scratch("study-threads-1"), b = scratch("study-threads-2");
   const std::string args = "run " + studies() + " --experiment tiny_study_fewer --generations 3 --out ";
