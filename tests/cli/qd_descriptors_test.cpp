@@ -1,7 +1,9 @@
 // Descriptors folded over every step (examples/qd_descriptors.esc): a short MAP-Elites run
 // over mean speed and the fraction of steps near a wall, and a CVT over sampled positions,
 // whose archives agree with replays: `esc replay --member CELL` measures each elite again in
-// its own evaluation and finds the descriptors stored with it, bit for bit.
+// its own evaluation and finds the descriptors stored with it, bit for bit. The same for a
+// group's descriptors (experiments/examples/group_repertoire.esc: five robots' spread and
+// how far their centroid moved).
 #include <algorithm>
 #include <cstdlib>
 #include <map>
@@ -19,6 +21,7 @@ namespace {
 using namespace cli_test;
 
 const std::string kExample = std::string(ESC_SOURCE_DIR) + "/examples/qd_descriptors.esc";
+const std::string kGroupExample = std::string(ESC_SOURCE_DIR) + "/experiments/examples/group_repertoire.esc";
 
 std::size_t column(const std::vector<std::string>& header, const std::string& name) {
   const auto it = std::find(header.begin(), header.end(), name);
@@ -39,9 +42,10 @@ std::vector<double> replayed_descriptors(const std::string& output) {
   return values;
 }
 
-void archive_agrees_with_replays(const std::string& experiment, const std::vector<std::string>& names) {
+void archive_agrees_with_replays(const std::string& experiment, const std::vector<std::string>& names,
+                                 const std::string& script = kExample) {
   const fs::path dir = scratch("qd-" + experiment);
-  const Outcome ran = esc("run " + kExample + " --experiment " + experiment +
+  const Outcome ran = esc("run " + script + " --experiment " + experiment +
                           " --runs 1 --generations 3 --set epochs=1 --set steps=60 --out " + dir.string());
   ASSERT_EQ(ran.status, 0) << ran.output;
   const Outcome archive = esc("export " + dir.string() + " --table archive");
@@ -85,6 +89,10 @@ TEST(QdDescriptors, SampledPositionsAgreeWithReplays) {
     names.push_back("path_y" + std::to_string(i));
   }
   archive_agrees_with_replays("paths", names);
+}
+
+TEST(QdDescriptors, AGroupsSpreadAndCentroidAgreeWithReplays) {
+  archive_agrees_with_replays("group_repertoire", {"apart", "travelled"}, kGroupExample);
 }
 
 }  // namespace

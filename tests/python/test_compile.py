@@ -54,7 +54,7 @@ def test_settings_some_experiments_refuse_leave_the_others_usable():
     with pytest.raises(esc.Error, match="experiment `leader_aggregation`: robots=3: .*several bodies"):
         esc.ParallelEnv(script, "leader_aggregation")
     with pytest.raises(esc.Error, match="several bodies"):
-        script.controller("leader_aggregation", "seeing")
+        script.controller("leader_aggregation", "cc")
     assert esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"epochs": 2}).refused == {}
     # Refused by every experiment and by every study (one condition is enough): an error.
     two = 'import "lib/khepera.esc"\narena a { size 1m x 1m }\nfitness f { step: forward_speed }\n' \
