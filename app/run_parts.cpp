@@ -1,6 +1,8 @@
 #include "app/run_parts.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -20,11 +22,10 @@ std::string trimmed(std::string_view t) {
   return std::string(t);
 }
 
-// Refuses an override of a key no experiment has (once, not for the first condition), of a
-// key the study varies, or of one it gives to an experiment its conditions depend on
-// (`energy.generations 60`: the override would replace that too).
-void vary_nothing_given(const Overrides& o, const eval::StudySpec& study) {
-  const std::vector<std::string> varied = study.varied_keys();
+// Refuses an override of a key no experiment has (once, not for the first condition), or of
+// one the study gives to an experiment its conditions depend on (`energy.generations 60`: the
+// override would replace that too).
+void refuse_unknown_or_given(const Overrides& o, const eval::StudySpec& study) {
   const auto given = [&](const std::string& k) -> const eval::DependencySetting* {
     for (const eval::ConditionSpec& c : study.conditions)
       for (const eval::DependencySetting& d : c.experiment.dependency_settings)
@@ -43,20 +44,75 @@ void vary_nothing_given(const Overrides& o, const eval::StudySpec& study) {
         continue;
       }
     }
-    if (const eval::DependencySetting* d = given(k)) {
+    if (const eval::DependencySetting* d = given(k))
       problems.add(fmt::format("{}={}: study `{}` gives `{}` to experiment `{}` in its conditions ({}.{} {}); the "
                                "command line's value would replace it (to shorten such a study, run its experiments "
                                "with --experiment)",
                                k, trimmed(value), study.name, k, d->path.back(), fmt::join(d->path, "."), d->key,
                                d->value));
-      continue;
-    }
-    if (std::find(varied.begin(), varied.end(), k) == varied.end()) continue;
-    problems.add(fmt::format("{}={}: study `{}` varies `{}` across its conditions; one value for all of them would "
-                             "flatten it (to run one condition with another value, run its experiment with "
-                             "--experiment and --set)",
-                             k, trimmed(value), study.name, k));
   }
+  problems.throw_if_any(ErrorKind::Setting);
+}
+
+// A resolved setting's value, or none where the experiment does not resolve it (`body2.X`
+// only where body 2 differs from the first, `cmaes.*` only where CMA-ES evolves).
+std::optional<std::string> resolved(const eval::ExperimentSpec& e, const std::string& key) {
+  const auto it = e.resolved_settings.find(key);
+  return it == e.resolved_settings.end() ? std::nullopt : std::optional(it->second);
+}
+
+// Refuses overrides that would make two conditions alike in a resolved setting the study makes
+// them differ in: one value for every condition would flatten what it compares without saying
+// so. Two conditions of one experiment differ only by the study, in every key, the key given
+// or another (`robot.emission` sets every body of a group, conditions apart in
+// `body2.emission`; `generations` sets GP's too; `networks` drops `cmaes.*`). Conditions of
+// two experiments differ by their declarations too (`generations` 100 and 20): there, only in
+// the keys some condition sets. A key every condition sets alike (`generations 50` in each)
+// flattens nothing and may be given.
+void refuse_flattening(const Overrides& o, const eval::StudySpec& study) {
+  std::set<std::string> set_by_conditions;
+  for (const eval::ConditionSpec& c : study.conditions)
+    for (const eval::ConditionSetting& s : c.settings) set_by_conditions.insert(s.key);
+  std::vector<eval::ExperimentSpec> after;
+  try {
+    for (const eval::ConditionSpec& c : study.conditions) {
+      after.push_back(c.experiment);
+      apply_settings(o, after.back());
+    }
+  } catch (const Error&) {
+    return;   // applying them for real reports it, naming the condition
+  }
+  const std::vector<std::pair<std::string, std::string>> given = setting_pairs(o);
+  const auto given_as = [&](const std::string& key) {
+    for (const auto& [k, v] : given)
+      if (trimmed(k) == key) return fmt::format("{}={}", key, trimmed(v));
+    std::vector<std::string> all;
+    for (const auto& [k, v] : given) all.push_back(fmt::format("{}={}", trimmed(k), trimmed(v)));
+    return fmt::format("{}", fmt::join(all, " "));
+  };
+  Problems problems;
+  std::vector<std::string> flattened;
+  for (std::size_t i = 0; i < study.conditions.size(); ++i)
+    for (std::size_t j = i + 1; j < study.conditions.size(); ++j) {
+      const eval::ExperimentSpec& a = study.conditions[i].experiment;
+      const eval::ExperimentSpec& b = study.conditions[j].experiment;
+      std::set<std::string> keys = set_by_conditions;
+      if (a.name == b.name) {
+        for (const auto& [k, v] : a.resolved_settings) keys.insert(k);
+        for (const auto& [k, v] : b.resolved_settings) keys.insert(k);
+      }
+      for (const std::string& key : keys) {
+        const auto va = resolved(a, key), vb = resolved(b, key);
+        if (va == vb || resolved(after[i], key) != resolved(after[j], key)) continue;
+        if (std::find(flattened.begin(), flattened.end(), key) != flattened.end()) continue;
+        flattened.push_back(key);
+        problems.add(fmt::format("{}: study `{}` varies `{}` across its conditions (`{}`: {}, `{}`: {}); one value "
+                                 "for all of them would flatten it (to run one condition with another value, run its "
+                                 "experiment with --experiment and --set)",
+                                 given_as(key), study.name, key, study.conditions[i].name, va.value_or("none"),
+                                 study.conditions[j].name, vb.value_or("none")));
+      }
+    }
   problems.throw_if_any(ErrorKind::Setting);
 }
 
@@ -69,7 +125,8 @@ void apply_to_experiment(const Overrides& o, eval::ExperimentSpec& spec, std::st
 }
 
 void apply_to_study(const Overrides& o, eval::StudySpec& study) {
-  vary_nothing_given(o, study);
+  refuse_unknown_or_given(o, study);
+  refuse_flattening(o, study);
   apply_to_conditions(o, study);
 }
 

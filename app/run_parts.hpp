@@ -18,9 +18,10 @@ namespace esc::app {
 // (`where`: `condition `x`: `). Throws Error.
 void apply_to_experiment(const Overrides& o, eval::ExperimentSpec& spec, std::string_view where = {});
 
-// Refuses overrides of a key the study varies (one value for every condition would flatten
-// it) or gives to an experiment its conditions depend on; then applies them to every
-// condition. Throws Error with every problem.
+// Refuses overrides that would make two conditions alike in a resolved setting they differ in
+// (one value for every condition would flatten the study), and those of a key the study gives
+// to an experiment its conditions depend on; then applies them to every condition. Throws
+// Error with every problem.
 void apply_to_study(const Overrides& o, eval::StudySpec& study);
 // The same without the refusal: the overrides a study was started with, on resume.
 void apply_to_conditions(const Overrides& o, eval::StudySpec& study);

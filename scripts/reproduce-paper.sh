@@ -232,6 +232,12 @@ for name in "${campaigns[@]}"; do
     fi
   fi
   echo "== $name ($mode): $(grep -v '^#' "$command" | tr -s ' \\\n' ' ')"
+  # Before hours of running, not after them.
+  if [ "$mode" = full ] && [ "$write" != 1 ] && [ ! -f "$dir/summary.json" ]; then
+    echo "FAILED $name: nothing committed to compare with (run it with --write first)"
+    failed=1
+    continue
+  fi
   # A full-length campaign runs for hours: where to watch it.
   if [ "$mode" = full ]; then echo "   esc's progress: $scratch/$name.log"; fi
   start=$(date +%s%N)
@@ -246,9 +252,6 @@ for name in "${campaigns[@]}"; do
     echo "ok     $name ran in ${seconds} s"
   elif [ "$write" = 1 ]; then
     if store_results "$name" "$OUT" "$seconds"; then echo "stored $name in $dir (${seconds} s)"; else failed=1; fi
-  elif [ ! -f "$dir/summary.json" ]; then
-    echo "FAILED $name: nothing committed to compare with (run it with --write first)"
-    failed=1
   elif cmp -s "$OUT/summary.json" "$dir/summary.json"; then
     echo "ok     $name reproduces its committed summary.json byte for byte (${seconds} s)"
   else

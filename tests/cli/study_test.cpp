@@ -93,23 +93,44 @@ TEST(Study, AConditionGivesItsExperimentsResultsWhateverElseTheStudyHolds) {
   EXPECT_EQ(condition(s_all, "no_inertia")["controllers"], read_json(off / "summary.json")["controllers"]);
 }
 
-TEST(Study, AKeyEveryConditionResolvesAlikeIsSetForTheWholeStudy) {
+TEST(Study, ASettingThatFlattensNothingIsSetForTheWholeStudy) {
   const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/alike_study.esc";
   const std::string shorter = " --set generations=1 --runs 1 --set epochs=1 --out ";
-  for (const std::string study : {"alike", "alike_by_default"}) {
-    const fs::path out = scratch("study-alike-" + study);
+  const fs::path alike = scratch("study-alike"), by_default = scratch("study-alike-by-default");
+  for (const auto& [study, out] : {std::pair{"alike", alike}, std::pair{"alike_by_default", by_default}}) {
     const Outcome o = esc("run " + script + " --experiment " + study + shorter + out.string());
     ASSERT_EQ(o.status, 0) << o.output;
     for (const json& c : read_json(out / "summary.json")["conditions"])
       EXPECT_EQ(c["controllers"]["CC"]["runs"][0]["best"].size(), 1u) << c.dump();
   }
-  // What the conditions resolve apart stays refused.
-  const fs::path out = scratch("study-alike-apart");
-  const Outcome apart = esc("run " + script + " --experiment alike --set robot.inertia=on --out " + out.string());
-  EXPECT_EQ(apart.status, 1);
-  EXPECT_NE(apart.output.find("study `alike` varies `robot.inertia` across its conditions"), std::string::npos)
-      << apart.output;
-  EXPECT_FALSE(fs::exists(out));
+  // What the study compares is still compared.
+  EXPECT_EQ(read_json(alike / "inertia" / "settings.json")["settings"]["robot.inertia"], "on");
+  EXPECT_EQ(read_json(alike / "no_inertia" / "settings.json")["settings"]["robot.inertia"], "off");
+}
+
+TEST(Study, ASettingThatMakesConditionsAlikeIsRefusedNamingWhatTheyDifferIn) {
+  const std::string data = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/";
+  struct Case {
+    std::string script, study, set, varied;
+  };
+  for (const Case& c : std::vector<Case>{
+           // The key itself.
+           {"alike_study.esc", "alike", "robot.inertia=on", "`robot.inertia` across its conditions (`inertia`: on, "
+                                                            "`no_inertia`: off)"},
+           // robot.KEY sets every body; the conditions differ in the second's.
+           {"alike_study.esc", "leader_or_all_lit", "robot.emission=0", "`body2.emission` across its conditions"},
+           // `networks es` drops CMA-ES and its settings.
+           {"alike_study.esc", "cmaes_settings", "networks=es", "`cmaes.lambda` across its conditions"},
+           // `generations` sets GP's too.
+           {"alike_gp_study.esc", "gp_generations", "generations=2", "`gp.generations` across its conditions"}}) {
+    const fs::path out = scratch("study-flattened-" + c.study);
+    const Outcome o = esc("run " + data + c.script + " --experiment " + c.study + " --set " + c.set + " --out " +
+                          out.string());
+    EXPECT_EQ(o.status, 1) << c.study << "\n" << o.output;
+    EXPECT_NE(o.output.find(c.set + ": study `" + c.study + "` varies " + c.varied), std::string::npos)
+        << c.study << "\n" << o.output;
+    EXPECT_FALSE(fs::exists(out)) << c.study;
+  }
 }
 
 TEST(Study, ThreadsAndRunsAtOnceChangeNothing) {
