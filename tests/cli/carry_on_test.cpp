@@ -158,8 +158,11 @@ TEST(CarryOn, AStudyCarriedOnIsTheLongerStudy) {
 // conditions, a plain resume takes all three to it, not the second alone.
 TEST(CarryOn, AStudyCarriedOnAndKilledIsFinishedByAPlainResume) {
   const fs::path dir = scratch("carry-on-study-killed");
+  // Epochs of up to 2000 steps: a condition's 36 generations take about a second, several
+  // times a poll of `esc export` (about 0.2 s); with tiny's 80 steps the second condition
+  // passed in less than one poll, and a loaded machine killed the carry-on in the third.
   const std::string args = "run " + std::string(ESC_SOURCE_DIR) + "/tests/cli/data/tiny_study.esc --experiment "
-                           "tiny_study_fewer --runs 1 --threads 1 ";
+                           "tiny_study_fewer --runs 1 --threads 1 --set steps=2000 ";
   const Outcome longer = esc(args + "--generations 20 --out " + (dir / "twenty").string());
   ASSERT_EQ(longer.status, 0) << longer.output;
   const fs::path killed = dir / "killed";
@@ -169,7 +172,7 @@ TEST(CarryOn, AStudyCarriedOnAndKilledIsFinishedByAPlainResume) {
   // then killed in the second.
   const pid_t child = spawn_esc({"run", "--resume", killed.string(), "--generations", "20", "--threads", "1"});
   ASSERT_GE(child, 0);
-  const Killed k = kill_when_committed(child, killed, 12 + 36 + 6);
+  const Killed k = kill_when_committed(child, killed, 12 + 36 + 1);
   ASSERT_TRUE(k.still_running) << "the carry-on finished before it could be killed";
   ASSERT_LT(committed_generations(killed), 12 + 2 * 36);
   const Outcome resumed = esc("run --resume " + killed.string());
