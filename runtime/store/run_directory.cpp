@@ -263,6 +263,8 @@ void RunDirectory::write_best(const std::string& controller, const std::string& 
                                  {"evaluation_seed", seed_json(evaluation_seed)},
                                  {"genome", run.best_genome}};
   if (!run.best_tree.empty()) best["tree"] = run.best_tree;
+  // The genome holds a network per role, one after the other (docs/groups.md, "Roles").
+  if (partial_.roles > 1) best["roles"] = partial_.roles;
   best["checksum"] = genome_checksum(controller, run.run + 1, run.best_genome, run.best_fitness, evaluation_seed,
                                      run.best_tree);
   write_atomically(run_file(controller, run.run, ".best.json"), best.dump(1) + "\n");

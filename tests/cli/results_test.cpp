@@ -111,6 +111,7 @@ TEST(Results, RolesEvolvedTogetherAreTestedWithAnotherGroupSize) {
   EXPECT_EQ(summary["controllers"]["CC"]["genome_size"], 2 * 46);   // CC: 8-4-2, 46 weights a role
   const nlohmann::json best = read_json(six / "CC" / "run-01.best.json");
   EXPECT_EQ(best["genome"].size(), 2U * 46U);
+  EXPECT_EQ(best["roles"], 2);
   const fs::path replayed = scratch("roles-replay");
   const Outcome replay = esc("replay " + six.string() + " --controller CC --run 1 --out " + replayed.string());
   EXPECT_EQ(replay.status, 0) << replay.output;
