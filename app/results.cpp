@@ -12,6 +12,7 @@
 #include "runtime/evo/registry.hpp"
 #include "compiler/names.hpp"
 #include "runtime/report/html_report.hpp"
+#include "runtime/report/comparison_table.hpp"
 #include "runtime/report/success_table.hpp"
 #include "runtime/store/export.hpp"
 #include "runtime/store/members_export.hpp"
@@ -52,7 +53,7 @@ std::vector<store::StoredDirectory> load_all(const std::vector<fs::path>& dirs, 
 // directory is read.
 void check_table(std::string_view table) {
   if (table.empty() || std::find(std::begin(kTables), std::end(kTables), table) != std::end(kTables)) return;
-  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front, archive, success or topology",
+  std::string message = fmt::format("no table `{}`: a directory exports generations, usage, metrics, front, archive, success, comparisons or topology",
                                     table);
   if (const auto near = compiler::closest(std::string(table), {std::begin(kTables), std::end(kTables)}))
     message += fmt::format("; did you mean `{}`?", *near);
@@ -146,6 +147,10 @@ std::string table_text(const std::vector<store::StoredDirectory>& all, std::stri
   if (table == "success") {
     const std::vector<report::SuccessRow> rows = report::success_rows(all);
     return csv ? report::success_csv(rows) : report::success_json(rows).dump(2) + "\n";
+  }
+  if (table == "comparisons") {
+    const std::vector<report::ComparisonRow> rows = report::comparison_rows(all);
+    return csv ? report::comparisons_csv(rows) : report::comparisons_json(rows).dump(2) + "\n";
   }
   if (table == "front" || table == "archive")
     return csv ? store::members_csv(all, table) : store::members_json(all, table).dump(2) + "\n";

@@ -15,8 +15,11 @@ namespace esc::app {
 
 // The tables a directory exports: "generations" (per-generation statistics; the default),
 // "usage" (steps each behavior acted), "metrics" (what each run's optimizer reported),
-// "front" and "archive" (what NSGA-II, MAP-Elites and novelty search kept, per generation).
-inline constexpr std::string_view kTables[] = {"generations", "usage", "metrics", "front", "archive", "success", "topology"};
+// "front" and "archive" (what NSGA-II, MAP-Elites and novelty search kept, per generation),
+// "success" and "comparisons" (the end table's tests, a row per pair), "topology" (NEAT's
+// networks).
+inline constexpr std::string_view kTables[] = {"generations", "usage",   "metrics",    "front",
+                                                "archive",     "success", "comparisons", "topology"};
 
 // Where a directory's stored run is: the directory itself when it holds esc.db, else its
 // parent when that does (a study's STUDY/CONDITION, or a controller's files), `condition`

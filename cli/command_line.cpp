@@ -87,6 +87,8 @@ CLI::App* add_export(CLI::App& app, ExportOptions& o) {
                          "run's optimizer reported (CMA-ES's sigma, ...) per generation; front: NSGA-II's first front "
                          "per generation; archive: MAP-Elites' and novelty search's archive changes per generation; "
                          "success: Fisher's and the censored Mann-Whitney test of each pair the end table compares; "
+                         "comparisons: the end table's tests of best fitness (Welch, Mann-Whitney, A12, "
+                         "Brown-Forsythe, Holm), a row per pair; "
                          "topology: the nodes and links of each run's best NEAT network and of its final front's or archive's (tidy tables)")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(app::kTables), std::end(app::kTables))));
   command->add_option("--out", o.out, "output file (default: standard output)");

@@ -109,7 +109,9 @@ class Run:
         per generation: the archive after generation g is
         `t[t.generation <= g].groupby(["run", "cell"]).last()`), "success" (Fisher's exact
         test and the censored Mann-Whitney test of every pair the end table compares, for an
-        experiment that declares `success when`) or "topology" (the nodes and links of each
+        experiment that declares `success when`), "comparisons" (the end table's tests of the
+        runs' best fitness, a row per pair: Welch, Mann-Whitney, A12, Brown-Forsythe, each p
+        with Holm's adjustment) or "topology" (the nodes and links of each
         run's best NEAT network and of its final front's or archive's). ValueError for
         another name.
 

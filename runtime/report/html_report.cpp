@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/report/comparison_table.hpp"
 #include "runtime/report/comparisons.hpp"
 #include "runtime/report/generalization.hpp"
 #include "runtime/report/markup.hpp"
@@ -237,7 +238,6 @@ json transfers_json(const std::vector<eval::RunResult>& runs) {
 
 json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
   json controllers = json::array();
-  std::vector<std::vector<double>> finals;
   json summary = json::array();
   for (const store::StoredController& c : e.controllers) {
     json runs = json::array();
@@ -259,7 +259,6 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
     json row = {{"controller", c.name}};
     row.update(summary_json(summarise(final_best)));
     summary.push_back(std::move(row));
-    finals.push_back(std::move(final_best));
     controllers.push_back({{"name", c.name}, {"architecture", c.architecture}, {"genome_size", c.genome_size},
                            {"head", c.head}, {"actions", c.actions}, {"runs", runs}, {"curves", curves},
                            {"unfinished_runs", c.in_progress.size()}, {"usage", usage},
@@ -267,7 +266,7 @@ json experiment_json(const store::StoredExperiment& e, const ReportOptions& o) {
                            {"transfers", transfers_json(c.finished)}, {"replay", replay_json(c, o)}});
   }
   json pairs = json::array();
-  for (const Comparison& c : compare(finals, all_pairs(finals.size())))
+  for (const Comparison& c : experiment_comparisons(e))
     pairs.push_back(pair_json(e.controllers[c.a].name, e.controllers[c.b].name, c));
   json j = {{"name", e.name},
             {"seed", store::seed_json(e.seed)},

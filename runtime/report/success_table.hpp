@@ -1,14 +1,13 @@
 #pragma once
 // `esc export DIR... --table success`: every comparison of success that the end table and
-// the report show, one row per pair (the same pairs and Holm families: within an experiment
-// every pair of its controllers; in a study, study_table.hpp's pairs), so that Fisher's exact
-// test and the censored Mann-Whitney test reach a paper's table without being copied from a
-// page. Directories whose experiments declare no `success when` have no rows.
+// the report show (pair_rows.hpp), Fisher's exact test and the censored Mann-Whitney test.
+// Directories whose experiments declare no `success when` have no rows.
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "runtime/report/pair_rows.hpp"
 #include "runtime/report/success_comparisons.hpp"
 #include "runtime/store/results_db.hpp"
 
@@ -18,12 +17,7 @@ inline constexpr const char* kSuccessColumns =
     "study,experiment,condition_a,controller_a,condition_b,controller_b,successes_a,runs_a,successes_b,runs_b,"
     "fisher_p,fisher_p_holm,odds_ratio,censored_u,censored_p,censored_p_holm,censored_at";
 
-struct SuccessRow {
-  std::string study;        // empty for a plain experiment
-  std::string experiment;   // the plain experiment; empty in a study (its conditions may differ)
-  std::string condition_a, controller_a, condition_b, controller_b;   // conditions empty outside a study
-  SuccessComparison test;
-};
+using SuccessRow = PairRow<SuccessComparison>;
 
 // A plain experiment's comparisons: every pair of its controllers, one family per test; none
 // without a success test.

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -131,6 +132,51 @@ TEST(Study, ASettingThatMakesConditionsAlikeIsRefusedNamingWhatTheyDifferIn) {
         << c.study << "\n" << o.output;
     EXPECT_FALSE(fs::exists(out)) << c.study;
   }
+}
+
+// `esc export --table comparisons` writes the end table's tests, pair by pair, as computed:
+// each row's p values and A12 are those `esc run` printed, rounded as it prints them.
+TEST(Study, ExportedComparisonsAreTheEndTables) {
+  const fs::path out = scratch("study-comparisons");
+  const Outcome o = esc("run " + studies() + " --experiment tiny_study_fewer --runs 3 --generations 2 --set epochs=1 "
+                        "--out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const Outcome table = esc("export " + out.string() + " --table comparisons");
+  ASSERT_EQ(table.status, 0) << table.output;
+  const auto rows = csv_rows(table.output);
+  ASSERT_EQ(rows.size(), 1u + 9u) << table.output;   // 3 conditions x 1 pair, 2 controllers x 3 pairs
+  const std::vector<std::string>& header = rows.front();
+  const auto at = [&](const std::vector<std::string>& row, const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(it, header.end()) << name;
+    return row.at(static_cast<std::size_t>(it - header.begin()));
+  };
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    EXPECT_EQ(at(row, "study"), "tiny_study_fewer");
+    const std::string label = at(row, "condition_a") == at(row, "condition_b")
+                                  ? at(row, "condition_a") + ": " + at(row, "controller_a") + " vs " + at(row, "controller_b")
+                                  : at(row, "controller_a") + ": " + at(row, "condition_a") + " vs " + at(row, "condition_b");
+    // The end table's line: label, Welch t, df, p, p Holm, U, p, p Holm, A12, ...
+    const std::size_t line = o.output.find("\n" + label + " ");
+    ASSERT_NE(line, std::string::npos) << label << "\n" << o.output;
+    std::istringstream printed(o.output.substr(line + 1 + label.size()));
+    double t = 0, df = 0, p = 0, p_holm = 0, u = 0, mw_p = 0, mw_holm = 0, a12 = 0;
+    printed >> t >> df >> p >> p_holm >> u >> mw_p >> mw_holm >> a12;
+    EXPECT_NEAR(std::stod(at(row, "welch_t")), t, 5e-4) << label;
+    EXPECT_NEAR(std::stod(at(row, "welch_p_holm")), p_holm, 5e-5) << label;
+    EXPECT_NEAR(std::stod(at(row, "mann_whitney_p")), mw_p, 5e-5) << label;
+    EXPECT_NEAR(std::stod(at(row, "a12")), a12, 5e-3) << label;
+  }
+  // A plain experiment: one pair, named by its experiment; the JSON holds the same rows.
+  const fs::path plain = scratch("comparisons-plain");
+  ASSERT_EQ(esc("run " + tiny() + " --runs 3 --generations 2 --set epochs=1 --out " + plain.string()).status, 0);
+  const json j = json::parse(esc("export " + plain.string() + " --table comparisons --format json").output);
+  ASSERT_EQ(j.size(), 1u) << j.dump();
+  EXPECT_EQ(j[0]["experiment"], "tiny");
+  EXPECT_EQ(j[0]["controller_a"], "CC");
+  EXPECT_EQ(j[0]["controller_b"], "SC");
+  EXPECT_TRUE(j[0]["mann_whitney_exact"].is_boolean());
 }
 
 TEST(Study, ThreadsAndRunsAtOnceChangeNothing) {

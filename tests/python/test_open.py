@@ -24,7 +24,7 @@ def export(directory, table: str) -> str:
     return run_esc("export", directory, *named, "--format", "csv").stdout
 
 
-@pytest.mark.parametrize("table", ["generations", "usage", "metrics"])
+@pytest.mark.parametrize("table", ["generations", "usage", "metrics", "comparisons"])
 def test_a_table_equals_esc_export(homing_run, table):
     run = esc.open(str(homing_run))
     frame = run.table(table)
@@ -87,6 +87,9 @@ def test_a_studys_table_conditions_and_best(study_run):
     pd.testing.assert_frame_equal(frame, pd.read_csv(io.StringIO(export(study_run, "generations")),
                                                      float_precision="round_trip"), check_exact=True)
     assert set(frame["condition"]) == {"inertia_on", "inertia_off"}
+    # The end table's pairs: cc against sc in each condition, each controller across the two.
+    pairs = run.table("comparisons")
+    assert len(pairs) == 4 and set(pairs["study"]) == {"tiny"}
     stored = best_json(study_run / "inertia_off", "sc")
     assert run.best("sc", 1, condition="inertia_off").fitness == stored["fitness"]
     with pytest.raises(ValueError, match="name a condition"):

@@ -1,0 +1,59 @@
+#include "runtime/report/comparison_table.hpp"
+
+#include <fmt/format.h>
+
+namespace esc::report {
+
+std::vector<Comparison> experiment_comparisons(const store::StoredExperiment& e) {
+  std::vector<std::vector<double>> best;
+  for (const store::StoredController& c : e.controllers) {
+    best.emplace_back();
+    for (const auto& r : c.finished) best.back().push_back(r.best_fitness);
+  }
+  return compare(best, all_pairs(best.size()));
+}
+
+std::vector<ComparisonRow> comparison_rows(const std::vector<store::StoredDirectory>& directories) {
+  return pair_rows<Comparison>(
+      directories, [](const StudyTable& t) -> const auto& { return t.comparisons; }, experiment_comparisons);
+}
+
+std::string comparisons_csv(const std::vector<ComparisonRow>& rows) {
+  std::string out = std::string(kComparisonColumns) + "\n";
+  for (const ComparisonRow& r : rows) {
+    const Comparison& c = r.test;
+    out += pair_names_csv(r) +
+           fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number_text(c.welch.statistic),
+                       number_text(c.welch.df), number_text(c.welch.p_value), number_text(c.welch_p_holm),
+                       number_text(c.mann_whitney.statistic), number_text(c.mann_whitney.p_value),
+                       c.mann_whitney.exact ? 1 : 0, number_text(c.mann_whitney_p_holm), number_text(c.a12),
+                       number_text(c.sd_ratio), number_text(c.spread.statistic), number_text(c.spread.p_value),
+                       number_text(c.spread_p_holm));
+  }
+  return out;
+}
+
+nlohmann::ordered_json comparisons_json(const std::vector<ComparisonRow>& rows) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const ComparisonRow& r : rows) {
+    const Comparison& c = r.test;
+    nlohmann::ordered_json row = pair_names_json(r);
+    row.update(nlohmann::ordered_json{{"welch_t", number_json(c.welch.statistic)},
+                                      {"welch_df", number_json(c.welch.df)},
+                                      {"welch_p", number_json(c.welch.p_value)},
+                                      {"welch_p_holm", number_json(c.welch_p_holm)},
+                                      {"mann_whitney_u", number_json(c.mann_whitney.statistic)},
+                                      {"mann_whitney_p", number_json(c.mann_whitney.p_value)},
+                                      {"mann_whitney_exact", c.mann_whitney.exact},
+                                      {"mann_whitney_p_holm", number_json(c.mann_whitney_p_holm)},
+                                      {"a12", number_json(c.a12)},
+                                      {"sd_ratio", number_json(c.sd_ratio)},
+                                      {"brown_forsythe_w", number_json(c.spread.statistic)},
+                                      {"brown_forsythe_p", number_json(c.spread.p_value)},
+                                      {"brown_forsythe_p_holm", number_json(c.spread_p_holm)}});
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+}  // namespace esc::report
