@@ -4,15 +4,6 @@
 
 namespace esc::report {
 
-std::vector<Comparison> experiment_comparisons(const store::StoredExperiment& e) {
-  std::vector<std::vector<double>> best;
-  for (const store::StoredController& c : e.controllers) {
-    best.emplace_back();
-    for (const auto& r : c.finished) best.back().push_back(r.best_fitness);
-  }
-  return compare(best, all_pairs(best.size()));
-}
-
 std::vector<ComparisonRow> comparison_rows(const std::vector<store::StoredDirectory>& directories) {
   return pair_rows<Comparison>(
       directories, [](const StudyTable& t) -> const auto& { return t.comparisons; }, experiment_comparisons);

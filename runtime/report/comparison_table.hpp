@@ -21,10 +21,6 @@ inline constexpr const char* kComparisonColumns =
 
 using ComparisonRow = PairRow<Comparison>;
 
-// A plain experiment's comparisons of its runs' best fitness: every pair of its controllers,
-// one family.
-[[nodiscard]] std::vector<Comparison> experiment_comparisons(const store::StoredExperiment& e);
-
 [[nodiscard]] std::vector<ComparisonRow> comparison_rows(const std::vector<store::StoredDirectory>& directories);
 // Header then rows: numbers with 17 significant digits, an undefined test's as `nan`,
 // `mann_whitney_exact` 1 where U's p is from its exact distribution, else 0.

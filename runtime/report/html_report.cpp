@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "runtime/report/comparison_table.hpp"
 #include "runtime/report/comparisons.hpp"
 #include "runtime/report/generalization.hpp"
 #include "runtime/report/markup.hpp"

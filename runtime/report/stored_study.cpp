@@ -25,4 +25,10 @@ ConditionSamples condition_samples(const store::StoredExperiment& condition) {
   return s;
 }
 
+std::vector<Comparison> experiment_comparisons(const store::StoredExperiment& e) {
+  std::vector<std::vector<double>> best;
+  for (auto& [name, runs] : condition_samples(e).controllers) best.push_back(std::move(runs));
+  return compare(best, all_pairs(best.size()));
+}
+
 }  // namespace esc::report

@@ -1,7 +1,7 @@
 #pragma once
 // A study as its directory stores it, read the way the report and `esc export --table
-// success` compare it: its conditions in the study's order, each as the samples
-// study_table() takes.
+// success|comparisons` compare it: its conditions in the study's order, each as the samples
+// study_table() takes; and a plain experiment's comparisons of its controllers.
 #include <vector>
 
 #include "runtime/report/study_table.hpp"
@@ -15,5 +15,9 @@ namespace esc::report {
 // Each controller's finished runs' best fitness and, where the condition declares a success
 // test, their success sample.
 [[nodiscard]] ConditionSamples condition_samples(const store::StoredExperiment& condition);
+
+// A plain experiment's comparisons of its runs' best fitness: every pair of its controllers,
+// one family (the end table's and the report's).
+[[nodiscard]] std::vector<Comparison> experiment_comparisons(const store::StoredExperiment& e);
 
 }  // namespace esc::report

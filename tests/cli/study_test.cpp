@@ -157,26 +157,37 @@ TEST(Study, ExportedComparisonsAreTheEndTables) {
     const std::string label = at(row, "condition_a") == at(row, "condition_b")
                                   ? at(row, "condition_a") + ": " + at(row, "controller_a") + " vs " + at(row, "controller_b")
                                   : at(row, "controller_a") + ": " + at(row, "condition_a") + " vs " + at(row, "condition_b");
-    // The end table's line: label, Welch t, df, p, p Holm, U, p, p Holm, A12, ...
+    // The end table's line: the label, then its 11 numbers, each rounded as printed.
     const std::size_t line = o.output.find("\n" + label + " ");
     ASSERT_NE(line, std::string::npos) << label << "\n" << o.output;
     std::istringstream printed(o.output.substr(line + 1 + label.size()));
-    double t = 0, df = 0, p = 0, p_holm = 0, u = 0, mw_p = 0, mw_holm = 0, a12 = 0;
-    printed >> t >> df >> p >> p_holm >> u >> mw_p >> mw_holm >> a12;
-    EXPECT_NEAR(std::stod(at(row, "welch_t")), t, 5e-4) << label;
-    EXPECT_NEAR(std::stod(at(row, "welch_p_holm")), p_holm, 5e-5) << label;
-    EXPECT_NEAR(std::stod(at(row, "mann_whitney_p")), mw_p, 5e-5) << label;
-    EXPECT_NEAR(std::stod(at(row, "a12")), a12, 5e-3) << label;
+    const std::vector<std::pair<std::string, double>> columns{
+        {"welch_t", 5e-4},        {"welch_df", 0.05},    {"welch_p", 5e-5},
+        {"welch_p_holm", 5e-5},   {"mann_whitney_u", 0.05}, {"mann_whitney_p", 5e-5},
+        {"mann_whitney_p_holm", 5e-5}, {"a12", 5e-3},    {"sd_ratio", 5e-3},
+        {"brown_forsythe_p", 5e-5}, {"brown_forsythe_p_holm", 5e-5}};
+    for (const auto& [column, rounding] : columns) {
+      double shown = 0;
+      ASSERT_TRUE(printed >> shown) << label << ": " << column;
+      EXPECT_NEAR(std::stod(at(row, column)), shown, rounding) << label << ": " << column;
+    }
   }
-  // A plain experiment: one pair, named by its experiment; the JSON holds the same rows.
+  // The JSON holds the same rows.
+  const json j = json::parse(esc("export " + out.string() + " --table comparisons --format json").output);
+  ASSERT_EQ(j.size(), rows.size() - 1);
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    EXPECT_EQ(j[r - 1]["condition_a"], at(rows[r], "condition_a"));
+    EXPECT_EQ(j[r - 1]["mann_whitney_exact"], at(rows[r], "mann_whitney_exact") == "1");
+    EXPECT_EQ(j[r - 1]["welch_p_holm"].get<double>(), std::stod(at(rows[r], "welch_p_holm")));
+  }
+  // A plain experiment: one pair, named by its experiment.
   const fs::path plain = scratch("comparisons-plain");
   ASSERT_EQ(esc("run " + tiny() + " --runs 3 --generations 2 --set epochs=1 --out " + plain.string()).status, 0);
-  const json j = json::parse(esc("export " + plain.string() + " --table comparisons --format json").output);
-  ASSERT_EQ(j.size(), 1u) << j.dump();
-  EXPECT_EQ(j[0]["experiment"], "tiny");
-  EXPECT_EQ(j[0]["controller_a"], "CC");
-  EXPECT_EQ(j[0]["controller_b"], "SC");
-  EXPECT_TRUE(j[0]["mann_whitney_exact"].is_boolean());
+  const auto pair = csv_rows(esc("export " + plain.string() + " --table comparisons").output);
+  ASSERT_EQ(pair.size(), 2u);
+  EXPECT_EQ(at(pair[1], "experiment"), "tiny");
+  EXPECT_EQ(at(pair[1], "study"), "");
+  EXPECT_EQ(at(pair[1], "controller_a") + " " + at(pair[1], "controller_b"), "CC SC");
 }
 
 TEST(Study, ThreadsAndRunsAtOnceChangeNothing) {
