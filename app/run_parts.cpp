@@ -61,6 +61,12 @@ std::optional<std::string> resolved(const eval::ExperimentSpec& e, const std::st
   return it == e.resolved_settings.end() ? std::nullopt : std::optional(it->second);
 }
 
+// What a condition without `key` in its resolved settings has: a further body's setting is
+// written only where it differs from the first body's; others only where they apply.
+std::string unresolved(const std::string& key) {
+  return key.starts_with("body") ? "as the first body" : "not set";
+}
+
 // Refuses overrides that would make two conditions alike in a resolved setting the study makes
 // them differ in: one value for every condition would flatten what it compares without saying
 // so. Two conditions of one experiment differ only by the study, in every key, the key given
@@ -109,8 +115,8 @@ void refuse_flattening(const Overrides& o, const eval::StudySpec& study) {
         problems.add(fmt::format("{}: study `{}` varies `{}` across its conditions (`{}`: {}, `{}`: {}); one value "
                                  "for all of them would flatten it (to run one condition with another value, run its "
                                  "experiment with --experiment and --set)",
-                                 given_as(key), study.name, key, study.conditions[i].name, va.value_or("none"),
-                                 study.conditions[j].name, vb.value_or("none")));
+                                 given_as(key), study.name, key, study.conditions[i].name, va.value_or(unresolved(key)),
+                                 study.conditions[j].name, vb.value_or(unresolved(key))));
       }
     }
   problems.throw_if_any(ErrorKind::Setting);

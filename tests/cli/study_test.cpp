@@ -119,9 +119,11 @@ TEST(Study, ASettingThatMakesConditionsAlikeIsRefusedNamingWhatTheyDifferIn) {
            {"alike_study.esc", "alike", "robot.inertia=on", "`robot.inertia` across its conditions (`inertia`: on, "
                                                             "`no_inertia`: off)"},
            // robot.KEY sets every body; the conditions differ in the second's.
-           {"alike_study.esc", "leader_or_all_lit", "robot.emission=0", "`body2.emission` across its conditions"},
+           {"alike_study.esc", "leader_or_all_lit", "robot.emission=0",
+            "`body2.emission` across its conditions (`all_lit`: as the first body, `leader`: 0)"},
            // `networks es` drops CMA-ES and its settings.
-           {"alike_study.esc", "cmaes_settings", "networks=es", "`cmaes.lambda` across its conditions"},
+           {"alike_study.esc", "cmaes_settings", "networks=es",
+            "`cmaes.lambda` across its conditions (`smaller`: 6, `as_by_default`: 0)"},
            // `generations` sets GP's too.
            {"alike_gp_study.esc", "gp_generations", "generations=2", "`gp.generations` across its conditions"}}) {
     const fs::path out = scratch("study-flattened-" + c.study);
