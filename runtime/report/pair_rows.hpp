@@ -4,6 +4,7 @@
 // a study, study_table.hpp's pairs and family), one row each, with that table's test, so that
 // a paper's table is made from the tests esc ran rather than copied from a page.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -57,6 +58,27 @@ template <class Test, class OfStudy, class OfExperiment>
         rows.push_back({{{}, e.name, {}, e.controllers[c.a].name, {}, e.controllers[c.b].name}, c});
   }
   return rows;
+}
+
+// A pair table as CSV: `columns` (the names' six, then the test's), then a line per row, the
+// test's fields written by `fields(test)`.
+template <class Test, class Fields>
+[[nodiscard]] std::string pair_table_csv(const std::vector<PairRow<Test>>& rows, const char* columns, Fields fields) {
+  std::string out = std::string(columns) + "\n";
+  for (const PairRow<Test>& r : rows) out += pair_names_csv(r) + fields(r.test) + "\n";
+  return out;
+}
+
+// The same rows as JSON objects: the names' keys, then those of `fields(test)` in its order.
+template <class Test, class Fields>
+[[nodiscard]] nlohmann::ordered_json pair_table_json(const std::vector<PairRow<Test>>& rows, Fields fields) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const PairRow<Test>& r : rows) {
+    nlohmann::ordered_json row = pair_names_json(r);
+    row.update(fields(r.test));
+    out.push_back(std::move(row));
+  }
+  return out;
 }
 
 // A number as these tables write it: 17 significant digits, `nan`, `inf`, `-inf`.

@@ -13,13 +13,22 @@ std::vector<const store::StoredExperiment*> conditions_in_order(const store::Sto
   return conditions;
 }
 
+namespace {
+
+// The best fitness of each of the controller's finished runs.
+std::vector<double> runs_best(const store::StoredController& c) {
+  std::vector<double> best;
+  for (const auto& r : c.finished) best.push_back(r.best_fitness);
+  return best;
+}
+
+}  // namespace
+
 ConditionSamples condition_samples(const store::StoredExperiment& condition) {
   ConditionSamples s{condition.condition ? condition.condition->name : condition.name, {}};
   const bool declares_success = condition.settings.count("success") != 0;
   for (const store::StoredController& c : condition.controllers) {
-    std::vector<double> best;
-    for (const auto& r : c.finished) best.push_back(r.best_fitness);
-    s.controllers.emplace_back(c.name, std::move(best));
+    s.controllers.emplace_back(c.name, runs_best(c));
     if (declares_success) s.success.push_back(success_sample(c.finished));
   }
   return s;
@@ -27,7 +36,7 @@ ConditionSamples condition_samples(const store::StoredExperiment& condition) {
 
 std::vector<Comparison> experiment_comparisons(const store::StoredExperiment& e) {
   std::vector<std::vector<double>> best;
-  for (auto& [name, runs] : condition_samples(e).controllers) best.push_back(std::move(runs));
+  for (const store::StoredController& c : e.controllers) best.push_back(runs_best(c));
   return compare(best, all_pairs(best.size()));
 }
 

@@ -19,37 +19,28 @@ std::vector<SuccessRow> success_rows(const std::vector<store::StoredDirectory>& 
 }
 
 std::string success_csv(const std::vector<SuccessRow>& rows) {
-  std::string out = std::string(kSuccessColumns) + "\n";
-  for (const SuccessRow& r : rows) {
-    const SuccessComparison& c = r.test;
-    out += pair_names_csv(r) +
-           fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", c.successes_a, c.runs_a, c.successes_b, c.runs_b,
+  return pair_table_csv(rows, kSuccessColumns, [](const SuccessComparison& c) {
+    return fmt::format("{},{},{},{},{},{},{},{},{},{},{}", c.successes_a, c.runs_a, c.successes_b, c.runs_b,
                        number_text(c.fisher.p_value), number_text(c.fisher_p_holm), number_text(c.fisher.odds_ratio),
                        number_text(c.censored.statistic), number_text(c.censored.p_value),
                        number_text(c.censored_p_holm), number_text(c.censored_at));
-  }
-  return out;
+  });
 }
 
 nlohmann::ordered_json success_json(const std::vector<SuccessRow>& rows) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const SuccessRow& r : rows) {
-    const SuccessComparison& c = r.test;
-    nlohmann::ordered_json row = pair_names_json(r);
-    row.update(nlohmann::ordered_json{{"successes_a", c.successes_a},
-                                      {"runs_a", c.runs_a},
-                                      {"successes_b", c.successes_b},
-                                      {"runs_b", c.runs_b},
-                                      {"fisher_p", number_json(c.fisher.p_value)},
-                                      {"fisher_p_holm", number_json(c.fisher_p_holm)},
-                                      {"odds_ratio", number_json(c.fisher.odds_ratio)},
-                                      {"censored_u", number_json(c.censored.statistic)},
-                                      {"censored_p", number_json(c.censored.p_value)},
-                                      {"censored_p_holm", number_json(c.censored_p_holm)},
-                                      {"censored_at", number_json(c.censored_at)}});
-    out.push_back(std::move(row));
-  }
-  return out;
+  return pair_table_json(rows, [](const SuccessComparison& c) {
+    return nlohmann::ordered_json{{"successes_a", c.successes_a},
+                                  {"runs_a", c.runs_a},
+                                  {"successes_b", c.successes_b},
+                                  {"runs_b", c.runs_b},
+                                  {"fisher_p", number_json(c.fisher.p_value)},
+                                  {"fisher_p_holm", number_json(c.fisher_p_holm)},
+                                  {"odds_ratio", number_json(c.fisher.odds_ratio)},
+                                  {"censored_u", number_json(c.censored.statistic)},
+                                  {"censored_p", number_json(c.censored.p_value)},
+                                  {"censored_p_holm", number_json(c.censored_p_holm)},
+                                  {"censored_at", number_json(c.censored_at)}};
+  });
 }
 
 }  // namespace esc::report
