@@ -40,6 +40,7 @@ struct Subject {
   std::optional<double> member_fitness;       // as stored in its own evaluation
   // A member's descriptors as stored, to check against where its own evaluation is known.
   std::vector<double> member_descriptors;
+  std::string architecture;                   // of the controller that evolved it, as stored
 };
 
 struct Collect final : eval::TraceSink {
@@ -109,7 +110,7 @@ std::vector<Subject> stored_subjects(const store::StoredExperiment& stored, cons
     const eval::RunResult& r = pick_run(c, o.run);
     Subject s{c.name, r.run, r.seed, r.best_genome,
               eval::evaluation_seed(r.seed, r.best_generation, static_cast<std::size_t>(r.best_index)),
-              r.best_fitness, nullptr, {}, {}, {}};
+              r.best_fitness, nullptr, {}, {}, {}, c.architecture};
     if (c.replay && c.replay->run == r.run && c.replay->seed == s.seed) s.stored = &*c.replay;
     subjects.push_back(std::move(s));
   }
@@ -173,6 +174,7 @@ Subject genome_subject(const fs::path& file, const ReplayRequest& o) {
     s.run = j.at("run").get<int>() - 1;
     s.genome = j.at("genome").get<std::vector<double>>();
     s.fitness = j.at("fitness").get<double>();
+    s.architecture = j.value("architecture", std::string());
     intact = genome_file_intact(j);
     if (intact && !o.seed) seed = genome_file_seed(j);
   } catch (const std::exception& e) {   // JSON errors, a seed that is not one
@@ -240,7 +242,9 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                         s.controller, compiler::quoted_list(names, " and ")));
     return done;
   }
-  if (const std::string why = eval::genome_problem(*controller, s.genome, spec.roles); !why.empty()) {
+  std::string why = eval::genome_problem(*controller, s.genome, spec.roles);
+  if (why.empty()) why = eval::layout_problem(*controller, s.architecture);
+  if (!why.empty()) {
     done.problems.push_back(
         fmt::format("the stored genome of {} does not fit {} in experiment `{}`: {}", s.controller, s.controller, spec.name, why));
     return done;
@@ -297,9 +301,12 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
   for (const sim::RobotParams& r : spec.robot_params()) frame.bodies.push_back({r.body_radius_m, r.outline});
   frame.choices = controller->choice_names();
   write_atomically(out / (stem + ".svg"), report::trajectory_svg(done.figure()));
-  write_atomically(out / (stem + ".csv"),
-                   report::trajectory_csv(done.drawn, frame.choices, spec.robot.control_step_s,
-                                          {spec.robot.ir.name, spec.robot.ir.mounts.size(), spec.robot.ground.name}));
+  // A group's IR columns are as many as its body with the most has (named as the first
+  // body names them): a robot's beyond its own read 0, as its frame held them.
+  std::size_t ir_count = 0;
+  for (const sim::RobotParams& r : spec.robot_params()) ir_count = std::max(ir_count, r.ir.mounts.size());
+  write_atomically(out / (stem + ".csv"), report::trajectory_csv(done.drawn, frame.choices, spec.robot.control_step_s,
+                                                                 {spec.robot.ir.name, ir_count, spec.robot.ground.name}));
   return done;
 }
 

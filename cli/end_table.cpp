@@ -142,14 +142,17 @@ void print_table(const eval::ExperimentSpec& spec, const eval::CampaignResult& r
   fmt::print("\n{}: {} run{} x {}, {} epoch{} x {} steps{}, seed {}\n", spec.name, spec.runs,
              spec.runs == 1 ? "" : "s", app::generations_text(spec), spec.epochs, spec.epochs == 1 ? "" : "s",
              spec.steps, group, spec.seed);
-  fmt::print("{:<12} {:<14} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", "genes",
+  // As wide as the longest architecture: a controller per body's names each body's network.
+  std::size_t wide = 14;
+  for (const auto& c : result.controllers) wide = std::max(wide, c.architecture.size());
+  fmt::print("{:<12} {:<{}} {:>6}  {:>22}  {:>10}  {:>10}\n", "controller", "architecture", wide, "genes",
              "best fitness mean ± sd", "median", "best run");
   std::vector<std::vector<double>> finals;
   for (const auto& c : result.controllers) {
     std::vector<double> best = best_fitness(c);
     const report::Summary s = report::summarise(best);
     const int d = summary_decimals(s);
-    fmt::print("{:<12} {:<14} {:>6}  {:>12.{}f} ± {:<7.{}f}  {:>10.{}f}  {:>10.{}f}\n", c.name, c.architecture,
+    fmt::print("{:<12} {:<{}} {:>6}  {:>12.{}f} ± {:<7.{}f}  {:>10.{}f}  {:>10.{}f}\n", c.name, c.architecture, wide,
                c.genome_size, s.mean, d, s.sd, d, s.median, d, s.max, d);
     finals.push_back(std::move(best));
   }

@@ -216,6 +216,12 @@ struct ControllerDecl : DeclHead {
   std::vector<Input> inputs;
   std::vector<Layer> layers;
   std::vector<Name> actions;
+  // `per_body(khepera: cc, ...)`: each body's name and its network controller's; empty for
+  // any other controller.
+  struct BodyNetwork {
+    Name body, controller;
+  };
+  std::vector<BodyNetwork> per_body;
 };
 
 // ---- primitive sets: `primitives NAME { functions ... terminals ... }` ----------------

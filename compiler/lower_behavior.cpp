@@ -51,8 +51,10 @@ const std::optional<EvolvedRef>& BehaviorLowering::evolved(const ast::BehaviorDe
 const std::optional<control::Behavior>& BehaviorLowering::lower(const ast::BehaviorDecl& d,
                                                                 const ast::ArenaDecl* arena,
                                                                 const Navigation* navigation) {
-  const Key key{&d, arena, navigation != nullptr ? navigation->rangefinders : -1,
-                navigation != nullptr ? navigation->radars : -1};
+  const Key key = navigation == nullptr
+                      ? Key{&d, arena, false, -1, -1, -1, -1, -1, {}}
+                      : Key{&d, arena, navigation->goal, navigation->rangefinders, navigation->radars,
+                            navigation->ir_sensors, navigation->ground_sensors, navigation->bumpers, navigation->names};
   if (auto it = behaviors_.find(key); it != behaviors_.end()) return it->second;
   if (arena != nullptr && !lower(d)) return behaviors_[key];   // reported without the arena
   auto& slot = behaviors_[key];

@@ -44,8 +44,11 @@ class BehaviorLowering {
   Sink& sink_;
   Resolver& names_;
   ArenaLowering& arenas_;
-  // (behavior, arena, rangefinders, radars); -1 counts without navigation.
-  using Key = std::tuple<const ast::BehaviorDecl*, const ast::ArenaDecl*, int, int>;
+  // (behavior, arena, and what the robot offers: the goal, its sensors' counts and names);
+  // -1 counts without navigation. Every count a behavior may read is in it: a behavior bound
+  // under one body is not taken for another body's (a group's networks per body).
+  using Key = std::tuple<const ast::BehaviorDecl*, const ast::ArenaDecl*, bool, int, int, int, int, int,
+                         std::map<std::string, std::string, std::less<>>>;
   std::map<Key, std::optional<control::Behavior>> behaviors_;
   std::map<const ast::BehaviorDecl*, std::optional<EvolvedRef>> evolved_;
 };

@@ -2,6 +2,7 @@
 // supervisor(...) | tree(...)` -> control::ControllerSpec.
 #include "compiler/lower_controller.hpp"
 
+#include <algorithm>
 #include <memory>
 
 #include <fmt/format.h>
@@ -55,6 +56,11 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
   if (auto it = controllers_.find(&d); it != controllers_.end()) return it->second;
   auto& slot = controllers_[&d];
   if (d.poisoned) return slot;
+  if (!d.per_body.empty()) {
+    // Lowering the networks may add entries: `slot` is looked up again.
+    auto c = lower_per_body(d);
+    return controllers_[&d] = std::move(c);
+  }
   const int errors = sink_.errors();
   control::ControllerSpec c;
   c.name = d.name.text;
@@ -192,6 +198,15 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
         behaviors_ok = false;
         continue;
       }
+      if (sub->per_body()) {
+        Diagnostic& diag = sink_.error(
+            r.where, fmt::format("`{}` freezes `{}`, a controller per body, and a behavior is one network",
+                                 bd->name.text, sub->name));
+        diag.notes.emplace_back(bd->name.where, fmt::format("`{}` is declared here", bd->name.text));
+        diag.help.push_back("freeze one of its networks, evolved alone in an experiment of its body");
+        behaviors_ok = false;
+        continue;
+      }
       c.behaviors.push_back({name, control::FixedController{
                                               std::make_shared<const control::ControllerSpec>(*sub), {}}});
       c.choices.push_back({name, bd->name.text, bd->library, bd->useless, -1});
@@ -246,6 +261,121 @@ const std::optional<control::ControllerSpec>& ControllerLowering::lower(const as
     behaviors_ok = false;
   if (sink_.errors() == errors && c.actions.size() == d.actions.size() && behaviors_ok) slot = std::move(c);
   return slot;
+}
+
+std::optional<control::ControllerSpec> ControllerLowering::lower_per_body(const ast::ControllerDecl& d) {
+  const int errors = sink_.errors();
+  control::ControllerSpec c;
+  auto& decls = networks_[&d];
+  decls.clear();
+  std::map<std::string, const ast::Name*> bodies;
+  const ast::Name* first = nullptr;
+  for (const auto& [body, network] : d.per_body) {
+    if (const auto [it, fresh] = bodies.try_emplace(body.text, &body); !fresh) {
+      sink_.error(body.where, fmt::format("body `{}` is given a network twice", body.text))
+          .notes.emplace_back(it->second->where, "first given here");
+      continue;
+    }
+    const bool known = names_.lookup<ast::RobotDecl>(body) != nullptr;
+    const ast::ControllerDecl* nd = names_.lookup<ast::ControllerDecl>(network);
+    if (!known || nd == nullptr) continue;
+    if (!nd->per_body.empty()) {
+      sink_.error(network.where, fmt::format("`{}` is itself a controller per body: each body takes a network", network.text))
+          .notes.emplace_back(nd->name.where, fmt::format("`{}` is declared here", network.text));
+      continue;
+    }
+    const auto& n = lower(*nd);
+    if (!n) continue;
+    if (n->is_tree() || n->is_graph()) {
+      Diagnostic& diag = sink_.error(
+          network.where, fmt::format("`{}` is a {}: a controller per body holds networks of fixed topology, whose "
+                                     "weights make one genome",
+                                     network.text, n->is_tree() ? "tree" : "NEAT network"));
+      diag.notes.emplace_back(nd->name.where, fmt::format("`{}` is declared here", network.text));
+      diag.help.push_back("give each body an `mlp(...)` or `elman(...)` network, classical, symbolic or a supervisor");
+      continue;
+    }
+    // Another experiment's evolved controllers are filled in per compared controller
+    // (add_dependencies), not per network of one.
+    if (const auto frozen = std::find_if(n->behaviors.begin(), n->behaviors.end(),
+                                         [](const control::SupervisedBehavior& b) {
+                                           return std::holds_alternative<control::FixedController>(b.what);
+                                         });
+        frozen != n->behaviors.end()) {
+      Diagnostic& diag = sink_.error(network.where, fmt::format("`{}` supervises `{}`, an evolved controller: a "
+                                                                "controller per body's networks take hand-written "
+                                                                "behaviors only",
+                                                                network.text, frozen->name));
+      diag.notes.emplace_back(nd->name.where, fmt::format("`{}` is declared here", network.text));
+      diag.help.push_back("compare the supervisor in an experiment of one body, or give it hand-written behaviors");
+      continue;
+    }
+    if (first != nullptr && (n->head != c.networks.front().head || n->choice_names() != c.networks.front().choice_names() ||
+                             n->output_count() != c.networks.front().output_count())) {
+      const control::ControllerSpec& f = c.networks.front();
+      const auto outputs = [](const control::ControllerSpec& x) {
+        const auto names = x.choice_names();
+        return names.empty() ? std::string("the wheels") : fmt::format("[{}]", fmt::join(names, ", "));
+      };
+      sink_.error(network.where, fmt::format("`{}` ({}, choosing {}) has another head than `{}` ({}, choosing {}): the "
+                                             "networks of a controller per body drive the group with the same outputs",
+                                             network.text, n->head_name(), outputs(*n), first->text, f.head_name(),
+                                             outputs(f)))
+          .help.push_back("give every body's network the same head: its actions, or its behaviors, in one order");
+      continue;
+    }
+    if (first == nullptr) first = &network;
+    c.networks.push_back(*n);
+    c.network_bodies.push_back(body.text);
+    decls.push_back(nd);
+  }
+  if (sink_.errors() != errors || c.networks.size() != d.per_body.size()) return std::nullopt;
+  // The head, its choices and the first body's network stand for the controller where one
+  // network is read (its inputs in tables, `using(B)`).
+  const control::ControllerSpec& f = c.networks.front();
+  c.mlp = f.mlp;
+  c.head = f.head;
+  c.actions = f.actions;
+  c.behaviors = f.behaviors;
+  c.choices = f.choices;
+  c.name = d.name.text;
+  return c;
+}
+
+bool ControllerLowering::bind_bodies(control::ControllerSpec& c, const ast::ControllerDecl& d,
+                                     const ast::ArenaDecl& arena, const eval::ExperimentSpec& x,
+                                     const std::string& robot, const ast::Name& use) {
+  const std::vector<const ast::ControllerDecl*>& decls = networks_[&d];
+  std::vector<std::string> group;
+  if (x.bodies.empty()) group.push_back(robot);
+  for (const eval::ExperimentSpec::GroupBody& b : x.bodies) group.push_back(b.name);
+  bool ok = true;
+  c.body_networks.clear();
+  for (std::size_t b = 0; b < group.size(); ++b) {
+    const auto it = std::find(c.network_bodies.begin(), c.network_bodies.end(), group[b]);
+    if (it == c.network_bodies.end()) {
+      Diagnostic& diag = sink_.error(use.where, fmt::format("controller `{}` has no network for `{}`, a body of "
+                                                            "experiment `{}`'s group",
+                                                            use.text, group[b], x.name));
+      diag.notes.emplace_back(d.kind_where, fmt::format("`{}`'s networks are given here", d.name.text));
+      diag.help.push_back(fmt::format("add `{}: NETWORK` to its list", group[b]));
+      ok = false;
+      continue;
+    }
+    const auto k = static_cast<std::size_t>(it - c.network_bodies.begin());
+    c.body_networks.push_back(k);
+    if (k < decls.size() && !bind(c.networks[k], *decls[k], arena, navigation_of(x, b))) ok = false;
+  }
+  for (std::size_t k = 0; k < c.network_bodies.size(); ++k)
+    if (std::find(group.begin(), group.end(), c.network_bodies[k]) == group.end()) {
+      Diagnostic& diag = sink_.error(use.where, fmt::format("controller `{}` has a network for `{}`, a body experiment "
+                                                            "`{}` does not have",
+                                                            use.text, c.network_bodies[k], x.name));
+      diag.notes.emplace_back(d.per_body[k].body.where, "given here");
+      diag.help.push_back("list only the bodies of the experiment's `robot` item");
+      ok = false;
+    }
+  return ok;
 }
 
 bool ControllerLowering::check_sensors(const control::ControllerSpec& c, const ast::ControllerDecl& d,

@@ -40,8 +40,17 @@ class ControllerLowering {
   // sensor under `navigation`; false when one fails (reported).
   bool bind(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena,
             const Navigation& navigation);
+  // A controller per body, compared as `use` in experiment `x` (of robot `robot`, the first
+  // body's name): each body of x's group is
+  // given its network (ControllerSpec::body_networks), bound under that body's sensors; a body
+  // without a network, or a network for a body the group lacks, is an error at `use`.
+  bool bind_bodies(control::ControllerSpec& c, const ast::ControllerDecl& d, const ast::ArenaDecl& arena,
+                   const eval::ExperimentSpec& x, const std::string& robot, const ast::Name& use);
 
  private:
+  // `per_body(...)`: its networks lowered, each a network controller of one head.
+  std::optional<control::ControllerSpec> lower_per_body(const ast::ControllerDecl& d);
+
   Sink& sink_;
   Resolver& names_;
   BehaviorLowering& behaviors_;
@@ -50,6 +59,8 @@ class ControllerLowering {
   // The behavior declarations a controller uses, in the order of its actions / behaviors.
   std::map<const ast::ControllerDecl*, std::vector<const ast::BehaviorDecl*>> used_;
   std::map<const ast::ControllerDecl*, std::vector<Supervised>> supervised_;
+  // A controller per body's networks' declarations, in its order.
+  std::map<const ast::ControllerDecl*, std::vector<const ast::ControllerDecl*>> networks_;
   // The slots each network input reads, [first, first + count), for bind()'s sensor check.
   struct InputSlots {
     const ast::Input* input;

@@ -82,6 +82,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   EvolveItems evolve;
   ObjectiveItems objective_items;
   bool epochs_gave_steps = false;
+  std::optional<SensorDifference> sensors_differ;
   // `epochs`, `steps`, `runs`, `seed`: each number read by its row of the table.
   const auto setting = [&](std::string_view key, const ast::Quantity& q) {
     const ExperimentSetting& row = *find_experiment_setting(key);
@@ -126,7 +127,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
           x.robot = robot->params;
           if (!item.numbers.empty()) setting("robots", item.numbers[0]);
           // Further bodies are compared with the first: not with one its errors left half set.
-          if (first_ok && !item.members.empty() && !lower_bodies(item, robot->params, x)) ok = false;
+          if (first_ok && !item.members.empty() && !lower_bodies(item, robot->params, x, sensors_differ)) ok = false;
         } else {
           ok = false;
         }
@@ -213,6 +214,16 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
     }
   }
 
+  // Bodies that read other sensors: every compared controller needs a network per body.
+  if (sensors_differ)
+    for (std::size_t i = 0; i < x.controllers.size() && i < compared.size(); ++i)
+      if (!x.controllers[i].per_body()) {
+        sensors_differ->plain = compared[i];
+        report_sensor_difference(*sensors_differ);
+        ok = false;
+        break;
+      }
+
   const auto require = [&](K k, std::string_view what, std::string_view example) {
     if (first.count(k) != 0) return;
     sink_.error(d.name.where, fmt::format("experiment `{}` names no {}", d.name.text, what))
@@ -250,7 +261,12 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
       }
     }
     for (std::size_t i = 0; i < controller_decls.size() && i < x.controllers.size(); ++i)
-      if (!parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation)) ok = false;
+      if (x.controllers[i].per_body()
+              ? !parts_.controllers.bind_bodies(x.controllers[i], *controller_decls[i], *arena_decl, x, robot_name,
+                                                *compared[i])
+              : !parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation))
+        ok = false;
+    if (sensors_differ && robot_item != nullptr && !check_measures_on_bodies(x, robot_item->where)) ok = false;
   }
   // After the objectives and descriptors: an algorithm's settings are checked against them.
   if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);
@@ -283,8 +299,61 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   return slot;
 }
 
+bool ExperimentLowering::check_measures_on_bodies(const eval::ExperimentSpec& x, const SourceRange& use) {
+  const std::set<expr::Slot> read = slots_read_by_measures(x);
+  const Navigation first = navigation_of(x, 0);
+  for (std::size_t b = 1; b < x.bodies.size(); ++b) {
+    const Navigation n = navigation_of(x, b);
+    for (const expr::Slot s : read) {
+      // Names first: a slot read by another name is that, whatever its count.
+      for (const RenamableSensors& r : kRenamableSensors) {
+        const std::optional<expr::Observable> o = expr::find_observable(r.observable);
+        if (!o || s < o->first || s >= o->first + o->count || first.name_of(r.observable) == n.name_of(r.observable))
+          continue;
+        sink_.error(use, fmt::format("the experiment's measures read the {}, which `{}` calls `{}` and `{}` `{}`: one "
+                                     "program cannot read both",
+                                     r.what, first.body, first.name_of(r.observable), n.body, n.name_of(r.observable)))
+            .help.push_back(fmt::format("measure the group by what every body reads alike, or give the bodies one name "
+                                        "(`{}`)",
+                                        r.setting));
+        return false;
+      }
+      if (auto m = unavailable(s, n)) {
+        Diagnostic& d = sink_.error(use, "the experiment's measures read what a body of its group lacks: " + m->message);
+        d.help = std::move(m->help);
+        d.help.push_back("a fitness, objective or descriptor is read on every robot: give it what every body reads");
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void ExperimentLowering::report_sensor_difference(const SensorDifference& s) {
+  const BodyDifference& differ = s.difference;
+  const bool sensors = differ.counted || differ.key.ends_with("_name");
+  Diagnostic& d = sink_.error(
+      s.body->where, fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share {}their drive "
+                                 "and their control step",
+                                 s.body->text, differ.counted ? "another number of" : "another", differ.key, s.first,
+                                 differ.other, differ.first, sensors ? "the sensors one controller reads, " : ""));
+  if (s.set_at) d.notes.emplace_back(*s.set_at, fmt::format("`{}`'s `{}` is set here", s.body->text, differ.key));
+  if (differ.key.ends_with("_name"))
+    d.help.push_back(fmt::format("name its sensors as `{}` does, in the group's list: `{} {{ {} {} }}`", s.first,
+                                 s.body->text, differ.key, differ.first));
+  else if (!sensors)
+    d.help.push_back(fmt::format("give both bodies the same `{}`, in a declaration or in the group's list (`{} {{ {} ... }}`)",
+                                 differ.key, s.body->text, differ.key));
+  if (sensors)
+    d.help.push_back(fmt::format("{}ompare controllers with a network per body: `controller NAME = per_body({}: "
+                                 "NETWORK, {}: NETWORK)` (docs/groups.md)",
+                                 d.help.empty() ? "c" : "or c", s.first, s.body->text));
+  if (s.plain != nullptr)
+    d.notes.emplace_back(s.plain->where, fmt::format("`{}` is one network for every body", s.plain->text));
+}
+
 bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::RobotParams& first,
-                                      eval::ExperimentSpec& x) {
+                                      eval::ExperimentSpec& x, std::optional<SensorDifference>& sensors) {
   bool ok = true;
   long long total = x.robots;
   x.bodies = {{item.refs[0].text, first, x.robots}};
@@ -309,25 +378,18 @@ bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::Robot
       ok = false;
       continue;
     }
-    if (const auto differ = group_difference(first, body.params)) {
-      Diagnostic& d = sink_.error(
-          m.ref.where, fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share the sensors "
-                                   "their controller reads, their drive and their control step",
-                                   m.ref.text, differ->counted ? "another number of" : "another", differ->key,
-                                   item.refs[0].text, differ->other, differ->first));
-      if (const auto set = body.written.find(differ->key); set != body.written.end())
-        d.notes.emplace_back(set->second.where, fmt::format("`{}`'s `{}` is set here", m.ref.text, differ->key));
-      d.help.push_back(
-          differ->counted
-              ? std::string("bodies that read other sensors need a controller each, which is not built yet "
-                            "(docs/groups.md); compare them in experiments of their own")
-          : differ->key.ends_with("_name")
-              ? fmt::format("name its sensors as `{}` does, in the group's list: `{} {{ {} {} }}`", item.refs[0].text,
-                            m.ref.text, differ->key, differ->first)
-              : fmt::format("give both bodies the same `{}`, in a declaration or in the group's list (`{} {{ {} ... }}`)",
-                            differ->key, m.ref.text, differ->key));
-      ok = false;
-      continue;
+    if (auto differ = group_difference(first, body.params)) {
+      const auto set = body.written.find(differ->key);
+      SensorDifference found{&m.ref, std::move(*differ), std::nullopt, item.refs[0].text};
+      if (set != body.written.end()) found.set_at = set->second.where;
+      // What a controller reads may differ where each body has a network of its own: seen
+      // once the compared controllers are known. The drive and the step are the world's.
+      if (!found.difference.counted && !found.difference.key.ends_with("_name")) {
+        report_sensor_difference(found);
+        ok = false;
+        continue;
+      }
+      if (!sensors) sensors = std::move(found);
     }
     total += count;
     x.bodies.push_back({m.ref.text, body.params, static_cast<int>(count)});

@@ -15,6 +15,7 @@
 #include "compiler/lower_evolution.hpp"
 #include "compiler/lower_fitness.hpp"
 #include "compiler/lower_robot.hpp"
+#include "compiler/robot_settings.hpp"
 #include "compiler/resolver.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/eval/experiment.hpp"
@@ -47,9 +48,24 @@ class ExperimentLowering {
   void check_start_from(const ast::ExperimentDecl& from, const Items& first, const EvolveItems& evolves);
   // `formation ...`: where the group's robots start, read by the formation's setting rows.
   bool lower_formation(const ast::ExpItem& item, eval::ExperimentSpec& x);
+  // A further body of a group that reads other sensors than the first (group_difference):
+  // refused unless every compared controller has a network per body.
+  struct SensorDifference {
+    const ast::Name* body;
+    BodyDifference difference;
+    std::optional<SourceRange> set_at;   // where the further body's setting is written
+    std::string first;           // the first body's name
+    const ast::Name* plain = nullptr;   // a compared controller that is one network, once known
+  };
   // `robot khepera x 2, lit_khepera x 3`: the group's bodies after the first (`first`, its
-  // robots counted already), each reading the first's sensors (group_difference), and their robots.
-  bool lower_bodies(const ast::ExpItem& item, const sim::RobotParams& first, eval::ExperimentSpec& x);
+  // robots counted already), each with the first's drive and step (group_difference), and
+  // their robots. The first body that reads other sensors is left in `sensors`.
+  bool lower_bodies(const ast::ExpItem& item, const sim::RobotParams& first, eval::ExperimentSpec& x,
+                    std::optional<SensorDifference>& sensors);
+  void report_sensor_difference(const SensorDifference& s);
+  // A group whose bodies read other sensors: what the fitness, objectives and descriptors
+  // read must be read alike on every body (at `use`).
+  bool check_measures_on_bodies(const eval::ExperimentSpec& x, const SourceRange& use);
   // Gives each distinct action or behavior of the compared controllers an experiment-wide id
   // (control::Choice::id; x.choice_ids of them) and returns the names that read them.
   static ChoiceNames number_choices(eval::ExperimentSpec& x);

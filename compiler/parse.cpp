@@ -513,6 +513,11 @@ class Builder {
         else if (!r->ident().empty())
           d.tree_result = name(r->ident()[0]);
       }
+    } else if (auto* b = dynamic_cast<P::PerBodyControllerContext*>(c->controllerExpr())) {
+      d.kind_where = at(b->getStart());
+      for (P::BodyNetworkContext* n : b->bodyNetwork())
+        if (n != nullptr && n->body != nullptr && n->ctl != nullptr) d.per_body.push_back({name(n->body), name(n->ctl)});
+      if (d.per_body.empty()) d.poisoned = true;
     } else {
       d.poisoned = true;
     }

@@ -336,7 +336,14 @@ bool apply_robot_value(const RobotSetting& s, const ast::Value& v, sim::RobotPar
 }
 
 std::optional<BodyDifference> group_difference(const sim::RobotParams& first, const sim::RobotParams& other) {
-  // What the controller reads first: a difference there has no remedy but another body.
+  const auto differ = [&](std::string_view key) -> std::optional<BodyDifference> {
+    const RobotSetting& s = *find_robot_setting(key);
+    std::string a = robot_value_text(s, first), b = robot_value_text(s, other);
+    if (a == b) return std::nullopt;
+    return BodyDifference{std::string(key), false, std::move(a), std::move(b)};
+  };
+  // What the world steps alike first: a difference there has no remedy but another body. Then
+  // what a controller reads, which a controller per body may read apart.
   using Count = std::size_t (*)(const sim::RobotParams&);
   static constexpr std::pair<std::string_view, Count> kCounted[] = {
       {"ir_sensors", [](const sim::RobotParams& p) { return p.ir.mounts.size(); }},
@@ -345,22 +352,16 @@ std::optional<BodyDifference> group_difference(const sim::RobotParams& first, co
       {"bumpers", [](const sim::RobotParams& p) { return p.bumpers.size(); }},
       {"radars", [](const sim::RobotParams& p) { return static_cast<std::size_t>(p.radars); }},
   };
+  for (const std::string_view key : {"drive", "control_step", "substeps"})
+    if (auto d = differ(key)) return d;
   for (const auto& [key, count] : kCounted)
     if (count(first) != count(other))
       return BodyDifference{std::string(key), true, fmt::format("{}", count(first)), fmt::format("{}", count(other))};
-  const auto differ = [&](std::string_view key) -> std::optional<BodyDifference> {
-    const RobotSetting& s = *find_robot_setting(key);
-    std::string a = robot_value_text(s, first), b = robot_value_text(s, other);
-    if (a == b) return std::nullopt;
-    return BodyDifference{std::string(key), false, std::move(a), std::move(b)};
-  };
   // A name matters only for sensors the bodies have.
   if (!first.ir.mounts.empty())
     if (auto d = differ("ir_name")) return d;
   if (!first.ground.mounts.empty())
     if (auto d = differ("ground_name")) return d;
-  for (const std::string_view key : {"drive", "control_step", "substeps"})
-    if (auto d = differ(key)) return d;
   return std::nullopt;
 }
 

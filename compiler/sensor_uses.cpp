@@ -18,7 +18,10 @@ std::string slot_name(expr::Slot slot) {
 }
 
 // "the robot of experiment `maze`".
-std::string robot_of(const Navigation& n) { return fmt::format("the robot of experiment `{}`", n.experiment); }
+std::string robot_of(const Navigation& n) {
+  return n.body.empty() ? fmt::format("the robot of experiment `{}`", n.experiment)
+                        : fmt::format("body `{}` of experiment `{}`'s group", n.body, n.experiment);
+}
 
 // `range[i]` or `radar[i]` beyond the `count` sensors the robot has: what it reads (named as
 // the robot names the array: `prox_ground[2]` on the Thymio II) and how many there are.
@@ -45,16 +48,28 @@ void add_behavior(std::set<expr::Slot>& out, const control::Behavior& b) {
 
 }  // namespace
 
-Navigation navigation_of(const eval::ExperimentSpec& x) {
+namespace {
+
+Navigation navigation_of(const eval::ExperimentSpec& x, const sim::RobotParams& r, std::string body) {
   return {x.name,
           x.arena_name,
+          std::move(body),
           x.arena.goal.has_value(),
-          static_cast<int>(x.robot.rangefinders.angles_rad.size()),
-          x.robot.radars,
-          static_cast<int>(x.robot.ir.mounts.size()),
-          static_cast<int>(x.robot.ground.mounts.size()),
-          static_cast<int>(x.robot.bumpers.size()),
-          {{"ir", x.robot.ir.name}, {"ground_sensor", x.robot.ground.name}}};
+          static_cast<int>(r.rangefinders.angles_rad.size()),
+          r.radars,
+          static_cast<int>(r.ir.mounts.size()),
+          static_cast<int>(r.ground.mounts.size()),
+          static_cast<int>(r.bumpers.size()),
+          {{"ir", r.ir.name}, {"ground_sensor", r.ground.name}}};
+}
+
+}  // namespace
+
+Navigation navigation_of(const eval::ExperimentSpec& x) { return navigation_of(x, x.robot, {}); }
+
+Navigation navigation_of(const eval::ExperimentSpec& x, std::size_t body) {
+  if (body == 0 || body >= x.bodies.size()) return navigation_of(x, x.robot, x.bodies.empty() ? std::string() : x.bodies[0].name);
+  return navigation_of(x, x.bodies[body].params, x.bodies[body].name);
 }
 
 std::string_view Navigation::name_of(std::string_view observable) const {
@@ -124,13 +139,18 @@ std::set<expr::Slot> slots_read(const eval::FitnessSpec& f) {
   for (const expr::Program& p : f.stop_when) add_program(out, p);
   for (const auto* end : {&f.epoch_end, &f.evaluation_end})
     if (*end) add_program(out, **end);
+  for (const auto* folded : {&f.epoch_aggregates, &f.evaluation_aggregates})
+    for (const expr::StepAggregate& a : *folded) add_program(out, a.of);
   return out;
 }
 
 std::set<expr::Slot> slots_read_by_measures(const eval::ExperimentSpec& x) {
   std::set<expr::Slot> out = slots_read(x.fitness);
   for (const eval::FitnessSpec& f : x.further) out.merge(slots_read(f));
-  for (const eval::DescriptorSpec& d : x.descriptors) add_program(out, d.program);
+  for (const eval::DescriptorSpec& d : x.descriptors) {
+    add_program(out, d.program);
+    for (const expr::StepAggregate& a : d.aggregates) add_program(out, a.of);
+  }
   return out;
 }
 

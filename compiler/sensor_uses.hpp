@@ -25,6 +25,7 @@ namespace esc::compiler {
 struct Navigation {
   std::string experiment;   // names, for messages
   std::string arena;
+  std::string body;         // a group's body, by name, where its bodies read other sensors
   bool goal = false;
   int rangefinders = 0;
   int radars = 0;
@@ -47,6 +48,8 @@ struct Navigation {
 [[nodiscard]] std::optional<RuleMessage> misnamed(std::string_view name, const Navigation& n, const SensorNames* names);
 
 [[nodiscard]] Navigation navigation_of(const eval::ExperimentSpec& x);
+// What body `body` of x's group (ExperimentSpec::bodies) provides, named in messages.
+[[nodiscard]] Navigation navigation_of(const eval::ExperimentSpec& x, std::size_t body);
 
 // Why frame slot `slot` cannot be read under `n` (message and help), or nullopt when it can.
 [[nodiscard]] std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n);

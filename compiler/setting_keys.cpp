@@ -85,14 +85,22 @@ std::optional<std::string_view> algorithm_key(const AlgorithmOptions& a, std::st
 // What the experiment reads has its goal and sensors: a setting may take one away
 // (`robot.radars=0` under a fitness that reads `radar[0]`). One error says it.
 void check_navigation(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
-  const Navigation n = navigation_of(spec);
-  std::set<expr::Slot> read = slots_read_by_measures(spec);
-  for (const control::ControllerSpec& c : spec.controllers) read.merge(slots_read(c));
-  for (const expr::Slot s : read)
-    if (auto m = unavailable(s, n)) {
-      sink.error(where, std::move(m->message)).help = std::move(m->help);
-      return;
-    }
+  // Each body reads the measures and its controllers' networks: a controller per body's own
+  // network on it, any other controller on the first body (whose sensors a group of such
+  // controllers shares).
+  const std::set<expr::Slot> measures = slots_read_by_measures(spec);
+  for (std::size_t b = 0; b < std::max<std::size_t>(spec.bodies.size(), 1); ++b) {
+    const Navigation n = b == 0 ? navigation_of(spec) : navigation_of(spec, b);
+    std::set<expr::Slot> read = measures;
+    for (const control::ControllerSpec& c : spec.controllers)
+      if (!c.per_body()) read.merge(slots_read(c));
+      else if (b < c.body_networks.size()) read.merge(slots_read(c.networks.at(c.body_networks[b])));
+    for (const expr::Slot s : read)
+      if (auto m = unavailable(s, n)) {
+        sink.error(where, std::move(m->message)).help = std::move(m->help);
+        return;
+      }
+  }
 }
 
 std::string trimmed(std::string_view t) {
@@ -249,6 +257,14 @@ void check_roles(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
                                     "for every role",
                                     c.name, c.is_tree() ? "tree" : "NEAT network"))
           .help.push_back("compare it in another experiment, with the clonal team (`roles 1`, the default)");
+      return;
+    }
+  // Its networks are sliced by body already; roles within bodies are not built.
+  for (const control::ControllerSpec& c : spec.controllers)
+    if (c.per_body()) {
+      sink.error(where, fmt::format("`{}` is a controller per body: its genome holds a network per body, not per role",
+                                    c.name))
+          .help.push_back("compare it with one role (`roles 1`, the default): each body's robots share its network");
       return;
     }
 }

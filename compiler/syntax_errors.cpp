@@ -40,7 +40,7 @@ bool is_wordish(std::size_t type) {
     case EscParser::BY: case EscParser::EVALUATION: case EscParser::OBJECTIVE: case EscParser::MAXIMIZE:
     case EscParser::MINIMIZE: case EscParser::DESCRIPTOR: case EscParser::IN: case EscParser::WALL:
     case EscParser::GOAL: case EscParser::TO: case EscParser::THICKNESS: case EscParser::SUCCESS:
-    case EscParser::OVER: case EscParser::FORMATION: case EscParser::ROLES: return true;
+    case EscParser::OVER: case EscParser::FORMATION: case EscParser::ROLES: case EscParser::PER_BODY: return true;
     default: return false;
   }
 }

@@ -98,7 +98,11 @@ controllerExpr
   | SUPERVISOR '(' net=(MLP | ELMAN | NEAT) '(' network ')' ',' BEHAVIORS '[' supervised (',' supervised)* ']' ')'   # supervisorController
   // A GP tree: its result (`wheels`, or a choice among actions or behaviors) and its primitives.
   | TREE '(' treeResult ',' PRIMITIVES prims=ident ')'                                 # treeController
+  // A network per body of a group whose bodies read other sensors (docs/groups.md):
+  // `per_body(khepera: cc, thymio2: cc_thymio)`, each a network controller with one head.
+  | PER_BODY '(' bodyNetwork (',' bodyNetwork)* ')'                                   # perBodyController
   ;
+bodyNetwork : body=ident ':' ctl=ident ;
 treeResult
   : ACTIONS '[' ident (',' ident)* ']'
   | BEHAVIORS '[' supervised (',' supervised)* ']'
@@ -221,7 +225,7 @@ ident
   | CIRCLE | RECT | VISIBLE | INVISIBLE | RECHARGE | SWEEP_CELL | REACH_RADIUS | ELMAN
   | SUPERVISOR | BEHAVIORS | ON | OFF | EVOLVED | FROM | EVALUATE | EVALUATION | TREE | FUNCTIONS | TERMINALS
   | CONDITIONS | CONDITION | SWEEP | AS | BY | OBJECTIVE | MAXIMIZE | MINIMIZE | DESCRIPTOR | IN | WALL | GOAL | TO | THICKNESS
-  | SUCCESS | OVER | FORMATION | ROLES
+  | SUCCESS | OVER | FORMATION | ROLES | PER_BODY
   ;
 
 // ---- lexer --------------------------------------------------------------------------
@@ -312,6 +316,7 @@ TO : 'to' ;
 OVER : 'over' ;
 FORMATION : 'formation' ;
 ROLES : 'roles' ;
+PER_BODY : 'per_body' ;
 THICKNESS : 'thickness' ;
 
 ARROW : '->' ;

@@ -55,7 +55,7 @@ class _Episodes:
             raise ValueError(f"experiment `{self.experiment}` has a group of {self._env.robots} robots: Env drives a "
                              "robot alone; step the group with esc.ParallelEnv (PettingZoo's parallel API), or "
                              "evaluate it with esc.evaluate")
-        self._observations = Box(*self._env.observation_bounds)
+        self._observations = Box(*self._env.observation_bounds())
         self._actions = Box(*self._env.action_bounds)
 
     @property
@@ -65,8 +65,9 @@ class _Episodes:
 
     @property
     def observation_names(self) -> list:
-        """What each entry of an observation is, by observable name ("ir[0]", "energy")."""
-        return list(self._env.observation_names)
+        """What each entry of an observation is, by observable name ("ir[0]", "energy"); in a
+        group whose bodies read other sensors, robot_1's (ParallelEnv.observation_names_of)."""
+        return list(self._env.observation_names())
 
     @property
     def choices(self) -> list:
@@ -89,19 +90,25 @@ class _Episodes:
         """Episodes begun so far (reset() calls)."""
         return self._env.episodes
 
-    def policy(self, genome) -> "Policy":
+    def policy(self, genome, body: Optional[str] = None) -> "Policy":
         """The network of `controller` with weights `genome` as a policy for this Env:
         policy(observation) -> action. Its recurrent state (an Elman network's, a NEAT
         network's) starts afresh with every episode of this Env, as the network's does with
         every epoch in esc. For a NEAT network, `genome` is an esc.Network or its flat form.
-        `genome` is checked as esc.evaluate checks a genome (real, finite numbers)."""
+        `genome` is checked as esc.evaluate checks a genome (real, finite numbers). For a
+        controller per body, `genome` is the whole genome and the policy `body`'s network (by
+        default the first robot's body)."""
         if self.controller is None:
             raise ValueError("this Env has no controller: its policy would be a network of which controller? "
                              "Make the Env with controller=NAME")
         if isinstance(genome, Network):
             genome = genome.encoded()
+        if body is not None and not isinstance(body, str):
+            raise TypeError(f"body: expected a body's name (str), got {type(body).__name__}")
+        if body is None and self._script.controller(self.experiment, self.controller).per_body:
+            body = self._script.bodies[self.experiment][0].name
         return Policy(self, _esc.Policy(self._script._compiled, self.experiment, self.controller,
-                                        arguments.finite("genome", genome)))
+                                        arguments.finite("genome", genome), body))
 
     def close(self) -> None:
         """Nothing to release (Gymnasium's interface)."""

@@ -25,8 +25,10 @@ class ParallelEnv(_Episodes):
     `agents` is then empty until reset(). A robot alone is a group of one.
 
     Observations and actions are an Env's, per robot (observation_space(agent),
-    action_space(agent), the same for every agent). policies(genome) gives each robot its own
-    copy of a genome's network, as esc's evaluation of a clonal group does.
+    action_space(agent), the same for every agent of one body). With a controller per body
+    (`per_body(...)`, a group whose bodies read other sensors), an agent observes its own
+    body's network's inputs (observation_names_of(agent)). policies(genome) gives each robot
+    its own copy of a genome's network, as esc's evaluation of a clonal group does.
     """
 
     metadata = {"name": "esc_parallel_v0", "is_parallelizable": True}
@@ -36,7 +38,7 @@ class ParallelEnv(_Episodes):
         super().__init__(script, experiment, controller, seed, group=True)
         self.possible_agents = [f"robot_{i + 1}" for i in range(self._env.robots)]
         self.agents = []
-        self.observation_spaces = {a: self._observations for a in self.possible_agents}
+        self.observation_spaces = {a: Box(*self._env.observation_bounds(i)) for i, a in enumerate(self.possible_agents)}
         self.action_spaces = {a: self._actions for a in self.possible_agents}
 
     @property
@@ -59,6 +61,10 @@ class ParallelEnv(_Episodes):
         """The observations of `agent`: its robot's senses, or its network's inputs."""
         self._agent(agent)
         return self.observation_spaces[agent]
+
+    def observation_names_of(self, agent: str) -> list:
+        """What each entry of `agent`'s observation is, by observable name as its body reads it."""
+        return list(self._env.observation_names(self._agent(agent)))
 
     def action_space(self, agent: str) -> Box:
         """The actions of `agent`: wheel commands, or its network's outputs."""
@@ -109,9 +115,13 @@ class ParallelEnv(_Episodes):
         """Each agent's own copy of the network of `controller` with weights `genome` (its own
         recurrent state, started afresh with every episode), as Env.policy makes one. With
         `roles N`, `genome` holds N networks' weights, one after the other (as esc evolves and
-        stores them), and robot_i's network is role (i - 1) mod N's."""
+        stores them), and robot_i's network is role (i - 1) mod N's. With a controller per
+        body, `genome` holds every body's network, and each robot's is its body's."""
         c = self._script.controller(self.experiment, self.controller) if self.controller is not None else None
         roles = c.roles if c is not None else 1   # without a controller, policy() says what is missing
+        if c is not None and c.per_body:
+            bodies = [b.name for b in self._script.bodies[self.experiment] for _ in range(b.robots)]
+            return {a: self.policy(genome, body) for a, body in zip(self.possible_agents, bodies)}
         if roles == 1:
             return {a: self.policy(genome) for a in self.possible_agents}
         weights = arguments.finite("genome", genome)

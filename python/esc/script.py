@@ -22,7 +22,10 @@ class Controller:
     length), its network's inputs by observable name ("ir[0]"), its choices (the actions or
     behaviors it picks from, in order), whether it is a NEAT network (`neat(...)`, its genome a
     graph) and the experiment's roles (`roles N`: a genome holds N networks' weights, role r's
-    the r-th slice, driving robots r, r + N, ...; 1 for the clonal team)."""
+    the r-th slice, driving robots r, r + N, ...; 1 for the clonal team). A controller per body
+    (`per_body(...)`) has no inputs of its own: `per_body` lists each body of the group (in robot
+    order) with its network's inputs, named as that body reads them; its genome holds every
+    network's weights."""
 
     name: str
     architecture: str
@@ -32,6 +35,7 @@ class Controller:
     choices: Tuple[str, ...]
     is_graph: bool = False
     roles: int = 1
+    per_body: Tuple[Tuple[str, Tuple[str, ...]], ...] = ()
 
     @property
     def is_tree(self) -> bool:
@@ -57,7 +61,8 @@ class Body:
 
 def _controller(d: dict) -> Controller:
     return Controller(d["name"], d["architecture"], d["head"], d["genome_size"], tuple(d["inputs"]),
-                      tuple(d["choices"]), d["graph"], d["roles"])
+                      tuple(d["choices"]), d["graph"], d["roles"],
+                      tuple((body, tuple(inputs)) for body, inputs in d["per_body"]))
 
 
 class Script:

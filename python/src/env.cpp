@@ -48,13 +48,15 @@ Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& exper
     : script_(script),
       spec_(&find_experiment(*script, experiment)),
       controller_(network_controller(*spec_, controller)),
-      observed_(controller_ != nullptr ? controller_->mlp.inputs : senses(spec_->robot)),
       world_(eval::world_of(*spec_)),
       stepper_(*spec_, world_, reads_of(*spec_, controller_)),
       seed_(seed),
       commands_(stepper_.robots()),
       actions_(stepper_.robots(), -1),
       acting_(stepper_.robots(), -1) {
+  const std::vector<sim::RobotParams> bodies = spec_->robot_params();
+  for (std::size_t i = 0; i < stepper_.robots(); ++i)
+    observed_.push_back(controller_ != nullptr ? network_of(i).mlp.inputs : senses(bodies[i]));
   if (controller_ == nullptr) return;
   action_size_ = static_cast<std::size_t>(controller_->output_count());
   // The head alone acts on the actions (act()): its network is never run, so any genome of
@@ -65,8 +67,24 @@ Env::Env(const std::shared_ptr<CompiledScript>& script, const std::string& exper
         genome::graph::Activation::Tanh));
   else
     unused_weights_.assign(controller_->genome_size(), 0.0);
-  for (std::size_t i = 0; i < stepper_.robots(); ++i)
-    heads_.push_back(std::make_unique<control::Controller>(*controller_, unused_weights_, &tree_control::make_actor));
+  // A controller per body's networks share the head: each robot's is its body's network's.
+  for (std::size_t i = 0; i < stepper_.robots(); ++i) {
+    const control::ControllerSpec& network = network_of(i);
+    const std::span<const double> weights(unused_weights_);
+    heads_.push_back(std::make_unique<control::Controller>(
+        network, controller_->per_body() ? weights.first(network.genome_size()) : weights, &tree_control::make_actor));
+  }
+}
+
+const control::ControllerSpec& Env::network_of(std::size_t robot) const {
+  if (!controller_->per_body()) return *controller_;
+  return controller_->networks.at(controller_->body_networks.at(spec_->body_of(robot)));
+}
+
+void Env::check_robot(std::size_t robot) const {
+  if (robot >= robots())
+    throw py::value_error("the experiment has " + std::to_string(robots()) + " robots; there is no robot " +
+                          std::to_string(robot + 1));
 }
 
 void Env::require_alone(const char* call) const {
@@ -162,10 +180,11 @@ py::tuple Env::step_group(const std::vector<Action>& actions) {
 }
 
 py::array_t<double> Env::observation(std::size_t robot) const {
-  py::array_t<double> obs(static_cast<py::ssize_t>(observed_.size()));
+  const std::vector<expr::Slot>& observed = observed_[robot];
+  py::array_t<double> obs(static_cast<py::ssize_t>(observed.size()));
   auto out = obs.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < observed_.size(); ++i)
-    out(static_cast<py::ssize_t>(i)) = stepper_.frame(robot)[observed_[i]];
+  for (std::size_t i = 0; i < observed.size(); ++i)
+    out(static_cast<py::ssize_t>(i)) = stepper_.frame(robot)[observed[i]];
   return obs;
 }
 
@@ -179,9 +198,7 @@ py::dict Env::info(std::size_t robot) const {
 }
 
 py::dict Env::state(std::size_t robot) const {
-  if (robot >= robots())
-    throw py::value_error("the experiment has " + std::to_string(robots()) + " robots; there is no robot " +
-                          std::to_string(robot + 1));
+  check_robot(robot);
   const eval::TraceStep t = stepper_.traced(commands_[robot], actions_[robot], fitness_, robot);
   py::dict d = info(robot);
   d["x"] = t.pose.x_m;
@@ -205,15 +222,18 @@ py::dict Env::state(std::size_t robot) const {
   return d;
 }
 
-std::vector<std::string> Env::observation_names() const {
+std::vector<std::string> Env::observation_names(std::size_t robot) const {
+  check_robot(robot);
+  const sim::RobotParams& body = spec_->bodies.empty() ? spec_->robot : spec_->bodies[spec_->body_of(robot)].params;
   std::vector<std::string> names;
-  for (const expr::Slot s : observed_) names.push_back(slot_name(s, spec_->robot));
+  for (const expr::Slot s : observed_[robot]) names.push_back(slot_name(s, body));
   return names;
 }
 
-py::tuple Env::observation_bounds() const {
+py::tuple Env::observation_bounds(std::size_t robot) const {
+  check_robot(robot);
   std::vector<double> low, high;
-  for (const expr::Slot s : observed_) {
+  for (const expr::Slot s : observed_[robot]) {
     const SlotRange r = slot_range(s, *spec_);
     low.push_back(r.low);
     high.push_back(r.high);
@@ -249,8 +269,10 @@ void bind_env(py::module_& m) {
       .def("step_group", &Env::step_group, py::arg("actions"),
            "A group's step, an action per robot: (observations, rewards, terminated, truncated, infos).")
       .def_property_readonly("robots", &Env::robots)
-      .def_property_readonly("observation_names", &Env::observation_names)
-      .def_property_readonly("observation_bounds", &Env::observation_bounds)
+      .def("observation_names", &Env::observation_names, py::arg("robot") = 0,
+           "What each entry of robot `robot`'s observation is, by observable name.")
+      .def("observation_bounds", &Env::observation_bounds, py::arg("robot") = 0,
+           "Robot `robot`'s observation bounds: (low, high).")
       .def_property_readonly("action_bounds", &Env::action_bounds)
       .def_property_readonly("seed", &Env::seed)
       .def_property_readonly("episodes", &Env::episodes)

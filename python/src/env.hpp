@@ -56,8 +56,9 @@ class Env {
   [[nodiscard]] pybind11::dict state(std::size_t robot = 0) const;
   [[nodiscard]] std::size_t robots() const noexcept { return stepper_.robots(); }
 
-  [[nodiscard]] std::vector<std::string> observation_names() const;
-  [[nodiscard]] pybind11::tuple observation_bounds() const;   // (low, high)
+  // Robot `robot`'s observation: its body's network's inputs with a controller per body.
+  [[nodiscard]] std::vector<std::string> observation_names(std::size_t robot = 0) const;
+  [[nodiscard]] pybind11::tuple observation_bounds(std::size_t robot = 0) const;   // (low, high)
   [[nodiscard]] pybind11::tuple action_bounds() const;        // (low, high)
   [[nodiscard]] std::size_t action_size() const noexcept { return action_size_; }
   [[nodiscard]] std::uint64_t seed() const noexcept { return seed_; }
@@ -79,11 +80,14 @@ class Env {
   [[nodiscard]] pybind11::array_t<double> observation(std::size_t robot = 0) const;
   [[nodiscard]] pybind11::dict info(std::size_t robot = 0) const;
   void require_alone(const char* call) const;
+  // Robot `robot`'s network: the controller's, or its body's with a controller per body.
+  [[nodiscard]] const control::ControllerSpec& network_of(std::size_t robot) const;
+  void check_robot(std::size_t robot) const;
 
   std::shared_ptr<const CompiledScript> script_;   // holds spec_ and controller_
   const eval::ExperimentSpec* spec_;
   const control::ControllerSpec* controller_ = nullptr;   // none: the action is the wheel commands
-  std::vector<expr::Slot> observed_;
+  std::vector<std::vector<expr::Slot>> observed_;   // each robot's
   std::size_t action_size_ = 2;
   // The controller's head of each robot, run on the actions; its network is never run, so its
   // weights are zeros of the right size (which it points into).

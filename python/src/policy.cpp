@@ -4,12 +4,17 @@
 // or a NEAT network's control::GraphNet, activated once per call as once per control step),
 // fed the same doubles from the observation, so Env driven by it steps as esc's evaluation
 // of the genome does.
+#include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
 #include "python/src/bindings.hpp"
 #include "python/src/compiled_script.hpp"
@@ -51,14 +56,33 @@ std::vector<double> weights(const control::ControllerSpec& c, const Array& genom
   return {genome.data(), genome.data() + genome.size()};
 }
 
+// A controller per body's network for `body`, its weights the genome's slice for it; any
+// other controller itself, its weights the genome (network, weights).
+std::pair<const control::ControllerSpec*, std::vector<double>> body_network(const control::ControllerSpec& c,
+                                                                            const Array& genome,
+                                                                            const std::optional<std::string>& body,
+                                                                            int roles) {
+  if (!c.per_body()) {
+    if (body) throw py::value_error("`" + c.name + "` is one network for every body: give no body");
+    return {&c, weights(c, genome, roles)};
+  }
+  const auto it = body ? std::find(c.network_bodies.begin(), c.network_bodies.end(), *body) : c.network_bodies.end();
+  if (it == c.network_bodies.end())
+    throw py::value_error("`" + c.name + "` is a controller per body (" + c.architecture() +
+                          "): a policy is one body's network; give body= one of " +
+                          fmt::format("{}", fmt::join(c.network_bodies, ", ")) + (body ? ", not " + *body : ""));
+  const std::vector<double> all = weights(c, genome, roles);
+  const auto k = static_cast<std::size_t>(it - c.network_bodies.begin());
+  const auto first = all.begin() + static_cast<std::ptrdiff_t>(c.network_offset(k));
+  return {&c.networks[k], {first, first + static_cast<std::ptrdiff_t>(c.networks[k].genome_size())}};
+}
+
 class Policy {
  public:
   Policy(const std::shared_ptr<CompiledScript>& script, const std::string& experiment, const std::string& controller,
-         const Array& genome)
-      : script_(script),
-        controller_(&network(*script, experiment, controller)),
-        genome_(weights(*controller_, genome, find_experiment(*script, experiment).roles)),
-        net_(make_net(*controller_, genome_)) {}
+         const Array& genome, const std::optional<std::string>& body)
+      : Policy(script, body_network(network(*script, experiment, controller), genome, body,
+                                    find_experiment(*script, experiment).roles)) {}
   Policy(const Policy&) = delete;
   Policy& operator=(const Policy&) = delete;
 
@@ -84,6 +108,13 @@ class Policy {
   }
 
  private:
+  Policy(const std::shared_ptr<CompiledScript>& script,
+         std::pair<const control::ControllerSpec*, std::vector<double>> network)
+      : script_(script),
+        controller_(network.first),
+        genome_(std::move(network.second)),
+        net_(make_net(*controller_, genome_)) {}
+
   using Net = std::variant<control::Mlp, control::GraphNet>;
   static Net make_net(const control::ControllerSpec& c, const std::vector<double>& genome) {
     if (c.is_graph()) return Net(std::in_place_type<control::GraphNet>, c.mlp, c.output_count(), genome);
@@ -101,8 +132,10 @@ class Policy {
 
 void bind_policy(py::module_& m) {
   py::class_<Policy>(m, "Policy", "A genome's network as Env's policy (see esc.Env.policy, which wraps it).")
-      .def(py::init<const std::shared_ptr<CompiledScript>&, const std::string&, const std::string&, const Array&>(),
-           py::arg("script"), py::arg("experiment"), py::arg("controller"), py::arg("genome"))
+      .def(py::init<const std::shared_ptr<CompiledScript>&, const std::string&, const std::string&, const Array&,
+                    const std::optional<std::string>&>(),
+           py::arg("script"), py::arg("experiment"), py::arg("controller"), py::arg("genome"),
+           py::arg("body") = py::none())
       .def("__call__", &Policy::operator(), py::arg("observation"),
            "The network's activated outputs for `observation`, its inputs; advances a recurrent network's state.")
       .def("reset", &Policy::reset, "Zeroes a recurrent network's state, as at the start of an epoch.");

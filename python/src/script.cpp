@@ -103,9 +103,19 @@ py::dict controller_info(const control::ControllerSpec& c, const eval::Experimen
   d["genome_size"] = x.genome_length(c);
   d["roles"] = x.roles;
   std::vector<std::string> inputs;
-  if (!c.is_tree())
+  if (!c.is_tree() && !c.per_body())
     for (const expr::Slot slot : c.mlp.inputs) inputs.push_back(slot_name(slot, x.robot));
   d["inputs"] = inputs;
+  // A controller per body: each body's network's inputs, named as that body reads them.
+  py::list per_body;
+  for (std::size_t b = 0; b < c.body_networks.size() && b < std::max<std::size_t>(x.bodies.size(), 1); ++b) {
+    const control::ControllerSpec& n = c.networks.at(c.body_networks[b]);
+    const sim::RobotParams& body = x.bodies.empty() ? x.robot : x.bodies[b].params;
+    std::vector<std::string> read;
+    for (const expr::Slot slot : n.mlp.inputs) read.push_back(slot_name(slot, body));
+    per_body.append(py::make_tuple(x.bodies.empty() ? x.resolved_settings.at("robot") : x.bodies[b].name, read));
+  }
+  d["per_body"] = per_body;
   d["choices"] = c.choice_names();
   d["graph"] = c.is_graph();
   return d;

@@ -17,7 +17,14 @@ int ControllerSpec::output_count() const noexcept {
   return static_cast<int>(n);
 }
 
+std::size_t ControllerSpec::network_offset(std::size_t k) const noexcept {
+  std::size_t offset = 0;
+  for (std::size_t i = 0; i < k && i < networks.size(); ++i) offset += networks[i].genome_size();
+  return offset;
+}
+
 std::size_t ControllerSpec::genome_size() const noexcept {
+  if (per_body()) return network_offset(networks.size());
   if (is_tree() || is_graph()) return 0;
   // Each layer out x (in + 1): one bias and one weight per input for every neuron; an
   // Elman hidden layer also takes its own previous activations as inputs, out x (in + 1 + out).
@@ -47,6 +54,13 @@ const char* ControllerSpec::head_name() const noexcept {
 std::string ControllerSpec::architecture() const {
   if (is_tree())
     return head == Head::Classical ? "tree wheels" : head == Head::Symbolic ? "tree actions" : "tree behaviors";
+  if (per_body()) {
+    std::string all;
+    for (std::size_t k = 0; k < networks.size(); ++k)
+      all += (all.empty() ? "" : " / ") + (k < network_bodies.size() ? network_bodies[k] + ' ' : std::string()) +
+             networks[k].architecture();
+    return all;
+  }
   std::string s = std::to_string(mlp.inputs.size());
   if (is_graph()) return s + kGraphArchitectureMark + std::to_string(output_count());
   for (int h : mlp.hidden) {

@@ -104,7 +104,21 @@ struct ControllerSpec {
   // One per choice_names() entry, in order, when the compiler built the spec; may be empty
   // (then no choice has an id: `using(B)` reads 0).
   std::vector<Choice> choices;
+  // A controller per body (`per_body(khepera: cc, thymio2: ct)`), for a group whose bodies
+  // read other sensors: `networks` holds each body's network controller (inputs read on that
+  // body), in the declaration's order, their weights one after the other in the genome, and
+  // `network_bodies` the body each is for. `mlp`, the head, the actions or behaviors and
+  // `choices` are the first network's: every network has the same head and choices, so the
+  // group's usage counts one set of them. `body_networks[b]` is the network driving body b
+  // of the experiment's group (ExperimentSpec::bodies; one entry for a group of one body),
+  // filled where the experiment binds it. All empty for any other controller.
+  std::vector<ControllerSpec> networks;
+  std::vector<std::string> network_bodies;
+  std::vector<std::size_t> body_networks;
 
+  [[nodiscard]] bool per_body() const noexcept { return !networks.empty(); }
+  // Where network k's weights start in a genome of this controller (per_body()).
+  [[nodiscard]] std::size_t network_offset(std::size_t k) const noexcept;
   [[nodiscard]] bool is_tree() const noexcept { return primitives != nullptr; }
   // A `neat(...)` network: its genome is a graph genome, of no fixed size.
   [[nodiscard]] bool is_graph() const noexcept { return !is_tree() && mlp.kind == NetworkKind::Graph; }
@@ -116,7 +130,8 @@ struct ControllerSpec {
   // "8-14-6" style architecture string for tables; an Elman hidden layer is marked with
   // an r (recurrent): "17-5r-2". A supervisor's string is its own network's: "17-5r-4".
   // A tree controller: "tree wheels", "tree actions" or "tree behaviors". A NEAT network:
-  // "17-neat-2".
+  // "17-neat-2". A controller per body: each body and its network's, in the declaration's
+  // order (its genome's): "khepera 8-4-2 / thymio2 7-4-2".
   [[nodiscard]] std::string architecture() const;
   // The head as the results store and its tables name it: "classical", "symbolic",
   // "supervisor", or "tree" for a tree controller.

@@ -36,13 +36,18 @@ TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, dou
   t.pose = state.pose;
   t.ir = ir_[robot];
   t.light = light_[robot];
-  // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal).
-  t.range_count = world_->robot().rangefinders.angles_rad.size();
-  t.radar_count = static_cast<std::size_t>(world_->robot().radars);
+  // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal). As
+  // many as the group's body with the most has, so that every robot's step has one shape
+  // (the store's): a robot reads 0 from a sensor its body lacks, as its frame holds it.
+  for (std::size_t i = 0; i < frames_.size(); ++i) {
+    const sim::RobotParams& body = world_->robot(i);
+    t.range_count = std::max(t.range_count, body.rangefinders.angles_rad.size());
+    t.radar_count = std::max(t.radar_count, static_cast<std::size_t>(body.radars));
+    t.ground_count = std::max(t.ground_count, body.ground.mounts.size());
+    t.bumper_count = std::max(t.bumper_count, body.bumpers.size());
+  }
   std::copy_n(frame.begin() + expr::slot::range, t.range_count, t.range.begin());
   std::copy_n(frame.begin() + expr::slot::radar, t.radar_count, t.radar.begin());
-  t.ground_count = world_->robot().ground.mounts.size();
-  t.bumper_count = world_->robot().bumpers.size();
   std::copy_n(frame.begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());
   std::copy_n(frame.begin() + expr::slot::bumper, t.bumper_count, t.bumper.begin());
   t.grouped = frames_.size() > 1;

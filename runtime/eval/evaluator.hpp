@@ -121,7 +121,8 @@ class Evaluator {
   // With a `trace`, every step is also reported to it; the result is the same either way
   // (the untraced path pays one predictable branch per step). A tree controller's genome
   // is its encoded tree (runtime/genome/tree/codec.hpp); a network's holds spec.roles
-  // networks' weights (spec.genome_length), role r's driving robots r, r + roles, ...
+  // networks' weights (spec.genome_length), role r's driving robots r, r + roles, ...; a
+  // controller per body's, each body's network's (ControllerSpec::networks).
   [[nodiscard]] Evaluation evaluate(const control::ControllerSpec& controller,
                                     std::span<const double> genome, std::uint64_t seed,
                                     TraceSink* trace = nullptr);
@@ -130,6 +131,8 @@ class Evaluator {
                                     std::uint64_t seed, TraceSink* trace = nullptr);
 
  private:
+  [[nodiscard]] Evaluation evaluate_per_body(const control::ControllerSpec& controller, std::span<const double> genome,
+                                             std::uint64_t seed, TraceSink* trace);
   // The epochs, with any controller that has reset(), step(frame), last_action() and usage():
   // one per robot (one alone).
   template <class Driver>

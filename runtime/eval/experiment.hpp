@@ -395,6 +395,15 @@ struct ExperimentSpec {
     for (const GroupBody& b : bodies) all.insert(all.end(), static_cast<std::size_t>(b.count), b.params);
     return all;
   }
+  // The body robot `i` has: its index in `bodies` (0 for a group of one body).
+  [[nodiscard]] std::size_t body_of(std::size_t i) const noexcept {
+    std::size_t b = 0;
+    for (std::size_t first = 0; b < bodies.size(); ++b) {
+      first += static_cast<std::size_t>(bodies[b].count);
+      if (i < first) return b;
+    }
+    return 0;
+  }
   // A genome of `c` here: its network's weights once per role (a tree's and a graph's, of any
   // length, have genome_size() 0).
   [[nodiscard]] std::size_t genome_length(const control::ControllerSpec& c) const {

@@ -67,6 +67,13 @@ class Writer {
         numbers(k + ".genome", fixed->genome);
       }
     }
+    // Only for a controller per body, so that every other keeps its fingerprint.
+    for (std::size_t i = 0; i < c.networks.size(); ++i) {
+      const std::string k = fmt::format("{}.body{}", key, i);
+      line(k, i < c.network_bodies.size() ? c.network_bodies[i] : std::string());
+      controller(k + ".network", c.networks[i]);
+    }
+    if (!c.body_networks.empty()) line(key + ".body_networks", fmt::format("{}", fmt::join(c.body_networks, ",")));
   }
   [[nodiscard]] std::string text() && { return std::move(out_); }
 

@@ -30,4 +30,13 @@ std::string genome_problem(const control::ControllerSpec& c, std::span<const dou
                      c.genome_size(), c.architecture());
 }
 
+std::string layout_problem(const control::ControllerSpec& c, const std::string& evolved) {
+  const std::string here = c.architecture();
+  const bool per_body = c.per_body() || evolved.find(" / ") != std::string::npos;
+  if (!per_body || evolved.empty() || evolved == here) return {};
+  return fmt::format("it was evolved by a controller of networks {}, and `{}` here is {}: a controller per body's "
+                     "genome holds its networks in its declaration's order",
+                     evolved, c.name, here);
+}
+
 }  // namespace esc::eval

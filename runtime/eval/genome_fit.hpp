@@ -15,4 +15,10 @@ namespace esc::eval {
 // NEAT network's inputs and outputs.
 [[nodiscard]] std::string genome_problem(const control::ControllerSpec& c, std::span<const double> genome, int roles = 1);
 
+// Why a genome evolved by a controller of architecture `evolved` (as stored) cannot be read by
+// `c` although its length fits ("" when it can): a controller per body's genome holds its
+// networks in its declaration's order, so another order (or other bodies) reads the weights
+// of one body's network as another's. Only where either is a controller per body.
+[[nodiscard]] std::string layout_problem(const control::ControllerSpec& c, const std::string& evolved);
+
 }  // namespace esc::eval

@@ -194,6 +194,8 @@ bool behavior_reads(const control::Behavior& b, expr::Slot slot) noexcept {
 
 bool controller_reads(const control::ControllerSpec& c, expr::Slot slot) noexcept {
   if (c.is_tree()) return true;
+  for (const control::ControllerSpec& n : c.networks)
+    if (controller_reads(n, slot)) return true;
   const auto& inputs = c.mlp.inputs;
   if (std::find(inputs.begin(), inputs.end(), slot) != inputs.end()) return true;
   for (const control::Behavior& a : c.actions)

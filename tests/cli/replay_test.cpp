@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -336,6 +337,46 @@ TEST(Replay, AGroupOfTwoBodiesIsDrawnEachWithItsOwn) {
   const std::optional<std::string> dom = report_page(dir);
   if (!dom) GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
   EXPECT_NE(dom->find(">robot 3 (epuck_ir)</option>"), std::string::npos);
+}
+
+// Kheperas and Thymio IIs, each body driven by its own network (a controller per body): the
+// replay re-simulates it to the bit, and its CSV holds the widest body's sensors for every row.
+TEST(Replay, AGroupOfBodiesReadingOtherSensorsIsReplayedWithEveryRobotsSensors) {
+  const fs::path dir = scratch("replay-per-body");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/experiments/examples/mixed_bodies.esc";
+  const Outcome run = esc_command("run " + script + " --experiment mixed_dispersion --runs 1 --generations 2 "
+                                  "--set epochs=1 --set steps=40 --set mu=2 --set lambda=4 --threads 2 --out " +
+                                  dir.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("khepera 8-4-2 / thymio2 7-4-2"), std::string::npos) << run.output;
+  EXPECT_EQ(read_json(dir / "summary.json")["bodies"], "khepera x 3, thymio2 x 3");
+  const Outcome o = esc_command("replay " + dir.string() + " --controller sc");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_NE(o.output.find("identical to the stored replay"), std::string::npos) << o.output;
+  const std::string csv = slurp(dir / "replay-sc-run-01.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_NE(header.find(",ir7,light0,"), std::string::npos) << header;
+  EXPECT_NE(header.find(",ground_sensor0,ground_sensor1,energy,"), std::string::npos) << header << ": the Thymio's two";
+  std::set<std::string> robots;
+  for (std::size_t at = csv.find('\n'); at != std::string::npos && at + 1 < csv.size(); at = csv.find('\n', at + 1)) {
+    const std::size_t a = csv.find(',', csv.find(',', at + 1) + 1) + 1;
+    robots.insert(csv.substr(a, csv.find(',', a) - a));
+  }
+  EXPECT_EQ(robots, (std::set<std::string>{"1", "2", "3", "4", "5", "6"}));
+  // Its genome holds the networks in the declaration's order: a controller listing the bodies
+  // the other way round has as many weights, and is refused.
+  const fs::path swapped = dir / "swapped.esc";
+  std::ofstream(swapped) << "import \"" << script << "\"\n"
+                         << "controller cs = per_body(thymio2: sc_thymio, khepera: sc_khepera)\n"
+                         << "experiment swapped { arena open_floor  robot khepera { substeps 6 } x 3, thymio2 x 3\n"
+                         << "  fitness spread_out  epochs 1 x 40 steps  compare cs as sc }\n";
+  const Outcome refused = esc_command("replay " + (dir / "sc" / "run-01.best.json").string() + " --script " +
+                                      swapped.string() + " --experiment swapped --out " + dir.string());
+  EXPECT_NE(refused.status, 0) << refused.output;
+  EXPECT_NE(refused.output.find("it was evolved by a controller of networks khepera 8-4-6 / thymio2 7-4-6, and `sc` "
+                                "here is thymio2 7-4-6 / khepera 8-4-6"),
+            std::string::npos)
+      << refused.output;
 }
 
 TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {

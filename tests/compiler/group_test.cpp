@@ -381,7 +381,7 @@ TEST(Groups, BodiesOfOtherShapesJoinAGroupThatReadsTheSameSensors) {
 TEST(Groups, BodiesReadingOtherSensorsOrTooManyRobotsAreLocatedErrors) {
   std::string out = refusal("robot ep { body_radius 37mm  ir_name prox }\n" + script("robot bot x 2, ep"), "g.esc");
   EXPECT_NE(out.find("g.esc:6:83: error: `ep` has another `ir_name` than `bot` (prox against ir): the bodies of a "
-                     "group share the sensors their controller reads"),
+                     "group share the sensors one controller reads"),
             std::string::npos)
       << out;
   EXPECT_NE(out.find("help: name its sensors as `bot` does, in the group's list: `ep { ir_name ir }`"),
@@ -389,10 +389,13 @@ TEST(Groups, BodiesReadingOtherSensorsOrTooManyRobotsAreLocatedErrors) {
       << out;
   (void)first_experiment("robot ep { body_radius 37mm  ir_name prox }\n" + script("robot bot x 2, ep { ir_name ir }"),
                          "g.esc");
-  // The number of sensors first: no other change makes such bodies one group.
+  // The world's step first: no controller makes such bodies one group. Then the number of
+  // sensors, which a controller per body reads apart (tests/compiler/per_body_test.cpp).
   out = refusal("robot few = bot { substeps 6  ir_sensors [(0deg, 0deg)] }\n" + script("robot bot, few"), "g.esc");
+  EXPECT_NE(out.find("`few` has another `substeps` than `bot` (6 against"), std::string::npos) << out;
+  out = refusal("robot few = bot { ir_sensors [(0deg, 0deg)] }\n" + script("robot bot, few"), "g.esc");
   EXPECT_NE(out.find("`few` has another number of `ir_sensors` than `bot` (1 against 8)"), std::string::npos) << out;
-  EXPECT_NE(out.find("help: bodies that read other sensors need a controller each"), std::string::npos) << out;
+  EXPECT_NE(out.find("help: compare controllers with a network per body"), std::string::npos) << out;
   // A name matters only for sensors the bodies have.
   (void)first_experiment("robot g = bot { ground_name floor }\n" + script("robot bot, g"), "g.esc");
   out = refusal(script("robot bot x 200, bot x 100"), "g.esc");

@@ -103,3 +103,22 @@ def test_a_group_is_evaluated_and_its_best_scores_its_stored_fitness(tmp_path):
     # Env drives one robot: a group's is refused, saying what to use.
     with pytest.raises(ValueError, match="group of 5 robots"):
         esc.Env(script, "dispersion", "cc")
+
+
+def test_a_controller_per_body_is_evaluated_and_its_best_scores_its_stored_fitness(tmp_path):
+    """experiments/examples/mixed_bodies.esc: Kheperas and Thymio IIs, a network per body."""
+    settings = {"epochs": 1, "steps": 40, "mu": 2, "lambda": 4}
+    script_path = EXPERIMENTS / "examples" / "mixed_bodies.esc"
+    out = esc_run(script_path, tmp_path / "run", settings, "--experiment", "mixed_dispersion")
+    script = esc.compile(script_path, settings)
+    cc = script.controller("mixed_dispersion", "cc")
+    assert cc.architecture == "khepera 8-4-2 / thymio2 7-4-2" and cc.inputs == ()
+    assert [body for body, _ in cc.per_body] == ["khepera", "thymio2"]
+    assert cc.per_body[0][1] == tuple(f"ir[{i}]" for i in range(8))
+    assert cc.per_body[1][1] == tuple(f"prox_horizontal[{i}]" for i in range(7))
+    assert cc.genome_size == 46 + 42
+    stored = best_json(out, "cc")
+    assert len(stored["genome"]) == cc.genome_size
+    fitness = esc.evaluate(script, "mixed_dispersion", "cc", np.array([stored["genome"]]),
+                           seed=int(stored["evaluation_seed"]))
+    assert fitness[0] == stored["fitness"]

@@ -63,6 +63,34 @@ def test_a_stored_genome_drives_every_robot_as_the_replay_did(group_runs, tmp_pa
     assert truncations["robot_1"] and env.num_agents == 0
 
 
+@pytest.mark.parametrize("controller", ["cc", "sc"])
+def test_a_controller_per_body_drives_each_robot_with_its_bodys_network(tmp_path, controller):
+    """experiments/examples/mixed_bodies.esc: three Kheperas (8 IR) and three Thymio IIs (7),
+    a network per body; each agent observes its own body's network's inputs."""
+    mixed = EXPERIMENTS / "examples" / "mixed_bodies.esc"
+    run = esc_run(mixed, tmp_path / "run", SETTINGS, "--experiment", "mixed_dispersion")
+    run_esc("replay", run, "--controller", controller, "--run", 1, "--out", tmp_path)
+    csv = pd.read_csv(tmp_path / f"replay-{controller}-run-01.csv", float_precision="round_trip", keep_default_na=False)
+    best = esc.open(run).best(controller, 1)
+    env = esc.ParallelEnv(esc.compile(mixed, SETTINGS), "mixed_dispersion", controller, seed=best.evaluation_seed)
+    assert [env.observation_space(a).shape for a in env.possible_agents] == [(8,)] * 3 + [(7,)] * 3
+    assert env.observation_names_of("robot_4") == [f"prox_horizontal[{i}]" for i in range(7)]
+    assert env.observation_names_of("robot_1") == [f"ir[{i}]" for i in range(8)]
+    with pytest.raises(ValueError, match="give body= one of khepera, thymio2, not epuck"):
+        env.policy(best.genome, "epuck")
+    policies = env.policies(best.genome)
+    observations, _ = env.reset()
+    rows = []
+    while env.agents:
+        observations, _, _, _, _ = env.step({a: policies[a](observations[a]) for a in env.agents})
+        rows.append(env.state())
+    assert len(rows) * 6 == len(csv)
+    for i, (_, row) in enumerate(csv.iterrows()):
+        state = rows[i // 6][f"robot_{row['robot']}"]
+        for column, key in EXACT.items():
+            assert state[key] == row[column], (column, row["step"], row["robot"])
+
+
 def test_a_genome_holds_every_roles_weights():
     script = esc.compile(GROUPS, {**SETTINGS, "roles": 5})
     c = script.controller("dispersion", "cc")
