@@ -377,6 +377,10 @@ TEST(Replay, AGroupOfBodiesReadingOtherSensorsIsReplayedWithEveryRobotsSensors) 
                                 "here is thymio2 7-4-6 / khepera 8-4-6"),
             std::string::npos)
       << refused.output;
+
+  const std::optional<std::string> dom = report_page(dir);
+  if (!dom) GTEST_SKIP() << "configured without chromium (Debian package `chromium`; scripts/esc-setup.sh installs it)";
+  EXPECT_NE(dom->find(">robot 4 (thymio2)</option>"), std::string::npos);
 }
 
 TEST(Replay, ASupervisorReadsItsEvolvedBehaviorsFromTheCacheAndNeverRunsThem) {

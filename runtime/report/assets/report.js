@@ -474,8 +474,14 @@
         box.appendChild(el('div', {class: 'irbar'}, [f]));
         box.appendChild(t);
       });
+      // Fewer values than bars (a robot whose body has fewer sensors than the group's widest):
+      // the rest are shown empty, with a dash.
       return {box, show(values) {
-        values.forEach((v, i) => { fill[i].style.width = `${Math.round(100 * v)}%`; text[i].textContent = v.toFixed(2); });
+        fill.forEach((f, i) => {
+          const v = values[i];
+          f.style.width = v === undefined ? '0%' : `${Math.round(100 * v)}%`;
+          text[i].textContent = v === undefined ? '–' : v.toFixed(2);
+        });
       }};
     }
     // The body and its IR sensors as the stored settings give them ("[(1.18 rad, 1.57 rad), (0.2
@@ -484,7 +490,8 @@
     // sensors were settings has the Khepera's (the report's own arrays) and the disc.
     // A group of several bodies lists them in robot order ("khepera x 2, epuck x 3"), and a
     // further body's setting is `bodyK.KEY` where it differs from the first's `robot.KEY`:
-    // each robot is drawn with its own body (the sensors a controller reads are alike).
+    // each robot is drawn with its own body, and the bars show the watched robot's sensors
+    // (bodies with a network each may have other numbers of them).
     const tuples = text => (text.match(/\(([^)]*)\)/g) || []).map(t => t.slice(1, -1).split(',').map(parseFloat));
     const settings = exp.settings || {};
     const listed = (settings.bodies || '').split(', ').map(b => b.match(/^(.*) x ([0-9]+)$/)).filter(m => m);
@@ -505,7 +512,7 @@
     });
     const shapeOf = k => shapes[robotBody[k] ?? 0];
     const robotLabel = k => listed.length > 1 ? `robot ${k + 1} (${listed[robotBody[k] ?? 0][1]})` : `robot ${k + 1}`;
-    const irMounts = shapes[0].irMounts;
+    const irMounts = shapes.reduce((most, b) => (b.irMounts.length > most.length ? b.irMounts : most), shapes[0].irMounts);
     const irName = (settings['robot.ir_name'] || 'ir') === 'ir' ? 'IR' : settings['robot.ir_name'];
     const irs = bars(irMounts.map((_, i) => `${irName} ${i}`), 'ir');
     const lights = bars(irMounts.map((_, i) => `light ${i}`), 'light');
@@ -707,9 +714,10 @@
       for (let k = 0; k < robots; ++k) drawRobot(rows[index * robots + k], k);
       if (radarCount > 0) radars.show(r[radarAt]);
       if (rangeCount > 0) ranges.show(r[rangeAt]);
-      irs.show(ir.slice(0, irMounts.length));
+      const own = shapeOf(watched).irMounts.length;
+      irs.show(ir.slice(0, own));
       // Replays stored before the light sensors were traced have none.
-      lights.show((light || [0, 0, 0, 0, 0, 0, 0, 0]).slice(0, irMounts.length));
+      lights.show((light || [0, 0, 0, 0, 0, 0, 0, 0]).slice(0, own));
       accumulator.show([energy === undefined ? 1 : energy]);
       action.textContent = act >= 0 ? (c.actions[act] || `action ${act}`) : 'wheels (classical head)';
       action.style.background = act >= 0 ? alpha(choiceColour(act, c.actions.length), 0.3) : '#e9eef8';
