@@ -74,6 +74,24 @@ TEST(Results, AGroupKilledResumesBitIdentical) {
   EXPECT_NE(replay.output.find("identical to the stored replay"), std::string::npos) << replay.output;
 }
 
+// A group whose bodies read other sensors, each driven by its body's network (a controller per
+// body, experiments/examples/mixed_bodies.esc), resumes as a robot alone does.
+TEST(Results, AGroupWithANetworkPerBodyKilledResumesBitIdentical) {
+  const fs::path reference = scratch("per-body-reference");
+  const fs::path killed = scratch("per-body-killed");
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/experiments/examples/mixed_bodies.esc";
+  const std::vector<std::string> shorter{"--experiment", "mixed_dispersion", "--runs", "2", "--set", "epochs=1",
+                                         "--set", "steps=40", "--set", "mu=2", "--set", "lambda=4"};
+  std::string flat;
+  for (const std::string& a : shorter) flat += a + " ";
+  ASSERT_EQ(esc("run " + script + kLonger + flat + "--threads 2 --out " + reference.string()).status, 0);
+  ASSERT_NO_FATAL_FAILURE(run_killed_halfway(script, killed, 40, 400, "1", shorter));
+  const Outcome resumed = esc("run --resume " + killed.string() + " --threads 2");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  expect_same_summary(reference, killed);
+  EXPECT_EQ(read_json(killed / "summary.json")["controllers"]["sc"]["architecture"], "khepera 8-4-6 / thymio2 7-4-6");
+}
+
 // A controller evolved with three robots, tested with five and with three (`evaluate from`,
 // tests/cli/data/group_transfer.esc): each test is its own group's, from the same genomes.
 TEST(Results, AGroupsControllerIsTestedWithAnotherGroupSize) {
