@@ -1,5 +1,6 @@
 // `esc bench`: the cost of a script's campaign (--campaign), or the paper's workloads
 // timed (bench_workloads.cpp).
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -91,13 +92,15 @@ int campaign_command(const BenchOptions& o) {
   const std::size_t cores = std::max(1U, std::thread::hardware_concurrency());
   fmt::print("measuring each controller on one core for {:.1f} s ...\n", o.min_time_s);
   const auto costs = bench::estimate_campaign(experiments, o.min_time_s);
-  fmt::print("\n{:<30} {:<12} {:<10} {:>12} {:>14} {:>12} {:>11}\n", "experiment", "controller", "arch",
+  std::size_t arch = 10;   // a controller per body's architecture names each body's network
+  for (const auto& c : costs) arch = std::max(arch, c.architecture.size());
+  fmt::print("\n{:<30} {:<12} {:<{}} {:>12} {:>14} {:>12} {:>11}\n", "experiment", "controller", "arch", arch,
              "evaluations", "steps (max)", "steps/s/core", "core-hours");
   double core_seconds = 0.0;
   for (const auto& c : costs) {
     core_seconds += c.core_seconds();
-    fmt::print("{:<30} {:<12} {:<10} {:>12.0f} {:>14.0f} {:>12.0f} {:>11.2f}\n", c.experiment, c.controller,
-               c.architecture, c.evaluations, c.max_steps, c.steps_per_second, c.core_seconds() / 3600.0);
+    fmt::print("{:<30} {:<12} {:<{}} {:>12.0f} {:>14.0f} {:>12.0f} {:>11.2f}\n", c.experiment, c.controller,
+               c.architecture, arch, c.evaluations, c.max_steps, c.steps_per_second, c.core_seconds() / 3600.0);
   }
   // Not a bound either way: epochs that end early (a collision, an empty accumulator) make a
   // run cheaper, evolved controllers that step slower than these genomes (more rays within
