@@ -50,7 +50,8 @@ void agree_or_throw(std::string message) {
   throw Error(ErrorKind::Dependency, std::move(message));
 }
 
-// What dependents read of a finished run (its finished runs' best genomes), from rank 0
+// What dependents read of a finished run (its controllers' architectures and finished runs'
+// best genomes), from rank 0
 // to the others. Doubles travel as their bits, so every rank holds the same genomes.
 std::string pack(const store::StoredExperiment& stored) {
   nlohmann::json j = {{"runs", stored.runs}, {"controllers", nlohmann::json::array()}};
@@ -62,7 +63,7 @@ std::string pack(const store::StoredExperiment& stored) {
       runs.push_back({{"run", r.run}, {"best_fitness", std::bit_cast<std::uint64_t>(r.best_fitness)},
                       {"best_genome", genome}});
     }
-    j["controllers"].push_back({{"name", c.name}, {"finished", runs}});
+    j["controllers"].push_back({{"name", c.name}, {"architecture", c.architecture}, {"finished", runs}});
   }
   return j.dump();
 }
@@ -74,6 +75,7 @@ store::StoredExperiment unpack(const std::string& text) {
   for (const nlohmann::json& c : j["controllers"]) {
     store::StoredController& sc = stored.controllers.emplace_back();
     sc.name = c["name"].get<std::string>();
+    sc.architecture = c["architecture"].get<std::string>();
     for (const nlohmann::json& r : c["finished"]) {
       eval::RunResult& result = sc.finished.emplace_back();
       result.run = r["run"].get<int>();

@@ -56,7 +56,10 @@ const std::optional<control::Behavior>& BehaviorLowering::lower(const ast::Behav
                       : Key{&d, arena, navigation->goal, navigation->rangefinders, navigation->radars,
                             navigation->ir_sensors, navigation->ground_sensors, navigation->bumpers, navigation->names};
   if (auto it = behaviors_.find(key); it != behaviors_.end()) return it->second;
-  if (arena != nullptr && !lower(d)) return behaviors_[key];   // reported without the arena
+  // What fails without the arena, or in the arena whatever the robot, is reported there once:
+  // only what a body's sensors decide is reported per body.
+  if (arena != nullptr && !lower(d)) return behaviors_[key];
+  if (navigation != nullptr && arena != nullptr && !lower(d, arena)) return behaviors_[key];
   auto& slot = behaviors_[key];
   if (d.poisoned) return slot;
   if (d.evolved) {   // not a hand-written behavior: see evolved()

@@ -1,6 +1,9 @@
 #include "runtime/eval/genome_fit.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -30,12 +33,42 @@ std::string genome_problem(const control::ControllerSpec& c, std::span<const dou
                      c.genome_size(), c.architecture());
 }
 
+namespace {
+
+// "khepera 8-4-2 / thymio2 7-4-2" -> its bodies {"khepera", "thymio2"} and networks {"8-4-2",
+// "7-4-2"}; a controller that is one network, "8-4-2" -> {""} and {"8-4-2"}.
+struct Layout {
+  std::vector<std::string> bodies, networks;
+};
+Layout layout_of(std::string_view architecture) {
+  Layout l;
+  for (std::size_t at = 0; at <= architecture.size();) {
+    const std::size_t end = std::min(architecture.find(" / ", at), architecture.size());
+    const std::string_view part = architecture.substr(at, end - at);
+    const std::size_t space = part.rfind(' ');
+    l.bodies.emplace_back(space == std::string_view::npos ? std::string_view() : part.substr(0, space));
+    l.networks.emplace_back(space == std::string_view::npos ? part : part.substr(space + 1));
+    at = end + 3;
+  }
+  return l;
+}
+
+}  // namespace
+
 std::string layout_problem(const control::ControllerSpec& c, const std::string& evolved) {
   const std::string here = c.architecture();
-  const bool per_body = c.per_body() || evolved.find(" / ") != std::string::npos;
-  if (!per_body || evolved.empty() || evolved == here) return {};
-  return fmt::format("it was evolved by a controller of networks {}, and `{}` here is {}: a controller per body's "
-                     "genome holds its networks in its declaration's order",
+  if (evolved.empty() || evolved == here || (!c.per_body() && evolved.find(" / ") == std::string::npos)) return {};
+  const Layout was = layout_of(evolved), is = layout_of(here);
+  // The networks in another order read one body's weights as another's; the same bodies in
+  // another order too, even where their networks are alike. Bodies renamed (another robot
+  // declaration, `esc replay --script`) keep the genome's order.
+  std::vector<std::string> a = was.bodies, b = is.bodies;
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  const bool reordered = a == b && was.bodies != is.bodies && a.size() > 1;
+  if (was.networks == is.networks && !reordered) return {};
+  return fmt::format("it was evolved by `{}`, and `{}` here is `{}`: a controller per body's genome holds its "
+                     "networks in its declaration's order",
                      evolved, c.name, here);
 }
 

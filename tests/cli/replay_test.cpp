@@ -373,8 +373,8 @@ TEST(Replay, AGroupOfBodiesReadingOtherSensorsIsReplayedWithEveryRobotsSensors) 
   const Outcome refused = esc_command("replay " + (dir / "sc" / "run-01.best.json").string() + " --script " +
                                       swapped.string() + " --experiment swapped --out " + dir.string());
   EXPECT_NE(refused.status, 0) << refused.output;
-  EXPECT_NE(refused.output.find("it was evolved by a controller of networks khepera 8-4-6 / thymio2 7-4-6, and `sc` "
-                                "here is thymio2 7-4-6 / khepera 8-4-6"),
+  EXPECT_NE(refused.output.find("it was evolved by `khepera 8-4-6 / thymio2 7-4-6`, and `sc` here is `thymio2 7-4-6 / "
+                                "khepera 8-4-6`"),
             std::string::npos)
       << refused.output;
 

@@ -92,6 +92,24 @@ TEST(Results, AGroupWithANetworkPerBodyKilledResumesBitIdentical) {
   EXPECT_EQ(read_json(killed / "summary.json")["controllers"]["sc"]["architecture"], "khepera 8-4-6 / thymio2 7-4-6");
 }
 
+// A controller per body's genome is evaluated in a group of other counts and order of the same
+// bodies, and refused by a controller listing its networks the other way round
+// (tests/cli/data/per_body_transfer.esc).
+TEST(Results, AGenomeOfANetworkPerBodyIsReadInItsNetworksOrderOnly) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/per_body_transfer.esc";
+  const fs::path cache = scratch("per-body-transfer-cache");
+  const Outcome in_order = esc("run " + script + " --experiment in_order --cache " + cache.string() + " --out " +
+                               scratch("per-body-in-order").string());
+  ASSERT_EQ(in_order.status, 0) << in_order.output;
+  const Outcome reversed = esc("run " + script + " --experiment reversed --cache " + cache.string() + " --out " +
+                               scratch("per-body-reversed").string());
+  EXPECT_NE(reversed.status, 0) << reversed.output;
+  EXPECT_NE(reversed.output.find("it was evolved by `khepera 8-2-2 / thymio2 7-2-2`, and `team` here is `thymio2 "
+                                 "7-2-2 / khepera 8-2-2`"),
+            std::string::npos)
+      << reversed.output;
+}
+
 // A controller evolved with three robots, tested with five and with three (`evaluate from`,
 // tests/cli/data/group_transfer.esc): each test is its own group's, from the same genomes.
 TEST(Results, AGroupsControllerIsTestedWithAnotherGroupSize) {

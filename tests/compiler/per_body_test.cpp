@@ -8,6 +8,7 @@
 
 #include "runtime/core/rng.hpp"
 #include "runtime/eval/evaluator.hpp"
+#include "runtime/eval/genome_fit.hpp"
 #include "tests/compiler/helpers.hpp"
 
 namespace esc::compiler::test {
@@ -91,6 +92,26 @@ TEST(PerBody, TwoBodiesAlikeWithEqualNetworksAreTheClonalTeam) {
   const eval::Evaluation other =
       eval::Evaluator(per_body).evaluate(per_body.controllers.front(), joined(a, random_weights(a.size(), 4)), 7);
   EXPECT_NE(one.fitness, other.fitness);
+}
+
+TEST(PerBody, AStoredGenomeIsReadOnlyInItsNetworksOrder) {
+  const eval::ExperimentSpec x = first_experiment(script(kBoth, "compare both  robot bot x 2, eye x 2"), "p.esc");
+  const control::ControllerSpec& both = x.controllers.front();
+  EXPECT_EQ(eval::layout_problem(both, "bot 8-2 / eye 2-2-2"), "");
+  EXPECT_EQ(eval::layout_problem(both, ""), "") << "a genome file from before architectures were stored";
+  EXPECT_EQ(eval::layout_problem(both, "kh 8-2 / ey 2-2-2"), "") << "bodies renamed, networks in order";
+  EXPECT_NE(eval::layout_problem(both, "eye 2-2-2 / bot 8-2"), "");
+  // Two bodies of alike networks, listed the other way round: each would read the other's.
+  const eval::ExperimentSpec twins = first_experiment(
+      script("controller both = per_body(bot: c, twin: c)", "compare both  robot bot x 2, twin x 2"), "p.esc");
+  EXPECT_NE(eval::layout_problem(twins.controllers.front(), "twin 8-2 / bot 8-2"), "");
+  // One network: a plain controller's genome is a controller per body's of one body, and back.
+  const eval::ExperimentSpec alone =
+      first_experiment(script("controller one = per_body(bot: c)", "compare one  robot bot"), "p.esc");
+  EXPECT_EQ(eval::layout_problem(alone.controllers.front(), "8-2"), "");
+  EXPECT_EQ(eval::layout_problem(first_experiment(script("", "compare c  robot bot"), "p.esc").controllers.front(),
+                                 "bot 8-2"),
+            "");
 }
 
 TEST(PerBody, EachRobotIsDrivenByItsOwnBodysNetwork) {
@@ -192,6 +213,15 @@ TEST(PerBody, AControllerPerBodyMustFitTheGroup) {
     out = refusal(script(veer, "compare team  " + group), "p.esc");
     EXPECT_NE(out.find("calls its IR sensors `eye`"), std::string::npos) << group << "\n" << out;
   }
+  // What the arena decides is said once, not once per body.
+  out = refusal(script("behavior home(p) { wheels(p * in(base), p) }\n"
+                       "controller hk = symbolic(mlp(ir[0..7] -> hidden 2), actions [home])\n"
+                       "controller he = symbolic(mlp(eye[0..1] -> hidden 2), actions [home])\n"
+                       "controller team = per_body(bot: hk, eye: he)",
+                       "compare team  robot bot x 2, eye x 2"),
+                "p.esc");
+  EXPECT_NE(out.find("base"), std::string::npos) << out;
+  EXPECT_EQ(out.find("1 error generated"), out.find("error generated") - 2) << out;
   // A robot alone is a group of one body.
   const eval::ExperimentSpec alone =
       first_experiment(script("controller one = per_body(bot: c)", "compare one  robot bot"), "p.esc");

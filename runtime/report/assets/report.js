@@ -466,11 +466,11 @@
     // Bars of one sensor array (or the accumulator): fill and value per sensor.
     function bars(labels, kind) {
       const box = el('div', {class: 'irbars'});
-      const fill = [], text = [];
+      const fill = [], text = [], names = [];
       labels.forEach(label => {
-        const f = el('div', {class: kind}), t = el('span');
-        fill.push(f); text.push(t);
-        box.appendChild(el('span', {text: label}));
+        const f = el('div', {class: kind}), t = el('span'), n = el('span', {text: label});
+        fill.push(f); text.push(t); names.push(n);
+        box.appendChild(n);
         box.appendChild(el('div', {class: 'irbar'}, [f]));
         box.appendChild(t);
       });
@@ -482,7 +482,7 @@
           f.style.width = v === undefined ? '0%' : `${Math.round(100 * v)}%`;
           text[i].textContent = v === undefined ? '–' : v.toFixed(2);
         });
-      }};
+      }, relabel(label) { names.forEach((n, i) => { n.textContent = label(i); }); }};
     }
     // The body and its IR sensors as the stored settings give them ("[(1.18 rad, 1.57 rad), (0.2
     // rad, 0 rad, 0.035 m)]", an outline "[(-0.03 m, -0.055 m), ...]"): mount bearing, axis and
@@ -513,8 +513,9 @@
     const shapeOf = k => shapes[robotBody[k] ?? 0];
     const robotLabel = k => listed.length > 1 ? `robot ${k + 1} (${listed[robotBody[k] ?? 0][1]})` : `robot ${k + 1}`;
     const irMounts = shapes.reduce((most, b) => (b.irMounts.length > most.length ? b.irMounts : most), shapes[0].irMounts);
-    const irName = (settings['robot.ir_name'] || 'ir') === 'ir' ? 'IR' : settings['robot.ir_name'];
-    const irs = bars(irMounts.map((_, i) => `${irName} ${i}`), 'ir');
+    // The IR sensors as the watched robot's body names them (`IR` for `ir`).
+    const irName = b => { const n = setting(b, 'ir_name') || 'ir'; return n === 'ir' ? 'IR' : n; };
+    const irs = bars(irMounts.map((_, i) => `${irName(0)} ${i}`), 'ir');
     const lights = bars(irMounts.map((_, i) => `light ${i}`), 'light');
     const accumulator = bars(['energy'], 'energy');
     // The maze navigator's rangefinders and goal radars, where the robot has them (their
@@ -715,6 +716,7 @@
       if (radarCount > 0) radars.show(r[radarAt]);
       if (rangeCount > 0) ranges.show(r[rangeAt]);
       const own = shapeOf(watched).irMounts.length;
+      irs.relabel(i => `${irName(robotBody[watched] ?? 0)} ${i}`);
       irs.show(ir.slice(0, own));
       // Replays stored before the light sensors were traced have none.
       lights.show((light || [0, 0, 0, 0, 0, 0, 0, 0]).slice(0, own));
