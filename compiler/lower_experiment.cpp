@@ -266,7 +266,11 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
                                                 *compared[i])
               : !parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation))
         ok = false;
-    if (sensors_differ && robot_item != nullptr && !check_measures_on_bodies(x, robot_item->where)) ok = false;
+    // The first body's reads are checked where the measures are read; the others' here, once
+    // those hold.
+    if (sensors_differ && robot_item != nullptr && sink_.errors() == errors &&
+        !check_measures_on_bodies(x, robot_item->where))
+      ok = false;
   }
   // After the objectives and descriptors: an algorithm's settings are checked against them.
   if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);

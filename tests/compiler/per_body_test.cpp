@@ -179,6 +179,9 @@ TEST(PerBody, AControllerPerBodyMustFitTheGroup) {
   EXPECT_NE(out.find("the experiment's measures read the IR sensors, which `bot` calls `ir` and `eye` `eye`"),
             std::string::npos)
       << out;
+  // A sensor no body has is said once, where the fitness reads it.
+  out = refusal(script(kBoth, "compare both  robot bot x 2, eye x 2", "step: range[0]"), "p.esc");
+  EXPECT_NE(out.find("1 error generated"), std::string::npos) << out;
   // Roles within bodies are not built.
   out = refusal(script(kBoth, "compare both  robot bot x 2, eye x 2  roles 2"), "p.esc");
   EXPECT_NE(out.find("`both` is a controller per body: its genome holds a network per body, not per role"),
