@@ -507,6 +507,11 @@
           : exp.ir_mount_deg.map((b, i) => ({ b: b * Math.PI / 180, f: exp.ir_facing_deg[i] * Math.PI / 180, mm: null })),
         outlineMm: tuples(setting(b, 'body_outline') || '').map(([px, py]) => [px * 1000, py * 1000]),
         rangeAngles: (setting(b, 'rangefinders') || '').match(/-?[0-9.]+(e[-+]?[0-9]+)?(?= rad)/g),
+        // How many rangefinders and radars the body has, where its settings say (older runs
+        // do not: then every column the replay holds is the robot's).
+        ranges: setting(b, 'rangefinders') === undefined ? undefined
+          : ((setting(b, 'rangefinders') || '').match(/ rad/g) || []).length,
+        radars: setting(b, 'radars') === undefined ? undefined : parseInt(setting(b, 'radars'), 10),
         rangeMm: parseFloat(setting(b, 'rangefinder_range')) * 1000,
       };
     });
@@ -713,8 +718,10 @@
       for (let i = start * robots; i < (index + 1) * robots; ++i)
         if (rows[i][10]) { ctx.beginPath(); ctx.arc(X(rows[i][2]), Y(rows[i][3]), 3, 0, 2 * Math.PI); ctx.fill(); }
       for (let k = 0; k < robots; ++k) drawRobot(rows[index * robots + k], k);
-      if (radarCount > 0) radars.show(r[radarAt]);
-      if (rangeCount > 0) ranges.show(r[rangeAt]);
+      // A robot's body may have fewer than the group's widest (the rest shown empty).
+      const mine = (values, count) => (count === undefined || Number.isNaN(count) ? values : values.slice(0, count));
+      if (radarCount > 0) radars.show(mine(r[radarAt], shapeOf(watched).radars));
+      if (rangeCount > 0) ranges.show(mine(r[rangeAt], shapeOf(watched).ranges));
       const own = shapeOf(watched).irMounts.length;
       irs.relabel(i => `${irName(robotBody[watched] ?? 0)} ${i}`);
       irs.show(ir.slice(0, own));
