@@ -299,9 +299,7 @@ void fill_start_genomes(const DependencyContext& cx, eval::ExperimentSpec& spec,
     const store::StoredController& sc = stored_controller(p, c.name);
     auto& runs = start.genomes.emplace_back();
     for (const eval::RunResult& r : sc.finished) {
-      std::string why = eval::genome_problem(c, r.best_genome, spec.roles);
-      if (why.empty()) why = eval::layout_problem(c, sc.architecture);
-      if (!why.empty())
+      if (const std::string why = eval::genome_problem(c, r.best_genome, spec.roles, sc.architecture); !why.empty())
         throw Error(ErrorKind::Dependency, fmt::format("{}: the best genome of run {} of `{}` cannot start a run here: {}",
                                                        p.dir.string(), r.run + 1, c.name, why));
       runs.push_back({r.run, r.best_fitness, r.best_genome});

@@ -242,9 +242,7 @@ ReplayedSubject replay_subject(const eval::ExperimentSpec& spec, const Subject& 
                                         s.controller, compiler::quoted_list(names, " and ")));
     return done;
   }
-  std::string why = eval::genome_problem(*controller, s.genome, spec.roles);
-  if (why.empty()) why = eval::layout_problem(*controller, s.architecture);
-  if (!why.empty()) {
+  if (const std::string why = eval::genome_problem(*controller, s.genome, spec.roles, s.architecture); !why.empty()) {
     done.problems.push_back(
         fmt::format("the stored genome of {} does not fit {} in experiment `{}`: {}", s.controller, s.controller, spec.name, why));
     return done;

@@ -330,16 +330,13 @@ std::optional<control::ControllerSpec> ControllerLowering::lower_per_body(const 
     decls.push_back(nd);
   }
   if (sink_.errors() != errors || c.networks.size() != d.per_body.size()) return std::nullopt;
-  // The head, its choices and the first body's network stand for the controller where one
-  // network is read (its inputs in tables, `using(B)`).
-  const control::ControllerSpec& f = c.networks.front();
-  c.mlp = f.mlp;
-  c.head = f.head;
-  c.actions = f.actions;
-  c.behaviors = f.behaviors;
-  c.choices = f.choices;
-  c.name = d.name.text;
-  return c;
+  // The first body's network, its head and choices stand for the controller where one network
+  // is read (its inputs in tables, `using(B)`).
+  control::ControllerSpec per_body = c.networks.front();
+  per_body.name = d.name.text;
+  per_body.networks = std::move(c.networks);
+  per_body.network_bodies = std::move(c.network_bodies);
+  return per_body;
 }
 
 bool ControllerLowering::bind_bodies(control::ControllerSpec& c, const ast::ControllerDecl& d,

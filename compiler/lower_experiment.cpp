@@ -335,7 +335,7 @@ bool ExperimentLowering::check_measures_on_bodies(const eval::ExperimentSpec& x,
 
 void ExperimentLowering::report_sensor_difference(const SensorDifference& s) {
   const BodyDifference& differ = s.difference;
-  const bool sensors = differ.counted || differ.key.ends_with("_name");
+  const bool sensors = differ.sensors();
   Diagnostic& d = sink_.error(
       s.body->where, fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share {}their drive "
                                  "and their control step",
@@ -388,7 +388,7 @@ bool ExperimentLowering::lower_bodies(const ast::ExpItem& item, const sim::Robot
       if (set != body.written.end()) found.set_at = set->second.where;
       // What a controller reads may differ where each body has a network of its own: seen
       // once the compared controllers are known. The drive and the step are the world's.
-      if (!found.difference.counted && !found.difference.key.ends_with("_name")) {
+      if (!found.difference.sensors()) {
         report_sensor_difference(found);
         ok = false;
         continue;

@@ -62,15 +62,17 @@ inline constexpr RenamableSensors kRenamableSensors[] = {
 [[nodiscard]] std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p);
 
 // How a group's further body differs from its first where the bodies of one group must agree,
-// in this order: the sensors one controller reads (the number of each kind, then the IR and
-// ground sensors' names where there are some), the drive, the control step and the substeps.
-// Where each sensor sits, the body's radius and outline, speeds, ranges, curves and noise may
-// differ: every robot is stepped and sensed with its own body, and the replay draws each one's
-// shape.
+// in this order: the drive, the control step and the substeps (one world steps them all), then
+// the sensors one controller reads (the number of each kind, then the IR and ground sensors'
+// names where there are some), which a controller per body may read apart. Where each sensor
+// sits, the body's radius and outline, speeds, ranges, curves and noise may differ: every robot
+// is stepped and sensed with its own body, and the replay draws each one's shape.
 struct BodyDifference {
   std::string key;             // the robot setting
   bool counted = false;        // the number of sensors `key` lists differs, not its text
   std::string first, other;    // the two values, as a message gives them
+  // A difference in what a controller reads (a count or a sensor name), not in the world's step.
+  [[nodiscard]] bool sensors() const noexcept { return counted || key.ends_with("_name"); }
 };
 [[nodiscard]] std::optional<BodyDifference> group_difference(const sim::RobotParams& first,
                                                              const sim::RobotParams& other);

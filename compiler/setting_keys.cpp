@@ -88,13 +88,14 @@ void check_navigation(const eval::ExperimentSpec& spec, const SourceRange& where
   // Each body reads the measures and its controllers' networks: a controller per body's own
   // network on it, any other controller on the first body (whose sensors a group of such
   // controllers shares).
-  const std::set<expr::Slot> measures = slots_read_by_measures(spec);
+  std::set<expr::Slot> every_body = slots_read_by_measures(spec);
+  for (const control::ControllerSpec& c : spec.controllers)
+    if (!c.per_body()) every_body.merge(slots_read(c));
   for (std::size_t b = 0; b < std::max<std::size_t>(spec.bodies.size(), 1); ++b) {
     const Navigation n = b == 0 ? navigation_of(spec) : navigation_of(spec, b);
-    std::set<expr::Slot> read = measures;
+    std::set<expr::Slot> read = every_body;
     for (const control::ControllerSpec& c : spec.controllers)
-      if (!c.per_body()) read.merge(slots_read(c));
-      else if (b < c.body_networks.size()) read.merge(slots_read(c.networks.at(c.body_networks[b])));
+      if (c.per_body() && b < c.body_networks.size()) read.merge(slots_read(c.networks.at(c.body_networks[b])));
     for (const expr::Slot s : read)
       if (auto m = unavailable(s, n)) {
         sink.error(where, std::move(m->message)).help = std::move(m->help);

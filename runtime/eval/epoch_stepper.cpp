@@ -21,6 +21,18 @@ void EpochStepper::begin(std::uint64_t seed, int epoch) {
   sense();
 }
 
+EpochStepper::SensorCounts EpochStepper::widest(const sim::World& world) noexcept {
+  SensorCounts n;
+  for (std::size_t i = 0; i < world.robots(); ++i) {
+    const sim::RobotParams& body = world.robot(i);
+    n.ranges = std::max(n.ranges, body.rangefinders.angles_rad.size());
+    n.radars = std::max(n.radars, static_cast<std::size_t>(body.radars));
+    n.grounds = std::max(n.grounds, body.ground.mounts.size());
+    n.bumpers = std::max(n.bumpers, body.bumpers.size());
+  }
+  return n;
+}
+
 TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, double fitness,
                                std::size_t robot) const {
   const sim::RobotState& state = world_->state(robot);
@@ -36,16 +48,11 @@ TraceStep EpochStepper::traced(const control::WheelCommand& cmd, int action, dou
   t.pose = state.pose;
   t.ir = ir_[robot];
   t.light = light_[robot];
-  // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal). As
-  // many as the group's body with the most has, so that every robot's step has one shape
-  // (the store's): a robot reads 0 from a sensor its body lacks, as its frame holds it.
-  for (std::size_t i = 0; i < frames_.size(); ++i) {
-    const sim::RobotParams& body = world_->robot(i);
-    t.range_count = std::max(t.range_count, body.rangefinders.angles_rad.size());
-    t.radar_count = std::max(t.radar_count, static_cast<std::size_t>(body.radars));
-    t.ground_count = std::max(t.ground_count, body.ground.mounts.size());
-    t.bumper_count = std::max(t.bumper_count, body.bumpers.size());
-  }
+  // Read back from the frame, where sense() wrote them (a radar reads 0 without a goal).
+  t.range_count = widest_.ranges;
+  t.radar_count = widest_.radars;
+  t.ground_count = widest_.grounds;
+  t.bumper_count = widest_.bumpers;
   std::copy_n(frame.begin() + expr::slot::range, t.range_count, t.range.begin());
   std::copy_n(frame.begin() + expr::slot::radar, t.radar_count, t.radar.begin());
   std::copy_n(frame.begin() + expr::slot::ground_sensor, t.ground_count, t.ground.begin());

@@ -53,7 +53,7 @@ class EpochStepper {
   EpochStepper(const ExperimentSpec& spec, sim::World& world, const StepperReads& reads)
       : spec_(&spec), world_(&world), noise_(reads.noise), group_(reads.group || world.robots() > 1), pairs_(reads.pairs),
         frames_(world.robots()), ir_(world.robots()), light_(world.robots()), commands_(world.robots()),
-        cluster_parent_(world.robots()), cluster_size_(world.robots()) {}
+        cluster_parent_(world.robots()), cluster_size_(world.robots()), widest_(widest(world)) {}
 
   // Epoch `epoch` (from 0) of the evaluation with seed `seed`, its stream Rng(seed, {epoch}):
   // zones, start pose and reset drawn from it, the frame zeroed, then the first reading.
@@ -116,6 +116,13 @@ class EpochStepper {
   [[nodiscard]] const sim::World& world() const noexcept { return *world_; }
 
  private:
+  // The group's widest body's rangefinders, radars, ground sensors and bumpers: the shape of
+  // every traced step (the store's), a robot reading 0 from a sensor its body lacks.
+  struct SensorCounts {
+    std::size_t ranges = 0, radars = 0, grounds = 0, bumpers = 0;
+  };
+  static SensorCounts widest(const sim::World& world) noexcept;
+
   // The reading after each physics step serves that step's fitness term and the next step's
   // control input: the robot has not moved in between.
   // A group's robots are read in robot order, each its IR then its light (the noise drawn so).
@@ -164,6 +171,7 @@ class EpochStepper {
   std::vector<std::array<double, sim::kLightSensors>> light_;
   std::vector<sim::DriveCommand> commands_;
   std::vector<std::size_t> cluster_parent_, cluster_size_;   // observe_clusters' scratch, a robot each
+  SensorCounts widest_;
 };
 
 }  // namespace esc::eval

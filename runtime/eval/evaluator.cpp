@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -52,46 +53,38 @@ Evaluation Evaluator::evaluate(const control::ControllerSpec& controller,
                                std::span<const double> genome, std::uint64_t seed,
                                TraceSink* trace) {
   if (controller.is_tree()) return evaluate(controller, genome::tree::decode(genome, *controller.primitives), seed, trace);
-  if (controller.per_body()) return evaluate_per_body(controller, genome, seed, trace);
-  if (spec_->robots == 1) {
+  if (spec_->robots == 1 && !controller.per_body()) {
     control::Controller ctl(controller, genome, &tree_control::make_actor);
     control::Controller* const one = &ctl;
     return run(controller, std::span<control::Controller* const>(&one, 1), seed, trace);
   }
-  // Role r's network is the genome's r-th slice (the whole genome for the clonal team).
   const auto roles = static_cast<std::size_t>(spec_->roles);
-  if (roles > 1 && genome.size() != spec_->genome_length(controller))
-    throw std::invalid_argument(fmt::format("a genome of `{}` here holds {} roles of {} weights, got {} values",
-                                            controller.name, roles, controller.genome_size(), genome.size()));
-  const std::size_t role_size = genome.size() / roles;
-  std::vector<std::unique_ptr<control::Controller>> group;
-  std::vector<control::Controller*> drivers;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(spec_->robots); ++i) {
-    const std::span<const double> role = genome.subspan((i % roles) * role_size, role_size);
-    group.push_back(std::make_unique<control::Controller>(controller, role, &tree_control::make_actor));
-    drivers.push_back(group.back().get());
-  }
-  return run(controller, std::span<control::Controller* const>(drivers), seed, trace);
-}
-
-// Each robot driven by its body's network, built on that network's slice of the genome.
-Evaluation Evaluator::evaluate_per_body(const control::ControllerSpec& controller, std::span<const double> genome,
-                                        std::uint64_t seed, TraceSink* trace) {
-  if (genome.size() != controller.genome_size())
+  if (controller.per_body() && genome.size() != controller.genome_size())
     throw std::invalid_argument(fmt::format("a genome of `{}` holds its {} networks' {} weights, got {} values",
                                             controller.name, controller.networks.size(), controller.genome_size(),
                                             genome.size()));
-  std::vector<std::unique_ptr<control::Controller>> group;
-  std::vector<control::Controller*> drivers;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(spec_->robots); ++i) {
+  if (roles > 1 && genome.size() != spec_->genome_length(controller))
+    throw std::invalid_argument(fmt::format("a genome of `{}` here holds {} roles of {} weights, got {} values",
+                                            controller.name, roles, controller.genome_size(), genome.size()));
+  // Robot i's network and its weights: its body's network and that network's slice (a
+  // controller per body), else the controller's, role r's the r-th slice (the whole genome for
+  // the clonal team).
+  const std::size_t role_size = genome.size() / roles;
+  const auto network_of = [&](std::size_t i) -> std::pair<const control::ControllerSpec*, std::span<const double>> {
+    if (!controller.per_body()) return {&controller, genome.subspan((i % roles) * role_size, role_size)};
     const std::size_t b = spec_->body_of(i);
     if (b >= controller.body_networks.size())
       throw std::invalid_argument(fmt::format("controller `{}` names no network for body {} of the group",
                                               controller.name, b + 1));
     const std::size_t k = controller.body_networks[b];
     const control::ControllerSpec& network = controller.networks.at(k);
-    group.push_back(std::make_unique<control::Controller>(
-        network, genome.subspan(controller.network_offset(k), network.genome_size()), &tree_control::make_actor));
+    return {&network, genome.subspan(controller.network_offset(k), network.genome_size())};
+  };
+  std::vector<std::unique_ptr<control::Controller>> group;
+  std::vector<control::Controller*> drivers;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(spec_->robots); ++i) {
+    const auto [network, weights] = network_of(i);
+    group.push_back(std::make_unique<control::Controller>(*network, weights, &tree_control::make_actor));
     drivers.push_back(group.back().get());
   }
   return run(controller, std::span<control::Controller* const>(drivers), seed, trace);

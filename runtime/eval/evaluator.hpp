@@ -131,8 +131,6 @@ class Evaluator {
                                     std::uint64_t seed, TraceSink* trace = nullptr);
 
  private:
-  [[nodiscard]] Evaluation evaluate_per_body(const control::ControllerSpec& controller, std::span<const double> genome,
-                                             std::uint64_t seed, TraceSink* trace);
   // The epochs, with any controller that has reset(), step(frame), last_action() and usage():
   // one per robot (one alone).
   template <class Driver>

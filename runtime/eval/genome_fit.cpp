@@ -12,7 +12,8 @@
 
 namespace esc::eval {
 
-std::string genome_problem(const control::ControllerSpec& c, std::span<const double> genome, int roles) {
+std::string genome_problem(const control::ControllerSpec& c, std::span<const double> genome, int roles,
+                           std::string_view evolved) {
   if (c.is_graph()) {
     const std::string why = control::graph_genome_problem(c, genome);
     return why.empty() ? why : fmt::format("it is not a genome of `{}`'s NEAT network here: {}", c.name, why);
@@ -26,7 +27,7 @@ std::string genome_problem(const control::ControllerSpec& c, std::span<const dou
     }
   }
   const std::size_t wanted = c.genome_size() * static_cast<std::size_t>(roles);
-  if (genome.size() == wanted) return {};
+  if (genome.size() == wanted) return layout_problem(c, evolved);
   if (roles == 1)
     return fmt::format("it has {} genes, `{}` has {} here ({})", genome.size(), c.name, wanted, c.architecture());
   return fmt::format("it has {} genes, `{}` has {} here ({} roles of {}: {})", genome.size(), c.name, wanted, roles,
@@ -35,11 +36,13 @@ std::string genome_problem(const control::ControllerSpec& c, std::span<const dou
 
 namespace {
 
-// "khepera 8-4-2 / thymio2 7-4-2" -> its bodies {"khepera", "thymio2"} and networks {"8-4-2",
-// "7-4-2"}; a controller that is one network, "8-4-2" -> {""} and {"8-4-2"}.
+// Each network's body and architecture, in the genome's order; a controller that is one
+// network has one, of no body.
 struct Layout {
   std::vector<std::string> bodies, networks;
 };
+// As stored: "khepera 8-4-2 / thymio2 7-4-2" -> {"khepera", "thymio2"} and {"8-4-2", "7-4-2"};
+// "8-4-2" -> {""} and {"8-4-2"}.
 Layout layout_of(std::string_view architecture) {
   Layout l;
   for (std::size_t at = 0; at <= architecture.size();) {
@@ -52,13 +55,18 @@ Layout layout_of(std::string_view architecture) {
   }
   return l;
 }
+Layout layout_of(const control::ControllerSpec& c) {
+  if (!c.per_body()) return {{""}, {c.architecture()}};
+  Layout l{c.network_bodies, {}};
+  for (const control::ControllerSpec& n : c.networks) l.networks.push_back(n.architecture());
+  return l;
+}
 
 }  // namespace
 
-std::string layout_problem(const control::ControllerSpec& c, const std::string& evolved) {
-  const std::string here = c.architecture();
-  if (evolved.empty() || evolved == here || (!c.per_body() && evolved.find(" / ") == std::string::npos)) return {};
-  const Layout was = layout_of(evolved), is = layout_of(here);
+std::string layout_problem(const control::ControllerSpec& c, std::string_view evolved) {
+  if (evolved.empty() || (!c.per_body() && evolved.find(" / ") == std::string_view::npos)) return {};
+  const Layout was = layout_of(evolved), is = layout_of(c);
   // The networks in another order read one body's weights as another's; the same bodies in
   // another order too, even where their networks are alike. Bodies renamed (another robot
   // declaration, `esc replay --script`) keep the genome's order.
@@ -69,7 +77,7 @@ std::string layout_problem(const control::ControllerSpec& c, const std::string& 
   if (was.networks == is.networks && !reordered) return {};
   return fmt::format("it was evolved by `{}`, and `{}` here is `{}`: a controller per body's genome holds its "
                      "networks in its declaration's order",
-                     evolved, c.name, here);
+                     evolved, c.name, c.architecture());
 }
 
 }  // namespace esc::eval
