@@ -266,11 +266,13 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
                                                 *compared[i])
               : !parts_.controllers.bind(x.controllers[i], *controller_decls[i], *arena_decl, navigation))
         ok = false;
-    // The first body's reads are checked where the measures are read; the others' here, once
-    // those hold.
-    if (sensors_differ && robot_item != nullptr && sink_.errors() == errors &&
-        !check_measures_on_bodies(x, robot_item->where))
-      ok = false;
+    // The first body's reads are checked where they are written; the others' here, once those
+    // hold.
+    if (sensors_differ && robot_item != nullptr && sink_.errors() == errors)
+      if (auto m = unreadable_on_bodies(x)) {
+        sink_.error(robot_item->where, std::move(m->message)).help = std::move(m->help);
+        ok = false;
+      }
   }
   // After the objectives and descriptors: an algorithm's settings are checked against them.
   if (ok && sink_.errors() == errors) choose_algorithms(d, x, compared, by, evolve, sink_);
@@ -301,36 +303,6 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
   resolve_success(x);
   slot = std::move(x);
   return slot;
-}
-
-bool ExperimentLowering::check_measures_on_bodies(const eval::ExperimentSpec& x, const SourceRange& use) {
-  const std::set<expr::Slot> read = slots_read_by_measures(x);
-  const Navigation first = navigation_of(x, 0);
-  for (std::size_t b = 1; b < x.bodies.size(); ++b) {
-    const Navigation n = navigation_of(x, b);
-    for (const expr::Slot s : read) {
-      // Names first: a slot read by another name is that, whatever its count.
-      for (const RenamableSensors& r : kRenamableSensors) {
-        const std::optional<expr::Observable> o = expr::find_observable(r.observable);
-        if (!o || s < o->first || s >= o->first + o->count || first.name_of(r.observable) == n.name_of(r.observable))
-          continue;
-        sink_.error(use, fmt::format("the experiment's measures read the {}, which `{}` calls `{}` and `{}` `{}`: one "
-                                     "program cannot read both",
-                                     r.what, first.body, first.name_of(r.observable), n.body, n.name_of(r.observable)))
-            .help.push_back(fmt::format("measure the group by what every body reads alike, or give the bodies one name "
-                                        "(`{}`)",
-                                        r.setting));
-        return false;
-      }
-      if (auto m = unavailable(s, n)) {
-        Diagnostic& d = sink_.error(use, "the experiment's measures read what a body of its group lacks: " + m->message);
-        d.help = std::move(m->help);
-        d.help.push_back("a fitness, objective or descriptor is read on every robot: give it what every body reads");
-        return false;
-      }
-    }
-  }
-  return true;
 }
 
 void ExperimentLowering::report_sensor_difference(const SensorDifference& s) {

@@ -63,9 +63,6 @@ class ExperimentLowering {
   bool lower_bodies(const ast::ExpItem& item, const sim::RobotParams& first, eval::ExperimentSpec& x,
                     std::optional<SensorDifference>& sensors);
   void report_sensor_difference(const SensorDifference& s);
-  // A group whose bodies read other sensors: what the fitness, objectives and descriptors
-  // read must be read alike on every body (at `use`).
-  bool check_measures_on_bodies(const eval::ExperimentSpec& x, const SourceRange& use);
   // Gives each distinct action or behavior of the compared controllers an experiment-wide id
   // (control::Choice::id; x.choice_ids of them) and returns the names that read them.
   static ChoiceNames number_choices(eval::ExperimentSpec& x);

@@ -1,5 +1,6 @@
 #include "compiler/sensor_uses.hpp"
 
+#include <algorithm>
 #include <tuple>
 #include <variant>
 
@@ -125,8 +126,10 @@ std::optional<RuleMessage> unavailable(expr::Slot slot, const Navigation& n) {
       return beyond(slot, first, n.ir_sensors, n, what, array, "ir_sensors [(68deg, 90deg), (13deg, 10deg)]");
   if (slot >= expr::slot::ground_sensor && slot < expr::slot::ground_sensor + expr::kGroundSensorCount &&
       static_cast<int>(slot - expr::slot::ground_sensor) >= n.ground_sensors)
+    // Mounts within every shipped body's radius (the Thymio's own, 7.3 cm out, would sit outside
+    // a Khepera), so that the help can be taken as it is.
     return beyond(slot, expr::slot::ground_sensor, n.ground_sensors, n, "ground sensor", n.name_of("ground_sensor"),
-                  "ground_sensors [(9deg, 7.3cm), (-9deg, 7.3cm)]");
+                  "ground_sensors [(9deg, 2cm), (-9deg, 2cm)]");
   if (slot >= expr::slot::bumper && slot < expr::slot::bumper + expr::kBumperCount &&
       static_cast<int>(slot - expr::slot::bumper) >= n.bumpers)
     return beyond(slot, expr::slot::bumper, n.bumpers, n, "bumper", "bumper", "bumpers [(-45deg, 45deg)]");
@@ -169,6 +172,44 @@ std::set<expr::Slot> slots_read(const control::ControllerSpec& c) {
     for (const genome::tree::Primitive& p : c.primitives->primitives())
       if (p.kind == genome::tree::Kind::Observable) out.insert(p.slot);
   return out;
+}
+
+std::optional<RuleMessage> unreadable_on_bodies(const eval::ExperimentSpec& x) {
+  const std::set<expr::Slot> measures = slots_read_by_measures(x);
+  std::set<expr::Slot> every_body;
+  for (const control::ControllerSpec& c : x.controllers)
+    if (!c.per_body()) every_body.merge(slots_read(c));
+  const Navigation first = navigation_of(x, 0);
+  for (std::size_t b = 0; b < std::max<std::size_t>(x.bodies.size(), 1); ++b) {
+    // The first body unnamed, as a robot alone is.
+    const Navigation n = b == 0 ? navigation_of(x) : navigation_of(x, b);
+    for (const expr::Slot s : measures) {
+      // Names first: a slot read by another name is that, whatever its count.
+      for (const RenamableSensors& r : kRenamableSensors) {
+        const std::optional<expr::Observable> o = expr::find_observable(r.observable);
+        if (!o || s < o->first || s >= o->first + o->count || first.name_of(r.observable) == n.name_of(r.observable))
+          continue;
+        return RuleMessage{
+            fmt::format("the experiment's measures read the {}, which `{}` calls `{}` and `{}` `{}`: one program "
+                        "cannot read both",
+                        r.what, first.body, first.name_of(r.observable), n.body, n.name_of(r.observable)),
+            {fmt::format("measure the group by what every body reads alike, or give the bodies one name (`{}`)",
+                         r.setting)}};
+      }
+      if (auto m = unavailable(s, n)) {
+        if (b == 0) return m;
+        m->message = "the experiment's measures read what a body of its group lacks: " + m->message;
+        m->help.push_back("a fitness, objective or descriptor is read on every robot: give it what every body reads");
+        return m;
+      }
+    }
+    std::set<expr::Slot> controllers = every_body;
+    for (const control::ControllerSpec& c : x.controllers)
+      if (c.per_body() && b < c.body_networks.size()) controllers.merge(slots_read(c.networks.at(c.body_networks[b])));
+    for (const expr::Slot s : controllers)
+      if (auto m = unavailable(s, n)) return m;
+  }
+  return std::nullopt;
 }
 
 }  // namespace esc::compiler

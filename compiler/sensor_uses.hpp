@@ -62,4 +62,12 @@ struct Navigation {
 // What an experiment's fitness, further objectives and descriptors read.
 [[nodiscard]] std::set<expr::Slot> slots_read_by_measures(const eval::ExperimentSpec& x);
 
+// Why a body of x's group cannot give what is read on it, or nullopt when every body can. The
+// measures are read on every body, by the names the first body gives them; a controller per
+// body's networks each on its own body, any other controller on every body. The first problem
+// found, body by body: the compiler asks it once every read has been checked on the first body
+// where it is written (the further bodies' problems, at the group), and a `--set` that may take
+// a sensor away asks it again.
+[[nodiscard]] std::optional<RuleMessage> unreadable_on_bodies(const eval::ExperimentSpec& x);
+
 }  // namespace esc::compiler

@@ -82,28 +82,6 @@ std::optional<std::string_view> algorithm_key(const AlgorithmOptions& a, std::st
   return name;
 }
 
-// What the experiment reads has its goal and sensors: a setting may take one away
-// (`robot.radars=0` under a fitness that reads `radar[0]`). One error says it.
-void check_navigation(const eval::ExperimentSpec& spec, const SourceRange& where, Sink& sink) {
-  // Each body reads the measures and its controllers' networks: a controller per body's own
-  // network on it, any other controller on the first body (whose sensors a group of such
-  // controllers shares).
-  std::set<expr::Slot> every_body = slots_read_by_measures(spec);
-  for (const control::ControllerSpec& c : spec.controllers)
-    if (!c.per_body()) every_body.merge(slots_read(c));
-  for (std::size_t b = 0; b < std::max<std::size_t>(spec.bodies.size(), 1); ++b) {
-    const Navigation n = b == 0 ? navigation_of(spec) : navigation_of(spec, b);
-    std::set<expr::Slot> read = every_body;
-    for (const control::ControllerSpec& c : spec.controllers)
-      if (c.per_body() && b < c.body_networks.size()) read.merge(slots_read(c.networks.at(c.body_networks[b])));
-    for (const expr::Slot s : read)
-      if (auto m = unavailable(s, n)) {
-        sink.error(where, std::move(m->message)).help = std::move(m->help);
-        return;
-      }
-  }
-}
-
 std::string trimmed(std::string_view t) {
   while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
   while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
@@ -335,7 +313,8 @@ bool check_settings(const eval::ExperimentSpec& spec, const SourceRange& where, 
   report(sink, arena, context, where);
   if (robot && arena.empty()) {
     report(sink, sim::placement_problems(spec.arena, spec.robot), context, where);
-    check_navigation(spec, where, sink);
+    // A setting may take a sensor away (`robot.radars=0` under a fitness that reads `radar[0]`).
+    if (auto m = unreadable_on_bodies(spec)) sink.error(where, std::move(m->message)).help = std::move(m->help);
   }
   return sink.errors() == errors;
 }

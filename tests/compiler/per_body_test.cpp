@@ -231,6 +231,23 @@ TEST(PerBody, AControllerPerBodyMustFitTheGroup) {
   EXPECT_EQ(alone.controllers.front().body_networks, (std::vector<std::size_t>{0}));
 }
 
+TEST(PerBody, EveryBodyMustGiveWhatIsReadOnIt) {
+  // A measure the first body gives and a further one lacks: at the group, naming that body.
+  const std::string ground = "robot gnd = bot { ground_sensors [(9deg, 2cm), (-9deg, 2cm)] }\n"
+                             "controller cg = per_body(gnd: c, bot: c)";
+  const std::string out =
+      refusal(script(ground, "compare cg  robot gnd x 2, bot x 2", "step: ground_sensor[0]"), "p.esc");
+  EXPECT_NE(out.find("p.esc:10:69: error: the experiment's measures read what a body of its group lacks: "
+                     "`ground_sensor[0]` reads ground sensor 0, but body `bot`"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("1 error generated"), std::string::npos) << out;
+  // A setting that takes sensors from every body: each body's own network is checked on it.
+  eval::ExperimentSpec x = first_experiment(script(kBoth, "compare both  robot eye x 2, bot x 2"), "p.esc");
+  const std::string m = apply_setting(x, "robot.ir_sensors", "[(30deg, 30deg), (-30deg, -30deg)]");
+  EXPECT_NE(m.find("`ir[2]` reads IR sensor 2, but body `bot`"), std::string::npos) << m;
+}
+
 TEST(PerBody, ItsNetworksAreNetworksOfOneHead) {
   const std::string more = "behavior go(p) { wheels(p, p) }\nbehavior turn(p) { wheels(p, -p) }\n"
                            "controller s = symbolic(mlp(ir[0..7] -> hidden 2), actions [go, turn])\n"
