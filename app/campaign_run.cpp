@@ -97,7 +97,10 @@ DependencyContext dependency_context(const compiler::CompileResult& compiled, co
   // Each runs into a directory of its own, renamed when finished (prepare_dependencies says
   // where it went).
   return DependencyContext{
-      compiled, [&o](eval::ExperimentSpec& d) { apply_settings(o, d, fmt::format("dependency `{}`: ", d.name)); },
+      compiled,
+      [given = for_dependencies(o)](eval::ExperimentSpec& d) {
+        apply_settings(given, d, fmt::format("dependency `{}`: ", d.name));
+      },
       [&compiled, &o, &x, &events, script](const eval::ExperimentSpec& d, const std::filesystem::path& dir) {
         check_memory(d);
         (void)run_experiment(

@@ -16,21 +16,25 @@ namespace esc::app {
 
 namespace {
 
-std::string trimmed(std::string_view t) {
-  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
-  while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
-  return std::string(t);
-}
+using compiler::trimmed;
 
 // Refuses an override of a key no experiment has (once, not for the first condition), or of
 // one the study gives to an experiment its conditions depend on (`energy.generations 60`: the
-// override would replace that too).
+// override would replace that too), or one body's setting against every body's, one from the
+// study and one from the command line (`robot.emission` over a condition's `body2.emission`
+// would override it, whether or not the conditions differ in it).
 void refuse_unknown_or_given(const Overrides& o, const eval::StudySpec& study) {
   const auto given = [&](const std::string& k) -> const eval::DependencySetting* {
     for (const eval::ConditionSpec& c : study.conditions)
       for (const eval::DependencySetting& d : c.experiment.dependency_settings)
-        if (d.key == k) return &d;
+        if (d.key == k || compiler::overlapping_keys(k, d.key)) return &d;
     return nullptr;
+  };
+  const auto overlapped = [&](const std::string& k) -> std::optional<std::pair<std::string, std::string>> {
+    for (const eval::ConditionSpec& c : study.conditions)
+      for (const eval::ConditionSetting& s : c.settings)
+        if (compiler::overlapping_keys(k, s.key)) return std::pair{c.name, s.key};
+    return std::nullopt;
   };
   Problems problems;
   const std::vector<std::string> keys = compiler::setting_keys();
@@ -44,12 +48,18 @@ void refuse_unknown_or_given(const Overrides& o, const eval::StudySpec& study) {
         continue;
       }
     }
-    if (const eval::DependencySetting* d = given(k))
+    // One body's setting does not reach dependencies (for_dependencies): it replaces nothing there.
+    if (const eval::DependencySetting* d = compiler::body_key(k) ? nullptr : given(k))
       problems.add(fmt::format("{}={}: study `{}` gives `{}` to experiment `{}` in its conditions ({}.{} {}); the "
                                "command line's value would replace it (to shorten such a study, run its experiments "
                                "with --experiment)",
-                               k, trimmed(value), study.name, k, d->path.back(), fmt::join(d->path, "."), d->key,
+                               k, trimmed(value), study.name, d->key, d->path.back(), fmt::join(d->path, "."), d->key,
                                d->value));
+    else if (const auto c = overlapped(k))
+      problems.add(fmt::format("{}={}: condition `{}` of study `{}` sets `{}`, and `{}` would override it "
+                               "(`robot.KEY` sets every body, `bodyN.KEY` one; to run one condition with another "
+                               "value, run its experiment with --experiment and --set)",
+                               k, trimmed(value), c->first, study.name, c->second, k));
   }
   problems.throw_if_any(ErrorKind::Setting);
 }

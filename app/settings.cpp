@@ -7,6 +7,7 @@
 #include "app/error.hpp"
 #include "compiler/compiler.hpp"
 #include "compiler/names.hpp"
+#include "compiler/setting_keys.hpp"
 #include "runtime/core/seed_text.hpp"
 #include "runtime/eval/memory_need.hpp"
 #include "runtime/store/seed_json.hpp"
@@ -51,6 +52,14 @@ std::vector<std::pair<std::string, std::string>> setting_pairs(const Overrides& 
     settings.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
   }
   return settings;
+}
+
+Overrides for_dependencies(Overrides o) {
+  std::erase_if(o.set, [](const std::string& kv) {
+    const auto eq = kv.find('=');
+    return eq != std::string::npos && compiler::body_key(compiler::trimmed(kv.substr(0, eq))).has_value();
+  });
+  return o;
 }
 
 void apply_settings(const Overrides& o, eval::ExperimentSpec& spec, std::string_view where) {

@@ -30,6 +30,11 @@ struct Overrides {
 // an entry of `set` without `=`.
 [[nodiscard]] std::vector<std::pair<std::string, std::string>> setting_pairs(const Overrides& o);
 
+// The overrides an experiment's dependencies take: every setting but one body's own
+// (`bodyN.KEY`), since a dependency's body N may be another robot, or absent; `robot.KEY`
+// reaches them as every other setting does.
+[[nodiscard]] Overrides for_dependencies(Overrides o);
+
 // Applies the settings of `o` (not its choice of controllers: a dependency takes the
 // settings alone) to `spec`. Throws Error (kind Setting) with every problem, each after
 // `where` (`condition `x`: `).

@@ -36,7 +36,8 @@ eval::ExperimentSpec for_evaluation(eval::ExperimentSpec spec, const compiler::C
   spec.start_from.reset();
   const std::filesystem::path cache = !settings.cache.empty() ? settings.cache : cache_of_run(run.root);
   DependencyContext reuse{
-      compiled, [&settings](eval::ExperimentSpec& d) { apply_settings(settings, d); }, {}, {}, cache, version(), events};
+      compiled, [given = for_dependencies(settings)](eval::ExperimentSpec& d) { apply_settings(given, d); }, {}, {}, cache,
+      version(), events};
   reuse.reuse_only = true;
   prepare_dependencies(spec, reuse);
   return spec;

@@ -308,11 +308,7 @@ const std::optional<eval::ExperimentSpec>& ExperimentLowering::lower(const ast::
 void ExperimentLowering::report_sensor_difference(const SensorDifference& s) {
   const BodyDifference& differ = s.difference;
   const bool sensors = differ.sensors();
-  Diagnostic& d = sink_.error(
-      s.body->where, fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share {}their drive "
-                                 "and their control step",
-                                 s.body->text, differ.counted ? "another number of" : "another", differ.key, s.first,
-                                 differ.other, differ.first, sensors ? "the sensors one controller reads, " : ""));
+  Diagnostic& d = sink_.error(s.body->where, group_difference_message(differ, s.body->text, s.first));
   if (s.set_at) d.notes.emplace_back(*s.set_at, fmt::format("`{}`'s `{}` is set here", s.body->text, differ.key));
   if (differ.key.ends_with("_name"))
     d.help.push_back(fmt::format("name its sensors as `{}` does, in the group's list: `{} {{ {} {} }}`", s.first,

@@ -108,6 +108,16 @@ bool StudyLowering::apply(eval::ExperimentSpec& spec, const ast::StudySetting& s
     return false;
   }
   if (is_dependency_key(setting.key.text)) return apply_to_dependency(spec, setting, value);
+  // `body2.KEY` is the group's second body's, whatever an experiment is called: one named
+  // `body2` could not be told apart.
+  const std::string_view word = std::string_view(setting.key.text).substr(0, setting.key.text.find('.'));
+  if (const auto* named = names_.find<ast::ExperimentDecl>(word); named != nullptr && is_body_group(word)) {
+    sink_.error(setting.key.where, fmt::format("`{}` sets a body of the group, and experiment `{}` cannot be told "
+                                               "apart from it",
+                                               setting.key.text, word))
+        .help.push_back(fmt::format("rename experiment `{}`: `bodyN` begins the keys of a group's bodies", word));
+    return false;
+  }
   return set_setting(spec, setting.key, value, sink_);
 }
 
@@ -176,6 +186,23 @@ bool StudyLowering::unique_keys(const std::vector<ast::StudySetting>& settings) 
       sink_.error(s.key.where, fmt::format("`{}` is already set here", s.key.text))
           .notes.emplace_back(it->second->key.where, "first set here");
       ok = false;
+      continue;
+    }
+    for (const ast::StudySetting& before : settings) {
+      if (&before == &s) break;
+      // Both of one dependency (`d.robot.emission`, `d.body2.emission`) are its own keys.
+      std::string_view a = before.key.text, b = s.key.text;
+      while (is_dependency_key(a) && is_dependency_key(b) && a.substr(0, a.find('.')) == b.substr(0, b.find('.'))) {
+        a.remove_prefix(a.find('.') + 1);
+        b.remove_prefix(b.find('.') + 1);
+      }
+      if (auto m = overlapping_keys(a, b)) {
+        Diagnostic& d = sink_.error(s.key.where, std::move(m->message));
+        d.notes.emplace_back(before.key.where, fmt::format("`{}` is set here", before.key.text));
+        d.help = std::move(m->help);
+        ok = false;
+        break;
+      }
     }
   }
   return ok;
@@ -273,11 +300,11 @@ std::vector<eval::ConditionSpec> StudyLowering::sweep(const ast::StudyItem& item
 
   // Short keys in names, unless two axes share one (`generations`, `gp.generations`).
   // A setting of a dependency keeps its experiment (`energy.generations=60`): it is not the
-  // condition's own.
+  // condition's own; one body's keeps its body (`body2.emission=0`): it is not every body's.
   std::vector<std::string> labels;
   for (const Axis& a : axes) {
     const std::string& key = a.setting->key.text;
-    labels.emplace_back(is_dependency_key(key) ? std::string_view(key) : short_key(key));
+    labels.emplace_back(is_dependency_key(key) || body_key(key) ? std::string_view(key) : short_key(key));
   }
   for (std::size_t i = 0; i < axes.size(); ++i)
     if (std::count(labels.begin(), labels.end(), labels[i]) > 1)

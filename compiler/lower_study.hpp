@@ -52,7 +52,7 @@ class StudyLowering {
   // The settings recorded for each experiment `spec` depends on, checked together on it (as
   // the runtime applies them), reported at `where`. False when one fails.
   bool check_dependency_settings(const eval::ExperimentSpec& spec, const SourceRange& where);
-  // Reports a key given twice in one condition or sweep.
+  // Reports a key given twice in one condition or sweep, or `robot.KEY` with `bodyN.KEY`.
   bool unique_keys(const std::vector<ast::StudySetting>& settings);
 
   Sink& sink_;

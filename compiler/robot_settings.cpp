@@ -365,6 +365,13 @@ std::optional<BodyDifference> group_difference(const sim::RobotParams& first, co
   return std::nullopt;
 }
 
+std::string group_difference_message(const BodyDifference& d, std::string_view other, std::string_view first) {
+  return fmt::format("`{}` has {} `{}` than `{}` ({} against {}): the bodies of a group share {}their drive and their "
+                     "control step",
+                     other, d.counted ? "another number of" : "another", d.key, first, d.other, d.first,
+                     d.sensors() ? "the sensors one controller reads, " : "");
+}
+
 std::string robot_value_text(const RobotSetting& s, const sim::RobotParams& p) {
   if (s.kind == K::List || s.kind == K::Word) return s.value_text(p);
   const double v = s.get(p);

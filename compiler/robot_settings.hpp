@@ -76,5 +76,10 @@ struct BodyDifference {
 };
 [[nodiscard]] std::optional<BodyDifference> group_difference(const sim::RobotParams& first,
                                                              const sim::RobotParams& other);
+// "`lit` has another `control_step` than `khepera` (0.2 s against 0.1 s): the bodies of a group
+// share their drive and their control step": the error for `d` between a further body `other`
+// and the group's first body `first`.
+[[nodiscard]] std::string group_difference_message(const BodyDifference& d, std::string_view other,
+                                                   std::string_view first);
 
 }  // namespace esc::compiler

@@ -82,12 +82,6 @@ std::optional<std::string_view> algorithm_key(const AlgorithmOptions& a, std::st
   return name;
 }
 
-std::string trimmed(std::string_view t) {
-  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
-  while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
-  return std::string(t);
-}
-
 // "body 2 of the group (`lit`): ", before a message about body i of a group of several.
 std::string body_label(const eval::ExperimentSpec& spec, std::size_t i) {
   return fmt::format("body {} of the group (`{}`): ", i + 1, spec.bodies[i].name);
@@ -106,7 +100,51 @@ bool report_body(const eval::ExperimentSpec& spec, std::size_t i, const std::vec
   return problems.empty();
 }
 
+// Setting `s` of body i of the group (ExperimentSpec::bodies), its mistakes named by the body.
+bool apply_to_body(eval::ExperimentSpec& spec, std::size_t i, const RobotSetting& s, const ast::Value& value,
+                   Sink& sink) {
+  Sink body;
+  if (apply_robot_value(s, value, spec.bodies[i].params, body)) return true;
+  for (Diagnostic& d : body.items()) sink.error(d.where, body_label(spec, i) + d.message).help = std::move(d.help);
+  return false;
+}
+
+// `body2.KEY`: body 2 of the group alone; `body1.KEY`, the first (`robot`, whose copy the
+// group's list holds too).
+bool set_one_body(eval::ExperimentSpec& spec, const ast::Name& key, const BodyKey& body, const RobotSetting& s,
+                  const ast::Value& value, Sink& sink, std::string_view scope) {
+  const std::size_t bodies = std::max<std::size_t>(spec.bodies.size(), 1);
+  const std::string corrected = fmt::format("body{}.{}", body.body + 1, body.name);
+  if (body.leading_zero) {
+    sink.error(key.where, fmt::format("`{}{}`: a body's number is written without leading zeros", scope, key.text))
+        .help.push_back(fmt::format("write `{}{}`", scope, corrected));
+    return false;
+  }
+  if (body.body >= bodies) {
+    std::vector<std::string> names;
+    for (const eval::ExperimentSpec::GroupBody& b : spec.bodies) names.push_back(fmt::format("`{}`", b.name));
+    Diagnostic& d = sink.error(
+        key.where, bodies == 1 ? fmt::format("`{}{}`: the robots of experiment `{}` have one body", scope, key.text,
+                                             spec.name)
+                               : fmt::format("`{}{}`: the group of experiment `{}` has {} bodies ({}), `body1` to "
+                                             "`body{}`",
+                                             scope, key.text, spec.name, bodies, fmt::join(names, ", "), bodies));
+    d.help.push_back(fmt::format("set every body's as `{}robot.{}`", scope, body.name));
+    return false;
+  }
+  if (body.body > 0) return apply_to_body(spec, body.body, s, value, sink);
+  if (!apply_robot_value(s, value, spec.robot, sink)) return false;
+  if (!spec.bodies.empty()) spec.bodies[0].params = spec.robot;
+  return true;
+}
+
 }  // namespace
+
+std::string trimmed(std::string_view t) {
+  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+  while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
+  return std::string(t);
+}
 
 std::vector<std::string> setting_keys() {
   std::vector<std::string> k;
@@ -127,9 +165,41 @@ std::vector<std::string> setting_keys() {
   return k;
 }
 
+bool is_body_group(std::string_view word) {
+  return word.size() > 4 && word.starts_with("body") &&
+         std::all_of(word.begin() + 4, word.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+}
+
+std::optional<BodyKey> body_key(std::string_view key) {
+  if (!key.starts_with("body")) return std::nullopt;
+  std::size_t end = 4;
+  while (end < key.size() && std::isdigit(static_cast<unsigned char>(key[end]))) ++end;
+  // A number of more digits than any group has bodies is no body's (and would not fit).
+  if (end == 4 || end > 4 + 6 || end >= key.size() || key[end] != '.') return std::nullopt;
+  const std::size_t number = std::stoul(std::string(key.substr(4, end - 4)));
+  if (number == 0) return std::nullopt;
+  return BodyKey{number - 1, key.substr(end + 1), key[4] == '0'};
+}
+
+std::optional<RuleMessage> overlapping_keys(std::string_view a, std::string_view b) {
+  for (const auto& [all, one] : {std::pair{a, b}, std::pair{b, a}}) {
+    const auto name = in_group(all, kRobotGroup);
+    const auto body = body_key(one);
+    // A body misspelt (`body02`) is said as such where it is set.
+    if (name && body && !body->leading_zero && *name == body->name)
+      return RuleMessage{fmt::format("`{}` sets every body of the group and `{}` one of them: one would silently "
+                                     "override the other",
+                                     all, one),
+                         {fmt::format("give `{}` alone, or a value for each body (`body1.{}`, `body2.{}`, ...)", all,
+                                      *name, *name)}};
+  }
+  return std::nullopt;
+}
+
 bool is_setting_group(std::string_view word) {
   for (const std::string_view group : {kRobotGroup, kArenaGroup})
     if (group.substr(0, group.size() - 1) == word) return true;
+  if (is_body_group(word)) return true;
   const AlgorithmOptions* a = find_algorithm_options(word);
   return a != nullptr && !a->group.empty();
 }
@@ -160,10 +230,13 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     // Kept even where the algorithm evolves nothing yet: `--set networks=cmaes` may follow.
     return a.set(a.settings_in(spec), *name, value, sink);
   }
-  if (const auto name = in_group(k, kRobotGroup)) {
+  // `robot.KEY`, every body of a group alike; `body2.KEY`, one body alone.
+  const std::optional<BodyKey> body = body_key(k);
+  if (const auto name = body ? std::optional(body->name) : in_group(k, kRobotGroup)) {
+    const std::string_view group = std::string_view(k).substr(0, k.size() - name->size());
     const RobotSetting* s = find_robot_setting(*name);
     if (s == nullptr) {
-      unknown(sink, key, "robot setting", *name, kRobotGroup, robot_setting_names(), scope);
+      unknown(sink, key, "robot setting", *name, group, robot_setting_names(), scope);
       return false;
     }
     if (!s->settable_later()) {
@@ -173,17 +246,12 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
           .help.push_back(fmt::format("declare `robot r = khepera {{ {} ... }}` and use it", *name));
       return false;
     }
+    if (body) return set_one_body(spec, key, *body, *s, value, sink, scope);
     // Every body of a group alike (a study's `robot.time_constant` is the robots'): bodies of
     // other shapes take the one value too. A body the value does not suit is named.
     if (!apply_robot_value(*s, value, spec.robot, sink)) return false;
     bool ok = true;
-    for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
-      Sink body;
-      if (apply_robot_value(*s, value, spec.bodies[i].params, body)) continue;
-      ok = false;
-      for (Diagnostic& d : body.items())
-        sink.error(d.where, body_label(spec, i) + d.message).help = std::move(d.help);
-    }
+    for (std::size_t i = 0; i < spec.bodies.size(); ++i) ok = apply_to_body(spec, i, *s, value, sink) && ok;
     return ok;
   }
   if (const auto name = in_group(k, kArenaGroup)) {
@@ -206,6 +274,7 @@ bool set_setting(eval::ExperimentSpec& spec, const ast::Name& key, const ast::Va
     else if (const std::string g = s.substr(0, dot + 1) + "*"; std::find(groups.begin(), groups.end(), g) == groups.end())
       groups.push_back(g);
   }
+  groups.emplace_back("bodyN.* (body N of a group alone)");
   suggest(sink.error(key.where, fmt::format("unknown setting `{}{}`", scope, k)), k, setting_keys(),
           {.prefix = scope,
            .otherwise = fmt::format("settings: {}; and the groups {}", fmt::join(plain, ", "), fmt::join(groups, ", "))});
@@ -265,6 +334,22 @@ void check_group(const eval::ExperimentSpec& spec, const SourceRange& where, Sin
     return;
   }
   if (spec.robots == 1) return;
+  // A body set alone (`--set body2.control_step=0.2s`) must still agree with the first, as the
+  // compiler requires of the group's list: in the world's step always, in the sensors unless
+  // every compared controller has a network per body (whose reads unreadable_on_bodies checks).
+  const bool per_body = std::all_of(spec.controllers.begin(), spec.controllers.end(),
+                                    [](const control::ControllerSpec& c) { return c.per_body(); });
+  for (std::size_t i = 1; i < spec.bodies.size(); ++i)
+    if (const auto differ = group_difference(spec.robot, spec.bodies[i].params);
+        differ && (!differ->sensors() || !per_body)) {
+      sink.error(where, group_difference_message(*differ, spec.bodies[i].name, spec.bodies[0].name))
+          .help.push_back(differ->sensors()
+                              ? fmt::format("give every body the same `{}` (`robot.{}`), or compare controllers with a "
+                                            "network per body (`per_body`, docs/groups.md)",
+                                            differ->key, differ->key)
+                              : fmt::format("give every body the same `{}`: `robot.{}`", differ->key, differ->key));
+      return;
+    }
   // Only robot 0 takes the arena's start; a further body must fit the arena.
   sim::ArenaSpec unplaced = spec.arena;
   unplaced.fixed_start.reset();
@@ -397,7 +482,11 @@ SettingsRefusal apply_settings_together(eval::ExperimentSpec& experiment,
     const auto& [key, value] = settings[i];
     Sink sink;
     const ast::Name name{trimmed(key), where};
-    if (const auto v = value_from_text(value, where)) {
+    std::optional<RuleMessage> overlap;
+    for (std::size_t j = 0; j < i && !overlap; ++j) overlap = overlapping_keys(trimmed(settings[j].first), name.text);
+    if (overlap) {
+      sink.error(where, std::move(overlap->message)).help = std::move(overlap->help);
+    } else if (const auto v = value_from_text(value, where)) {
       (void)set_setting(spec, name, *v, sink);
     } else if (out_of_range(trimmed(value))) {
       sink.error(where, fmt::format("`{}` cannot take `{}`: the number is out of range (a number is at most about "

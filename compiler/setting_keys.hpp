@@ -7,15 +7,21 @@
 // resolved settings. `apply_setting` (compiler.hpp) is set_setting + check_settings on
 // text; a script construct that varies a key over values written in the script can call
 // the same two functions with its own values and locations.
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "compiler/ast.hpp"
+#include "compiler/rule_messages.hpp"
 #include "compiler/sink.hpp"
 #include "runtime/eval/experiment.hpp"
 
 namespace esc::compiler {
+
+// `text` without the spaces and tabs around it, as a `--set` key or value is read.
+[[nodiscard]] std::string trimmed(std::string_view text);
 
 // Every `--set` key, for "did you mean" and the documentation.
 [[nodiscard]] std::vector<std::string> setting_keys();
@@ -24,8 +30,25 @@ namespace esc::compiler {
 // algorithm's, `gp.NAME`, by its own (algorithm_options.hpp).
 inline constexpr std::string_view kRobotGroup = "robot.", kArenaGroup = "arena.";
 
-// Whether `word` begins the keys of a group of settings: `robot`, `arena`, `gp`, `cmaes`, ...
+// Whether `word` begins the keys of a group of settings: `robot`, `arena`, `body2`, `gp`,
+// `cmaes`, ...
 [[nodiscard]] bool is_setting_group(std::string_view word);
+
+// `body2.KEY`: robot setting KEY of one body of a group alone, by its place in the group's list
+// (`body1` the first; `robot.KEY` sets every body). A key that names a body by a number with a
+// leading zero (`body02`) is one too, refused when set: it would be a second name for `body2`.
+struct BodyKey {
+  std::size_t body = 0;    // from 0
+  std::string_view name;   // KEY
+  bool leading_zero = false;
+};
+[[nodiscard]] std::optional<BodyKey> body_key(std::string_view key);
+// Whether `word` is what begins such a key: `body` and digits.
+[[nodiscard]] bool is_body_group(std::string_view word);
+
+// Why keys a and b cannot be set together, or nullopt: `robot.KEY` sets every body, so that with
+// `bodyN.KEY` one would silently override the other, in whichever order they came.
+[[nodiscard]] std::optional<RuleMessage> overlapping_keys(std::string_view a, std::string_view b);
 
 // Whether `key`'s value is a range (`bounds`, `gp.init_depth`).
 [[nodiscard]] bool setting_takes_range(std::string_view key);

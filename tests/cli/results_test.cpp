@@ -129,6 +129,29 @@ TEST(Results, AGroupsControllerIsTestedWithAnotherGroupSize) {
   EXPECT_EQ(tested["tested_with_five"]["robots"], "5");
   EXPECT_EQ(tested["tested_with_three"]["robots"], "3");
   EXPECT_NE(tested["tested_with_five fitness"], tested["tested_with_three fitness"]);
+  // One body's setting is the group's alone: the dependency, whose robots have one body, is
+  // reused as it was stored.
+  const fs::path lit = scratch("tested-with-a-lit-one");
+  const Outcome run = esc("run " + script + " --experiment tested_with_a_lit_one --set body2.emission=0.5 --cache " +
+                          cache.string() + " --out " + lit.string());
+  ASSERT_EQ(run.status, 0) << run.output;
+  const nlohmann::json settings = read_json(lit / "settings.json")["settings"];
+  EXPECT_EQ(settings["body2.emission"], "0.5");
+  EXPECT_EQ(settings["robot.emission"], "0");
+  // Replayed with its stored settings, the dependency again without them.
+  const Outcome replay = esc("replay " + lit.string() + " --out " + scratch("tested-with-a-lit-one-replay").string());
+  ASSERT_EQ(replay.status, 0) << replay.output;
+  EXPECT_NE(replay.output.find("identical to the stored replay"), std::string::npos) << replay.output;
+  // Given with every body's, it is refused before anything runs.
+  const fs::path both = scratch("tested-with-both");
+  const Outcome refused = esc("run " + script + " --experiment tested_with_a_lit_one --set robot.emission=1 --set "
+                              "body2.emission=0.5 --cache " + cache.string() + " --out " + both.string());
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_NE(refused.output.find("body2.emission=0.5: `robot.emission` sets every body of the group and "
+                                "`body2.emission` one of them"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_FALSE(fs::exists(both));
 }
 
 // Roles (docs/groups.md): the genome of two roles holds both networks; it is tested with six

@@ -136,6 +136,31 @@ TEST(Study, ASettingThatMakesConditionsAlikeIsRefusedNamingWhatTheyDifferIn) {
   }
 }
 
+// `robot.KEY` sets every body and `body2.KEY` one: one from the study and the other from the
+// command line would override the study's without saying so, varied or not.
+TEST(Study, EveryBodysSettingAgainstOneBodysIsRefused) {
+  const std::string script = std::string(ESC_SOURCE_DIR) + "/tests/cli/data/alike_study.esc";
+  struct Case {
+    std::string study, set, said;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"every_body_swept", "body2.emission=0.8",
+            "body2.emission=0.8: condition `emission=0` of study `every_body_swept` sets `robot.emission`, and "
+            "`body2.emission` would override it"},
+           {"second_lit_or_not", "robot.emission=0",
+            "robot.emission=0: condition `both_lit` of study `second_lit_or_not` sets `body2.emission`, and "
+            "`robot.emission` would override it"},
+           {"darker_second", "robot.emission=0",
+            "robot.emission=0: study `darker_second` gives `body2.emission` to experiment `lit_group` in its "
+            "conditions (lit_group.body2.emission 0.3)"}}) {
+    const fs::path out = scratch("study-overlap-" + c.study);
+    const Outcome o = esc("run " + script + " --experiment " + c.study + " --set " + c.set + " --out " + out.string());
+    EXPECT_EQ(o.status, 1) << c.study << "\n" << o.output;
+    EXPECT_NE(o.output.find(c.said), std::string::npos) << c.study << "\n" << o.output;
+    EXPECT_FALSE(fs::exists(out)) << c.study;
+  }
+}
+
 // `esc export --table comparisons` writes the end table's tests, pair by pair, as computed:
 // each row's p values and A12 are those `esc run` printed, rounded as it prints them.
 TEST(Study, ExportedComparisonsAreTheEndTables) {

@@ -341,6 +341,78 @@ TEST(Groups, AGroupOfSeveralBodiesListsThemInRobotOrder) {
             evaluate(first_experiment(lit + script("robot bot x 4", reads_light), "g.esc")).fitness);
 }
 
+// `bodyN.KEY` sets one body of a group alone, `body1` the first; `robot.KEY` sets every body, and
+// the two of one key together are refused, as are bodies the group lacks and a body set apart
+// from what the bodies of a group share.
+TEST(Groups, OneBodyOfAGroupIsSetAlone) {
+  const std::string lit = "robot lit = bot { emission 1 }\n";
+  const eval::ExperimentSpec group = first_experiment(lit + script("robot bot x 2, lit x 3"), "g.esc");
+  eval::ExperimentSpec x = group;
+  EXPECT_EQ(apply_setting(x, "body2.max_speed", "6cm/s"), "");
+  EXPECT_DOUBLE_EQ(x.robot_params()[4].motor.max_speed_mps, 0.06);
+  EXPECT_DOUBLE_EQ(x.robot_params()[1].motor.max_speed_mps, group.robot.motor.max_speed_mps);
+  EXPECT_EQ(x.resolved_settings.at("body2.max_speed"), "0.06 m/s");
+  // The first body alone: the resolved `robot.KEY` is the first body's, and the further body,
+  // now apart from it, is listed.
+  x = group;
+  EXPECT_EQ(apply_setting(x, "body1.emission", "0.5"), "");
+  EXPECT_EQ(x.robot_params()[0].emission.intensity, 0.5);
+  EXPECT_EQ(x.bodies[0].params.emission.intensity, 0.5);
+  EXPECT_EQ(x.robot_params()[2].emission.intensity, 1.0);
+  EXPECT_EQ(x.resolved_settings.at("robot.emission"), "0.5");
+  EXPECT_EQ(x.resolved_settings.at("body2.emission"), "1");
+  // Set back to the first's, a body is no longer listed apart.
+  EXPECT_EQ(apply_setting(x, "body2.emission", "0.5"), "");
+  EXPECT_FALSE(x.resolved_settings.contains("body2.emission"));
+  // Both of one key, in either order: one would override the other.
+  x = group;
+  std::string m;
+  for (const auto& [a, b] : {std::pair{"robot.emission", "body2.emission"}, std::pair{"body2.emission", "robot.emission"}}) {
+    m = apply_settings(x, {{a, "0.3"}, {b, "0.7"}});
+    EXPECT_NE(m.find("sets every body of the group and"), std::string::npos) << m;
+    EXPECT_EQ(x.robot_params()[0].emission.intensity, 0.0) << "nothing set";
+    EXPECT_EQ(x.robot_params()[2].emission.intensity, 1.0) << "nothing set";
+  }
+  // A body misspelt is said as such, not as an overlap.
+  m = apply_settings(x, {{"robot.emission", "1"}, {"body02.emission", "0"}});
+  EXPECT_NE(m.find("without leading zeros"), std::string::npos) << m;
+  EXPECT_EQ(apply_settings(x, {{"robot.emission", "0"}, {"body2.max_speed", "6cm/s"}}), "") << "other keys";
+  // Bodies the group lacks, a body's number written otherwise, an unknown key.
+  x = group;
+  m = apply_setting(x, "body3.emission", "0");
+  EXPECT_NE(m.find("`body3.emission`: the group of experiment `e` has 2 bodies (`bot`, `lit`), `body1` to `body2` "
+                   "(set every body's as `robot.emission`)"),
+            std::string::npos)
+      << m;
+  m = apply_setting(x, "body02.emission", "0");
+  EXPECT_NE(m.find("`body02.emission`: a body's number is written without leading zeros (write `body2.emission`)"),
+            std::string::npos)
+      << m;
+  m = apply_setting(x, "body2.emision", "0");
+  EXPECT_NE(m.find("unknown robot setting `body2.emision`; did you mean `body2.emission`?"), std::string::npos) << m;
+  m = apply_setting(x, "body0.emission", "0");
+  EXPECT_NE(m.find("unknown setting `body0.emission`; did you mean `robot.emission`?"), std::string::npos) << m;
+  m = apply_setting(x, "qqqqqqqq", "0");
+  EXPECT_NE(m.find("and the groups "), std::string::npos) << m;
+  EXPECT_NE(m.find("bodyN.* (body N of a group alone)"), std::string::npos) << m;
+  eval::ExperimentSpec alone = first_experiment(script("robot bot x 3"), "g.esc");
+  m = apply_setting(alone, "body2.emission", "1");
+  EXPECT_NE(m.find("`body2.emission`: the robots of experiment `e` have one body"), std::string::npos) << m;
+  EXPECT_EQ(apply_setting(alone, "body1.max_speed", "6cm/s"), "") << "a robot alone is its first body";
+  EXPECT_DOUBLE_EQ(alone.robot.motor.max_speed_mps, 0.06);
+  // What the bodies of a group share: the world's step, and the sensors one network reads.
+  x = group;
+  m = apply_setting(x, "body2.control_step", "200ms");
+  EXPECT_NE(m.find("`lit` has another `control_step` than `bot` (0.2 s against 0.1 s): the bodies of a group share "
+                   "their drive and their control step (give every body the same `control_step`: "
+                   "`robot.control_step`)"),
+            std::string::npos)
+      << m;
+  m = apply_setting(x, "body2.ir_sensors", "[(30deg, 30deg), (-30deg, -30deg)]");
+  EXPECT_NE(m.find("`lit` has another number of `ir_sensors` than `bot`"), std::string::npos) << m;
+  EXPECT_NE(m.find("a network per body"), std::string::npos) << m;
+}
+
 // A robot's light is for the others: alone, `emission` compiles with a warning saying so.
 TEST(Groups, EmissionWithoutOtherRobotsIsAWarning) {
   const auto alone = compile_source(script("robot bot { emission 1 }"), "g.esc", options());

@@ -115,6 +115,21 @@ study g { sweep e { generations [3, 4]  gp.generations [5, 6] } }
   EXPECT_EQ(study(r, "g").conditions[0].name, "generations=3,gp.generations=5");
 }
 
+// One body's setting is not every body's: its condition names keep the body.
+TEST(Study, OneBodysSettingKeepsItsBodyInTheConditionsNames) {
+  const CompileResult r = compile(R"(
+robot lit = khepera { emission 1 }
+experiment pair { arena a  fitness f  robot khepera, lit  compare c }
+study g { sweep pair { body2.emission [0, 0.5]  robot.max_speed [5cm/s, 6cm/s] } }
+)");
+  ASSERT_TRUE(r.ok()) << rendered(r);
+  const eval::StudySpec& g = study(r, "g");
+  EXPECT_EQ(g.conditions[0].name, "body2.emission=0,max_speed=5cm/s");
+  EXPECT_EQ(g.conditions[1].experiment.robot_params()[1].emission.intensity, 0.0);
+  EXPECT_EQ(g.conditions[2].experiment.robot_params()[1].emission.intensity, 0.5);
+  EXPECT_EQ(g.conditions[2].experiment.robot_params()[0].emission.intensity, 0.0);
+}
+
 TEST(Study, RangesAreSweptAsListsOfRanges) {
   const CompileResult r = compile(R"(
 study b {
