@@ -65,6 +65,17 @@ def test_settings_some_experiments_refuse_leave_the_others_usable():
         esc.compile(two, {"roles": 3})
 
 
+def test_one_bodys_setting_sets_that_body_alone():
+    # beacons.esc: `leader_aggregation` is a lit robot and four dark ones, two bodies;
+    # `beacon_aggregation` has one body, and refuses a second's setting.
+    script = esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"body2.emission": 0.5})
+    assert script.settings["leader_aggregation"]["body2.emission"] == "0.5"
+    assert script.settings["leader_aggregation"]["robot.emission"] == "1"
+    assert "the robots of experiment `beacon_aggregation` have one body" in script.refused["beacon_aggregation"]
+    with pytest.raises(esc.Error, match="`robot.emission` sets every body of the group and `body2.emission` one"):
+        esc.compile(EXPERIMENTS / "examples" / "beacons.esc", {"robot.emission": 1, "body2.emission": 0.5})
+
+
 def test_bodies_name_each_experiments_robots_and_their_sensors():
     mixed = esc.compile(EXPERIMENTS / "examples" / "two_bodies.esc").bodies["mixed_dispersion"]
     assert [(b.name, b.robots, b.drive) for b in mixed] == [("khepera", 3, "differential"), ("epuck_ir", 3, "differential")]
