@@ -114,10 +114,9 @@ bool apply_to_body(eval::ExperimentSpec& spec, std::size_t i, const RobotSetting
 bool set_one_body(eval::ExperimentSpec& spec, const ast::Name& key, const BodyKey& body, const RobotSetting& s,
                   const ast::Value& value, Sink& sink, std::string_view scope) {
   const std::size_t bodies = std::max<std::size_t>(spec.bodies.size(), 1);
-  const std::string corrected = fmt::format("body{}.{}", body.body + 1, body.name);
   if (body.leading_zero) {
     sink.error(key.where, fmt::format("`{}{}`: a body's number is written without leading zeros", scope, key.text))
-        .help.push_back(fmt::format("write `{}{}`", scope, corrected));
+        .help.push_back(fmt::format("write `{}body{}.{}`", scope, body.body + 1, body.name));
     return false;
   }
   if (body.body >= bodies) {
@@ -171,14 +170,12 @@ bool is_body_group(std::string_view word) {
 }
 
 std::optional<BodyKey> body_key(std::string_view key) {
-  if (!key.starts_with("body")) return std::nullopt;
-  std::size_t end = 4;
-  while (end < key.size() && std::isdigit(static_cast<unsigned char>(key[end]))) ++end;
+  const std::size_t dot = key.find('.');
   // A number of more digits than any group has bodies is no body's (and would not fit).
-  if (end == 4 || end > 4 + 6 || end >= key.size() || key[end] != '.') return std::nullopt;
-  const std::size_t number = std::stoul(std::string(key.substr(4, end - 4)));
+  if (dot == std::string_view::npos || dot > 4 + 6 || !is_body_group(key.substr(0, dot))) return std::nullopt;
+  const std::size_t number = std::stoul(std::string(key.substr(4, dot - 4)));
   if (number == 0) return std::nullopt;
-  return BodyKey{number - 1, key.substr(end + 1), key[4] == '0'};
+  return BodyKey{number - 1, key.substr(dot + 1), key[4] == '0'};
 }
 
 std::optional<RuleMessage> overlapping_keys(std::string_view a, std::string_view b) {
